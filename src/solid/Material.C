@@ -1,0 +1,266 @@
+#include "Material.H"
+#include "NeoHookean.H"
+#include "QuadraticVolumetric.H"
+#include "MieGruneisenVolumetric.H"
+#include "SolidError.H"
+
+#include <cstdlib>
+#include <limits>
+#include <set>
+
+namespace
+{
+
+double toNumber
+(
+    const std::string& context,
+    const std::string& key,
+    const std::string& value
+)
+{
+    char* end = nullptr;
+    const double v = std::strtod(value.c_str(), &end);
+    if (value.empty() || end == value.c_str() || *end != '\0')
+    {
+        throw solid::SolidError
+        (
+            solid::SolidError::Kind::parameter,
+            context + ": entry '" + key + "' = '" + value
+          + "' is not a number"
+        );
+    }
+    return v;
+}
+
+} // namespace
+
+
+solid::MaterialParameters solid::MaterialParameters::fromEntries
+(
+    const std::string& name,
+    const std::map<std::string, std::string>& entries
+)
+{
+    MaterialParameters par;
+    par.name = name;
+    const std::string ctx = "material '" + name + "'";
+    std::map<int, double> mu, tau, eta;
+    const std::map<std::string, double*> scalars =
+    {
+        {"rho0", &par.rho0}, {"c0", &par.c0}, {"d0", &par.d0},
+        {"C0", &par.eos.C0}, {"s", &par.eos.s}, {"Gamma0", &par.eos.Gamma0},
+        {"Cv", &par.eos.Cv}, {"T0", &par.eos.T0}, {"b1", &par.b1},
+        {"b2", &par.b2}
+    };
+    for (const auto& kv : entries)
+    {
+        const std::string& key = kv.first;
+        if (key == "volumetric")
+        {
+            par.volumetric = kv.second;
+            continue;
+        }
+        const auto it = scalars.find(key);
+        if (it != scalars.end())
+        {
+            *it->second = toNumber(ctx, key, kv.second);
+            continue;
+        }
+        bool branch = false;
+        for (const char* prefix : {"mu", "tau", "eta"})
+        {
+            const std::string pre(prefix);
+            if
+            (
+                key.size() > pre.size() && key.compare(0, pre.size(), pre) == 0
+             && key.find_first_not_of("0123456789", pre.size())
+                == std::string::npos
+            )
+            {
+                const int n = std::atoi(key.c_str() + pre.size());
+                const double v = toNumber(ctx, key, kv.second);
+                if (n < 1)
+                {
+                    throw SolidError
+                    (
+                        SolidError::Kind::parameter,
+                        ctx + ": entry '" + key + "': branches are numbered "
+                        "from 1"
+                    );
+                }
+                (pre == "mu" ? mu : pre == "tau" ? tau : eta)[n] = v;
+                branch = true;
+            }
+        }
+        if (!branch)
+        {
+            std::string valid;
+            for (const auto& s : scalars) valid += s.first + " ";
+            throw SolidError
+            (
+                SolidError::Kind::parameter,
+                ctx + ": unknown entry '" + key + "'; valid entries: "
+              + valid + "volumetric muN tauN etaN (N = 1, 2, ...)"
+            );
+        }
+    }
+    par.eos.rho0 = par.rho0;
+    std::set<int> ids;
+    for (const auto& m : mu) ids.insert(m.first);
+    for (const auto& m : tau) ids.insert(m.first);
+    for (const auto& m : eta) ids.insert(m.first);
+    int expect = 1;
+    for (const int n : ids)
+    {
+        const std::string sn = std::to_string(n);
+        if (n != expect++)
+        {
+            throw SolidError
+            (
+                SolidError::Kind::parameter,
+                ctx + ": Maxwell branches must be numbered 1, 2, ... "
+                "without gaps (found branch " + sn + ")"
+            );
+        }
+        if (!mu.count(n))
+        {
+            throw SolidError
+            (
+                SolidError::Kind::parameter,
+                ctx + ": entry 'mu" + sn + "' missing for branch " + sn
+            );
+        }
+        if (tau.count(n) == eta.count(n))
+        {
+            throw SolidError
+            (
+                SolidError::Kind::parameter,
+                ctx + ": give exactly one of 'tau" + sn + "' and 'eta" + sn
+              + "' for branch " + sn
+            );
+        }
+        MaxwellBranch b;
+        b.mu = mu[n];
+        if (tau.count(n))
+        {
+            b.tau = tau[n];
+        }
+        else
+        {
+            checkParameter
+            (
+                ctx, "eta" + sn, eta[n], 0,
+                std::numeric_limits<double>::infinity(), "Pa s"
+            );
+            checkParameter
+            (
+                ctx, "mu" + sn, b.mu, 0,
+                std::numeric_limits<double>::infinity(), "Pa"
+            );
+            b.tau = eta[n]/b.mu;
+        }
+        par.branches.push_back(b);
+    }
+    // Validate now so that errors point at the dictionary
+    Material::create(par);
+    return par;
+}
+
+
+solid::Material::Material
+(
+    const std::string& name,
+    double rho0,
+    std::unique_ptr<IsochoricModel> iso,
+    std::unique_ptr<VolumetricLaw> vol
+)
+:
+    name_(name),
+    rho0_(rho0),
+    iso_(std::move(iso)),
+    vol_(std::move(vol))
+{
+    checkParameter
+    (
+        "material '" + name + "'", "rho0", rho0, 0,
+        std::numeric_limits<double>::infinity(), "kg/m^3"
+    );
+}
+
+
+std::unique_ptr<solid::Material> solid::Material::create
+(
+    const MaterialParameters& par
+)
+{
+    const std::string ctx = "material '" + par.name + "'";
+    const double inf = std::numeric_limits<double>::infinity();
+    checkParameter(ctx, "rho0", par.rho0, 0, inf, "kg/m^3");
+
+    std::unique_ptr<IsochoricModel> iso(new NeoHookean(par.c0, ctx));
+    if (!par.branches.empty())
+    {
+        iso.reset(new Viscoelastic(std::move(iso), par.branches, ctx));
+    }
+
+    std::unique_ptr<VolumetricLaw> vol;
+    if (par.volumetric == "neoHookean")
+    {
+        checkParameter(ctx, "d0", par.d0, 0, inf, "1/Pa", true);
+        if (par.d0 == 0)
+        {
+            vol.reset(new IncompressibleVolumetric);
+        }
+        else
+        {
+            vol.reset(new QuadraticVolumetric(par.d0, par.rho0, ctx));
+        }
+    }
+    else if (par.volumetric == "mieGruneisen")
+    {
+        eos::MieGruneisen::Parameters e = par.eos;
+        e.rho0 = par.rho0;
+        vol.reset(new MieGruneisenVolumetric(e, par.b1, par.b2, ctx));
+    }
+    else
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter,
+            ctx + ": unknown volumetric law '" + par.volumetric
+          + "'; valid: neoHookean mieGruneisen"
+        );
+    }
+    return std::unique_ptr<Material>
+    (
+        new Material(par.name, par.rho0, std::move(iso), std::move(vol))
+    );
+}
+
+
+std::vector<solid::MaterialParameters> solid::paperParameterSet
+(
+    const std::string& reading
+)
+{
+    if (reading != "table" && reading != "text")
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter,
+            "paperParameterSet: unknown reading '" + reading
+          + "'; valid: table text"
+        );
+    }
+    MaterialParameters mem, cyto, nuc;
+    mem.name = "membrane";
+    mem.c0 = 166.67;
+    mem.branches = {{13.89, 3000.0}};
+    cyto.name = "cytoplasm";
+    cyto.c0 = 1.67;
+    cyto.branches = {{107.78, 0.01}};
+    nuc.name = "nucleus";
+    nuc.c0 = reading == "table" ? 13.33 : 6.67;
+    nuc.branches = {{862.22, 0.5}};
+    return {mem, cyto, nuc};
+}

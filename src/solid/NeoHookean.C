@@ -1,0 +1,44 @@
+#include "NeoHookean.H"
+#include "SolidError.H"
+
+#include <cmath>
+#include <limits>
+
+solid::NeoHookean::NeoHookean(double c0, const std::string& context)
+:
+    c0_(c0)
+{
+    checkParameter
+    (
+        context, "c0", c0, 0, std::numeric_limits<double>::infinity(), "Pa",
+        true
+    );
+}
+
+
+void solid::NeoHookean::evaluate
+(
+    const Mat3& C,
+    double,
+    const double*,
+    double*,
+    IsoResponse& r
+) const
+{
+    using namespace tensor;
+    const double J2 = C.determinant();
+    const double Jm23 = std::pow(J2, -1.0/3.0);
+    const Mat3 Ci = C.inverse();
+    const Mat3 I = Mat3::Identity();
+    const double I1 = C.trace();
+    const double mu = 2*c0_;
+
+    r.psi = c0_*(Jm23*I1 - 3.0);
+    r.S = mu*Jm23*(I - I1/3.0*Ci);
+    r.CC = mu*Jm23*
+    (
+        -2.0/3.0*(dyad(I, Ci) + dyad(Ci, I))
+      + 2.0/9.0*I1*dyad(Ci, Ci)
+      + 2.0/3.0*I1*symProduct(Ci)
+    );
+}
