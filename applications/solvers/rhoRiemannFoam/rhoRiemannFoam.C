@@ -1,0 +1,99 @@
+/*---------------------------------------------------------------------------*\
+Application
+    rhoRiemannFoam
+
+Group
+    grpCompressibleSolvers
+
+Description
+    Density-based solver for compressible flow of a fluid with a general
+    equation of state (Mie-Grueneisen water, stiffened gas, ideal gas:
+    rhoEThermo), for shocks and blast waves in liquids.
+
+    Conservative variables (rho, rho U, rho E); Godunov-type fluxes from an
+    approximate Riemann solver (riemannFlux: HLLC, HLL, rusanov) on MUSCL
+    face states (limiter per variable in fvSchemes, reconstruct(...));
+    strong-stability-preserving Runge-Kutta in time (Shu & Osher, J. Comput.
+    Phys. 77, 1988: Euler, SSPRK2, SSPRK3); time step from maxCo with the
+    fastest signal speed |U.n| + c. Optional Newtonian viscous stress.
+
+    Every time step checks that each cell state lies inside the domain of the
+    equation of state; if not, the run stops naming the cell, its position
+    and the time, and the last written time directory is kept.
+
+Usage
+    In system/fvSolution:
+    \verbatim
+        riemann
+        {
+            riemannSolver   HLLC;       // HLLC | HLL | rusanov
+            timeScheme      SSPRK3;     // Euler | SSPRK2 | SSPRK3
+            viscous         false;      // add the Newtonian viscous stress
+            mu              1e-3;       // dynamic viscosity [Pa s], if viscous
+        }
+    \endverbatim
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "rhoEThermo.H"
+#include "riemannFlux.H"
+#include "rungeKuttaScheme.H"
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Density-based compressible flow solver for a general equation of"
+        " state (Mie-Grueneisen water): HLLC/MUSCL/SSP Runge-Kutta."
+    );
+
+    #include "postProcess.H"
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "createFields.H"
+    #include "createTimeControls.H"
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        #include "readTimeControls.H"
+
+        flux->fluxes(thermo, U, phi, phiU, phiE, amaxSf);
+
+        #include "courantNo.H"
+        #include "setDeltaT.H"
+
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << " s" << nl << endl;
+
+        const scalarField rhoOld(rho.primitiveField());
+        const vectorField rhoUOld(rhoU.primitiveField());
+        const scalarField rhoEOld(rhoE.primitiveField());
+
+        for (label stage = 0; stage < rk.nStages(); ++stage)
+        {
+            if (stage > 0)
+            {
+                flux->fluxes(thermo, U, phi, phiU, phiE, amaxSf);
+            }
+
+            #include "conservativeStage.H"
+        }
+
+        thermo.checkStates();
+
+        runTime.write();
+
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}

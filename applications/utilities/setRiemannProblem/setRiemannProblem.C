@@ -1,0 +1,85 @@
+/*---------------------------------------------------------------------------*\
+Application
+    setRiemannProblem
+
+Description
+    Sets the initial fields p, U and T of a shock-tube case from the two
+    states (rho, U, p) of system/riemannProblemDict: T follows from rho and p
+    through the equation of state of constant/thermophysicalProperties. The
+    boundary conditions in 0/ are kept.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "rhoEThermo.H"
+#include "riemannProblem.H"
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Set p, U, T of a shock tube from system/riemannProblemDict"
+    );
+    argList::noParallel();
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+
+    const riemannProblem problem(runTime);
+
+    autoPtr<rhoEThermo> pThermo(rhoEThermo::New(mesh));
+    rhoEThermo& thermo = pThermo();
+
+    volVectorField U
+    (
+        IOobject
+        (
+            "U",
+            runTime.timeName(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh
+    );
+
+    scalarField& rho = thermo.rho().primitiveFieldRef();
+    scalarField& p = thermo.p().primitiveFieldRef();
+    const vectorField& C = mesh.C().primitiveField();
+
+    forAll(C, celli)
+    {
+        const riemannProblem::state& s =
+            problem.xi(C[celli]) < 0 ? problem.left : problem.right;
+        rho[celli] = s.rho;
+        p[celli] = s.p;
+        U[celli] = s.U;
+    }
+
+    thermo.eFromRhoP(rho, p, thermo.e().primitiveFieldRef());
+    thermo.TFromRhoE
+    (
+        rho,
+        thermo.e().primitiveField(),
+        thermo.T().primitiveFieldRef()
+    );
+    thermo.checkStates();
+
+    thermo.p().correctBoundaryConditions();
+    thermo.T().correctBoundaryConditions();
+    U.correctBoundaryConditions();
+
+    thermo.p().write();
+    thermo.T().write();
+    U.write();
+
+    Info<< "Left  state: rho " << problem.left.rho << " kg/m^3, U "
+        << problem.left.U << " m/s, p " << problem.left.p << " Pa" << nl
+        << "Right state: rho " << problem.right.rho << " kg/m^3, U "
+        << problem.right.U << " m/s, p " << problem.right.p << " Pa" << nl
+        << "Diaphragm at " << problem.x0 << " m along "
+        << problem.direction << nl << "End" << endl;
+
+    return 0;
+}

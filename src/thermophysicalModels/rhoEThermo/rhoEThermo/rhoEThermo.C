@@ -1,0 +1,131 @@
+#include "rhoEThermo.H"
+#include "fvMesh.H"
+#include "Time.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(rhoEThermo, 0);
+    defineRunTimeSelectionTable(rhoEThermo, mesh);
+}
+
+
+namespace
+{
+
+Foam::IOobject thermoDictIO(const Foam::fvMesh& mesh)
+{
+    return Foam::IOobject
+    (
+        "thermophysicalProperties",
+        mesh.time().constant(),
+        mesh,
+        Foam::IOobject::MUST_READ_IF_MODIFIED,
+        Foam::IOobject::NO_WRITE
+    );
+}
+
+Foam::IOobject fieldIO
+(
+    const Foam::word& name,
+    const Foam::fvMesh& mesh,
+    Foam::IOobject::readOption r,
+    Foam::IOobject::writeOption w
+)
+{
+    return Foam::IOobject(name, mesh.time().timeName(), mesh, r, w);
+}
+
+} // End anonymous namespace
+
+
+Foam::rhoEThermo::rhoEThermo(const fvMesh& mesh)
+:
+    IOdictionary(thermoDictIO(mesh)),
+    mesh_(mesh),
+    p_(fieldIO("p", mesh, IOobject::MUST_READ, IOobject::AUTO_WRITE), mesh),
+    T_(fieldIO("T", mesh, IOobject::MUST_READ, IOobject::AUTO_WRITE), mesh),
+    rho_
+    (
+        fieldIO("rho", mesh, IOobject::NO_READ, IOobject::AUTO_WRITE),
+        mesh,
+        dimensionedScalar(dimDensity, Zero)
+    ),
+    e_
+    (
+        fieldIO("e", mesh, IOobject::NO_READ, IOobject::NO_WRITE),
+        mesh,
+        dimensionedScalar(dimEnergy/dimMass, Zero)
+    ),
+    c_
+    (
+        fieldIO("c", mesh, IOobject::NO_READ, IOobject::NO_WRITE),
+        mesh,
+        dimensionedScalar(dimVelocity, Zero)
+    )
+{
+    p_.dimensions().reset(dimPressure);
+    T_.dimensions().reset(dimTemperature);
+}
+
+
+void Foam::rhoEThermo::correctBoundaryStates()
+{
+    forAll(mesh_.boundary(), patchi)
+    {
+        const scalarField& pp = p_.boundaryField()[patchi];
+        const scalarField& Tp = T_.boundaryField()[patchi];
+        scalarField& rhop = rho_.boundaryFieldRef()[patchi];
+        scalarField& ep = e_.boundaryFieldRef()[patchi];
+        scalarField& cp = c_.boundaryFieldRef()[patchi];
+
+        rhoEFromPT(pp, Tp, rhop, ep);
+        cFromRhoE(rhop, ep, cp);
+    }
+}
+
+
+void Foam::rhoEThermo::correct()
+{
+    pFromRhoE(rho_.primitiveField(), e_.primitiveField(), p_.primitiveFieldRef());
+    TFromRhoE(rho_.primitiveField(), e_.primitiveField(), T_.primitiveFieldRef());
+    cFromRhoE(rho_.primitiveField(), e_.primitiveField(), c_.primitiveFieldRef());
+    p_.correctBoundaryConditions();
+    T_.correctBoundaryConditions();
+    correctBoundaryStates();
+}
+
+
+void Foam::rhoEThermo::correctFromPT()
+{
+    rhoEFromPT
+    (
+        p_.primitiveField(),
+        T_.primitiveField(),
+        rho_.primitiveFieldRef(),
+        e_.primitiveFieldRef()
+    );
+    cFromRhoE(rho_.primitiveField(), e_.primitiveField(), c_.primitiveFieldRef());
+    correctBoundaryStates();
+}
+
+
+void Foam::rhoEThermo::checkStates() const
+{
+    string reason;
+    const label celli =
+        firstInvalid(rho_.primitiveField(), e_.primitiveField(), reason);
+
+    if (celli >= 0)
+    {
+        FatalErrorInFunction
+            << "Invalid thermodynamic state (" << lawName() << "): "
+            << reason.c_str() << nl
+            << "    cell " << celli << " at " << mesh_.C()[celli] << " m"
+            << ", time " << mesh_.time().timeName() << " s" << nl
+            << "    rho = " << rho_[celli] << " kg/m^3, e = " << e_[celli]
+            << " J/kg" << nl
+            << "    The last written time directory is kept; reduce maxCo"
+            << " or check the initial and boundary conditions."
+            << exit(FatalError);
+    }
+}

@@ -1,0 +1,128 @@
+#include "rhoEThermoModel.H"
+#include "eosStatus.H"
+
+template<class Law>
+Law Foam::rhoEThermoModel<Law>::makeLaw(const dictionary& dict)
+{
+    const dictionary& coeffs =
+        dict.subDict(word(Law::typeName) + "Coeffs");
+    try
+    {
+        return Law(readParameters(coeffs));
+    }
+    catch (const eos::ParameterError& err)
+    {
+        FatalIOErrorInFunction(coeffs)
+            << err.what() << exit(FatalIOError);
+    }
+    return Law(typename Law::Parameters());
+}
+
+
+template<class Law>
+Foam::rhoEThermoModel<Law>::rhoEThermoModel(const fvMesh& mesh)
+:
+    rhoEThermo(mesh),
+    law_(makeLaw(*this))
+{
+    correctFromPT();
+}
+
+
+template<class Law>
+void Foam::rhoEThermoModel<Law>::pFromRhoE
+(
+    const scalarField& rho,
+    const scalarField& e,
+    scalarField& p
+) const
+{
+    forAll(rho, i)
+    {
+        p[i] = law_.p(rho[i], e[i]);
+    }
+}
+
+
+template<class Law>
+void Foam::rhoEThermoModel<Law>::eFromRhoP
+(
+    const scalarField& rho,
+    const scalarField& p,
+    scalarField& e
+) const
+{
+    forAll(rho, i)
+    {
+        e[i] = law_.e(rho[i], p[i]);
+    }
+}
+
+
+template<class Law>
+void Foam::rhoEThermoModel<Law>::cFromRhoE
+(
+    const scalarField& rho,
+    const scalarField& e,
+    scalarField& c
+) const
+{
+    forAll(rho, i)
+    {
+        const scalar c2 = law_.c2(rho[i], e[i]);
+        c[i] = c2 > 0 ? std::sqrt(c2) : 0;
+    }
+}
+
+
+template<class Law>
+void Foam::rhoEThermoModel<Law>::TFromRhoE
+(
+    const scalarField& rho,
+    const scalarField& e,
+    scalarField& T
+) const
+{
+    forAll(rho, i)
+    {
+        T[i] = law_.T(rho[i], e[i]);
+    }
+}
+
+
+template<class Law>
+void Foam::rhoEThermoModel<Law>::rhoEFromPT
+(
+    const scalarField& p,
+    const scalarField& T,
+    scalarField& rho,
+    scalarField& e
+) const
+{
+    forAll(p, i)
+    {
+        rho[i] = law_.rhoFromPT(p[i], T[i]);
+        e[i] = law_.eFromT(rho[i], T[i]);
+    }
+}
+
+
+template<class Law>
+Foam::label Foam::rhoEThermoModel<Law>::firstInvalid
+(
+    const scalarField& rho,
+    const scalarField& e,
+    string& reason
+) const
+{
+    forAll(rho, i)
+    {
+        const eos::Status s = law_.check(rho[i], e[i]);
+        if (s != eos::Status::ok)
+        {
+            reason = eos::statusMessage(s);
+            return i;
+        }
+    }
+    return -1;
+}

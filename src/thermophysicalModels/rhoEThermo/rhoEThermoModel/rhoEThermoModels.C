@@ -1,0 +1,86 @@
+/*---------------------------------------------------------------------------*\
+Description
+    The laws available to rhoEThermo, each registered under its typeName
+    (the value of equationOfState), with its coefficient reader.
+\*---------------------------------------------------------------------------*/
+
+#include "rhoEThermoModel.H"
+#include "addToRunTimeSelectionTable.H"
+#include "MieGruneisen.H"
+#include "StiffenedGas.H"
+#include "IdealGas.H"
+
+namespace Foam
+{
+
+namespace
+{
+    //- Read a dimensioned coefficient [SI]: the dimensions, when given,
+    //  must match
+    scalar readCoeff
+    (
+        const dictionary& dict,
+        const word& name,
+        const dimensionSet& dims
+    )
+    {
+        return dimensionedScalar(name, dims, dict).value();
+    }
+}
+
+
+template<>
+eos::MieGruneisen::Parameters
+rhoEThermoModel<eos::MieGruneisen>::readParameters(const dictionary& dict)
+{
+    eos::MieGruneisen::Parameters par;
+    par.rho0 = readCoeff(dict, "rho0", dimDensity);
+    par.C0 = readCoeff(dict, "C0", dimVelocity);
+    par.s = readCoeff(dict, "s", dimless);
+    par.Gamma0 = readCoeff(dict, "Gamma0", dimless);
+    par.Cv = readCoeff(dict, "Cv", dimEnergy/dimMass/dimTemperature);
+    par.T0 = readCoeff(dict, "T0", dimTemperature);
+    return par;
+}
+
+
+template<>
+eos::StiffenedGas::Parameters
+rhoEThermoModel<eos::StiffenedGas>::readParameters(const dictionary& dict)
+{
+    eos::StiffenedGas::Parameters par;
+    par.gamma = readCoeff(dict, "gamma", dimless);
+    par.pInf = readCoeff(dict, "pInf", dimPressure);
+    par.Cv = readCoeff(dict, "Cv", dimEnergy/dimMass/dimTemperature);
+    return par;
+}
+
+
+template<>
+eos::IdealGas::Parameters
+rhoEThermoModel<eos::IdealGas>::readParameters(const dictionary& dict)
+{
+    eos::IdealGas::Parameters par;
+    par.gamma = readCoeff(dict, "gamma", dimless);
+    par.Cv = readCoeff(dict, "Cv", dimEnergy/dimMass/dimTemperature);
+    return par;
+}
+
+
+#define makeRhoEThermoModel(Law)                                              \
+    typedef rhoEThermoModel<eos::Law> rhoEThermo##Law;                        \
+    defineTemplateTypeNameAndDebugWithName                                    \
+    (                                                                         \
+        rhoEThermo##Law,                                                      \
+        eos::Law::typeName,                                                   \
+        0                                                                     \
+    );                                                                        \
+    addToRunTimeSelectionTable(rhoEThermo, rhoEThermo##Law, mesh)
+
+makeRhoEThermoModel(MieGruneisen);
+makeRhoEThermoModel(StiffenedGas);
+makeRhoEThermoModel(IdealGas);
+
+#undef makeRhoEThermoModel
+
+} // End namespace Foam
