@@ -85,7 +85,7 @@ solid::VolumetricResponse solid::MieGruneisenVolumetric::evaluate
     }
 
     // Bulk viscosity with the sound speed lagged at the start of the step
-    double q = 0, dqdt = 0;
+    double q = 0, dqdt = 0, zeta = 0;
     if (in.dt > 0 && (b1_ > 0 || b2_ > 0))
     {
         const double cn = std::sqrt(std::max(eos_.c2(rho0/tn, en), 0.0));
@@ -101,6 +101,8 @@ solid::VolumetricResponse solid::MieGruneisenVolumetric::evaluate
             df += 2*b2_*b2_*L*L*epsv*depsv;
         }
         q = rho*f;
+        // Abaqus/Explicit: xi = b1 - b2^2 L min(0, epsv)/c
+        zeta = b1_ + (cn > 0 ? b2_*b2_*L*std::max(-epsv, 0.0)/cn : 0.0);
         dqdt = rho*df - rho/t*f;
     }
 
@@ -117,6 +119,7 @@ solid::VolumetricResponse solid::MieGruneisenVolumetric::evaluate
     VolumetricResponse r;
     r.p = p + q;
     r.q = q;
+    r.zeta = zeta;
     r.dpdtheta = dpdt + dqdt;
     r.energy = rho0*e;
     r.c2 = eos_.c2(rho, e);

@@ -1,0 +1,148 @@
+#include "Loads.H"
+#include "Model.H"
+#include "SolidError.H"
+
+#include <cmath>
+
+solid::NodalLoad::NodalLoad
+(
+    const std::vector<int>& nodes,
+    int component,
+    TimeFunction f
+)
+:
+    nodes_(nodes),
+    component_(component),
+    force_(std::move(f))
+{}
+
+
+void solid::NodalLoad::addForce
+(
+    const Model& model,
+    const Eigen::VectorXd&,
+    double t,
+    Eigen::VectorXd& f,
+    Triplets*
+) const
+{
+    const int dim = model.mesh().dim();
+    if (component_ < 0 || component_ >= dim)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter, "nodal load: component "
+          + std::to_string(component_) + " out of range [0, "
+          + std::to_string(dim) + ")"
+        );
+    }
+    const double F = force_(t);
+    for (int n : nodes_) f(n*dim + component_) += F;
+}
+
+
+solid::PressureLoad::PressureLoad(const std::string& faceSet, TimeFunction p)
+:
+    faceSet_(faceSet),
+    pressure_(std::move(p))
+{}
+
+
+void solid::PressureLoad::addForce
+(
+    const Model& model,
+    const Eigen::VectorXd& u,
+    double t,
+    Eigen::VectorXd& f,
+    Triplets* K
+) const
+{
+    const Mesh& mesh = model.mesh();
+    const int dim = mesh.dim();
+    const double p = pressure_(t);
+    if (p == 0) return;
+    const ShapeRule& rule = faceRule(mesh.type);
+    const int nf = rule.nen;
+    const auto skew = [](const Vec3& a)
+    {
+        Mat3 S;
+        S << 0, -a(2), a(1),
+             a(2), 0, -a(0),
+             -a(1), a(0), 0;
+        return S;
+    };
+    for (const auto& face : mesh.faceSet(faceSet_))
+    {
+        std::vector<Vec3> x(nf);
+        for (int a = 0; a < nf; ++a)
+        {
+            x[a] = mesh.X[face[a]];
+            for (int i = 0; i < dim; ++i) x[a](i) += u(face[a]*dim + i);
+        }
+        for (int q = 0; q < rule.nqp(); ++q)
+        {
+            const Eigen::VectorXd& N = rule.N[q];
+            const Eigen::MatrixXd& d = rule.dNdxi[q];
+            const double w = rule.w[q];
+            if (mesh.axisymmetric())
+            {
+                double r = 0, rx = 0, zx = 0;
+                for (int a = 0; a < nf; ++a)
+                {
+                    r += N(a)*x[a](0);
+                    rx += d(a, 0)*x[a](0);
+                    zx += d(a, 0)*x[a](1);
+                }
+                const double c = 2*M_PI*w*p;
+                for (int a = 0; a < nf; ++a)
+                {
+                    const int ra = face[a]*dim;
+                    f(ra) -= c*N(a)*r*zx;
+                    f(ra + 1) += c*N(a)*r*rx;
+                    if (!K) continue;
+                    for (int b = 0; b < nf; ++b)
+                    {
+                        const int rb = face[b]*dim;
+                        // -df/dx
+                        K->emplace_back(ra, rb, c*N(a)*N(b)*zx);
+                        K->emplace_back(ra, rb + 1, c*N(a)*r*d(b, 0));
+                        K->emplace_back
+                        (
+                            ra + 1, rb, -c*N(a)*(N(b)*rx + r*d(b, 0))
+                        );
+                    }
+                }
+            }
+            else
+            {
+                Vec3 xa = Vec3::Zero(), xb = Vec3::Zero();
+                for (int a = 0; a < nf; ++a)
+                {
+                    xa += d(a, 0)*x[a];
+                    xb += d(a, 1)*x[a];
+                }
+                const Vec3 n = xa.cross(xb);
+                for (int a = 0; a < nf; ++a)
+                {
+                    const int ra = face[a]*dim;
+                    for (int i = 0; i < 3; ++i) f(ra + i) -= p*w*N(a)*n(i);
+                    if (!K) continue;
+                    for (int b = 0; b < nf; ++b)
+                    {
+                        const int rb = face[b]*dim;
+                        // dn/dx_b = -N_b,xi [x,eta]x + N_b,eta [x,xi]x
+                        const Mat3 dn = -d(b, 0)*skew(xb) + d(b, 1)*skew(xa);
+                        for (int i = 0; i < 3; ++i)
+                        for (int k = 0; k < 3; ++k)
+                        {
+                            K->emplace_back
+                            (
+                                ra + i, rb + k, p*w*N(a)*dn(i, k)
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,239 @@
+#include "MixedElement.H"
+#include "SolidError.H"
+
+#include <cmath>
+#include <sstream>
+
+double solid::characteristicLength
+(
+    ElementType type,
+    const Eigen::VectorXd& xe
+)
+{
+    const bool axi = type == ElementType::quad4Axi;
+    const int dim = axi ? 2 : 3;
+    auto x = [&](int a)
+    {
+        Vec3 p = Vec3::Zero();
+        for (int i = 0; i < dim; ++i) p(i) = xe(a*dim + i);
+        return p;
+    };
+    double amax = 0;
+    for (const auto& f : elementFaces(type))
+    {
+        if (axi)
+        {
+            amax = std::max(amax, (x(f[1]) - x(f[0])).norm());
+        }
+        else
+        {
+            const Vec3 d1 = x(f[2]) - x(f[0]), d2 = x(f[3]) - x(f[1]);
+            amax = std::max(amax, 0.5*d1.cross(d2).norm());
+        }
+    }
+    if (axi)
+    {
+        const Vec3 d1 = x(2) - x(0), d2 = x(3) - x(1);
+        return 0.5*std::abs(d1(0)*d2(1) - d1(1)*d2(0))/amax;
+    }
+    const ShapeRule& rule = volumeRule(type);
+    double vol = 0;
+    for (int q = 0; q < rule.nqp(); ++q)
+    {
+        Mat3 Jm = Mat3::Zero();
+        for (int a = 0; a < rule.nen; ++a)
+            Jm += x(a)*rule.dNdxi[q].row(a);
+        vol += rule.w[q]*Jm.determinant();
+    }
+    return vol/amax;
+}
+
+
+void solid::ElementGeometry::build(const Mesh& mesh, int e)
+{
+    const ShapeRule& rule = volumeRule(mesh.type);
+    const int nen = rule.nen, pdim = rule.pdim;
+    const int* en = mesh.element(e);
+    dNdX.clear();
+    N.clear();
+    w.clear();
+    R.clear();
+    V = 0;
+    lumpedMass = Eigen::VectorXd::Zero(nen);
+    for (int q = 0; q < rule.nqp(); ++q)
+    {
+        Eigen::MatrixXd J0 = Eigen::MatrixXd::Zero(pdim, pdim);
+        for (int a = 0; a < nen; ++a)
+        for (int i = 0; i < pdim; ++i)
+        for (int j = 0; j < pdim; ++j)
+        {
+            J0(i, j) += mesh.X[en[a]](i)*rule.dNdxi[q](a, j);
+        }
+        const double det = J0.determinant();
+        if (!(det > 0))
+        {
+            std::ostringstream os;
+            os  << "element " << e << " (region '"
+                << mesh.regionNames.at(mesh.region[e])
+                << "') is inverted or degenerate in the reference "
+                "configuration (det J0 = " << det << ")";
+            throw SolidError(SolidError::Kind::mesh, os.str());
+        }
+        Eigen::MatrixXd d = Eigen::MatrixXd::Zero(nen, 3);
+        d.leftCols(pdim) = rule.dNdxi[q]*J0.inverse();
+        double wq = rule.w[q]*det;
+        double r = 0;
+        if (mesh.axisymmetric())
+        {
+            for (int a = 0; a < nen; ++a) r += rule.N[q](a)*mesh.X[en[a]](0);
+            wq *= 2*M_PI*r;
+        }
+        dNdX.push_back(d);
+        N.push_back(rule.N[q]);
+        w.push_back(wq);
+        R.push_back(r);
+        V += wq;
+        lumpedMass += wq*rule.N[q];
+    }
+    Eigen::VectorXd xe(rule.nen*mesh.dim());
+    for (int a = 0; a < rule.nen; ++a)
+        for (int i = 0; i < mesh.dim(); ++i) xe(a*mesh.dim() + i) = mesh.X[en[a]](i);
+    length = characteristicLength(mesh.type, xe);
+}
+
+
+void solid::MixedElement::evaluate
+(
+    const Mesh& mesh,
+    int e,
+    const ElementGeometry& geo,
+    const Material& mat,
+    const Eigen::VectorXd& ue,
+    double pMultiplier,
+    double dt,
+    const double* pointOld,
+    double* pointNew,
+    const double* elemOld,
+    double* elemNew,
+    bool tangent,
+    ElementOutput& out
+)
+{
+    const int nen = mesh.nen();
+    const int dim = mesh.dim();
+    const int nd = nen*dim;
+    const bool axi = mesh.axisymmetric();
+    const IsochoricModel& iso = mat.isochoric();
+    const VolumetricLaw& vol = mat.volumetric();
+    const int nh = iso.nHistory();
+
+    out.f = Eigen::VectorXd::Zero(nd);
+    out.g = Eigen::VectorXd::Zero(nd);
+    if (tangent) out.K = Eigen::MatrixXd::Zero(nd, nd);
+    Eigen::MatrixXd H;
+    if (tangent) H = Eigen::MatrixXd::Zero(nd, nd);
+    out.v = 0;
+    out.energy = 0;
+    out.dissipated = 0;
+    out.Jmin = 1e300;
+    out.sigma.setZero();
+
+    Eigen::Matrix<double, 9, Eigen::Dynamic> B(9, nd);
+    for (std::size_t q = 0; q < geo.w.size(); ++q)
+    {
+        // B: columns vec(dF/du_ai)
+        B.setZero();
+        const Eigen::MatrixXd& G = geo.dNdX[q];
+        for (int a = 0; a < nen; ++a)
+        {
+            for (int i = 0; i < dim; ++i)
+            {
+                for (int Jc = 0; Jc < 3; ++Jc)
+                {
+                    B(3*i + Jc, a*dim + i) = G(a, Jc);
+                }
+            }
+            if (axi)
+            {
+                B(8, a*dim) = geo.N[q](a)/geo.R[q];
+            }
+        }
+        const Vec9 fv = B*ue;
+        Mat3 F = Mat3::Identity() + tensor::unvec(fv);
+        const double J = F.determinant();
+        out.Jmin = std::min(out.Jmin, J);
+        if (!(J > 0))
+        {
+            std::ostringstream os;
+            os  << "element " << e << " (region '"
+                << mesh.regionNames.at(mesh.region[e])
+                << "') inverted during the solve: J = " << J
+                << " at Gauss point " << q;
+            throw SolidError(SolidError::Kind::invertedElement, os.str());
+        }
+        const Mat3 Fi = F.inverse();
+        const double wq = geo.w[q];
+
+        IsoResponse r;
+        iso.evaluate
+        (
+            F.transpose()*F, dt, pointOld + q*nh, pointNew + q*nh, r
+        );
+        const Mat3 P = F*r.S;
+        out.f += wq*(B.transpose()*tensor::vec(P));
+        out.g += wq*(B.transpose()*tensor::vec(J*Fi.transpose()));
+        out.v += J*wq;
+        out.energy += r.psi*wq;
+        out.dissipated += iso.dissipated(pointNew + q*nh)*wq;
+        out.sigma += wq*(P*F.transpose());     // J sigma_iso dV
+        if (tangent)
+        {
+            const Mat9 A = tensor::firstElasticity(F, r.S, r.CC);
+            out.K.noalias() += wq*(B.transpose()*A*B);
+            H.noalias() += wq*(B.transpose()*tensor::d2Jacobian(Fi, J)*B);
+        }
+    }
+    out.theta = out.v/geo.V;
+
+    {
+        Eigen::VectorXd xe(nen*dim);
+        const int* en = mesh.element(e);
+        for (int a = 0; a < nen; ++a)
+            for (int i = 0; i < dim; ++i)
+                xe(a*dim + i) = mesh.X[en[a]](i) + ue(a*dim + i);
+        out.length = characteristicLength(mesh.type, xe);
+    }
+
+    const double rho = mat.rho0()/out.theta;
+    const double mu = iso.instantaneousShearModulus();
+    if (vol.isConstraint())
+    {
+        out.p = pMultiplier;
+        out.q = 0;
+        out.c2 = 0;
+        out.zeta = 0;
+        out.temperatureRise = 0;
+    }
+    else
+    {
+        VolumetricInput in;
+        in.theta = out.theta;
+        in.dt = dt;
+        in.length = geo.length;
+        const VolumetricResponse vr = vol.evaluate(in, elemOld, elemNew);
+        out.p = vr.p;
+        out.q = vr.q;
+        out.energy += vr.energy*geo.V;
+        out.dissipated += vol.dissipated(elemNew)*geo.V;
+        out.temperatureRise = vr.temperatureRise;
+        out.c2 = vr.c2 + 4.0/3.0*mu/rho;
+        out.zeta = vr.zeta;
+        if (tangent)
+        {
+            out.K.noalias() -= (vr.dpdtheta/geo.V)*out.g*out.g.transpose();
+        }
+    }
+    out.f -= out.p*out.g;
+    if (tangent) out.K.noalias() -= out.p*H;
+    out.sigma = out.sigma/out.v - out.p*Mat3::Identity();
+}

@@ -1,0 +1,275 @@
+#include "Model.H"
+#include "SolidError.H"
+
+#include <set>
+
+solid::Model::Model(Mesh mesh)
+:
+    mesh_(std::move(mesh))
+{
+    mesh_.check();
+    regionMaterial_.resize(mesh_.regionNames.size());
+}
+
+
+void solid::Model::requireInitialised(const char* what) const
+{
+    if (!initialised_)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter,
+            std::string("Model::") + what + " called before initialise()"
+        );
+    }
+}
+
+
+void solid::Model::setMaterial
+(
+    const std::string& region,
+    std::shared_ptr<const Material> material
+)
+{
+    regionMaterial_[mesh_.regionId(region)] = std::move(material);
+    initialised_ = false;
+}
+
+
+void solid::Model::fix(const std::string& nodeSet, int comp, TimeFunction f)
+{
+    for (int n : mesh_.nodeSet(nodeSet)) fixNode(n, comp, f);
+}
+
+
+void solid::Model::fixNode(int node, int comp, TimeFunction f)
+{
+    if (comp < 0 || comp >= mesh_.dim() || node < 0 || node >= mesh_.nNodes())
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter, "Dirichlet condition on node "
+          + std::to_string(node) + " component " + std::to_string(comp)
+          + " is out of range"
+        );
+    }
+    dirichlet_.push_back({node*mesh_.dim() + comp, f});
+    initialised_ = false;
+}
+
+
+void solid::Model::add(std::shared_ptr<Contribution> c)
+{
+    contributions_.push_back(std::move(c));
+}
+
+
+void solid::Model::initialise()
+{
+    for (std::size_t r = 0; r < regionMaterial_.size(); ++r)
+    {
+        if (!regionMaterial_[r])
+        {
+            int n = 0;
+            for (int reg : mesh_.region) n += (reg == int(r));
+            throw SolidError
+            (
+                SolidError::Kind::parameter,
+                "region '" + mesh_.regionNames[r] + "' ("
+              + std::to_string(n) + " elements) has no material"
+            );
+        }
+    }
+    const int ne = mesh_.nElements();
+    geometry_.resize(ne);
+    multiplier_.assign(ne, -1);
+    int nm = 0;
+    std::vector<int> pointSizes(ne), elemSizes(ne);
+    lumpedMass_ = Eigen::VectorXd::Zero(nDisplacementDofs());
+    const int dim = mesh_.dim();
+    for (int e = 0; e < ne; ++e)
+    {
+        geometry_[e].build(mesh_, e);
+        const Material& m = material(e);
+        if (m.volumetric().isConstraint()) multiplier_[e] = nm++;
+        pointSizes[e] = int(geometry_[e].w.size())*m.isochoric().nHistory();
+        elemSizes[e] = m.volumetric().nHistory();
+        const int* en = mesh_.element(e);
+        for (int a = 0; a < mesh_.nen(); ++a)
+        {
+            for (int i = 0; i < dim; ++i)
+            {
+                lumpedMass_(en[a]*dim + i) +=
+                    m.rho0()*geometry_[e].lumpedMass(a);
+            }
+        }
+    }
+    pointState_.resize(pointSizes);
+    elementState_.resize(elemSizes);
+    for (int e = 0; e < ne; ++e)
+    {
+        const Material& m = material(e);
+        const int nh = m.isochoric().nHistory();
+        for (std::size_t q = 0; q < geometry_[e].w.size(); ++q)
+        {
+            m.isochoric().initHistory(pointState_.old(e) + q*nh);
+        }
+        m.volumetric().initHistory(elementState_.old(e));
+    }
+    pointState_.revert();
+    elementState_.revert();
+
+    u = Eigen::VectorXd::Zero(nDisplacementDofs());
+    v = Eigen::VectorXd::Zero(nDisplacementDofs());
+    pressure = Eigen::VectorXd::Zero(nm);
+    freeIndex_.assign(nUnknowns(), 0);
+    for (const auto& d : dirichlet_) freeIndex_[d.dof] = -1;
+    nFree_ = 0;
+    for (auto& f : freeIndex_)
+    {
+        if (f == 0) f = nFree_++;
+    }
+    initialised_ = true;
+    applyDirichlet(u, time);
+}
+
+
+void solid::Model::applyDirichlet(Eigen::VectorXd& x, double t) const
+{
+    for (const auto& d : dirichlet_) x(d.dof) = d.value ? d.value(t) : 0.0;
+}
+
+
+std::vector<int> solid::Model::prescribedDofs() const
+{
+    std::set<int> s;
+    for (const auto& d : dirichlet_) s.insert(d.dof);
+    return std::vector<int>(s.begin(), s.end());
+}
+
+
+Eigen::VectorXd solid::Model::elementDisplacement
+(
+    int e,
+    const Eigen::VectorXd& x
+) const
+{
+    const int dim = mesh_.dim(), nen = mesh_.nen();
+    Eigen::VectorXd ue(nen*dim);
+    const int* en = mesh_.element(e);
+    for (int a = 0; a < nen; ++a)
+        for (int i = 0; i < dim; ++i) ue(a*dim + i) = x(en[a]*dim + i);
+    return ue;
+}
+
+
+void solid::Model::externalForce
+(
+    const Eigen::VectorXd& x,
+    double t,
+    Eigen::VectorXd& fext
+) const
+{
+    fext = Eigen::VectorXd::Zero(nDisplacementDofs());
+    for (const auto& c : contributions_) c->addForce(*this, x, t, fext, nullptr);
+}
+
+
+void solid::Model::assemble
+(
+    const Eigen::VectorXd& x,
+    const Eigen::VectorXd& p,
+    double t,
+    double dt,
+    bool tangent,
+    Assembly& a
+)
+{
+    requireInitialised("assemble");
+    const int dim = mesh_.dim(), nen = mesh_.nen(), nd = nen*dim;
+    const int nu = nDisplacementDofs();
+    a.fint = Eigen::VectorXd::Zero(nu);
+    a.constraint = Eigen::VectorXd::Zero(nMultipliers());
+    a.K.clear();
+    a.energy = 0;
+    a.dissipated = 0;
+    if (tangent)
+    {
+        a.K.reserve(std::size_t(mesh_.nElements())*(nd*nd + 2*nd));
+    }
+    ElementOutput out;
+    std::vector<int> dofs(nd);
+    for (int e = 0; e < mesh_.nElements(); ++e)
+    {
+        const int* en = mesh_.element(e);
+        for (int b = 0; b < nen; ++b)
+            for (int i = 0; i < dim; ++i) dofs[b*dim + i] = en[b]*dim + i;
+        const int m = multiplier_[e];
+        MixedElement::evaluate
+        (
+            mesh_, e, geometry_[e], material(e), elementDisplacement(e, x),
+            m >= 0 ? p(m) : 0.0, dt,
+            pointState_.old(e), pointState_.current(e),
+            elementState_.old(e), elementState_.current(e),
+            tangent, out
+        );
+        for (int i = 0; i < nd; ++i) a.fint(dofs[i]) += out.f(i);
+        a.energy += out.energy;
+        a.dissipated += out.dissipated;
+        if (m >= 0)
+        {
+            a.constraint(m) = -(out.v - geometry_[e].V);
+        }
+        if (tangent)
+        {
+            for (int i = 0; i < nd; ++i)
+                for (int j = 0; j < nd; ++j)
+                    a.K.emplace_back(dofs[i], dofs[j], out.K(i, j));
+            if (m >= 0)
+            {
+                for (int i = 0; i < nd; ++i)
+                {
+                    a.K.emplace_back(dofs[i], nu + m, -out.g(i));
+                    a.K.emplace_back(nu + m, dofs[i], -out.g(i));
+                }
+            }
+        }
+    }
+    a.fext = Eigen::VectorXd::Zero(nu);
+    for (const auto& c : contributions_)
+    {
+        c->addForce(*this, x, t, a.fext, tangent ? &a.K : nullptr);
+    }
+}
+
+
+solid::ElementOutput solid::Model::evaluateElement(int e, double dt)
+{
+    requireInitialised("evaluateElement");
+    ElementOutput out;
+    const int m = multiplier_[e];
+    // Evaluate from the committed history without touching it
+    std::vector<double> pn(pointState_.size(e)), en(elementState_.size(e));
+    MixedElement::evaluate
+    (
+        mesh_, e, geometry_[e], material(e), elementDisplacement(e, u),
+        m >= 0 ? pressure(m) : 0.0, dt, pointState_.old(e), pn.data(),
+        elementState_.old(e), en.data(), false, out
+    );
+    return out;
+}
+
+
+void solid::Model::commit()
+{
+    pointState_.commit();
+    elementState_.commit();
+    for (const auto& c : contributions_) c->commit(*this, u, time);
+}
+
+
+void solid::Model::revert()
+{
+    pointState_.revert();
+    elementState_.revert();
+}

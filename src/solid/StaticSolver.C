@@ -1,0 +1,289 @@
+#include "StaticSolver.H"
+#include "SolidError.H"
+
+#include <Eigen/SparseLU>
+#include <cmath>
+#include <limits>
+#include <ostream>
+
+solid::StaticSolver::StaticSolver
+(
+    Model& model,
+    const NewtonSettings& settings
+)
+:
+    model_(model),
+    set_(settings)
+{}
+
+
+namespace
+{
+
+struct Norms
+{
+    double residual;    // normalised combined residual
+    double merit;
+};
+
+} // namespace
+
+
+bool solid::StaticSolver::newton
+(
+    double dt,
+    std::vector<IterationRecord>& hist,
+    std::string& reason
+)
+{
+    Model& m = model_;
+    const int nu = m.nDisplacementDofs();
+    const int nm = m.nMultipliers();
+    const int nf = m.nFree();
+    const auto& fi = m.freeIndex();
+    const double t = m.time + dt;
+
+    Eigen::VectorXd x = m.u;
+    Eigen::VectorXd p = m.pressure;
+    m.applyDirichlet(x, t);
+
+    // Reference volume per multiplier (constraint scaling)
+    Eigen::VectorXd Vm(nm);
+    for (int e = 0; e < m.mesh().nElements(); ++e)
+    {
+        if (m.multiplierOf(e) >= 0) Vm(m.multiplierOf(e)) = m.geometry(e).V;
+    }
+    double uScale = 0;
+    for (int e = 0; e < m.mesh().nElements(); ++e)
+    {
+        uScale = std::max(uScale, std::cbrt(std::abs(m.geometry(e).V)));
+    }
+    uScale *= 1e-12;
+
+    Assembly a;
+    Eigen::VectorXd R(nf);
+    double Fref = 0;
+    auto evaluate = [&](const Eigen::VectorXd& xx, const Eigen::VectorXd& pp,
+                        bool tangent) -> Norms
+    {
+        m.assemble(xx, pp, t, dt, tangent, a);
+        const Eigen::VectorXd r = a.fint - a.fext;
+        double ru2 = 0, rp2 = 0, react2 = 0;
+        for (int i = 0; i < nu; ++i)
+        {
+            if (fi[i] >= 0)
+            {
+                R(fi[i]) = r(i);
+                ru2 += r(i)*r(i);
+            }
+            else
+            {
+                react2 += r(i)*r(i);
+            }
+        }
+        for (int k = 0; k < nm; ++k)
+        {
+            R(fi[nu + k]) = a.constraint(k);
+            rp2 = std::max(rp2, std::abs(a.constraint(k))/Vm(k));
+        }
+        Fref = std::max({Fref, a.fext.norm(), std::sqrt(react2)});
+        const double F = Fref > 0 ? Fref : 1.0;
+        Norms n;
+        n.residual = std::max(std::sqrt(ru2)/F, rp2);
+        n.merit = ru2/(F*F) + rp2*rp2;
+        return n;
+    };
+
+    Norms n;
+    try
+    {
+        n = evaluate(x, p, true);
+    }
+    catch (const SolidError& e)
+    {
+        if (!e.recoverable()) throw;
+        reason = e.what();
+        return false;
+    }
+
+    Eigen::SparseMatrix<double> K(nf, nf);
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+    bool patternDone = false;
+    double update = std::numeric_limits<double>::infinity();
+    for (int it = 0; it < set_.maxIterations; ++it)
+    {
+        if (n.residual <= set_.tolResidual && update <= set_.tolDisplacement)
+        {
+            m.u = x;
+            m.pressure = p;
+            return true;
+        }
+        // Reduced tangent
+        Triplets red;
+        red.reserve(a.K.size());
+        for (const auto& tr : a.K)
+        {
+            const int r = fi[tr.row()], c = fi[tr.col()];
+            if (r >= 0 && c >= 0) red.emplace_back(r, c, tr.value());
+        }
+        K.setFromTriplets(red.begin(), red.end());
+        if (!patternDone)
+        {
+            lu.analyzePattern(K);
+            patternDone = true;
+        }
+        lu.factorize(K);
+        if (lu.info() != Eigen::Success)
+        {
+            reason = "singular tangent matrix (check the Dirichlet "
+                     "conditions: rigid-body modes?)";
+            return false;
+        }
+        const Eigen::VectorXd dx = lu.solve(-R);
+
+        // Line search on the merit function
+        Eigen::VectorXd xt = x, pt = p;
+        double alpha = 1, bestAlpha = 0, bestMerit = n.merit;
+        Norms nt{};
+        bool ok = false;
+        for (int ls = 0; ls <= (set_.lineSearch ? set_.maxLineSearch : 0); ++ls)
+        {
+            xt = x;
+            pt = p;
+            for (int i = 0; i < nu; ++i)
+                if (fi[i] >= 0) xt(i) += alpha*dx(fi[i]);
+            for (int k = 0; k < nm; ++k) pt(k) += alpha*dx(fi[nu + k]);
+            try
+            {
+                nt = evaluate(xt, pt, true);
+                if (nt.merit <= (1 - 1e-4*alpha)*n.merit || !set_.lineSearch)
+                {
+                    ok = true;
+                    break;
+                }
+                if (nt.merit < bestMerit)
+                {
+                    bestMerit = nt.merit;
+                    bestAlpha = alpha;
+                }
+            }
+            catch (const SolidError& e)
+            {
+                if (!e.recoverable()) throw;
+                reason = e.what();
+            }
+            alpha *= 0.5;
+        }
+        if (!ok)
+        {
+            if (bestAlpha == 0)
+            {
+                if (reason.empty()) reason = "line search failed";
+                return false;
+            }
+            alpha = bestAlpha;
+            xt = x;
+            pt = p;
+            for (int i = 0; i < nu; ++i)
+                if (fi[i] >= 0) xt(i) += alpha*dx(fi[i]);
+            for (int k = 0; k < nm; ++k) pt(k) += alpha*dx(fi[nu + k]);
+            nt = evaluate(xt, pt, true);
+        }
+        double du2 = 0;
+        for (int i = 0; i < nu; ++i)
+            if (fi[i] >= 0) du2 += std::pow(alpha*dx(fi[i]), 2);
+        update = std::sqrt(du2)/std::max(xt.norm(), uScale);
+        hist.push_back({it, n.residual, update, alpha});
+        if (set_.log)
+        {
+            *set_.log << "    Newton " << it << ": residual " << n.residual
+                << " -> " << nt.residual << ", update " << update
+                << ", alpha " << alpha << '\n';
+        }
+        x = xt;
+        p = pt;
+        n = nt;
+    }
+    if (n.residual <= set_.tolResidual && update <= set_.tolDisplacement)
+    {
+        m.u = x;
+        m.pressure = p;
+        return true;
+    }
+    reason = "Newton did not converge in " + std::to_string(set_.maxIterations)
+        + " iterations (normalised residual " + std::to_string(n.residual)
+        + ")";
+    return false;
+}
+
+
+solid::StepReport solid::StaticSolver::step(double dt)
+{
+    Model& m = model_;
+    StepReport rep;
+    const double tEnd = m.time + dt;
+    double h = dt;
+    int cuts = 0;
+    while (m.time < tEnd - 1e-12*dt)
+    {
+        h = std::min(h, tEnd - m.time);
+        std::vector<IterationRecord> hist;
+        std::string reason;
+        const Eigen::VectorXd u0 = m.u;
+        const bool ok = newton(h, hist, reason);
+        rep.iterations += int(hist.size());
+        if (ok)
+        {
+            m.v = (m.u - u0)/h;
+            m.time += h;
+            m.commit();
+            rep.subSteps++;
+            rep.lastHistory = hist;
+            if (set_.log)
+            {
+                *set_.log << "  t = " << m.time << " s: converged in "
+                    << hist.size() << " iterations\n";
+            }
+        }
+        else
+        {
+            m.revert();
+            m.u = u0;
+            if (++cuts > set_.maxCuts)
+            {
+                throw SolidError
+                (
+                    SolidError::Kind::notConverged,
+                    "static step from t = " + std::to_string(m.time)
+                  + " s failed after " + std::to_string(set_.maxCuts)
+                  + " step cuts (last dt = " + std::to_string(h)
+                  + " s): " + reason
+                );
+            }
+            if (set_.log)
+            {
+                *set_.log << "  step cut to dt = " << h/2 << " s: " << reason
+                    << '\n';
+            }
+            h *= 0.5;
+        }
+    }
+    rep.cuts = cuts;
+    rep.time = m.time;
+    return rep;
+}
+
+
+Eigen::VectorXd solid::StaticSolver::reactions()
+{
+    Model& m = model_;
+    Assembly a;
+    m.assemble(m.u, m.pressure, m.time, 0, false, a);
+    m.revert();
+    Eigen::VectorXd r = a.fint - a.fext;
+    for (int i = 0; i < m.nDisplacementDofs(); ++i)
+    {
+        if (m.freeIndex()[i] >= 0) r(i) = 0;
+    }
+    return r;
+}
