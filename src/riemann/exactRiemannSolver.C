@@ -98,9 +98,12 @@ void exactRiemannSolver<Eos>::solve()
             std::numeric_limits<double>::min()
         }
     );
+    // |f| tolerance far above its rounding eps (|f_L| + |f_R| + |du|)
+    const double fTol =
+        1e-12*(curveL_.c() + curveR_.c() + std::abs(du));
     const double inf = std::numeric_limits<double>::infinity();
     const rootResult r =
-        safeguardedNewton(fdf, p0, -inf, inf, 2e-15*pScale, 100);
+        safeguardedNewton(fdf, p0, -inf, inf, 2e-15*pScale, fTol, 100);
     if (!r.converged)
     {
         throw std::runtime_error

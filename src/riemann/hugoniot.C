@@ -97,10 +97,13 @@ typename hugoniot<Eos>::point hugoniot<Eos>::at(double p) const
     double v0 = vA - (p - pA_)/zA2;
     if (!(v0 > vLo && v0 < vHi)) v0 = 0.5*(vLo + vHi);
 
+    // |H| tolerance far above its rounding eps (|e| + p v)
+    const double hTol =
+        1e-10*(std::abs(eA_) + (std::abs(p) + std::abs(pA_))*vA);
     const rootResult r = safeguardedNewton
     (
         fdf, v0, vLo, vHi,
-        4*std::numeric_limits<double>::epsilon()*vA, 200
+        4*std::numeric_limits<double>::epsilon()*vA, hTol, 200
     );
     const double v = r.x;
     const double dHdv = fdf(v).second;

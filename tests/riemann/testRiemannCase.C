@@ -1,0 +1,134 @@
+/*---------------------------------------------------------------------------*\
+Description
+    Input of the exactRiemann sampler: the example in the Usage of
+    riemannCase.H parses and solves (keeps the documentation true), and
+    every invalid entry is rejected naming the entry and its range.
+\*---------------------------------------------------------------------------*/
+
+#include "anyExactRiemannSolver.H"
+#include "inputError.H"
+#include "riemannCase.H"
+#include <gtest/gtest.h>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace
+{
+
+//- The \verbatim block after "Example" in riemannCase.H
+std::string usageExample()
+{
+    std::ifstream is(RIEMANN_SOURCE_DIR "/riemannCase.H");
+    std::stringstream ss;
+    ss << is.rdbuf();
+    const std::string text = ss.str();
+    const auto ex = text.find("Example");
+    const auto b = text.find("\\verbatim", ex);
+    const auto e = text.find("\\endverbatim", b);
+    if (ex == std::string::npos || e == std::string::npos) return "";
+    return text.substr(b + 9, e - b - 9);
+}
+
+riemann::riemannCase::entryTable exampleEntries()
+{
+    riemann::riemannCase::entryTable entries;
+    std::istringstream is(usageExample());
+    riemann::riemannCase::read(is, "riemannCase.H", entries);
+    return entries;
+}
+
+//- The what() of the inputError thrown for the entries
+std::string errorFor(const riemann::riemannCase::entryTable& entries)
+{
+    try
+    {
+        riemann::riemannCase rc(entries);
+    }
+    catch (const riemann::inputError& err)
+    {
+        return err.what();
+    }
+    return "no error";
+}
+
+} // namespace
+
+
+TEST(riemannCase, usageExampleParsesAndSolves)
+{
+    const auto entries = exampleEntries();
+    ASSERT_EQ(entries.size(), 18u);
+    const riemann::riemannCase rc(entries);
+    EXPECT_EQ(riemann::eosName(rc.law()), "mieGruneisen");
+    EXPECT_EQ(rc.points().size(), 201u);
+    EXPECT_DOUBLE_EQ(rc.left().p, 1e9);
+    // Both states are cold water (e = 0) as the comment says
+    const auto& law = std::get<eos::MieGruneisen>(rc.law());
+    EXPECT_NEAR(law.e(rc.left().rho, rc.left().p), 0, 10.0);
+    EXPECT_NEAR(law.e(rc.right().rho, rc.right().p), 0, 10.0);
+    const riemann::anyExactRiemannSolver rp(rc.law(), rc.left(), rc.right());
+    EXPECT_GT(rp.star().p, 1e8);
+}
+
+
+TEST(riemannCase, invalidEntriesNameTheEntryAndRange)
+{
+    auto with = [](const std::string& key, const std::string& value)
+    {
+        auto e = exampleEntries();
+        e[key] = value;
+        return e;
+    };
+    auto contains = [](const std::string& s, const std::string& part)
+    {
+        return s.find(part) != std::string::npos;
+    };
+    std::string m;
+    m = errorFor(with("rhoL", "-1"));
+    EXPECT_TRUE(contains(m, "'rhoL'") && contains(m, "kg/m^3")) << m;
+    m = errorFor(with("t", "0"));
+    EXPECT_TRUE(contains(m, "'t'") && contains(m, "(0, inf)")) << m;
+    m = errorFor(with("pR", "abc"));
+    EXPECT_TRUE(contains(m, "'pR'") && contains(m, "not a number")) << m;
+    m = errorFor(with("n", "2.5"));
+    EXPECT_TRUE(contains(m, "'n'") && contains(m, "integer")) << m;
+    m = errorFor(with("n", "1"));
+    EXPECT_TRUE(contains(m, "'n'")) << m;
+    m = errorFor(with("xMax", "-1"));
+    EXPECT_TRUE(contains(m, "'xMax'")) << m;
+    m = errorFor(with("uL", "nan"));
+    EXPECT_TRUE(contains(m, "'uL'")) << m;
+    m = errorFor(with("pressure", "1"));
+    EXPECT_TRUE(contains(m, "unknown entry 'pressure'")) << m;
+    m = errorFor(with("gamma", "1.4"));
+    EXPECT_TRUE(contains(m, "unknown entry 'gamma'")) << m;
+    m = errorFor(with("law", "tillotson"));
+    EXPECT_TRUE(contains(m, "mieGruneisen") && contains(m, "idealGas")) << m;
+    auto missing = exampleEntries();
+    missing.erase("pL");
+    m = errorFor(missing);
+    EXPECT_TRUE(contains(m, "missing entry 'pL'")) << m;
+    EXPECT_THROW
+    (
+        riemann::riemannCase(with("C0", "-1450")), eos::ParameterError
+    );
+}
+
+
+TEST(riemannCase, argumentsOverrideAndMalformedLinesAreRejected)
+{
+    auto entries = exampleEntries();
+    riemann::riemannCase::readArgument("t=2e-5", entries);
+    EXPECT_DOUBLE_EQ(riemann::riemannCase(entries).t(), 2e-5);
+    EXPECT_THROW
+    (
+        riemann::riemannCase::readArgument("t2e-5", entries),
+        riemann::inputError
+    );
+    std::istringstream bad("rhoL 1 2;\n");
+    EXPECT_THROW
+    (
+        riemann::riemannCase::read(bad, "bad", entries), riemann::inputError
+    );
+}
