@@ -85,7 +85,7 @@ solid::VolumetricResponse solid::MieGruneisenVolumetric::evaluate
     }
 
     // Bulk viscosity with the sound speed lagged at the start of the step
-    double q = 0, dqdt = 0, zeta = 0;
+    double q = 0, dqdt = 0, zeta = b1_;
     if (in.dt > 0 && (b1_ > 0 || b2_ > 0))
     {
         const double cn = std::sqrt(std::max(eos_.c2(rho0/tn, en), 0.0));

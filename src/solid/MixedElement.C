@@ -135,6 +135,7 @@ void solid::MixedElement::evaluate
     out.v = 0;
     out.energy = 0;
     out.dissipated = 0;
+    out.shockHeat = 0;
     out.Jmin = 1e300;
     out.sigma.setZero();
 
@@ -224,7 +225,7 @@ void solid::MixedElement::evaluate
         out.p = vr.p;
         out.q = vr.q;
         out.energy += vr.energy*geo.V;
-        out.dissipated += vol.dissipated(elemNew)*geo.V;
+        out.shockHeat = vol.dissipated(elemNew)*geo.V;
         out.temperatureRise = vr.temperatureRise;
         out.c2 = vr.c2 + 4.0/3.0*mu/rho;
         out.zeta = vr.zeta;

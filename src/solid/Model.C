@@ -1,6 +1,8 @@
 #include "Model.H"
 #include "SolidError.H"
 
+#include <cmath>
+#include <limits>
 #include <set>
 
 solid::Model::Model(Mesh mesh)
@@ -193,6 +195,9 @@ void solid::Model::assemble
     a.K.clear();
     a.energy = 0;
     a.dissipated = 0;
+    a.shockHeat = 0;
+    a.temperatureRiseMax = 0;
+    a.stableDt = std::numeric_limits<double>::infinity();
     if (tangent)
     {
         a.K.reserve(std::size_t(mesh_.nElements())*(nd*nd + 2*nd));
@@ -216,6 +221,19 @@ void solid::Model::assemble
         for (int i = 0; i < nd; ++i) a.fint(dofs[i]) += out.f(i);
         a.energy += out.energy;
         a.dissipated += out.dissipated;
+        a.shockHeat += out.shockHeat;
+        a.temperatureRiseMax =
+            std::max(a.temperatureRiseMax, out.temperatureRise);
+        if (out.c2 > 0)
+        {
+            // Abaqus/Explicit: dt = L/c_d (sqrt(1 + zeta^2) - zeta)
+            const double cd = std::sqrt(out.c2);
+            a.stableDt = std::min
+            (
+                a.stableDt,
+                out.length/cd*(std::sqrt(1 + out.zeta*out.zeta) - out.zeta)
+            );
+        }
         if (m >= 0)
         {
             a.constraint(m) = -(out.v - geometry_[e].V);
