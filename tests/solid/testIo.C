@@ -1,0 +1,239 @@
+// Mesh input (gmsh API, physical groups), HDF5/XDMF output and restart.
+#include "GmshReader.H"
+#include "ResultWriter.H"
+#include "StaticSolver.H"
+#include "Loads.H"
+#include "SolidError.H"
+#include "SolidTestUtils.H"
+
+#include <gmsh.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+using namespace solid;
+
+namespace
+{
+
+// Two stacked rectangles in r-z (nucleus below, cytoplasm above), quads
+void writeAxisymmetricMesh(const std::string& file, bool recombine = true)
+{
+    gmsh::initialize();
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::model::add("axi");
+    namespace geo = gmsh::model::geo;
+    const double R = 8, H1 = 2, H2 = 5;
+    const int p1 = geo::addPoint(0, 0, 0), p2 = geo::addPoint(R, 0, 0),
+        p3 = geo::addPoint(R, H1, 0), p4 = geo::addPoint(0, H1, 0),
+        p5 = geo::addPoint(R, H2, 0), p6 = geo::addPoint(0, H2, 0);
+    const int bottom = geo::addLine(p1, p2), r1 = geo::addLine(p2, p3),
+        mid = geo::addLine(p3, p4), a1 = geo::addLine(p4, p1),
+        r2 = geo::addLine(p3, p5), top = geo::addLine(p5, p6),
+        a2 = geo::addLine(p6, p4);
+    const int s1 = geo::addPlaneSurface({geo::addCurveLoop({bottom, r1, mid,
+                                                            a1})});
+    // Clockwise loop on purpose: the reader must reorient the quads
+    const int s2 = geo::addPlaneSurface({geo::addCurveLoop({-a2, -top, -r2,
+                                                            mid})});
+    for (int c : {bottom, mid, top}) geo::mesh::setTransfiniteCurve(c, 9);
+    for (int c : {r1, a1}) geo::mesh::setTransfiniteCurve(c, 3);
+    for (int c : {r2, a2}) geo::mesh::setTransfiniteCurve(c, 4);
+    for (int s : {s1, s2})
+    {
+        geo::mesh::setTransfiniteSurface(s);
+        if (recombine) geo::mesh::setRecombine(2, s);
+    }
+    geo::synchronize();
+    gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {s1}),
+                                 "nucleus");
+    gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {s2}),
+                                 "cytoplasm");
+    gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1,
+        {bottom}), "fixedBottom");
+    gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, {top}),
+                                 "top");
+    gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1,
+        {a1, a2}), "axis");
+    gmsh::model::mesh::generate(2);
+    gmsh::write(file);
+    gmsh::finalize();
+}
+
+void writeHexMesh(const std::string& file)
+{
+    gmsh::initialize();
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::model::add("hex");
+    namespace geo = gmsh::model::geo;
+    const int p1 = geo::addPoint(0, 0, 0), p2 = geo::addPoint(2, 0, 0),
+        p3 = geo::addPoint(2, 1, 0), p4 = geo::addPoint(0, 1, 0);
+    const int l1 = geo::addLine(p1, p2), l2 = geo::addLine(p2, p3),
+        l3 = geo::addLine(p3, p4), l4 = geo::addLine(p4, p1);
+    const int s = geo::addPlaneSurface({geo::addCurveLoop({l1, l2, l3, l4})});
+    for (int c : {l1, l3}) geo::mesh::setTransfiniteCurve(c, 5);
+    for (int c : {l2, l4}) geo::mesh::setTransfiniteCurve(c, 3);
+    geo::mesh::setTransfiniteSurface(s);
+    geo::mesh::setRecombine(2, s);
+    gmsh::vectorpair out;
+    geo::extrude({{2, s}}, 0, 0, 3, out, {4}, {}, true);
+    geo::synchronize();
+    int vol = -1, top = -1;
+    for (const auto& dt : out)
+    {
+        if (dt.first == 3) vol = dt.second;
+    }
+    top = out[0].second;
+    gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {vol}),
+                                 "block");
+    gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {s}),
+                                 "bottom");
+    gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {top}),
+                                 "top");
+    gmsh::model::mesh::generate(3);
+    gmsh::write(file);
+    gmsh::finalize();
+}
+
+double meshVolume(const Mesh& m)
+{
+    double V = 0;
+    for (int e = 0; e < m.nElements(); ++e)
+    {
+        ElementGeometry g;
+        g.build(m, e);
+        V += g.V;
+    }
+    return V;
+}
+
+} // namespace
+
+
+TEST(SolidIo, GmshAxisymmetricRegionsAndSets)
+{
+    writeAxisymmetricMesh("axi.msh");
+    const Mesh m = readGmsh("axi.msh", 1e-6);
+    ASSERT_TRUE(m.axisymmetric());
+    EXPECT_EQ(m.nElements(), 8*2 + 8*3);
+    ASSERT_EQ(m.regionNames.size(), 2u);
+    int nNuc = 0;
+    for (int r : m.region) nNuc += m.regionNames[r] == "nucleus";
+    EXPECT_EQ(nNuc, 16);
+    EXPECT_EQ(m.nodeSet("fixedBottom").size(), 9u);
+    EXPECT_EQ(m.nodeSet("axis").size(), 6u);
+    EXPECT_EQ(m.faceSet("top").size(), 8u);
+    // Volume of the cylinder r = 8 um, h = 5 um (exact for straight edges)
+    const double V = M_PI*64*5*1e-18;
+    EXPECT_NEAR(meshVolume(m), V, 1e-12*V);
+    // Outward top faces: a unit pressure gives the force -pi R^2 e_z
+    Model model(m);
+    auto mat = solidTest::material(10, 1e-3);
+    model.setMaterial("nucleus", mat);
+    model.setMaterial("cytoplasm", mat);
+    model.initialise();
+    PressureLoad load("top", [](double) { return 1.0; });
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(model.nDisplacementDofs());
+    load.addForce(model, model.u, 0, f, nullptr);
+    double Fz = 0;
+    for (int n = 0; n < m.nNodes(); ++n) Fz += f(2*n + 1);
+    EXPECT_NEAR(Fz, -M_PI*64e-12, 1e-12*M_PI*64e-12);
+}
+
+
+TEST(SolidIo, GmshHexahedraAndUnsupportedElements)
+{
+    writeHexMesh("hex.msh");
+    const Mesh m = readGmsh("hex.msh");
+    ASSERT_FALSE(m.axisymmetric());
+    EXPECT_EQ(m.nElements(), 4*2*4);
+    EXPECT_NEAR(meshVolume(m), 6.0, 1e-12);
+    EXPECT_EQ(m.faceSet("top").size(), 8u);
+    EXPECT_EQ(m.nodeSet("bottom").size(), 15u);
+
+    writeAxisymmetricMesh("tri.msh", false);
+    try
+    {
+        readGmsh("tri.msh");
+        FAIL() << "triangles accepted";
+    }
+    catch (const SolidError& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("region 'nucleus'"),
+                  std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("Triangle"), std::string::npos)
+            << e.what();
+    }
+    EXPECT_THROW(readGmsh("doesNotExist.msh"), SolidError);
+}
+
+
+namespace
+{
+
+std::unique_ptr<Model> creepModel()
+{
+    Mesh m = Mesh::rectangle(3, 3, 0, 1e-5, 0, 1e-5);
+    std::unique_ptr<Model> model(new Model(m));
+    model->setMaterial("solid", solidTest::material(13.33, 0,
+                                                    {{862.22, 0.5}}));
+    model->fix("left", 0);
+    model->fix("bottom", 1);
+    model->add(std::make_shared<PressureLoad>("top",
+        [](double t) { return 50.0*std::min(t/0.2, 1.0); }));
+    model->initialise();
+    return model;
+}
+
+} // namespace
+
+
+TEST(SolidIo, Hdf5XdmfOutputAndRestart)
+{
+    auto ref = creepModel();
+    StaticSolver s1(*ref);
+    ResultWriter w("creep", *ref);
+    w.write(*ref);
+    for (int i = 0; i < 6; ++i)
+    {
+        s1.step(0.1);
+        w.write(*ref);
+    }
+    const auto steps = ResultWriter::steps("creep.h5");
+    ASSERT_EQ(steps.size(), 7u);
+    EXPECT_NEAR(steps[3].second, 0.3, 1e-12);
+
+    // Restart from step 3 and redo the last three steps
+    auto rs = creepModel();
+    ResultWriter::restart("creep.h5", 3, *rs);
+    EXPECT_NEAR(rs->time, 0.3, 1e-12);
+    StaticSolver s2(*rs);
+    for (int i = 0; i < 3; ++i) s2.step(0.1);
+    EXPECT_LT((rs->u - ref->u).cwiseAbs().maxCoeff(),
+              1e-12*ref->u.cwiseAbs().maxCoeff());
+    EXPECT_LT((rs->pressure - ref->pressure).cwiseAbs().maxCoeff(),
+              1e-10*ref->pressure.cwiseAbs().maxCoeff());
+    // Creep happened between the restart point and the end
+    auto mid = creepModel();
+    ResultWriter::restart("creep.h5", 3, *mid);
+    EXPECT_GT((ref->u - mid->u).norm(), 1e-3*ref->u.norm());
+
+    // XDMF references every step and field
+    std::ifstream x("creep.xmf");
+    std::stringstream ss;
+    ss << x.rdbuf();
+    const std::string xs = ss.str();
+    EXPECT_NE(xs.find("Quadrilateral"), std::string::npos);
+    EXPECT_NE(xs.find("creep.h5:/steps/6/temperatureRise"),
+              std::string::npos);
+    EXPECT_NE(xs.find("<Time Value=\"0.6\"/>"), std::string::npos);
+
+    EXPECT_THROW(ResultWriter::restart("creep.h5", 42, *mid), SolidError);
+    auto other = std::unique_ptr<Model>(new Model(Mesh::rectangle(2, 2, 0, 1,
+                                                                  0, 1)));
+    other->setMaterial("solid", solidTest::material(1, 1e-3));
+    other->initialise();
+    EXPECT_THROW(ResultWriter::restart("creep.h5", 3, *other), SolidError);
+}
