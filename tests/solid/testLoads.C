@@ -1,0 +1,134 @@
+// Follower pressure (force and load stiffness against finite differences)
+// and the Contribution plug-in used later by rigid contact.
+#include "Loads.H"
+#include "Model.H"
+#include "StaticSolver.H"
+#include "SolidTestUtils.H"
+
+#include <gtest/gtest.h>
+#include <cstdio>
+#include <random>
+
+using namespace solid;
+
+namespace
+{
+
+double pressureStiffnessError(Model& model, const std::string& set)
+{
+    PressureLoad load(set, [](double) { return 3.7; });
+    std::mt19937 gen(1);
+    std::uniform_real_distribution<double> d(-0.1, 0.1);
+    Eigen::VectorXd u(model.nDisplacementDofs());
+    for (int i = 0; i < u.size(); ++i) u(i) = d(gen);
+    const int n = int(u.size());
+    Triplets t;
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
+    load.addForce(model, u, 0, f, &t);
+    Eigen::SparseMatrix<double> K(n, n);
+    K.setFromTriplets(t.begin(), t.end());
+    Eigen::MatrixXd Kd = K;
+    Eigen::MatrixXd fd(n, n);
+    const double h = 1e-7;
+    for (int j = 0; j < n; ++j)
+    {
+        Eigen::VectorXd up = u, um = u;
+        up(j) += h;
+        um(j) -= h;
+        Eigen::VectorXd fp = Eigen::VectorXd::Zero(n), fm = fp;
+        load.addForce(model, up, 0, fp, nullptr);
+        load.addForce(model, um, 0, fm, nullptr);
+        fd.col(j) = -(fp - fm)/(2*h);
+    }
+    return (fd - Kd).norm()/Kd.norm();
+}
+
+// A linear spring support k [N/m] on the axial component of a node set:
+// the simplest Contribution with a stiffness (contact follows the same
+// interface)
+class SpringSupport
+:
+    public Contribution
+{
+    std::vector<int> nodes_;
+    int comp_;
+    double k_;
+
+public:
+
+    SpringSupport(const std::vector<int>& nodes, int comp, double k)
+    :
+        nodes_(nodes), comp_(comp), k_(k)
+    {}
+
+    void addForce
+    (
+        const Model& model, const Eigen::VectorXd& u, double, Eigen::VectorXd& f,
+        Triplets* K
+    ) const override
+    {
+        const int dim = model.mesh().dim();
+        for (int n : nodes_)
+        {
+            const int d = n*dim + comp_;
+            f(d) -= k_*u(d);
+            if (K) K->emplace_back(d, d, k_);
+        }
+    }
+};
+
+} // namespace
+
+
+TEST(SolidLoads, FollowerPressureStiffness)
+{
+    Mesh h = Mesh::box(2, 1, 1, Vec3(0, 0, 0), Vec3(2, 1, 1));
+    Model m3(h);
+    m3.setMaterial("solid", solidTest::material(1, 1));
+    m3.initialise();
+    EXPECT_LT(pressureStiffnessError(m3, "zmax"), 1e-7);
+    EXPECT_LT(pressureStiffnessError(m3, "xmin"), 1e-7);
+    Mesh q = Mesh::rectangle(2, 2, 0.5, 1.5, 0, 1);
+    Model m2(q);
+    m2.setMaterial("solid", solidTest::material(1, 1));
+    m2.initialise();
+    EXPECT_LT(pressureStiffnessError(m2, "top"), 1e-7);
+    EXPECT_LT(pressureStiffnessError(m2, "right"), 1e-7);
+}
+
+
+TEST(SolidLoads, ContributionPlugInCarriesTheLoad)
+{
+    // Block pressed by p on top, resting on springs instead of a support:
+    // the springs carry p A in total and compress uniformly
+    const double L = 1e-5, p = 20, k = 1e-3;
+    Mesh m = Mesh::box(2, 2, 2, Vec3(0, 0, 0), Vec3(L, L, L));
+    Model model(m);
+    model.setMaterial("solid", solidTest::material(100, 0));
+    model.fix("xmin", 0);
+    model.fix("ymin", 1);
+    model.add(std::make_shared<PressureLoad>("zmax",
+        [=](double t) { return t*p; }));
+    const auto& bottom = m.nodeSet("zmin");
+    model.add(std::make_shared<SpringSupport>(bottom, 2, k));
+    model.initialise();
+    StaticSolver solver(model);
+    const StepReport r = solver.step(1.0);
+    EXPECT_LE(r.iterations, 8);
+    // Global equilibrium: the springs carry the follower pressure times
+    // the deformed top area (vector area of a bilinear face is exactly
+    // (d1 x d2)/2)
+    double Fsprings = 0, area = 0;
+    for (int n : bottom) Fsprings += -k*model.u(3*n + 2);
+    for (const auto& f : m.faceSet("zmax"))
+    {
+        Vec3 x[4];
+        for (int a = 0; a < 4; ++a)
+            x[a] = m.X[f[a]] + model.u.segment<3>(3*f[a]);
+        area += 0.5*(x[2] - x[0]).cross(x[3] - x[1])(2);
+    }
+    std::printf("springs carry %.6e N, p a = %.6e N (a/A = %.4f)\n",
+                Fsprings, p*area, area/(L*L));
+    EXPECT_NEAR(Fsprings, p*area, 1e-9*p*L*L);
+    EXPECT_GT(area, 1.01*L*L);     // the follower load saw the expansion
+}
