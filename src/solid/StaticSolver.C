@@ -2,6 +2,7 @@
 #include "SolidError.H"
 
 #include <Eigen/SparseLU>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <ostream>
@@ -33,9 +34,15 @@ bool solid::StaticSolver::newton
 (
     double dt,
     std::vector<IterationRecord>& hist,
-    std::string& reason
+    std::string& reason,
+    StepReport& rep
 )
 {
+    using clock = std::chrono::steady_clock;
+    auto seconds = [](clock::time_point a)
+    {
+        return std::chrono::duration<double>(clock::now() - a).count();
+    };
     Model& m = model_;
     const int nu = m.nDisplacementDofs();
     const int nm = m.nMultipliers();
@@ -66,7 +73,9 @@ bool solid::StaticSolver::newton
     auto evaluate = [&](const Eigen::VectorXd& xx, const Eigen::VectorXd& pp,
                         bool tangent) -> Norms
     {
+        const auto t0 = clock::now();
         m.assemble(xx, pp, t, dt, tangent, a);
+        rep.assemblySeconds += seconds(t0);
         const Eigen::VectorXd r = a.fint - a.fext;
         double ru2 = 0, rp2 = 0, react2 = 0;
         for (int i = 0; i < nu; ++i)
@@ -119,6 +128,7 @@ bool solid::StaticSolver::newton
             return true;
         }
         // Reduced tangent
+        const auto ts = clock::now();
         Triplets red;
         red.reserve(a.K.size());
         for (const auto& tr : a.K)
@@ -140,6 +150,7 @@ bool solid::StaticSolver::newton
             return false;
         }
         const Eigen::VectorXd dx = lu.solve(-R);
+        rep.solveSeconds += seconds(ts);
 
         // Line search on the merit function
         Eigen::VectorXd xt = x, pt = p;
@@ -230,7 +241,7 @@ solid::StepReport solid::StaticSolver::step(double dt)
         std::vector<IterationRecord> hist;
         std::string reason;
         const Eigen::VectorXd u0 = m.u;
-        const bool ok = newton(h, hist, reason);
+        const bool ok = newton(h, hist, reason, rep);
         rep.iterations += int(hist.size());
         if (ok)
         {
