@@ -72,11 +72,14 @@ TEST(SolidExplicit, ElasticBarWaveSpeed)
     const int n = 400;
     const double h = 5e-6, c0 = 1e6, d0 = 1e-9, rho = 1000, p0 = 1e5;
     auto model = column(n, h, solidTest::material(c0, d0, {}, rho));
+    const double cd = std::sqrt((2/d0 + 4.0/3.0*2*c0)/rho);
+    // Load ramped over 20 element transit times: a step front spreads
+    // like t^(1/3) on the lattice and biases the half-amplitude crossing
+    const double tr = 20*h/cd;
     model->add(std::make_shared<PressureLoad>("zmax",
-        [=](double) { return p0; }));
+        [=](double t) { return p0*std::min(t/tr, 1.0); }));
     model->initialise();
     ExplicitSolver solver(*model);
-    const double cd = std::sqrt((2/d0 + 4.0/3.0*2*c0)/rho);
     const double vp = p0/(rho*cd);
     // Arrival (half the plateau velocity) at two stations
     const int k1 = 3*n/4, k2 = n/4;
@@ -100,7 +103,7 @@ TEST(SolidExplicit, ElasticBarWaveSpeed)
     const double c = (k1 - k2)*h/(t2 - t1);
     std::printf("bar wave speed %.2f m/s, exact %.2f m/s (rel. error "
                 "%.2e), %ld steps\n", c, cd, c/cd - 1, solver.steps());
-    EXPECT_NEAR(c/cd, 1.0, 2e-3);
+    EXPECT_NEAR(c/cd, 1.0, 1e-3);
 }
 
 
@@ -168,7 +171,7 @@ TEST(SolidExplicit, MieGruneisenShockMatchesHugoniot)
     EXPECT_NEAR(pPl/P, 1, 0.01);
     EXPECT_NEAR(upPl/up, 1, 0.01);
     EXPECT_NEAR((1 - thPl)/(1 - thH), 1, 0.01);
-    EXPECT_NEAR(dT/dTH, 1, 0.03);
+    EXPECT_NEAR(dT/dTH, 1, 0.01);
     // Energy balance with the shock heat: KE + E_int = W_ext
     const EnergyReport& en = solver.energy();
     std::printf("shock energy: W_ext %.4e J, KE %.4e J, internal %.4e J "
