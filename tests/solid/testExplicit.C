@@ -14,24 +14,33 @@ using namespace solid;
 namespace
 {
 
-// Column of n hexahedra of size h along z, lateral motion suppressed
-// (uniaxial strain), bottom fixed
+// Column of n hexahedra (or r-z quads on the axis) of size h along z,
+// lateral motion suppressed (uniaxial strain), bottom fixed
 std::unique_ptr<Model> column
 (
-    int n, double h, std::shared_ptr<const Material> mat, bool fixTop = false
+    int n, double h, std::shared_ptr<const Material> mat, bool fixTop = false,
+    bool axi = false
 )
 {
-    Mesh m = Mesh::box(1, 1, n, Vec3(0, 0, 0), Vec3(h, h, n*h));
+    Mesh m = axi ? Mesh::rectangle(1, n, 0, h, 0, n*h)
+                 : Mesh::box(1, 1, n, Vec3(0, 0, 0), Vec3(h, h, n*h));
     std::unique_ptr<Model> model(new Model(m));
     model->setMaterial("solid", mat);
     for (int k = 0; k < m.nNodes(); ++k)
     {
         model->fixNode(k, 0);
-        model->fixNode(k, 1);
+        if (!axi) model->fixNode(k, 1);
     }
-    model->fix("zmin", 2);
-    if (fixTop) model->fix("zmax", 2);
+    model->fix(axi ? "bottom" : "zmin", m.dim() - 1);
+    if (fixTop) model->fix(axi ? "top" : "zmax", m.dim() - 1);
     return model;
+}
+
+// Axial velocity dof of the first node of layer k
+int axialDof(const Model& m, int k)
+{
+    const int perLayer = m.mesh().axisymmetric() ? 2 : 4;
+    return m.mesh().dim()*perLayer*k + m.mesh().dim() - 1;
 }
 
 std::shared_ptr<const Material> water(double b1, double b2)
@@ -45,9 +54,6 @@ std::shared_ptr<const Material> water(double b1, double b2)
     p.b2 = b2;
     return Material::create(p);
 }
-
-// Node index on the column axis at height level k (node 0 of the layer)
-int layerNode(int k) { return 4*k; }
 
 } // namespace
 
@@ -88,8 +94,8 @@ TEST(SolidExplicit, ElasticBarWaveSpeed)
     {
         const double tOld = model->time;
         solver.step();
-        const double v1 = -model->v(3*layerNode(k1) + 2);
-        const double v2 = -model->v(3*layerNode(k2) + 2);
+        const double v1 = -model->v(axialDof(*model, k1));
+        const double v2 = -model->v(axialDof(*model, k2));
         auto cross = [&](double vo, double vn)
         {
             return tOld + (model->time - tOld)*(0.5*vp - vo)/(vn - vo);
@@ -109,10 +115,12 @@ TEST(SolidExplicit, ElasticBarWaveSpeed)
 
 TEST(SolidExplicit, MieGruneisenShockMatchesHugoniot)
 {
+  for (bool axi : {false, true})
+  {
     const int n = 500;
     const double h = 2e-6, P = 50e6;
-    auto model = column(n, h, water(0.06, 1.2));
-    model->add(std::make_shared<PressureLoad>("zmax",
+    auto model = column(n, h, water(0.06, 1.2), false, axi);
+    model->add(std::make_shared<PressureLoad>(axi ? "top" : "zmax",
         [=](double) { return P; }));
     model->initialise();
     ExplicitSolver solver(*model);
@@ -156,16 +164,16 @@ TEST(SolidExplicit, MieGruneisenShockMatchesHugoniot)
         thSum += o.theta;
         dTSum += o.temperatureRise;
         ++ne;
-        vSum += -model->v(3*layerNode(e) + 2);
+        vSum += -model->v(axialDof(*model, e));
         ++nn;
     }
     const double pPl = pSum/ne, upPl = vSum/nn, thPl = thSum/ne,
         dT = dTSum/ne;
     const double thH = 1 - up/Us, dTH = 0.5*up*up/w.Cv;
-    std::printf("shock: Us %.2f m/s (Hugoniot %.2f, err %.2e), plateau p "
+    std::printf("%s shock: Us %.2f m/s (Hugoniot %.2f, err %.2e), plateau p "
         "%.4g Pa (err %.2e), up %.3f m/s (Hugoniot %.3f, err %.2e), 1-J "
         "%.4e (Hugoniot %.4e, err %.2e), dT %.4f K (Hugoniot %.4f)\n",
-        UsNum, Us, UsNum/Us - 1, pPl, pPl/P - 1, upPl, up, upPl/up - 1,
+        axi ? "r-z" : "3D", UsNum, Us, UsNum/Us - 1, pPl, pPl/P - 1, upPl, up, upPl/up - 1,
         1 - thPl, 1 - thH, (1 - thPl)/(1 - thH) - 1, dT, dTH);
     EXPECT_NEAR(UsNum/Us, 1, 0.01);
     EXPECT_NEAR(pPl/P, 1, 0.01);
@@ -179,6 +187,7 @@ TEST(SolidExplicit, MieGruneisenShockMatchesHugoniot)
         en.internal, en.shockHeat, en.balance()/en.externalWork);
     EXPECT_LT(std::abs(en.balance()), 0.01*en.externalWork);
     EXPECT_GT(en.shockHeat, 0);
+  }
 }
 
 
@@ -195,7 +204,7 @@ TEST(SolidExplicit, EnergyConservedOnSmoothWave)
         const double z = k*h;
         for (int c = 0; c < 4; ++c)
         {
-            model->v(3*(4*k + c) + 2) =
+            model->v(axialDof(*model, k) + 3*c) =
                 k == 0 || k == n ? 0 : std::exp(-std::pow((z - zc)/wd, 2));
         }
     }
