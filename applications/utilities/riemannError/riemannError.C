@@ -1,0 +1,210 @@
+/*---------------------------------------------------------------------------*\
+Application
+    riemannError
+
+Description
+    Compares a shock-tube solution with the exact solution of its Riemann
+    problem (system/riemannProblemDict, the law of
+    constant/thermophysicalProperties; exact solver: src/riemann).
+
+    For each selected time writes postProcessing/riemannError/<time>/
+    - profile.dat: x and the computed and exact rho, u (along the tube), p;
+    - errors.dat: the number of cells, the L1 norms (volume-weighted means of
+      |computed - exact|) of rho, u and p, and the relative errors of the
+      star state (pressure at the contact, density midway between each
+      non-linear wave and the contact).
+    and prints the same.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "OFstream.H"
+#include "rhoEThermoModel.H"
+#include "riemannProblem.H"
+#include "anyExactRiemannSolver.H"
+#include "domainError.H"
+
+using namespace Foam;
+
+namespace
+{
+
+template<class Law>
+bool setLaw(const rhoEThermo& thermo, std::unique_ptr<riemann::AnyEos>& law)
+{
+    const auto* model = dynamic_cast<const rhoEThermoModel<Law>*>(&thermo);
+    if (model)
+    {
+        law.reset(new riemann::AnyEos(model->law()));
+    }
+    return model;
+}
+
+//- Value of the computed field at the cell nearest to coordinate xi
+scalar valueAt(const scalarField& xi, const scalarField& f, const scalar x)
+{
+    label best = 0;
+    forAll(xi, i)
+    {
+        if (mag(xi[i] - x) < mag(xi[best] - x)) best = i;
+    }
+    return f[best];
+}
+
+} // End anonymous namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "L1 errors of a shock-tube solution against the exact solution of"
+        " system/riemannProblemDict"
+    );
+    argList::noParallel();
+    timeSelector::addOptions(false, true);
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    instantList timeDirs = timeSelector::select0(runTime, args);
+
+    #include "createMesh.H"
+
+    const riemannProblem problem(runTime);
+
+    forAll(timeDirs, timei)
+    {
+        runTime.setTime(timeDirs[timei], timei);
+        const scalar t = runTime.value();
+        if (!(t > 0))
+        {
+            continue;
+        }
+        Info<< "Time = " << runTime.timeName() << " s" << endl;
+        mesh.readUpdate();
+
+        autoPtr<rhoEThermo> thermo(rhoEThermo::New(mesh));
+
+        std::unique_ptr<riemann::AnyEos> law;
+        if
+        (
+            !setLaw<eos::MieGruneisen>(thermo(), law)
+         && !setLaw<eos::StiffenedGas>(thermo(), law)
+         && !setLaw<eos::IdealGas>(thermo(), law)
+        )
+        {
+            FatalErrorInFunction
+                << "No exact solver for the law " << thermo->lawName()
+                << exit(FatalError);
+        }
+
+        const volVectorField U
+        (
+            IOobject("U", runTime.timeName(), mesh, IOobject::MUST_READ),
+            mesh
+        );
+        const vector& d = problem.direction;
+
+        std::unique_ptr<riemann::anyExactRiemannSolver> exact;
+        try
+        {
+            exact.reset
+            (
+                new riemann::anyExactRiemannSolver
+                (
+                    *law,
+                    {problem.left.rho, problem.left.U & d, problem.left.p},
+                    {problem.right.rho, problem.right.U & d, problem.right.p}
+                )
+            );
+        }
+        catch (const std::exception& err)
+        {
+            FatalErrorInFunction
+                << "Exact Riemann solver: " << err.what() << exit(FatalError);
+        }
+
+        const scalarField& V = mesh.V().field();
+        const scalar sumV = gSum(V);
+        scalarField xi(mesh.nCells());
+        forAll(xi, celli)
+        {
+            xi[celli] = problem.xi(mesh.C()[celli]);
+        }
+        const scalarField& rho = thermo->rho().primitiveField();
+        const scalarField& p = thermo->p().primitiveField();
+        const scalarField u(U.primitiveField() & d);
+
+        scalarField rhoX(xi.size()), uX(xi.size()), pX(xi.size());
+        forAll(xi, celli)
+        {
+            const riemann::sampledState s = exact->sample(xi[celli]/t);
+            rhoX[celli] = s.rho;
+            uX[celli] = s.u;
+            pX[celli] = s.p;
+        }
+
+        const scalar L1rho = sum(V*mag(rho - rhoX))/sumV;
+        const scalar L1u = sum(V*mag(u - uX))/sumV;
+        const scalar L1p = sum(V*mag(p - pX))/sumV;
+
+        // Star state: pressure at the contact; densities midway between
+        // the inner edge of each non-linear wave and the contact
+        const riemann::starState& star = exact->star();
+        const riemann::waveStructure& w = exact->waves();
+        const scalar xC = w.contactSpeed*t;
+        const scalar xL = 0.5*(w.left.tailSpeed*t + xC);
+        const scalar xR = 0.5*(w.right.tailSpeed*t + xC);
+        const scalar errPStar =
+            mag(valueAt(xi, p, xC) - star.p)
+           /max(mag(star.p), max(mag(problem.left.p), mag(problem.right.p)));
+        const scalar errRhoL = mag(valueAt(xi, rho, xL) - star.rhoL)/star.rhoL;
+        const scalar errRhoR = mag(valueAt(xi, rho, xR) - star.rhoR)/star.rhoR;
+
+        fileName dir =
+            runTime.globalPath()/"postProcessing"/"riemannError"
+           /runTime.timeName();
+        mkDir(dir);
+        {
+            OFstream os(dir/"profile.dat");
+            os.precision(12);
+            os  << "# x [m]  rho rhoExact [kg/m^3]  u uExact [m/s]"
+                << "  p pExact [Pa]" << nl;
+            labelList order;
+            sortedOrder(xi, order);
+            for (const label celli : order)
+            {
+                os  << xi[celli] + problem.x0 << ' '
+                    << rho[celli] << ' ' << rhoX[celli] << ' '
+                    << u[celli] << ' ' << uX[celli] << ' '
+                    << p[celli] << ' ' << pX[celli] << nl;
+            }
+        }
+        {
+            OFstream os(dir/"errors.dat");
+            os.precision(10);
+            os  << "# nCells L1rho[kg/m^3] L1u[m/s] L1p[Pa]"
+                << " relErrPStar relErrRhoStarL relErrRhoStarR" << nl
+                << mesh.nCells() << ' ' << L1rho << ' ' << L1u << ' '
+                << L1p << ' ' << errPStar << ' ' << errRhoL << ' '
+                << errRhoR << nl;
+        }
+
+        Info<< "    exact star state: p* = " << star.p << " Pa, u* = "
+            << star.u << " m/s, rho*L = " << star.rhoL << " kg/m^3, rho*R = "
+            << star.rhoR << " kg/m^3" << nl
+            << "    waves: left " << riemann::waveTypeName(w.left.type)
+            << ", right " << riemann::waveTypeName(w.right.type) << nl
+            << "    L1 errors (" << mesh.nCells() << " cells): rho "
+            << L1rho << " kg/m^3, u " << L1u << " m/s, p " << L1p << " Pa"
+            << nl
+            << "    star state relative errors: p* " << errPStar
+            << ", rho*L " << errRhoL << ", rho*R " << errRhoR << nl
+            << "    written to " << dir << nl << endl;
+    }
+
+    Info<< "End" << endl;
+
+    return 0;
+}
