@@ -7,7 +7,8 @@
 double solid::characteristicLength
 (
     ElementType type,
-    const Eigen::VectorXd& xe
+    const Eigen::VectorXd& xe,
+    double volume
 )
 {
     const bool axi = type == ElementType::quad4Axi;
@@ -36,14 +37,18 @@ double solid::characteristicLength
         const Vec3 d1 = x(2) - x(0), d2 = x(3) - x(1);
         return 0.5*std::abs(d1(0)*d2(1) - d1(1)*d2(0))/amax;
     }
-    const ShapeRule& rule = volumeRule(type);
-    double vol = 0;
-    for (int q = 0; q < rule.nqp(); ++q)
+    double vol = volume;
+    if (!(vol > 0))
     {
-        Mat3 Jm = Mat3::Zero();
-        for (int a = 0; a < rule.nen; ++a)
-            Jm += x(a)*rule.dNdxi[q].row(a);
-        vol += rule.w[q]*Jm.determinant();
+        const ShapeRule& rule = volumeRule(type);
+        vol = 0;
+        for (int q = 0; q < rule.nqp(); ++q)
+        {
+            Mat3 Jm = Mat3::Zero();
+            for (int a = 0; a < rule.nen; ++a)
+                Jm += x(a)*rule.dNdxi[q].row(a);
+            vol += rule.w[q]*Jm.determinant();
+        }
     }
     return vol/amax;
 }
@@ -98,7 +103,7 @@ void solid::ElementGeometry::build(const Mesh& mesh, int e)
     Eigen::VectorXd xe(rule.nen*mesh.dim());
     for (int a = 0; a < rule.nen; ++a)
         for (int i = 0; i < mesh.dim(); ++i) xe(a*mesh.dim() + i) = mesh.X[en[a]](i);
-    length = characteristicLength(mesh.type, xe);
+    length = characteristicLength(mesh.type, xe, mesh.axisymmetric() ? 0 : V);
 }
 
 
@@ -139,28 +144,35 @@ void solid::MixedElement::evaluate
     out.Jmin = 1e300;
     out.sigma.setZero();
 
-    Eigen::Matrix<double, 9, Eigen::Dynamic> B(9, nd);
+    Eigen::Matrix<double, 9, Eigen::Dynamic> B;
+    if (tangent) B.resize(9, nd);
     for (std::size_t q = 0; q < geo.w.size(); ++q)
     {
-        // B: columns vec(dF/du_ai)
-        B.setZero();
         const Eigen::MatrixXd& G = geo.dNdX[q];
+        const double Nr = axi ? 1.0/geo.R[q] : 0.0;
+        // F = I + sum_a u_a (x) G_a (+ u_r N_a/R in the hoop direction)
+        Mat3 F = Mat3::Identity();
         for (int a = 0; a < nen; ++a)
         {
             for (int i = 0; i < dim; ++i)
             {
-                for (int Jc = 0; Jc < 3; ++Jc)
-                {
-                    B(3*i + Jc, a*dim + i) = G(a, Jc);
-                }
+                const double ua = ue(a*dim + i);
+                for (int Jc = 0; Jc < 3; ++Jc) F(i, Jc) += ua*G(a, Jc);
             }
-            if (axi)
+            if (axi) F(2, 2) += ue(a*dim)*geo.N[q](a)*Nr;
+        }
+        if (tangent)
+        {
+            // B: columns vec(dF/du_ai)
+            B.setZero();
+            for (int a = 0; a < nen; ++a)
             {
-                B(8, a*dim) = geo.N[q](a)/geo.R[q];
+                for (int i = 0; i < dim; ++i)
+                    for (int Jc = 0; Jc < 3; ++Jc)
+                        B(3*i + Jc, a*dim + i) = G(a, Jc);
+                if (axi) B(8, a*dim) = geo.N[q](a)*Nr;
             }
         }
-        const Vec9 fv = B*ue;
-        Mat3 F = Mat3::Identity() + tensor::unvec(fv);
         const double J = F.determinant();
         out.Jmin = std::min(out.Jmin, J);
         if (!(J > 0))
@@ -176,13 +188,42 @@ void solid::MixedElement::evaluate
         const double wq = geo.w[q];
 
         IsoResponse r;
-        iso.evaluate
-        (
-            F.transpose()*F, dt, pointOld + q*nh, pointNew + q*nh, r
-        );
+        if (tangent)
+        {
+            iso.evaluate
+            (
+                F.transpose()*F, dt, pointOld + q*nh, pointNew + q*nh, r
+            );
+        }
+        else
+        {
+            iso.stress
+            (
+                F.transpose()*F, dt, pointOld + q*nh, pointNew + q*nh, r
+            );
+        }
         const Mat3 P = F*r.S;
-        out.f += wq*(B.transpose()*tensor::vec(P));
-        out.g += wq*(B.transpose()*tensor::vec(J*Fi.transpose()));
+        const Mat3 JFiT = J*Fi.transpose();
+        // f_ai = int P : dF/du_ai, g_ai = int J F^-T : dF/du_ai
+        for (int a = 0; a < nen; ++a)
+        {
+            for (int i = 0; i < dim; ++i)
+            {
+                double fa = 0, ga = 0;
+                for (int Jc = 0; Jc < 3; ++Jc)
+                {
+                    fa += P(i, Jc)*G(a, Jc);
+                    ga += JFiT(i, Jc)*G(a, Jc);
+                }
+                out.f(a*dim + i) += wq*fa;
+                out.g(a*dim + i) += wq*ga;
+            }
+            if (axi)
+            {
+                out.f(a*dim) += wq*P(2, 2)*geo.N[q](a)*Nr;
+                out.g(a*dim) += wq*JFiT(2, 2)*geo.N[q](a)*Nr;
+            }
+        }
         out.v += J*wq;
         out.energy += r.psi*wq;
         out.dissipated += iso.dissipated(pointNew + q*nh)*wq;
@@ -202,7 +243,7 @@ void solid::MixedElement::evaluate
         for (int a = 0; a < nen; ++a)
             for (int i = 0; i < dim; ++i)
                 xe(a*dim + i) = mesh.X[en[a]](i) + ue(a*dim + i);
-        out.length = characteristicLength(mesh.type, xe);
+        out.length = characteristicLength(mesh.type, xe, axi ? 0 : out.v);
     }
 
     const double rho = mat.rho0()/out.theta;

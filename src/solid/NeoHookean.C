@@ -42,3 +42,19 @@ void solid::NeoHookean::evaluate
       + 2.0/3.0*I1*symProduct(Ci)
     );
 }
+
+
+void solid::NeoHookean::stress
+(
+    const Mat3& C,
+    double,
+    const double*,
+    double*,
+    IsoResponse& r
+) const
+{
+    const double Jm23 = std::cbrt(1.0/C.determinant());
+    const double I1 = C.trace();
+    r.psi = c0_*(Jm23*I1 - 3.0);
+    r.S = 2*c0_*Jm23*(Mat3::Identity() - I1/3.0*C.inverse());
+}

@@ -69,11 +69,37 @@ void solid::Viscoelastic::evaluate
     IsoResponse& r
 ) const
 {
-    using namespace tensor;
     const int nb = offsetD() + 1;
     base_->evaluate(C, dt, hOld + nb, hNew + nb, r);
+    r.CC *= 1.0 + update(dt, hOld, hNew, r);
+}
 
-    Vec6 Sinf = toVoigt(r.S);
+
+void solid::Viscoelastic::stress
+(
+    const Mat3& C,
+    double dt,
+    const double* hOld,
+    double* hNew,
+    IsoResponse& r
+) const
+{
+    const int nb = offsetD() + 1;
+    base_->stress(C, dt, hOld + nb, hNew + nb, r);
+    update(dt, hOld, hNew, r);
+}
+
+
+double solid::Viscoelastic::update
+(
+    double dt,
+    const double* hOld,
+    double* hNew,
+    IsoResponse& r
+) const
+{
+    using namespace tensor;
+    const Vec6 Sinf = toVoigt(r.S);
     Vec6 dS;
     for (int i = 0; i < 6; ++i) dS(i) = Sinf(i) - hOld[i];
 
@@ -103,7 +129,6 @@ void solid::Viscoelastic::evaluate
     }
     for (int i = 0; i < 6; ++i) hNew[i] = Sinf(i);
     hNew[offsetD()] = dissipation;
-
     r.S += fromVoigt(Qsum);
-    r.CC *= (1.0 + gSum);
+    return gSum;
 }
