@@ -1,7 +1,11 @@
 #include "StaticSolver.H"
 #include "SolidError.H"
 
+#ifdef SOLID_HAVE_UMFPACK
+#include <Eigen/UmfPackSupport>
+#else
 #include <Eigen/SparseLU>
+#endif
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -20,6 +24,12 @@ solid::StaticSolver::StaticSolver
 
 namespace
 {
+
+#ifdef SOLID_HAVE_UMFPACK
+using LinearSolver = Eigen::UmfPackLU<Eigen::SparseMatrix<double>>;
+#else
+using LinearSolver = Eigen::SparseLU<Eigen::SparseMatrix<double>>;
+#endif
 
 struct Norms
 {
@@ -116,7 +126,7 @@ bool solid::StaticSolver::newton
     }
 
     Eigen::SparseMatrix<double> K(nf, nf);
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+    LinearSolver lu;
     bool patternDone = false;
     double update = std::numeric_limits<double>::infinity();
     for (int it = 0; it < set_.maxIterations; ++it)
@@ -149,7 +159,8 @@ bool solid::StaticSolver::newton
                      "conditions: rigid-body modes?)";
             return false;
         }
-        const Eigen::VectorXd dx = lu.solve(-R);
+        const Eigen::VectorXd rhs = -R;
+        const Eigen::VectorXd dx = lu.solve(rhs);
         rep.solveSeconds += seconds(ts);
 
         // Line search on the merit function
