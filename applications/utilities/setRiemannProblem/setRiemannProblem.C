@@ -23,10 +23,13 @@ int main(int argc, char *argv[])
     argList::noParallel();
 
     #include "setRootCase.H"
+
+    const riemannProblem problem(args.path());
+
     #include "createTime.H"
     #include "createMesh.H"
 
-    const riemannProblem problem(runTime);
+
 
     autoPtr<rhoEThermo> pThermo(rhoEThermo::New(mesh));
     rhoEThermo& thermo = pThermo();

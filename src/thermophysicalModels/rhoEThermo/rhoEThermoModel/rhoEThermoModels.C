@@ -15,8 +15,9 @@ namespace Foam
 
 namespace
 {
-    //- Read a dimensioned coefficient [SI]: the dimensions, when given,
-    //  must match
+    //- Read a coefficient [SI], optionally preceded by its dimensions,
+    //  which must then match dims (a FatalIOError naming the entry, not
+    //  the abort of dimensioned<Type>::initialize)
     scalar readCoeff
     (
         const dictionary& dict,
@@ -24,7 +25,22 @@ namespace
         const dimensionSet& dims
     )
     {
-        return dimensionedScalar(name, dims, dict).value();
+        ITstream& is = dict.lookup(name);
+        token t(is);
+        is.putBack(t);
+        if (t.isPunctuation() && t.pToken() == token::BEGIN_SQR)
+        {
+            const dimensionSet given(is);
+            if (given != dims)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Coefficient " << name << " has dimensions " << given
+                    << "; expected " << dims << exit(FatalIOError);
+            }
+        }
+        const scalar value = readScalar(is);
+        is.check(FUNCTION_NAME);
+        return value;
     }
 }
 

@@ -1,0 +1,21 @@
+#!/bin/bash
+# Every library and application we build resolves all its symbols against
+# the installed OpenFOAM (catches a label-size or ABI mismatch, which links
+# silently for shared libraries).
+set -euo pipefail
+. "$(dirname "$0")/../../etc/bashrc"
+status=0
+n=0
+for f in "$FOAM_USER_LIBBIN"/*.so "$FOAM_USER_APPBIN"/*
+do
+    n=$((n + 1))
+    out=$(ldd -r "$f" 2>&1)
+    if echo "$out" | grep -qE "undefined symbol|not found"
+    then
+        echo "$f:"; echo "$out" | grep -E "undefined symbol|not found" | head
+        status=1
+    fi
+done
+echo "lddLibraries: checked $n files"
+[ "$n" -gt 3 ] || { echo "lddLibraries: nothing built?"; exit 1; }
+exit $status
