@@ -30,6 +30,7 @@ solid::ExplicitSolver::ExplicitSolver
         }
     }
     checkParameter("explicit solver", "safety", set_.safety, 0, 1, "-");
+    m.condensePressure(true);
     fixed_ = m.prescribedDofs();
     invMass_ = m.lumpedMass().cwiseInverse();
     m.assemble(m.u, m.pressure, m.time, 0, false, asm_);

@@ -59,8 +59,17 @@ void solid::PressureLoad::addForce
 {
     const Mesh& mesh = model.mesh();
     const int dim = mesh.dim();
-    const double p = pressure_(t);
-    if (p == 0) return;
+    const double p0 = pressure_(t);
+    const auto& faces = mesh.faceSet(faceSet_);
+    if (!facePressure_.empty() && facePressure_.size() != faces.size())
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter, "pressure load on '" + faceSet_
+          + "': " + std::to_string(facePressure_.size())
+          + " face values for " + std::to_string(faces.size()) + " faces"
+        );
+    }
     const ShapeRule& rule = faceRule(mesh.type);
     const int nf = rule.nen;
     const auto skew = [](const Vec3& a)
@@ -71,8 +80,11 @@ void solid::PressureLoad::addForce
              -a(1), a(0), 0;
         return S;
     };
-    for (const auto& face : mesh.faceSet(faceSet_))
+    for (std::size_t fi = 0; fi < faces.size(); ++fi)
     {
+        const auto& face = faces[fi];
+        const double p = facePressure_.empty() ? p0 : p0*facePressure_[fi];
+        if (p == 0) continue;
         std::vector<Vec3> x(nf);
         for (int a = 0; a < nf; ++a)
         {

@@ -114,6 +114,7 @@ void solid::MixedElement::evaluate
     const ElementGeometry& geo,
     const Material& mat,
     const Eigen::VectorXd& ue,
+    bool useMultiplier,
     double pMultiplier,
     double dt,
     const double* pointOld,
@@ -263,16 +264,26 @@ void solid::MixedElement::evaluate
         in.dt = dt;
         in.length = geo.length;
         const VolumetricResponse vr = vol.evaluate(in, elemOld, elemNew);
-        out.p = vr.p;
-        out.q = vr.q;
         out.energy += vr.energy*geo.V;
         out.shockHeat = vol.dissipated(elemNew)*geo.V;
         out.temperatureRise = vr.temperatureRise;
         out.c2 = vr.c2 + 4.0/3.0*mu/rho;
         out.zeta = vr.zeta;
-        if (tangent)
+        if (useMultiplier)
         {
-            out.K.noalias() -= (vr.dpdtheta/geo.V)*out.g*out.g.transpose();
+            // Two-field u-p: p is an unknown, theta(p) = v/V is the
+            // element equation (assembled by Model)
+            out.p = pMultiplier;
+        }
+        else
+        {
+            out.p = vr.p;
+            out.q = vr.q;
+            if (tangent)
+            {
+                out.K.noalias() -=
+                    (vr.dpdtheta/geo.V)*out.g*out.g.transpose();
+            }
         }
     }
     out.f -= out.p*out.g;

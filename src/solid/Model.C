@@ -93,7 +93,7 @@ void solid::Model::initialise()
     {
         geometry_[e].build(mesh_, e);
         const Material& m = material(e);
-        if (m.volumetric().isConstraint()) multiplier_[e] = nm++;
+        if (m.volumetric().hasInverse()) multiplier_[e] = nm++;
         pointSizes[e] = int(geometry_[e].w.size())*m.isochoric().nHistory();
         elemSizes[e] = m.volumetric().nHistory();
         const int* en = mesh_.element(e);
@@ -209,11 +209,11 @@ void solid::Model::assemble
         const int* en = mesh_.element(e);
         for (int b = 0; b < nen; ++b)
             for (int i = 0; i < dim; ++i) dofs[b*dim + i] = en[b]*dim + i;
-        const int m = multiplier_[e];
+        const int m = usesMultiplier(e) ? multiplier_[e] : -1;
         MixedElement::evaluate
         (
             mesh_, e, geometry_[e], material(e), elementDisplacement(e, x),
-            m >= 0 ? p(m) : 0.0, dt,
+            m >= 0, m >= 0 ? p(m) : 0.0, dt,
             pointState_.old(e), pointState_.current(e),
             elementState_.old(e), elementState_.current(e),
             tangent, out
@@ -234,9 +234,10 @@ void solid::Model::assemble
                 out.length/cd*(std::sqrt(1 + out.zeta*out.zeta) - out.zeta)
             );
         }
+        const VolumetricLaw& vol = material(e).volumetric();
         if (m >= 0)
         {
-            a.constraint(m) = -(out.v - geometry_[e].V);
+            a.constraint(m) = -(out.v - geometry_[e].V*vol.dilatation(p(m)));
         }
         if (tangent)
         {
@@ -250,6 +251,11 @@ void solid::Model::assemble
                     a.K.emplace_back(dofs[i], nu + m, -out.g(i));
                     a.K.emplace_back(nu + m, dofs[i], -out.g(i));
                 }
+                a.K.emplace_back
+                (
+                    nu + m, nu + m,
+                    geometry_[e].V*vol.dilatationDerivative(p(m))
+                );
             }
         }
     }
@@ -265,13 +271,13 @@ solid::ElementOutput solid::Model::evaluateElement(int e, double dt)
 {
     requireInitialised("evaluateElement");
     ElementOutput out;
-    const int m = multiplier_[e];
+    const int m = usesMultiplier(e) ? multiplier_[e] : -1;
     // Evaluate from the committed history without touching it
     std::vector<double> pn(pointState_.size(e)), en(elementState_.size(e));
     MixedElement::evaluate
     (
         mesh_, e, geometry_[e], material(e), elementDisplacement(e, u),
-        m >= 0 ? pressure(m) : 0.0, dt, pointState_.old(e), pn.data(),
+        m >= 0, m >= 0 ? pressure(m) : 0.0, dt, pointState_.old(e), pn.data(),
         elementState_.old(e), en.data(), false, out
     );
     return out;

@@ -168,7 +168,10 @@ bool solid::StaticSolver::newton
         double alpha = 1, bestAlpha = 0, bestMerit = n.merit;
         Norms nt{};
         bool ok = false;
-        for (int ls = 0; ls <= (set_.lineSearch ? set_.maxLineSearch : 0); ++ls)
+        // Near round-off the merit cannot decrease reliably: a residual
+        // already below tolerance takes the full (tiny) correction
+        const bool search = set_.lineSearch && n.residual > set_.tolResidual;
+        for (int ls = 0; ls <= (search ? set_.maxLineSearch : 0); ++ls)
         {
             xt = x;
             pt = p;
@@ -178,7 +181,7 @@ bool solid::StaticSolver::newton
             try
             {
                 nt = evaluate(xt, pt, true);
-                if (nt.merit <= (1 - 1e-4*alpha)*n.merit || !set_.lineSearch)
+                if (nt.merit <= (1 - 1e-4*alpha)*n.merit || !search)
                 {
                     ok = true;
                     break;

@@ -3,6 +3,7 @@
 #include "Loads.H"
 #include "Model.H"
 #include "StaticSolver.H"
+#include "SolidError.H"
 #include "SolidTestUtils.H"
 
 #include <gtest/gtest.h>
@@ -131,4 +132,45 @@ TEST(SolidLoads, ContributionPlugInCarriesTheLoad)
                 Fsprings, p*area, area/(L*L));
     EXPECT_NEAR(Fsprings, p*area, 1e-9*p*L*L);
     EXPECT_GT(area, 1.01*L*L);     // the follower load saw the expansion
+}
+
+
+TEST(SolidLoads, NodalLoadAndFacePressures)
+{
+    // Nodal forces on the top of a block: reactions balance them
+    const double L = 1e-5, F = 4e-9;
+    Mesh m = Mesh::box(1, 1, 1, Vec3(0, 0, 0), Vec3(L, L, L));
+    Model model(m);
+    model.setMaterial("solid", solidTest::material(100, 1e-3));
+    model.fix("xmin", 0);
+    model.fix("ymin", 1);
+    model.fix("zmin", 2);
+    model.add(std::make_shared<NodalLoad>(m.nodeSet("zmax"), 2,
+        [=](double t) { return -t*F/4; }));
+    model.initialise();
+    StaticSolver solver(model);
+    solver.step(1.0);
+    const Eigen::VectorXd r = solver.reactions();
+    double Rz = 0;
+    for (int n : m.nodeSet("zmin")) Rz += r(3*n + 2);
+    EXPECT_NEAR(Rz, F, 1e-9*F);
+    EXPECT_LT(model.u(3*m.nodeSet("zmax")[0] + 2), 0);
+
+    // Per-face pressures: the resultant is sum p_f A_f
+    Mesh q = Mesh::rectangle(3, 1, 0, 3, 0, 1);
+    Model mq(q);
+    mq.setMaterial("solid", solidTest::material(1, 1));
+    mq.initialise();
+    PressureLoad load("top", [](double) { return 2.0; });
+    const std::vector<double> fp = {1.0, 0.0, 3.0};
+    load.setFacePressures(fp);
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(mq.nDisplacementDofs());
+    load.addForce(mq, mq.u, 0, f, nullptr);
+    double Fz = 0;
+    for (int n = 0; n < q.nNodes(); ++n) Fz += f(2*n + 1);
+    // Faces of the top set in order: annuli [0,1], [1,2], [2,3]
+    const double exact = -2.0*M_PI*(1.0*1 + 0.0*(4 - 1) + 3.0*(9 - 4));
+    EXPECT_NEAR(Fz, exact, 1e-12*std::abs(exact));
+    load.setFacePressures({1.0});
+    EXPECT_THROW(load.addForce(mq, mq.u, 0, f, nullptr), SolidError);
 }
