@@ -223,6 +223,39 @@ TEST(SolidExplicit, EnergyConservedOnSmoothWave)
 }
 
 
+TEST(SolidExplicit, EnergyBalanceWithViscousDissipation)
+{
+    // Smooth pulse in a compressible neo-Hookean column with a Maxwell
+    // branch relaxing on the time scale of the wave: KE + stored +
+    // dissipated must stay equal to the initial energy
+    const int n = 200;
+    const double h = 5e-6, rho = 1000, c0 = 5e5, mu1 = 2e6, d0 = 2e-7;
+    const double cd = std::sqrt((2/d0 + 4.0/3.0*(2*c0 + mu1))/rho);
+    const double tau = 20*h/cd;
+    auto model = column(n, h, solidTest::material(c0, d0, {{mu1, tau}}, rho),
+                        true);
+    model->initialise();
+    const double zc = 0.5*n*h, wd = 15*h;
+    for (int k = 1; k < n; ++k)
+    {
+        for (int c = 0; c < 4; ++c)
+        {
+            model->v(axialDof(*model, k) + 3*c) =
+                std::exp(-std::pow((k*h - zc)/wd, 2));
+        }
+    }
+    ExplicitSolver solver(*model);
+    const double E0 = solver.energy().initial;
+    solver.advanceTo(0.3*n*h/cd);
+    const EnergyReport& en = solver.energy();
+    std::printf("viscous wave: E0 %.4e J, KE %.4e, stored %.4e, dissipated "
+        "%.4e (%.1f %%), balance %.2e\n", E0, en.kinetic, en.internal,
+        en.dissipated, 100*en.dissipated/E0, en.balance()/E0);
+    EXPECT_GT(en.dissipated, 0.02*E0);
+    EXPECT_LT(std::abs(en.balance()), 0.01*E0);
+}
+
+
 TEST(SolidExplicit, RejectsIncompressibleRegion)
 {
     auto model = column(2, 1e-6, solidTest::material(10, 0));
