@@ -296,4 +296,5 @@ void solid::Model::revert()
 {
     pointState_.revert();
     elementState_.revert();
+    for (const auto& c : contributions_) c->revert();
 }

@@ -255,7 +255,24 @@ solid::StepReport solid::StaticSolver::step(double dt)
         std::vector<IterationRecord> hist;
         std::string reason;
         const Eigen::VectorXd u0 = m.u;
-        const bool ok = newton(h, hist, reason, rep);
+        bool ok = newton(h, hist, reason, rep);
+        for (int aug = 0; ok && aug < set_.maxAugmentations; ++aug)
+        {
+            bool changed = false;
+            for (const auto& c : m.contributions())
+            {
+                changed = c->augment(m, m.u, m.time + h) || changed;
+            }
+            if (!changed) break;
+            ++rep.augmentations;
+            ok = newton(h, hist, reason, rep);
+            if (aug + 1 == set_.maxAugmentations)
+            {
+                ok = false;
+                reason = "augmented-Lagrangian loop did not converge in "
+                    + std::to_string(set_.maxAugmentations) + " passes";
+            }
+        }
         rep.iterations += int(hist.size());
         if (ok)
         {
