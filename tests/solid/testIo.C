@@ -172,7 +172,10 @@ TEST(SolidIo, GmshCellLayersSolveWithPaperParameters)
         maxIts = std::max(maxIts, r.iterations);
         EXPECT_EQ(r.cuts, 0);
         const double zTop = model.u(2*m.nodeSet("top")[0] + 1);
-        if (i >= 3) EXPECT_LT(zTop, zTopOld);      // creep under the hold
+        if (i >= 3)
+        {
+            EXPECT_LT(zTop, zTopOld);           // creep under the hold
+        }
         zTopOld = zTop;
     }
     EXPECT_LE(maxIts, 6);
