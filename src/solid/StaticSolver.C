@@ -6,20 +6,13 @@
 #else
 #include <Eigen/SparseLU>
 #endif
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <ostream>
 
-solid::StaticSolver::StaticSolver
-(
-    Model& model,
-    const NewtonSettings& settings
-)
-:
-    model_(model),
-    set_(settings)
-{}
+
 
 
 namespace
@@ -30,6 +23,48 @@ using LinearSolver = Eigen::UmfPackLU<Eigen::SparseMatrix<double>>;
 #else
 using LinearSolver = Eigen::SparseLU<Eigen::SparseMatrix<double>>;
 #endif
+
+} // namespace
+
+
+struct solid::StaticSolver::LinearCache
+{
+    LinearSolver lu;
+    std::vector<int> outer, inner;
+
+    bool samePattern(const Eigen::SparseMatrix<double>& K) const
+    {
+        return int(outer.size()) == K.outerSize() + 1
+            && int(inner.size()) == K.nonZeros()
+            && std::equal(outer.begin(), outer.end(), K.outerIndexPtr())
+            && std::equal(inner.begin(), inner.end(), K.innerIndexPtr());
+    }
+
+    void storePattern(const Eigen::SparseMatrix<double>& K)
+    {
+        outer.assign(K.outerIndexPtr(), K.outerIndexPtr() + K.outerSize() + 1);
+        inner.assign(K.innerIndexPtr(), K.innerIndexPtr() + K.nonZeros());
+    }
+};
+
+
+solid::StaticSolver::StaticSolver
+(
+    Model& model,
+    const NewtonSettings& settings
+)
+:
+    model_(model),
+    set_(settings),
+    linear_(new LinearCache)
+{}
+
+
+solid::StaticSolver::~StaticSolver() = default;
+
+
+namespace
+{
 
 struct Norms
 {
@@ -126,8 +161,7 @@ bool solid::StaticSolver::newton
     }
 
     Eigen::SparseMatrix<double> K(nf, nf);
-    LinearSolver lu;
-    bool patternDone = false;
+    LinearSolver& lu = linear_->lu;
     double update = std::numeric_limits<double>::infinity();
     for (int it = 0; it < set_.maxIterations; ++it)
     {
@@ -147,10 +181,13 @@ bool solid::StaticSolver::newton
             if (r >= 0 && c >= 0) red.emplace_back(r, c, tr.value());
         }
         K.setFromTriplets(red.begin(), red.end());
-        if (!patternDone)
+        // Symbolic analysis only when the sparsity pattern changes (e.g. a
+        // contact set): kept across iterations and steps
+        K.makeCompressed();
+        if (!linear_->samePattern(K))
         {
             lu.analyzePattern(K);
-            patternDone = true;
+            linear_->storePattern(K);
         }
         lu.factorize(K);
         if (lu.info() != Eigen::Success)
