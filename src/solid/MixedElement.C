@@ -7,7 +7,7 @@
 double solid::characteristicLength
 (
     ElementType type,
-    const Eigen::VectorXd& xe,
+    const Eigen::Ref<const Eigen::VectorXd>& xe,
     double volume
 )
 {
@@ -239,7 +239,8 @@ void solid::MixedElement::evaluate
     out.theta = out.v/geo.V;
 
     {
-        Eigen::VectorXd xe(nen*dim);
+        // No heap allocation in the explicit hot loop (24 = 8 nodes x 3)
+        Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 24, 1> xe(nen*dim);
         const int* en = mesh.element(e);
         for (int a = 0; a < nen; ++a)
             for (int i = 0; i < dim; ++i)

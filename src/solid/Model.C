@@ -204,15 +204,22 @@ void solid::Model::assemble
     }
     ElementOutput out;
     std::vector<int> dofs(nd);
+    Eigen::VectorXd ue(nd);
     for (int e = 0; e < mesh_.nElements(); ++e)
     {
         const int* en = mesh_.element(e);
         for (int b = 0; b < nen; ++b)
-            for (int i = 0; i < dim; ++i) dofs[b*dim + i] = en[b]*dim + i;
+        {
+            for (int i = 0; i < dim; ++i)
+            {
+                dofs[b*dim + i] = en[b]*dim + i;
+                ue(b*dim + i) = x(en[b]*dim + i);
+            }
+        }
         const int m = usesMultiplier(e) ? multiplier_[e] : -1;
         MixedElement::evaluate
         (
-            mesh_, e, geometry_[e], material(e), elementDisplacement(e, x),
+            mesh_, e, geometry_[e], material(e), ue,
             m >= 0, m >= 0 ? p(m) : 0.0, dt,
             pointState_.old(e), pointState_.current(e),
             elementState_.old(e), elementState_.current(e),
