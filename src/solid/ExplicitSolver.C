@@ -116,6 +116,7 @@ double solid::ExplicitSolver::step()
     energy_.internal = asm_.energy;
     energy_.dissipated = asm_.dissipated;
     energy_.shockHeat = asm_.shockHeat;
+    energy_.viscousHeat = asm_.viscousHeat;
     stableDt_ = asm_.stableDt;
     dt_ = set_.fixedDt > 0 ? set_.fixedDt : set_.safety*stableDt_;
     return dt;

@@ -106,15 +106,16 @@ solid::VolumetricResponse solid::MieGruneisenVolumetric::evaluate
         dqdt = rho*df - rho/t*f;
     }
 
-    // p = pc + G rho0 e, e = en - (Pn + q + p)(t - tn)/(2 rho0)
+    // p = pc + G rho0 e, e = en + heat/rho0 - (Pn + q + p)(t - tn)/(2 rho0)
     const double pc = eos_.p(rho, 0.0);
     const double dpcdt = -eos_.dpdrho(rho, 0.0)*rho0/(t*t);
     const double dth = t - tn;
     const double a = 1 + 0.5*G*dth;
-    const double p = (pc + G*rho0*en - 0.5*G*(Pn + q)*dth)/a;
+    const double eh = en + in.heat/rho0;
+    const double p = (pc + G*rho0*eh - 0.5*G*(Pn + q)*dth)/a;
     const double dpdt =
         (dpcdt - 0.5*G*(Pn + q) - 0.5*G*dth*dqdt - 0.5*G*p)/a;
-    const double e = en - 0.5*(Pn + q + p)*dth/rho0;
+    const double e = eh - 0.5*(Pn + q + p)*dth/rho0;
 
     VolumetricResponse r;
     r.p = p + q;

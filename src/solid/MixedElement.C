@@ -142,6 +142,8 @@ void solid::MixedElement::evaluate
     out.energy = 0;
     out.dissipated = 0;
     out.shockHeat = 0;
+    out.viscousHeat = 0;
+    double heatStep = 0;
     out.Jmin = 1e300;
     out.sigma.setZero();
 
@@ -228,6 +230,9 @@ void solid::MixedElement::evaluate
         out.v += J*wq;
         out.energy += r.psi*wq;
         out.dissipated += iso.dissipated(pointNew + q*nh)*wq;
+        heatStep +=
+            (iso.dissipated(pointNew + q*nh) - iso.dissipated(pointOld + q*nh))
+           *wq;
         out.sigma += wq*(P*F.transpose());     // J sigma_iso dV
         if (tangent)
         {
@@ -264,6 +269,13 @@ void solid::MixedElement::evaluate
         in.theta = out.theta;
         in.dt = dt;
         in.length = geo.length;
+        if (vol.absorbsHeat())
+        {
+            // Adiabatic: the Maxwell dissipation heats the EOS energy
+            in.heat = heatStep/geo.V;
+            out.viscousHeat = out.dissipated;
+            out.dissipated = 0;
+        }
         const VolumetricResponse vr = vol.evaluate(in, elemOld, elemNew);
         out.energy += vr.energy*geo.V;
         out.shockHeat = vol.dissipated(elemNew)*geo.V;

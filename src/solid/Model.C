@@ -196,6 +196,7 @@ void solid::Model::assemble
     a.energy = 0;
     a.dissipated = 0;
     a.shockHeat = 0;
+    a.viscousHeat = 0;
     a.temperatureRiseMax = 0;
     a.stableDt = std::numeric_limits<double>::infinity();
     if (tangent)
@@ -229,6 +230,7 @@ void solid::Model::assemble
         a.energy += out.energy;
         a.dissipated += out.dissipated;
         a.shockHeat += out.shockHeat;
+        a.viscousHeat += out.viscousHeat;
         a.temperatureRiseMax =
             std::max(a.temperatureRiseMax, out.temperatureRise);
         if (out.c2 > 0)

@@ -256,6 +256,47 @@ TEST(SolidExplicit, EnergyBalanceWithViscousDissipation)
 }
 
 
+TEST(SolidExplicit, MaxwellHeatGoesIntoEosEnergy)
+{
+    // Mie-Grueneisen column with a stiff Maxwell branch: the viscous
+    // dissipation heats the EOS energy (adiabatic), the balance closes
+    // without a separate dissipation term
+    const int n = 200;
+    const double h = 5e-6;
+    MaterialParameters p;
+    p.name = "viscousWater";
+    p.volumetric = "mieGruneisen";
+    p.c0 = 1e5;
+    p.b1 = 0;
+    p.b2 = 0;
+    const double c = 1450;
+    p.branches = {{2e8, 20*h/c}};
+    auto model = column(n, h, Material::create(p), true);
+    model->initialise();
+    const double zc = 0.5*n*h, wd = 15*h;
+    for (int k = 1; k < n; ++k)
+    {
+        for (int cc = 0; cc < 4; ++cc)
+        {
+            model->v(axialDof(*model, k) + 3*cc) =
+                20*std::exp(-std::pow((k*h - zc)/wd, 2));
+        }
+    }
+    ExplicitSolver solver(*model);
+    const double E0 = solver.energy().initial;
+    solver.advanceTo(0.3*n*h/c);
+    const EnergyReport& en = solver.energy();
+    const double dTmax = solver.lastAssembly().temperatureRiseMax;
+    std::printf("Maxwell heat in MG: E0 %.4e J, heat %.4e J (%.1f %%), "
+        "balance %.2e, max dT %.3e K\n", E0, en.viscousHeat,
+        100*en.viscousHeat/E0, en.balance()/E0, dTmax);
+    EXPECT_GT(en.viscousHeat, 0.01*E0);
+    EXPECT_EQ(en.dissipated, 0.0);
+    EXPECT_LT(std::abs(en.balance()), 0.01*E0);
+    EXPECT_GT(dTmax, 0.0);
+}
+
+
 TEST(SolidExplicit, FreeBodyConservesMomentaAndEnergy3D)
 {
     // Distorted free cube, large smooth initial velocity (shear + spin +

@@ -487,6 +487,25 @@ TEST(SolidMaterial, MieGruneisenVolumetricConsistency)
 }
 
 
+TEST(SolidMaterial, MieGruneisenAdiabaticHeating)
+{
+    // Heat at fixed volume: e += heat/rho0, T += heat/(rho0 Cv),
+    // p += Gamma0 heat
+    eos::MieGruneisen::Parameters w;
+    MieGruneisenVolumetric mg(w, 0, 0, "water");
+    std::vector<double> h(mg.nHistory()), hn(mg.nHistory());
+    mg.initHistory(h.data());
+    VolumetricInput a{0.99, 1e-9, 1e-6};
+    const auto r0 = mg.evaluate(a, h.data(), hn.data());
+    h = hn;
+    VolumetricInput b{0.99, 1e-9, 1e-6, 4.184e6};    // 1 K of water
+    const auto r1 = mg.evaluate(b, h.data(), hn.data());
+    EXPECT_NEAR(r1.temperatureRise - r0.temperatureRise, 1.0, 1e-12);
+    EXPECT_NEAR(r1.p - r0.p, w.Gamma0*4.184e6, 1e-6);
+    EXPECT_NEAR(r1.energy - r0.energy, 4.184e6, 1e-6);
+}
+
+
 TEST(SolidMaterial, QuadraticVolumetric)
 {
     QuadraticVolumetric q(1e-3, 1000, "test");
