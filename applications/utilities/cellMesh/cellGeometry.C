@@ -1,0 +1,248 @@
+#include "cellGeometry.H"
+#include "IFstream.H"
+#include "mathematicalConstants.H"
+
+using Foam::constant::mathematical::pi;
+
+const Foam::Enum<Foam::cellGeometry::meshMode>
+Foam::cellGeometry::meshModeNames
+({
+    { meshMode::axisymmetric, "axisymmetric" },
+    { meshMode::full3D, "3D" },
+    { meshMode::quarter3D, "3DQuarter" },
+});
+
+
+Foam::scalar Foam::cellGeometry::readInRange
+(
+    const dictionary& dict,
+    const word& key,
+    const char* unit,
+    scalar lo,
+    scalar hi,
+    bool closedLo,
+    bool hasDefault,
+    scalar deflt
+)
+{
+    const scalar v =
+        hasDefault ? dict.getOrDefault<scalar>(key, deflt)
+                   : dict.get<scalar>(key);
+    if (!((closedLo ? v >= lo : v > lo) && v <= hi))
+    {
+        FatalIOErrorInFunction(dict)
+            << key << " = " << v << " " << unit
+            << " is outside the valid range " << (closedLo ? "[" : "(")
+            << lo << ", " << hi << "] " << unit << exit(FatalIOError);
+    }
+    return v;
+}
+
+
+Foam::cellGeometry::cellGeometry(const fileName& dictFile)
+:
+    file_(dictFile)
+{
+    IFstream is(file_);
+    if (!is.good())
+    {
+        FatalErrorInFunction
+            << "Cannot read " << file_ << exit(FatalError);
+    }
+    const dictionary dict(is);
+
+    mode_ = meshModeNames.get("mode", dict);
+
+    // Upper bound 1 mm: a larger cell is a length given in um, not m
+    const scalar maxLength = 1e-3;
+    a_ = 0.5*readInRange(dict, "cellDiameter", "m", 0, maxLength, false);
+    H_ = readInRange(dict, "cellHeight", "m", 0, maxLength, false);
+    f_ = readInRange
+    (
+        dict, "nucleusVolumeFraction", "(-)", 0, 1 - SMALL, false, true,
+        1.0/3.0
+    );
+
+    // The inner parallel surface exists below the smallest radius of
+    // curvature of the outer ellipse (at the equator H^2/a, on the axis
+    // a^2/H)
+    const scalar rhoMin = min(sqr(H_)/a_, sqr(a_)/H_);
+    t_ = dict.getOrDefault<scalar>("membraneThickness", 200e-9);
+    if (!(t_ > 0 && t_ < rhoMin))
+    {
+        FatalIOErrorInFunction(dict)
+            << "membraneThickness = " << t_ << " m is outside the valid "
+            << "range (0, " << rhoMin << ") m: the membrane must be thinner "
+            << "than the smallest radius of curvature of the cell surface "
+            << "min(H^2/a, a^2/H) (cellHeight " << H_ << " m, cellDiameter "
+            << 2*a_ << " m)" << exit(FatalIOError);
+    }
+
+    layers_ = dict.getOrDefault<label>("membraneLayers", 2);
+    if (layers_ < 1 || layers_ > 20)
+    {
+        FatalIOErrorInFunction(dict)
+            << "membraneLayers = " << layers_ << " is outside the valid "
+            << "range [1, 20]" << exit(FatalIOError);
+    }
+
+    nucleusSize_ = readInRange(dict, "nucleusSize", "m", 0, H_, false);
+    cytoplasmSize_ = readInRange(dict, "cytoplasmSize", "m", 0, H_, false);
+    membraneSize_ = readInRange(dict, "membraneSize", "m", 0, H_, false);
+    contactRadius_ =
+        readInRange(dict, "contactRadius", "m", 0, a_, true);
+    contactSize_ = cytoplasmSize_;
+    contactDepth_ = H_;
+    if (contactRadius_ > 0)
+    {
+        contactSize_ = readInRange(dict, "contactSize", "m", 0, H_, false);
+        contactDepth_ = readInRange(dict, "contactDepth", "m", 0, H_, false);
+    }
+
+    gap_ = nucleusGap();
+    if (!(gap_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "nucleusVolumeFraction = " << f_ << ": the nucleus (a full "
+            << "ellipsoid of diameter " << 2*an() << " m and height "
+            << 2*cn() << " m centred at z = " << zn() << " m) is not inside "
+            << "the cell: it reaches " << -gap_ << " m into the membrane "
+            << "(membraneThickness " << t_ << " m)" << exit(FatalIOError);
+    }
+    if (gap_ < min(cytoplasmSize_, contactSize_))
+    {
+        WarningInFunction
+            << "The cytoplasm between nucleus and membrane is only " << gap_
+            << " m thick, less than one element (" << file_ << ")" << nl;
+    }
+}
+
+
+Foam::cellGeometry::rz Foam::cellGeometry::outer(scalar theta) const
+{
+    return rz(a_*sin(theta), H_*cos(theta));
+}
+
+
+Foam::cellGeometry::rz Foam::cellGeometry::inner(scalar theta) const
+{
+    const scalar nr = sin(theta)/a_;
+    const scalar nz = cos(theta)/H_;
+    const scalar n = sqrt(sqr(nr) + sqr(nz));
+    const rz X = outer(theta);
+    return rz(X.first() - t_*nr/n, X.second() - t_*nz/n);
+}
+
+
+Foam::scalar Foam::cellGeometry::thetaContact() const
+{
+    return asin(min(scalar(1), contactRadius_/a_));
+}
+
+
+Foam::scalar Foam::cellGeometry::arcLength
+(
+    scalar theta0,
+    scalar theta1,
+    bool innerCurve
+) const
+{
+    const label n = 20000;
+    scalar L = 0;
+    rz p = innerCurve ? inner(theta0) : outer(theta0);
+    for (label i = 1; i <= n; ++i)
+    {
+        const scalar th = theta0 + (theta1 - theta0)*i/n;
+        const rz q = innerCurve ? inner(th) : outer(th);
+        L += sqrt(sqr(q.first() - p.first()) + sqr(q.second() - p.second()));
+        p = q;
+    }
+    return L;
+}
+
+
+Foam::scalar Foam::cellGeometry::nucleusGap() const
+{
+    // Distance of nucleus surface points to the outer surface minus t:
+    // the inner surface is the set at distance t from the outer one
+    const label nTheta = 8000;
+    List<rz> X(nTheta + 1);
+    forAll(X, i)
+    {
+        X[i] = outer(0.5*pi*i/nTheta);
+    }
+    scalar gap = zn() - cn();
+    const label nNuc = 800;
+    for (label j = 0; j <= nNuc; ++j)
+    {
+        const scalar phi = pi*j/nNuc;
+        const scalar r = an()*sin(phi);
+        const scalar z = zn() + cn()*cos(phi);
+        scalar d = GREAT;
+        for (const rz& x : X)
+        {
+            d = min(d, sqr(r - x.first()) + sqr(z - x.second()));
+        }
+        d = sqrt(d);
+        const bool inside = sqr(r/a_) + sqr(z/H_) < 1;
+        gap = min(gap, (inside ? d : -d) - t_);
+    }
+    return gap;
+}
+
+
+Foam::scalar Foam::cellGeometry::cellArea() const
+{
+    return 0.25*pi*a_*H_;
+}
+
+
+Foam::scalar Foam::cellGeometry::cellVolume() const
+{
+    return 2.0/3.0*pi*sqr(a_)*H_;
+}
+
+
+Foam::scalar Foam::cellGeometry::nucleusArea() const
+{
+    return 0.5*pi*an()*cn();
+}
+
+
+Foam::scalar Foam::cellGeometry::nucleusVolume() const
+{
+    return 4.0/3.0*pi*sqr(an())*cn();
+}
+
+
+Foam::scalar Foam::cellGeometry::innerArea() const
+{
+    // Green: A = 1/2 closed integral (r dz - z dr); axis and substrate
+    // add nothing, the curve runs from the substrate to the axis
+    const label n = 100000;
+    scalar A = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const rz p = inner(0.5*pi*(n - i)/n);
+        const rz q = inner(0.5*pi*(n - i - 1)/n);
+        A += 0.5*(p.first()*q.second() - q.first()*p.second());
+    }
+    return A;
+}
+
+
+Foam::scalar Foam::cellGeometry::innerVolume() const
+{
+    // Green: V = 2 pi int r dA = pi closed integral r^2 dz (trapezoidal
+    // in r^2 on each chord is exact for the polygon)
+    const label n = 100000;
+    scalar V = 0;
+    for (label i = 0; i < n; ++i)
+    {
+        const rz p = inner(0.5*pi*(n - i)/n);
+        const rz q = inner(0.5*pi*(n - i - 1)/n);
+        V += pi/3.0*(sqr(p.first()) + p.first()*q.first() + sqr(q.first()))
+            *(q.second() - p.second());
+    }
+    return V;
+}

@@ -1,0 +1,78 @@
+/*---------------------------------------------------------------------------*\
+Application
+    cellMesh
+
+Description
+    Meshes the neuron cell of Jerusalem & Dao (semi-spheroid on a substrate
+    with a nucleus and a membrane+cortex layer) with gmsh from
+    system/cellMeshDict and writes constant/cell.msh (gmsh 4.1, metres):
+    an axisymmetric r-z section of quadrilaterals or a 3D (full or quarter)
+    cell of hexahedra, with the physical groups read by the solid library
+    (readGmsh). Prints a quality report. Any invalid entry is a FatalIOError
+    naming the entry, and nothing is written.
+
+    Dictionary entries, geometry and groups: docs/userGuide/cellMesh.md,
+    cellGeometry.H and cellMesher.H.
+
+Usage
+    cellMesh [-case dir] [-dict file]
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "cellGeometry.H"
+#include "cellMesher.H"
+#include "sigFpe.H"
+#include <gmsh.h>
+
+using namespace Foam;
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Mesh the cell (nucleus, cytoplasm, membrane) from "
+        "system/cellMeshDict into constant/cell.msh"
+    );
+    argList::noParallel();
+    argList::addOption("dict", "file", "Alternative cellMeshDict");
+
+    #include "setRootCase.H"
+
+    const fileName dictFile
+    (
+        args.getOrDefault<fileName>("dict", args.path()/"system/cellMeshDict")
+    );
+    const cellGeometry geom(dictFile);
+
+    Info<< "Cell: diameter " << 2*geom.a() << " m, height " << geom.H()
+        << " m, mode " << cellGeometry::meshModeNames[geom.mode()] << nl
+        << endl;
+
+    // gmsh's meshers rely on IEEE non-stop arithmetic (inf/NaN in
+    // discarded candidates): OpenFOAM's trapping would abort them
+    sigFpe::unset();
+    gmsh::initialize();
+    gmsh::option::setNumber("General.Terminal", 1);
+    gmsh::option::setNumber("General.Verbosity", 2);
+    try
+    {
+        cellMesher mesher(geom);
+        mesher.generate();
+        mesher.write(args.path()/"constant/cell.msh");
+    }
+    catch (const std::exception& e)
+    {
+        FatalErrorInFunction
+            << "gmsh: " << e.what() << " (nothing written)" << exit(FatalError);
+    }
+    catch (...)
+    {
+        FatalErrorInFunction
+            << "gmsh failed (nothing written)" << exit(FatalError);
+    }
+    gmsh::finalize();
+
+    Info<< "End" << nl << endl;
+    return 0;
+}
