@@ -8,8 +8,8 @@ const Foam::Enum<Foam::cellGeometry::meshMode>
 Foam::cellGeometry::meshModeNames
 ({
     { meshMode::axisymmetric, "axisymmetric" },
-    { meshMode::full3D, "3D" },
-    { meshMode::quarter3D, "3DQuarter" },
+    { meshMode::full3D, "full3D" },
+    { meshMode::quarter3D, "quarter3D" },
 });
 
 

@@ -105,9 +105,64 @@ void addGroup(int dim, const std::vector<int>& tags, const std::string& name)
 
 int Foam::cellMesher::point(const cellGeometry::rz& p) const
 {
+    const scalar r = p.first()/L_, z = p.second()/L_;
     return geom_.axisymmetric()
-        ? geo::addPoint(p.first(), p.second(), 0)
-        : geo::addPoint(p.first(), 0, p.second());
+        ? geo::addPoint(r, z, 0)
+        : gmsh::model::occ::addPoint(r, 0, z);
+}
+
+
+int Foam::cellMesher::line(int p, int q) const
+{
+    return geom_.axisymmetric()
+        ? geo::addLine(p, q)
+        : gmsh::model::occ::addLine(p, q);
+}
+
+
+int Foam::cellMesher::spline(const std::vector<int>& pts) const
+{
+    return geom_.axisymmetric()
+        ? geo::addSpline(pts)
+        : gmsh::model::occ::addSpline(pts);
+}
+
+
+int Foam::cellMesher::ellipseArc
+(
+    int start,
+    int centre,
+    int major,
+    int end,
+    const std::function<cellGeometry::rz(scalar)>& X,
+    scalar s0,
+    scalar s1
+) const
+{
+    if (geom_.axisymmetric())
+    {
+        return geo::addEllipseArc(start, centre, major, end);
+    }
+    // OpenCASCADE: a spline through 200 points of the exact curve
+    std::vector<int> pts{start};
+    const label n = 200;
+    for (label i = 1; i < n; ++i)
+    {
+        pts.push_back(point(X(s0 + (s1 - s0)*i/n)));
+    }
+    pts.push_back(end);
+    return spline(pts);
+}
+
+
+int Foam::cellMesher::surface(const std::vector<int>& curves) const
+{
+    return geom_.axisymmetric()
+        ? geo::addPlaneSurface({geo::addCurveLoop(curves)})
+        : gmsh::model::occ::addPlaneSurface
+          (
+              {gmsh::model::occ::addCurveLoop(curves)}
+          );
 }
 
 
@@ -153,7 +208,7 @@ void Foam::cellMesher::buildSection()
             outerPt[k] = point(geom_.outer(theta[k]));
             innerPt[k] = point(geom_.inner(theta[k]));
         }
-        radial[k] = geo::addLine(outerPt[k], innerPt[k]);
+        radial[k] = line(outerPt[k], innerPt[k]);
     }
     const int major = a >= H ? outerPt[N] : outerPt[0];
 
@@ -165,7 +220,12 @@ void Foam::cellMesher::buildSection()
     {
         outer_.push_back
         (
-            geo::addEllipseArc(outerPt[k], origin, major, outerPt[k + 1])
+            ellipseArc
+            (
+                outerPt[k], origin, major, outerPt[k + 1],
+                [this](scalar th) { return geom_.outer(th); },
+                theta[k], theta[k + 1]
+            )
         );
         std::vector<int> pts{innerPt[k]};
         const label nSpline = 100;
@@ -180,12 +240,11 @@ void Foam::cellMesher::buildSection()
             );
         }
         pts.push_back(innerPt[k + 1]);
-        innerCurve[k] = geo::addSpline(pts);
-        const int loop = geo::addCurveLoop
+        innerCurve[k] = spline(pts);
+        membrane_.push_back
         (
-            {-outer_[k], radial[k], innerCurve[k], -radial[k + 1]}
+            surface({-outer_[k], radial[k], innerCurve[k], -radial[k + 1]})
         );
-        membrane_.push_back(geo::addPlaneSurface({loop}));
         nTangential[k] = max
         (
             label(1),
@@ -201,30 +260,32 @@ void Foam::cellMesher::buildSection()
     const int n2 = point(rz(0, zn + cn));
     const int nc = point(rz(0, zn));
     const int nMajor = an >= cn ? n1 : n2;
-    const int arc1 = geo::addEllipseArc(n0, nc, nMajor, n1);
-    const int arc2 = geo::addEllipseArc(n1, nc, nMajor, n2);
-    nucleusAxis_ = geo::addLine(n2, n0);
-    nucleus_.push_back
-    (
-        geo::addPlaneSurface({geo::addCurveLoop({arc1, arc2, nucleusAxis_})})
-    );
+    const auto nucleusCurve = [=](scalar phi)
+    {
+        return rz(an*sin(phi), zn - cn*cos(phi));
+    };
+    const int arc1 =
+        ellipseArc(n0, nc, nMajor, n1, nucleusCurve, 0, 0.5*pi);
+    const int arc2 =
+        ellipseArc(n1, nc, nMajor, n2, nucleusCurve, 0.5*pi, pi);
+    nucleusAxis_ = line(n2, n0);
+    nucleus_.push_back(surface({arc1, arc2, nucleusAxis_}));
 
     // Cytoplasm: between substrate, membrane, axis and nucleus
-    cytoplasmBottom_ = geo::addLine(origin, innerPt[N]);
-    const int axisTop = geo::addLine(innerPt[0], n2);
-    const int axisBottom = geo::addLine(n0, origin);
+    cytoplasmBottom_ = line(origin, innerPt[N]);
+    const int axisTop = line(innerPt[0], n2);
+    const int axisBottom = line(n0, origin);
     std::vector<int> loop{cytoplasmBottom_};
     for (label k = N - 1; k >= 0; --k) loop.push_back(-innerCurve[k]);
     loop.insert(loop.end(), {axisTop, -arc2, -arc1, axisBottom});
-    cytoplasm_.push_back(geo::addPlaneSurface({geo::addCurveLoop(loop)}));
+    cytoplasm_.push_back(surface(loop));
 
     bottom_ = {cytoplasmBottom_, radial[N]};
     axis_ = {axisBottom, nucleusAxis_, axisTop, radial[0]};
 
-    geo::synchronize();
-
     if (geom_.axisymmetric())
     {
+        geo::synchronize();
         for (label k = 0; k <= N; ++k)
         {
             gmsh::model::mesh::setTransfiniteCurve
@@ -258,33 +319,45 @@ void Foam::cellMesher::revolve()
     for (const int s : cytoplasm_) { in.push_back({2, s}); region.push_back(&cytoplasm3_); }
     for (const int s : membrane_) { in.push_back({2, s}); region.push_back(&membrane3_); }
 
-    const int turns = geom_.mode() == cellGeometry::meshMode::quarter3D ? 1 : 4;
-    for (int turn = 0; turn < turns; ++turn)
+    // OpenCASCADE revolves surfaces touching the axis into proper
+    // volumes (the built-in kernel leaves degenerate edges on the axis);
+    // fragment makes the shared faces conformal
+    namespace occ = gmsh::model::occ;
+    const bool quarter = geom_.mode() == cellGeometry::meshMode::quarter3D;
+    gmsh::vectorpair volumes;
+    for (const auto& dt : in)
     {
+        occ::synchronize();
         gmsh::vectorpair out;
-        geo::revolve(in, 0, 0, 0, 0, 0, 1, 0.5*pi, out);
-        gmsh::vectorpair next;
-        for (std::size_t i = 1; i < out.size(); ++i)
+        occ::revolve({dt}, 0, 0, 0, 0, 0, 1, quarter ? 0.5*pi : 2*pi, out);
+        label n = 0;
+        for (const auto& o : out)
         {
-            if (out[i].first == 3)
+            if (o.first == 3)
             {
-                region[next.size()]->push_back(out[i].second);
-                next.push_back(out[i - 1]);
+                volumes.push_back(o);
+                ++n;
             }
         }
-        if (next.size() != in.size())
+        if (n != 1)
         {
             FatalErrorInFunction
-                << "Revolving " << in.size() << " surfaces gave "
-                << next.size() << " volumes" << exit(FatalError);
+                << "Revolving surface " << dt.second << " gave " << n
+                << " volumes" << exit(FatalError);
         }
-        in = next;
     }
-    if (turns > 1)
+    occ::remove(in, true);
+    gmsh::vectorpair fragments;
+    std::vector<gmsh::vectorpair> map;
+    occ::fragment(volumes, {}, fragments, map);
+    for (std::size_t i = 0; i < volumes.size(); ++i)
     {
-        geo::removeAllDuplicates();
+        for (const auto& dt : map[i])
+        {
+            if (dt.first == 3) region[i]->push_back(dt.second);
+        }
     }
-    geo::synchronize();
+    occ::synchronize();
 }
 
 
@@ -296,7 +369,7 @@ void Foam::cellMesher::sizeFields() const
 
     // The tetrahedra of the 3D mesh are split into hexahedra of half their
     // edge length
-    const scalar split = axi ? 1 : 2;
+    const scalar split = (axi ? 1 : 2)/L_;
     const scalar hLayer = geom_.t()/geom_.layers();
     std::vector<double> fields;
     fields.push_back
@@ -339,14 +412,15 @@ void Foam::cellMesher::sizeFields() const
             axi ? geom_.contactSize() : min(geom_.contactSize(), hLayer)
         );
         const scalar zLow =
-            geom_.outer(geom_.thetaContact()).second() - geom_.contactDepth();
+            (geom_.outer(geom_.thetaContact()).second() - geom_.contactDepth())
+           /L_;
         const std::string r = axi ? "x" : "sqrt(x*x + y*y)";
         const std::string z = axi ? "y" : "z";
         std::ostringstream os;
         os.precision(17);
         os  << hc << " + " << (hFar - hc) << "*min(1, max(0, max(" << r
-            << " - " << geom_.contactRadius() << ", " << zLow << " - " << z
-            << "))/" << geom_.contactDepth() << ")";
+            << " - " << geom_.contactRadius()/L_ << ", " << zLow << " - "
+            << z << "))/" << geom_.contactDepth()/L_ << ")";
         const int f = field::add("MathEval");
         field::setString(f, "F", os.str());
         fields.push_back(f);
@@ -412,7 +486,7 @@ void Foam::cellMesher::physicalGroups3D() const
         for (const int v : *r) all.push_back({3, v});
     }
     gmsh::model::getBoundary(all, bnd, true, false, false);
-    const scalar tol = 1e-6*geom_.t();
+    const scalar tol = 1e-6*geom_.t()/L_;
     std::vector<int> bottom, symX, symY, outer;
     for (const auto& dt : bnd)
     {
@@ -505,7 +579,7 @@ void Foam::cellMesher::generate()
     }
 
     const int dim = axi ? 2 : 3;
-    const meshQuality q(dim);
+    const meshQuality q(dim, L_);
     q.write(Info);
     for (const auto& s : q.regions())
     {
@@ -581,6 +655,7 @@ void Foam::cellMesher::write(const fileName& file) const
     gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
     gmsh::option::setNumber("Mesh.Binary", 0);
     gmsh::option::setNumber("Mesh.SaveAll", 0);
+    gmsh::option::setNumber("Mesh.ScalingFactor", L_);
     gmsh::write(tmp);
     if (!Foam::mv(tmp, file))
     {

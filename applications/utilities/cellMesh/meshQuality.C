@@ -31,7 +31,7 @@ const int hexEdge[12][2] =
 }
 
 
-Foam::meshQuality::meshQuality(int dim)
+Foam::meshQuality::meshQuality(int dim, scalar scale)
 :
     dim_(dim)
 {
@@ -41,7 +41,7 @@ Foam::meshQuality::meshQuality(int dim)
     std::unordered_map<std::size_t, vector> X;
     for (std::size_t i = 0; i < tags.size(); ++i)
     {
-        X[tags[i]] = vector(xyz[3*i], xyz[3*i + 1], xyz[3*i + 2]);
+        X[tags[i]] = scale*vector(xyz[3*i], xyz[3*i + 1], xyz[3*i + 2]);
     }
 
     gmsh::vectorpair groups;
