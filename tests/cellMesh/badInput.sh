@@ -1,0 +1,91 @@
+#!/bin/bash
+# Bad cellMeshDict entries: cellMesh must exit non-zero (not crash), name
+# the entry in a FATAL IO ERROR with the file, and leave an existing
+# constant/cell.msh untouched.
+set -uo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+. "$root/etc/bashrc"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+n=0
+
+good() {
+    rm -rf "$work/case"
+    mkdir -p "$work/case/system" "$work/case/constant"
+    cat > "$work/case/system/cellMeshDict" <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object cellMeshDict; }
+mode            axisymmetric;
+cellDiameter    16.8e-6;
+cellHeight      7.9e-6;
+nucleusVolumeFraction 0.333333333333;
+membraneThickness 200e-9;
+membraneLayers  2;
+nucleusSize     1e-6;
+cytoplasmSize   1e-6;
+membraneSize    0.8e-6;
+contactRadius   5e-6;
+contactSize     0.4e-6;
+contactDepth    1.5e-6;
+DICT
+    echo "previous mesh" > "$work/case/constant/cell.msh"
+}
+
+# expect NAME 'sed expression' 'REGEX'...
+expect() {
+    local name=$1 edit=$2
+    shift 2
+    n=$((n + 1))
+    good
+    sed -i "$edit" "$work/case/system/cellMeshDict"
+    out=$(cellMesh -case "$work/case" 2>&1)
+    code=$?
+    if [ $code -eq 0 ]; then
+        echo "FAIL $name: exit 0"; failures=$((failures + 1)); return
+    fi
+    if [ $code -ge 128 ]; then
+        echo "FAIL $name: crashed (exit $code)"; failures=$((failures + 1))
+        return
+    fi
+    for regex in "FATAL IO ERROR" "system/cellMeshDict" "$@"; do
+        if ! echo "$out" | grep -Eq "$regex"; then
+            echo "FAIL $name: message does not match '$regex':"
+            echo "$out" | grep -A6 "FATAL" | head -12
+            failures=$((failures + 1)); return
+        fi
+    done
+    if [ "$(cat "$work/case/constant/cell.msh")" != "previous mesh" ]; then
+        echo "FAIL $name: constant/cell.msh was overwritten"
+        failures=$((failures + 1)); return
+    fi
+    echo "ok   $name: $(echo "$out" | grep -A1 "FATAL IO" | tail -1 | head -c 160)"
+}
+
+# The good dictionary must mesh (else the cases below prove nothing)
+good
+if ! cellMesh -case "$work/case" > "$work/good.log" 2>&1 \
+    || [ "$(head -c 12 "$work/case/constant/cell.msh")" != '$MeshFormat' ]
+then
+    echo "FAIL the valid dictionary does not mesh"; tail -20 "$work/good.log"
+    exit 1
+fi
+
+expect nucleusOutside 's/^nucleusVolumeFraction .*/nucleusVolumeFraction 0.7;/' \
+    "nucleusVolumeFraction = 0.7" "not inside"
+expect membraneThickerThanCell 's/^membraneThickness .*/membraneThickness 8e-6;/' \
+    "membraneThickness = 8e-06 m is outside the valid range"
+expect zeroSize 's/^cytoplasmSize .*/cytoplasmSize 0;/' \
+    "cytoplasmSize = 0 m is outside the valid range"
+expect negativeHeight 's/^cellHeight .*/cellHeight -7.9e-6;/' \
+    "cellHeight = -7.9e-06 m is outside the valid range"
+expect micrometres 's/^cellDiameter .*/cellDiameter 16.8;/' \
+    "cellDiameter = 16.8 m is outside the valid range \(0, 0.001\]"
+expect zeroLayers 's/^membraneLayers .*/membraneLayers 0;/' \
+    "membraneLayers = 0 is outside the valid range \[1, 20\]"
+expect contactRadiusTooLarge 's/^contactRadius .*/contactRadius 9e-6;/' \
+    "contactRadius = 9e-06 m is outside the valid range"
+expect unknownMode 's/^mode .*/mode wedge;/' "wedge" "axisymmetric" "full3D" "quarter3D"
+expect missingEntry '/^nucleusSize/d' "nucleusSize"
+
+echo "badInput: $((n - failures)) passed, $failures failed"
+[ $failures -eq 0 ]
