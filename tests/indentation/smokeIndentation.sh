@@ -1,0 +1,56 @@
+#!/bin/bash
+# Smoke run of an indentation tutorial in a scratch copy: coarse fallback
+# mesh sizes, a short loading table (load 0.3 um, hold 1 s, one +-0.5 um
+# cycle at 10 um/s), then its Allrun and plot. Fails on any error, a FOAM
+# error in a log, missing outputs, or forces that do not behave: positive
+# and growing while loading, peak above the hold, relaxation in the hold.
+set -euo pipefail
+src=$(cd "$1" && pwd)
+root=$(cd "$(dirname "$0")/../.." && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+mkdir -p "$work/tutorials/indentation"
+cp -r "$src" "$work/tutorials/indentation/"
+cp "$root"/tutorials/indentation/{meshCell,cellFallback.geo,plotIndentation.py} \
+    "$work/tutorials/indentation/"
+ln -s "$root/etc" "$work/etc"
+ln -s "$root/platforms" "$work/platforms"
+case=$work/tutorials/indentation/$(basename "$src")
+cd "$case"
+/usr/bin/python3 - constant/indenterProperties <<'PY'
+import re, sys
+p = sys.argv[1]
+s = open(p).read()
+s = re.sub(r"protocol\s*\(.*\);", """protocol
+(
+    (A   load    0.3e-6  0.3e-6)
+    (B   hold    0       1)
+    (C1  load    10e-6   0.5e-6)
+    (C1  unload  10e-6   0.5e-6)
+);""", s, flags=re.S)
+s = re.sub(r"maxDepthIncrement\s+[^;]*;", "maxDepthIncrement 0.1e-6;", s)
+s = re.sub(r"forceTarget\s+[^;]*;", "forceTarget 0.02e-9;", s)
+open(p, "w").write(s)
+PY
+export MESH_SIZE=1.6 CONTACT_SIZE=0.8 MEMBRANE_N=24
+./Allclean > /dev/null 2>&1 || true
+./Allrun
+if grep -l "FOAM FATAL" log.* 2>/dev/null; then
+    echo "smokeIndentation: FOAM error in the logs above"; exit 1
+fi
+ls indentation.png results.md > /dev/null
+/usr/bin/python3 - <<'PY'
+rows = [l.split() for l in open("postProcessing/indentation/force.dat")
+        if not l.startswith("#")]
+peaks = {l.split()[0]: float(l.split()[3])
+         for l in open("postProcessing/indentation/peaks.dat")
+         if not l.startswith("#")}
+A = [float(r[2]) for r in rows if r[5] == "A"]
+B = [float(r[2]) for r in rows if r[5] == "B"]
+assert A[-1] > 0 and all(b > a for a, b in zip(A[1:], A[2:])), A
+assert B[-1] < A[-1], "no relaxation in the hold"
+assert peaks["C1,i"] > 2*B[-1], peaks
+print("smokeIndentation: F_A %.3e N, F_B %.3e N, C1,i %.3e N"
+      % (A[-1], B[-1], peaks["C1,i"]))
+PY
+echo "smokeIndentation: $(basename "$src") passed"
