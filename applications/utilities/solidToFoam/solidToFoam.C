@@ -1,0 +1,391 @@
+/*---------------------------------------------------------------------------*\
+Application
+    solidToFoam
+
+Description
+    Converts the results of the solid library (the HDF5 file written by
+    solid::ResultWriter: mesh, and per step displacement, velocity, Cauchy
+    stress, pressure, von Mises, J, temperature rise, region) into an
+    OpenFOAM mesh region (default "solid") with one time directory per step,
+    so that foamToVTK -region solid and ParaView's OpenFOAM reader show the
+    cell next to the fluid.
+
+    3D meshes (hexahedra) are converted as they are. Axisymmetric meshes
+    (quadrilaterals in the r-z plane) are revolved into a wedge of
+    -wedgeAngle degrees (default 5) about the z axis; the cells on the axis
+    become prisms, the displacement is rotated to each point's angle and
+    the stress is written in (x = r, y = theta, z) components.
+
+    Fields: pointVectorField D [m] and pointVectorField Ud [m/s] (nodal),
+    volSymmTensorField sigma [Pa], volScalarFields pressure [Pa] (positive
+    in compression), vonMises [Pa], J [-], temperatureRise [K], region [-].
+
+Usage
+    solidToFoam <file.h5> [-region solid] [-wedgeAngle 5]
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "pointFields.H"
+#include "cellModel.H"
+#include "cellShapeList.H"
+#include <hdf5.h>
+
+using namespace Foam;
+
+namespace
+{
+
+//- An open HDF5 file; errors become FatalErrors naming the file and item
+class h5File
+{
+    const fileName name_;
+    hid_t id_;
+
+public:
+
+    explicit h5File(const fileName& name)
+    :
+        name_(name),
+        id_(-1)
+    {
+        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+        id_ = H5Fopen(name.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+        if (id_ < 0)
+        {
+            FatalErrorInFunction
+                << "Cannot open " << name << " as an HDF5 file"
+                << exit(FatalError);
+        }
+    }
+
+    ~h5File() { H5Fclose(id_); }
+
+    //- Read a dataset of doubles: its rows and columns (1 for a vector)
+    List<scalar> read(const word& path, label& rows, label& cols) const
+    {
+        const hid_t d = H5Dopen2(id_, path.c_str(), H5P_DEFAULT);
+        if (d < 0)
+        {
+            FatalErrorInFunction
+                << "No dataset " << path << " in " << name_
+                << exit(FatalError);
+        }
+        const hid_t s = H5Dget_space(d);
+        hsize_t dims[2] = {0, 1};
+        const int rank = H5Sget_simple_extent_dims(s, dims, nullptr);
+        rows = dims[0];
+        cols = rank > 1 ? dims[1] : 1;
+        List<scalar> data(rows*cols);
+        if
+        (
+            H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                data.begin()) < 0
+        )
+        {
+            FatalErrorInFunction
+                << "Cannot read " << path << " in " << name_
+                << exit(FatalError);
+        }
+        H5Sclose(s);
+        H5Dclose(d);
+        return data;
+    }
+
+    //- Step indices and times [s], in order
+    List<Tuple2<label, scalar>> steps() const
+    {
+        List<Tuple2<label, scalar>> result;
+        const hid_t g = H5Gopen2(id_, "/steps", H5P_DEFAULT);
+        if (g < 0)
+        {
+            return result;
+        }
+        hsize_t n = 0;
+        H5Gget_num_objs(g, &n);
+        for (hsize_t i = 0; i < n; ++i)
+        {
+            char buf[64];
+            H5Gget_objname_by_idx(g, i, buf, sizeof(buf));
+            const hid_t sg = H5Gopen2(g, buf, H5P_DEFAULT);
+            const hid_t a = H5Aopen(sg, "time", H5P_DEFAULT);
+            double t = 0;
+            H5Aread(a, H5T_NATIVE_DOUBLE, &t);
+            H5Aclose(a);
+            H5Gclose(sg);
+            result.append(Tuple2<label, scalar>(readLabel(buf), t));
+        }
+        H5Gclose(g);
+        Foam::sort
+        (
+            result,
+            [](const Tuple2<label, scalar>& a, const Tuple2<label, scalar>& b)
+            {
+                return a.first() < b.first();
+            }
+        );
+        return result;
+    }
+};
+
+} // End anonymous namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Convert the solid library's HDF5 results into an OpenFOAM mesh"
+        " region with time directories (for foamToVTK / ParaView)"
+    );
+    argList::noParallel();
+    argList::addArgument("file.h5");
+    argList::addOption("region", "name", "region name (default: solid)");
+    argList::addOption
+    (
+        "wedgeAngle", "deg", "axisymmetric revolution angle (default: 5)"
+    );
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    const fileName h5Name(args[1]);
+    const word region(args.opt<word>("region", "solid"));
+    const scalar angle =
+        degToRad(args.opt<scalar>("wedgeAngle", 5.0));
+    if (!(angle > 0 && angle < constant::mathematical::pi))
+    {
+        FatalErrorInFunction
+            << "-wedgeAngle must be in (0, 180) degrees" << exit(FatalError);
+    }
+
+    const h5File h5(h5Name);
+
+    label nNodes, nc, nElems, nen;
+    const List<scalar> X = h5.read("/mesh/coordinates", nNodes, nc);
+    const List<scalar> conn = h5.read("/mesh/connectivity", nElems, nen);
+    if (nen != 4 && nen != 8)
+    {
+        FatalErrorInFunction
+            << h5Name << ": elements with " << nen << " nodes; expected 4"
+            << " (axisymmetric quadrilaterals) or 8 (hexahedra)"
+            << exit(FatalError);
+    }
+    const bool axisymmetric = (nen == 4);
+
+    // Points: as they are (3D) or the two sides of the wedge; a node on the
+    // axis keeps a single point so that its cells collapse to prisms
+    DynamicList<point> pts(2*nNodes);
+    labelList minus(nNodes), plus(nNodes);
+    List<scalar> phiMinus(nNodes, Zero), phiPlus(nNodes, Zero);
+    const scalar ca = std::cos(angle/2), sa = std::sin(angle/2);
+    scalar rMax = 0;
+    for (label i = 0; i < nNodes; ++i) rMax = max(rMax, mag(X[3*i]));
+    for (label i = 0; i < nNodes; ++i)
+    {
+        const scalar x = X[3*i], y = X[3*i + 1], z = X[3*i + 2];
+        if (!axisymmetric)
+        {
+            minus[i] = plus[i] = pts.size();
+            pts.append(point(x, y, z));
+            continue;
+        }
+        // r = x, axial = y: revolve about the z axis of OpenFOAM
+        if (x <= 1e-12*rMax)
+        {
+            minus[i] = plus[i] = pts.size();
+            pts.append(point(0, 0, y));
+        }
+        else
+        {
+            minus[i] = pts.size();
+            pts.append(point(x*ca, -x*sa, y));
+            plus[i] = pts.size();
+            pts.append(point(x*ca, x*sa, y));
+            phiMinus[i] = -angle/2;
+            phiPlus[i] = angle/2;
+        }
+    }
+
+    const cellModel& hex = cellModel::ref(cellModel::HEX);
+    cellShapeList shapes(nElems);
+    forAll(shapes, e)
+    {
+        labelList v(8);
+        if (axisymmetric)
+        {
+            for (label k = 0; k < 4; ++k)
+            {
+                const label n = label(conn[4*e + k]);
+                v[k] = plus[n];
+                v[k + 4] = minus[n];
+            }
+        }
+        else
+        {
+            for (label k = 0; k < 8; ++k) v[k] = label(conn[8*e + k]);
+        }
+        shapes[e] = cellShape(hex, v, true);
+    }
+
+    Info<< "Solid mesh: " << nNodes << " nodes, " << nElems << " "
+        << (axisymmetric ? "axisymmetric quadrilaterals revolved by "
+            + Foam::name(radToDeg(angle)) + " deg" : word("hexahedra"))
+        << endl;
+
+    {
+        polyMesh mesh
+        (
+            IOobject(region, runTime.constant(), runTime),
+            pointField(pts),
+            shapes,
+            faceListList(),
+            wordList(),
+            PtrList<dictionary>(),
+            "surface",
+            "patch"
+        );
+        mesh.setInstance(runTime.constant());
+        mesh.removeFiles();
+        mesh.write();
+    }
+
+    // fvSchemes and fvSolution of the region (needed to construct it, by
+    // this utility and by foamToVTK): minimal ones unless present
+    const HashTable<string> minimalDicts
+    {
+        {
+            "fvSchemes",
+            "ddtSchemes { default none; } gradSchemes { default none; }"
+            " divSchemes { default none; } laplacianSchemes { default none; }"
+            " interpolationSchemes { default linear; }"
+            " snGradSchemes { default corrected; }"
+        },
+        {"fvSolution", ""}
+    };
+    forAllConstIters(minimalDicts, iter)
+    {
+        const word& dictName = iter.key();
+        const fileName dictFile(runTime.system()/region/dictName);
+        if (!isFile(runTime.path()/dictFile))
+        {
+            mkDir(runTime.path()/runTime.system()/region);
+            IOdictionary
+            (
+                IOobject
+                (
+                    dictName, runTime.system(), region, runTime,
+                    IOobject::NO_READ, IOobject::NO_WRITE, false
+                ),
+                dictionary(IStringStream(iter.val())())
+            ).regIOobject::write();
+        }
+    }
+
+    fvMesh mesh
+    (
+        IOobject
+        (
+            region, runTime.constant(), runTime, IOobject::MUST_READ
+        )
+    );
+    const pointMesh& pMesh = pointMesh::New(mesh);
+
+    const List<Tuple2<label, scalar>> steps = h5.steps();
+    for (const auto& step : steps)
+    {
+        runTime.setTime(step.second(), step.first());
+        const word g("/steps/" + Foam::name(step.first()) + "/");
+        Info<< "Step " << step.first() << ", time " << runTime.timeName()
+            << " s" << endl;
+
+        // Nodal vectors, rotated to the angle of each point
+        for (const word& name : {word("displacement"), word("velocity")})
+        {
+            label r, c;
+            const List<scalar> d = h5.read(g + name, r, c);
+            pointVectorField f
+            (
+                IOobject
+                (
+                    name == "displacement" ? "D" : "Ud",
+                    runTime.timeName(), mesh, IOobject::NO_READ,
+                    IOobject::AUTO_WRITE
+                ),
+                pMesh,
+                dimensionedVector
+                (
+                    name == "displacement" ? dimLength : dimVelocity, Zero
+                )
+            );
+            for (label i = 0; i < nNodes; ++i)
+            {
+                if (axisymmetric)
+                {
+                    const scalar ur = d[3*i], uz = d[3*i + 1];
+                    f[minus[i]] = vector
+                    (
+                        ur*std::cos(phiMinus[i]), ur*std::sin(phiMinus[i]), uz
+                    );
+                    f[plus[i]] = vector
+                    (
+                        ur*std::cos(phiPlus[i]), ur*std::sin(phiPlus[i]), uz
+                    );
+                }
+                else
+                {
+                    f[i] = vector(d[3*i], d[3*i + 1], d[3*i + 2]);
+                }
+            }
+            f.write();
+        }
+
+        // Cell fields
+        {
+            label r, c;
+            const List<scalar> s = h5.read(g + "cauchyStress", r, c);
+            volSymmTensorField sigma
+            (
+                IOobject("sigma", runTime.timeName(), mesh),
+                mesh,
+                dimensionedSymmTensor(dimPressure, Zero)
+            );
+            forAll(sigma, e)
+            {
+                const scalar* S = &s[9*e];
+                // axisymmetric storage (r, z, theta) -> (x, z, y)
+                sigma[e] = axisymmetric
+                  ? symmTensor(S[0], S[2], S[1], S[8], S[5], S[4])
+                  : symmTensor(S[0], S[1], S[2], S[4], S[5], S[8]);
+            }
+            sigma.write();
+        }
+        // (dimensionSet assignment checks equality: no List<dimensionSet>)
+        const std::pair<word, const dimensionSet*> scalarFields[] =
+        {
+            {"pressure", &dimPressure},
+            {"vonMises", &dimPressure},
+            {"J", &dimless},
+            {"temperatureRise", &dimTemperature},
+            {"region", &dimless}
+        };
+        for (const auto& field : scalarFields)
+        {
+            label r, c;
+            const List<scalar> v = h5.read(g + field.first, r, c);
+            volScalarField f
+            (
+                IOobject(field.first, runTime.timeName(), mesh),
+                mesh,
+                dimensionedScalar(*field.second, Zero)
+            );
+            f.primitiveFieldRef() = scalarField(v);
+            f.write();
+        }
+    }
+
+    Info<< "Wrote region " << region << " with " << steps.size()
+        << " time directories" << nl << "End" << endl;
+
+    return 0;
+}
