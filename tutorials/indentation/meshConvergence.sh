@@ -1,0 +1,48 @@
+#!/bin/bash
+# Mesh convergence of the full protocol on validationCell: the cellMesh
+# sizes scaled by each factor given (default 1 0.7 0.5), parameter set
+# $SET (default table). Prints one row per mesh: elements, F_B, the nine
+# peaks [nN], F_E, wall time [s] of cellIndentationFoam.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+. "$here/../../etc/bashrc"
+work=${WORK:-$(mktemp -d)}
+for s in ${@:-1 0.7 0.5}
+do
+    c=$work/validationCell_$s
+    rm -rf "$c"
+    cp -r "$here/validationCell" "$c"
+    (
+        cd "$c"
+        /usr/bin/python3 - "$s" "${SET:-table}" <<'PY'
+import re, sys
+f = float(sys.argv[1])
+p = "system/cellMeshDict"
+t = open(p).read()
+for k in ("nucleusSize", "cytoplasmSize", "membraneSize", "contactSize"):
+    t = re.sub(r"(%s\s+)([0-9.eE+-]+)" % k,
+               lambda m: m.group(1) + "%.4g" % (float(m.group(2))*f), t)
+open(p, "w").write(t)
+p = "constant/solidProperties"
+t = open(p).read()
+t = re.sub(r"parameterSet\s+\w+;", "parameterSet %s;" % sys.argv[2], t)
+open(p, "w").write(t)
+PY
+        "$here/meshCell" 14.2 7.6 > /dev/null
+        cellIndentationFoam > log.cellIndentationFoam 2>&1
+        /usr/bin/python3 - "$s" <<'PY'
+import re, sys
+log = open("log.cellIndentationFoam").read()
+ne = re.search(r"(\d+) elements", log).group(1)
+wall = re.search(r"wall time ([0-9.]+) s", log).group(1)
+peaks = {l.split()[0]: float(l.split()[3])*1e9
+         for l in open("postProcessing/indentation/peaks.dat")
+         if not l.startswith("#")}
+keys = ["endB"] + ["C%d,%s" % (a, b) for a in (1, 2, 3)
+                   for b in ("i", "ii", "iii")] + ["endE"]
+print("| %s | %s | " % (sys.argv[1], ne)
+      + " | ".join("%.3f" % peaks.get(k, float("nan")) for k in keys)
+      + " | %s |" % wall)
+PY
+    )
+done
