@@ -17,7 +17,9 @@ Description
     Phys. 77, 1988: Euler, SSPRK2, SSPRK3); time step from maxCo with the
     fastest signal speed |U.n| + c. Optional Newtonian viscous stress.
 
-    Every time step checks that each cell state lies inside the domain of the
+    Every written time holds the conservative state (rho, rhoU, rhoE): a run
+    continued from it is exact. Every time step checks that each cell state
+    lies inside the domain of the
     equation of state; if not, the run stops naming the cell, its position
     and the time, and the last written time directory is kept.
 
