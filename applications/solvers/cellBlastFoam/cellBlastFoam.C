@@ -1,0 +1,109 @@
+/*---------------------------------------------------------------------------*\
+Application
+    cellBlastFoam
+
+Group
+    grpCompressibleSolvers
+
+Description
+    Partitioned fluid-structure interaction of the compressible water solver
+    (rhoRiemannFoam: HLLC/MUSCL/SSP Runge-Kutta, rhoEThermo) with the
+    explicit solid (src/solid, central difference, Mie-Grueneisen or
+    hyperelastic regions), for a cell under a blast wave.
+
+    Per time step (lock step, dt = min(fluid Courant step, solid stable
+    step)): the coupling scheme (src/fsi, constant/fsiProperties) iterates
+    the interface velocity x:
+      1. the fluid interface moves to d_n + dt x (consistent map of the solid
+         nodes to the patch points), the mesh follows (dynamicMeshDict, e.g.
+         displacementLaplacian);
+      2. the fluid takes an ALE step that satisfies the geometric
+         conservation law, (V q)^k = a (V q)^0 + (1 - a)((V q)^k-1 - dt sum F)
+         with the stage volumes from the same recursion and the swept face
+         volumes (fluxes in the frame of the moving faces, riemannFlux);
+      3. the wall force at t_n+1 (momentum flux of the interface faces) is
+         mapped conservatively onto the solid nodes, the solid steps;
+      4. residual of x~ = (v_n + v_n+1)/2 against x; stop or relax.
+    The coupling residual and iterations of every step are written to
+    postProcessing/fsi/<time>/coupling.dat; non-converged steps are counted
+    and reported (or stop the run).
+
+Usage
+    constant/fsiProperties (interface and coupling dictionaries, see
+    src/fsi/interfaceMap and couplingScheme), constant/solidProperties
+    (src/fsi/solidDomain), constant/dynamicMeshDict, 0/pointDisplacement,
+    and everything rhoRiemannFoam reads (docs/userGuide/fsi.md).
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "dynamicFvMesh.H"
+#include "pointFields.H"
+#include "OFstream.H"
+#include "rhoEThermo.H"
+#include "riemannFlux.H"
+#include "rungeKuttaScheme.H"
+#include "interfaceMap.H"
+#include "solidDomain.H"
+#include "couplingScheme.H"
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Fluid-structure interaction of the compressible water solver with"
+        " the explicit solid (cell under blast)."
+    );
+
+    #include "postProcess.H"
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createDynamicFvMesh.H"
+    #include "createFields.H"
+    #include "createFsi.H"
+    #include "createTimeControls.H"
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        #include "readTimeControls.H"
+
+        flux->fluxes(thermo, U, phi, phiU, phiE, amaxSf);
+
+        #include "courantNo.H"
+        #include "setDeltaT.H"
+
+        // Lock step with the explicit solid
+        if (runTime.deltaTValue() > solid.timeStep())
+        {
+            runTime.setDeltaT(solid.timeStep());
+        }
+
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << " s" << nl << endl;
+
+        #include "couplingStep.H"
+
+        thermo.checkStates();
+
+        solid.write();
+        runTime.write();
+
+        runTime.printExecutionTime(Info);
+    }
+
+    coupling->report(Info);
+    if (couplingLog.valid())
+    {
+        couplingLog() << "# ";
+        coupling->report(couplingLog());
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}

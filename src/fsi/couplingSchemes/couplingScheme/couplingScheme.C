@@ -1,0 +1,122 @@
+#include "couplingScheme.H"
+#include "error.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(couplingScheme, 0);
+    defineRunTimeSelectionTable(couplingScheme, dictionary);
+}
+
+
+Foam::couplingScheme::couplingScheme(const dictionary& dict)
+:
+    maxIter_(dict.getOrDefault<label>("maxIter", 30)),
+    tolerance_(dict.getOrDefault<scalar>("tolerance", 1e-6)),
+    velocityScale_(dict.getOrDefault<scalar>("velocityScale", 1e-2)),
+    stopOnNonConvergence_(false),
+    iter_(0),
+    residual_(0),
+    converged_(true),
+    nSteps_(0),
+    nNonConverged_(0),
+    nIterations_(0),
+    maxIterUsed_(0)
+{
+    const word action(dict.getOrDefault<word>("onNonConvergence", "warn"));
+    if (action == "stop")
+    {
+        stopOnNonConvergence_ = true;
+    }
+    else if (action != "warn")
+    {
+        FatalIOErrorInFunction(dict)
+            << "onNonConvergence " << action << " is not valid; valid:"
+            << " (warn stop)" << exit(FatalIOError);
+    }
+    if (maxIter_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "maxIter = " << maxIter_ << " is outside the valid range"
+            << " [1, inf)" << exit(FatalIOError);
+    }
+    if (tolerance_ <= 0 || velocityScale_ <= 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "tolerance = " << tolerance_ << " and velocityScale = "
+            << velocityScale_ << " m/s must be in (0, inf)"
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::couplingScheme::beginStep()
+{
+    iter_ = 0;
+    residual_ = 0;
+    converged_ = false;
+    newStep();
+}
+
+
+bool Foam::couplingScheme::update
+(
+    scalarField& x,
+    const scalarField& xTilde,
+    const scalarField& beta
+)
+{
+    ++iter_;
+    const scalarField r(xTilde - x);
+    residual_ = max(mag(r))/max(max(mag(xTilde)), velocityScale_);
+
+    if (!iterative())
+    {
+        converged_ = true;
+        return true;
+    }
+    if (residual_ <= tolerance_)
+    {
+        converged_ = true;
+        return true;
+    }
+    if (iter_ >= maxIter_)
+    {
+        converged_ = false;
+        return true;
+    }
+    relax(x, xTilde, r, beta);
+    return false;
+}
+
+
+void Foam::couplingScheme::endStep(const scalar time)
+{
+    ++nSteps_;
+    nIterations_ += iter_;
+    maxIterUsed_ = max(maxIterUsed_, iter_);
+    if (!converged_)
+    {
+        ++nNonConverged_;
+        if (stopOnNonConvergence_)
+        {
+            FatalErrorInFunction
+                << "FSI coupling did not converge at t = " << time
+                << " s: residual " << residual_ << " after " << iter_
+                << " iterations (onNonConvergence stop)" << exit(FatalError);
+        }
+        WarningInFunction
+            << "FSI coupling not converged at t = " << time << " s: residual "
+            << residual_ << " after " << iter_ << " iterations (step "
+            << nNonConverged_ << " of " << nSteps_ << " not converged)"
+            << endl;
+    }
+}
+
+
+void Foam::couplingScheme::report(Ostream& os) const
+{
+    os  << "FSI coupling " << type() << ": " << nSteps_ << " steps, "
+        << nIterations_ << " iterations (mean "
+        << scalar(nIterations_)/max(nSteps_, 1) << ", max " << maxIterUsed_
+        << "), " << nNonConverged_ << " steps not converged" << endl;
+}

@@ -1,0 +1,470 @@
+#include "interfaceMap.H"
+#include "mathematicalConstants.H"
+#include "unitConversion.H"
+#include "SubField.H"
+
+#include <map>
+
+namespace
+{
+
+using Foam::vector;
+using Foam::scalar;
+
+// Closest point of triangle (a, b, c) to p as barycentric weights
+// (Ericson, Real-Time Collision Detection, 2005, sec. 5.1.5)
+Foam::FixedList<scalar, 3> closestOnTriangle
+(
+    const vector& p, const vector& a, const vector& b, const vector& c
+)
+{
+    const vector ab = b - a, ac = c - a, ap = p - a;
+    const scalar d1 = ab & ap, d2 = ac & ap;
+    if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
+    const vector bp = p - b;
+    const scalar d3 = ab & bp, d4 = ac & bp;
+    if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
+    const scalar vc = d1*d4 - d3*d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0)
+    {
+        const scalar v = d1/(d1 - d3);
+        return {1 - v, v, 0};
+    }
+    const vector cp = p - c;
+    const scalar d5 = ab & cp, d6 = ac & cp;
+    if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
+    const scalar vb = d5*d2 - d1*d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0)
+    {
+        const scalar w = d2/(d2 - d6);
+        return {1 - w, 0, w};
+    }
+    const scalar va = d3*d6 - d5*d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+    {
+        const scalar w = (d4 - d3)/((d4 - d3) + (d5 - d6));
+        return {0, 1 - w, w};
+    }
+    const scalar denom = 1/(va + vb + vc);
+    const scalar v = vb*denom, w = vc*denom;
+    return {1 - v - w, v, w};
+}
+
+} // namespace
+
+
+Foam::vector Foam::interfaceMap::solidPoint(const label i) const
+{
+    const solid::Vec3& X = solidMesh_.X[nodes_[i]];
+    return vector(X[0], X[1], axisymmetric_ ? 0 : X[2]);
+}
+
+
+Foam::vector Foam::interfaceMap::toSolidFrame
+(
+    const point& p,
+    vector& radial
+) const
+{
+    if (!axisymmetric_)
+    {
+        radial = Zero;
+        return p;
+    }
+    const vector d = p - axisOrigin_;
+    const scalar z = d & axisDirection_;
+    const vector rv = d - z*axisDirection_;
+    const scalar r = mag(rv);
+    radial = r > VSMALL ? rv/r : Zero;
+    return vector(r, z, 0);
+}
+
+
+Foam::interfaceMap::stencil Foam::interfaceMap::project(const vector& x) const
+{
+    stencil best;
+    best.distance = GREAT;
+    forAll(faces_, facei)
+    {
+        const labelList& f = faces_[facei];
+        if (axisymmetric_)
+        {
+            const vector a = solidPoint(f[0]), b = solidPoint(f[1]);
+            const vector ab = b - a;
+            const scalar t =
+                min(max(((x - a) & ab)/max(magSqr(ab), VSMALL), 0), 1);
+            const scalar d = mag(x - (a + t*ab));
+            if (d < best.distance)
+            {
+                best.distance = d;
+                best.node = {f[0], f[1], f[1], f[1]};
+                best.weight = {1 - t, t, 0, 0};
+            }
+            continue;
+        }
+        if (f.size() == 4)
+        {
+            // Bilinear quadrilateral: Gauss-Newton on the local coordinates
+            const vector X[4] =
+                {solidPoint(f[0]), solidPoint(f[1]),
+                 solidPoint(f[2]), solidPoint(f[3])};
+            const scalar xs[4] = {-1, 1, 1, -1}, es[4] = {-1, -1, 1, 1};
+            scalar xi = 0, eta = 0;
+            FixedList<scalar, 4> N;
+            vector xp(Zero);
+            for (label it = 0; it < 20; ++it)
+            {
+                vector dxi(Zero), deta(Zero);
+                xp = Zero;
+                for (label a = 0; a < 4; ++a)
+                {
+                    N[a] = 0.25*(1 + xs[a]*xi)*(1 + es[a]*eta);
+                    xp += N[a]*X[a];
+                    dxi += 0.25*xs[a]*(1 + es[a]*eta)*X[a];
+                    deta += 0.25*es[a]*(1 + xs[a]*xi)*X[a];
+                }
+                const vector g = x - xp;
+                const scalar a11 = dxi & dxi, a12 = dxi & deta,
+                    a22 = deta & deta;
+                const scalar det = a11*a22 - a12*a12;
+                if (det <= VSMALL) break;
+                const scalar b1 = dxi & g, b2 = deta & g;
+                const scalar dx = (a22*b1 - a12*b2)/det;
+                const scalar de = (a11*b2 - a12*b1)/det;
+                xi = min(max(xi + dx, -1), 1);
+                eta = min(max(eta + de, -1), 1);
+                if (mag(dx) + mag(de) < 1e-12) break;
+            }
+            xp = Zero;
+            for (label a = 0; a < 4; ++a)
+            {
+                N[a] = 0.25*(1 + xs[a]*xi)*(1 + es[a]*eta);
+                xp += N[a]*X[a];
+            }
+            const scalar d = mag(x - xp);
+            if (d < best.distance)
+            {
+                best.distance = d;
+                best.node = {f[0], f[1], f[2], f[3]};
+                best.weight = N;
+            }
+            continue;
+        }
+        for (label k = 1; k + 1 < f.size(); ++k)
+        {
+            const label i0 = f[0], i1 = f[k], i2 = f[k + 1];
+            const vector a = solidPoint(i0), b = solidPoint(i1),
+                c = solidPoint(i2);
+            const FixedList<scalar, 3> w = closestOnTriangle(x, a, b, c);
+            const scalar d = mag(x - (w[0]*a + w[1]*b + w[2]*c));
+            if (d < best.distance)
+            {
+                best.distance = d;
+                best.node = {i0, i1, i2, i2};
+                best.weight = {w[0], w[1], w[2], 0};
+            }
+        }
+    }
+    return best;
+}
+
+
+Foam::List<Foam::interfaceMap::stencil> Foam::interfaceMap::projectAll
+(
+    const pointField& pts,
+    vectorField& radial,
+    const scalar tol,
+    const word& what
+) const
+{
+    List<stencil> st(pts.size());
+    radial.setSize(pts.size());
+    label nOut = 0;
+    scalar worst = 0;
+    point worstPoint(Zero);
+    forAll(pts, i)
+    {
+        st[i] = project(toSolidFrame(pts[i], radial[i]));
+        // Size of the nearest solid face: its longest edge
+        scalar h = 0;
+        for (label a = 0; a < 4; ++a)
+        {
+            for (label b = a + 1; b < 4; ++b)
+            {
+                h = max
+                (
+                    h,
+                    mag(solidPoint(st[i].node[a]) - solidPoint(st[i].node[b]))
+                );
+            }
+        }
+        if (st[i].distance > tol*h)
+        {
+            ++nOut;
+            if (st[i].distance > worst)
+            {
+                worst = st[i].distance;
+                worstPoint = pts[i];
+            }
+        }
+    }
+    if (nOut)
+    {
+        FatalErrorInFunction
+            << "FSI interface: " << nOut << " of " << pts.size()
+            << " fluid " << what << " lie off the solid interface (no"
+            << " overlap of the two sides); worst " << worstPoint
+            << " at " << worst << " m (mapTolerance " << tol
+            << " x solid face size). Check the fluid patch, the solid face"
+            << " set and the units of both meshes." << exit(FatalError);
+    }
+    return st;
+}
+
+
+Foam::interfaceMap::interfaceMap
+(
+    const polyPatch& fluidPatch,
+    const solid::Mesh& solidMesh,
+    const dictionary& dict
+)
+:
+    solidMesh_(solidMesh),
+    axisymmetric_(solidMesh.axisymmetric()),
+    axisOrigin_(Zero),
+    axisDirection_(Zero),
+    ringFactor_(1)
+{
+    const word setName(dict.get<word>("solidFaceSet"));
+    if (!solidMesh.faceSets.count(setName))
+    {
+        wordList names;
+        for (const auto& s : solidMesh.faceSets) names.append(s.first);
+        FatalIOErrorInFunction(dict)
+            << "solidFaceSet " << setName << " is not a face set of the"
+            << " solid mesh; face sets: " << names << exit(FatalIOError);
+    }
+    const scalar tol = dict.getOrDefault<scalar>("mapTolerance", 0.1);
+    if (tol <= 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "mapTolerance = " << tol << " is outside the valid range"
+            << " (0, inf)" << exit(FatalIOError);
+    }
+    if (fluidPatch.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "fluid patch " << fluidPatch.name() << " has no faces"
+            << exit(FatalIOError);
+    }
+
+    // Local numbering of the solid interface nodes
+    std::map<int, label> local;
+    const auto& set = solidMesh.faceSets.at(setName);
+    faces_.setSize(label(set.size()));
+    forAll(faces_, facei)
+    {
+        const auto& f = set[facei];
+        faces_[facei].setSize(label(f.size()));
+        forAll(faces_[facei], k)
+        {
+            auto it = local.find(f[k]);
+            if (it == local.end())
+            {
+                it = local.emplace(f[k], nodes_.size()).first;
+                nodes_.append(f[k]);
+            }
+            faces_[facei][k] = it->second;
+        }
+    }
+
+    if (axisymmetric_)
+    {
+        axisOrigin_ = dict.get<point>("axisOrigin");
+        axisDirection_ = dict.get<vector>("axisDirection");
+        if (mag(axisDirection_) < VSMALL)
+        {
+            FatalIOErrorInFunction(dict)
+                << "axisDirection must be non-zero" << exit(FatalIOError);
+        }
+        axisDirection_ /= mag(axisDirection_);
+
+        // Wedge angle from the azimuth of the patch points
+        const pointField& pp = fluidPatch.localPoints();
+        vector e1(Zero);
+        scalar rMax = 0;
+        forAll(pp, i)
+        {
+            vector rad;
+            const vector rz = toSolidFrame(pp[i], rad);
+            if (rz.x() > rMax) { rMax = rz.x(); e1 = rad; }
+        }
+        const vector e2 = axisDirection_ ^ e1;
+        scalar phiMin = GREAT, phiMax = -GREAT;
+        forAll(pp, i)
+        {
+            vector rad;
+            const vector rz = toSolidFrame(pp[i], rad);
+            if (rz.x() < 1e-6*rMax) continue;
+            const scalar phi = std::atan2(rad & e2, rad & e1);
+            phiMin = min(phiMin, phi);
+            phiMax = max(phiMax, phi);
+        }
+        const scalar theta = phiMax - phiMin;
+        if (!(theta > SMALL))
+        {
+            FatalIOErrorInFunction(dict)
+                << "r-z solid mesh, but the fluid patch "
+                << fluidPatch.name() << " is not a wedge about the axis "
+                << axisOrigin_ << " " << axisDirection_ << exit(FatalIOError);
+        }
+        ringFactor_ = constant::mathematical::twoPi/theta;
+        Info<< "FSI interface: axisymmetric, fluid wedge angle "
+            << radToDeg(theta) << " deg" << endl;
+    }
+
+    pointStencil_ =
+        projectAll(fluidPatch.localPoints(), pointRadial_, tol, "points");
+    // Force quadrature: centroids of the triangles (face centre, edge)
+    {
+        const pointField& lp = fluidPatch.localPoints();
+        const pointField Cf(fluidPatch.faceCentres());
+        DynamicList<point> qp;
+        forAll(fluidPatch.localFaces(), facei)
+        {
+            const face& f = fluidPatch.localFaces()[facei];
+            scalar total = 0;
+            const label start = qp.size();
+            forAll(f, k)
+            {
+                const point& a = lp[f[k]];
+                const point& b = lp[f.fcIndex(k)];
+                const scalar area = 0.5*mag((a - Cf[facei]) ^ (b - Cf[facei]));
+                qp.append((Cf[facei] + a + b)/3);
+                quadFace_.append(facei);
+                quadWeight_.append(area);
+                total += area;
+            }
+            for (label q = start; q < qp.size(); ++q)
+            {
+                quadWeight_[q] /= total;
+            }
+        }
+        quadStencil_ =
+            projectAll(pointField(qp), quadRadial_, tol, "face points");
+    }
+
+    Info<< "FSI interface: fluid patch " << fluidPatch.name() << " ("
+        << fluidPatch.size() << " faces) <-> solid face set " << setName
+        << " (" << faces_.size() << " faces, " << nodes_.size()
+        << " nodes), largest gap " << maxGap() << " m" << endl;
+}
+
+
+Foam::scalarField Foam::interfaceMap::gather(const Eigen::VectorXd& full) const
+{
+    const label dim = solidMesh_.dim();
+    scalarField x(nDofs());
+    forAll(nodes_, i)
+    {
+        for (label d = 0; d < dim; ++d)
+        {
+            x[dim*i + d] = full(dim*nodes_[i] + d);
+        }
+    }
+    return x;
+}
+
+
+Foam::tmp<Foam::vectorField> Foam::interfaceMap::pointValues
+(
+    const scalarField& dofs
+) const
+{
+    const label dim = solidMesh_.dim();
+    tmp<vectorField> tv(new vectorField(pointStencil_.size(), Zero));
+    vectorField& v = tv.ref();
+    forAll(pointStencil_, pointi)
+    {
+        const stencil& s = pointStencil_[pointi];
+        vector val(Zero);
+        for (label k = 0; k < 4; ++k)
+        {
+            for (label d = 0; d < dim; ++d)
+            {
+                val[d] += s.weight[k]*dofs[dim*s.node[k] + d];
+            }
+        }
+        v[pointi] = axisymmetric_
+            ? val.x()*pointRadial_[pointi] + val.y()*axisDirection_
+            : val;
+    }
+    return tv;
+}
+
+
+Foam::scalarField Foam::interfaceMap::nodalForces
+(
+    const vectorField& faceForces
+) const
+{
+    const label dim = solidMesh_.dim();
+    scalarField f(nDofs(), Zero);
+    forAll(quadStencil_, q)
+    {
+        const stencil& s = quadStencil_[q];
+        const vector F = quadWeight_[q]*faceForces[quadFace_[q]];
+        const vector Fs = axisymmetric_
+            ? ringFactor_*vector(F & quadRadial_[q], F & axisDirection_, 0)
+            : F;
+        for (label k = 0; k < 4; ++k)
+        {
+            for (label d = 0; d < dim; ++d)
+            {
+                f[dim*s.node[k] + d] += s.weight[k]*Fs[d];
+            }
+        }
+    }
+    return f;
+}
+
+
+Foam::scalarField Foam::interfaceMap::nodalImpedance
+(
+    const scalarField& Z,
+    const vectorField& Sf
+) const
+{
+    // Per quadrature point: Z S_d^2/|S| in the solid frame, components
+    // taken positive (a diagonal, not a force)
+    const label dim = solidMesh_.dim();
+    scalarField f(nDofs(), Zero);
+    forAll(quadStencil_, q)
+    {
+        const label facei = quadFace_[q];
+        const vector& Sv = Sf[facei];
+        const vector S = axisymmetric_
+            ? vector(Sv & quadRadial_[q], Sv & axisDirection_, 0)
+            : Sv;
+        const vector D =
+            ringFactor_*quadWeight_[q]*Z[facei]*cmptMultiply(S, S)/mag(Sv);
+        const stencil& s = quadStencil_[q];
+        for (label k = 0; k < 4; ++k)
+        {
+            for (label d = 0; d < dim; ++d)
+            {
+                f[dim*s.node[k] + d] += s.weight[k]*D[d];
+            }
+        }
+    }
+    return f;
+}
+
+
+Foam::scalar Foam::interfaceMap::maxGap() const
+{
+    scalar g = 0;
+    for (const stencil& s : pointStencil_) g = max(g, s.distance);
+    for (const stencil& s : quadStencil_) g = max(g, s.distance);
+    return g;
+}
