@@ -26,13 +26,15 @@ struct GmshSession
     bool owner;
     static bool initialized()
     {
-        // gmsh 4.8 has no isInitialized(): API calls throw before
-        // initialize()
+        // gmsh 4.8 has no isInitialized(); its API does not throw before
+        // the first initialize() (but may after a finalize()), and
+        // initialize() always creates a model: an empty model list or an
+        // exception means not initialised
         try
         {
-            std::string name;
-            gmsh::model::getCurrent(name);
-            return true;
+            std::vector<std::string> models;
+            gmsh::model::list(models);
+            return !models.empty();
         }
         catch (...)
         {

@@ -47,7 +47,6 @@ Usage
 #include "SolidError.H"
 #include "StaticSolver.H"
 
-#include <gmsh.h>
 
 #include <chrono>
 #include <map>
