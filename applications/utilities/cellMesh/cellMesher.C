@@ -1,5 +1,6 @@
 #include "cellMesher.H"
 #include "meshQuality.H"
+#include "structuredCell.H"
 #include "mathematicalConstants.H"
 #include "OSspecific.H"
 #include <gmsh.h>
@@ -105,64 +106,13 @@ void addGroup(int dim, const std::vector<int>& tags, const std::string& name)
 
 int Foam::cellMesher::point(const cellGeometry::rz& p) const
 {
-    const scalar r = p.first()/L_, z = p.second()/L_;
-    return geom_.axisymmetric()
-        ? geo::addPoint(r, z, 0)
-        : gmsh::model::occ::addPoint(r, 0, z);
-}
-
-
-int Foam::cellMesher::line(int p, int q) const
-{
-    return geom_.axisymmetric()
-        ? geo::addLine(p, q)
-        : gmsh::model::occ::addLine(p, q);
-}
-
-
-int Foam::cellMesher::spline(const std::vector<int>& pts) const
-{
-    return geom_.axisymmetric()
-        ? geo::addSpline(pts)
-        : gmsh::model::occ::addSpline(pts);
-}
-
-
-int Foam::cellMesher::ellipseArc
-(
-    int start,
-    int centre,
-    int major,
-    int end,
-    const std::function<cellGeometry::rz(scalar)>& X,
-    scalar s0,
-    scalar s1
-) const
-{
-    if (geom_.axisymmetric())
-    {
-        return geo::addEllipseArc(start, centre, major, end);
-    }
-    // OpenCASCADE: a spline through 200 points of the exact curve
-    std::vector<int> pts{start};
-    const label n = 200;
-    for (label i = 1; i < n; ++i)
-    {
-        pts.push_back(point(X(s0 + (s1 - s0)*i/n)));
-    }
-    pts.push_back(end);
-    return spline(pts);
+    return geo::addPoint(p.first()/L_, p.second()/L_, 0);
 }
 
 
 int Foam::cellMesher::surface(const std::vector<int>& curves) const
 {
-    return geom_.axisymmetric()
-        ? geo::addPlaneSurface({geo::addCurveLoop(curves)})
-        : gmsh::model::occ::addPlaneSurface
-          (
-              {gmsh::model::occ::addCurveLoop(curves)}
-          );
+    return geo::addPlaneSurface({geo::addCurveLoop(curves)});
 }
 
 
@@ -208,7 +158,7 @@ void Foam::cellMesher::buildSection()
             outerPt[k] = point(geom_.outer(theta[k]));
             innerPt[k] = point(geom_.inner(theta[k]));
         }
-        radial[k] = line(outerPt[k], innerPt[k]);
+        radial[k] = geo::addLine(outerPt[k], innerPt[k]);
     }
     const int major = a >= H ? outerPt[N] : outerPt[0];
 
@@ -220,12 +170,7 @@ void Foam::cellMesher::buildSection()
     {
         outer_.push_back
         (
-            ellipseArc
-            (
-                outerPt[k], origin, major, outerPt[k + 1],
-                [this](scalar th) { return geom_.outer(th); },
-                theta[k], theta[k + 1]
-            )
+            geo::addEllipseArc(outerPt[k], origin, major, outerPt[k + 1])
         );
         std::vector<int> pts{innerPt[k]};
         const label nSpline = 100;
@@ -240,7 +185,7 @@ void Foam::cellMesher::buildSection()
             );
         }
         pts.push_back(innerPt[k + 1]);
-        innerCurve[k] = spline(pts);
+        innerCurve[k] = geo::addSpline(pts);
         membrane_.push_back
         (
             surface({-outer_[k], radial[k], innerCurve[k], -radial[k + 1]})
@@ -260,21 +205,15 @@ void Foam::cellMesher::buildSection()
     const int n2 = point(rz(0, zn + cn));
     const int nc = point(rz(0, zn));
     const int nMajor = an >= cn ? n1 : n2;
-    const auto nucleusCurve = [=](scalar phi)
-    {
-        return rz(an*sin(phi), zn - cn*cos(phi));
-    };
-    const int arc1 =
-        ellipseArc(n0, nc, nMajor, n1, nucleusCurve, 0, 0.5*pi);
-    const int arc2 =
-        ellipseArc(n1, nc, nMajor, n2, nucleusCurve, 0.5*pi, pi);
-    nucleusAxis_ = line(n2, n0);
+    const int arc1 = geo::addEllipseArc(n0, nc, nMajor, n1);
+    const int arc2 = geo::addEllipseArc(n1, nc, nMajor, n2);
+    nucleusAxis_ = geo::addLine(n2, n0);
     nucleus_.push_back(surface({arc1, arc2, nucleusAxis_}));
 
     // Cytoplasm: between substrate, membrane, axis and nucleus
-    cytoplasmBottom_ = line(origin, innerPt[N]);
-    const int axisTop = line(innerPt[0], n2);
-    const int axisBottom = line(n0, origin);
+    cytoplasmBottom_ = geo::addLine(origin, innerPt[N]);
+    const int axisTop = geo::addLine(innerPt[0], n2);
+    const int axisBottom = geo::addLine(n0, origin);
     std::vector<int> loop{cytoplasmBottom_};
     for (label k = N - 1; k >= 0; --k) loop.push_back(-innerCurve[k]);
     loop.insert(loop.end(), {axisTop, -arc2, -arc1, axisBottom});
@@ -283,9 +222,8 @@ void Foam::cellMesher::buildSection()
     bottom_ = {cytoplasmBottom_, radial[N]};
     axis_ = {axisBottom, nucleusAxis_, axisTop, radial[0]};
 
-    if (geom_.axisymmetric())
+    geo::synchronize();
     {
-        geo::synchronize();
         for (label k = 0; k <= N; ++k)
         {
             gmsh::model::mesh::setTransfiniteCurve
@@ -310,117 +248,34 @@ void Foam::cellMesher::buildSection()
 }
 
 
-void Foam::cellMesher::revolve()
-{
-    // Region of each revolved surface, in input order
-    std::vector<std::vector<int>*> region;
-    gmsh::vectorpair in;
-    for (const int s : nucleus_) { in.push_back({2, s}); region.push_back(&nucleus3_); }
-    for (const int s : cytoplasm_) { in.push_back({2, s}); region.push_back(&cytoplasm3_); }
-    for (const int s : membrane_) { in.push_back({2, s}); region.push_back(&membrane3_); }
-
-    // OpenCASCADE revolves surfaces touching the axis into proper
-    // volumes (the built-in kernel leaves degenerate edges on the axis);
-    // fragment makes the shared faces conformal
-    namespace occ = gmsh::model::occ;
-    const bool quarter = geom_.mode() == cellGeometry::meshMode::quarter3D;
-    gmsh::vectorpair volumes;
-    for (const auto& dt : in)
-    {
-        occ::synchronize();
-        gmsh::vectorpair out;
-        occ::revolve({dt}, 0, 0, 0, 0, 0, 1, quarter ? 0.5*pi : 2*pi, out);
-        label n = 0;
-        for (const auto& o : out)
-        {
-            if (o.first == 3)
-            {
-                volumes.push_back(o);
-                ++n;
-            }
-        }
-        if (n != 1)
-        {
-            FatalErrorInFunction
-                << "Revolving surface " << dt.second << " gave " << n
-                << " volumes" << exit(FatalError);
-        }
-    }
-    occ::remove(in, true);
-    gmsh::vectorpair fragments;
-    std::vector<gmsh::vectorpair> map;
-    occ::fragment(volumes, {}, fragments, map);
-    for (std::size_t i = 0; i < volumes.size(); ++i)
-    {
-        for (const auto& dt : map[i])
-        {
-            if (dt.first == 3) region[i]->push_back(dt.second);
-        }
-    }
-    occ::synchronize();
-}
-
-
 void Foam::cellMesher::sizeFields() const
 {
     namespace field = gmsh::model::mesh::field;
-    const bool axi = geom_.axisymmetric();
-    const int dim = axi ? 2 : 3;
-
-    // The tetrahedra of the 3D mesh are split into hexahedra of half their
-    // edge length
-    const scalar split = (axi ? 1 : 2)/L_;
-    const scalar hLayer = geom_.t()/geom_.layers();
-    std::vector<double> fields;
-    fields.push_back
-    (
-        restrictedSize
-        (
-            dim, axi ? nucleus_ : nucleus3_, split*geom_.nucleusSize()
-        )
-    );
-    fields.push_back
-    (
-        restrictedSize
-        (
-            dim, axi ? cytoplasm_ : cytoplasm3_, split*geom_.cytoplasmSize()
-        )
-    );
-    if (!axi)
+    std::vector<double> fields
     {
-        fields.push_back
-        (
-            restrictedSize
-            (
-                dim, membrane3_, split*min(geom_.membraneSize(), hLayer)
-            )
-        );
-    }
+        double(restrictedSize(2, nucleus_, geom_.nucleusSize()/L_)),
+        double(restrictedSize(2, cytoplasm_, geom_.cytoplasmSize()/L_))
+    };
 
     if (geom_.contactRadius() > 0)
     {
         // contactSize in r <= contactRadius, z >= z_s(contactRadius) -
         // contactDepth; growing linearly to the largest size over another
         // contactDepth
-        const scalar hFar = split*max
+        const scalar hFar = max
         (
             geom_.membraneSize(),
             max(geom_.nucleusSize(), geom_.cytoplasmSize())
-        );
-        const scalar hc = split*
-        (
-            axi ? geom_.contactSize() : min(geom_.contactSize(), hLayer)
-        );
+        )/L_;
+        const scalar hc = geom_.contactSize()/L_;
         const scalar zLow =
             (geom_.outer(geom_.thetaContact()).second() - geom_.contactDepth())
            /L_;
-        const std::string r = axi ? "x" : "sqrt(x*x + y*y)";
-        const std::string z = axi ? "y" : "z";
         std::ostringstream os;
         os.precision(17);
-        os  << hc << " + " << (hFar - hc) << "*min(1, max(0, max(" << r
-            << " - " << geom_.contactRadius()/L_ << ", " << zLow << " - "
-            << z << "))/" << geom_.contactDepth()/L_ << ")";
+        os  << hc << " + " << (hFar - hc) << "*min(1, max(0, max(x - "
+            << geom_.contactRadius()/L_ << ", " << zLow << " - y))/"
+            << geom_.contactDepth()/L_ << ")";
         const int f = field::add("MathEval");
         field::setString(f, "F", os.str());
         fields.push_back(f);
@@ -473,47 +328,6 @@ void Foam::cellMesher::physicalGroups2D() const
 }
 
 
-void Foam::cellMesher::physicalGroups3D() const
-{
-    addGroup(3, nucleus3_, "nucleus");
-    addGroup(3, cytoplasm3_, "cytoplasm");
-    addGroup(3, membrane3_, "membrane");
-
-    // Classify the boundary of the whole cell by its planes
-    gmsh::vectorpair all, bnd;
-    for (const auto* r : {&nucleus3_, &cytoplasm3_, &membrane3_})
-    {
-        for (const int v : *r) all.push_back({3, v});
-    }
-    gmsh::model::getBoundary(all, bnd, true, false, false);
-    const scalar tol = 1e-6*geom_.t()/L_;
-    std::vector<int> bottom, symX, symY, outer;
-    for (const auto& dt : bnd)
-    {
-        const int s = std::abs(dt.second);
-        double x0, y0, z0, x1, y1, z1;
-        gmsh::model::getBoundingBox(2, s, x0, y0, z0, x1, y1, z1);
-        if (mag(z1) < tol && mag(z0) < tol) bottom.push_back(s);
-        else if (mag(x1) < tol && mag(x0) < tol) symX.push_back(s);
-        else if (mag(y1) < tol && mag(y0) < tol) symY.push_back(s);
-        else outer.push_back(s);
-    }
-    addGroup(2, bottom, "fixedBottom");
-    addGroup(2, outer, "outerSurface");
-    if (geom_.mode() == cellGeometry::meshMode::quarter3D)
-    {
-        addGroup(2, symX, "symmetryX");
-        addGroup(2, symY, "symmetryY");
-    }
-    else if (symX.size() || symY.size())
-    {
-        FatalErrorInFunction
-            << "The full 3D cell has " << symX.size() + symY.size()
-            << " boundary surfaces on a coordinate plane" << exit(FatalError);
-    }
-}
-
-
 Foam::cellMesher::cellMesher(const cellGeometry& geom)
 :
     geom_(geom),
@@ -521,17 +335,24 @@ Foam::cellMesher::cellMesher(const cellGeometry& geom)
     cytoplasmBottom_(-1)
 {
     gmsh::model::add("cell");
-    buildSection();
     if (geom_.axisymmetric())
     {
+        buildSection();
         physicalGroups2D();
+        sizeFields();
     }
     else
     {
-        revolve();
-        physicalGroups3D();
+        const structuredCell cell(geom_);
+        cell.toGmsh(L_);
+        Info<< "Structured hexahedra: " << cell.hexes().size() << ", nodes "
+            << cell.nodes().size() << "; boundary faces:";
+        for (const auto& kv : cell.faces())
+        {
+            Info<< " " << kv.first.c_str() << " " << kv.second.size();
+        }
+        Info<< nl << endl;
     }
-    sizeFields();
 }
 
 
@@ -569,13 +390,6 @@ void Foam::cellMesher::generate()
             gmsh::model::getEntities(surfaces, 2);
             gmsh::model::mesh::clear(surfaces);
         }
-    }
-    else
-    {
-        gmsh::option::setNumber("Mesh.Algorithm", 6);
-        gmsh::option::setNumber("Mesh.Algorithm3D", 1);
-        gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 2);
-        gmsh::model::mesh::generate(3);
     }
 
     const int dim = axi ? 2 : 3;
@@ -644,7 +458,7 @@ void Foam::cellMesher::generate()
         << 2*geom_.cn() << " m, centre z " << geom_.zn()
         << " m, smallest gap to the membrane " << geom_.gap() << " m" << nl
         << "    membrane thickness " << geom_.t() << " m, "
-        << geom_.layers() << " element layers (2D)" << nl << endl;
+        << geom_.layers() << " element layers" << nl << endl;
 }
 
 

@@ -1,0 +1,700 @@
+#include "structuredCell.H"
+#include "mathematicalConstants.H"
+#include <gmsh.h>
+#include <algorithm>
+#include <cmath>
+
+using Foam::constant::mathematical::pi;
+
+namespace
+{
+
+// Nodes closer than this are one node [m]
+const double mergeTol = 1e-12;
+
+// Column radius and butterfly square as fractions of a_n and r_c
+const double columnFraction = 0.5;
+const double squareFraction = 0.5;
+
+// Nucleus O-grid: ring thickness on the equator as a fraction of
+// a_n - r_c, core half-height as a fraction of the local half-height
+const double ringFraction = 0.35;
+const double coreFraction = 0.55;
+
+// Outward faces of the gmsh hexahedron
+const int hexFace[6][4] =
+{
+    {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+    {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}
+};
+
+Foam::label atLeastOne(double x)
+{
+    return std::max(Foam::label(1), Foam::label(std::ceil(x - 1e-9)));
+}
+
+double centreJacobian(const std::array<Foam::structuredCell::vec, 8>& x)
+{
+    double J[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+        J[k][0] = 0.25*((x[1][k] + x[2][k] + x[5][k] + x[6][k])
+                      - (x[0][k] + x[3][k] + x[4][k] + x[7][k]));
+        J[k][1] = 0.25*((x[2][k] + x[3][k] + x[6][k] + x[7][k])
+                      - (x[0][k] + x[1][k] + x[4][k] + x[5][k]));
+        J[k][2] = 0.25*((x[4][k] + x[5][k] + x[6][k] + x[7][k])
+                      - (x[0][k] + x[1][k] + x[2][k] + x[3][k]));
+    }
+    return J[0][0]*(J[1][1]*J[2][2] - J[1][2]*J[2][1])
+         - J[0][1]*(J[1][0]*J[2][2] - J[1][2]*J[2][0])
+         + J[0][2]*(J[1][0]*J[2][1] - J[1][1]*J[2][0]);
+}
+
+}
+
+
+Foam::scalar Foam::structuredCell::innerTheta(scalar r) const
+{
+    // r of the inner parallel curve increases with theta (t below the
+    // smallest radius of curvature)
+    scalar lo = 0, hi = 0.5*pi;
+    for (int it = 0; it < 100; ++it)
+    {
+        const scalar mid = 0.5*(lo + hi);
+        (g_.inner(mid).first() < r ? lo : hi) = mid;
+    }
+    return 0.5*(lo + hi);
+}
+
+
+Foam::scalar Foam::structuredCell::innerZ(scalar r) const
+{
+    return g_.inner(innerTheta(r)).second();
+}
+
+
+std::vector<Foam::scalar> Foam::structuredCell::levels(scalar r) const
+{
+    const scalar q = std::sqrt(std::max(scalar(0), 1 - sqr(r/g_.an())));
+    const scalar z1 = g_.zn() - g_.cn()*q;
+    const scalar z2 = g_.zn() + g_.cn()*q;
+    const scalar z3 = innerZ(r);
+    const scalar z4 = g_.H()*std::sqrt(std::max(scalar(0), 1 - sqr(r/g_.a())));
+    std::vector<scalar> z;
+    for (label k = 0; k < nGap_; ++k) z.push_back(z1*k/nGap_);
+    const auto nucleus = [&](scalar l0, scalar l1, label n)
+    {
+        for (label k = 0; k < n; ++k)
+        {
+            z.push_back(z1 + (z2 - z1)*(l0 + (l1 - l0)*k/n));
+        }
+    };
+    nucleus(0, lambda1_, nRingN_);
+    nucleus(lambda1_, lambda2_, nCoreV_);
+    nucleus(lambda2_, 1, nRingN_);
+    for (label k = 0; k < nGap_; ++k) z.push_back(z2 + (z3 - z2)*k/nGap_);
+    const label L = g_.layers();
+    for (label k = 0; k <= L; ++k) z.push_back(z3 + (z4 - z3)*k/L);
+    return z;
+}
+
+
+Foam::structuredCell::vec2 Foam::structuredCell::nucleusPoint
+(
+    scalar psi
+) const
+{
+    return {g_.an()*std::sin(psi), g_.zn() - g_.cn()*std::cos(psi)};
+}
+
+
+Foam::structuredCell::block2D Foam::structuredCell::coons
+(
+    const std::vector<vec2>& s0,
+    const std::vector<vec2>& s1,
+    const std::vector<vec2>& t0,
+    const std::vector<vec2>& t1
+)
+{
+    block2D b;
+    b.ni = label(s0.size()) - 1;
+    b.nj = label(t0.size()) - 1;
+    b.p.resize((b.ni + 1)*(b.nj + 1));
+    for (label j = 0; j <= b.nj; ++j)
+    {
+        const double v = double(j)/b.nj;
+        for (label i = 0; i <= b.ni; ++i)
+        {
+            const double u = double(i)/b.ni;
+            for (int k = 0; k < 2; ++k)
+            {
+                b.at(i, j)[k] =
+                    (1 - v)*s0[i][k] + v*s1[i][k]
+                  + (1 - u)*t0[j][k] + u*t1[j][k]
+                  - (1 - u)*(1 - v)*s0[0][k] - u*(1 - v)*s0[b.ni][k]
+                  - (1 - u)*v*s1[0][k] - u*v*s1[b.ni][k];
+            }
+        }
+    }
+    return b;
+}
+
+
+Foam::structuredCell::block2D Foam::structuredCell::ruled
+(
+    const std::vector<vec2>& s0,
+    const std::vector<vec2>& s1,
+    label nj
+)
+{
+    block2D b;
+    b.ni = label(s0.size()) - 1;
+    b.nj = nj;
+    b.p.resize((b.ni + 1)*(b.nj + 1));
+    for (label j = 0; j <= nj; ++j)
+    {
+        const double v = double(j)/nj;
+        for (label i = 0; i <= b.ni; ++i)
+        {
+            for (int k = 0; k < 2; ++k)
+            {
+                b.at(i, j)[k] = s0[i][k] + v*(s1[i][k] - s0[i][k]);
+            }
+        }
+    }
+    return b;
+}
+
+
+std::vector<Foam::structuredCell::vec2> Foam::structuredCell::segment
+(
+    const vec2& a,
+    const vec2& b,
+    label n
+)
+{
+    std::vector<vec2> p(n + 1);
+    for (label i = 0; i <= n; ++i)
+    {
+        const double u = double(i)/n;
+        p[i] = {a[0] + u*(b[0] - a[0]), a[1] + u*(b[1] - a[1])};
+    }
+    return p;
+}
+
+
+std::size_t Foam::structuredCell::node(vec x)
+{
+    for (double& c : x)
+    {
+        if (std::abs(c) < mergeTol) c = 0;
+    }
+    key q;
+    for (int k = 0; k < 3; ++k) q[k] = std::llround(x[k]/mergeTol);
+    auto it = index_.find(q);
+    if (it != index_.end()) return it->second;
+    // A point within mergeTol of an existing one may round to a
+    // neighbouring cell of the quantisation grid
+    for (int dx = -1; dx <= 1; ++dx)
+    for (int dy = -1; dy <= 1; ++dy)
+    for (int dz = -1; dz <= 1; ++dz)
+    {
+        it = index_.find(key{q[0] + dx, q[1] + dy, q[2] + dz});
+        if (it != index_.end()) return it->second;
+    }
+    index_[q] = nodes_.size();
+    nodes_.push_back(x);
+    return nodes_.size() - 1;
+}
+
+
+void Foam::structuredCell::addBlock
+(
+    const std::vector<std::array<vec, 8>>& h,
+    int region
+)
+{
+    double sum = 0;
+    for (const auto& x : h) sum += centreJacobian(x);
+    const bool flip = sum < 0;
+    for (const auto& x : h)
+    {
+        hex e;
+        for (int k = 0; k < 8; ++k)
+        {
+            e[k] = node(x[flip ? (k + 4) % 8 : k]);
+        }
+        hexes_.push_back(e);
+        region_.push_back(region);
+    }
+}
+
+
+void Foam::structuredCell::revolve(const block2D& b, int region)
+{
+    // Azimuth nodes: those of the butterfly's outer circle
+    const label nPhi = quarter_ ? nSq_ : 4*nSq_;
+    std::vector<std::array<vec, 8>> h;
+    for (label l = 0; l < nPhi; ++l)
+    {
+        const double p0 = 0.5*pi*l/nSq_, p1 = 0.5*pi*(l + 1)/nSq_;
+        const auto at = [&](label i, label j, double phi) -> vec
+        {
+            const vec2& x = b.at(i, j);
+            return {x[0]*std::cos(phi), x[0]*std::sin(phi), x[1]};
+        };
+        for (label j = 0; j < b.nj; ++j)
+        for (label i = 0; i < b.ni; ++i)
+        {
+            h.push_back
+            ({
+                at(i, j, p0), at(i + 1, j, p0), at(i + 1, j + 1, p0),
+                at(i, j + 1, p0), at(i, j, p1), at(i + 1, j, p1),
+                at(i + 1, j + 1, p1), at(i, j + 1, p1)
+            });
+        }
+    }
+    addBlock(h, region);
+}
+
+
+void Foam::structuredCell::column()
+{
+    // Butterfly: square [-s, s]^2 and four ring blocks to the circle r_c;
+    // ring block k faces the direction k pi/2, its arc from
+    // k pi/2 - pi/4 to k pi/2 + pi/4
+    std::vector<block2D> disc;
+    {
+        const vec2 c0{-s_, -s_}, c1{s_, -s_}, c3{-s_, s_}, c2{s_, s_};
+        disc.push_back
+        (
+            coons
+            (
+                segment(c0, c1, nSq_), segment(c3, c2, nSq_),
+                segment(c0, c3, nSq_), segment(c1, c2, nSq_)
+            )
+        );
+    }
+    for (int k = 0; k < 4; ++k)
+    {
+        const double th = 0.5*pi*k;
+        const double c = std::cos(th), s = std::sin(th);
+        // Square side facing direction th, from its -45 to its +45 corner
+        const vec2 a{s_*(c + s), s_*(s - c)}, b{s_*(c - s), s_*(s + c)};
+        const std::vector<vec2> side = segment(a, b, nSq_);
+        std::vector<vec2> arc(nSq_ + 1);
+        for (label i = 0; i <= nSq_; ++i)
+        {
+            const double phi = th - 0.25*pi + 0.5*pi*i/nSq_;
+            arc[i] = {rc_*std::cos(phi), rc_*std::sin(phi)};
+        }
+        block2D r;
+        r.ni = nSq_;
+        r.nj = nRing_;
+        r.p.resize((r.ni + 1)*(r.nj + 1));
+        for (label j = 0; j <= nRing_; ++j)
+        for (label i = 0; i <= nSq_; ++i)
+        {
+            const double v = double(j)/nRing_;
+            r.at(i, j) =
+            {
+                side[i][0] + v*(arc[i][0] - side[i][0]),
+                side[i][1] + v*(arc[i][1] - side[i][1])
+            };
+        }
+        disc.push_back(r);
+    }
+
+    // Vertical lines: level index ranges of the three regions
+    const label nNuc = 2*nRingN_ + nCoreV_;
+    const label k1 = nGap_, k2 = nGap_ + nNuc, k3 = 2*nGap_ + nNuc;
+    const label k4 = k3 + g_.layers();
+    for (const block2D& b : disc)
+    {
+        std::vector<std::vector<scalar>> z(b.p.size());
+        for (std::size_t n = 0; n < b.p.size(); ++n)
+        {
+            z[n] = levels(std::hypot(b.p[n][0], b.p[n][1]));
+        }
+        std::vector<std::array<vec, 8>> h[3];
+        for (label j = 0; j < b.nj; ++j)
+        for (label i = 0; i < b.ni; ++i)
+        {
+            const label c[4] =
+            {
+                j*(b.ni + 1) + i, j*(b.ni + 1) + i + 1,
+                (j + 1)*(b.ni + 1) + i + 1, (j + 1)*(b.ni + 1) + i
+            };
+            double cx = 0, cy = 0;
+            for (const label n : c)
+            {
+                cx += b.p[n][0];
+                cy += b.p[n][1];
+            }
+            if (quarter_ && (cx < 0 || cy < 0)) continue;
+            for (label k = 0; k < k4; ++k)
+            {
+                std::array<vec, 8> x;
+                for (int m = 0; m < 4; ++m)
+                {
+                    const vec2& p = b.p[c[m]];
+                    x[m] = {p[0], p[1], z[c[m]][k]};
+                    x[m + 4] = {p[0], p[1], z[c[m]][k + 1]};
+                }
+                const int r = k < k1 || (k >= k2 && k < k3)
+                    ? cytoplasmRegion
+                    : k < k2 ? nucleusRegion : membraneRegion;
+                h[r].push_back(x);
+            }
+        }
+        for (int r = 0; r < 3; ++r) addBlock(h[r], r);
+    }
+}
+
+
+void Foam::structuredCell::classifyBoundary()
+{
+    std::map<std::array<std::size_t, 4>, std::pair<int, quad>> count;
+    for (const hex& e : hexes_)
+    {
+        for (const auto& f : hexFace)
+        {
+            quad q{e[f[0]], e[f[1]], e[f[2]], e[f[3]]};
+            std::array<std::size_t, 4> key = q;
+            std::sort(key.begin(), key.end());
+            auto it = count.find(key);
+            if (it == count.end()) count[key] = {1, q};
+            else ++it->second.first;
+        }
+    }
+    const scalar a = g_.a(), H = g_.H();
+    label bad = 0;
+    for (const auto& kv : count)
+    {
+        if (kv.second.first > 2)
+        {
+            FatalErrorInFunction
+                << "A face is shared by " << kv.second.first
+                << " hexahedra" << exit(FatalError);
+        }
+        if (kv.second.first != 1) continue;
+        const quad& q = kv.second.second;
+        bool onZ = true, onX = true, onY = true, onOuter = true;
+        for (const std::size_t n : q)
+        {
+            const vec& x = nodes_[n];
+            onX = onX && x[0] == 0;
+            onY = onY && x[1] == 0;
+            onZ = onZ && x[2] == 0;
+            const scalar e = (sqr(x[0]) + sqr(x[1]))/sqr(a) + sqr(x[2]/H);
+            onOuter = onOuter && std::abs(e - 1) < 1e-9;
+        }
+        const char* name =
+            onZ ? "fixedBottom"
+          : quarter_ && onX ? "symmetryX"
+          : quarter_ && onY ? "symmetryY"
+          : onOuter ? "outerSurface" : nullptr;
+        if (name) faces_[name].push_back(q);
+        else ++bad;
+    }
+    if (bad)
+    {
+        FatalErrorInFunction
+            << bad << " boundary faces are neither on the substrate, the "
+            << "symmetry planes nor the outer surface: the blocks are not "
+            << "conformal" << exit(FatalError);
+    }
+}
+
+
+Foam::structuredCell::structuredCell(const cellGeometry& geom)
+:
+    g_(geom),
+    quarter_(geom.mode() == cellGeometry::meshMode::quarter3D)
+{
+    const scalar a = g_.a(), t = g_.t(), an = g_.an(), cn = g_.cn(),
+        zn = g_.zn();
+    const scalar hN = g_.nucleusSize(), hC = g_.cytoplasmSize();
+    const scalar hT = min(hC, g_.membraneSize());
+    rc_ = columnFraction*an;
+    s_ = squareFraction*rc_;
+
+    // Azimuth: elements per quarter turn (even: the quarter's planes are
+    // grid planes of the butterfly)
+    nSq_ = 2*atLeastOne(0.25*pi*0.5*(rc_ + a)/hT);
+    nRing_ = max
+    (
+        label(1), label(std::round((rc_ - s_)/(0.5*pi*rc_/nSq_)))
+    );
+
+    // Nucleus O-grid in the section (half-lens r >= r_c)
+    const scalar qc = std::sqrt(1 - sqr(rc_/an));
+    const scalar z1c = zn - cn*qc, hD = 2*cn*qc;
+    const scalar rq = an - ringFraction*(an - rc_);
+    const scalar kappa = coreFraction*cn*std::sqrt(1 - sqr(rq/an));
+    lambda1_ = (zn - kappa - z1c)/hD;
+    lambda2_ = 1 - lambda1_;
+    // J1: the nucleus surface on the -45 degree ray from the core corner
+    scalar lo = 0, hi = an;
+    for (int it = 0; it < 100; ++it)
+    {
+        const scalar s = 0.5*(lo + hi);
+        const scalar r = rq + s/std::sqrt(2.0);
+        const scalar z = zn - kappa - s/std::sqrt(2.0);
+        (sqr(r/an) + sqr((z - zn)/cn) < 1 ? lo : hi) = s;
+    }
+    const vec2 J1{rq + lo/std::sqrt(2.0), zn - kappa - lo/std::sqrt(2.0)};
+    const scalar psi1 = std::asin(rc_/an);
+    const scalar psiJ = std::atan2(J1[0]/an, (zn - J1[1])/cn);
+    nRingN_ = atLeastOne(max(lambda1_*hD, an - rq)/hN);
+    const scalar z3c = innerZ(rc_);
+
+    // Substrate + membrane inner curve Gamma: its element count T must
+    // equal the nucleus curve's (one C-shaped cytoplasm block)
+    const scalar theta0 = innerTheta(rc_);
+    const scalar Lb = a - t - rc_;
+    const scalar Li = g_.arcLength(theta0, 0.5*pi, true);
+    const label nB = atLeastOne(Lb/hC);
+    const label nM = atLeastOne(Li/hT);
+    const label T = nB + nM;
+
+    // Membrane inner curve from r_c (theta0) to the substrate, uniform in
+    // arc length, and the matched outer points
+    std::vector<scalar> thIn(nM + 1);
+    {
+        const int nTab = 4000;
+        std::vector<scalar> s(nTab + 1, 0);
+        for (int i = 1; i <= nTab; ++i)
+        {
+            const auto x = g_.inner(theta0 + (0.5*pi - theta0)*(i - 1)/nTab);
+            const auto y = g_.inner(theta0 + (0.5*pi - theta0)*i/nTab);
+            s[i] = s[i - 1]
+                + std::hypot(y.first() - x.first(), y.second() - x.second());
+        }
+        for (label i = 0; i <= nM; ++i)
+        {
+            const scalar target = s[nTab]*i/nM;
+            const int k = std::min
+            (
+                nTab - 1,
+                int(std::lower_bound(s.begin(), s.end(), target) - s.begin())
+              - 1
+            );
+            const int kk = std::max(0, k);
+            const scalar w = (target - s[kk])/(s[kk + 1] - s[kk]);
+            thIn[i] = theta0 + (0.5*pi - theta0)*(kk + w)/nTab;
+        }
+        thIn[0] = theta0;
+        thIn[nM] = 0.5*pi;
+    }
+    const scalar thetaOut0 = std::asin(rc_/a);
+    std::vector<vec2> In(nM + 1), Out(nM + 1);
+    for (label i = 0; i <= nM; ++i)
+    {
+        const auto x = g_.inner(thIn[i]);
+        In[i] = {x.first(), x.second()};
+        const scalar th = thIn[i] + (thetaOut0 - theta0)*(1 - double(i)/nM);
+        const auto y = g_.outer(th);
+        Out[i] = {y.first(), y.second()};
+    }
+    In[0] = {rc_, z3c};
+    In[nM] = {a - t, 0};
+    Out[0] = {rc_, g_.H()*std::sqrt(1 - sqr(rc_/a))};
+    Out[nM] = {a, 0};
+
+    // Gamma: substrate P0 -> R, then the inner curve R -> P3
+    std::vector<vec2> Gamma = segment({rc_, 0}, {a - t, 0}, nB);
+    for (label i = nM - 1; i >= 0; --i) Gamma.push_back(In[i]);
+
+    // Nucleus curve Lambda (P1 -> J1 -> J2 -> P2) with T elements: node i
+    // at the polar angle about (0, z_n) of Gamma(i), rescaled from Gamma's
+    // angle range to Lambda's, so that the cytoplasm node lines run about
+    // radially; J1 and J2 are the nodes closest to them (symmetric counts:
+    // the core rectangle), each piece then remapped to end exactly there
+    const auto polar = [&](const vec2& p)
+    {
+        return std::atan2(p[0], zn - p[1]);
+    };
+    const scalar aG0 = polar(Gamma.front()), aG1 = polar(Gamma.back());
+    const scalar aL0 = polar(nucleusPoint(psi1));
+    const scalar aL1 = polar(nucleusPoint(pi - psi1));
+    std::vector<scalar> psiStar(T + 1);
+    for (label i = 0; i <= T; ++i)
+    {
+        const scalar al =
+            aL0 + (polar(Gamma[i]) - aG0)*(aL1 - aL0)/(aG1 - aG0);
+        psiStar[i] = std::atan2(cn*std::sin(al), an*std::cos(al));
+    }
+    psiStar[0] = psi1;
+    psiStar[T] = pi - psi1;
+    label mBot = 1, mTop = 1;
+    for (label i = 1; i < T; ++i)
+    {
+        if (std::abs(psiStar[i] - psiJ) < std::abs(psiStar[mBot] - psiJ))
+        {
+            mBot = i;
+        }
+        if
+        (
+            std::abs(psiStar[T - i] - (pi - psiJ))
+          < std::abs(psiStar[T - mTop] - (pi - psiJ))
+        )
+        {
+            mTop = i;
+        }
+    }
+    const label mB = std::max(label(1), std::min((mBot + mTop)/2, (T - 1)/2));
+    nCoreV_ = T - 2*mB;
+    const label nNuc = 2*nRingN_ + nCoreV_;
+    std::vector<vec2> Lambda(T + 1);
+    const auto remap = [&](label i0, label i1, scalar p0, scalar p1)
+    {
+        for (label i = i0; i <= i1; ++i)
+        {
+            const scalar f =
+                (psiStar[i] - psiStar[i0])/(psiStar[i1] - psiStar[i0]);
+            Lambda[i] = nucleusPoint(p0 + f*(p1 - p0));
+        }
+    };
+    remap(0, mB, psi1, psiJ);
+    remap(mB, T - mB, psiJ, pi - psiJ);
+    remap(T - mB, T, pi - psiJ, pi - psi1);
+
+    // Cytoplasm layers: across the thickest part of the C-shaped block
+    // (from the nucleus to the rim) and the gaps on the axis
+    scalar thick = max(zn - cn, innerZ(0) - zn - cn);
+    for (std::size_t i = 0; i < Gamma.size(); ++i)
+    {
+        thick = max
+        (
+            thick,
+            std::hypot(Gamma[i][0] - Lambda[i][0], Gamma[i][1] - Lambda[i][1])
+        );
+    }
+    nGap_ = atLeastOne(thick/hC);
+
+    // Column levels at r_c (shared by the left sides of the r-z blocks)
+    const std::vector<scalar> zc = levels(rc_);
+    const auto colPt = [&](label k) { return vec2{rc_, zc[k]}; };
+    const auto colSide = [&](label k0, label k1)
+    {
+        std::vector<vec2> p;
+        const label d = k1 > k0 ? 1 : -1;
+        for (label k = k0; k != k1 + d; k += d) p.push_back(colPt(k));
+        return p;
+    };
+    Lambda.front() = colPt(nGap_);
+    Lambda.back() = colPt(nGap_ + nNuc);
+
+    // Nucleus O-grid blocks
+    const vec2 K0 = colPt(nGap_ + nRingN_);
+    const vec2 K3 = colPt(nGap_ + nRingN_ + nCoreV_);
+    const vec2 K1{rq, K0[1]}, K2{rq, K3[1]};
+    const vec2 J2 = Lambda[mB + nCoreV_];
+    const std::vector<vec2> coreBottom = segment(K0, K1, mB);
+    const std::vector<vec2> coreTop = segment(K3, K2, mB);
+    const std::vector<vec2> coreRight = segment(K1, K2, nCoreV_);
+    const std::vector<vec2> lamB(Lambda.begin(), Lambda.begin() + mB + 1);
+    const std::vector<vec2> lamR
+    (
+        Lambda.begin() + mB, Lambda.begin() + mB + nCoreV_ + 1
+    );
+    const std::vector<vec2> lamT
+    (
+        Lambda.rbegin(), Lambda.rbegin() + mB + 1
+    );
+    revolve
+    (
+        coons
+        (
+            coreBottom, coreTop,
+            colSide(nGap_ + nRingN_, nGap_ + nRingN_ + nCoreV_), coreRight
+        ),
+        nucleusRegion
+    );
+    revolve
+    (
+        coons
+        (
+            lamB, coreBottom, colSide(nGap_, nGap_ + nRingN_),
+            segment(Lambda[mB], K1, nRingN_)
+        ),
+        nucleusRegion
+    );
+    revolve
+    (
+        coons
+        (
+            lamR, coreRight, segment(Lambda[mB], K1, nRingN_),
+            segment(J2, K2, nRingN_)
+        ),
+        nucleusRegion
+    );
+    revolve
+    (
+        coons
+        (
+            lamT, coreTop, colSide(nGap_ + nNuc, nGap_ + nNuc - nRingN_),
+            segment(J2, K2, nRingN_)
+        ),
+        nucleusRegion
+    );
+
+    // Cytoplasm C-block: straight node lines from Lambda(i) to Gamma(i)
+    // (a ruled block; its ends are the column's vertical lines)
+    revolve(ruled(Lambda, Gamma, nGap_), cytoplasmRegion);
+
+    // Membrane: straight node lines between matched inner/outer points
+    revolve(ruled(In, Out, g_.layers()), membraneRegion);
+
+    column();
+    classifyBoundary();
+}
+
+
+void Foam::structuredCell::toGmsh(scalar unit) const
+{
+    const char* regionNames[3] = {"nucleus", "cytoplasm", "membrane"};
+    for (int r = 0; r < 3; ++r)
+    {
+        gmsh::model::addDiscreteEntity(3, r + 1);
+    }
+    std::vector<std::size_t> tags(nodes_.size());
+    std::vector<double> xyz;
+    xyz.reserve(3*nodes_.size());
+    for (std::size_t n = 0; n < nodes_.size(); ++n)
+    {
+        tags[n] = n + 1;
+        for (int k = 0; k < 3; ++k) xyz.push_back(nodes_[n][k]/unit);
+    }
+    gmsh::model::mesh::addNodes(3, 1, tags, xyz);
+
+    std::size_t next = 1;
+    for (int r = 0; r < 3; ++r)
+    {
+        std::vector<std::size_t> et, nt;
+        for (std::size_t e = 0; e < hexes_.size(); ++e)
+        {
+            if (region_[e] != r) continue;
+            et.push_back(next++);
+            for (const std::size_t n : hexes_[e]) nt.push_back(n + 1);
+        }
+        gmsh::model::mesh::addElementsByType(r + 1, 5, et, nt);
+        const int g = gmsh::model::addPhysicalGroup(3, {r + 1});
+        gmsh::model::setPhysicalName(3, g, regionNames[r]);
+    }
+    int surface = 0;
+    for (const auto& kv : faces_)
+    {
+        gmsh::model::addDiscreteEntity(2, ++surface);
+        std::vector<std::size_t> et, nt;
+        for (const quad& q : kv.second)
+        {
+            et.push_back(next++);
+            for (const std::size_t n : q) nt.push_back(n + 1);
+        }
+        gmsh::model::mesh::addElementsByType(surface, 3, et, nt);
+        const int g = gmsh::model::addPhysicalGroup(2, {surface});
+        gmsh::model::setPhysicalName(2, g, kv.first);
+    }
+}
