@@ -1,0 +1,31 @@
+#!/bin/bash
+# Input errors of cellBlastFoam: an unknown coupling scheme lists the valid
+# ones; a solid interface that does not overlap the fluid patch is an
+# error naming the gap.
+set -uo pipefail
+dir=$(cd "$(dirname "$0")" && pwd)
+. "$dir/../../etc/bashrc"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail=0
+run()
+{
+    rm -rf "$work/case"; cp -r "$dir/pulseLayer" "$work/case"
+    (cd "$work/case" && eval "$1" && blockMesh > /dev/null 2>&1 \
+        && cellBlastFoam > log 2>&1)
+    if [ $? -eq 0 ]; then echo "FAIL: '$1' was accepted"; fail=1; return; fi
+    if ! grep -q "$2" "$work/case/log"; then
+        echo "FAIL: '$1': no message '$2'"; tail -20 "$work/case/log"; fail=1
+    else
+        echo "ok: $2"
+    fi
+}
+run "sed -i 's/^\( *scheme *\)robin;/\1secant;/' constant/fsiProperties" \
+    "Unknown coupling scheme type secant"
+run "sed -i 's/^\( *scheme *\)robin;/\1secant;/' constant/fsiProperties" \
+    "IQNILS"
+run "sed -i 's/min         (50e-6/min         (60e-6/; s/max         (100e-6/max         (110e-6/' constant/solidProperties" \
+    "lie off the solid interface (no"
+run "sed -i 's/fluidPatch      interface;/fluidPatch      wall;/' constant/fsiProperties" \
+    "is not a patch of the fluid"
+exit $fail
