@@ -10,9 +10,16 @@ independent reader of the .msh file:
     nodes on the layers+1 curves at distance k t/layers from the outer
     ellipse;
     the membrane area against Steiner's (P t - pi t^2)/4.
-  quarter3D: only hexahedra, groups incl. symmetry planes, quarter volume
-    to 2e-3, nucleus fraction, boundary faces on their planes.
-Usage: testCellMesh.py axisymmetric|quarter3D"""
+  quarter3D (the blast's default sizes 0.7/0.7/0.5 um, 2 membrane layers,
+    and half of them) and full3D (0.8/0.8/0.6 um, 1 layer): only
+    hexahedra (and quadrilateral faces), the group names incl. symmetry
+    planes, the default's count in [1e4, 3e4], smallest scaled Jacobian
+    > 0.2, volume to 3.5e-3 decreasing by half with the sizes, nucleus
+    fraction to 0.5 %, membrane volume against the exact offset layer to
+    5e-3, outer nodes on the spheroid, boundary faces on their planes;
+    with the checker (2nd argument) the solid library reads each mesh
+    (readGmsh, Mesh::check, volume).
+Usage: testCellMesh.py axisymmetric|quarter3D|full3D [solidReadCheck]"""
 import os
 import subprocess
 import sys
@@ -27,6 +34,9 @@ root = os.path.abspath(os.path.join(os.path.dirname(__file__), "../.."))
 D, H, t, f = 16.8e-6, 7.9e-6, 200e-9, 1.0/3.0
 a = D/2
 failures = []
+# The solid library's reader check (tests/cellMesh/solidReadCheck.C), if
+# given as the second argument
+checker = sys.argv[2] if len(sys.argv) > 2 else None
 
 
 def check(ok, what):
@@ -132,52 +142,140 @@ def axisymmetric():
           f" {errors['fine']:.2e})")
 
 
-def hexVolume(x):
-    g = 1/np.sqrt(3)
-    s = np.array([[-1, -1, -1], [1, -1, -1], [1, 1, -1], [-1, 1, -1],
-                  [-1, -1, 1], [1, -1, 1], [1, 1, 1], [-1, 1, 1]])
-    V = 0.0
-    for q in s*g:
-        dN = np.empty((8, 3))
-        for i in range(8):
-            n = (1 + q*s[i])
-            dN[i] = [s[i][0]*n[1]*n[2], s[i][1]*n[0]*n[2],
-                     s[i][2]*n[0]*n[1]]
-        V += np.linalg.det(0.125*(x.T @ dN))
+# Corner neighbours of the gmsh hexahedron (positive triple product) and
+# the 2x2x2 Gauss points
+hexCorner = [(1, 3, 4), (2, 0, 5), (3, 1, 6), (0, 2, 7),
+             (7, 5, 0), (4, 6, 1), (5, 7, 2), (6, 4, 3)]
+hexSign = np.array([[-1, -1, -1], [1, -1, -1], [1, 1, -1], [-1, 1, -1],
+                    [-1, -1, 1], [1, -1, 1], [1, 1, 1], [-1, 1, 1]])
+
+
+def hexArrays(X, elems):
+    return np.array([[X[n] for n in e[3]] for e in elems])
+
+
+def scaledJacobian(x):
+    """Smallest corner Jacobian / product of the corner edge lengths, per
+    hexahedron (x: n x 8 x 3)"""
+    sj = np.full(len(x), np.inf)
+    for c, (i, j, k) in enumerate(hexCorner):
+        e = [x[:, m] - x[:, c] for m in (i, j, k)]
+        det = np.einsum("ni,ni->n", np.cross(e[0], e[1]), e[2])
+        sj = np.minimum(sj, det/np.prod([np.linalg.norm(v, axis=1)
+                                         for v in e], axis=0))
+    return sj
+
+
+def hexVolumes(x):
+    """Exact volumes of trilinear hexahedra (2x2x2 Gauss), x: n x 8 x 3"""
+    V = np.zeros(len(x))
+    for q in hexSign/np.sqrt(3):
+        n = 1 + q*hexSign                         # 8 x 3
+        dN = 0.125*hexSign*np.stack([n[:, 1]*n[:, 2], n[:, 0]*n[:, 2],
+                                     n[:, 0]*n[:, 1]], 1)
+        V += np.linalg.det(np.einsum("nai,aj->nij", x, dN))
     return V
 
 
-def quarter3D():
+def membraneVolume():
+    """Exact volume of the membrane: the semi-spheroid minus the solid of
+    revolution inside the inner parallel surface (pi int r^2 dz, 2e5
+    chords)"""
+    th = np.linspace(0, np.pi/2, 200001)
+    nr, nz = np.sin(th)/a, np.cos(th)/H
+    nn = np.hypot(nr, nz)
+    r = a*np.sin(th) - t*nr/nn
+    z = H*np.cos(th) - t*nz/nn
+    Vin = np.sum(np.pi/3*(r[1:]**2 + r[1:]*r[:-1] + r[:-1]**2)
+                 * (z[:-1] - z[1:]))
+    return 2.0/3.0*np.pi*a**2*H - Vin
+
+
+def solidCheck(case, kind, tol):
+    """The solid library reads the mesh (readGmsh + Mesh::check)"""
+    p = subprocess.run([checker, os.path.join(case, "constant/cell.msh"),
+                        kind, str(D), str(H), str(tol)],
+                       capture_output=True, text=True)
+    print("    " + p.stdout.strip().replace("\n", "\n    "))
+    check(p.returncode == 0, f"solid library reads the {kind} mesh")
+
+
+def cell3D(mode, sizes, maxCount=None):
+    """Structured hexahedral cell at the given sizes (nucleus, cytoplasm,
+    membrane [m], membrane layers); returns the volume errors"""
+    quarter = mode == "quarter3D"
+    share = 0.25 if quarter else 1.0
+    errors = []
     with tempfile.TemporaryDirectory() as tmp:
-        X, g = run(os.path.join(tmp, "q"), {
-            "mode": "quarter3D", "cellDiameter": D, "cellHeight": H,
-            "membraneThickness": 0.4e-6, "membraneLayers": 1,
-            "nucleusSize": 1.5e-6, "cytoplasmSize": 0.4e-6,
-            "membraneSize": 1.0e-6, "contactRadius": 0})
-    check(sorted(g) == sorted(["nucleus", "cytoplasm", "membrane",
-                               "fixedBottom", "outerSurface", "symmetryX",
-                               "symmetryY"]), f"groups {sorted(g)}")
-    types = {e[2] for r in ("nucleus", "cytoplasm", "membrane")
-             for e in g[r][1]}
-    check(types == {5}, f"region element types {types} (5 = hexahedron)")
-    ftypes = {e[2] for r in ("fixedBottom", "outerSurface", "symmetryX",
-                             "symmetryY") for e in g[r][1]}
-    check(ftypes == {3}, f"boundary face types {ftypes}")
-    V = {r: sum(hexVolume(np.array([X[n] for n in e[3]]))
-                for e in g[r][1]) for r in ("nucleus", "cytoplasm",
-                                            "membrane")}
-    check(min(V.values()) > 0, "all regions have positive volume")
-    tot = sum(V.values())
-    exact = 2.0/3.0*np.pi*a**2*H/4
-    e = abs(tot/exact - 1)
-    check(e < 2e-3, f"quarter volume error {e:.2e} (< 2e-3)")
-    frac = V["nucleus"]/tot
-    check(abs(frac/f - 1) < 1e-2, f"nucleus fraction {frac:.4f} (1 %)")
-    for name, k in (("fixedBottom", 2), ("symmetryX", 0), ("symmetryY", 1)):
-        c = max(abs(X[n][k]) for e in g[name][1] for n in e[3])
-        check(c < 1e-15, f"{name} on its plane (max |x_{k}| = {c:.1e} m)")
+        for hn, hc, hm, layers in sizes:
+            name = f"{mode} {hn*1e6:g}/{hc*1e6:g}/{hm*1e6:g} um, {layers}"
+            case = os.path.join(tmp, f"c{len(errors)}")
+            X, g = run(case, {
+                "mode": mode, "cellDiameter": D, "cellHeight": H,
+                "membraneThickness": t, "membraneLayers": layers,
+                "nucleusSize": hn, "cytoplasmSize": hc,
+                "membraneSize": hm, "contactRadius": 0})
+            bnd = ["fixedBottom", "outerSurface"] + \
+                (["symmetryX", "symmetryY"] if quarter else [])
+            check(sorted(g) == sorted(["nucleus", "cytoplasm", "membrane"]
+                                      + bnd), f"{name}: groups {sorted(g)}")
+            regions = ("nucleus", "cytoplasm", "membrane")
+            types = {e[2] for r in regions for e in g[r][1]}
+            check(types == {5}, f"{name}: element types {types}"
+                  " (5 = hexahedron)")
+            ftypes = {e[2] for r in bnd for e in g[r][1]}
+            check(ftypes == {3}, f"{name}: boundary face types {ftypes}")
+            x = {r: hexArrays(X, g[r][1]) for r in regions}
+            n = sum(len(v) for v in x.values())
+            if maxCount and not errors:
+                check(maxCount[0] <= n <= maxCount[1], f"{name}: {n}"
+                      f" hexahedra in [{maxCount[0]}, {maxCount[1]}]")
+            sj = min(scaledJacobian(v).min() for v in x.values())
+            check(sj > 0.2, f"{name}: {n} hexahedra, min scaled Jacobian"
+                  f" {sj:.3f} (> 0.2)")
+            V = {r: hexVolumes(v).sum() for r, v in x.items()}
+            tot = sum(V.values())
+            exact = share*2.0/3.0*np.pi*a**2*H
+            e = abs(tot/exact - 1)
+            check(e < 3.5e-3, f"{name}: volume error {e:.2e} (< 3.5e-3)")
+            frac = V["nucleus"]/tot
+            check(abs(frac/f - 1) < 5e-3, f"{name}: nucleus fraction"
+                  f" {frac:.5f} (1/3 within 0.5 %)")
+            eM = abs(V["membrane"]/(share*membraneVolume()) - 1)
+            check(eM < 5e-3, f"{name}: membrane volume error {eM:.2e}"
+                  " against the exact offset layer (< 5e-3)")
+            outer = np.array(sorted({n for e in g["outerSurface"][1]
+                                     for n in e[3]}))
+            P = np.array([X[k] for k in outer])
+            rr = np.hypot(P[:, 0], P[:, 1])
+            dev = np.max(np.abs((rr/a)**2 + (P[:, 2]/H)**2 - 1))
+            check(dev < 1e-9, f"{name}: outerSurface nodes on the spheroid"
+                  f" (max |(r/a)^2 + (z/H)^2 - 1| = {dev:.1e})")
+            for nm, k in (("fixedBottom", 2), ("symmetryX", 0),
+                          ("symmetryY", 1))[:3 if quarter else 1]:
+                c = max(abs(X[m][k]) for e in g[nm][1] for m in e[3])
+                check(c == 0, f"{name}: {nm} on its plane"
+                      f" (max |x_{k}| = {c:.1e} m)")
+            if checker:
+                solidCheck(case, "quarter" if quarter else "full", 3.5e-3)
+            errors.append(e)
+    return errors
 
 
-{"axisymmetric": axisymmetric, "quarter3D": quarter3D}[sys.argv[1]]()
+def quarter3D():
+    # The blast's default quarter (13,032 hexahedra) and a fine one
+    e = cell3D("quarter3D", [(0.7e-6, 0.7e-6, 0.5e-6, 2),
+                             (0.35e-6, 0.35e-6, 0.3e-6, 2)],
+               maxCount=(10000, 30000))
+    check(e[1] < 0.5*e[0], f"volume error decreases with refinement"
+          f" ({e[0]:.2e} -> {e[1]:.2e})")
+
+
+def full3D():
+    cell3D("full3D", [(0.8e-6, 0.8e-6, 0.6e-6, 1)])
+
+
+{"axisymmetric": axisymmetric, "quarter3D": quarter3D,
+ "full3D": full3D}[sys.argv[1]]()
 print(f"testCellMesh {sys.argv[1]}: {len(failures)} failed")
 sys.exit(1 if failures else 0)
