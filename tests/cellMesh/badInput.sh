@@ -27,6 +27,13 @@ membraneSize    0.8e-6;
 contactRadius   5e-6;
 contactSize     0.4e-6;
 contactDepth    1.5e-6;
+fluid
+{
+boxSize         100e-6;
+nearSize        2e-6;
+farSize         20e-6;
+growthDistance  30e-6;
+}
 DICT
     echo "previous mesh" > "$work/case/constant/cell.msh"
 }
@@ -64,7 +71,8 @@ expect() {
 # The good dictionary must mesh (else the cases below prove nothing)
 good
 if ! cellMesh -case "$work/case" > "$work/good.log" 2>&1 \
-    || [ "$(head -c 12 "$work/case/constant/cell.msh")" != '$MeshFormat' ]
+    || [ "$(head -c 12 "$work/case/constant/cell.msh")" != '$MeshFormat' ] \
+    || [ "$(head -c 12 "$work/case/constant/fluid.msh")" != '$MeshFormat' ]
 then
     echo "FAIL the valid dictionary does not mesh"; tail -20 "$work/good.log"
     exit 1
@@ -86,6 +94,11 @@ expect contactRadiusTooLarge 's/^contactRadius .*/contactRadius 9e-6;/' \
     "contactRadius = 9e-06 m is outside the valid range"
 expect unknownMode 's/^mode .*/mode wedge;/' "wedge" "axisymmetric" "full3D" "quarter3D"
 expect missingEntry '/^nucleusSize/d' "nucleusSize"
+expect boxSmallerThanCell 's/^boxSize .*/boxSize 10e-6;/' \
+    "boxSize = 1e-05 m is outside the valid range"
+expect farFinerThanNear 's/^farSize .*/farSize 1e-6;/' \
+    "farSize = 1e-06 m is outside the valid range \[2e-06"
+expect missingNearSize '/^nearSize/d' "nearSize"
 
 echo "badInput: $((n - failures)) passed, $failures failed"
 [ $failures -eq 0 ]

@@ -52,6 +52,10 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     const dictionary dict(is);
 
     mode_ = meshModeNames.get("mode", dict);
+    if (dict.isDict("fluid"))
+    {
+        fluidDict_ = dict.subDict("fluid");
+    }
 
     // Upper bound 1 mm: a larger cell is a length given in um, not m
     const scalar maxLength = 1e-3;

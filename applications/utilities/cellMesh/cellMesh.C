@@ -8,8 +8,10 @@ Description
     system/cellMeshDict and writes constant/cell.msh (gmsh 4.1, metres):
     an axisymmetric r-z section of quadrilaterals or a 3D (full or quarter)
     cell of hexahedra, with the physical groups read by the solid library
-    (readGmsh). Prints a quality report. Any invalid entry is a FatalIOError
-    naming the entry, and nothing is written.
+    (readGmsh). With the subdictionary fluid it also writes the water box
+    around the cell, constant/fluid.msh (gmsh 2.2 for gmshToFoam; a wedge
+    in the axisymmetric mode). Prints a quality report. Any invalid entry
+    is a FatalIOError naming the entry, and nothing is written.
 
     Dictionary entries, geometry and groups: docs/userGuide/cellMesh.md,
     cellGeometry.H and cellMesher.H.
@@ -22,6 +24,8 @@ Usage
 #include "argList.H"
 #include "cellGeometry.H"
 #include "cellMesher.H"
+#include "fluidBox.H"
+#include <memory>
 #include "sigFpe.H"
 #include <gmsh.h>
 
@@ -44,6 +48,12 @@ int main(int argc, char *argv[])
         args.getOrDefault<fileName>("dict", args.path()/"system/cellMeshDict")
     );
     const cellGeometry geom(dictFile);
+    // Validated before anything is meshed
+    std::unique_ptr<fluidBox> fluid;
+    if (!geom.fluidDict().empty())
+    {
+        fluid.reset(new fluidBox(geom));
+    }
 
     Info<< "Cell: diameter " << 2*geom.a() << " m, height " << geom.H()
         << " m, mode " << cellGeometry::meshModeNames[geom.mode()] << nl
@@ -60,6 +70,11 @@ int main(int argc, char *argv[])
         cellMesher mesher(geom);
         mesher.generate();
         mesher.write(args.path()/"constant/cell.msh");
+        if (fluid)
+        {
+            fluid->generate();
+            fluid->write(args.path()/"constant/fluid.msh");
+        }
     }
     catch (const std::exception& e)
     {

@@ -1,0 +1,400 @@
+#include "fluidBox.H"
+#include "mathematicalConstants.H"
+#include "OSspecific.H"
+#include "vector.H"
+#include <gmsh.h>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+using Foam::constant::mathematical::pi;
+
+Foam::fluidBox::fluidBox(const cellGeometry& geom)
+:
+    g_(geom)
+{
+    const dictionary& d = g_.fluidDict();
+    L_ = cellGeometry::readInRange
+    (
+        d, "boxSize", "m", max(2*g_.a(), g_.H()), 1e-2, false, true, 1e-4
+    );
+    nearSize_ = cellGeometry::readInRange(d, "nearSize", "m", 0, g_.H(), false);
+    farSize_ = cellGeometry::readInRange
+    (
+        d, "farSize", "m", nearSize_, 0.25*L_, true
+    );
+    growth_ = cellGeometry::readInRange(d, "growthDistance", "m", 0, L_, false);
+    wedge_ = cellGeometry::readInRange
+    (
+        d, "wedgeAngle", "deg", 0, 10, false, true, 5
+    )*pi/180;
+}
+
+
+void Foam::fluidBox::sizeField() const
+{
+    namespace field = gmsh::model::mesh::field;
+    // Distance from the spheroid through its level function
+    // (sqrt((r/a)^2 + (z/H)^2) - 1) min(a, H): exact on the axes, smaller
+    // elsewhere (finer, never coarser)
+    const scalar a = g_.a()/unit_, H = g_.H()/unit_;
+    std::ostringstream os;
+    os.precision(17);
+    os  << nearSize_/unit_ << " + " << (farSize_ - nearSize_)/unit_
+        << "*min(1, max(0, (sqrt((x*x + y*y)/" << a*a << " + z*z/" << H*H
+        << ") - 1)*" << min(a, H) << "/" << growth_/unit_ << "))";
+    const int f = field::add("MathEval");
+    field::setString(f, "F", os.str());
+    field::setAsBackgroundMesh(f);
+    gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+    gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+    gmsh::option::setNumber("Mesh.RecombineAll", 0);
+    gmsh::option::setNumber("Mesh.SubdivisionAlgorithm", 0);
+}
+
+
+void Foam::fluidBox::addGroup
+(
+    int dim,
+    const std::vector<int>& tags,
+    const std::string& name
+) const
+{
+    if (tags.empty())
+    {
+        FatalErrorInFunction
+            << "Fluid patch " << name << " is empty" << exit(FatalError);
+    }
+    const int g = gmsh::model::addPhysicalGroup(dim, tags);
+    gmsh::model::setPhysicalName(dim, g, name);
+}
+
+
+void Foam::fluidBox::box3D()
+{
+    namespace occ = gmsh::model::occ;
+    const bool quarter = g_.mode() == cellGeometry::meshMode::quarter3D;
+    const scalar L = L_/unit_, x0 = quarter ? 0 : -0.5*L;
+    const int box = occ::addBox(x0, x0, 0, 0.5*L - x0, 0.5*L - x0, L);
+    const int cell = occ::addSphere(0, 0, 0, 1);
+    occ::dilate({{3, cell}}, 0, 0, 0, g_.a()/unit_, g_.a()/unit_, g_.H()/unit_);
+    gmsh::vectorpair out;
+    std::vector<gmsh::vectorpair> map;
+    occ::cut({{3, box}}, {{3, cell}}, out, map);
+    occ::synchronize();
+    if (out.size() != 1 || out[0].first != 3)
+    {
+        FatalErrorInFunction
+            << "The box minus the cell is not one volume" << exit(FatalError);
+    }
+    addGroup(3, {out[0].second}, "water");
+
+    gmsh::vectorpair bnd;
+    gmsh::model::getBoundary(out, bnd, true, false, false);
+    const scalar tol = 1e-6*L;
+    std::map<std::string, std::vector<int>> patches;
+    for (const auto& dt : bnd)
+    {
+        const int s = std::abs(dt.second);
+        double xa, ya, za, xb, yb, zb;
+        gmsh::model::getBoundingBox(2, s, xa, ya, za, xb, yb, zb);
+        const auto on = [&](double lo, double hi, double v)
+        {
+            return std::abs(lo - v) < tol && std::abs(hi - v) < tol;
+        };
+        const char* name =
+            on(za, zb, L) ? "top"
+          : on(za, zb, 0) ? "bottom"
+          : on(xa, xb, 0.5*L) || on(ya, yb, 0.5*L)
+         || on(xa, xb, -0.5*L) || on(ya, yb, -0.5*L) ? "sides"
+          : on(xa, xb, 0) ? "symmetryX"
+          : on(ya, yb, 0) ? "symmetryY"
+          : "cellInterface";
+        patches[name].push_back(s);
+    }
+    for (const auto& p : patches) addGroup(2, p.second, p.first);
+    if (patches.size() != (quarter ? 6u : 4u))
+    {
+        FatalErrorInFunction
+            << "The fluid box has " << patches.size() << " kinds of boundary "
+            << "surfaces, expected " << (quarter ? 6 : 4) << exit(FatalError);
+    }
+    sizeField();
+    gmsh::option::setNumber("Mesh.Algorithm", 6);
+    gmsh::option::setNumber("Mesh.Algorithm3D", 1);
+    gmsh::model::mesh::generate(3);
+}
+
+
+void Foam::fluidBox::wedge()
+{
+    // Structured r-z section on rays from the origin (angle th from the z
+    // axis): from the cell surface rho_e(th) to the box rho_b(th), the
+    // box corner ray a grid line; radial node spacing from nearSize
+    // growing to farSize (sizes of the longest ray, scaled on each ray)
+    const scalar L = L_/unit_, a = g_.a()/unit_, H = g_.H()/unit_;
+    const scalar hn = nearSize_/unit_, hf = farSize_/unit_;
+    const scalar grow = growth_/unit_;
+    const scalar thc = std::atan2(0.5*L, L);
+    const auto rhoE = [&](scalar th)
+    {
+        return 1/std::sqrt(sqr(std::sin(th)/a) + sqr(std::cos(th)/H));
+    };
+    const auto rhoB = [&](scalar th)
+    {
+        return th <= thc ? L/std::cos(th) : 0.5*L/std::sin(th);
+    };
+    // Angles: nearSize along the cell surface, at most farSize at the box
+    const label nTh = max
+    (
+        label(std::ceil(g_.arcLength(0, 0.5*pi, false)/unit_/hn)),
+        label(std::ceil(0.5*pi*rhoB(thc)/hf))
+    );
+    const label n1 = max(label(1), label(std::round(nTh*thc/(0.5*pi))));
+    const label n2 = max(label(1), nTh - n1);
+    std::vector<scalar> th;
+    for (label i = 0; i <= n1; ++i) th.push_back(thc*i/n1);
+    for (label i = 1; i <= n2; ++i) th.push_back(thc + (0.5*pi - thc)*i/n2);
+    scalar Dmax = 0;
+    for (const scalar t : th) Dmax = max(Dmax, rhoB(t) - rhoE(t));
+    std::vector<scalar> f{0};
+    while (f.back() < Dmax)
+    {
+        f.push_back(f.back() + hn + (hf - hn)*min(1.0, f.back()/grow));
+    }
+    if (f.size() > 2 && f.back() - Dmax > 0.5*(f.back() - f[f.size() - 2]))
+    {
+        f.pop_back();
+    }
+    const label N = label(f.size()) - 1;
+    const scalar fN = f.back();
+    for (scalar& x : f) x /= fN;
+
+    // Nodes: one on the axis, else two at -+ wedge/2
+    const label nI = label(th.size());
+    const scalar c = std::cos(0.5*wedge_), s = std::sin(0.5*wedge_);
+    std::vector<std::size_t> minus(nI*(N + 1)), plus(nI*(N + 1));
+    std::vector<double> xyz;
+    std::size_t next = 0;
+    for (label i = 0; i < nI; ++i)
+    for (label k = 0; k <= N; ++k)
+    {
+        const scalar re = rhoE(th[i]);
+        const scalar rho = re + f[k]*(rhoB(th[i]) - re);
+        const scalar r = i == 0 ? 0 : rho*std::sin(th[i]);
+        const scalar z = i == nI - 1 ? 0 : rho*std::cos(th[i]);
+        const label n = i*(N + 1) + k;
+        minus[n] = ++next;
+        xyz.insert(xyz.end(), {r*c, -r*s, z});
+        if (i == 0)
+        {
+            plus[n] = minus[n];
+        }
+        else
+        {
+            plus[n] = ++next;
+            xyz.insert(xyz.end(), {r*c, r*s, z});
+        }
+    }
+    const auto id = [&](label i, label k) { return i*(N + 1) + k; };
+
+    gmsh::model::addDiscreteEntity(3, 1);
+    std::vector<std::size_t> tags(next);
+    for (std::size_t n = 0; n < next; ++n) tags[n] = n + 1;
+    gmsh::model::mesh::addNodes(3, 1, tags, xyz);
+    const auto X = [&](std::size_t n)
+    {
+        return vector(xyz[3*n - 3], xyz[3*n - 2], xyz[3*n - 1]);
+    };
+
+    // Cells: hexahedra, prisms on the axis (quads with an axis edge); the
+    // gmsh orientation is checked on the first cell of each kind (all
+    // cells of a kind have the same handedness in a structured grid)
+    std::vector<std::size_t> hexNodes, prismNodes;
+    for (label i = 0; i + 1 < nI; ++i)
+    for (label k = 0; k < N; ++k)
+    {
+        const label q[4] = {id(i, k), id(i + 1, k), id(i + 1, k + 1),
+                            id(i, k + 1)};
+        if (i == 0)
+        {
+            prismNodes.insert
+            (
+                prismNodes.end(),
+                {minus[q[0]], minus[q[1]], plus[q[1]],
+                 minus[q[3]], minus[q[2]], plus[q[2]]}
+            );
+        }
+        else
+        {
+            hexNodes.insert
+            (
+                hexNodes.end(),
+                {minus[q[0]], minus[q[1]], minus[q[2]], minus[q[3]],
+                 plus[q[0]], plus[q[1]], plus[q[2]], plus[q[3]]}
+            );
+        }
+    }
+    const auto flipIfNegative =
+        [&](std::vector<std::size_t>& nodes, int nen, const int (&perm)[8],
+            const std::vector<int>& a0, const std::vector<int>& a1,
+            const std::vector<int>& a2, int origin)
+    {
+        const std::size_t* e = nodes.data();
+        const vector o = X(e[origin]);
+        const auto mean = [&](const std::vector<int>& idx)
+        {
+            vector m(Zero);
+            for (const int k : idx) m += X(e[k]);
+            return m/scalar(idx.size()) - o;
+        };
+        if (((mean(a0) ^ mean(a1)) & mean(a2)) < 0)
+        {
+            for (std::size_t b = 0; b < nodes.size(); b += nen)
+            {
+                std::vector<std::size_t> old(&nodes[b], &nodes[b] + nen);
+                for (int k = 0; k < nen; ++k) nodes[b + k] = old[perm[k]];
+            }
+        }
+    };
+    flipIfNegative(hexNodes, 8, {4, 5, 6, 7, 0, 1, 2, 3}, {1}, {3}, {4}, 0);
+    flipIfNegative(prismNodes, 6, {0, 2, 1, 3, 5, 4, 0, 0}, {1}, {2}, {3}, 0);
+    std::size_t eTag = 0;
+    const auto add = [&](int dim, int ent, int type,
+                         const std::vector<std::size_t>& nodes, int nen)
+    {
+        if (nodes.empty()) return;
+        std::vector<std::size_t> et(nodes.size()/nen);
+        for (auto& t : et) t = ++eTag;
+        gmsh::model::mesh::addElementsByType(ent, type, et, nodes);
+    };
+    add(3, 1, 5, hexNodes, 8);
+    add(3, 1, 6, prismNodes, 6);
+    addGroup(3, {1}, "water");
+
+    // Boundary faces: a 2D boundary edge becomes a quadrilateral, or a
+    // triangle if one end is on the axis
+    std::map<std::string, std::pair<std::vector<std::size_t>,
+        std::vector<std::size_t>>> faces;
+    const auto edge = [&](const std::string& name, label p, label q)
+    {
+        auto& fq = faces[name];
+        if (plus[p] == minus[p])
+        {
+            fq.second.insert(fq.second.end(), {minus[p], minus[q], plus[q]});
+        }
+        else
+        {
+            fq.first.insert
+            (
+                fq.first.end(), {minus[p], minus[q], plus[q], plus[p]}
+            );
+        }
+    };
+    for (label i = 0; i + 1 < nI; ++i)
+    {
+        edge("cellInterface", id(i, 0), id(i + 1, 0));
+        edge(i < n1 ? "top" : "sides", id(i, N), id(i + 1, N));
+    }
+    for (label k = 0; k < N; ++k)
+    {
+        edge("bottom", id(nI - 1, k), id(nI - 1, k + 1));
+    }
+    for (label i = 0; i + 1 < nI; ++i)
+    for (label k = 0; k < N; ++k)
+    {
+        const label q[4] = {id(i, k), id(i + 1, k), id(i + 1, k + 1),
+                            id(i, k + 1)};
+        for (const bool front : {false, true})
+        {
+            auto& fq = faces[front ? "front" : "back"].first;
+            for (const label n : q) fq.push_back(front ? plus[n] : minus[n]);
+        }
+    }
+    int surface = 0;
+    for (const auto& kv : faces)
+    {
+        gmsh::model::addDiscreteEntity(2, ++surface);
+        add(2, surface, 3, kv.second.first, 4);
+        add(2, surface, 2, kv.second.second, 3);
+        addGroup(2, {surface}, kv.first);
+    }
+}
+
+
+void Foam::fluidBox::generate()
+{
+    gmsh::model::add("fluid");
+    if (g_.axisymmetric())
+    {
+        wedge();
+    }
+    else
+    {
+        box3D();
+    }
+
+    // Element counts by type in the water and by patch
+    const std::map<int, std::string> typeNames
+    {
+        {4, "tetrahedra"}, {5, "hexahedra"}, {6, "prisms"}, {7, "pyramids"},
+        {2, "triangles"}, {3, "quadrilaterals"}
+    };
+    gmsh::vectorpair groups;
+    gmsh::model::getPhysicalGroups(groups);
+    Info<< "Fluid box: side " << L_ << " m, element size " << nearSize_
+        << " m at the cell to " << farSize_ << " m at " << growth_
+        << " m from it";
+    if (g_.axisymmetric())
+    {
+        Info<< ", wedge " << wedge_*180/pi << " deg";
+    }
+    Info<< nl;
+    for (const auto& g : groups)
+    {
+        std::string name;
+        gmsh::model::getPhysicalName(g.first, g.second, name);
+        std::vector<int> ents;
+        gmsh::model::getEntitiesForPhysicalGroup(g.first, g.second, ents);
+        std::map<int, std::size_t> count;
+        for (const int e : ents)
+        {
+            std::vector<int> types;
+            std::vector<std::vector<std::size_t>> et, nt;
+            gmsh::model::mesh::getElements(types, et, nt, g.first, e);
+            for (std::size_t t = 0; t < types.size(); ++t)
+            {
+                count[types[t]] += et[t].size();
+            }
+        }
+        Info<< "    " << name.c_str() << ":";
+        for (const auto& c : count)
+        {
+            const auto it = typeNames.find(c.first);
+            Info<< " " << label(c.second) << " "
+                << (it == typeNames.end() ? "other" : it->second.c_str());
+        }
+        Info<< nl;
+    }
+    Info<< endl;
+}
+
+
+void Foam::fluidBox::write(const fileName& file) const
+{
+    mkDir(file.path());
+    const fileName tmp(file.path()/"." + file.nameLessExt() + "-tmp.msh");
+    gmsh::option::setNumber("Mesh.MshFileVersion", 2.2);
+    gmsh::option::setNumber("Mesh.Binary", 0);
+    gmsh::option::setNumber("Mesh.SaveAll", 0);
+    gmsh::option::setNumber("Mesh.ScalingFactor", unit_);
+    gmsh::write(tmp);
+    if (!Foam::mv(tmp, file))
+    {
+        FatalErrorInFunction
+            << "Cannot move " << tmp << " to " << file << exit(FatalError);
+    }
+    Info<< "Written " << file << " (gmsh 2.2 for gmshToFoam, coordinates in m)"
+        << endl;
+}

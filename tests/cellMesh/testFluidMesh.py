@@ -1,0 +1,168 @@
+#!/usr/bin/python3
+"""The water box of cellMesh (constant/fluid.msh) for the paper's average
+cell in a 100 um cube, in the three modes (axisymmetric: the one-cell-thick
+wedge; quarter3D; full3D), checked
+  - with an independent reader of the gmsh 2.2 file: the patch names,
+    the cell types (wedge: hexahedra + prisms on the axis; 3D:
+    tetrahedra), finer near the cell (mean edge of the cellInterface faces
+    within [0.6, 1.6] nearSize, of the top faces within [0.5, 1.5]
+    farSize);
+  - by OpenFOAM: gmshToFoam (no defaultFaces patch: every boundary face is
+    in a named patch), front/back set to wedge, checkMesh exits 0 with
+    "Mesh OK." and its total volume is the box minus the cell (wedge: sin
+    of the angle times the section's int r dr dz) within 2 % of the
+    cell's share (the cell surface is polygonal).
+Usage: testFluidMesh.py axisymmetric|quarter3D|full3D"""
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+root = os.path.abspath(os.path.join(os.path.dirname(__file__), "../.."))
+D, H, t = 16.8e-6, 7.9e-6, 200e-9
+a = D/2
+L, near, far, growth, wedgeDeg = 100e-6, 1e-6, 10e-6, 30e-6, 5.0
+failures = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        failures.append(what)
+
+
+def sh(cmd, case):
+    return subprocess.run(["bash", "-c", f". {root}/etc/bashrc && cd {case}"
+                           f" && {cmd}"], capture_output=True, text=True)
+
+
+def read2(path):
+    """gmsh 2.2 ASCII: nodes, and elements (type, physical name, nodes)"""
+    with open(path) as f:
+        lines = f.read().split("\n")
+    i = 0
+    names, X, elems = {}, {}, []
+    while i < len(lines):
+        if lines[i] == "$PhysicalNames":
+            n = int(lines[i + 1])
+            for l in lines[i + 2:i + 2 + n]:
+                d, tag, name = l.split(maxsplit=2)
+                names[int(tag), int(d)] = name.strip('"')
+        elif lines[i] == "$Nodes":
+            n = int(lines[i + 1])
+            for l in lines[i + 2:i + 2 + n]:
+                v = l.split()
+                X[int(v[0])] = np.array([float(x) for x in v[1:4]])
+        elif lines[i] == "$Elements":
+            n = int(lines[i + 1])
+            for l in lines[i + 2:i + 2 + n]:
+                v = [int(x) for x in l.split()]
+                typ, ntags = v[1], v[2]
+                dim = {2: 2, 3: 2, 4: 3, 5: 3, 6: 3, 7: 3}[typ]
+                elems.append((typ, names[v[3], dim], v[3 + ntags:]))
+        i += 1
+    return X, elems
+
+
+def meanEdge(X, elems, patch):
+    lengths = []
+    for typ, name, nodes in elems:
+        if name == patch:
+            for k in range(len(nodes)):
+                p, q = X[nodes[k]], X[nodes[k - 1]]
+                # not the edges across a wedge (y of opposite signs)
+                if p[1]*q[1] >= 0:
+                    lengths.append(np.linalg.norm(p - q))
+    return np.mean(lengths)
+
+
+def main(mode):
+    patches = {"axisymmetric": ["top", "bottom", "sides", "cellInterface",
+                                "front", "back"],
+               "quarter3D": ["top", "bottom", "sides", "cellInterface",
+                             "symmetryX", "symmetryY"],
+               "full3D": ["top", "bottom", "sides", "cellInterface"]}[mode]
+    with tempfile.TemporaryDirectory() as case:
+        os.makedirs(os.path.join(case, "system"))
+        with open(os.path.join(case, "system/cellMeshDict"), "w") as d:
+            d.write(f"""FoamFile {{ version 2.0; format ascii;
+    class dictionary; object cellMeshDict; }}
+mode {mode}; cellDiameter {D}; cellHeight {H}; membraneThickness {t};
+membraneLayers 1; nucleusSize 0.8e-6; cytoplasmSize 0.8e-6;
+membraneSize 0.6e-6; contactRadius 0;
+fluid {{ boxSize {L}; nearSize {near}; farSize {far};
+    growthDistance {growth}; wedgeAngle {wedgeDeg}; }}
+""")
+        for name, text in (
+            ("controlDict", "application none; startFrom startTime;"
+             " startTime 0; stopAt endTime; endTime 1; deltaT 1;"
+             " writeControl timeStep; writeInterval 1;"),
+            ("fvSchemes", "ddtSchemes {} gradSchemes {} divSchemes {}"
+             " laplacianSchemes {} interpolationSchemes {}"
+             " snGradSchemes {}"),
+                ("fvSolution", "")):
+            with open(os.path.join(case, "system", name), "w") as f:
+                f.write("FoamFile { version 2.0; format ascii; class"
+                        f" dictionary; object {name}; }}\n{text}\n")
+        p = sh("cellMesh", case)
+        if p.returncode != 0:
+            print(p.stdout[-3000:], p.stderr[-3000:])
+            sys.exit("cellMesh failed")
+
+        X, elems = read2(os.path.join(case, "constant/fluid.msh"))
+        names = {e[1] for e in elems}
+        check(names == set(patches + ["water"]),
+              f"{mode}: groups {sorted(names)}")
+        cells = {}
+        for typ, name, nodes in elems:
+            if name == "water":
+                cells[typ] = cells.get(typ, 0) + 1
+        want = {5, 6} if mode == "axisymmetric" else {4}
+        check(set(cells) == want, f"{mode}: cell types {cells}"
+              " (4 tet, 5 hex, 6 prism)")
+        hi = meanEdge(X, elems, "cellInterface")
+        ho = meanEdge(X, elems, "top")
+        check(0.6*near <= hi <= 1.6*near and 0.5*far <= ho <= 1.5*far,
+              f"{mode}: mean edge {hi*1e6:.2f} um on cellInterface"
+              f" (nearSize {near*1e6:g}), {ho*1e6:.2f} um on top"
+              f" (farSize {far*1e6:g})")
+
+        p = sh("gmshToFoam constant/fluid.msh", case)
+        check(p.returncode == 0, f"{mode}: gmshToFoam")
+        boundary = open(os.path.join(case,
+                                     "constant/polyMesh/boundary")).read()
+        found = [p for p in re.findall(r"^\s*(\w+)\s*\n\s*\{", boundary,
+                                       re.M) if p != "FoamFile"]
+        check(sorted(found) == sorted(patches),
+              f"{mode}: OpenFOAM patches {sorted(found)}")
+        if mode == "axisymmetric":
+            for w in ("front", "back"):
+                sh(f"foamDictionary -entry entry0/{w}/type -set wedge"
+                   " constant/polyMesh/boundary", case)
+        p = sh("checkMesh", case)
+        check(p.returncode == 0 and "\nMesh OK." in p.stdout,
+              f"{mode}: checkMesh exit {p.returncode}, "
+              + ("Mesh OK" if "Mesh OK." in p.stdout else "FAILED"))
+        if p.returncode != 0 or "Mesh OK." not in p.stdout:
+            print(p.stdout[-2500:])
+        ncells = int(re.search(r"cells:\s+(\d+)", p.stdout).group(1))
+        V = float(re.search(r"Total volume = ([-+.eE\d]+)\.",
+                            p.stdout).group(1))
+        Vcell = 2.0/3.0*np.pi*a**2*H
+        if mode == "axisymmetric":
+            s = np.sin(np.radians(wedgeDeg))
+            exact, share = s*(L**3/8 - a**2*H/3), s*a**2*H/3
+        else:
+            q = 0.25 if mode == "quarter3D" else 1.0
+            exact, share = q*(L**3 - Vcell), q*Vcell
+        e = (V - exact)/share
+        check(abs(e) < 0.02, f"{mode}: {ncells} cells, volume {V:.6e} m^3,"
+              f" exact {exact:.6e}, error {e:.2e} of the cell's share")
+
+
+main(sys.argv[1])
+print(f"testFluidMesh {sys.argv[1]}: {len(failures)} failed")
+sys.exit(1 if failures else 0)
