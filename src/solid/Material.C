@@ -243,13 +243,13 @@ std::vector<solid::MaterialParameters> solid::paperParameterSet
     const std::string& reading
 )
 {
-    if (reading != "table" && reading != "text")
+    if (reading != "table" && reading != "text" && reading != "instantaneous")
     {
         throw SolidError
         (
             SolidError::Kind::parameter,
             "paperParameterSet: unknown reading '" + reading
-          + "'; valid: table text"
+          + "'; valid: table text instantaneous"
         );
     }
     MaterialParameters mem, cyto, nuc;
@@ -262,5 +262,15 @@ std::vector<solid::MaterialParameters> solid::paperParameterSet
     nuc.name = "nucleus";
     nuc.c0 = reading == "table" ? 13.33 : 6.67;
     nuc.branches = {{862.22, 0.5}};
+    if (reading == "instantaneous")
+    {
+        for (MaterialParameters* m : {&mem, &cyto, &nuc})
+        {
+            const double G0 = 2*m->c0;
+            const double g1 = m->branches[0].mu/(G0 + m->branches[0].mu);
+            m->c0 *= 1 - g1;
+            m->branches[0].mu = G0*g1;
+        }
+    }
     return {mem, cyto, nuc};
 }

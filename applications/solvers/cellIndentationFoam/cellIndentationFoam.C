@@ -17,7 +17,7 @@ Description
         constant/cell.msh           gmsh mesh in metres (cellMesh)
         constant/solidProperties    one sub-dictionary per region with the
                                     entries of MaterialParameters, or
-                                    parameterSet table|text (paper sets)
+                                    parameterSet table|text|instantaneous
         constant/indenterProperties sphere, contact, stepping, protocol
         system/controlDict          fieldWriteInterval [s] of the field output
 
@@ -49,6 +49,8 @@ Usage
 
 
 #include <chrono>
+#include <ctime>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -73,16 +75,23 @@ int main(int argc, char *argv[])
     #include "createModel.H"
     #include "createIndenter.H"
 
+    // Wall and CPU time: on a shared machine the CPU time of this process
+    // is the one-core cost
     const auto wall0 = std::chrono::steady_clock::now();
+    const std::clock_t cpu0 = std::clock();
     #include "runProtocol.H"
     const double wall = std::chrono::duration<double>
     (
         std::chrono::steady_clock::now() - wall0
     ).count();
+    const double cpu = double(std::clock() - cpu0)/CLOCKS_PER_SEC;
 
     Info<< nl << "Protocol done: " << nSteps << " steps, " << nIterations
         << " Newton iterations, " << nAugmentations << " augmentations, "
-        << nCuts << " step cuts, wall time " << wall << " s" << nl
+        << nCuts << " step cuts, wall time " << wall << " s, CPU time "
+        << cpu << " s (assembly "
+        << assemblySeconds << " s, factorise + solve " << solveSeconds
+        << " s)" << nl
         << "End" << nl << endl;
 
     return 0;
