@@ -19,7 +19,11 @@ independent reader of the .msh file:
     5e-3, outer nodes on the spheroid, boundary faces on their planes;
     with the checker (2nd argument) the solid library reads each mesh
     (readGmsh, Mesh::check, volume).
-Usage: testCellMesh.py axisymmetric|quarter3D|full3D [solidReadCheck]"""
+  shapes3D: the same checks on quarters of a flat cell (D 20 um, H 4 um),
+    a tall one (10 um, 8 um) and a 400 nm membrane with a coarse nucleus
+    (1.5 um) in a fine cytoplasm (0.6 um).
+Usage: testCellMesh.py axisymmetric|quarter3D|full3D|shapes3D
+    [solidReadCheck]"""
 import os
 import subprocess
 import sys
@@ -271,11 +275,24 @@ def quarter3D():
           f" ({e[0]:.2e} -> {e[1]:.2e})")
 
 
+def shapes3D():
+    """Other cells (flat, tall, thick membrane with a coarse nucleus):
+    the same checks on quarters"""
+    global D, H, t, a
+    for D, H, t, sizes in (
+            (20e-6, 4e-6, 200e-9, (0.5e-6, 0.5e-6, 0.5e-6, 2)),
+            (10e-6, 8e-6, 200e-9, (0.4e-6, 0.4e-6, 0.4e-6, 2)),
+            (16.8e-6, 7.9e-6, 400e-9, (1.5e-6, 0.6e-6, 1.0e-6, 1))):
+        a = D/2
+        print(f"cell D = {D*1e6:g} um, H = {H*1e6:g} um, t = {t*1e9:g} nm")
+        cell3D("quarter3D", [sizes])
+
+
 def full3D():
     cell3D("full3D", [(0.8e-6, 0.8e-6, 0.6e-6, 1)])
 
 
 {"axisymmetric": axisymmetric, "quarter3D": quarter3D,
- "full3D": full3D}[sys.argv[1]]()
+ "full3D": full3D, "shapes3D": shapes3D}[sys.argv[1]]()
 print(f"testCellMesh {sys.argv[1]}: {len(failures)} failed")
 sys.exit(1 if failures else 0)

@@ -507,23 +507,44 @@ Foam::structuredCell::structuredCell(const cellGeometry& geom)
     for (label i = nM - 1; i >= 0; --i) Gamma.push_back(In[i]);
 
     // Nucleus curve Lambda (P1 -> J1 -> J2 -> P2) with T elements: node i
-    // at the polar angle about (0, z_n) of Gamma(i), rescaled from Gamma's
-    // angle range to Lambda's, so that the cytoplasm node lines run about
-    // radially; J1 and J2 are the nodes closest to them (symmetric counts:
-    // the core rectangle), each piece then remapped to end exactly there
-    const auto polar = [&](const vec2& p)
-    {
-        return std::atan2(p[0], zn - p[1]);
-    };
-    const scalar aG0 = polar(Gamma.front()), aG1 = polar(Gamma.back());
-    const scalar aL0 = polar(nucleusPoint(psi1));
-    const scalar aL1 = polar(nucleusPoint(pi - psi1));
+    // at the nucleus point closest to Gamma(i), so that the cytoplasm node
+    // lines leave the nucleus along its normals (the closest-point map of
+    // the convex nucleus is monotone along Gamma); J1 and J2 are the nodes
+    // closest to the design points (symmetric counts: the core
+    // rectangle), each piece then remapped to end exactly there
     std::vector<scalar> psiStar(T + 1);
     for (label i = 0; i <= T; ++i)
     {
-        const scalar al =
-            aL0 + (polar(Gamma[i]) - aG0)*(aL1 - aL0)/(aG1 - aG0);
-        psiStar[i] = std::atan2(cn*std::sin(al), an*std::cos(al));
+        // Closest point of the nucleus to Gamma(i) (normal lines)
+        const vec2& g = Gamma[i];
+        const auto d2 = [&](scalar p)
+        {
+            const vec2 x = nucleusPoint(p);
+            return sqr(x[0] - g[0]) + sqr(x[1] - g[1]);
+        };
+        scalar best = 0;
+        for (int k = 0; k <= 4000; ++k)
+        {
+            const scalar p = pi*k/4000;
+            if (d2(p) < d2(best)) best = p;
+        }
+        scalar lo = best - pi/4000, hi = best + pi/4000;
+        for (int it = 0; it < 60; ++it)
+        {
+            const scalar m1 = lo + (hi - lo)/3, m2 = hi - (hi - lo)/3;
+            if (d2(m1) < d2(m2)) hi = m2; else lo = m1;
+        }
+        psiStar[i] = 0.5*(lo + hi);
+    }
+    // The ends Gamma(0) = P0, Gamma(T) = P3 (below and above the lens
+    // corners) project beyond P1, P2: rescale affinely onto [psi1,
+    // pi - psi1]
+    {
+        const scalar p0 = psiStar[0], p1 = psiStar[T];
+        for (scalar& p : psiStar)
+        {
+            p = psi1 + (p - p0)*(pi - 2*psi1)/(p1 - p0);
+        }
     }
     psiStar[0] = psi1;
     psiStar[T] = pi - psi1;
