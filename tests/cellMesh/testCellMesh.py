@@ -22,7 +22,9 @@ independent reader of the .msh file:
   shapes3D: the same checks on quarters of a flat cell (D 20 um, H 4 um),
     a tall one (10 um, 8 um) and a 400 nm membrane with a coarse nucleus
     (1.5 um) in a fine cytoplasm (0.6 um).
-Usage: testCellMesh.py axisymmetric|quarter3D|full3D|shapes3D
+  docExample: the dictionary printed in docs/userGuide/cellMesh.md
+    meshes (axisymmetric and quarter3D, with the water box).
+Usage: testCellMesh.py axisymmetric|quarter3D|full3D|shapes3D|docExample
     [solidReadCheck]"""
 import os
 import subprocess
@@ -288,11 +290,36 @@ def shapes3D():
         cell3D("quarter3D", [sizes])
 
 
+def docExample():
+    """The dictionary of docs/userGuide/cellMesh.md (as printed, and with
+    mode quarter3D) meshes the cell and the water box"""
+    text = open(os.path.join(root, "docs/userGuide/cellMesh.md")).read()
+    block = text.split("## Dictionary")[1].split("```")[1]
+    for mode in ("axisymmetric", "quarter3D"):
+        with tempfile.TemporaryDirectory() as case:
+            os.makedirs(os.path.join(case, "system"))
+            with open(os.path.join(case, "system/cellMeshDict"), "w") as d:
+                d.write("FoamFile { version 2.0; format ascii; class"
+                        " dictionary; object cellMeshDict; }\n")
+                d.write(block.replace("mode                  axisymmetric;",
+                                      f"mode {mode};"))
+            p = subprocess.run(["bash", "-c", f". {root}/etc/bashrc &&"
+                                f" cellMesh -case {case}"],
+                               capture_output=True, text=True)
+            heads = [open(os.path.join(case, "constant", f)).readline()
+                     if os.path.exists(os.path.join(case, "constant", f))
+                     else "" for f in ("cell.msh", "fluid.msh")]
+            check(p.returncode == 0 and heads == ["$MeshFormat\n"]*2,
+                  f"documented dictionary, mode {mode}: cell.msh and"
+                  " fluid.msh written")
+
+
 def full3D():
     cell3D("full3D", [(0.8e-6, 0.8e-6, 0.6e-6, 1)])
 
 
 {"axisymmetric": axisymmetric, "quarter3D": quarter3D,
- "full3D": full3D, "shapes3D": shapes3D}[sys.argv[1]]()
+ "full3D": full3D, "shapes3D": shapes3D,
+ "docExample": docExample}[sys.argv[1]]()
 print(f"testCellMesh {sys.argv[1]}: {len(failures)} failed")
 sys.exit(1 if failures else 0)
