@@ -69,10 +69,16 @@ int main(int argc, char *argv[])
     {
         cellMesher mesher(geom);
         mesher.generate();
-        mesher.write(args.path()/"constant/cell.msh");
+        // Both meshes are made before either is written
         if (fluid)
         {
             fluid->generate();
+            gmsh::model::setCurrent("cell");
+        }
+        mesher.write(args.path()/"constant/cell.msh");
+        if (fluid)
+        {
+            gmsh::model::setCurrent("fluid");
             fluid->write(args.path()/"constant/fluid.msh");
         }
     }
