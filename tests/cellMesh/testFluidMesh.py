@@ -3,6 +3,8 @@
 cell in a 100 um cube, in the three modes (axisymmetric: the one-cell-thick
 wedge; quarter3D; full3D), checked
   - with an independent reader of the gmsh 2.2 file: the patch names,
+    bottom at height 0 and top at L (height y in the wedge, whose axis is
+    y as in the axisymmetric cell.msh; z in 3D),
     the cell types (wedge: hexahedra + prisms on the axis; 3D:
     tetrahedra), finer near the cell (mean edge of the cellInterface faces
     within [0.6, 1.6] nearSize, of the top faces within [0.5, 1.5]
@@ -67,14 +69,15 @@ def read2(path):
     return X, elems
 
 
-def meanEdge(X, elems, patch):
+def meanEdge(X, elems, patch, across):
+    """Mean edge length of a patch's faces, without the edges across a
+    wedge (coordinate `across` of opposite signs)"""
     lengths = []
     for typ, name, nodes in elems:
         if name == patch:
             for k in range(len(nodes)):
                 p, q = X[nodes[k]], X[nodes[k - 1]]
-                # not the edges across a wedge (y of opposite signs)
-                if p[1]*q[1] >= 0:
+                if across is None or p[across]*q[across] >= 0:
                     lengths.append(np.linalg.norm(p - q))
     return np.mean(lengths)
 
@@ -114,6 +117,12 @@ fluid {{ boxSize {L}; nearSize {near}; farSize {far};
 
         X, elems = read2(os.path.join(case, "constant/fluid.msh"))
         names = {e[1] for e in elems}
+        # Axis of the wedge: y (x = r, y = z as the axisymmetric cell.msh)
+        up = 1 if mode == "axisymmetric" else 2
+        ext = [max(abs(X[n][up]) for e in elems if e[1] == pn for n in e[2])
+               for pn in ("bottom", "top")]
+        check(ext[0] < 1e-12*L and abs(ext[1] - L) < 1e-12*L,
+              f"{mode}: bottom at {'yz'[up - 1]} = 0, top at {L:g} m")
         check(names == set(patches + ["water"]),
               f"{mode}: groups {sorted(names)}")
         cells = {}
@@ -123,8 +132,9 @@ fluid {{ boxSize {L}; nearSize {near}; farSize {far};
         want = {5, 6} if mode == "axisymmetric" else {4}
         check(set(cells) == want, f"{mode}: cell types {cells}"
               " (4 tet, 5 hex, 6 prism)")
-        hi = meanEdge(X, elems, "cellInterface")
-        ho = meanEdge(X, elems, "top")
+        across = 2 if mode == "axisymmetric" else None
+        hi = meanEdge(X, elems, "cellInterface", across)
+        ho = meanEdge(X, elems, "top", across)
         check(0.6*near <= hi <= 1.6*near and 0.5*far <= ho <= 1.5*far,
               f"{mode}: mean edge {hi*1e6:.2f} um on cellInterface"
               f" (nearSize {near*1e6:g}), {ho*1e6:.2f} um on top"

@@ -171,7 +171,8 @@ void Foam::fluidBox::wedge()
     const scalar fN = f.back();
     for (scalar& x : f) x /= fN;
 
-    // Nodes: one on the axis, else two at -+ wedge/2
+    // Nodes: one on the axis, else two at -+ wedge/2 about the y axis
+    // (x = r, y = z as in the axisymmetric cell.msh)
     const label nI = label(th.size());
     const scalar c = std::cos(0.5*wedge_), s = std::sin(0.5*wedge_);
     std::vector<std::size_t> minus(nI*(N + 1)), plus(nI*(N + 1));
@@ -186,7 +187,7 @@ void Foam::fluidBox::wedge()
         const scalar z = i == nI - 1 ? 0 : rho*std::cos(th[i]);
         const label n = i*(N + 1) + k;
         minus[n] = ++next;
-        xyz.insert(xyz.end(), {r*c, -r*s, z});
+        xyz.insert(xyz.end(), {r*c, z, -r*s});
         if (i == 0)
         {
             plus[n] = minus[n];
@@ -194,7 +195,7 @@ void Foam::fluidBox::wedge()
         else
         {
             plus[n] = ++next;
-            xyz.insert(xyz.end(), {r*c, r*s, z});
+            xyz.insert(xyz.end(), {r*c, z, r*s});
         }
     }
     const auto id = [&](label i, label k) { return i*(N + 1) + k; };
