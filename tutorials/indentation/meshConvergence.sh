@@ -1,17 +1,19 @@
 #!/bin/bash
-# Mesh convergence of the full protocol on validationCell: the cellMesh
-# sizes scaled by each factor given (default 1 0.7 0.5), parameter set
-# $SET (default table). Prints one row per mesh: elements, F_B, the nine
-# peaks [nN], F_E, wall time [s] of cellIndentationFoam.
+# Mesh convergence of the full protocol on $CASE (averageCell, the
+# default, or validationCell): the cellMesh sizes scaled by each factor
+# given (default 1.4 1 0.7), parameter set $SET (default table). Prints one
+# row per mesh: elements, F_B, the nine peaks [nN], F_E, Newton iterations,
+# wall and CPU time [s] of cellIndentationFoam.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
 work=${WORK:-$(mktemp -d)}
-for s in ${@:-1 0.7 0.5}
+case=${CASE:-averageCell}
+for s in ${@:-1.4 1 0.7}
 do
-    c=$work/validationCell_$s
+    c=$work/${case}_$s
     rm -rf "$c"
-    cp -r "$here/validationCell" "$c"
+    cp -r "$here/$case" "$c"
     (
         cd "$c"
         /usr/bin/python3 - "$s" "${SET:-table}" <<'PY'
@@ -28,13 +30,17 @@ t = open(p).read()
 t = re.sub(r"parameterSet\s+\w+;", "parameterSet %s;" % sys.argv[2], t)
 open(p, "w").write(t)
 PY
-        "$here/meshCell" 14.2 7.6 > /dev/null
+        D=$(awk '/^cellDiameter/{print $2*1e6}' system/cellMeshDict)
+        H=$(awk '/^cellHeight/{print $2*1e6}' system/cellMeshDict)
+        "$here/meshCell" "$D" "$H" > /dev/null
         cellIndentationFoam > log.cellIndentationFoam 2>&1
         /usr/bin/python3 - "$s" <<'PY'
 import re, sys
 log = open("log.cellIndentationFoam").read()
 ne = re.search(r"(\d+) elements", log).group(1)
 wall = re.search(r"wall time ([0-9.]+) s", log).group(1)
+cpu = re.search(r"CPU time ([0-9.]+) s", log).group(1)
+its = re.search(r"(\d+) Newton iterations", log).group(1)
 peaks = {l.split()[0]: float(l.split()[3])*1e9
          for l in open("postProcessing/indentation/peaks.dat")
          if not l.startswith("#")}
@@ -42,7 +48,7 @@ keys = ["endB"] + ["C%d,%s" % (a, b) for a in (1, 2, 3)
                    for b in ("i", "ii", "iii")] + ["endE"]
 print("| %s | %s | " % (sys.argv[1], ne)
       + " | ".join("%.3f" % peaks.get(k, float("nan")) for k in keys)
-      + " | %s |" % wall)
+      + " | %s | %s | %s |" % (its, wall, cpu))
 PY
     )
 done

@@ -1,0 +1,81 @@
+#!/bin/bash
+# Short runs behind the gap study of docs/results/indentation.md: stage A
+# (until 0.3 nN, the validation cell's criterion), the 15 s hold B and the
+# first 10 um/s cycle, so each variant gives delta0, F_B and the fast peak
+# C1,i in a few CPU seconds.
+#
+# usage: gapStudy.sh <case> <name> [key=value ...]
+#   <case>   averageCell | validationCell
+#   key      an entry of system/cellMeshDict, constant/indenterProperties
+#            or constant/solidProperties (replaced where it is found), or
+#            membraneAs=<region>: the membrane takes that region's paper
+#            material (c0, mu1, tau1) of the chosen parameterSet
+# Prints: name, elements, delta0 [um], F_B [nN], C1,i [nN], CPU time [s].
+# WORK (default: a temporary directory) keeps the case folders.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+. "$here/../../etc/bashrc"
+src=$1 name=$2
+shift 2
+work=${WORK:-$(mktemp -d)}
+c=$work/${src}_$name
+rm -rf "$c"
+cp -r "$here/$src" "$c"
+cd "$c"
+/usr/bin/python3 - "$@" <<'PY'
+import re, sys
+files = ["system/cellMeshDict", "constant/indenterProperties",
+         "constant/solidProperties"]
+text = {f: open(f).read() for f in files}
+# the short protocol: A (to 1.41 um, or to at most 3 um when it ends at
+# forceTarget), B and one fast cycle
+A = "3e-6" if re.search(r"\nforceTarget\s", text["constant/indenterProperties"]) \
+    or any(kv.startswith("forceTarget=") for kv in sys.argv[1:]) else "1.41e-6"
+text["constant/indenterProperties"] = re.sub(
+    r"protocol\s*\(.*\);", """protocol
+(
+    (A   load    0.3e-6  %s)
+    (B   hold    0       15)
+    (C1  load    10e-6   2e-6)
+    (C1  unload  10e-6   2e-6)
+);""" % A, text["constant/indenterProperties"], flags=re.S)
+PAPER = {"membrane": (166.67, 13.89, 3000), "cytoplasm": (1.67, 107.78, 0.01)}
+for kv in sys.argv[1:]:
+    k, v = kv.split("=", 1)
+    if k == "membraneAs":
+        c0, mu1, tau1 = PAPER[v]
+        text["constant/solidProperties"] += (
+            "\nmembrane { c0 %g; d0 0; mu1 %g; tau1 %g; }\n" % (c0, mu1, tau1))
+        continue
+    for f in files:
+        t, n = re.subn(r"(\n%s\s+)[^;]*;" % re.escape(k),
+                       lambda m: m.group(1) + v + ";", text[f])
+        if n:
+            text[f] = t
+            break
+    else:
+        if k == "forceTarget":
+            text["constant/indenterProperties"] += "\nforceTarget %s;\n" % v
+        else:
+            sys.exit("gapStudy: no entry '%s' in %s" % (k, files))
+for f in files:
+    open(f, "w").write(text[f])
+PY
+D=$(awk '/^cellDiameter/{print $2*1e6}' system/cellMeshDict)
+H=$(awk '/^cellHeight/{print $2*1e6}' system/cellMeshDict)
+"$here/meshCell" "$D" "$H" > /dev/null
+cellIndentationFoam > log.cellIndentationFoam 2>&1 \
+    || { tail -5 log.cellIndentationFoam; exit 1; }
+/usr/bin/python3 - "$name" <<'PY'
+import re, sys
+log = open("log.cellIndentationFoam").read()
+ne = re.search(r"(\d+) elements", log).group(1)
+cpu = re.search(r"CPU time ([0-9.]+) s", log).group(1)
+m = re.search(r"delta0 = ([0-9.eE+-]+) m", log)
+d0 = float(m.group(1))*1e6 if m else 1.41
+pk = {l.split()[0]: float(l.split()[3])*1e9
+      for l in open("postProcessing/indentation/peaks.dat")
+      if not l.startswith("#")}
+print("| %s | %s | %.3f | %.3f | %.2f | %s |"
+      % (sys.argv[1], ne, d0, pk["endB"], pk["C1,i"], cpu))
+PY
