@@ -38,6 +38,8 @@ Usage
 
 #include "fvCFD.H"
 #include "dynamicFvMesh.H"
+#include "wedgeFvPatch.H"
+#include "wedgePolyPatch.H"
 #include "pointFields.H"
 #include "OFstream.H"
 #include "rhoEThermo.H"
@@ -72,6 +74,17 @@ int main(int argc, char *argv[])
         #include "readTimeControls.H"
 
         flux->fluxes(thermo, U, phi, phiU, phiE, amaxSf);
+
+        // A wedge face pair carries no wave across (axisymmetry, the swirl
+        // is removed in aleStep.H): out of the Courant number, else the
+        // thin cells at the axis (width r theta) would set the time step
+        forAll(mesh.boundary(), patchi)
+        {
+            if (isA<wedgeFvPatch>(mesh.boundary()[patchi]))
+            {
+                amaxSf.boundaryFieldRef()[patchi] = Zero;
+            }
+        }
 
         #include "courantNo.H"
         #include "setDeltaT.H"

@@ -171,20 +171,19 @@ Foam::interfaceMap::stencil Foam::interfaceMap::project(const vector& x) const
 
 Foam::List<Foam::interfaceMap::stencil> Foam::interfaceMap::projectAll
 (
+    const vectorField& xs,
     const pointField& pts,
-    vectorField& radial,
     const scalar tol,
     const word& what
 ) const
 {
-    List<stencil> st(pts.size());
-    radial.setSize(pts.size());
+    List<stencil> st(xs.size());
     label nOut = 0;
     scalar worst = 0;
     point worstPoint(Zero);
-    forAll(pts, i)
+    forAll(xs, i)
     {
-        st[i] = project(toSolidFrame(pts[i], radial[i]));
+        st[i] = project(xs[i]);
         // Size of the nearest solid face: its longest edge
         scalar h = 0;
         for (label a = 0; a < 4; ++a)
@@ -211,7 +210,7 @@ Foam::List<Foam::interfaceMap::stencil> Foam::interfaceMap::projectAll
     if (nOut)
     {
         FatalErrorInFunction
-            << "FSI interface: " << nOut << " of " << pts.size()
+            << "FSI interface: " << nOut << " of " << xs.size()
             << " fluid " << what << " lie off the solid interface (no"
             << " overlap of the two sides); worst " << worstPoint
             << " at " << worst << " m (mapTolerance " << tol
@@ -219,6 +218,129 @@ Foam::List<Foam::interfaceMap::stencil> Foam::interfaceMap::projectAll
             << " set and the units of both meshes." << exit(FatalError);
     }
     return st;
+}
+
+
+void Foam::interfaceMap::quadrature3D
+(
+    const polyPatch& fluidPatch,
+    vectorField& xs,
+    pointField& pts
+)
+{
+    const pointField& lp = fluidPatch.localPoints();
+    const pointField Cf(fluidPatch.faceCentres());
+    DynamicList<point> qp;
+    forAll(fluidPatch.localFaces(), facei)
+    {
+        const face& f = fluidPatch.localFaces()[facei];
+        scalar total = 0;
+        const label start = qp.size();
+        forAll(f, k)
+        {
+            const point& a = lp[f[k]];
+            const point& b = lp[f.fcIndex(k)];
+            const scalar area = 0.5*mag((a - Cf[facei]) ^ (b - Cf[facei]));
+            qp.append((Cf[facei] + a + b)/3);
+            quadFace_.append(facei);
+            quadWeight_.append(area);
+            total += area;
+        }
+        for (label q = start; q < qp.size(); ++q)
+        {
+            quadWeight_[q] /= total;
+        }
+    }
+    pts = qp;
+    xs = pts;
+    quadRadial_.setSize(pts.size(), Zero);
+}
+
+
+void Foam::interfaceMap::quadratureRz
+(
+    const polyPatch& fluidPatch,
+    vectorField& xs,
+    pointField& pts
+)
+{
+    // Two segments of two Gauss points each per face: a fluid face that
+    // covers several solid faces still loads the nodes under it
+    const label nSeg = 2;
+    const scalar g = 0.5/std::sqrt(3.0);
+    const pointField& lp = fluidPatch.localPoints();
+    const pointField Cf(fluidPatch.faceCentres());
+    DynamicList<vector> qx;
+    DynamicList<point> qp;
+    DynamicList<vector> qr;
+    forAll(fluidPatch.localFaces(), facei)
+    {
+        const face& f = fluidPatch.localFaces()[facei];
+
+        // The face's r-z segment: its two most distant points in (r, z)
+        vector radial;
+        List<vector> rz(f.size());
+        forAll(f, k) rz[k] = toSolidFrame(lp[f[k]], radial);
+        vector a(rz[0]), b(rz[0]);
+        scalar dMax = -1;
+        forAll(rz, i)
+        {
+            for (label j = i + 1; j < rz.size(); ++j)
+            {
+                if (mag(rz[i] - rz[j]) > dMax)
+                {
+                    dMax = mag(rz[i] - rz[j]);
+                    a = rz[i];
+                    b = rz[j];
+                }
+            }
+        }
+        toSolidFrame(Cf[facei], radial);
+
+        // Gauss points, weights r ds normalised over the face
+        const label start = qx.size();
+        scalar total = 0;
+        for (label s = 0; s < nSeg; ++s)
+        {
+            for (const scalar xi : {0.5 - g, 0.5 + g})
+            {
+                const scalar t = (s + xi)/nSeg;
+                const vector x(a + t*(b - a));
+                qx.append(x);
+                qp.append(axisOrigin_ + x.x()*radial + x.y()*axisDirection_);
+                qr.append(radial);
+                quadFace_.append(facei);
+                quadWeight_.append(x.x());
+                total += x.x();
+            }
+        }
+        for (label q = start; q < qx.size(); ++q)
+        {
+            quadWeight_[q] /= total;
+        }
+    }
+    xs = qx;
+    pts = qp;
+    quadRadial_ = qr;
+}
+
+
+Foam::vector Foam::interfaceMap::toSolidForce
+(
+    const vector& F,
+    const label q
+) const
+{
+    if (!axisymmetric_)
+    {
+        return F;
+    }
+    return vector
+    (
+        ringFactorRadial_*(F & quadRadial_[q]),
+        ringFactorAxial_*(F & axisDirection_),
+        0
+    );
 }
 
 
@@ -233,7 +355,8 @@ Foam::interfaceMap::interfaceMap
     axisymmetric_(solidMesh.axisymmetric()),
     axisOrigin_(Zero),
     axisDirection_(Zero),
-    ringFactor_(1)
+    ringFactorRadial_(1),
+    ringFactorAxial_(1)
 {
     const word setName(dict.get<word>("solidFaceSet"));
     if (!solidMesh.faceSets.count(setName))
@@ -318,40 +441,31 @@ Foam::interfaceMap::interfaceMap
                 << fluidPatch.name() << " is not a wedge about the axis "
                 << axisOrigin_ << " " << axisDirection_ << exit(FatalIOError);
         }
-        ringFactor_ = constant::mathematical::twoPi/theta;
+        ringFactorRadial_ = constant::mathematical::pi/std::sin(0.5*theta);
+        ringFactorAxial_ = constant::mathematical::twoPi/std::sin(theta);
         Info<< "FSI interface: axisymmetric, fluid wedge angle "
             << radToDeg(theta) << " deg" << endl;
     }
 
-    pointStencil_ =
-        projectAll(fluidPatch.localPoints(), pointRadial_, tol, "points");
-    // Force quadrature: centroids of the triangles (face centre, edge)
     {
         const pointField& lp = fluidPatch.localPoints();
-        const pointField Cf(fluidPatch.faceCentres());
-        DynamicList<point> qp;
-        forAll(fluidPatch.localFaces(), facei)
+        vectorField xs(lp.size());
+        pointRadial_.setSize(lp.size());
+        forAll(lp, i) xs[i] = toSolidFrame(lp[i], pointRadial_[i]);
+        pointStencil_ = projectAll(xs, lp, tol, "points");
+    }
+    {
+        vectorField xs;
+        pointField pts;
+        if (axisymmetric_)
         {
-            const face& f = fluidPatch.localFaces()[facei];
-            scalar total = 0;
-            const label start = qp.size();
-            forAll(f, k)
-            {
-                const point& a = lp[f[k]];
-                const point& b = lp[f.fcIndex(k)];
-                const scalar area = 0.5*mag((a - Cf[facei]) ^ (b - Cf[facei]));
-                qp.append((Cf[facei] + a + b)/3);
-                quadFace_.append(facei);
-                quadWeight_.append(area);
-                total += area;
-            }
-            for (label q = start; q < qp.size(); ++q)
-            {
-                quadWeight_[q] /= total;
-            }
+            quadratureRz(fluidPatch, xs, pts);
         }
-        quadStencil_ =
-            projectAll(pointField(qp), quadRadial_, tol, "face points");
+        else
+        {
+            quadrature3D(fluidPatch, xs, pts);
+        }
+        quadStencil_ = projectAll(xs, pts, tol, "face points");
     }
 
     Info<< "FSI interface: fluid patch " << fluidPatch.name() << " ("
@@ -414,9 +528,7 @@ Foam::scalarField Foam::interfaceMap::nodalForces
     {
         const stencil& s = quadStencil_[q];
         const vector F = quadWeight_[q]*faceForces[quadFace_[q]];
-        const vector Fs = axisymmetric_
-            ? ringFactor_*vector(F & quadRadial_[q], F & axisDirection_, 0)
-            : F;
+        const vector Fs = toSolidForce(F, q);
         for (label k = 0; k < 4; ++k)
         {
             for (label d = 0; d < dim; ++d)
@@ -442,12 +554,9 @@ Foam::scalarField Foam::interfaceMap::nodalImpedance
     forAll(quadStencil_, q)
     {
         const label facei = quadFace_[q];
-        const vector& Sv = Sf[facei];
-        const vector S = axisymmetric_
-            ? vector(Sv & quadRadial_[q], Sv & axisDirection_, 0)
-            : Sv;
+        const vector S = toSolidForce(Sf[facei], q);
         const vector D =
-            ringFactor_*quadWeight_[q]*Z[facei]*cmptMultiply(S, S)/mag(Sv);
+            quadWeight_[q]*Z[facei]*cmptMultiply(S, S)/max(mag(S), VSMALL);
         const stencil& s = quadStencil_[q];
         for (label k = 0; k < 4; ++k)
         {
@@ -458,6 +567,20 @@ Foam::scalarField Foam::interfaceMap::nodalImpedance
         }
     }
     return f;
+}
+
+
+Foam::vector Foam::interfaceMap::ringForce
+(
+    const vectorField& faceForces
+) const
+{
+    vector sum(Zero);
+    forAll(quadStencil_, q)
+    {
+        sum += quadWeight_[q]*toSolidForce(faceForces[quadFace_[q]], q);
+    }
+    return sum;
 }
 
 

@@ -8,6 +8,8 @@
 #include "labelVector.H"
 #include "pointField.H"
 #include "vector2D.H"
+#include "Pair.H"
+#include "Shape.H"
 
 #include <cmath>
 
@@ -160,6 +162,100 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
         solver_.reset(new solid::ExplicitSolver(*model_, set));
     });
 
+    setupOutput();
+
+    const fileName dir(runTime_.path()/"solid");
+    mkDir(dir);
+    guarded("solid output", [&]
+    {
+        writer_.reset(new solid::ResultWriter(dir/"solid", *model_));
+    });
+    save();
+}
+
+
+Foam::scalar Foam::solidDomain::longitudinalStrain(const label e) const
+{
+    const solid::Mesh& m = mesh();
+    const int dim = m.dim();
+    const int axial = dim - 1;
+    const int* conn = m.element(e);
+    const solid::ShapeRule& rule = solid::volumeRule(m.type);
+    Eigen::MatrixXd F(Eigen::MatrixXd::Zero(dim, dim));
+    for (int q = 0; q < rule.nqp(); ++q)
+    {
+        const Eigen::MatrixXd& dNdxi = rule.dNdxi[q];
+        Eigen::MatrixXd J(Eigen::MatrixXd::Zero(dim, dim));
+        for (int a = 0; a < rule.nen; ++a)
+        {
+            for (int i = 0; i < dim; ++i)
+            {
+                J.row(i) += m.X[conn[a]][i]*dNdxi.row(a);
+            }
+        }
+        const Eigen::MatrixXd dNdX = dNdxi*J.inverse();
+        Eigen::MatrixXd Fq(Eigen::MatrixXd::Identity(dim, dim));
+        for (int a = 0; a < rule.nen; ++a)
+        {
+            for (int i = 0; i < dim; ++i)
+            {
+                Fq.row(i) += model_->u(dim*conn[a] + i)*dNdX.row(a);
+            }
+        }
+        F += Fq/rule.nqp();
+    }
+    return std::log(F.col(axial).norm());
+}
+
+
+Foam::labelList Foam::solidDomain::interfaceElements
+(
+    const word& a,
+    const word& b
+) const
+{
+    const solid::Mesh& m = mesh();
+    int ra = -1, rb = -1;
+    guarded("solid interfaces", [&]
+    {
+        ra = m.regionId(a);
+        rb = m.regionId(b);
+    });
+    std::vector<char> inA(m.nNodes(), 0), inB(m.nNodes(), 0);
+    for (int e = 0; e < m.nElements(); ++e)
+    {
+        for (int k = 0; k < m.nen(); ++k)
+        {
+            if (m.region[e] == ra) inA[m.element(e)[k]] = 1;
+            if (m.region[e] == rb) inB[m.element(e)[k]] = 1;
+        }
+    }
+    DynamicList<label> elems;
+    for (int e = 0; e < m.nElements(); ++e)
+    {
+        if (m.region[e] != ra && m.region[e] != rb) continue;
+        const std::vector<char>& other = m.region[e] == ra ? inB : inA;
+        for (int k = 0; k < m.nen(); ++k)
+        {
+            if (other[m.element(e)[k]])
+            {
+                elems.append(e);
+                break;
+            }
+        }
+    }
+    if (elems.empty())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "interfaces: regions " << a << " and " << b
+            << " share no node" << exit(FatalIOError);
+    }
+    return labelList(elems);
+}
+
+
+void Foam::solidDomain::setupOutput()
+{
     // Probes: the element whose reference centroid is nearest
     const pointField probes(dict_.getOrDefault<pointField>("probes", {}));
     const solid::Mesh& m = mesh();
@@ -178,7 +274,7 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
             if (d < best) { best = d; probeElements_[i] = e; }
         }
     }
-    probeLogTheta_.setSize(probes.size(), 0);
+    probeStrain_.setSize(2*probes.size(), 0);
     if (probes.size() && Pstream::master())
     {
         const fileName dir
@@ -190,29 +286,73 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
         probeFile_.reset(new OFstream(dir/"solidProbes.dat"));
         OFstream& os = probeFile_();
         os.precision(10);
-        os  << "# solid probes (element average; strain = ln J, the"
-            << " longitudinal strain in uniaxial strain)" << nl
+        os  << "# solid probes (element average): per probe pressure"
+            << " (+ compression), von Mises, volumetric strain ln J and its"
+            << " rate, temperature rise; then per probe the longitudinal"
+            << " strain ln|F e_z| (shock direction) and its rate" << nl
             << "# time [s]";
         forAll(probes, i)
         {
             os  << "  p" << i << "[Pa] vonMises" << i << "[Pa] strain" << i
                 << "[-] strainRate" << i << "[1/s] dT" << i << "[K]";
         }
+        forAll(probes, i)
+        {
+            os  << "  strainZ" << i << "[-] strainRateZ" << i << "[1/s]";
+        }
         os  << nl;
         forAll(probes, i)
         {
+            solid::Vec3 c(solid::Vec3::Zero());
+            for (int a = 0; a < m.nen(); ++a)
+            {
+                c += m.X[m.element(probeElements_[i])[a]];
+            }
+            c /= m.nen();
             os  << "# probe " << i << " at " << probes[i] << " m: element "
-                << probeElements_[i] << nl;
+                << probeElements_[i] << " ("
+                << m.regionNames[m.region[probeElements_[i]]]
+                << ", centroid " << c[0] << ' ' << c[1] << ' ' << c[2]
+                << " m)" << nl;
         }
     }
 
-    const fileName dir(runTime_.path()/"solid");
-    mkDir(dir);
-    guarded("solid output", [&]
+    const List<Pair<word>> pairs
+    (
+        dict_.getOrDefault<List<Pair<word>>>("interfaces", {})
+    );
+    interfaceElements_.setSize(pairs.size());
+    forAll(pairs, i)
     {
-        writer_.reset(new solid::ResultWriter(dir/"solid", *model_));
-    });
-    save();
+        interfaceElements_[i] = interfaceElements(pairs[i].first(),
+            pairs[i].second());
+    }
+    if (pairs.size() && Pstream::master())
+    {
+        const fileName dir
+        (
+            runTime_.path()/"postProcessing"/"solidInterfaces"
+           /runTime_.timeName()
+        );
+        mkDir(dir);
+        interfaceFile_.reset(new OFstream(dir/"interfaceMaxima.dat"));
+        OFstream& os = interfaceFile_();
+        os.precision(10);
+        os  << "# maxima over the elements along each region interface"
+            << " (either side): pressure (+ compression) and von Mises"
+            << nl << "# time [s]";
+        forAll(pairs, i)
+        {
+            const word n(pairs[i].first() + "-" + pairs[i].second());
+            os  << "  pMax:" << n << "[Pa] vonMisesMax:" << n << "[Pa]";
+        }
+        os  << nl;
+        forAll(pairs, i)
+        {
+            os  << "# " << pairs[i].first() << "-" << pairs[i].second()
+                << ": " << interfaceElements_[i].size() << " elements" << nl;
+        }
+    }
 }
 
 
@@ -256,6 +396,12 @@ void Foam::solidDomain::advance
 
 void Foam::solidDomain::write()
 {
+    const auto vonMises = [](const solid::Mat3& s)
+    {
+        const solid::Mat3 dev = s - s.trace()/3*solid::Mat3::Identity();
+        return std::sqrt(1.5*(dev.array()*dev.array()).sum());
+    };
+    const scalar dt = runTime_.deltaTValue();
     if (probeFile_.valid())
     {
         OFstream& os = probeFile_();
@@ -264,16 +410,34 @@ void Foam::solidDomain::write()
         {
             const solid::ElementOutput o =
                 model_->evaluateElement(probeElements_[i], 0);
-            const solid::Mat3 s = o.sigma;
-            const solid::Mat3 dev =
-                s - s.trace()/3*solid::Mat3::Identity();
-            const scalar vm = std::sqrt(1.5*(dev.array()*dev.array()).sum());
             const scalar logJ = std::log(o.theta);
-            const scalar dt = runTime_.deltaTValue();
-            const scalar rate = (logJ - probeLogTheta_[i])/dt;
-            probeLogTheta_[i] = logJ;
-            os  << ' ' << o.p << ' ' << vm << ' ' << logJ << ' ' << rate
-                << ' ' << o.temperatureRise;
+            os  << ' ' << o.p << ' ' << vonMises(o.sigma) << ' ' << logJ
+                << ' ' << (logJ - probeStrain_[2*i])/dt << ' '
+                << o.temperatureRise;
+            probeStrain_[2*i] = logJ;
+        }
+        forAll(probeElements_, i)
+        {
+            const scalar ez = longitudinalStrain(probeElements_[i]);
+            os  << ' ' << ez << ' ' << (ez - probeStrain_[2*i + 1])/dt;
+            probeStrain_[2*i + 1] = ez;
+        }
+        os  << nl;
+    }
+    if (interfaceFile_.valid())
+    {
+        OFstream& os = interfaceFile_();
+        os  << runTime_.value();
+        for (const labelList& elems : interfaceElements_)
+        {
+            scalar pMax = -GREAT, vmMax = 0;
+            for (const label e : elems)
+            {
+                const solid::ElementOutput o = model_->evaluateElement(e, 0);
+                pMax = max(pMax, o.p);
+                vmMax = max(vmMax, vonMises(o.sigma));
+            }
+            os  << ' ' << pMax << ' ' << vmMax;
         }
         os  << nl;
     }
