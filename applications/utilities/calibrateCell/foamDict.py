@@ -1,0 +1,227 @@
+"""OpenFOAM dictionary text: read into Python values, and replace or add one
+entry in place (comments and layout of the rest of the file kept).
+
+Shared by calibrateCell and sweepCase (applications/utilities). Only the
+subset of the format the project's dictionaries use: nested
+sub-dictionaries, entries `key value...;`, lists `( ... )`, quoted strings,
+// and /* */ comments. No #include, no $variables.
+"""
+
+import re
+
+_TOKEN = re.compile(r'''
+    (?P<ws>\s+)
+  | (?P<lc>//[^\n]*)
+  | (?P<bc>/\*.*?\*/)
+  | (?P<str>"[^"]*")
+  | (?P<punct>[{}();])
+  | (?P<word>[^\s{}();"]+)
+''', re.S | re.X)
+
+
+class DictError(Exception):
+    """A dictionary that cannot be read; the message names file and place."""
+
+
+def tokens(text, name="<text>"):
+    """(token, start, end) of the text without blanks and comments."""
+    out = []
+    pos = 0
+    while pos < len(text):
+        m = _TOKEN.match(text, pos)
+        if not m:
+            line = text.count("\n", 0, pos) + 1
+            raise DictError("%s, line %d: cannot read '%s'"
+                            % (name, line, text[pos:pos + 20]))
+        if m.lastgroup in ("str", "punct", "word"):
+            out.append((m.group(), m.start(), m.end()))
+        pos = m.end()
+    return out
+
+
+def _line(text, pos):
+    return text.count("\n", 0, pos) + 1
+
+
+def _value(tok):
+    if tok.startswith('"'):
+        return tok[1:-1]
+    for conv in (int, float):
+        try:
+            return conv(tok)
+        except ValueError:
+            pass
+    low = tok.lower()
+    if low in ("yes", "on", "true"):
+        return True
+    if low in ("no", "off", "false"):
+        return False
+    return tok
+
+
+def parse(text, name="<text>"):
+    """Nested dict of the file. An entry of one token is that value (int,
+    float, bool for yes/no/true/false/on/off, or str); of several tokens or
+    a list, a Python list; the FoamFile header is dropped."""
+    toks = tokens(text, name)
+    i = [0]
+
+    def err(msg, k):
+        pos = toks[k][1] if k < len(toks) else len(text)
+        raise DictError("%s, line %d: %s" % (name, _line(text, pos), msg))
+
+    def parse_list():
+        items = []
+        while True:
+            if i[0] >= len(toks):
+                err("unclosed '('", i[0] - 1)
+            t = toks[i[0]][0]
+            i[0] += 1
+            if t == ")":
+                return items
+            if t == "(":
+                items.append(parse_list())
+            elif t in "{};":
+                err("unexpected '%s' in a list" % t, i[0] - 1)
+            else:
+                items.append(_value(t))
+
+    def parse_dict(closing):
+        d = {}
+        while i[0] < len(toks):
+            key, _, _ = toks[i[0]]
+            if key == "}":
+                if not closing:
+                    err("unexpected '}'", i[0])
+                i[0] += 1
+                return d
+            if key in "{();":
+                err("expected a keyword, found '%s'" % key, i[0])
+            i[0] += 1
+            key = _value(key) if key.startswith('"') else key
+            if i[0] < len(toks) and toks[i[0]][0] == "{":
+                i[0] += 1
+                d[key] = parse_dict(True)
+                continue
+            vals = []
+            while True:
+                if i[0] >= len(toks):
+                    err("entry '%s' has no closing ';'" % key, i[0] - 1)
+                t = toks[i[0]][0]
+                i[0] += 1
+                if t == ";":
+                    break
+                if t == "(":
+                    vals.append(parse_list())
+                elif t in "{})":
+                    err("unexpected '%s' in entry '%s'" % (t, key), i[0] - 1)
+                else:
+                    vals.append(_value(t))
+            d[key] = vals[0] if len(vals) == 1 else vals
+        if closing:
+            err("unclosed '{'", len(toks))
+        return d
+
+    d = parse_dict(False)
+    d.pop("FoamFile", None)
+    return d
+
+
+def read(path):
+    with open(path) as f:
+        return parse(f.read(), path)
+
+
+def set_entry(text, path, value, name="<text>"):
+    """Text with entry `path` (keys from the top, e.g. ['nucleus', 'c0'])
+    set to `value` (the text between the keyword and ';'). An existing entry
+    is replaced; a missing one is added at the end of its sub-dictionary,
+    which must exist."""
+    toks = tokens(text, name)
+    depth = 0
+    want = 0          # index in path of the key looked for at this depth
+    start = 0         # insertion point: end of the top level by default
+    end_of_dict = len(text)
+    k = 0
+    while k < len(toks):
+        t, s, e = toks[k]
+        if t == "}":
+            if depth == want and want > 0:
+                end_of_dict = s
+                break
+            depth -= 1
+        elif t in ("{", "("):
+            depth += 1
+        elif t == ")":
+            depth -= 1
+        elif t == ";":
+            pass
+        elif depth == want and (k == 0 or toks[k - 1][0] in ";{}"):
+            if t.strip('"') == path[want]:
+                if want == len(path) - 1:
+                    if k + 1 < len(toks) and toks[k + 1][0] == "{":
+                        raise DictError("%s: '%s' is a sub-dictionary, not "
+                                        "an entry" % (name, "/".join(path)))
+                    j = k + 1
+                    level = 0
+                    while j < len(toks) and not (toks[j][0] == ";"
+                                                 and level == 0):
+                        level += {"(": 1, ")": -1}.get(toks[j][0], 0)
+                        j += 1
+                    if j == len(toks):
+                        raise DictError("%s: entry '%s' has no ';'"
+                                        % (name, "/".join(path)))
+                    return text[:e] + " " + str(value) + text[toks[j][1]:]
+                if k + 1 < len(toks) and toks[k + 1][0] == "{":
+                    want += 1
+                    depth += 1
+                    k += 2
+                    continue
+        k += 1
+    if want < len(path) - 1:
+        raise DictError("%s: no sub-dictionary '%s'"
+                        % (name, "/".join(path[:want + 1])))
+    indent = "    " * want
+    new = "%s%s %s;\n" % (indent, path[-1], value)
+    if want == 0:
+        sep = "" if text.endswith("\n") else "\n"
+        return text + sep + new
+    # before the closing brace of the sub-dictionary, on its own line
+    line_start = text.rfind("\n", 0, end_of_dict) + 1
+    return text[:line_start] + new + text[line_start:]
+
+
+def format_value(v):
+    """Dictionary text of a Python value (numbers with full precision)."""
+    if isinstance(v, bool):
+        return "yes" if v else "no"
+    if isinstance(v, float):
+        return "%.10g" % v
+    if isinstance(v, (list, tuple)):
+        return "(" + " ".join(format_value(x) for x in v) + ")"
+    return str(v)
+
+
+def set_subdict(text, name, entries, name_of_text="<text>"):
+    """Text with the top-level sub-dictionary `name` replaced by (or, when
+    missing, appended as) one holding `entries` (dict key -> value)."""
+    body = "%s\n{\n%s}" % (name, "".join(
+        "    %-5s %s;\n" % (k, format_value(v)) for k, v in entries.items()))
+    toks = tokens(text, name_of_text)
+    depth = 0
+    for k, (t, s, e) in enumerate(toks):
+        if t in ("{", "("):
+            depth += 1
+        elif t in ("}", ")"):
+            depth -= 1
+        elif (depth == 0 and t.strip('"') == name and k + 1 < len(toks)
+              and toks[k + 1][0] == "{"
+              and (k == 0 or toks[k - 1][0] in ";{}")):
+            level = 0
+            for t2, s2, e2 in toks[k + 1:]:
+                level += {"{": 1, "}": -1}.get(t2, 0)
+                if level == 0:
+                    return text[:s] + body + text[e2:]
+            raise DictError("%s: unclosed sub-dictionary '%s'"
+                            % (name_of_text, name))
+    return text.rstrip("\n") + "\n\n" + body + "\n"

@@ -1,0 +1,181 @@
+"""cellIndentationFoam as the forward model of calibrateCell: a meshed
+scratch copy of the case, one run per parameter vector in its own folder,
+the materials of every region written as sub-dictionaries of
+constant/solidProperties."""
+
+import os
+import re
+import shutil
+import subprocess
+import time
+
+import foamDict
+
+MESH_SIZES = ("nucleusSize", "cytoplasmSize", "membraneSize", "contactSize")
+
+
+class ModelError(Exception):
+    """A forward run that failed; the message names its log."""
+
+
+def _run(cmd, cwd, log):
+    with open(log, "w") as f:
+        return subprocess.call(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT)
+
+
+def protocol_text(rows):
+    """Dictionary text of a protocol list [[stage, motion, rate, amount]]."""
+    return "\n(\n" + "".join(
+        "    (%s %s %s %s)\n" % (r[0], r[1], foamDict.format_value(r[2]),
+                                 foamDict.format_value(r[3])) for r in rows
+    ) + ")"
+
+
+class ForwardModel:
+    """Scratch copies of `case` under `work`: base/ holds the mesh (cellMesh,
+    sizes scaled by mesh_factor) and the edited dictionaries; each run
+    copies base/ without the mesh (a link to it)."""
+
+    def __init__(self, case, work, mesh_factor=1.0, protocol=None,
+                 keep=False):
+        self.case = os.path.abspath(case)
+        self.work = os.path.abspath(work)
+        self.keep = keep
+        self.base = os.path.join(self.work, "base")
+        if os.path.exists(self.base):
+            shutil.rmtree(self.base)
+        os.makedirs(self.base)
+        for d in ("system", "constant"):
+            src = os.path.join(self.case, d)
+            if not os.path.isdir(src):
+                raise ModelError("%s: no %s/ folder" % (self.case, d))
+            shutil.copytree(src, os.path.join(self.base, d),
+                            ignore=shutil.ignore_patterns("cell.msh",
+                                                          "*.calibrated"))
+        self._edit_mesh_dict(mesh_factor)
+        log = os.path.join(self.base, "log.cellMesh")
+        if _run(["cellMesh", "-case", self.base], self.base, log) \
+                or not os.path.isfile(self.mesh()):
+            raise ModelError("cellMesh failed for %s (see %s)"
+                             % (self.case, log))
+        self.ip_path = os.path.join(self.base, "constant/indenterProperties")
+        self.ip_text = open(self.ip_path).read()
+        if protocol is not None:
+            self.ip_text = foamDict.set_entry(
+                self.ip_text, ["protocol"], protocol_text(protocol),
+                self.ip_path)
+        self.ip = foamDict.parse(self.ip_text, self.ip_path)
+        self.sp_path = os.path.join(self.base, "constant/solidProperties")
+        self.sp_text = open(self.sp_path).read()
+        self.materials, self.elements = self._probe()
+        self.count = 0
+
+    def mesh(self):
+        return os.path.join(self.base, "constant/cell.msh")
+
+    def _edit_mesh_dict(self, factor):
+        if factor == 1.0:
+            return
+        p = os.path.join(self.base, "system/cellMeshDict")
+        text = open(p).read()
+        d = foamDict.parse(text, p)
+        for k in MESH_SIZES:
+            if k in d:
+                text = foamDict.set_entry(
+                    text, [k], foamDict.format_value(float(d[k])*factor), p)
+        open(p, "w").write(text)
+
+    def _probe(self):
+        """Region materials as the solver reads them (paper set plus the
+        case's sub-dictionaries): a run of one 10 nm load step."""
+        d = os.path.join(self.work, "probe")
+        self._make_run_dir(d, self.sp_text, foamDict.set_entry(
+            self.ip_text, ["protocol"], "((A load 0.3e-6 1e-8))", self.ip_path))
+        log = os.path.join(d, "log.cellIndentationFoam")
+        if _run(["cellIndentationFoam", "-case", d], d, log):
+            raise ModelError("the case's own parameters do not run (see %s)"
+                             % log)
+        text = open(log).read()
+        mats = {}
+        for m in re.finditer(r'^\s+"?(\w+)"?: c0 (\S+) Pa, d0 (\S+) 1/Pa(.*)$',
+                             text, re.M):
+            e = {"c0": float(m.group(2)), "d0": float(m.group(3))}
+            for n, b in enumerate(re.findall(r"mu (\S+) Pa tau (\S+) s",
+                                             m.group(4)), start=1):
+                e["mu%d" % n] = float(b[0])
+                e["tau%d" % n] = float(b[1])
+            mats[m.group(1)] = e
+        ne = re.search(r"(\d+) elements", text)
+        if not mats or not ne:
+            raise ModelError("cannot read the materials from %s" % log)
+        if not self.keep:
+            shutil.rmtree(d)
+        return mats, int(ne.group(1))
+
+    def _make_run_dir(self, d, sp_text, ip_text):
+        if os.path.exists(d):
+            shutil.rmtree(d)
+        shutil.copytree(os.path.join(self.base, "system"),
+                        os.path.join(d, "system"))
+        os.makedirs(os.path.join(d, "constant"))
+        os.symlink(self.mesh(), os.path.join(d, "constant/cell.msh"))
+        open(os.path.join(d, "constant/solidProperties"), "w").write(sp_text)
+        open(os.path.join(d, "constant/indenterProperties"), "w").write(
+            ip_text)
+
+    def solid_properties(self, materials, header=""):
+        """constant/solidProperties text with one sub-dictionary per region
+        (every entry of MaterialParameters the solver reported)."""
+        text = self.sp_text
+        for region, e in materials.items():
+            text = foamDict.set_subdict(text, region, e, self.sp_path)
+        return header + text if header else text
+
+    def indenter_properties(self, delta0=None):
+        """constant/indenterProperties text, the first row's amount set to
+        delta0 [m] when given."""
+        if delta0 is None:
+            return self.ip_text
+        rows = [list(r) for r in self.ip["protocol"]]
+        rows[0][3] = delta0
+        return foamDict.set_entry(self.ip_text, ["protocol"],
+                                  protocol_text(rows), self.ip_path)
+
+    def run(self, materials, delta0=None, tag=None):
+        """Forward run: dict with peaks (label -> force [N]), time [s] and
+        force [N] arrays, delta0 [m], cpu and wall time [s], elements."""
+        self.count += 1
+        d = os.path.join(self.work, tag or "run%04d" % self.count)
+        self._make_run_dir(d, self.solid_properties(materials),
+                           self.indenter_properties(delta0))
+        log = os.path.join(d, "log.cellIndentationFoam")
+        t0 = time.time()
+        rc = _run(["cellIndentationFoam", "-case", d], d, log)
+        wall = time.time() - t0
+        text = open(log).read()
+        if rc or "FOAM FATAL" in text:
+            raise ModelError("cellIndentationFoam failed (exit %d) in %s; "
+                             "last lines:\n%s" % (rc, log, "\n".join(
+                                 text.splitlines()[-8:])))
+        pp = os.path.join(d, "postProcessing/indentation")
+        peaks = {}
+        for line in open(os.path.join(pp, "peaks.dat")):
+            if not line.startswith("#"):
+                s = line.split()
+                peaks[s[0]] = float(s[3])
+        t, F = [], []
+        for line in open(os.path.join(pp, "force.dat")):
+            if not line.startswith("#"):
+                s = line.split()
+                t.append(float(s[0]))
+                F.append(float(s[2]))
+        m = re.search(r"delta0 = (\S+) m", text)
+        cpu = re.search(r"CPU time ([0-9.eE+-]+) s", text)
+        out = dict(peaks=peaks, time=t, force=F, wall=wall,
+                   cpu=float(cpu.group(1)) if cpu else float("nan"),
+                   delta0=float(m.group(1)) if m else
+                   (delta0 if delta0 is not None
+                    else float(self.ip["protocol"][0][3])))
+        if not self.keep:
+            shutil.rmtree(d)
+        return out

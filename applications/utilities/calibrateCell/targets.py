@@ -1,0 +1,197 @@
+"""Calibration targets of calibrateCell: forces from peaks.dat (a stage end
+or a cycle peak) and measured force-time curves from CSV files, each with
+its uncertainty sigma [N]; the weighted residuals of a forward run."""
+
+import csv
+import os
+import re
+
+import numpy as np
+
+
+class TargetError(Exception):
+    """A bad target; the message names the file and the entry/column/row."""
+
+
+def _header_name(cell):
+    """'time [s]' -> 'time'; 'Force(N)' -> 'force'."""
+    return re.split(r"[\[(]", cell.strip(), 1)[0].strip().lower()
+
+
+def read_curve(path):
+    """Times [s] and forces [N] of a CSV file with a header row naming the
+    columns 'time' and 'force' (units in brackets allowed, other columns
+    ignored). Times strictly increasing, forces finite and >= 0."""
+    if not os.path.isfile(path):
+        raise TargetError("%s: no such file" % path)
+    with open(path, newline="") as f:
+        rows = [r for r in csv.reader(f) if r and any(c.strip() for c in r)]
+    if not rows:
+        raise TargetError("%s: empty file (expected a header row with the "
+                          "columns 'time [s]' and 'force [N]')" % path)
+    names = [_header_name(c) for c in rows[0]]
+    cols = {}
+    for want in ("time", "force"):
+        if want not in names:
+            raise TargetError("%s: missing column '%s' (header row: %s; "
+                              "expected 'time [s]' and 'force [N]')"
+                              % (path, want, ", ".join(rows[0])))
+        cols[want] = names.index(want)
+    t, F = [], []
+    for n, r in enumerate(rows[1:], start=2):
+        vals = {}
+        for want, c in cols.items():
+            if c >= len(r):
+                raise TargetError("%s, row %d: no value in column '%s'"
+                                  % (path, n, want))
+            try:
+                vals[want] = float(r[c])
+            except ValueError:
+                raise TargetError("%s, row %d, column '%s': '%s' is not a "
+                                  "number" % (path, n, want, r[c].strip()))
+            if not np.isfinite(vals[want]):
+                raise TargetError("%s, row %d, column '%s': %s is not "
+                                  "finite" % (path, n, want, r[c].strip()))
+        if vals["force"] < 0:
+            raise TargetError("%s, row %d, column 'force': negative force "
+                              "%g N" % (path, n, vals["force"]))
+        if t and vals["time"] <= t[-1]:
+            raise TargetError("%s, row %d, column 'time': time %g s is not "
+                              "after the previous row's %g s (time must "
+                              "increase monotonically)"
+                              % (path, n, vals["time"], t[-1]))
+        t.append(vals["time"])
+        F.append(vals["force"])
+    if not t:
+        raise TargetError("%s: no data rows below the header" % path)
+    return np.array(t), np.array(F)
+
+
+class Targets:
+    """All targets of a calibrationDict 'targets' sub-dictionary.
+
+    Entries (each target a sub-dictionary named by the user):
+        peak          label of peaks.dat (endB, endE, C1,i, ...); with
+        value         the target force [N] (> 0)
+        file          or: CSV file of a measured force-time curve
+                      (relative to the case directory)
+        sigma         uncertainty [N] of the value / of each curve point
+        relativeError or: sigma = relativeError*value (curve: *max force)
+        weight        residual multiplier [-] (> 0, default 1)
+    Residual r = weight (F_model - F_target)/sigma.
+    """
+
+    def __init__(self, entries, case, relative_error, where):
+        if not isinstance(entries, dict) or not entries:
+            raise TargetError("%s: 'targets' must be a non-empty "
+                              "sub-dictionary" % where)
+        self.items = []
+        for name, e in entries.items():
+            self.items.append(self._read(name, e, case, relative_error,
+                                         where))
+
+    @staticmethod
+    def _read(name, e, case, relative_error, where):
+        at = "%s: target '%s'" % (where, name)
+        if not isinstance(e, dict):
+            raise TargetError("%s must be a sub-dictionary" % at)
+        known = {"peak", "value", "file", "sigma", "relativeError", "weight"}
+        for k in e:
+            if k not in known:
+                raise TargetError("%s: unknown entry '%s' (valid: %s)"
+                                  % (at, k, ", ".join(sorted(known))))
+
+        def positive(key, default=None):
+            v = e.get(key, default)
+            if v is None:
+                return None
+            if isinstance(v, bool) or not isinstance(v, (int, float)):
+                raise TargetError("%s: '%s' must be a number, not '%s'"
+                                  % (at, key, v))
+            if not v > 0:
+                raise TargetError("%s: '%s' = %g must be > 0"
+                                  % (at, key, v))
+            return float(v)
+
+        weight = positive("weight", 1.0)
+        sigma = positive("sigma")
+        rel = positive("relativeError", relative_error)
+        if "file" in e:
+            if "peak" in e or "value" in e:
+                raise TargetError("%s: give either 'file' (a curve) or "
+                                  "'peak' and 'value', not both" % at)
+            path = os.path.join(case, str(e["file"]))
+            t, F = read_curve(path)
+            if sigma is None:
+                if rel is None:
+                    raise TargetError("%s: give 'sigma' [N] or "
+                                      "'relativeError'" % at)
+                sigma = rel*float(np.max(F))
+                if sigma <= 0:
+                    raise TargetError("%s: all forces in %s are zero; give "
+                                      "'sigma' [N]" % (at, path))
+            return dict(name=name, kind="curve", file=path, time=t,
+                        value=F, sigma=np.full(len(t), sigma),
+                        weight=weight)
+        if "peak" not in e or "value" not in e:
+            raise TargetError("%s: give 'peak' (a label of peaks.dat) and "
+                              "'value' [N], or 'file' (a CSV curve)" % at)
+        v = e["value"]
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            raise TargetError("%s: 'value' must be a force [N], not '%s'"
+                              % (at, v))
+        if v <= 0:
+            raise TargetError("%s: 'value' = %g N: a target force must be "
+                              "positive (compressive contact force)"
+                              % (at, v))
+        if sigma is None:
+            if rel is None:
+                raise TargetError("%s: give 'sigma' [N] or "
+                                  "'relativeError'" % at)
+            sigma = rel*v
+        return dict(name=name, kind="peak", peak=str(e["peak"]),
+                    value=np.array([float(v)]), sigma=np.array([sigma]),
+                    weight=weight)
+
+    def size(self):
+        return sum(len(it["value"]) for it in self.items)
+
+    def model_values(self, run):
+        """Model forces [N] at the targets from a forward run (dict with
+        'peaks': label -> force, 'time', 'force' arrays)."""
+        out = []
+        for it in self.items:
+            if it["kind"] == "peak":
+                if it["peak"] not in run["peaks"]:
+                    raise TargetError(
+                        "target '%s': no peak '%s' in peaks.dat of the "
+                        "forward run (labels: %s); does the protocol reach "
+                        "it?" % (it["name"], it["peak"],
+                                 ", ".join(run["peaks"])))
+                out.append([run["peaks"][it["peak"]]])
+            else:
+                t = np.concatenate(([0.0], run["time"]))
+                F = np.concatenate(([0.0], run["force"]))
+                if it["time"][-1] > t[-1]*(1 + 1e-9):
+                    raise TargetError(
+                        "target '%s': %s ends at %g s, after the forward "
+                        "run's protocol (%g s)"
+                        % (it["name"], it["file"], it["time"][-1], t[-1]))
+                out.append(np.interp(it["time"], t, F))
+        return np.concatenate(out)
+
+    def residuals(self, run):
+        model = self.model_values(run)
+        data = np.concatenate([it["value"] for it in self.items])
+        scale = np.concatenate([it["weight"]/it["sigma"]
+                                for it in self.items])
+        return scale*(model - data)
+
+    def labels(self):
+        out = []
+        for it in self.items:
+            if it["kind"] == "peak":
+                out.append("%s (%s)" % (it["name"], it["peak"]))
+            else:
+                out += ["%s t=%g s" % (it["name"], t) for t in it["time"]]
+        return out
