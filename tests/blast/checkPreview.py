@@ -1,0 +1,58 @@
+#!/usr/bin/python3
+"""Assertions on a run of tutorials/blast/axisymmetricPreview (smoke.sh):
+map check, arrival time at the probe, coupling convergence.
+usage: checkPreview.py case Z"""
+import math
+import re
+import sys
+import numpy as np
+
+case, Z = sys.argv[1], float(sys.argv[2])
+a, H = 8.4e-6, 7.9e-6
+ok = True
+
+
+def check(name, value, ref, tol):
+    global ok
+    err = abs(value - ref)/abs(ref)
+    good = err <= tol
+    ok &= good
+    print(f"{'ok  ' if good else 'FAIL'} {name}: {value:.10g} vs {ref:.10g}"
+          f" (relative {err:.2e}, tolerance {tol:g})")
+
+
+log = open(f"{case}/log.cellBlastFoam").read()
+m = re.search(r"FSI map check: unit pressure, fluid force \(full ring, "
+              r"\(r z 0\)\) \((\S+) (\S+) \S+\) N, solid nodal force "
+              r"\((\S+) (\S+) \S+\) N", log)
+fr, fz, sr, sz = map(float, m.groups())
+check("map conservation, radial", sr, fr, 1e-12)
+check("map conservation, axial", sz, fz, 1e-12)
+check("axial ring force = -pi a^2", fz, -math.pi*a*a, 1e-9)
+check("radial ring force ~ -pi^2 a H/2", fr, -math.pi**2*a*H/2, 1e-3)
+
+# Arrival at the probe element (its centroid from the header)
+f = f"{case}/postProcessing/solidProbes/0/solidProbes.dat"
+zc = None
+for line in open(f):
+    if line.startswith("# probe 0"):
+        zc = float(re.search(r"centroid \S+ (\S+) ", line).group(1))
+d = np.loadtxt(f)
+t, p = d[:, 0], d[:, 1]
+rho0, C0, s, pulse = 1000.0, 1450.0, 1.99, 50e6
+up = (-C0 + math.sqrt(C0**2 + 4*s*pulse/rho0))/(2*s)
+Us = C0 + s*up
+if not np.any(p > pulse/2):
+    print(f"FAIL the pulse never reached the probe (max {p.max():.3g} Pa)")
+    sys.exit(1)
+arrival = t[np.argmax(p > pulse/2)]
+check(f"arrival at the probe (z = {zc*1e6:.3f} um, Us = {Us:.2f} m/s) [s]",
+      arrival, 0.05e-9 + (Z - zc)/Us, 0.03)
+
+c = np.loadtxt(f"{case}/postProcessing/fsi/0/coupling.dat")
+nc = int(np.sum(c[:, 4] == 0))
+print(f"{'ok  ' if nc == 0 else 'FAIL'} coupling: {len(c)} steps, "
+      f"iterations mean {c[:, 2].mean():.2f} max {int(c[:, 2].max())}, "
+      f"{nc} not converged; peak probe pressure {p.max()/1e6:.2f} MPa")
+ok &= nc == 0
+sys.exit(0 if ok else 1)

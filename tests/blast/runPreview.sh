@@ -1,0 +1,19 @@
+#!/bin/bash
+# runPreview.sh dir [Allrun options]: a copy of tutorials/blast/
+# axisymmetricPreview (inputs only) in dir/axisymmetricPreview, run there
+# with the given Allrun options
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+. "$here/../../etc/bashrc"
+src=$here/../../tutorials/blast
+dir=$1; shift
+rm -rf "$dir"
+mkdir -p "$dir/axisymmetricPreview"
+cp "$src/fluidWedgeMesh.py" "$src/plotBlast.py" "$dir/"
+for f in 0.orig constant system Allrun
+do
+    cp -r "$src/axisymmetricPreview/$f" "$dir/axisymmetricPreview/"
+done
+cd "$dir/axisymmetricPreview"
+rm -rf constant/cell.msh constant/polyMesh system/blockMeshDict
+./Allrun "$@"
