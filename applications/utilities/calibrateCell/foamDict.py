@@ -202,11 +202,14 @@ def format_value(v):
     return str(v)
 
 
-def set_subdict(text, name, entries, name_of_text="<text>"):
+def set_subdict(text, name, entries, name_of_text="<text>", units={}):
     """Text with the top-level sub-dictionary `name` replaced by (or, when
-    missing, appended as) one holding `entries` (dict key -> value)."""
+    missing, appended as) one holding `entries` (dict key -> value, with a
+    unit comment from `units` where given)."""
     body = "%s\n{\n%s}" % (name, "".join(
-        "    %-5s %s;\n" % (k, format_value(v)) for k, v in entries.items()))
+        "    %-5s %s;%s\n" % (k, format_value(v),
+                            "  // [%s]" % units[k] if k in units else "")
+        for k, v in entries.items()))
     toks = tokens(text, name_of_text)
     depth = 0
     for k, (t, s, e) in enumerate(toks):
@@ -224,4 +227,9 @@ def set_subdict(text, name, entries, name_of_text="<text>"):
                     return text[:s] + body + text[e2:]
             raise DictError("%s: unclosed sub-dictionary '%s'"
                             % (name_of_text, name))
+    # before the closing '// ****' banner when there is one
+    end = re.search(r"\n// \*+ //\s*$", text)
+    if end:
+        return text[:end.start()].rstrip("\n") + "\n\n" + body + "\n" \
+            + text[end.start():]
     return text.rstrip("\n") + "\n\n" + body + "\n"

@@ -128,7 +128,10 @@ class ForwardModel:
         (every entry of MaterialParameters the solver reported)."""
         text = self.sp_text
         for region, e in materials.items():
-            text = foamDict.set_subdict(text, region, e, self.sp_path)
+            text = foamDict.set_subdict(
+                text, region, e, self.sp_path,
+                {k: ("Pa" if k[0] in "cm" else "1/Pa" if k == "d0" else "s")
+                 for k in e})
         return header + text if header else text
 
     def indenter_properties(self, delta0=None):
