@@ -42,10 +42,12 @@ t, p = d[:, 0], d[:, 1]
 rho0, C0, s, pulse = 1000.0, 1450.0, 1.99, 50e6
 up = (-C0 + math.sqrt(C0**2 + 4*s*pulse/rho0))/(2*s)
 Us = C0 + s*up
-if not np.any(p > pulse/2):
-    print(f"FAIL the pulse never reached the probe (max {p.max():.3g} Pa)")
+# Arrival: the front's mid-point, p > half of the probe's own peak (the
+# coarse far column of the smoke run lowers the peak of the 5 ns pulse)
+if p.max() < 0.5*pulse:
+    print(f"FAIL the pulse reached the probe with {p.max()/1e6:.3g} MPa only")
     sys.exit(1)
-arrival = t[np.argmax(p > pulse/2)]
+arrival = t[np.argmax(p > p.max()/2)]
 check(f"arrival at the probe (z = {zc*1e6:.3f} um, Us = {Us:.2f} m/s) [s]",
       arrival, 0.05e-9 + (Z - zc)/Us, 0.03)
 

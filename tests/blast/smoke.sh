@@ -1,6 +1,6 @@
 #!/bin/bash
 # Smoke run of tutorials/blast/axisymmetricPreview (coarse meshes, a 30 um
-# water column, 25 ns): the whole Allrun chain (cellMesh or its fallback,
+# water column, 22 ns): the whole Allrun chain (cellMesh or its fallback,
 # blockMesh wedge, cellBlastFoam with robin coupling, foamToVTK, solidToFoam
 # + foamToVTK -region solid). Asserts:
 #  - the FSI force map is conservative (solid nodal forces = fluid ring
@@ -8,15 +8,16 @@
 #    pressure = -pi a^2 (the projected area; relative 1e-9), the radial one
 #    = -pi^2 a H/2 within 1e-3 (the polygonal surface against the spheroid);
 #  - the pulse reaches the probe (cytoplasm-nucleus interface, 75 % of the
-#    nucleus height; p > 25 MPa) at 0.05 ns + (Z - z_probe)/Us,
+#    nucleus height; p above half its peak, which must exceed 25 MPa) at
+#    0.05 ns + (Z - z_probe)/Us,
 #    Us = C0 + s up = 1515.65 m/s (50 MPa Hugoniot of water), within 3 %;
 #  - every coupling step converged; fluid and solid VTK files exist.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 work=${TMPDIR:-/tmp}/blastSmoke.$$
 trap 'rm -rf "$work"' EXIT
-bash "$here/runPreview.sh" "$work" -h 1e-6 -far 2e-6 -cell 0.5e-6 \
-    -Z 30e-6 -endTime 2.5e-8 -noPlots > "$work.log" 2>&1 \
+bash "$here/runPreview.sh" "$work" -h 0.25e-6 -far 2e-6 -cell 0.5e-6 \
+    -Z 30e-6 -endTime 2.2e-8 -noPlots > "$work.log" 2>&1 \
     || { cat "$work.log"; exit 1; }
 rm -f "$work.log"
 case=$work/axisymmetricPreview

@@ -34,17 +34,24 @@ if not cases:
 labels += [os.path.basename(os.path.abspath(c)) for c in cases[len(labels):]]
 
 
+def load(f):
+    """Rows of a column file (a last line still being written is skipped)"""
+    rows = [line.split() for line in open(f) if not line.startswith("#")]
+    n = len(rows[0])
+    return np.array([r for r in rows if len(r) == n], dtype=float)
+
+
 def probes(case):
     """time [s] and, for probe 0, p, vM, strainZ, strainRateZ"""
     f = f"{case}/postProcessing/solidProbes/0/solidProbes.dat"
-    d = np.loadtxt(f)
+    d = load(f)
     nProbe = (d.shape[1] - 1)//7
     base = 1 + 5*nProbe
     return d[:, 0], d[:, 1], d[:, 2], d[:, base], d[:, base + 1]
 
 
 def coupling(case):
-    d = np.loadtxt(f"{case}/postProcessing/fsi/0/coupling.dat")
+    d = load(f"{case}/postProcessing/fsi/0/coupling.dat")
     return d
 
 
@@ -96,7 +103,7 @@ def fig10(cases, labels, out):
 
 def interfaceMaxima(case, out):
     f = f"{case}/postProcessing/solidInterfaces/0/interfaceMaxima.dat"
-    d = np.loadtxt(f)
+    d = load(f)
     names = [w.split(":")[1].split("[")[0] for w in
              open(f).readlines()[1].split()[2:] if w.startswith("pMax")]
     fig, ax = plt.subplots(1, 2, figsize=(10, 4))
