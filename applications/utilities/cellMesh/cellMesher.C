@@ -464,6 +464,24 @@ void Foam::cellMesher::generate()
 
 void Foam::cellMesher::write(const fileName& file) const
 {
+    // gmsh can end without error but without elements for some sizes:
+    // never write (or replace a good mesh with) an empty one
+    std::size_t nElements = 0;
+    for (const int dim : {2, 3})
+    {
+        std::vector<int> types;
+        std::vector<std::vector<std::size_t>> tags, nodes;
+        gmsh::model::mesh::getElements(types, tags, nodes, dim);
+        for (const auto& t : tags) nElements += t.size();
+    }
+    if (nElements == 0)
+    {
+        FatalErrorInFunction
+            << "gmsh produced no elements for these sizes; " << file
+            << " is not written. Change the mesh sizes in system/cellMeshDict"
+            << exit(FatalError);
+    }
+
     mkDir(file.path());
     const fileName tmp(file.path()/"." + file.nameLessExt() + "-tmp.msh");
     gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
