@@ -18,7 +18,9 @@ Description
     fastest signal speed |U.n| + c. Optional Newtonian viscous stress.
 
     Every written time holds the conservative state (rho, rhoU, rhoE): a run
-    continued from it is exact. Every time step checks that each cell state
+    continued from it is exact. Writes are guarded (src/foamTools/
+    writeGuard.H): a time directory whose write was interrupted is moved
+    aside at the next start from latestTime. Every time step checks that each cell state
     lies inside the domain of the
     equation of state; if not, the run stops naming the cell, its position
     and the time, and the last written time directory is kept.
@@ -41,6 +43,8 @@ Usage
 #include "rhoEThermo.H"
 #include "riemannFlux.H"
 #include "rungeKuttaScheme.H"
+#include "writeGuard.H"
+#include "inputChecks.H"
 
 int main(int argc, char *argv[])
 {
@@ -54,16 +58,20 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+    foamTools::writeGuard::discardIncompleteTimes(args);
     #include "createTime.H"
     #include "createMesh.H"
+    foamTools::checkCellVolumes(mesh);
     #include "createFields.H"
     #include "createTimeControls.H"
+    foamTools::checkTimeControls(runTime, adjustTimeStep, maxCo, maxDeltaT);
 
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())
     {
         #include "readTimeControls.H"
+        foamTools::checkTimeControls(runTime, adjustTimeStep, maxCo, maxDeltaT);
 
         flux->fluxes(thermo, U, phi, phiU, phiE, amaxSf);
 
@@ -90,7 +98,7 @@ int main(int argc, char *argv[])
 
         thermo.checkStates();
 
-        runTime.write();
+        foamTools::writeGuard::write(runTime);
 
         runTime.printExecutionTime(Info);
     }

@@ -74,7 +74,21 @@ int main(int argc, char *argv[])
 
     #include "createMesh.H"
 
-
+    // Only times after the start are compared: a case without one has not
+    // been run (or its results were removed), which is an error, not a
+    // silent success
+    label nCompared = 0;
+    for (const instant& t : timeDirs)
+    {
+        if (t.value() > 0) ++nCompared;
+    }
+    if (nCompared == 0)
+    {
+        FatalErrorInFunction
+            << "no time directory after 0 s selected in " << args.path()
+            << " (run the solver first, or check -time/-latestTime)"
+            << exit(FatalError);
+    }
 
     forAll(timeDirs, timei)
     {

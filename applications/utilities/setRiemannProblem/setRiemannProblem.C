@@ -47,6 +47,26 @@ int main(int argc, char *argv[])
         mesh
     );
 
+    // Each side's state must lie in the law's domain: say which side of
+    // system/riemannProblemDict is wrong before any cell is set
+    for (const word side : {"left", "right"})
+    {
+        const riemannProblem::state& s =
+            side == "left" ? problem.left : problem.right;
+        const scalarField rhoS(1, s.rho), pS(1, s.p);
+        scalarField eS(1);
+        thermo.eFromRhoP(rhoS, pS, eS);
+        string reason;
+        if (thermo.firstInvalid(rhoS, eS, reason) >= 0)
+        {
+            FatalErrorInFunction
+                << args.path()/"system/riemannProblemDict" << ": state '"
+                << side << "' (rho = " << s.rho << " kg/m^3, p = " << s.p
+                << " Pa) is outside the domain of the equation of state: "
+                << reason << exit(FatalError);
+        }
+    }
+
     scalarField& rho = thermo.rho().primitiveFieldRef();
     scalarField& p = thermo.p().primitiveFieldRef();
     const vectorField& C = mesh.C().primitiveField();
