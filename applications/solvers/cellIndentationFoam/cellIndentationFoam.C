@@ -40,6 +40,7 @@ Usage
 #include "OFstream.H"
 #include "OSspecific.H"
 
+#include "Checkpoint.H"
 #include "GmshReader.H"
 #include "IndentationProtocol.H"
 #include "ResultWriter.H"
@@ -54,6 +55,7 @@ Usage
 #include <map>
 #include <memory>
 #include <sstream>
+#include <unistd.h>
 
 using namespace Foam;
 
