@@ -9,8 +9,11 @@
 #   key      an entry of system/cellMeshDict, constant/indenterProperties
 #            or constant/solidProperties (replaced where it is found), or
 #            membraneAs=<region>: the membrane takes that region's paper
-#            material (c0, mu1, tau1) of the chosen parameterSet
+#            material (c0, mu1, tau1) of the chosen parameterSet, or
+#            material.<region>=c0,mu1,tau1: that region's material [Pa, Pa, s]
 # Prints: name, elements, delta0 [um], F_B [nN], C1,i [nN], CPU time [s].
+# FULL=1 keeps the case's whole protocol (Table 1) and prints the nine
+# peaks and F_E [nN] as well.
 # WORK (default: a temporary directory) keeps the case folders.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -23,7 +26,7 @@ rm -rf "$c"
 cp -r "$here/$src" "$c"
 cd "$c"
 /usr/bin/python3 - "$@" <<'PY'
-import re, sys
+import os, re, sys
 files = ["system/cellMeshDict", "constant/indenterProperties",
          "constant/solidProperties"]
 text = {f: open(f).read() for f in files}
@@ -31,7 +34,8 @@ text = {f: open(f).read() for f in files}
 # forceTarget), B and one fast cycle
 A = "3e-6" if re.search(r"\nforceTarget\s", text["constant/indenterProperties"]) \
     or any(kv.startswith("forceTarget=") for kv in sys.argv[1:]) else "1.41e-6"
-text["constant/indenterProperties"] = re.sub(
+if os.environ.get("FULL") != "1":
+  text["constant/indenterProperties"] = re.sub(
     r"protocol\s*\(.*\);", """protocol
 (
     (A   load    0.3e-6  %s)
@@ -42,6 +46,12 @@ text["constant/indenterProperties"] = re.sub(
 PAPER = {"membrane": (166.67, 13.89, 3000), "cytoplasm": (1.67, 107.78, 0.01)}
 for kv in sys.argv[1:]:
     k, v = kv.split("=", 1)
+    if k.startswith("material."):
+        c0, mu1, tau1 = (float(x) for x in v.split(","))
+        text["constant/solidProperties"] += (
+            "\n%s { c0 %g; d0 0; mu1 %g; tau1 %g; }\n"
+            % (k.split(".", 1)[1], c0, mu1, tau1))
+        continue
     if k == "membraneAs":
         c0, mu1, tau1 = PAPER[v]
         text["constant/solidProperties"] += (
@@ -76,6 +86,12 @@ d0 = float(m.group(1))*1e6 if m else 1.41
 pk = {l.split()[0]: float(l.split()[3])*1e9
       for l in open("postProcessing/indentation/peaks.dat")
       if not l.startswith("#")}
-print("| %s | %s | %.3f | %.3f | %.2f | %s |"
-      % (sys.argv[1], ne, d0, pk["endB"], pk["C1,i"], cpu))
+if "endE" in pk:
+    keys = ["endB"] + ["C%d,%s" % (c, r) for c in (1, 2, 3)
+                       for r in ("i", "ii", "iii")] + ["endE"]
+    print("| %s | %s | %.3f | %s | %s |" % (sys.argv[1], ne, d0,
+          " | ".join("%.3f" % pk[k] for k in keys), cpu))
+else:
+    print("| %s | %s | %.3f | %.3f | %.2f | %s |"
+          % (sys.argv[1], ne, d0, pk["endB"], pk["C1,i"], cpu))
 PY

@@ -13,6 +13,14 @@ Foam::cellGeometry::meshModeNames
 });
 
 
+const Foam::Enum<Foam::cellGeometry::nucleusShape>
+Foam::cellGeometry::nucleusShapeNames
+({
+    { nucleusShape::centredSpheroid, "centredSpheroid" },
+    { nucleusShape::scaledCell, "scaledCell" },
+});
+
+
 Foam::scalar Foam::cellGeometry::readInRange
 (
     const dictionary& dict,
@@ -52,6 +60,18 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     const dictionary dict(is);
 
     mode_ = meshModeNames.get("mode", dict);
+    shape_ = nucleusShapeNames.getOrDefault
+    (
+        "nucleusShape", dict, nucleusShape::centredSpheroid, true
+    );
+    if (shape_ == nucleusShape::scaledCell && !axisymmetric())
+    {
+        FatalIOErrorInFunction(dict)
+            << "nucleusShape scaledCell is available with mode axisymmetric "
+            << "only (the structured 3D meshes have a centred spheroid); "
+            << "use nucleusShape centredSpheroid with mode "
+            << meshModeNames[mode_] << exit(FatalIOError);
+    }
     if (dict.isDict("fluid"))
     {
         fluidDict_ = dict.subDict("fluid");
@@ -107,9 +127,9 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     if (!(gap_ > 0))
     {
         FatalIOErrorInFunction(dict)
-            << "nucleusVolumeFraction = " << f_ << ": the nucleus (a full "
-            << "ellipsoid of diameter " << 2*an() << " m and height "
-            << 2*cn() << " m centred at z = " << zn() << " m) is not inside "
+            << "nucleusVolumeFraction = " << f_ << ": the nucleus ("
+            << nucleusShapeNames[shape_] << " of diameter " << 2*an()
+            << " m and height " << nucleusHeight() << " m) is not inside "
             << "the cell: it reaches " << -gap_ << " m into the membrane "
             << "(membraneThickness " << t_ << " m)" << exit(FatalIOError);
     }
@@ -175,11 +195,14 @@ Foam::scalar Foam::cellGeometry::nucleusGap() const
     {
         X[i] = outer(0.5*pi*i/nTheta);
     }
-    scalar gap = zn() - cn();
+    // The centred spheroid must also clear the substrate; the scaled cell
+    // stands on it (phi in [0, pi/2] only)
+    scalar gap = scaledNucleus() ? GREAT : zn() - cn();
     const label nNuc = 800;
+    const scalar phiMax = scaledNucleus() ? 0.5*pi : pi;
     for (label j = 0; j <= nNuc; ++j)
     {
-        const scalar phi = pi*j/nNuc;
+        const scalar phi = phiMax*j/nNuc;
         const scalar r = an()*sin(phi);
         const scalar z = zn() + cn()*cos(phi);
         scalar d = GREAT;
@@ -209,13 +232,13 @@ Foam::scalar Foam::cellGeometry::cellVolume() const
 
 Foam::scalar Foam::cellGeometry::nucleusArea() const
 {
-    return 0.5*pi*an()*cn();
+    return (scaledNucleus() ? 0.25 : 0.5)*pi*an()*cn();
 }
 
 
 Foam::scalar Foam::cellGeometry::nucleusVolume() const
 {
-    return 4.0/3.0*pi*sqr(an())*cn();
+    return (scaledNucleus() ? 2.0/3.0 : 4.0/3.0)*pi*sqr(an())*cn();
 }
 
 

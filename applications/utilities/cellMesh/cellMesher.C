@@ -198,29 +198,54 @@ void Foam::cellMesher::buildSection()
         );
     }
 
-    // Nucleus: half ellipse on the axis
     const scalar an = geom_.an(), cn = geom_.cn(), zn = geom_.zn();
-    const int n0 = point(rz(0, zn - cn));
-    const int n1 = point(rz(an, zn));
-    const int n2 = point(rz(0, zn + cn));
-    const int nc = point(rz(0, zn));
-    const int nMajor = an >= cn ? n1 : n2;
-    const int arc1 = geo::addEllipseArc(n0, nc, nMajor, n1);
-    const int arc2 = geo::addEllipseArc(n1, nc, nMajor, n2);
-    nucleusAxis_ = geo::addLine(n2, n0);
-    nucleus_.push_back(surface({arc1, arc2, nucleusAxis_}));
+    if (geom_.scaledNucleus())
+    {
+        // Nucleus: quarter ellipse on the substrate and the axis
+        const int n1 = point(rz(an, 0));
+        const int n2 = point(rz(0, cn));
+        const int arc =
+            geo::addEllipseArc(n1, origin, an >= cn ? n1 : n2, n2);
+        const int nucleusBottom = geo::addLine(origin, n1);
+        nucleusAxis_ = geo::addLine(n2, origin);
+        nucleus_.push_back(surface({nucleusBottom, arc, nucleusAxis_}));
 
-    // Cytoplasm: between substrate, membrane, axis and nucleus
-    cytoplasmBottom_ = geo::addLine(origin, innerPt[N]);
-    const int axisTop = geo::addLine(innerPt[0], n2);
-    const int axisBottom = geo::addLine(n0, origin);
-    std::vector<int> loop{cytoplasmBottom_};
-    for (label k = N - 1; k >= 0; --k) loop.push_back(-innerCurve[k]);
-    loop.insert(loop.end(), {axisTop, -arc2, -arc1, axisBottom});
-    cytoplasm_.push_back(surface(loop));
+        // Cytoplasm: between substrate, membrane, axis and nucleus
+        cytoplasmBottom_ = geo::addLine(n1, innerPt[N]);
+        const int axisTop = geo::addLine(innerPt[0], n2);
+        std::vector<int> loop{cytoplasmBottom_};
+        for (label k = N - 1; k >= 0; --k) loop.push_back(-innerCurve[k]);
+        loop.insert(loop.end(), {axisTop, -arc});
+        cytoplasm_.push_back(surface(loop));
 
-    bottom_ = {cytoplasmBottom_, radial[N]};
-    axis_ = {axisBottom, nucleusAxis_, axisTop, radial[0]};
+        bottom_ = {nucleusBottom, cytoplasmBottom_, radial[N]};
+        axis_ = {nucleusAxis_, axisTop, radial[0]};
+    }
+    else
+    {
+        // Nucleus: half ellipse on the axis, centred at mid-height
+        const int n0 = point(rz(0, zn - cn));
+        const int n1 = point(rz(an, zn));
+        const int n2 = point(rz(0, zn + cn));
+        const int nc = point(rz(0, zn));
+        const int nMajor = an >= cn ? n1 : n2;
+        const int arc1 = geo::addEllipseArc(n0, nc, nMajor, n1);
+        const int arc2 = geo::addEllipseArc(n1, nc, nMajor, n2);
+        nucleusAxis_ = geo::addLine(n2, n0);
+        nucleus_.push_back(surface({arc1, arc2, nucleusAxis_}));
+
+        // Cytoplasm: between substrate, membrane, axis and nucleus
+        cytoplasmBottom_ = geo::addLine(origin, innerPt[N]);
+        const int axisTop = geo::addLine(innerPt[0], n2);
+        const int axisBottom = geo::addLine(n0, origin);
+        std::vector<int> loop{cytoplasmBottom_};
+        for (label k = N - 1; k >= 0; --k) loop.push_back(-innerCurve[k]);
+        loop.insert(loop.end(), {axisTop, -arc2, -arc1, axisBottom});
+        cytoplasm_.push_back(surface(loop));
+
+        bottom_ = {cytoplasmBottom_, radial[N]};
+        axis_ = {axisBottom, nucleusAxis_, axisTop, radial[0]};
+    }
 
     geo::synchronize();
     {
@@ -454,8 +479,9 @@ void Foam::cellMesher::generate()
     Info<< "    nucleus volume fraction  mesh "
         << nucMesh/(axi ? tot.revolved : tot.measure)
         << "  requested " << geom_.nucleusFraction() << nl
-        << "    nucleus diameter " << 2*geom_.an() << " m, height "
-        << 2*geom_.cn() << " m, centre z " << geom_.zn()
+        << "    nucleus (" << cellGeometry::nucleusShapeNames[geom_.shape()]
+        << ") diameter " << 2*geom_.an() << " m, height "
+        << geom_.nucleusHeight() << " m, centre z " << geom_.zn()
         << " m, smallest gap to the membrane " << geom_.gap() << " m" << nl
         << "    membrane thickness " << geom_.t() << " m, "
         << geom_.layers() << " element layers" << nl << endl;
