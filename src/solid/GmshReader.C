@@ -81,6 +81,15 @@ solid::Mesh solid::readGmsh(const std::string& fileName, double scale)
             "gmsh could not read '" + fileName + "': " + e.what()
         );
     }
+    catch (const std::string& e)
+    {
+        // gmsh 4.8's API throws its last error message as a std::string
+        throw SolidError
+        (
+            SolidError::Kind::io,
+            "gmsh could not read '" + fileName + "': " + e
+        );
+    }
 
     gmsh::vectorpair groups;
     gmsh::model::getPhysicalGroups(groups);

@@ -4,7 +4,14 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace
 {
@@ -31,17 +38,51 @@ hid_t checkId(hid_t id, const std::string& what)
 // RAII file handle
 struct File
 {
+    enum class Mode { create, readWrite, readOnly };
     hid_t id;
-    File(const std::string& name, bool create)
+    File(const std::string& name, Mode mode)
     {
         H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-        id = create
+        id = mode == Mode::create
             ? H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)
-            : H5Fopen(name.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+            : H5Fopen(name.c_str(), mode == Mode::readWrite ? H5F_ACC_RDWR
+                      : H5F_ACC_RDONLY, H5P_DEFAULT);
         checkId(id, "open '" + name + "'");
     }
-    ~File() { H5Fclose(id); }
+    //- Close now (flushes), reporting a failure
+    void close()
+    {
+        const hid_t f = id;
+        id = -1;
+        check(H5Fclose(f), "close file");
+    }
+    ~File() { if (id >= 0) H5Fclose(id); }
 };
+
+// Atomic replacement: tmp (complete) is flushed to disk, then renamed over
+// target, so that target is always either the old or the new file
+void commitFile(const std::string& tmp, const std::string& target)
+{
+    const int fd = ::open(tmp.c_str(), O_RDONLY);
+    if (fd < 0 || ::fsync(fd) != 0)
+    {
+        if (fd >= 0) ::close(fd);
+        throw SolidError
+        (
+            SolidError::Kind::io, "cannot flush '" + tmp + "': "
+          + std::strerror(errno)
+        );
+    }
+    ::close(fd);
+    if (std::rename(tmp.c_str(), target.c_str()) != 0)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::io, "cannot rename '" + tmp + "' to '"
+          + target + "': " + std::strerror(errno)
+        );
+    }
+}
 
 struct Group
 {
@@ -142,19 +183,30 @@ solid::ResultWriter::ResultWriter
 {
     if (append)
     {
+        // The .xmf is derived from the .h5: a run killed between the two
+        // renames of write() left it one step behind
         steps_ = steps(h5File());
+        writeXdmf(model);
         return;
     }
-    File f(h5File(), true);
-    Group mesh(f.id, "mesh", true);
-    const Mesh& m = model.mesh();
-    std::vector<double> X(3*m.nNodes());
-    for (int n = 0; n < m.nNodes(); ++n)
-        for (int i = 0; i < 3; ++i) X[3*n + i] = m.X[n](i);
-    writeArray(mesh.id, "coordinates", X.data(), m.nNodes(), 3);
-    writeArray(mesh.id, "connectivity", m.conn.data(), m.nElements(), m.nen());
-    writeArray(mesh.id, "region", m.region.data(), m.nElements(), 1);
-    Group s(f.id, "steps", true);
+    const std::string tmp = h5File() + ".tmp";
+    {
+        File f(tmp, File::Mode::create);
+        {
+            Group mesh(f.id, "mesh", true);
+            const Mesh& m = model.mesh();
+            std::vector<double> X(3*m.nNodes());
+            for (int n = 0; n < m.nNodes(); ++n)
+                for (int i = 0; i < 3; ++i) X[3*n + i] = m.X[n](i);
+            writeArray(mesh.id, "coordinates", X.data(), m.nNodes(), 3);
+            writeArray(mesh.id, "connectivity", m.conn.data(),
+                       m.nElements(), m.nen());
+            writeArray(mesh.id, "region", m.region.data(), m.nElements(), 1);
+            Group s(f.id, "steps", true);
+        }
+        f.close();
+    }
+    commitFile(tmp, h5File());
 }
 
 
@@ -174,31 +226,53 @@ int solid::ResultWriter::write(Model& model)
         dT[e] = o.temperatureRise;
     }
     const int k = steps_.empty() ? 0 : steps_.back().first + 1;
+    // Copy, append, replace: a kill at any instant leaves the previous
+    // file intact (costs one copy of the file per step)
+    const std::string tmp = h5File() + ".tmp";
+    try
     {
-        File f(h5File(), false);
-        Group steps(f.id, "steps", false);
-        Group g(steps.id, std::to_string(k), true);
-        writeTime(g.id, model.time);
-        const auto u = nodeVectors(model, model.u);
-        const auto v = nodeVectors(model, model.v);
-        writeArray(g.id, "displacement", u.data(), m.nNodes(), 3);
-        writeArray(g.id, "velocity", v.data(), m.nNodes(), 3);
-        writeArray(g.id, "cauchyStress", sigma.data(), ne, 9);
-        writeArray(g.id, "pressure", p.data(), ne, 1);
-        writeArray(g.id, "vonMises", vm.data(), ne, 1);
-        writeArray(g.id, "J", J.data(), ne, 1);
-        writeArray(g.id, "temperatureRise", dT.data(), ne, 1);
-        writeArray(g.id, "region", m.region.data(), ne, 1);
-        Group r(g.id, "restart", true);
-        writeArray(r.id, "u", model.u.data(), model.u.size(), 1);
-        writeArray(r.id, "v", model.v.data(), model.v.size(), 1);
-        writeArray(r.id, "pressure", model.pressure.data(),
-                   model.pressure.size(), 1);
-        const auto& ps = model.pointState().oldData();
-        const auto& es = model.elementState().oldData();
-        writeArray(r.id, "pointState", ps.data(), ps.size(), 1);
-        writeArray(r.id, "elementState", es.data(), es.size(), 1);
+        std::filesystem::copy_file
+        (
+            h5File(), tmp, std::filesystem::copy_options::overwrite_existing
+        );
     }
+    catch (const std::filesystem::filesystem_error& e)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::io, "cannot copy '" + h5File() + "' to '"
+          + tmp + "': " + e.what()
+        );
+    }
+    {
+        File f(tmp, File::Mode::readWrite);
+        {
+            Group steps(f.id, "steps", false);
+            Group g(steps.id, std::to_string(k), true);
+            writeTime(g.id, model.time);
+            const auto u = nodeVectors(model, model.u);
+            const auto v = nodeVectors(model, model.v);
+            writeArray(g.id, "displacement", u.data(), m.nNodes(), 3);
+            writeArray(g.id, "velocity", v.data(), m.nNodes(), 3);
+            writeArray(g.id, "cauchyStress", sigma.data(), ne, 9);
+            writeArray(g.id, "pressure", p.data(), ne, 1);
+            writeArray(g.id, "vonMises", vm.data(), ne, 1);
+            writeArray(g.id, "J", J.data(), ne, 1);
+            writeArray(g.id, "temperatureRise", dT.data(), ne, 1);
+            writeArray(g.id, "region", m.region.data(), ne, 1);
+            Group r(g.id, "restart", true);
+            writeArray(r.id, "u", model.u.data(), model.u.size(), 1);
+            writeArray(r.id, "v", model.v.data(), model.v.size(), 1);
+            writeArray(r.id, "pressure", model.pressure.data(),
+                       model.pressure.size(), 1);
+            const auto& ps = model.pointState().oldData();
+            const auto& es = model.elementState().oldData();
+            writeArray(r.id, "pointState", ps.data(), ps.size(), 1);
+            writeArray(r.id, "elementState", es.data(), es.size(), 1);
+        }   // groups closed before the file, so that close() flushes all
+        f.close();
+    }
+    commitFile(tmp, h5File());
     steps_.emplace_back(k, model.time);
     writeXdmf(model);
     return k;
@@ -210,12 +284,13 @@ void solid::ResultWriter::writeXdmf(const Model& model) const
     const Mesh& m = model.mesh();
     const std::string h5 = h5File().substr(h5File().find_last_of('/') + 1);
     const int nn = m.nNodes(), ne = m.nElements();
-    std::ofstream os(xdmfFile());
+    const std::string tmp = xdmfFile() + ".tmp";
+    std::ofstream os(tmp);
     if (!os)
     {
         throw SolidError
         (
-            SolidError::Kind::io, "cannot write '" + xdmfFile() + "'"
+            SolidError::Kind::io, "cannot write '" + tmp + "'"
         );
     }
     os  << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n<Domain>\n"
@@ -266,6 +341,15 @@ void solid::ResultWriter::writeXdmf(const Model& model) const
         os  << "  </Grid>\n";
     }
     os  << "</Grid>\n</Domain>\n</Xdmf>\n";
+    os.close();
+    if (!os)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::io, "cannot write '" + tmp + "'"
+        );
+    }
+    commitFile(tmp, xdmfFile());
 }
 
 
@@ -274,15 +358,26 @@ std::vector<std::pair<int, double>> solid::ResultWriter::steps
     const std::string& h5
 )
 {
-    File f(h5, false);
+    File f(h5, File::Mode::readOnly);
     Group g(f.id, "steps", false);
     hsize_t n = 0;
     check(H5Gget_num_objs(g.id, &n), "count steps");
     std::vector<std::pair<int, double>> out;
     for (hsize_t i = 0; i < n; ++i)
     {
-        char name[64];
-        H5Gget_objname_by_idx(g.id, i, name, sizeof(name));
+        char name[64] = "";
+        if (H5Gget_objname_by_idx(g.id, i, name, sizeof(name)) <= 0
+         || std::string(name).find_first_not_of("0123456789") !=
+                std::string::npos
+         || std::string(name).size() > 9)
+        {
+            throw SolidError
+            (
+                SolidError::Kind::io, "'" + h5 + "': /steps holds '"
+              + std::string(name) + "', not a step number (not a result "
+                "file of the solid library?)"
+            );
+        }
         Group s(g.id, name, false);
         out.emplace_back(std::stoi(name), readTime(s.id));
     }
@@ -293,7 +388,7 @@ std::vector<std::pair<int, double>> solid::ResultWriter::steps
 
 void solid::ResultWriter::restart(const std::string& h5, int k, Model& model)
 {
-    File f(h5, false);
+    File f(h5, File::Mode::readOnly);
     Group steps(f.id, "steps", false);
     const std::string name = std::to_string(k);
     if (H5Lexists(steps.id, name.c_str(), H5P_DEFAULT) <= 0)

@@ -1,0 +1,183 @@
+// ResultWriter's atomic writes: a writer process SIGKILLed at random
+// instants (many of them inside a write) and restarted from the last step
+// of its file each time must leave a readable .h5/.xmf after every kill and
+// end with the same steps as an uninterrupted run (restart state to 1e-10).
+
+#include "Loads.H"
+#include "Model.H"
+#include "ResultWriter.H"
+#include "SolidError.H"
+#include "SolidTestUtils.H"
+#include "StaticSolver.H"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <thread>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+using namespace solid;
+
+namespace
+{
+
+const int nSteps = 40;
+
+std::unique_ptr<Model> creepModel()
+{
+    Mesh m = Mesh::rectangle(12, 12, 0, 1e-5, 0, 1e-5);
+    std::unique_ptr<Model> model(new Model(m));
+    model->setMaterial("solid", solidTest::material(13.33, 0,
+                                                    {{862.22, 0.5}}));
+    model->fix("left", 0);
+    model->fix("bottom", 1);
+    model->add(std::make_shared<PressureLoad>("top",
+        [](double t) { return 50.0*std::min(t/0.2, 1.0); }));
+    model->initialise();
+    return model;
+}
+
+bool exists(const std::string& f) { return std::ifstream(f).good(); }
+
+//- Run (or continue from the last step of base.h5) to nSteps steps
+void run(const std::string& base)
+{
+    auto model = creepModel();
+    StaticSolver solver(*model);
+    std::unique_ptr<ResultWriter> w;
+    int k = 0;
+    if (exists(base + ".h5"))
+    {
+        const auto steps = ResultWriter::steps(base + ".h5");
+        k = steps.back().first;
+        ResultWriter::restart(base + ".h5", k, *model);
+        w.reset(new ResultWriter(base, *model, true));
+    }
+    else
+    {
+        w.reset(new ResultWriter(base, *model));
+        k = w->write(*model);
+    }
+    while (k < nSteps)
+    {
+        solver.step(0.02);
+        k = w->write(*model);
+    }
+}
+
+std::string text(const std::string& f)
+{
+    std::ifstream is(f);
+    std::stringstream ss;
+    ss << is.rdbuf();
+    return ss.str();
+}
+
+} // namespace
+
+
+TEST(AtomicResultWriter, SigkillDuringWritesLosesNothing)
+{
+    for (const char* f : {"ref.h5", "ref.xmf", "killed.h5", "killed.xmf",
+                          "killed.h5.tmp", "killed.xmf.tmp"})
+    {
+        std::remove(f);
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    run("ref");
+    const double tRun = std::chrono::duration<double, std::milli>
+        (std::chrono::steady_clock::now() - t0).count();
+    ASSERT_EQ(ResultWriter::steps("ref.h5").size(), std::size_t(nSteps + 1));
+
+    std::mt19937 gen(12345);
+    // Kill between 0 and 3 steps' time after the start of each process
+    std::uniform_real_distribution<double> delay(0, 3*tRun/nSteps);  // [ms]
+    int kills = 0, insideWrite = 0, starts = 0;
+    bool finished = false;
+    while (!finished && starts < 400)
+    {
+        ++starts;
+        const pid_t pid = fork();
+        ASSERT_GE(pid, 0);
+        if (pid == 0)
+        {
+            try { run("killed"); } catch (...) { _exit(2); }
+            _exit(0);
+        }
+        std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(delay(gen)));
+        const bool killed = kill(pid, SIGKILL) == 0;
+        int status = 0;
+        waitpid(pid, &status, 0);
+        if (WIFEXITED(status))
+        {
+            ASSERT_EQ(WEXITSTATUS(status), 0) << "the writer failed";
+            finished = true;
+        }
+        else if (killed)
+        {
+            ++kills;
+            if (exists("killed.h5.tmp") || exists("killed.xmf.tmp"))
+            {
+                ++insideWrite;
+            }
+        }
+        // After every kill: the file, if any, is complete and readable
+        if (exists("killed.h5"))
+        {
+            std::vector<std::pair<int, double>> steps;
+            ASSERT_NO_THROW(steps = ResultWriter::steps("killed.h5"))
+                << "after kill " << kills;
+            ASSERT_FALSE(steps.empty());
+            auto m = creepModel();
+            ASSERT_NO_THROW(ResultWriter::restart("killed.h5",
+                                                  steps.back().first, *m));
+        }
+        if (exists("killed.xmf"))
+        {
+            const std::string x = text("killed.xmf");
+            ASSERT_GE(x.size(), 26u);
+            EXPECT_EQ(x.substr(x.size() - 26), "</Grid>\n</Domain>\n</Xdmf>\n")
+                << "truncated XDMF after kill " << kills;
+        }
+    }
+    std::printf("AtomicResultWriter: uninterrupted run %.0f ms; %d starts, %d SIGKILLs, %d inside a "
+                "write (temporary file present)\n", tRun, starts, kills,
+                insideWrite);
+    ASSERT_TRUE(finished);
+    EXPECT_GE(insideWrite, 1) << "no kill landed inside a write";
+
+    // Same steps as the uninterrupted run
+    const auto ref = ResultWriter::steps("ref.h5");
+    const auto got = ResultWriter::steps("killed.h5");
+    ASSERT_EQ(got.size(), ref.size());
+    for (std::size_t i = 0; i < ref.size(); ++i)
+    {
+        EXPECT_EQ(got[i].first, ref[i].first);
+        EXPECT_NEAR(got[i].second, ref[i].second, 1e-12);
+        auto a = creepModel(), b = creepModel();
+        ResultWriter::restart("ref.h5", ref[i].first, *a);
+        ResultWriter::restart("killed.h5", got[i].first, *b);
+        const double scale = std::max(a->u.cwiseAbs().maxCoeff(), 1e-300);
+        EXPECT_LE((a->u - b->u).cwiseAbs().maxCoeff(), 1e-10*scale)
+            << "step " << i;
+        const double ps = std::max(a->pressure.cwiseAbs().maxCoeff(),
+                                   1e-300);
+        EXPECT_LE((a->pressure - b->pressure).cwiseAbs().maxCoeff(),
+                  1e-10*ps) << "step " << i;
+    }
+    std::string x = text("killed.xmf");
+    for (std::size_t p; (p = x.find("killed.h5")) != std::string::npos;)
+    {
+        x.replace(p, 9, "ref.h5");
+    }
+    EXPECT_TRUE(x == text("ref.xmf")) << "the XDMF differs from the "
+        "uninterrupted run's";
+}
