@@ -98,6 +98,10 @@ expect boxSmallerThanCell 's/^boxSize .*/boxSize 10e-6;/' \
     "boxSize = 1e-05 m is outside the valid range"
 expect farFinerThanNear 's/^farSize .*/farSize 1e-6;/' \
     "farSize = 1e-06 m is outside the valid range \[2e-06"
+expect unknownNucleusShape 's/^mode .*/mode axisymmetric; nucleusShape cube;/' \
+    "cube" "centredSpheroid" "scaledCell"
+expect scaledNucleus3D 's/^mode .*/mode full3D; nucleusShape scaledCell;/' \
+    "nucleusShape scaledCell is available with mode axisymmetric only"
 expect missingNearSize '/^nearSize/d' "nearSize"
 
 echo "badInput: $((n - failures)) passed, $failures failed"

@@ -318,8 +318,51 @@ def full3D():
     cell3D("full3D", [(0.8e-6, 0.8e-6, 0.6e-6, 1)])
 
 
+def scaledNucleus():
+    """nucleusShape scaledCell: the nucleus is the cell scaled by cbrt(f),
+    a semi-spheroid standing on the substrate (11.65 x 5.48 um)"""
+    s = f**(1.0/3.0)
+    an, hn = s*a, s*H
+    with tempfile.TemporaryDirectory() as tmp:
+        X, g = run(os.path.join(tmp, "scaled"), {
+            "mode": "axisymmetric", "cellDiameter": D, "cellHeight": H,
+            "nucleusVolumeFraction": f, "nucleusShape": "scaledCell",
+            "membraneThickness": t, "membraneLayers": 1,
+            "nucleusSize": 0.5e-6, "cytoplasmSize": 0.5e-6,
+            "membraneSize": 0.4e-6, "contactRadius": 5e-6,
+            "contactSize": 0.2e-6, "contactDepth": 1.5e-6})
+        A = {r: quadMeasures(X, g[r][1]) for r in
+             ("nucleus", "cytoplasm", "membrane")}
+        volV = sum(v[1] for v in A.values())
+        exactV = 2.0/3.0*np.pi*a**2*H
+        eV = abs(volV/exactV - 1)
+        check(eV < 1e-3, f"revolved cell volume error {eV:.2e} (< 1e-3)")
+        exactN = 2.0/3.0*np.pi*an**2*hn
+        eN = abs(A["nucleus"][1]/exactN - 1)
+        check(eN < 2e-3, f"nucleus volume error {eN:.2e} against "
+              "2/3 pi a_n^2 h_n (< 2e-3)")
+        frac = A["nucleus"][1]/volV
+        check(abs(frac/f - 1) < 5e-3, f"nucleus volume fraction {frac:.5f}")
+        nuc = np.array([X[n][:2] for e in g["nucleus"][1] for n in e[3]])
+        check(abs(nuc[:, 1].max()/hn - 1) < 1e-9
+              and abs(nuc[:, 0].max()/an - 1) < 1e-9
+              and abs(nuc[:, 1].min()) < 1e-15,
+              f"nucleus spans r <= {nuc[:, 0].max():.4e} m, "
+              f"0 <= z <= {nuc[:, 1].max():.4e} m (exact {an:.4e}, {hn:.4e})")
+        # Nucleus nodes on its curved surface lie on the scaled ellipse
+        q = (nuc[:, 0]/an)**2 + (nuc[:, 1]/hn)**2
+        check(q.max() < 1 + 1e-9, f"nucleus inside its ellipse "
+              f"(max {q.max():.12f})")
+        bottomNodes = {n for e in g["fixedBottom"][1] for n in e[3]}
+        nucNodes = {n for e in g["nucleus"][1] for n in e[3]}
+        onBottom = [X[n][0] for n in bottomNodes & nucNodes]
+        check(len(onBottom) > 2 and abs(max(onBottom)/an - 1) < 1e-9,
+              f"the nucleus stands on fixedBottom ({len(onBottom)} nodes, "
+              f"up to r = {max(onBottom):.4e} m)")
+
+
 {"axisymmetric": axisymmetric, "quarter3D": quarter3D,
  "full3D": full3D, "shapes3D": shapes3D,
- "docExample": docExample}[sys.argv[1]]()
+ "docExample": docExample, "scaledNucleus": scaledNucleus}[sys.argv[1]]()
 print(f"testCellMesh {sys.argv[1]}: {len(failures)} failed")
 sys.exit(1 if failures else 0)

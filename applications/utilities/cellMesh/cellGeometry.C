@@ -62,7 +62,7 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     mode_ = meshModeNames.get("mode", dict);
     shape_ = nucleusShapeNames.getOrDefault
     (
-        "nucleusShape", dict, nucleusShape::centredSpheroid, true
+        "nucleusShape", dict, nucleusShape::centredSpheroid
     );
     if (shape_ == nucleusShape::scaledCell && !axisymmetric())
     {
