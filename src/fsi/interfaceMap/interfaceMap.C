@@ -215,7 +215,9 @@ Foam::List<Foam::interfaceMap::stencil> Foam::interfaceMap::projectAll
             << " overlap of the two sides); worst " << worstPoint
             << " at " << worst << " m (mapTolerance " << tol
             << " x solid face size). Check the fluid patch, the solid face"
-            << " set and the units of both meshes." << exit(FatalError);
+            << " set and the units of both meshes (constant/fsiProperties"
+            << " interface: fluidPatch, solidFaceSet, mapTolerance;"
+            << " constant/solidProperties: mesh)." << exit(FatalError);
     }
     return st;
 }

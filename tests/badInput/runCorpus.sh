@@ -1,0 +1,161 @@
+#!/bin/bash
+# The bad-input corpus (tests/badInput/corpus): every row breaks one input
+# of a good case and runs a real application on it. Each row must
+#   - exit non-zero, without a signal or timeout (exit < 124),
+#   - print no crash trace (segmentation fault, sigFpe/sigSegv, abort,
+#     stack trace, uncaught exception, sanitizer report),
+#   - name the file (regex column 'file') and the entry (column 'entry'),
+#   - leave every file that existed before the run unchanged (md5 of each
+#     file of the case, logs excepted: the good results stay good).
+# Usage: runCorpus.sh [-l | --list] [NAME-REGEX]
+#   -l  print the listing (name, base, application, what is broken)
+set -uo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+corpus=$here/corpus
+
+# Rows: name | base | application | file regex | entry regex | edit
+rows() { grep -v '^[[:space:]]*\(#\|$\)' "$corpus"; }
+field() { awk -F ' [|] ' -v i="$2" '{ gsub(/^ +| +$/, "", $i); print $i }' <<< "$1"; }
+
+if [ "${1:-}" = -l ] || [ "${1:-}" = --list ]
+then
+    printf '%-28s %-7s %-20s %s\n' case base application "edit (in the case)"
+    rows | while IFS= read -r row
+    do
+        printf '%-28s %-7s %-20s %s\n' "$(field "$row" 1)" "$(field "$row" 2)" \
+            "$(field "$row" 3)" "$(field "$row" 6)"
+    done
+    exit 0
+fi
+select=${1:-.}
+
+. "$root/etc/bashrc"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+bases=$work/bases
+mkdir -p "$bases"
+
+# --- the good cases -------------------------------------------------------
+# fluid: the 50 MPa water shock tube, meshed and initialised
+makeFluid() {
+    local c=$bases/fluid
+    mkdir -p "$c"
+    cp -r "$root/tutorials/verification/waterShock50MPa"/{0.orig,system,constant} "$c"/
+    rm -rf "$c/constant/polyMesh"
+    (cd "$c" && cp -r 0.orig 0 && blockMesh > /dev/null 2>&1 \
+        && setRiemannProblem > /dev/null 2>&1)
+}
+# solid: the average-cell indentation on a coarse fallback mesh, with a
+# previous result in postProcessing/
+makeSolid() {
+    local c=$bases/solid
+    mkdir -p "$c"
+    cp -r "$root/tutorials/indentation/averageCell"/{system,constant} "$c"/
+    rm -f "$c/constant/cell.msh"
+    gmsh -2 -setnumber D 16.8 -setnumber H 7.9 -setnumber h 1.6 \
+        -setnumber hc 0.8 -setnumber nm 24 \
+        "$root/tutorials/indentation/cellFallback.geo" \
+        -o "$c/constant/cell.msh" > /dev/null 2>&1
+    mkdir -p "$c/postProcessing/indentation"
+    for f in force.dat peaks.dat solid.h5 solid.xmf
+    do
+        echo "previous result $f" > "$c/postProcessing/indentation/$f"
+    done
+}
+# mesh: the cellMesh dictionary of tests/cellMesh, previous meshes present
+makeMesh() {
+    local c=$bases/mesh
+    mkdir -p "$c/system" "$c/constant"
+    cp "$here/cellMeshDict" "$c/system/"
+    echo "previous mesh" > "$c/constant/cell.msh"
+    echo "previous mesh" > "$c/constant/fluid.msh"
+}
+# fsi: the pulse-through-a-layer FSI case of tests/fsi, meshed
+makeFsi() {
+    local c=$bases/fsi
+    cp -r "$root/tests/fsi/pulseLayer" "$c"
+    (cd "$c" && blockMesh > /dev/null 2>&1)
+}
+# h5: a result file of the solid library (two steps) and a case for
+# solidToFoam with a previous conversion
+makeH5() {
+    local c=$bases/h5
+    mkdir -p "$c/system" "$c/constant"
+    "${MAKE_SOLID_RESULTS:-$root/build/bin/makeSolidResults}" "$c" > /dev/null
+    cat > "$c/system/controlDict" <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
+application solidToFoam; startFrom latestTime; startTime 0; stopAt endTime;
+endTime 1; deltaT 1; writeControl timeStep; writeInterval 1;
+DICT
+    for f in fvSchemes fvSolution
+    do
+        echo "FoamFile { version 2.0; format ascii; class dictionary; object $f; }" > "$c/system/$f"
+    done
+    mkdir -p "$c/1/solid"
+    echo "previous result" > "$c/1/solid/D"
+}
+for b in Fluid Solid Mesh Fsi H5; do make$b; done
+for b in fluid solid mesh fsi h5
+do
+    [ -d "$bases/$b" ] || { echo "badInput: base case $b not built"; exit 1; }
+done
+
+# --- the rows -------------------------------------------------------------
+crash='Segmentation|sigFpe|sigSegv|sigAbrt|Aborted|core dumped|printStack|terminate called|AddressSanitizer|runtime error:'
+failures=0
+n=0
+while IFS= read -r row
+do
+    name=$(field "$row" 1); base=$(field "$row" 2); app=$(field "$row" 3)
+    fileRe=$(field "$row" 4); entryRe=$(field "$row" 5); edit=$(field "$row" 6)
+    echo "$name" | grep -Eq "$select" || continue
+    n=$((n + 1))
+    c=$work/case
+    rm -rf "$c"
+    if [ -z "$base" ] || [ ! -d "$bases/$base" ] || [ -z "$edit" ]
+    then
+        echo "FAIL $name: malformed row (base '$base', edit '$edit')"
+        failures=$((failures + 1)); continue
+    fi
+    cp -r "$bases/$base" "$c"
+    if ! (cd "$c" && eval "$edit") > "$work/edit.log" 2>&1
+    then
+        echo "FAIL $name: the edit failed: $(head -3 "$work/edit.log")"
+        failures=$((failures + 1)); continue
+    fi
+    (cd "$c" && find . -type f ! -name 'log*' -print0 | sort -z \
+        | xargs -0 md5sum) > "$work/before"
+    start=$(date +%s.%N)
+    (cd "$c" && eval "timeout -k 5 120 $app") > "$work/out" 2>&1
+    code=$?
+    secs=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN{printf "%.1f", b-a}')
+    # the message: from the first error line on (the banner echoes the
+    # command line and the case, which must not count as naming them)
+    sed -n '/FATAL\|[Ee]rror\|ERROR/,$p' "$work/out" > "$work/msg"
+    why=""
+    if [ $code -eq 0 ]; then why="exit 0"
+    elif [ $code -ge 124 ]; then why="killed, timed out or crashed (exit $code)"
+    elif grep -Eq "$crash" "$work/out"; then
+        why="crash trace: $(grep -Em1 "$crash" "$work/out")"
+    elif ! grep -Eq -- "$fileRe" "$work/msg"; then
+        why="the message does not name the file ('$fileRe')"
+    elif ! grep -Eq -- "$entryRe" "$work/msg"; then
+        why="the message does not name the entry ('$entryRe')"
+    elif ! (cd "$c" && md5sum --quiet -c "$work/before") > "$work/md5" 2>&1; then
+        why="a file that existed before was changed: $(head -2 "$work/md5" | tr '\n' ' ')"
+    fi
+    if [ -n "$why" ]
+    then
+        echo "FAIL $name ($app): $why"
+        grep -A8 -E "FATAL|rror" "$work/out" | head -14 | sed 's/^/    /'
+        failures=$((failures + 1))
+    else
+        msg=$(grep -Eh -- "$entryRe" "$work/msg" | head -1 | tr -s ' ' | cut -c1-110)
+        printf 'ok   %-28s %5s s exit %d: %s\n' "$name" "$secs" "$code" "$msg"
+    fi
+done < <(rows)
+
+[ $n -gt 0 ] || { echo "badInput: no case matches '$select'"; exit 1; }
+echo "badInput corpus: $((n - failures)) of $n cases passed"
+[ $failures -eq 0 ]
