@@ -534,6 +534,20 @@ std::string errorOf(const std::map<std::string, std::string>& e)
     return "";
 }
 
+std::string errorOfSet(const std::string& reading)
+{
+    try
+    {
+        paperParameterSet(reading);
+    }
+    catch (const SolidError& err)
+    {
+        EXPECT_EQ(err.kind(), SolidError::Kind::parameter);
+        return err.what();
+    }
+    return "";
+}
+
 } // namespace
 
 
@@ -576,4 +590,17 @@ TEST(SolidMaterial, ParameterEntriesAndValidation)
     const auto set = paperParameterSet("table");
     ASSERT_EQ(set.size(), 3u);
     EXPECT_DOUBLE_EQ(set[2].branches[0].mu*set[2].branches[0].tau, 431.11);
+
+    // The text's ratios: nucleus/cytoplasm = 4 for c0 (sec. 3.1, 6.67/1.66
+    // there; 1.67 in Table 2) and for mu1 (sec. 3.2); Table 2 has 8 for mu1
+    const auto f4 = paperParameterSet("textFactor4");
+    ASSERT_EQ(f4.size(), 3u);
+    EXPECT_EQ(f4[2].name, "nucleus");
+    EXPECT_EQ(f4[1].name, "cytoplasm");
+    EXPECT_NEAR(f4[2].c0/f4[1].c0, 4, 0.01);
+    EXPECT_DOUBLE_EQ(f4[2].branches[0].mu/f4[1].branches[0].mu, 4);
+    EXPECT_NEAR(set[2].branches[0].mu/set[1].branches[0].mu, 8, 1e-3);
+    EXPECT_NE(errorOfSet("textFactor5").find(
+              "valid: table text textFactor4 instantaneous"),
+              std::string::npos);
 }

@@ -17,7 +17,8 @@ Description
         constant/cell.msh           gmsh mesh in metres (cellMesh)
         constant/solidProperties    one sub-dictionary per region with the
                                     entries of MaterialParameters, or
-                                    parameterSet table|text|instantaneous
+                                    parameterSet table|text|textFactor4|
+                                    instantaneous
         constant/indenterProperties sphere, contact, stepping, protocol
         system/controlDict          fieldWriteInterval [s] of the field output
 
