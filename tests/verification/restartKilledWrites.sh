@@ -8,10 +8,16 @@
 #      the in-progress marker again (what a SIGKILL inside the write
 #      leaves), continued from latestTime: the truncated time must be moved
 #      aside and the run must reach bitwise the same final fields as (a);
-#  (c) SIGKILL at random instants (0.1-0.6 s after each start), restarted
+#  (c) SIGKILL at random instants (2-12 % of the uninterrupted run's time
+#      after each start), restarted
 #      from latestTime until it completes: at least one kill must have
 #      landed inside a write (a time moved aside), and the final p, U, rho,
-#      rhoU, rhoE must equal those of (a) bitwise.
+#      rhoU, rhoE must equal those of (a) bitwise;
+#  (d) on 2 MPI ranks: a decomposed run, and a copy cut back to its 3rd
+#      write where only processor1's copy of that time is interrupted
+#      (truncated p, in-progress marker): both ranks must move the time
+#      aside (else they would start from different times) and reach the
+#      decomposed run's final fields bitwise.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 . "$root/etc/bashrc"
@@ -38,14 +44,16 @@ same() {    # same RUN: final fields of RUN equal to those of a
 }
 
 setup a
+t0=$(date +%s%N)
 ( cd "$work/a" && rhoRiemannFoam > log.1 )
+runMs=$(( ($(date +%s%N) - t0)/1000000 ))
 times=($(foamListTimes -case "$work/a"))
 last=${times[-1]}
 for t in "${times[@]}"
 do
     [ -f "$work/a/$t/.writeCommitted" ] || { echo "restartKilledWrites: $t has no commit marker"; exit 1; }
 done
-echo "restartKilledWrites: uninterrupted run: ${#times[@]} writes, last $last s"
+echo "restartKilledWrites: uninterrupted run: ${#times[@]} writes, last $last s, $runMs ms"
 
 # (b) controlled: truncated third write with the in-progress marker
 setup b
@@ -63,11 +71,13 @@ echo "restartKilledWrites: (b) truncated write of $cut s moved aside, final fiel
 # (c) random SIGKILLs
 setup c
 kills=0
-for attempt in $(seq 1 60)
+for attempt in $(seq 1 100)
 do
     ( cd "$work/c" && exec rhoRiemannFoam > "log.$attempt" 2>&1 ) &
     pid=$!
-    sleep "0.$((RANDOM % 6 + 1))"
+    # a random instant in the first 2-12 % of an uninterrupted run (the
+    # machine's load sets the scale), after a 0.2 s start-up
+    sleep "$(awk -v r=$RANDOM -v T=$runMs 'BEGIN{printf "%.3f", 0.2 + (0.02 + 0.10*r/32768)*T/1000}')"
     if kill -KILL $pid 2>/dev/null
     then
         kills=$((kills + 1))
@@ -81,4 +91,42 @@ hit=$(cat "$work/c"/log.* | grep -c "writeGuard: time directory" || true)
 echo "restartKilledWrites: (c) $kills SIGKILLs, $hit inside a write (time moved aside), $attempt starts"
 [ "$hit" -ge 1 ] || { echo "restartKilledWrites: (c) no kill landed inside a write; nothing tested"; exit 1; }
 same c || exit 1
+# (d) parallel: the incomplete time is discarded on every rank
+decomposed() {
+    setup "$1"
+    cat > "$work/$1/system/decomposeParDict" <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
+numberOfSubdomains 2;
+method          simple;
+coeffs          { n (2 1 1); }
+DICT
+    sed -i 's/^endTime .*/endTime         1e-8;/' "$work/$1/system/controlDict"
+    ( cd "$work/$1" && decomposePar > log.decompose 2>&1 )
+}
+decomposed pa
+( cd "$work/pa" && mpirun -np 2 rhoRiemannFoam -parallel > log.1 2>&1 )
+ptimes=($(foamListTimes -case "$work/pa/processor0"))
+plast=${ptimes[-1]}
+decomposed pd
+pcut=${ptimes[2]}
+for proc in 0 1
+do
+    for t in "${ptimes[@]:0:3}"; do cp -r "$work/pa/processor$proc/$t" "$work/pd/processor$proc/"; done
+done
+head -c 1500 "$work/pa/processor1/$pcut/p" > "$work/pd/processor1/$pcut/p"
+mv "$work/pd/processor1/$pcut/.writeCommitted" "$work/pd/processor1/$pcut/.writeInProgress"
+( cd "$work/pd" && mpirun -np 2 rhoRiemannFoam -parallel > log.1 2>&1 ) \
+    || { echo "restartKilledWrites: (d) the parallel restart failed"; tail -20 "$work/pd/log.1"; exit 1; }
+for proc in 0 1
+do
+    [ -d "$work/pd/processor$proc/$pcut.incomplete" ] \
+        || { echo "restartKilledWrites: (d) processor$proc/$pcut not moved aside"; exit 1; }
+    for f in p U rho rhoU rhoE
+    do
+        cmp -s "$work/pa/processor$proc/$plast/$f" "$work/pd/processor$proc/$plast/$f" \
+            || { echo "restartKilledWrites: (d) processor$proc/$plast/$f differs"; exit 1; }
+    done
+done
+echo "restartKilledWrites: (d) 2 ranks, $pcut s incomplete on processor1 only: moved aside on both, final fields bitwise equal"
+
 echo "restartKilledWrites: passed (final p, U, rho, rhoU, rhoE bitwise equal to the uninterrupted run)"
