@@ -154,7 +154,7 @@ void solid::RigidSphereContact::setup(const Model& model) const
             if (k < 0)
             {
                 k = int(points_.size());
-                points_.push_back({face[a], 0.0, 0.0});
+                points_.push_back({face[a], 0.0, 0.0, 0.0});
                 epsA.push_back(0.0);
             }
             points_[k].dA0 += wa[a];
@@ -167,6 +167,7 @@ void solid::RigidSphereContact::setup(const Model& model) const
         // axis (zero ring area) takes its only face's value
         points_[k].eps = points_[k].dA0 > 0
             ? epsA[k]/points_[k].dA0 : 0.0;
+        points_[k].eps0 = points_[k].eps;
     }
     for (std::size_t k = 0; k < points_.size(); ++k)
     {
@@ -265,8 +266,29 @@ bool solid::RigidSphereContact::augment
     // Keep the multipliers of the last solve when it is accepted, so that
     // report() is in equilibrium with the converged state
     if (maxPen <= set_.tolerance) return false;
+    if (maxPen > 0.3*lastMaxPen_)
+    {
+        // Slow contraction: stiffen the penalty where it still penetrates
+        for (std::size_t q = 0; q < points_.size(); ++q)
+        {
+            const Kinematics k = kinematics(model, u, c, q);
+            if (k.p > 0 && -k.gap > set_.tolerance)
+            {
+                points_[q].eps =
+                    std::min(4*points_[q].eps, 4096*points_[q].eps0);
+            }
+        }
+    }
+    lastMaxPen_ = maxPen;
     lambda_ = p;
     return true;
+}
+
+
+void solid::RigidSphereContact::resetPenalties()
+{
+    for (Point& pt : points_) pt.eps = pt.eps0;
+    lastMaxPen_ = HUGE_VAL;
 }
 
 
@@ -279,12 +301,14 @@ void solid::RigidSphereContact::commit
 {
     setup(model);
     lambdaCommitted_ = lambda_;
+    resetPenalties();
 }
 
 
 void solid::RigidSphereContact::revert()
 {
     lambda_ = lambdaCommitted_;
+    resetPenalties();
 }
 
 
