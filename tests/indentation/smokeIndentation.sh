@@ -11,7 +11,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$work/tutorials/indentation"
 cp -r "$src" "$work/tutorials/indentation/"
-cp "$root"/tutorials/indentation/{meshCell,cellFallback.geo,plotIndentation.py} \
+cp "$root"/tutorials/indentation/{meshCell,cellFallback.geo,plotIndentation.py,plotFields.py} \
     "$work/tutorials/indentation/"
 ln -s "$root/etc" "$work/etc"
 ln -s "$root/platforms" "$work/platforms"
@@ -38,7 +38,7 @@ export MESH_SIZE=1.6 CONTACT_SIZE=0.8 MEMBRANE_N=24
 if grep -l "FOAM FATAL" log.* 2>/dev/null; then
     echo "smokeIndentation: FOAM error in the logs above"; exit 1
 fi
-ls indentation.png results.md > /dev/null
+ls indentation.png results.md fields_C1_i.png VTK/solid > /dev/null
 /usr/bin/python3 - <<'PY'
 rows = [l.split() for l in open("postProcessing/indentation/force.dat")
         if not l.startswith("#")]

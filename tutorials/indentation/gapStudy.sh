@@ -71,9 +71,7 @@ for kv in sys.argv[1:]:
 for f in files:
     open(f, "w").write(text[f])
 PY
-D=$(awk '/^cellDiameter/{print $2*1e6}' system/cellMeshDict)
-H=$(awk '/^cellHeight/{print $2*1e6}' system/cellMeshDict)
-"$here/meshCell" "$D" "$H" > /dev/null
+cellMesh > log.cellMesh 2>&1 || { tail log.cellMesh; exit 1; }
 cellIndentationFoam > log.cellIndentationFoam 2>&1 \
     || { tail -5 log.cellIndentationFoam; exit 1; }
 /usr/bin/python3 - "$name" <<'PY'
