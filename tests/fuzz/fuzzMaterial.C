@@ -1,0 +1,48 @@
+// libFuzzer harness: the material parameter reader of the solid library
+// (MaterialParameters::fromEntries: the "key value" entries of a region
+// sub-dictionary, as cellIndentationFoam/cellBlastFoam pass them) and the
+// named paper parameter sets (paperParameterSet). The first line of the
+// input names the parameter set, each further line is "key value...".
+// Any bad input must throw SolidError; accepted parameters must build a
+// Material.
+#include "Material.H"
+#include "SolidError.H"
+
+#include <cstdint>
+#include <map>
+#include <sstream>
+#include <string>
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
+{
+    std::istringstream is(std::string(reinterpret_cast<const char*>(data),
+                                      size));
+    std::string set, line;
+    std::getline(is, set);
+    try
+    {
+        for (const auto& p : solid::paperParameterSet(set))
+        {
+            solid::Material::create(p);
+        }
+    }
+    catch (const solid::SolidError&)
+    {
+    }
+    std::map<std::string, std::string> entries;
+    while (std::getline(is, line))
+    {
+        const auto k = line.find(' ');
+        if (k == std::string::npos) continue;
+        entries[line.substr(0, k)] = line.substr(k + 1);
+    }
+    try
+    {
+        const auto p = solid::MaterialParameters::fromEntries("fuzz", entries);
+        solid::Material::create(p);
+    }
+    catch (const solid::SolidError&)
+    {
+    }
+    return 0;
+}
