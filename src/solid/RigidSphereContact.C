@@ -269,6 +269,7 @@ bool solid::RigidSphereContact::augment
     if (maxPen > 0.3*lastMaxPen_)
     {
         // Slow contraction: stiffen the penalty where it still penetrates
+        ++nPenaltyRaises_;
         for (std::size_t q = 0; q < points_.size(); ++q)
         {
             const Kinematics k = kinematics(model, u, c, q);

@@ -91,7 +91,8 @@ int main(int argc, char *argv[])
 
     Info<< nl << "Protocol done: " << nSteps << " steps, " << nIterations
         << " Newton iterations, " << nAugmentations << " augmentations, "
-        << nCuts << " step cuts, wall time " << wall << " s, CPU time "
+        << nCuts << " step cuts, " << contact->penaltyRaises()
+        << " penalty raises, wall time " << wall << " s, CPU time "
         << cpu << " s (assembly "
         << assemblySeconds << " s, factorise + solve " << solveSeconds
         << " s)" << nl
