@@ -1,0 +1,69 @@
+#!/usr/bin/python3
+"""Assertions on a run of tutorials/blast/quarter3D (quarter3DSmoke.sh):
+map check against the exact projected areas, arrival time at the probe,
+coupling convergence, no NaN.
+usage: checkQuarter3D.py case L   (L: side of the water cube [m])"""
+import math
+import re
+import sys
+import numpy as np
+
+case, L = sys.argv[1], float(sys.argv[2])
+a, H = 8.4e-6, 7.9e-6
+ok = True
+
+
+def check(name, value, ref, tol):
+    global ok
+    err = abs(value - ref)/abs(ref)
+    good = err <= tol
+    ok &= good
+    print(f"{'ok  ' if good else 'FAIL'} {name}: {value:.10g} vs {ref:.10g}"
+          f" (relative {err:.2e}, tolerance {tol:g})")
+
+
+# Unit pressure on the quarter cell surface: the force is minus the
+# projected areas, pi a H/4 on x = 0 and y = 0 (quarter ellipses) and
+# pi a^2/4 on z = 0; the fluid's surface is inscribed (faces of about
+# 1 um on radii of 8 um: areas about 0.5 % smaller)
+log = open(f"{case}/log.cellBlastFoam").read()
+m = re.search(r"FSI map check: unit pressure, fluid force \((\S+) (\S+) "
+              r"(\S+)\) N, solid nodal force \((\S+) (\S+) (\S+)\) N", log)
+fluid = [float(x) for x in m.groups()[:3]]
+solid = [float(x) for x in m.groups()[3:]]
+exact = [-math.pi*a*H/4, -math.pi*a*H/4, -math.pi*a*a/4]
+for i, c in enumerate("xyz"):
+    check(f"map conservation, {c}", solid[i], fluid[i], 1e-12)
+    check(f"unit-pressure force {c} = minus the projected area", fluid[i],
+          exact[i], 1e-2)
+
+# Arrival at the probe element (its centroid from the header)
+f = f"{case}/postProcessing/solidProbes/0/solidProbes.dat"
+zc = None
+for line in open(f):
+    if line.startswith("# probe 0"):
+        zc = float(re.search(r"centroid \S+ \S+ (\S+) ", line).group(1))
+d = np.loadtxt(f)
+if not np.isfinite(d).all():
+    print("FAIL NaN or Inf in solidProbes.dat")
+    sys.exit(1)
+t, p = d[:, 0], d[:, 1]
+rho0, C0, s, pulse = 1000.0, 1450.0, 1.99, 50e6
+up = (-C0 + math.sqrt(C0**2 + 4*s*pulse/rho0))/(2*s)
+Us = C0 + s*up
+if p.max() < 0.5*pulse:
+    print(f"FAIL the pulse reached the probe with {p.max()/1e6:.3g} MPa only")
+    sys.exit(1)
+arrival = t[np.argmax(p > p.max()/2)]
+check(f"arrival at the probe (z = {zc*1e6:.3f} um, Us = {Us:.2f} m/s) [s]",
+      arrival, 0.05e-9 + (L - zc)/Us, 0.03)
+
+c = np.loadtxt(f"{case}/postProcessing/fsi/0/coupling.dat")
+nc = int(np.sum(c[:, 4] == 0))
+finite = bool(np.isfinite(c).all())
+print(f"{'ok  ' if nc == 0 and finite else 'FAIL'} coupling: {len(c)} "
+      f"steps, iterations mean {c[:, 2].mean():.2f} max {int(c[:, 2].max())},"
+      f" {nc} not converged, finite {finite}; peak probe pressure "
+      f"{p.max()/1e6:.2f} MPa")
+ok &= nc == 0 and finite
+sys.exit(0 if ok else 1)
