@@ -3,6 +3,119 @@
 
 #include <cmath>
 
+namespace
+{
+
+//- Parametric coordinates (signs) of the nodes, gmsh order
+const int quadSigns[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+const int hexSigns[8][3] =
+{
+    {-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+    {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}
+};
+
+} // namespace
+
+
+void solid::ExplicitSolver::buildHourglass()
+{
+    Model& m = model_;
+    const Mesh& mesh = m.mesh();
+    const bool axi = mesh.axisymmetric();
+    const int nen = mesh.nen(), dim = mesh.dim();
+    const int nh = axi ? 1 : 4;
+    hourglassDamping_.resize(mesh.nElements());
+    hourglassStableDt_ = 1e300;
+    const Eigen::VectorXd& mass = m.lumpedMass();
+    for (int e = 0; e < mesh.nElements(); ++e)
+    {
+        const ElementGeometry& geo = m.geometry(e);
+        const int* en = mesh.element(e);
+
+        // Base vectors h_alpha (nen x nh)
+        Eigen::MatrixXd H(nen, nh);
+        for (int a = 0; a < nen; ++a)
+        {
+            if (axi)
+            {
+                H(a, 0) = quadSigns[a][0]*quadSigns[a][1];
+            }
+            else
+            {
+                const int* s = hexSigns[a];
+                H(a, 0) = s[1]*s[2];
+                H(a, 1) = s[0]*s[2];
+                H(a, 2) = s[0]*s[1];
+                H(a, 3) = s[0]*s[1]*s[2];
+            }
+        }
+
+        // Volume-averaged gradients b (nen x dim), area of the r-z section
+        Eigen::MatrixXd b(Eigen::MatrixXd::Zero(nen, dim));
+        double area = 0;
+        for (std::size_t q = 0; q < geo.w.size(); ++q)
+        {
+            b += geo.w[q]*geo.dNdX[q].leftCols(dim);
+            if (axi) area += geo.w[q]/(2*M_PI*geo.R[q]);
+        }
+        b /= geo.V;
+
+        // g_alpha = h_alpha - sum_i (h_alpha . X_i) b_i
+        Eigen::MatrixXd X(nen, dim);
+        for (int a = 0; a < nen; ++a)
+            for (int i = 0; i < dim; ++i) X(a, i) = mesh.X[en[a]](i);
+        const Eigen::MatrixXd G = H - b*(X.transpose()*H);
+        const Eigen::MatrixXd P =
+            G*(G.transpose()*G).inverse()*G.transpose();
+
+        // D_e = kappa rho0 c S, c the initial dilatational wave speed
+        const ElementOutput o = m.evaluateElement(e, 0);
+        const double c = std::sqrt(o.c2);
+        const double S =
+            axi ? std::sqrt(2*M_PI*(geo.V/(2*M_PI*area))*geo.V)
+                : std::pow(geo.V, 2.0/3.0);
+        const double D = set_.hourglass*m.material(e).rho0()*c*S;
+        hourglassDamping_[e] = D*P;
+
+        // Explicit limit of the damper (eigenvalue of P is 1): dt < 2 m/D
+        for (int a = 0; a < nen; ++a)
+        {
+            hourglassStableDt_ =
+                std::min(hourglassStableDt_, 2*mass(dim*en[a])/D);
+        }
+    }
+}
+
+
+Eigen::VectorXd solid::ExplicitSolver::hourglassForce
+(
+    const Eigen::VectorXd& v
+) const
+{
+    Eigen::VectorXd f(Eigen::VectorXd::Zero(v.size()));
+    if (hourglassDamping_.empty()) return f;
+    const Mesh& mesh = model_.mesh();
+    const int nen = mesh.nen(), dim = mesh.dim();
+    Eigen::Matrix<double, 8, 3> ve;
+    for (int e = 0; e < mesh.nElements(); ++e)
+    {
+        const int* en = mesh.element(e);
+        for (int a = 0; a < nen; ++a)
+            for (int i = 0; i < dim; ++i) ve(a, i) = v(dim*en[a] + i);
+        const Eigen::MatrixXd& DP = hourglassDamping_[e];
+        for (int a = 0; a < nen; ++a)
+        {
+            for (int i = 0; i < dim; ++i)
+            {
+                double s = 0;
+                for (int k = 0; k < nen; ++k) s += DP(a, k)*ve(k, i);
+                f(dim*en[a] + i) -= s;
+            }
+        }
+    }
+    return f;
+}
+
 solid::ExplicitSolver::ExplicitSolver
 (
     Model& model,
@@ -30,16 +143,25 @@ solid::ExplicitSolver::ExplicitSolver
         }
     }
     checkParameter("explicit solver", "safety", set_.safety, 0, 1, "-");
+    if (set_.hourglass != 0)
+    {
+        checkParameter
+        (
+            "explicit solver", "hourglass", set_.hourglass, 0, 1, "-"
+        );
+    }
     m.condensePressure(true);
     fixed_ = m.prescribedDofs();
     invMass_ = m.lumpedMass().cwiseInverse();
+    if (set_.hourglass > 0) buildHourglass();
     m.assemble(m.u, m.pressure, m.time, 0, false, asm_);
     m.commit();
     fint_ = asm_.fint;
     fext_ = asm_.fext;
-    a_ = (fext_ - fint_).cwiseProduct(invMass_);
+    fhg_ = hourglassForce(m.v);
+    a_ = (fext_ - fint_ + fhg_).cwiseProduct(invMass_);
     for (int d : fixed_) a_(d) = 0;
-    stableDt_ = asm_.stableDt;
+    stableDt_ = std::min(asm_.stableDt, hourglassStableDt_);
     dt_ = set_.fixedDt > 0 ? set_.fixedDt : set_.safety*stableDt_;
     energy_.kinetic = 0.5*m.v.dot(m.lumpedMass().cwiseProduct(m.v));
     energy_.internal = asm_.energy;
@@ -51,17 +173,24 @@ void solid::ExplicitSolver::updateEnergy
 (
     const Eigen::VectorXd& du,
     const Eigen::VectorXd& fint,
-    const Eigen::VectorXd& fext
+    const Eigen::VectorXd& fext,
+    const Eigen::VectorXd& fhg
 )
 {
     energy_.internalWork += 0.5*du.dot(fint_ + fint);
     energy_.externalWork += 0.5*du.dot(fext_ + fext);
-    // Reactions at prescribed dofs: r = f_int - f_ext (quasi-static part)
+    // Reactions at prescribed dofs: r = f_int - f_ext - f_hg
+    // (quasi-static part)
     for (int d : fixed_)
     {
         energy_.externalWork +=
-            0.5*du(d)*((fint_(d) - fext_(d)) + (fint(d) - fext(d)));
+            0.5*du(d)
+           *(
+                (fint_(d) - fext_(d) - fhg_(d))
+              + (fint(d) - fext(d) - fhg(d))
+            );
     }
+
 }
 
 
@@ -81,6 +210,7 @@ double solid::ExplicitSolver::step()
     }
     const double t1 = m.time + dt;
     const Eigen::VectorXd u0 = m.u;
+    const Eigen::VectorXd v0 = m.v;
     Eigen::VectorXd vh = m.v + 0.5*dt*a_;
     m.u += dt*vh;
     m.applyDirichlet(m.u, t1);
@@ -100,13 +230,23 @@ double solid::ExplicitSolver::step()
           + " s (dt = " + std::to_string(dt) + " s): " + e.what()
         );
     }
-    Eigen::VectorXd a = (asm_.fext - asm_.fint).cwiseProduct(invMass_);
+    // Viscous hourglass force from the mid-step velocity
+    const Eigen::VectorXd fhg = hourglassForce(vh);
+    Eigen::VectorXd a =
+        (asm_.fext - asm_.fint + fhg).cwiseProduct(invMass_);
     for (int d : fixed_) a(d) = 0;
     m.v = vh + 0.5*dt*a;
     for (int d : fixed_) m.v(d) = vh(d);
-    updateEnergy(m.u - u0, asm_.fint, asm_.fext);
+    updateEnergy(m.u - u0, asm_.fint, asm_.fext, fhg);
+    // Dissipation of the hourglass dampers: their work on the step-average
+    // velocity, dt/2 (f_n + f_n+1).(v_n + v_n+1)/2, the exact share of the
+    // kinetic energy change of velocity Verlet (the force changes within a
+    // few steps for a strongly damped pattern, so du = dt v_n+1/2 is not
+    // accurate enough for it)
+    energy_.hourglass -= 0.25*dt*(fhg_ + fhg).dot(v0 + m.v);
     fint_ = asm_.fint;
     fext_ = asm_.fext;
+    fhg_ = fhg;
     a_ = a;
     m.time = t1;
     m.commit();
@@ -117,7 +257,7 @@ double solid::ExplicitSolver::step()
     energy_.dissipated = asm_.dissipated;
     energy_.shockHeat = asm_.shockHeat;
     energy_.viscousHeat = asm_.viscousHeat;
-    stableDt_ = asm_.stableDt;
+    stableDt_ = std::min(asm_.stableDt, hourglassStableDt_);
     dt_ = set_.fixedDt > 0 ? set_.fixedDt : set_.safety*stableDt_;
     return dt;
 }
@@ -130,4 +270,46 @@ void solid::ExplicitSolver::advanceTo(double tEnd)
         if (model_.time + dt_ > tEnd) dt_ = tEnd - model_.time;
         step();
     }
+}
+
+
+solid::ExplicitState solid::ExplicitSolver::state() const
+{
+    ExplicitState s;
+    s.a = a_;
+    s.fint = fint_;
+    s.fext = fext_;
+    s.fhg = fhg_;
+    s.dt = dt_;
+    s.stableDt = stableDt_;
+    s.steps = steps_;
+    s.energy = energy_;
+    return s;
+}
+
+
+void solid::ExplicitSolver::setState(const ExplicitState& s)
+{
+    const long n = a_.size();
+    if
+    (
+        s.a.size() != n || s.fint.size() != n || s.fext.size() != n
+     || s.fhg.size() != n
+    )
+    {
+        throw SolidError
+        (
+            SolidError::Kind::io, "explicit solver: restart state has "
+          + std::to_string(s.a.size()) + " dofs, the model "
+          + std::to_string(n)
+        );
+    }
+    a_ = s.a;
+    fint_ = s.fint;
+    fext_ = s.fext;
+    fhg_ = s.fhg;
+    dt_ = s.dt;
+    stableDt_ = s.stableDt;
+    steps_ = s.steps;
+    energy_ = s.energy;
 }
