@@ -41,11 +41,15 @@ Usage
 #include "wedgeFvPatch.H"
 #include "wedgePolyPatch.H"
 #include "pointFields.H"
+#include "pointIOField.H"
 #include "OFstream.H"
+#include "IFstream.H"
 #include "rhoEThermo.H"
 #include "riemannFlux.H"
 #include "rungeKuttaScheme.H"
+#include "cpuTime.H"
 #include "interfaceMap.H"
+#include "interfaceMotion.H"
 #include "solidDomain.H"
 #include "couplingScheme.H"
 
@@ -67,13 +71,24 @@ int main(int argc, char *argv[])
     #include "createFsi.H"
     #include "createTimeControls.H"
 
+    // CPU time split of the coupled steps [s]
+    cpuTime cpuTimer;
+    scalar cpuMotion = 0, cpuFluid = 0, cpuSolid = 0;
+    const scalar cpuStart = runTime.elapsedCpuTime();
+
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.run())
     {
         #include "readTimeControls.H"
 
-        flux->fluxes(thermo, U, phi, phiU, phiE, amaxSf);
+        // Wave speeds for the Courant number: the last flux evaluation of
+        // the previous step (wall force at t_n) was on this same state and
+        // mesh, so only the first step evaluates them
+        if (runTime.timeIndex() == runTime.startTimeIndex())
+        {
+            flux->fluxes(thermo, U, phi, phiU, phiE, amaxSf);
+        }
 
         // A wedge face pair carries no wave across (axisymmetry, the swirl
         // is removed in aleStep.H): out of the Courant number, else the
@@ -103,13 +118,23 @@ int main(int argc, char *argv[])
 
         thermo.checkStates();
 
-        solid.write();
+        // Fluid fields, then the solid (probes; at write times its state),
+        // then the coupling state: the last file of a complete time
         runTime.write();
+        solid.write();
+        #include "writeFsiState.H"
 
         runTime.printExecutionTime(Info);
     }
 
     coupling->report(Info);
+    {
+        const scalar total = runTime.elapsedCpuTime() - cpuStart;
+        Info<< "CPU time of the time loop " << total << " s: mesh motion "
+            << cpuMotion << " s, fluid " << cpuFluid << " s, solid "
+            << cpuSolid << " s, other (coupling, restore, output) "
+            << total - cpuMotion - cpuFluid - cpuSolid << " s" << endl;
+    }
     if (couplingLog.valid())
     {
         couplingLog() << "# ";

@@ -10,6 +10,9 @@
 #include "vector2D.H"
 #include "Pair.H"
 #include "Shape.H"
+#include "IFstream.H"
+#include "OSspecific.H"
+#include "SubList.H"
 
 #include <cmath>
 
@@ -156,6 +159,7 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
 
     solid::ExplicitSettings set;
     set.safety = dict_.getOrDefault<scalar>("explicitSafety", 0.8);
+    set.hourglass = dict_.getOrDefault<scalar>("hourglassViscosity", 0);
     guarded("solid initialise", [&]
     {
         model_->initialise();
@@ -166,11 +170,115 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
 
     const fileName dir(runTime_.path()/"solid");
     mkDir(dir);
+    const bool restart = runTime_.value() > 0;
     guarded("solid output", [&]
     {
-        writer_.reset(new solid::ResultWriter(dir/"solid", *model_));
+        writer_.reset(new solid::ResultWriter(dir/"solid", *model_, restart));
     });
+    if (restart)
+    {
+        const fileName stateFile
+        (
+            runTime_.timePath()/"uniform"/"solidState"
+        );
+        if (!isFile(stateFile))
+        {
+            FatalErrorInFunction
+                << "Restart from t = " << runTime_.timeName() << " s: no "
+                << stateFile << " (the run stopped while writing this time?"
+                << " Start from the previous write time)" << exit(FatalError);
+        }
+        IFstream is(stateFile);
+        const dictionary d(is);
+        const label k = d.get<label>("h5Step");
+        guarded("solid restart", [&]
+        {
+            solid::ResultWriter::restart(writer_->h5File(), k, *model_);
+        });
+        auto vec = [&](const word& name)
+        {
+            const scalarList l(d.get<scalarList>(name));
+            return Eigen::VectorXd(Eigen::Map<const Eigen::VectorXd>
+            (
+                l.cdata(), l.size()
+            ));
+        };
+        solid::ExplicitState st;
+        st.a = vec("a");
+        st.fint = vec("fint");
+        st.fext = vec("fext");
+        st.fhg = vec("fhg");
+        st.dt = d.get<scalar>("dt");
+        st.stableDt = d.get<scalar>("stableDt");
+        st.steps = d.get<label>("steps");
+        const scalarList en(d.get<scalarList>("energy"));
+        st.energy.kinetic = en[0];
+        st.energy.internal = en[1];
+        st.energy.dissipated = en[2];
+        st.energy.shockHeat = en[3];
+        st.energy.viscousHeat = en[4];
+        st.energy.externalWork = en[5];
+        st.energy.internalWork = en[6];
+        st.energy.hourglass = en[7];
+        st.energy.initial = en[8];
+        guarded("solid restart", [&] { solver_->setState(st); });
+        const scalarList ps(d.get<scalarList>("probeStrain"));
+        if (ps.size() != probeStrain_.size())
+        {
+            FatalIOErrorInFunction(d)
+                << "probeStrain has " << ps.size() << " values, the probes "
+                << probeStrain_.size() << " (probes changed?)"
+                << exit(FatalIOError);
+        }
+        probeStrain_ = ps;
+        Info<< "Solid: restarted from " << writer_->h5File() << " step " << k
+            << " (t = " << model_->time << " s) and " << stateFile << endl;
+    }
     save();
+}
+
+
+void Foam::solidDomain::writeState(const label k) const
+{
+    const fileName dir(runTime_.timePath()/"uniform");
+    mkDir(dir);
+    // Written to a temporary name and renamed: the file is there complete
+    // or not at all (a run killed while writing)
+    const fileName file(dir/"solidState");
+    {
+        OFstream os(file + ".tmp");
+        os.precision(17);
+        const solid::ExplicitState st(solver_->state());
+        auto list = [](const Eigen::VectorXd& v)
+        {
+            return scalarList(SubList<scalar>(UList<scalar>
+            (
+                const_cast<scalar*>(v.data()), label(v.size())
+            )));
+        };
+        os.writeEntry("h5Step", k);
+        os.writeEntry("time", model_->time);
+        os.writeEntry("dt", st.dt);
+        os.writeEntry("stableDt", st.stableDt);
+        os.writeEntry("steps", label(st.steps));
+        const solid::EnergyReport& e = st.energy;
+        os.writeEntry
+        (
+            "energy",
+            scalarList
+            ({
+                e.kinetic, e.internal, e.dissipated, e.shockHeat,
+                e.viscousHeat, e.externalWork, e.internalWork, e.hourglass,
+                e.initial
+            })
+        );
+        os.writeEntry("probeStrain", probeStrain_);
+        os.writeEntry("a", list(st.a));
+        os.writeEntry("fint", list(st.fint));
+        os.writeEntry("fext", list(st.fext));
+        os.writeEntry("fhg", list(st.fhg));
+    }
+    mv(file + ".tmp", file);
 }
 
 
@@ -254,10 +362,121 @@ Foam::labelList Foam::solidDomain::interfaceElements
 }
 
 
+Foam::point Foam::solidDomain::interfacePoint
+(
+    const word& outer,
+    const word& inner,
+    const scalar fraction
+) const
+{
+    const solid::Mesh& m = mesh();
+    const int dim = m.dim();
+    const int axial = dim - 1;
+    int ro = -1, ri = -1;
+    guarded("interfaceProbe", [&]
+    {
+        ro = m.regionId(outer);
+        ri = m.regionId(inner);
+    });
+    std::vector<char> inO(m.nNodes(), 0), inI(m.nNodes(), 0);
+    for (int e = 0; e < m.nElements(); ++e)
+    {
+        for (int k = 0; k < m.nen(); ++k)
+        {
+            if (m.region[e] == ro) inO[m.element(e)[k]] = 1;
+            if (m.region[e] == ri) inI[m.element(e)[k]] = 1;
+        }
+    }
+    // Height of the inner region along the axial (shock) direction
+    scalar zMin = GREAT, zMax = -GREAT;
+    for (int a = 0; a < m.nNodes(); ++a)
+    {
+        if (!inI[a]) continue;
+        zMin = min(zMin, m.X[a](axial));
+        zMax = max(zMax, m.X[a](axial));
+    }
+    const scalar z = zMin + fraction*(zMax - zMin);
+
+    // The interface edges (element edges with both nodes on both regions)
+    // in the plane x >= 0, y = 0 (r-z: the section itself) crossing z: the
+    // crossing farthest from the axis
+    scalar bestR = -GREAT;
+    point P(Zero);
+    const scalar tol = 1e-9*(zMax - zMin);
+    for (int e = 0; e < m.nElements(); ++e)
+    {
+        if (m.region[e] != ri) continue;
+        const int* en = m.element(e);
+        static const int quadEdges[4][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+        static const int hexEdges[12][2] =
+        {
+            {0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4},
+            {0, 4}, {1, 5}, {2, 6}, {3, 7}
+        };
+        const int nEdges = dim == 2 ? 4 : 12;
+        {
+            for (int j = 0; j < nEdges; ++j)
+            {
+                const int* ed = dim == 2 ? quadEdges[j] : hexEdges[j];
+                const int a = en[ed[0]], b = en[ed[1]];
+                if (!(inO[a] && inI[a] && inO[b] && inI[b])) continue;
+                const solid::Vec3& A = m.X[a];
+                const solid::Vec3& B = m.X[b];
+                if (dim == 3 && (std::abs(A(1)) > tol || std::abs(B(1)) > tol))
+                {
+                    continue;
+                }
+                const scalar za = A(axial), zb = B(axial);
+                if ((za - z)*(zb - z) > 0 || za == zb) continue;
+                const scalar t = (z - za)/(zb - za);
+                const solid::Vec3 X = A + t*(B - A);
+                if (X(0) > bestR)
+                {
+                    bestR = X(0);
+                    P = point(X(0), X(1), dim == 3 ? X(2) : 0);
+                }
+            }
+        }
+    }
+    if (bestR < 0)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "interfaceProbe: no edge of the " << outer << "-" << inner
+            << " interface crosses z = " << z << " m at x >= 0"
+            << (dim == 3 ? ", y = 0" : "") << exit(FatalIOError);
+    }
+    return P;
+}
+
+
 void Foam::solidDomain::setupOutput()
 {
-    // Probes: the element whose reference centroid is nearest
-    const pointField probes(dict_.getOrDefault<pointField>("probes", {}));
+    // Probes: the element whose reference centroid is nearest (of any
+    // region, or of the given one)
+    pointField probes(dict_.getOrDefault<pointField>("probes", {}));
+    labelList probeRegion(probes.size(), -1);
+    if (dict_.found("interfaceProbe"))
+    {
+        const dictionary& ip = dict_.subDict("interfaceProbe");
+        const Pair<word> regions(ip.get<Pair<word>>("regions"));
+        const scalar f = ip.get<scalar>("heightFraction");
+        const point P(interfacePoint(regions.first(), regions.second(), f));
+        int ra = -1, rb = -1;
+        guarded("interfaceProbe", [&]
+        {
+            ra = mesh().regionId(regions.first());
+            rb = mesh().regionId(regions.second());
+        });
+        Info<< "Solid: interface probe " << regions << " at "
+            << 100*f << " % of the " << regions.second() << " height: "
+            << P << " m" << endl;
+        probes.append(P);
+        probeRegion.append(-1);
+        probes.append(P);
+        probeRegion.append(rb);
+        probes.append(P);
+        probeRegion.append(ra);
+    }
     const solid::Mesh& m = mesh();
     probeElements_.setSize(probes.size());
     forAll(probes, i)
@@ -265,6 +484,10 @@ void Foam::solidDomain::setupOutput()
         scalar best = GREAT;
         for (int e = 0; e < m.nElements(); ++e)
         {
+            if (probeRegion[i] >= 0 && m.region[e] != probeRegion[i])
+            {
+                continue;
+            }
             solid::Vec3 c(solid::Vec3::Zero());
             for (int a = 0; a < m.nen(); ++a) c += m.X[m.element(e)[a]];
             c /= m.nen();
@@ -443,7 +666,9 @@ void Foam::solidDomain::write()
     }
     if (runTime_.writeTime())
     {
-        guarded("solid output", [&] { writer_->write(*model_); });
+        label k = -1;
+        guarded("solid output", [&] { k = writer_->write(*model_); });
+        writeState(k);
         const solid::EnergyReport& e = solver_->energy();
         Info<< "Solid: energy balance " << e.balance() << " J of "
             << e.externalWork << " J external work, " << solver_->steps()

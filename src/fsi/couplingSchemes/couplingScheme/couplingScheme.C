@@ -120,3 +120,30 @@ void Foam::couplingScheme::report(Ostream& os) const
         << scalar(nIterations_)/max(nSteps_, 1) << ", max " << maxIterUsed_
         << "), " << nNonConverged_ << " steps not converged" << endl;
 }
+
+
+void Foam::couplingScheme::writeState(Ostream& os) const
+{
+    os.writeEntry
+    (
+        "couplingStatistics",
+        labelList({nSteps_, nIterations_, maxIterUsed_, nNonConverged_})
+    );
+}
+
+
+void Foam::couplingScheme::readState(const dictionary& dict)
+{
+    const labelList s(dict.get<labelList>("couplingStatistics"));
+    if (s.size() != 4)
+    {
+        FatalIOErrorInFunction(dict)
+            << "couplingStatistics needs 4 values (steps, iterations, max"
+            << " iterations, steps not converged), not " << s.size()
+            << exit(FatalIOError);
+    }
+    nSteps_ = s[0];
+    nIterations_ = s[1];
+    maxIterUsed_ = s[2];
+    nNonConverged_ = s[3];
+}

@@ -1,0 +1,184 @@
+#include "interfaceMotion.H"
+#include "pointIOField.H"
+#include "wedgePolyPatch.H"
+#include "emptyPolyPatch.H"
+#include "PrimitivePatchInterpolation.H"
+
+#include <algorithm>
+#include <numeric>
+
+Foam::vector Foam::interfaceMotion::radial(const point& p) const
+{
+    if (mag(axisDirection_) < SMALL) return Zero;
+    const vector d = p - axisOrigin_;
+    const vector r = d - (d & axisDirection_)*axisDirection_;
+    // On the axis (collapsed wedge points): no radial displacement
+    return mag(r) > 1e-9*mag(d) + VSMALL ? r/mag(r) : vector(Zero);
+}
+
+
+Foam::interfaceMotion::interfaceMotion
+(
+    const fvMesh& mesh,
+    const label interfacePatchi,
+    const dictionary& interfaceDict,
+    const vector& axisOrigin,
+    const vector& axisDirection
+)
+:
+    mesh_(mesh),
+    patchi_(interfacePatchi),
+    points0_
+    (
+        pointIOField
+        (
+            IOobject
+            (
+                "points",
+                mesh.time().constant(),
+                polyMesh::meshSubDir,
+                mesh,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        )
+    ),
+    axisOrigin_(axisOrigin),
+    axisDirection_
+    (
+        mag(axisDirection) > SMALL ? axisDirection/mag(axisDirection)
+      : vector(Zero)
+    )
+{
+    const scalar L = interfaceDict.get<scalar>("motionDistance");
+    const label n = interfaceDict.getOrDefault<label>("motionNearest", 8);
+    if (L <= 0 || n < 1)
+    {
+        FatalIOErrorInFunction(interfaceDict)
+            << "motionDistance " << L << " m must be > 0 and motionNearest "
+            << n << " >= 1" << exit(FatalIOError);
+    }
+    const bool axi = mag(axisDirection_) > 0;
+
+    // Interface points in the interpolation space: (r, z, 0) or x
+    const polyPatch& ip = mesh.boundaryMesh()[patchi_];
+    const labelList& ipPoints = ip.meshPoints();
+    auto toSpace = [&](const point& x)
+    {
+        if (!axi) return vector(x);
+        const vector d = x - axisOrigin_;
+        const scalar z = d & axisDirection_;
+        return vector(mag(d - z*axisDirection_), z, 0);
+    };
+    vectorField xi(ipPoints.size());
+    forAll(ipPoints, k) xi[k] = toSpace(points0_[ipPoints[k]]);
+
+    // Slip normals of the points of the other wall-type patches
+    vectorField normal(mesh.nPoints(), Zero);
+    boolList onInterface(mesh.nPoints(), false);
+    for (const label p : ipPoints) onInterface[p] = true;
+    forAll(mesh.boundaryMesh(), patchi)
+    {
+        const polyPatch& pp = mesh.boundaryMesh()[patchi];
+        if
+        (
+            patchi == patchi_ || isA<wedgePolyPatch>(pp)
+         || isA<emptyPolyPatch>(pp) || pp.empty()
+        )
+        {
+            continue;
+        }
+        const vectorField pn(pp.pointNormals());
+        forAll(pp.meshPoints(), i)
+        {
+            normal[pp.meshPoints()[i]] = pn[i];
+        }
+    }
+
+    DynamicList<label> moving;
+    DynamicList<labelList> stencil;
+    DynamicList<scalarField> weights;
+    DynamicList<vector> slip;
+    labelList order(ipPoints.size());
+    scalarField dist(ipPoints.size());
+    forAll(points0_, pointi)
+    {
+        if (onInterface[pointi]) continue;
+        const vector x = toSpace(points0_[pointi]);
+        forAll(xi, k) dist[k] = mag(x - xi[k]);
+        std::iota(order.begin(), order.end(), 0);
+        const label m = min(n, order.size());
+        std::partial_sort
+        (
+            order.begin(), order.begin() + m, order.end(),
+            [&](label a, label b) { return dist[a] < dist[b]; }
+        );
+        const scalar s = dist[order[0]]/L;
+        if (s >= 1) continue;
+        const scalar phi = 1 - 3*sqr(s) + 2*pow3(s);
+        labelList st(m);
+        scalarField w(m);
+        for (label j = 0; j < m; ++j)
+        {
+            st[j] = order[j];
+            w[j] = 1/sqr(dist[order[j]]);
+        }
+        w *= phi/sum(w);
+        moving.append(pointi);
+        stencil.append(st);
+        weights.append(w);
+        slip.append(normal[pointi]);
+    }
+    movingPoints_.transfer(moving);
+    stencil_.transfer(stencil);
+    weights_.transfer(weights);
+    slipNormal_.transfer(slip);
+
+    Info<< "FSI mesh motion: interpolation from the " << ipPoints.size()
+        << " interface points to " << movingPoints_.size()
+        << " mesh points within " << L << " m (" << n << " nearest)"
+        << endl;
+}
+
+
+Foam::tmp<Foam::pointField> Foam::interfaceMotion::newPoints
+(
+    const vectorField& patchDisplacement
+) const
+{
+    const polyPatch& ip = mesh_.boundaryMesh()[patchi_];
+    const labelList& ipPoints = ip.meshPoints();
+    const bool axi = mag(axisDirection_) > 0;
+
+    // Interface displacements in the interpolation space: (d_r, d_z, 0)
+    vectorField di(patchDisplacement);
+    if (axi)
+    {
+        forAll(ipPoints, k)
+        {
+            const vector& d = patchDisplacement[k];
+            di[k] = vector
+            (
+                d & radial(points0_[ipPoints[k]]), d & axisDirection_, 0
+            );
+        }
+    }
+
+    tmp<pointField> tnew(new pointField(points0_));
+    pointField& x = tnew.ref();
+    forAll(ipPoints, k) x[ipPoints[k]] += patchDisplacement[k];
+    forAll(movingPoints_, i)
+    {
+        const label pointi = movingPoints_[i];
+        vector d(Zero);
+        forAll(stencil_[i], j) d += weights_[i][j]*di[stencil_[i][j]];
+        if (axi)
+        {
+            d = d.x()*radial(points0_[pointi]) + d.y()*axisDirection_;
+        }
+        d -= (d & slipNormal_[i])*slipNormal_[i];
+        x[pointi] += d;
+    }
+    return tnew;
+}
