@@ -2,10 +2,9 @@
 """Blast scene plots and numbers (paper Fig. 10, Figs. 7-8 at 65.5 ns).
 
 usage: plotBlast.py case [case ...] [-o prefix] [-label name ...]
-                    [-until 9e-8]
-Probe peaks are taken over t <= until (the first passage of the pulse;
-later the membrane drift of docs/results/blast.md contaminates the
-solid), the interface maxima both over the window and over the run.
+                    [-until 1.5e-7]
+Probe peaks are taken over t <= until (default: the whole run), the
+interface maxima both over the window and over the run.
 
 One case: <case>/fig10.png (pressure, von Mises, longitudinal strain and
 strain rate at the probe on the cytoplasm-nucleus interface at 75 % of the
@@ -14,7 +13,8 @@ nucleus height), <case>/interfaceMaxima.png, <case>/snapshot65.5ns.png
 at the write time nearest 65.5 ns) and <case>/postProcessing/
 blastSummary.dat (probe peaks, arrival time, coupling statistics).
 Several cases (pulse or mesh study): the Fig. 10 curves on one figure
-<prefix>fig10.png and a summary table on stdout.
+<prefix>fig10.png, the interface maxima against time of every case on
+<prefix>interfaceMaxima.png and a summary table on stdout.
 """
 import sys
 import os
@@ -24,7 +24,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 args = sys.argv[1:]
-prefix, labels, cases, until = None, [], [], 9e-8
+prefix, labels, cases, until = None, [], [], np.inf
 i = 0
 while i < len(args):
     if args[i] == "-o":
@@ -133,6 +133,33 @@ def interfaceMaxima(case, out):
             for k, n in enumerate(names)}
 
 
+def interfaceMaximaCases(cases, labels, out):
+    """Interface maxima of several runs: colour per case, style per
+    interface"""
+    fig, ax = plt.subplots(1, 2, figsize=(11, 4.5))
+    styles = ["-", "--", ":", "-."]
+    for c, (case, lab) in enumerate(zip(cases, labels)):
+        f = f"{case}/postProcessing/solidInterfaces/0/interfaceMaxima.dat"
+        d = load(f)
+        names = [w.split(":")[1].split("[")[0] for w in
+                 open(f).readlines()[1].split()[2:] if w.startswith("pMax")]
+        for k, n in enumerate(names):
+            kw = dict(color=f"C{c}", ls=styles[k % 4], label=f"{lab} {n}")
+            ax[0].plot(d[:, 0]*1e9, d[:, 1 + 2*k]/1e6, **kw)
+            ax[1].plot(d[:, 0]*1e9, d[:, 2 + 2*k], **kw)
+    ax[0].set_ylabel("max pressure along the interface [MPa]")
+    ax[1].set_ylabel("max von Mises along the interface [Pa]")
+    for a in ax:
+        a.set_xlabel("time [ns]")
+        a.grid(alpha=0.3)
+    ax[1].legend(fontsize=7)
+    fig.suptitle("Region-interface maxima (membrane-cytoplasm, "
+                 "cytoplasm-nucleus)")
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+
+
 def snapshot(case, out, time=65.5e-9):
     import h5py
     from matplotlib.collections import PolyCollection
@@ -198,6 +225,7 @@ if len(cases) == 1:
     print("\n".join(lines))
 else:
     fig10(cases, labels, f"{prefix or ''}fig10.png")
+    interfaceMaximaCases(cases, labels, f"{prefix or ''}interfaceMaxima.png")
     print(f"# probe peaks over t <= {until*1e9:g} ns")
     print(header)
     for case, lab in zip(cases, labels):
