@@ -1,6 +1,7 @@
 #include "Model.H"
 #include "SolidError.H"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -132,7 +133,103 @@ void solid::Model::initialise()
         if (f == 0) f = nFree_++;
     }
     initialised_ = true;
+    pattern_ = TangentPattern();
     applyDirichlet(u, time);
+}
+
+
+void solid::Model::buildPattern()
+{
+    const int dim = mesh_.dim(), nen = mesh_.nen(), nd = nen*dim;
+    const int nu = nDisplacementDofs();
+    const int ne = mesh_.nElements();
+    TangentPattern& tp = pattern_;
+    tp.blockSize = nd*nd + 2*nd + 1;
+    // Same (row, col) list as the element loop of assemble(), reduced
+    std::vector<int> row(std::size_t(ne)*tp.blockSize, -1);
+    std::vector<int> col(row.size(), -1);
+    Triplets t;
+    t.reserve(row.size() + tp.extra.size());
+    std::vector<int> dofs(nd);
+    for (int e = 0; e < ne; ++e)
+    {
+        const int* en = mesh_.element(e);
+        for (int b = 0; b < nen; ++b)
+            for (int i = 0; i < dim; ++i) dofs[b*dim + i] = en[b]*dim + i;
+        int* r = row.data() + std::size_t(e)*tp.blockSize;
+        int* c = col.data() + std::size_t(e)*tp.blockSize;
+        int k = 0;
+        for (int i = 0; i < nd; ++i)
+            for (int j = 0; j < nd; ++j, ++k)
+            {
+                r[k] = freeIndex_[dofs[i]];
+                c[k] = freeIndex_[dofs[j]];
+            }
+        if (multiplier_[e] >= 0)
+        {
+            const int pm = freeIndex_[nu + multiplier_[e]];
+            for (int i = 0; i < nd; ++i, k += 2)
+            {
+                r[k] = freeIndex_[dofs[i]];
+                c[k] = pm;
+                r[k + 1] = pm;
+                c[k + 1] = freeIndex_[dofs[i]];
+            }
+            r[k] = pm;
+            c[k] = pm;
+        }
+    }
+    for (std::size_t k = 0; k < row.size(); ++k)
+    {
+        if (row[k] >= 0 && col[k] >= 0) t.emplace_back(row[k], col[k], 0.0);
+    }
+    for (const auto& rc : tp.extra) t.emplace_back(rc.first, rc.second, 0.0);
+    tp.K.resize(nFree_, nFree_);
+    tp.K.setFromTriplets(t.begin(), t.end());
+    tp.K.makeCompressed();
+    tp.slot.assign(row.size(), -1);
+    const int* outer = tp.K.outerIndexPtr();
+    const int* inner = tp.K.innerIndexPtr();
+    for (std::size_t k = 0; k < row.size(); ++k)
+    {
+        if (row[k] < 0 || col[k] < 0) continue;
+        const int* p = std::lower_bound
+        (
+            inner + outer[col[k]], inner + outer[col[k] + 1], row[k]
+        );
+        tp.slot[k] = int(p - inner);
+    }
+    tp.built = true;
+}
+
+
+bool solid::Model::addToPattern
+(
+    const Triplets& t,
+    Eigen::SparseMatrix<double>& K
+)
+{
+    const int* outer = K.outerIndexPtr();
+    const int* inner = K.innerIndexPtr();
+    double* value = K.valuePtr();
+    bool inside = true;
+    for (const auto& tr : t)
+    {
+        const int r = freeIndex_[tr.row()], c = freeIndex_[tr.col()];
+        if (r < 0 || c < 0) continue;
+        const int* end = inner + outer[c + 1];
+        const int* p = std::lower_bound(inner + outer[c], end, r);
+        if (p != end && *p == r)
+        {
+            value[p - inner] += tr.value();
+        }
+        else
+        {
+            pattern_.extra.emplace_back(r, c);
+            inside = false;
+        }
+    }
+    return inside;
 }
 
 
@@ -192,16 +289,32 @@ void solid::Model::assemble
     const int nu = nDisplacementDofs();
     a.fint = Eigen::VectorXd::Zero(nu);
     a.constraint = Eigen::VectorXd::Zero(nMultipliers());
-    a.K.clear();
+    a.contributionK.clear();
     a.energy = 0;
     a.dissipated = 0;
     a.shockHeat = 0;
     a.viscousHeat = 0;
     a.temperatureRiseMax = 0;
     a.stableDt = std::numeric_limits<double>::infinity();
+    double* Kv = nullptr;
     if (tangent)
     {
-        a.K.reserve(std::size_t(mesh_.nElements())*(nd*nd + 2*nd));
+        if (!pattern_.built) buildPattern();
+        const Eigen::SparseMatrix<double>& P = pattern_.K;
+        if
+        (
+            a.K.nonZeros() != P.nonZeros() || a.K.rows() != P.rows()
+         || !std::equal
+            (
+                P.outerIndexPtr(), P.outerIndexPtr() + P.outerSize() + 1,
+                a.K.outerIndexPtr()
+            )
+        )
+        {
+            a.K = P;
+        }
+        Kv = a.K.valuePtr();
+        std::fill(Kv, Kv + a.K.nonZeros(), 0.0);
     }
     ElementOutput out;
     std::vector<int> dofs(nd);
@@ -250,28 +363,42 @@ void solid::Model::assemble
         }
         if (tangent)
         {
+            // Scatter in the order of the former triplet list (element by
+            // element), so every entry sums its terms in the same order
+            const int* s =
+                pattern_.slot.data() + std::size_t(e)*pattern_.blockSize;
+            int k = 0;
             for (int i = 0; i < nd; ++i)
-                for (int j = 0; j < nd; ++j)
-                    a.K.emplace_back(dofs[i], dofs[j], out.K(i, j));
+                for (int j = 0; j < nd; ++j, ++k)
+                    if (s[k] >= 0) Kv[s[k]] += out.K(i, j);
             if (m >= 0)
             {
-                for (int i = 0; i < nd; ++i)
+                for (int i = 0; i < nd; ++i, k += 2)
                 {
-                    a.K.emplace_back(dofs[i], nu + m, -out.g(i));
-                    a.K.emplace_back(nu + m, dofs[i], -out.g(i));
+                    if (s[k] >= 0) Kv[s[k]] += -out.g(i);
+                    if (s[k + 1] >= 0) Kv[s[k + 1]] += -out.g(i);
                 }
-                a.K.emplace_back
-                (
-                    nu + m, nu + m,
-                    geometry_[e].V*vol.dilatationDerivative(p(m))
-                );
+                if (s[k] >= 0)
+                {
+                    Kv[s[k]] += geometry_[e].V*vol.dilatationDerivative(p(m));
+                }
             }
         }
     }
     a.fext = Eigen::VectorXd::Zero(nu);
     for (const auto& c : contributions_)
     {
-        c->addForce(*this, x, t, a.fext, tangent ? &a.K : nullptr);
+        c->addForce
+        (
+            *this, x, t, a.fext, tangent ? &a.contributionK : nullptr
+        );
+    }
+    if (tangent && !addToPattern(a.contributionK, a.K))
+    {
+        // A contribution coupled dofs outside the element pattern: extend
+        // the pattern once and assemble again
+        buildPattern();
+        assemble(x, p, t, dt, tangent, a);
     }
 }
 
