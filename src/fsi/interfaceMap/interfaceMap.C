@@ -241,7 +241,7 @@ void Foam::interfaceMap::quadrature3D
         forAll(f, k)
         {
             const point& a = lp[f[k]];
-            const point& b = lp[f.fcIndex(k)];
+            const point& b = lp[f[f.fcIndex(k)]];
             const scalar area = 0.5*mag((a - Cf[facei]) ^ (b - Cf[facei]));
             qp.append((Cf[facei] + a + b)/3);
             quadFace_.append(facei);
