@@ -66,7 +66,7 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
     #include "createTime.H"
-    #include "createDynamicFvMesh.H"
+    #include "createFsiMesh.H"
     #include "createFields.H"
     #include "createFsi.H"
     #include "createTimeControls.H"
@@ -78,39 +78,18 @@ int main(int argc, char *argv[])
 
     Info<< "\nStarting time loop\n" << endl;
 
+    // First time step from the initial state; a restart continues with the
+    // time step saved with its time
+    if (!(runTime.value() > 0))
+    {
+        flux->fluxes(thermo, U, phi, phiU, phiE, amaxSf);
+        #include "nextDeltaT.H"
+    }
+
     while (runTime.run())
     {
-        #include "readTimeControls.H"
-
-        // Wave speeds for the Courant number: the last flux evaluation of
-        // the previous step (wall force at t_n) was on this same state and
-        // mesh, so only the first step evaluates them
-        if (runTime.timeIndex() == runTime.startTimeIndex())
-        {
-            flux->fluxes(thermo, U, phi, phiU, phiE, amaxSf);
-        }
-
-        // A wedge face pair carries no wave across (axisymmetry, the swirl
-        // is removed in aleStep.H): out of the Courant number, else the
-        // thin cells at the axis (width r theta) would set the time step
-        forAll(mesh.boundary(), patchi)
-        {
-            if (isA<wedgeFvPatch>(mesh.boundary()[patchi]))
-            {
-                amaxSf.boundaryFieldRef()[patchi] = Zero;
-            }
-        }
-
-        #include "courantNo.H"
-        #include "setDeltaT.H"
-
-        // Lock step with the explicit solid
-        if (runTime.deltaTValue() > solid.timeStep())
-        {
-            runTime.setDeltaT(solid.timeStep());
-        }
-
         ++runTime;
+        const scalar stepDeltaT = runTime.deltaTValue();
 
         Info<< "Time = " << runTime.timeName() << " s" << nl << endl;
 
@@ -118,10 +97,12 @@ int main(int argc, char *argv[])
 
         thermo.checkStates();
 
+        #include "nextDeltaT.H"
+
         // Fluid fields, then the solid (probes; at write times its state),
         // then the coupling state: the last file of a complete time
         runTime.write();
-        solid.write();
+        solid.write(stepDeltaT);
         #include "writeFsiState.H"
 
         runTime.printExecutionTime(Info);

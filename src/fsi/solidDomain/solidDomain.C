@@ -617,14 +617,13 @@ void Foam::solidDomain::advance
 }
 
 
-void Foam::solidDomain::write()
+void Foam::solidDomain::write(const scalar dt)
 {
     const auto vonMises = [](const solid::Mat3& s)
     {
         const solid::Mat3 dev = s - s.trace()/3*solid::Mat3::Identity();
         return std::sqrt(1.5*(dev.array()*dev.array()).sum());
     };
-    const scalar dt = runTime_.deltaTValue();
     if (probeFile_.valid())
     {
         OFstream& os = probeFile_();
