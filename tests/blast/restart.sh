@@ -4,10 +4,11 @@
 # interruption; a copy killed with SIGKILL after the pulse has reached the
 # cell (a time >= 10 ns written) and restarted from its latest time
 # (startFrom latestTime). Asserts that the restarted run reproduces the
-# uninterrupted one: solid probes (pressure, von Mises, strains, rates at
-# the three interface probes) and coupling log (dt, iterations, residual,
-# interface force) at every step after the restart time, relative 1e-10 of
-# each column's range (bitwise in practice: the differences are printed).
+# uninterrupted one at every step after the restart time: solid probes
+# (pressure, von Mises, strains, rates at the three interface probes) and
+# coupling log (time, dt, iterations, converged: exactly; interface force,
+# largest interface velocity) within 1e-10 of each column's range (the
+# differences are printed; not bitwise yet: ulp-level differences remain).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
@@ -57,23 +58,34 @@ def load(path):
     return np.array([[float(x) for x in l.split()] for l in open(path)
                      if l.strip() and not l.startswith('#')])
 ok = True
-for name in ("solidProbes/%s/solidProbes.dat", "fsi/%s/coupling.dat"):
+# Columns compared: every solid probe column; of the coupling log the time,
+# dt, iterations and converged flag (exactly) and the interface force (r, z)
+# and the largest interface velocity. Not compared: the final residual (a
+# convergence measure below the 1e-6 tolerance), the swirl component of the
+# force (zero but for round-off, 1e-20 N) and gclError (round-off, 1e-14)
+checks = (("solidProbes/%s/solidProbes.dat", None, ()),
+          ("fsi/%s/coupling.dat", (0, 1, 2, 4, 5, 6, 8), (0, 1, 2, 4)))
+for name, cols, exact in checks:
     r = load(os.path.join(ref, "postProcessing", name % "0"))
     dirs = [d for d in glob.glob(os.path.join(killed, "postProcessing",
             name.split("/")[0], "*")) if os.path.basename(d) != "0"]
     assert len(dirs) == 1, dirs
     t0 = float(os.path.basename(dirs[0]))
     k = load(os.path.join(dirs[0], os.path.basename(name)))
-    sel = r[:, 0] > t0*(1 + 1e-12)
-    rr = r[sel]
+    rr = r[r[:, 0] > t0*(1 + 1e-12)]
     assert rr.shape == k.shape, (rr.shape, k.shape)
+    if cols is not None:
+        rr, k = rr[:, cols], k[:, cols]
     scale = np.maximum(np.abs(rr).max(axis=0), 1e-300)
-    diff = (np.abs(rr - k)/scale).max()
-    bitwise = np.array_equal(rr, k)
-    print("%s: %d steps after the restart at %g s, max difference %.3e of "
-          "the column range, bitwise %s" % (os.path.basename(name), len(k),
-          t0, diff, bitwise))
-    ok &= diff <= 1e-10
+    diff = np.abs(rr - k)/scale
+    print("%s: %d steps after the restart at %g s, largest difference %.3e "
+          "of the column range (per column: %s), bitwise %s"
+          % (os.path.basename(name), len(k), t0, diff.max(),
+             " ".join("%.1e" % d for d in diff.max(axis=0)),
+             np.array_equal(rr, k)))
+    ok &= diff.max() <= 1e-10
+    for c in exact:
+        ok &= np.array_equal(rr[:, c], k[:, c])
     if "solidProbes" in name:
         # the pulse is in the cell over the compared window
         ok &= rr[:, 1].max() > 25e6
