@@ -1,13 +1,11 @@
 #include "Checkpoint.H"
+#include "AtomicFile.H"
 #include "SolidError.H"
 
 #include <hdf5.h>
 
-#include <cstdio>
-#include <fcntl.h>
 #include <string>
 #include <sys/stat.h>
-#include <unistd.h>
 
 namespace
 {
@@ -37,7 +35,14 @@ struct H5File
             );
         }
     }
-    ~H5File() { H5Fclose(id); }
+    //- Close now (flushes), reporting a failure
+    void close()
+    {
+        const hid_t f = id;
+        id = -1;
+        if (H5Fclose(f) < 0) throw ioError("cannot close an HDF5 file");
+    }
+    ~H5File() { if (id >= 0) H5Fclose(id); }
 };
 
 struct Names
@@ -123,7 +128,7 @@ solid::Checkpoint solid::Checkpoint::read(const std::string& file)
 
 void solid::Checkpoint::write() const
 {
-    const std::string tmp = file_ + ".tmp";
+    const std::string tmp = temporaryName(file_);
     {
         H5File f(tmp, 0, true);
         // Names with '/' create their groups
@@ -157,18 +162,7 @@ void solid::Checkpoint::write() const
             throw ioError("cannot flush '" + tmp + "'");
         }
     }
-    // The data on disk before the rename makes it visible
-    const int fd = ::open(tmp.c_str(), O_RDONLY);
-    if (fd < 0 || ::fsync(fd) != 0)
-    {
-        if (fd >= 0) ::close(fd);
-        throw ioError("cannot sync '" + tmp + "'");
-    }
-    ::close(fd);
-    if (std::rename(tmp.c_str(), file_.c_str()) != 0)
-    {
-        throw ioError("cannot rename '" + tmp + "' to '" + file_ + "'");
-    }
+    commitFile(tmp, file_);
 }
 
 
@@ -236,26 +230,49 @@ void solid::Checkpoint::restoreModel
 }
 
 
-void solid::truncateSteps(const std::string& h5, int n)
+int solid::truncateSteps(const std::string& h5, int n)
 {
-    H5File f(h5, H5F_ACC_RDWR, false);
-    if (H5Lexists(f.id, "steps", H5P_DEFAULT) <= 0) return;
-    const hid_t g = H5Gopen2(f.id, "steps", H5P_DEFAULT);
-    if (g < 0) throw ioError("cannot open /steps of '" + h5 + "'");
-    for (const std::string& name : members(g))
+    // Which steps go: read only, so that a file with none (the usual
+    // restart) is neither copied nor touched
+    std::vector<std::string> remove;
     {
-        const bool numeric =
-            !name.empty()
-         && name.find_first_not_of("0123456789") == std::string::npos;
-        if (numeric && std::stoi(name) >= n)
+        H5File f(h5, H5F_ACC_RDONLY, false);
+        if (H5Lexists(f.id, "steps", H5P_DEFAULT) <= 0) return 0;
+        const hid_t g = H5Gopen2(f.id, "steps", H5P_DEFAULT);
+        if (g < 0) throw ioError("cannot open /steps of '" + h5 + "'");
+        for (const std::string& name : members(g))
+        {
+            const bool numeric =
+                !name.empty() && name.size() <= 9
+             && name.find_first_not_of("0123456789") == std::string::npos;
+            if (numeric && std::stoi(name) >= n)
+            {
+                remove.push_back(name);
+            }
+        }
+        H5Gclose(g);
+    }
+    if (remove.empty()) return 0;
+
+    // Edited in a copy that replaces the file (AtomicFile.H): a run killed
+    // during the edit leaves the file as it was
+    const std::string tmp = copyToTemporary(h5);
+    {
+        H5File f(tmp, H5F_ACC_RDWR, false);
+        const hid_t g = H5Gopen2(f.id, "steps", H5P_DEFAULT);
+        if (g < 0) throw ioError("cannot open /steps of '" + tmp + "'");
+        for (const std::string& name : remove)
         {
             if (H5Ldelete(g, name.c_str(), H5P_DEFAULT) < 0)
             {
                 H5Gclose(g);
-                throw ioError("cannot remove step " + name + " of '" + h5
+                throw ioError("cannot remove step " + name + " of '" + tmp
                               + "'");
             }
         }
+        H5Gclose(g);
+        f.close();
     }
-    H5Gclose(g);
+    commitFile(tmp, h5);
+    return int(remove.size());
 }

@@ -1,17 +1,11 @@
 #include "ResultWriter.H"
+#include "AtomicFile.H"
 #include "SolidError.H"
 
 #include <hdf5.h>
 
 #include <algorithm>
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
 #include <fstream>
-
-#include <fcntl.h>
-#include <unistd.h>
 
 namespace
 {
@@ -58,31 +52,6 @@ struct File
     }
     ~File() { if (id >= 0) H5Fclose(id); }
 };
-
-// Atomic replacement: tmp (complete) is flushed to disk, then renamed over
-// target, so that target is always either the old or the new file
-void commitFile(const std::string& tmp, const std::string& target)
-{
-    const int fd = ::open(tmp.c_str(), O_RDONLY);
-    if (fd < 0 || ::fsync(fd) != 0)
-    {
-        if (fd >= 0) ::close(fd);
-        throw SolidError
-        (
-            SolidError::Kind::io, "cannot flush '" + tmp + "': "
-          + std::strerror(errno)
-        );
-    }
-    ::close(fd);
-    if (std::rename(tmp.c_str(), target.c_str()) != 0)
-    {
-        throw SolidError
-        (
-            SolidError::Kind::io, "cannot rename '" + tmp + "' to '"
-          + target + "': " + std::strerror(errno)
-        );
-    }
-}
 
 struct Group
 {
@@ -189,7 +158,7 @@ solid::ResultWriter::ResultWriter
         writeXdmf(model);
         return;
     }
-    const std::string tmp = h5File() + ".tmp";
+    const std::string tmp = temporaryName(h5File());
     {
         File f(tmp, File::Mode::create);
         {
@@ -228,22 +197,7 @@ int solid::ResultWriter::write(Model& model)
     const int k = steps_.empty() ? 0 : steps_.back().first + 1;
     // Copy, append, replace: a kill at any instant leaves the previous
     // file intact (costs one copy of the file per step)
-    const std::string tmp = h5File() + ".tmp";
-    try
-    {
-        std::filesystem::copy_file
-        (
-            h5File(), tmp, std::filesystem::copy_options::overwrite_existing
-        );
-    }
-    catch (const std::filesystem::filesystem_error& e)
-    {
-        throw SolidError
-        (
-            SolidError::Kind::io, "cannot copy '" + h5File() + "' to '"
-          + tmp + "': " + e.what()
-        );
-    }
+    const std::string tmp = copyToTemporary(h5File());
     {
         File f(tmp, File::Mode::readWrite);
         {
@@ -284,7 +238,7 @@ void solid::ResultWriter::writeXdmf(const Model& model) const
     const Mesh& m = model.mesh();
     const std::string h5 = h5File().substr(h5File().find_last_of('/') + 1);
     const int nn = m.nNodes(), ne = m.nElements();
-    const std::string tmp = xdmfFile() + ".tmp";
+    const std::string tmp = temporaryName(xdmfFile());
     std::ofstream os(tmp);
     if (!os)
     {

@@ -2,7 +2,12 @@
 // instants (many of them inside a write) and restarted from the last step
 // of its file each time must leave a readable .h5/.xmf after every kill and
 // end with the same steps as an uninterrupted run (restart state to 1e-10).
+// truncateSteps (Checkpoint.H), which cuts a result file back to the step
+// of a restart: the kept steps bitwise, a file with nothing to cut
+// untouched, and a SIGKILL during the cut leaves the file before or after
+// it, never between.
 
+#include "Checkpoint.H"
 #include "Loads.H"
 #include "Model.H"
 #include "ResultWriter.H"
@@ -15,12 +20,15 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <functional>
 #include <random>
 #include <sstream>
 #include <thread>
 
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -81,20 +89,53 @@ std::string text(const std::string& f)
     return ss.str();
 }
 
+enum class Outcome { finished, killed, failed };
+
+//- Run work() in a forked process and SIGKILL it after delay [ms]
+Outcome runKilledAfter(const std::function<void()>& work, double delay)
+{
+    const pid_t pid = fork();
+    if (pid < 0) return Outcome::failed;
+    if (pid == 0)
+    {
+        try { work(); } catch (...) { _exit(2); }
+        _exit(0);
+    }
+    std::this_thread::sleep_for
+    (
+        std::chrono::duration<double, std::milli>(delay)
+    );
+    const bool killed = kill(pid, SIGKILL) == 0;
+    int status = 0;
+    waitpid(pid, &status, 0);
+    if (WIFEXITED(status))
+    {
+        return WEXITSTATUS(status) == 0 ? Outcome::finished : Outcome::failed;
+    }
+    return killed ? Outcome::killed : Outcome::failed;
+}
+
+double msSince(std::chrono::steady_clock::time_point t0)
+{
+    return std::chrono::duration<double, std::milli>
+        (std::chrono::steady_clock::now() - t0).count();
+}
+
+void removeFiles(std::initializer_list<const char*> files)
+{
+    for (const char* f : files) std::remove(f);
+}
+
 } // namespace
 
 
 TEST(AtomicResultWriter, SigkillDuringWritesLosesNothing)
 {
-    for (const char* f : {"ref.h5", "ref.xmf", "killed.h5", "killed.xmf",
-                          "killed.h5.tmp", "killed.xmf.tmp"})
-    {
-        std::remove(f);
-    }
+    removeFiles({"ref.h5", "ref.xmf", "killed.h5", "killed.xmf",
+                 "killed.h5.tmp", "killed.xmf.tmp"});
     const auto t0 = std::chrono::steady_clock::now();
     run("ref");
-    const double tRun = std::chrono::duration<double, std::milli>
-        (std::chrono::steady_clock::now() - t0).count();
+    const double tRun = msSince(t0);
     ASSERT_EQ(ResultWriter::steps("ref.h5").size(), std::size_t(nSteps + 1));
 
     std::mt19937 gen(12345);
@@ -105,23 +146,13 @@ TEST(AtomicResultWriter, SigkillDuringWritesLosesNothing)
     while (!finished && starts < 400)
     {
         ++starts;
-        const pid_t pid = fork();
-        ASSERT_GE(pid, 0);
-        if (pid == 0)
+        const Outcome o = runKilledAfter([] { run("killed"); }, delay(gen));
+        ASSERT_NE(o, Outcome::failed) << "the writer failed";
+        if (o == Outcome::finished)
         {
-            try { run("killed"); } catch (...) { _exit(2); }
-            _exit(0);
-        }
-        std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(delay(gen)));
-        const bool killed = kill(pid, SIGKILL) == 0;
-        int status = 0;
-        waitpid(pid, &status, 0);
-        if (WIFEXITED(status))
-        {
-            ASSERT_EQ(WEXITSTATUS(status), 0) << "the writer failed";
             finished = true;
         }
-        else if (killed)
+        else
         {
             ++kills;
             if (exists("killed.h5.tmp") || exists("killed.xmf.tmp"))
@@ -180,4 +211,93 @@ TEST(AtomicResultWriter, SigkillDuringWritesLosesNothing)
     }
     EXPECT_TRUE(x == text("ref.xmf")) << "the XDMF differs from the "
         "uninterrupted run's";
+}
+
+
+TEST(AtomicResultWriter, TruncateStepsKeepsEarlierStepsBitwise)
+{
+    removeFiles({"truncRef.h5", "truncRef.xmf", "trunc.h5", "trunc.xmf",
+                 "trunc.h5.tmp"});
+    run("truncRef");
+    std::filesystem::copy_file("truncRef.h5", "trunc.h5");
+    const auto all = ResultWriter::steps("truncRef.h5");
+
+    // Nothing to remove: the file is not rewritten
+    struct stat s0, s1;
+    ASSERT_EQ(stat("trunc.h5", &s0), 0);
+    EXPECT_EQ(truncateSteps("trunc.h5", nSteps + 1), 0);
+    ASSERT_EQ(stat("trunc.h5", &s1), 0);
+    EXPECT_EQ(s0.st_ino, s1.st_ino);
+    EXPECT_EQ(s0.st_mtim.tv_nsec, s1.st_mtim.tv_nsec);
+
+    const int n = 25;
+    EXPECT_EQ(truncateSteps("trunc.h5", n), nSteps + 1 - n);
+    EXPECT_FALSE(exists("trunc.h5.tmp"));
+    const auto kept = ResultWriter::steps("trunc.h5");
+    ASSERT_EQ(kept.size(), std::size_t(n));
+    for (int i = 0; i < n; ++i)
+    {
+        EXPECT_EQ(kept[i], all[i]);
+        auto a = creepModel(), b = creepModel();
+        ResultWriter::restart("truncRef.h5", i, *a);
+        ResultWriter::restart("trunc.h5", i, *b);
+        EXPECT_TRUE(a->u == b->u && a->v == b->v
+                    && a->pressure == b->pressure) << "step " << i;
+    }
+
+    // A writer continued from the last kept step appends step n
+    auto m = creepModel();
+    ResultWriter::restart("trunc.h5", n - 1, *m);
+    ResultWriter w("trunc", *m, true);
+    EXPECT_EQ(w.write(*m), n);
+}
+
+
+TEST(AtomicResultWriter, SigkillDuringTruncateStepsLeavesOldOrNew)
+{
+    removeFiles({"truncSrc.h5", "truncSrc.xmf", "trunc2.h5",
+                 "trunc2.h5.tmp"});
+    run("truncSrc");
+    const std::size_t nAll = ResultWriter::steps("truncSrc.h5").size();
+    const int n = 10;
+    const auto fresh = []
+    {
+        std::filesystem::copy_file
+        (
+            "truncSrc.h5", "trunc2.h5",
+            std::filesystem::copy_options::overwrite_existing
+        );
+        std::remove("trunc2.h5.tmp");
+    };
+    fresh();
+    const auto t0 = std::chrono::steady_clock::now();
+    truncateSteps("trunc2.h5", n);
+    const double tCut = msSince(t0);
+
+    // Kill between 0 and twice the time of a cut after the fork
+    std::mt19937 gen(4321);
+    std::uniform_real_distribution<double> delay(0, 2*tCut);
+    int kills = 0, inside = 0, before = 0, after = 0, attempts = 0;
+    while (inside < 5 && attempts < 500)
+    {
+        ++attempts;
+        fresh();
+        const Outcome o =
+            runKilledAfter([] { truncateSteps("trunc2.h5", n); }, delay(gen));
+        ASSERT_NE(o, Outcome::failed) << "truncateSteps failed";
+        kills += o == Outcome::killed;
+        inside += o == Outcome::killed && exists("trunc2.h5.tmp");
+        std::vector<std::pair<int, double>> steps;
+        ASSERT_NO_THROW(steps = ResultWriter::steps("trunc2.h5"))
+            << "unreadable after attempt " << attempts;
+        ASSERT_TRUE(steps.size() == nAll || steps.size() == std::size_t(n))
+            << steps.size() << " steps after attempt " << attempts;
+        (steps.size() == nAll ? before : after) += 1;
+    }
+    std::printf("AtomicResultWriter: truncateSteps of a %.0f kB file %.2f ms;"
+                " %d attempts, %d SIGKILLs, %d inside the cut (temporary "
+                "present); file as before %d times, cut %d times\n",
+                std::filesystem::file_size("truncSrc.h5")/1024.0, tCut,
+                attempts, kills, inside, before, after);
+    EXPECT_GE(inside, 1) << "no kill landed inside a cut";
 }
