@@ -28,6 +28,13 @@ Description
     postProcessing/fsi/<time>/coupling.dat; non-converged steps are counted
     and reported (or stop the run).
 
+    Restart (startFrom latestTime): every write time holds the fluid
+    fields and points, the solid state (uniform/solidState and its step in
+    solid/solid.h5) and the coupling state (uniform/fsiState), written
+    between the markers of src/foamTools/writeGuard.H; a time whose write
+    was interrupted is moved aside and the run continues from the latest
+    complete one, with the steps of solid.h5 after it removed.
+
 Usage
     constant/fsiProperties (interface and coupling dictionaries, see
     src/fsi/interfaceMap and couplingScheme), constant/solidProperties
@@ -48,10 +55,14 @@ Usage
 #include "riemannFlux.H"
 #include "rungeKuttaScheme.H"
 #include "cpuTime.H"
+#include "clockTime.H"
 #include "interfaceMap.H"
 #include "interfaceMotion.H"
 #include "solidDomain.H"
 #include "couplingScheme.H"
+#include "Checkpoint.H"
+#include "SolidError.H"
+#include "writeGuard.H"
 
 int main(int argc, char *argv[])
 {
@@ -65,6 +76,7 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+    foamTools::writeGuard::discardIncompleteTimes(args);
     #include "createTime.H"
     #include "createFsiMesh.H"
     #include "createFields.H"
@@ -100,10 +112,13 @@ int main(int argc, char *argv[])
         #include "nextDeltaT.H"
 
         // Fluid fields, then the solid (probes; at write times its state),
-        // then the coupling state: the last file of a complete time
-        runTime.write();
-        solid.write(stepDeltaT);
-        #include "writeFsiState.H"
+        // then the coupling state, all inside the write markers: a time
+        // whose write was interrupted is moved aside at the restart
+        foamTools::writeGuard::write(runTime, [&]
+        {
+            solid.write(stepDeltaT);
+            #include "writeFsiState.H"
+        });
 
         runTime.printExecutionTime(Info);
     }
