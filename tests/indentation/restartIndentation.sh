@@ -8,10 +8,7 @@
 # bit-equal displacement and pressure in its last step; a checkpoint of
 # another mesh is refused with a clear message and the outputs untouched.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/../.." && pwd)
-. "$root/etc/bashrc"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "$0")/../lib/restartTools.sh"
 
 ref=$work/reference
 cp -r "$root/tutorials/indentation/validationCell" "$ref"
@@ -49,15 +46,8 @@ out=postProcessing/indentation
 # Run until force.dat has $1 lines, then send signal $2
 runAndKill()
 {
-    cellIndentationFoam > log.run.$2 2>&1 &
-    local pid=$!
-    while kill -0 $pid 2> /dev/null \
-        && [ "$(grep -vs '^#' $out/force.dat | wc -l)" -lt "$1" ]
-    do
-        sleep 0.02
-    done
-    kill -s "$2" $pid 2> /dev/null || { echo "run ended before the kill"; exit 1; }
-    wait $pid || true
+    runUntil "$2" "[ \$(grep -vs '^#' $out/force.dat | wc -l) -ge $1 ]" \
+        log.run.$2 cellIndentationFoam
     echo "killed with SIG$2 at $(grep -vs '^#' $out/force.dat | wc -l) lines"
 }
 runAndKill $((nLines/3)) KILL

@@ -19,10 +19,7 @@
 #      aside (else they would start from different times) and reach the
 #      decomposed run's final fields bitwise.
 set -euo pipefail
-root=$(cd "$(dirname "$0")/../.." && pwd)
-. "$root/etc/bashrc"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "$0")/../lib/restartTools.sh"
 setup() {
     mkdir "$work/$1"
     cp -r "$root/tutorials/verification/waterPulseWall"/{0.orig,system,constant} "$work/$1"/
@@ -31,16 +28,7 @@ setup() {
     ( cd "$work/$1" && cp -r 0.orig 0 && blockMesh > log.blockMesh )
 }
 same() {    # same RUN: final fields of RUN equal to those of a
-    local s=0
-    for f in p U rho rhoU rhoE
-    do
-        if ! cmp -s "$work/a/$last/$f" "$work/$1/$last/$f"
-        then
-            echo "restartKilledWrites: $f at $last s of run $1 differs from the uninterrupted run"
-            s=1
-        fi
-    done
-    return $s
+    sameFiles "$work/a/$last" "$work/$1/$last" p U rho rhoU rhoE
 }
 
 setup a
@@ -121,11 +109,8 @@ for proc in 0 1
 do
     [ -d "$work/pd/processor$proc/$pcut.incomplete" ] \
         || { echo "restartKilledWrites: (d) processor$proc/$pcut not moved aside"; exit 1; }
-    for f in p U rho rhoU rhoE
-    do
-        cmp -s "$work/pa/processor$proc/$plast/$f" "$work/pd/processor$proc/$plast/$f" \
-            || { echo "restartKilledWrites: (d) processor$proc/$plast/$f differs"; exit 1; }
-    done
+    sameFiles "$work/pa/processor$proc/$plast" "$work/pd/processor$proc/$plast" \
+        p U rho rhoU rhoE || { echo "restartKilledWrites: (d) processor$proc differs"; exit 1; }
 done
 echo "restartKilledWrites: (d) 2 ranks, $pcut s incomplete on processor1 only: moved aside on both, final fields bitwise equal"
 

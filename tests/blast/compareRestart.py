@@ -1,0 +1,178 @@
+#!/usr/bin/python3
+"""Compare the postProcessing logs of an interrupted and restarted
+cellBlastFoam run (KILLED) with those of an uninterrupted one (REF).
+
+    compareRestart.py REF KILLED [--tol 1e-10] [--bitwise] [--pulse P]
+                      [--h5]
+
+Every start of KILLED wrote its logs to postProcessing/<log>/<start time>/;
+they are put together in time: from each start, its rows up to the next
+start. Each row is compared with the reference row of the same step:
+every column within TOL of the column's largest magnitude, time, dt,
+iterations and the converged flag of coupling.dat exactly; with --bitwise
+every compared value exactly. coupling.dat is flushed at every write time,
+so it must be complete: every reference row present. The solid logs
+(solidProbes, solidInterfaces) are not flushed at write times
+(src/fsi/solidDomain): the rows of a killed start after its last flush are
+lost and counted as missing, not failed. --pulse P: the first probe's
+pressure must exceed P [Pa] after the last start (the pulse is in the cell
+over a compared window). --h5: solid/solid.h5 must hold the same steps
+(index and time) as the reference's, every dataset within TOL of its
+largest magnitude (--bitwise: equal).
+"""
+import argparse
+import glob
+import os
+import sys
+
+import numpy as np
+
+# log, columns compared (None: all), exact columns, complete
+LOGS = (
+    # not compared: the final residual (a convergence measure below the
+    # tolerance), the swirl component of the force (zero but for round-off,
+    # 1e-20 N), gclError (round-off, 1e-14): columns 3, 7, 9
+    ("fsi/coupling.dat", (0, 1, 2, 4, 5, 6, 8), (0, 1, 2, 4), True),
+    ("solidProbes/solidProbes.dat", None, (0,), False),
+    ("solidInterfaces/interfaceMaxima.dat", None, (0,), False),
+)
+
+
+def rows(path, ncols):
+    """Data rows of a log with ncols columns (a line cut by a kill has
+    fewer columns or is no number and is left out)."""
+    out = []
+    for line in open(path):
+        if not line.strip() or line.startswith('#'):
+            continue
+        try:
+            r = [float(x) for x in line.split()]
+        except ValueError:
+            continue
+        if len(r) == ncols:
+            out.append(r)
+    return np.array(out).reshape(-1, ncols)
+
+
+def segments(case, log):
+    """(start time, path) of every start's log, earliest first."""
+    d, name = log.split('/')
+    found = glob.glob(os.path.join(case, "postProcessing", d, "*", name))
+    return sorted((float(os.path.basename(os.path.dirname(p))), p)
+                  for p in found)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("ref")
+    ap.add_argument("killed")
+    ap.add_argument("--tol", type=float, default=1e-10)
+    ap.add_argument("--bitwise", action="store_true")
+    ap.add_argument("--pulse", type=float, default=None)
+    ap.add_argument("--h5", action="store_true")
+    a = ap.parse_args()
+    ref, killed, tol, bitwise = a.ref, a.killed, a.tol, a.bitwise
+    ok = True
+    for log, cols, exact, complete in LOGS:
+        segs = segments(ref, log)
+        if not segs:
+            continue
+        ncols = max(len(l.split()) for l in open(segs[0][1])
+                    if l.strip() and not l.startswith('#'))
+        r = rows(segs[0][1], ncols)
+        ks = segments(killed, log)
+        compared = missing = 0
+        worst = np.zeros(ncols)
+        same = True
+        # Each start's rows up to the first row of the next start (the
+        # directory names are rounded to timePrecision: rows, not names,
+        # delimit the starts)
+        segs = [(t0, rows(path, ncols)) for t0, path in ks]
+        segs = [(t0, k) for t0, k in segs if len(k)]
+        for i, (t0, k) in enumerate(segs):
+            t1 = segs[i + 1][1][0, 0] if i + 1 < len(segs) else np.inf
+            k = k[k[:, 0] < t1]
+            rr = r[(r[:, 0] >= k[0, 0]) & (r[:, 0] < t1)]
+            if len(k) > len(rr) or not np.array_equal(rr[:len(k), 0],
+                                                      k[:, 0]):
+                print("%s: the steps of the start at %g s are not the "
+                      "reference's" % (log, t0))
+                ok = False
+                continue
+            missing += len(rr) - len(k)
+            if complete and len(rr) != len(k):
+                print("%s: the start at %g s lacks %d of the reference's "
+                      "rows before %g s" % (log, t0, len(rr) - len(k), t1))
+                ok = False
+            rr = rr[:len(k)]
+            compared += len(k)
+            c = list(cols) if cols is not None else list(range(ncols))
+            scale = np.maximum(np.abs(r[:, c]).max(axis=0), 1e-300)
+            if a.pulse is not None and "Probes" in log and i == len(segs) - 1:
+                peak = k[:, 1].max() if len(k) else 0
+                print("%s: probe peak pressure after the last start (%g s) "
+                      "%.4g MPa" % (log, t0, peak/1e6))
+                ok &= peak > a.pulse
+            if len(k):
+                d = np.abs(rr[:, c] - k[:, c])/scale
+                worst[c] = np.maximum(worst[c], d.max(axis=0))
+                same &= np.array_equal(rr[:, c], k[:, c])
+                for j in exact:
+                    if not np.array_equal(rr[:, j], k[:, j]):
+                        print("%s: column %d differs after the start at %g s"
+                              % (log, j, t0))
+                        ok = False
+        print("%s: %d starts, %d rows compared, %d missing (lost in a "
+              "killed run's output buffer), largest difference %.3e of the "
+              "column range (per column: %s), bitwise %s"
+              % (log, len(ks), compared, missing, worst.max(),
+                 " ".join("%.1e" % x for x in worst), same))
+        ok &= compared > 0 and worst.max() <= tol
+        if bitwise:
+            ok &= same
+    if a.h5:
+        ok &= compareH5(os.path.join(ref, "solid", "solid.h5"),
+                        os.path.join(killed, "solid", "solid.h5"), tol,
+                        bitwise)
+    sys.exit(0 if ok else 1)
+
+
+def compareH5(ref, killed, tol, bitwise):
+    """Same steps and times, every dataset of every step within tol
+    (bitwise: equal)."""
+    import h5py
+
+    def steps(f):
+        return sorted((int(k), f["steps"][k].attrs["time"])
+                      for k in f["steps"])
+
+    def datasets(g):
+        names = []
+        g.visititems(lambda name, obj: names.append(name)
+                     if isinstance(obj, h5py.Dataset) else None)
+        return names
+
+    with h5py.File(ref, "r") as a, h5py.File(killed, "r") as b:
+        sa, sb = steps(a), steps(b)
+        if sa != sb:
+            print("solid.h5: the steps (index, time) differ: %d in the "
+                  "reference, %d here" % (len(sa), len(sb)))
+            return False
+        worst, same, n = 0.0, True, 0
+        for k, _ in sa:
+            ga, gb = a["steps"][str(k)], b["steps"][str(k)]
+            for name in datasets(ga):
+                x, y = ga[name][()], gb[name][()]
+                n += 1
+                same &= np.array_equal(x, y)
+                if x.size:
+                    scale = max(np.abs(x).max(), 1e-300)
+                    worst = max(worst, np.abs(x - y).max()/scale)
+        print("solid.h5: %d steps, %d datasets, largest difference %.3e of "
+              "the dataset's magnitude, bitwise %s"
+              % (len(sa), n, worst, same))
+        return worst <= tol and (same or not bitwise)
+
+
+if __name__ == "__main__":
+    main()
