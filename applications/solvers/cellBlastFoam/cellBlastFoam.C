@@ -98,7 +98,7 @@ int main(int argc, char *argv[])
         #include "nextDeltaT.H"
     }
 
-    while (runTime.run())
+    while (foamTools::writeGuard::run(runTime))
     {
         ++runTime;
         const scalar stepDeltaT = runTime.deltaTValue();

@@ -68,7 +68,7 @@ int main(int argc, char *argv[])
 
     Info<< "\nStarting time loop\n" << endl;
 
-    while (runTime.run())
+    while (foamTools::writeGuard::run(runTime))
     {
         #include "readTimeControls.H"
         foamTools::checkTimeControls(runTime, adjustTimeStep, maxCo, maxDeltaT);
