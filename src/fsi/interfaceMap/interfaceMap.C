@@ -50,6 +50,51 @@ Foam::FixedList<scalar, 3> closestOnTriangle
     return {1 - v - w, v, w};
 }
 
+// Weights that add up to 1, rounded to multiples of 2^-32 and scaled back
+// to sum 1: weights equal in exact arithmetic (symmetric faces, matching
+// meshes) become bitwise equal, so that a symmetric load stays symmetric
+// (a round-off asymmetry seeds the zero-stiffness modes of a fluid-like
+// solid, which an added-mass-prone coupling amplifies: fsi.addedMass)
+void snapWeights(Foam::UList<scalar>& w)
+{
+    const scalar q = std::ldexp(1.0, 32);
+    scalar sum = 0;
+    for (scalar& x : w)
+    {
+        x = std::round(x*q)/q;
+        sum += x;
+    }
+    if (sum > 0)
+    {
+        for (scalar& x : w) x /= sum;
+    }
+}
+
+// Compensated sum (Neumaier) of products w*x with their exact rounding
+// errors (fma): the result does not depend on the order of the terms
+// (except in rare ties), so that symmetric weights give bitwise symmetric
+// values whatever the numbering
+struct exactSum
+{
+    scalar s = 0, c = 0;
+
+    void add(const scalar x)
+    {
+        const scalar t = s + x;
+        c += std::abs(s) >= std::abs(x) ? (s - t) + x : (x - t) + s;
+        s = t;
+    }
+
+    void addProduct(const scalar w, const scalar x)
+    {
+        const scalar p = w*x;
+        add(p);
+        add(std::fma(w, x, -p));
+    }
+
+    scalar value() const { return s + c; }
+};
+
 } // namespace
 
 
@@ -352,11 +397,13 @@ void Foam::interfaceMap::pointWeights3D(const polyPatch& fluidPatch)
             w += area/3/f.size();
             total += area;
         }
+        w /= max(total, VSMALL);
+        snapWeights(w);
         forAll(f, k)
         {
             df.append(facei);
             dp.append(f[k]);
-            dw.append(w[k]/max(total, VSMALL));
+            dw.append(w[k]);
         }
     }
     dualFace_.transfer(df);
@@ -541,11 +588,15 @@ void Foam::interfaceMap::projectionWeights
                 << "fluid patch point " << lp[p] << " has no projection"
                 << " weight" << exit(FatalError);
         }
+        scalarField w(label(rows[p].size()));
+        label i = 0;
         for (const auto& e : rows[p])
         {
             nodes.append(e.first);
-            weights.append(e.second/Ap[p]);
+            w[i++] = e.second/Ap[p];
         }
+        snapWeights(w);
+        weights.append(w);
     }
     pointStart_.last() = nodes.size();
     pointNode_.transfer(nodes);
@@ -560,12 +611,23 @@ void Foam::interfaceMap::projectionWeights
 Foam::scalarField Foam::interfaceMap::pointMap(const vectorField& G) const
 {
     const label dim = solidMesh_.dim();
-    vectorField Gp(pointStart_.size() - 1, Zero);
+    List<FixedList<exactSum, 3>> gAcc(pointStart_.size() - 1);
     forAll(dualWeight_, i)
     {
-        Gp[dualPoint_[i]] += dualWeight_[i]*G[dualFace_[i]];
+        for (direction d = 0; d < 3; ++d)
+        {
+            gAcc[dualPoint_[i]][d].addProduct
+            (
+                dualWeight_[i], G[dualFace_[i]][d]
+            );
+        }
     }
-    scalarField f(nDofs(), Zero);
+    vectorField Gp(gAcc.size());
+    forAll(Gp, p)
+    {
+        for (direction d = 0; d < 3; ++d) Gp[p][d] = gAcc[p][d].value();
+    }
+    List<exactSum> acc(nDofs());
     forAll(Gp, pointi)
     {
         const label pinned =
@@ -577,7 +639,10 @@ Foam::scalarField Foam::interfaceMap::pointMap(const vectorField& G) const
                 const stencil& s = pointStencil_[pointi];
                 for (label k = 0; k < 4; ++k)
                 {
-                    f[dim*s.node[k] + d] += s.weight[k]*Gp[pointi][d];
+                    acc[dim*s.node[k] + d].addProduct
+                    (
+                        s.weight[k], Gp[pointi][d]
+                    );
                 }
                 continue;
             }
@@ -588,10 +653,15 @@ Foam::scalarField Foam::interfaceMap::pointMap(const vectorField& G) const
                 ++i
             )
             {
-                f[dim*pointNode_[i] + d] += pointWeight_[i]*Gp[pointi][d];
+                acc[dim*pointNode_[i] + d].addProduct
+                (
+                    pointWeight_[i], Gp[pointi][d]
+                );
             }
         }
     }
+    scalarField f(nDofs());
+    forAll(f, i) f[i] = acc[i].value();
     return f;
 }
 
@@ -796,9 +866,31 @@ Foam::tmp<Foam::vectorField> Foam::interfaceMap::pointValues
     const label dim = solidMesh_.dim();
     tmp<vectorField> tv(new vectorField(pointStencil_.size(), Zero));
     vectorField& v = tv.ref();
+    const bool compensated = mapType_ == "projection";
     forAll(pointStencil_, pointi)
     {
         vector val(Zero);
+        if (compensated)
+        {
+            for (label d = 0; d < dim; ++d)
+            {
+                exactSum a;
+                for
+                (
+                    label i = pointStart_[pointi];
+                    i < pointStart_[pointi + 1];
+                    ++i
+                )
+                {
+                    a.addProduct
+                    (
+                        pointWeight_[i], dofs[dim*pointNode_[i] + d]
+                    );
+                }
+                val[d] = a.value();
+            }
+        }
+        else
         for (label i = pointStart_[pointi]; i < pointStart_[pointi + 1]; ++i)
         {
             for (label d = 0; d < dim; ++d)
