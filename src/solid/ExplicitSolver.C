@@ -2,9 +2,20 @@
 #include "SolidError.H"
 
 #include <cmath>
+#include <sstream>
 
 namespace
 {
+
+//- A time [s] for messages: significant digits, not std::to_string's
+//  fixed six decimals (which print nanoseconds as 0.000000)
+std::string seconds(const double t)
+{
+    std::ostringstream os;
+    os.precision(10);
+    os << t << " s";
+    return os.str();
+}
 
 //- Parametric coordinates (signs) of the nodes, gmsh order
 const int quadSigns[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
@@ -203,9 +214,8 @@ double solid::ExplicitSolver::step()
         throw SolidError
         (
             SolidError::Kind::parameter,
-            "explicit solver: fixed time step " + std::to_string(dt)
-          + " s exceeds the stable time step " + std::to_string(stableDt_)
-          + " s"
+            "explicit solver: fixed time step " + seconds(dt)
+          + " exceeds the stable time step " + seconds(stableDt_)
         );
     }
     const double t1 = m.time + dt;
@@ -226,8 +236,8 @@ double solid::ExplicitSolver::step()
         m.u = u0;
         throw SolidError
         (
-            e.kind(), "explicit step at t = " + std::to_string(m.time)
-          + " s (dt = " + std::to_string(dt) + " s): " + e.what()
+            e.kind(), "explicit step at t = " + seconds(m.time)
+          + " (dt = " + seconds(dt) + "): " + e.what()
         );
     }
     // Viscous hourglass force from the mid-step velocity

@@ -11,7 +11,13 @@
 # (1 %); the pulse reaches the probe (cytoplasm-nucleus interface, 75 %
 # of the nucleus height) at 0.05 ns + (L - z_probe)/Us within 3 %; every
 # coupling step converged, no NaN; fluid and solid VTK files exist.
+# usage: quarter3DSmoke.sh [atRest]
+#   atRest: to 2 ns only (the chain and the interface at rest before the
+#   pulse's precursor reaches the cell; checkQuarter3D.py --atRest)
 set -euo pipefail
+mode=${1:-arrival}
+endTime=1.15e-8
+[ "$mode" = atRest ] && endTime=2e-9
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
 work=${TMPDIR:-/tmp}/quarter3DSmoke.$$
@@ -26,8 +32,8 @@ done
 case=$work/quarter3D
 rm -rf "$case/constant/polyMesh" "$case"/constant/*.msh
 PROJECT_DIR=$here/../.. "$case/Allrun" -box 20e-6 -h 0.6e-6 -far 2e-6 \
-    -growth 5e-6 -cell 1.4e-6 -endTime 1.15e-8 -noPlots > "$work.log" 2>&1 \
+    -growth 5e-6 -cell 1.4e-6 -endTime $endTime -noPlots > "$work.log" 2>&1 \
     || { cat "$work.log"; exit 1; }
 ls "$case"/VTK/*.vtm > /dev/null
 ls "$case"/VTK/solid > /dev/null
-/usr/bin/python3 "$here/checkQuarter3D.py" "$case" 20e-6
+/usr/bin/python3 "$here/checkQuarter3D.py" "$case" 20e-6 "$mode"

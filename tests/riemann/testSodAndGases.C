@@ -56,6 +56,23 @@ TEST(sod, starStateMatchesClosedFormSolution)
 }
 
 
+TEST(sod, nonDimensionalFormSolves)
+{
+    // Toro's test 1 as printed (p 1 and 0.1): the last Newton step fell
+    // below the spacing of doubles at p* and was refused as "outside the
+    // bracket" (exactRiemann exited 1; found by fuzzing, docs/reliability.md)
+    const riemann::exactRiemannSolver<eos::IdealGas> rp
+    (
+        air, primitiveState{1.0, 0.0, 1.0}, primitiveState{0.125, 0.0, 0.1}
+    );
+    const auto& s = rp.star();
+    const auto ref = toroIdealGas(gammaAir, 1.0, 0, 1.0, 0.125, 0, 0.1);
+    EXPECT_NEAR(s.p, ref.p, 1e-11*ref.p);
+    EXPECT_NEAR(s.u, ref.u, 1e-11*ref.u);
+    EXPECT_NEAR(s.p, 0.30313, 0.000005);
+    EXPECT_NEAR(s.u, 0.92745, 0.000005);
+}
+
 TEST(sod, fanMatchesClosedFormIsentrope)
 {
     const riemann::exactRiemannSolver<eos::IdealGas> rp(air, sodL, sodR);

@@ -1,16 +1,19 @@
-// Mesh input (gmsh API, physical groups), HDF5/XDMF output and restart.
+// Mesh input (our MSH 4.1/2.2 reader against the gmsh API reader,
+// physical groups, bad files), HDF5/XDMF output and restart.
 #include "GmshReader.H"
 #include "ResultWriter.H"
 #include "StaticSolver.H"
 #include "Loads.H"
 #include "SolidError.H"
 #include "SolidTestUtils.H"
+#include "gmshApiReader.H"
 
 #include <gmsh.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 using namespace solid;
@@ -19,7 +22,12 @@ namespace
 {
 
 // Two stacked rectangles in r-z (nucleus below, cytoplasm above), quads
-void writeAxisymmetricMesh(const std::string& file, bool recombine = true)
+void writeAxisymmetricMesh
+(
+    const std::string& file,
+    bool recombine = true,
+    double version = 4.1
+)
 {
     gmsh::initialize();
     gmsh::option::setNumber("General.Terminal", 0);
@@ -58,11 +66,12 @@ void writeAxisymmetricMesh(const std::string& file, bool recombine = true)
     gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1,
         {a1, a2}), "axis");
     gmsh::model::mesh::generate(2);
+    gmsh::option::setNumber("Mesh.MshFileVersion", version);
     gmsh::write(file);
     gmsh::finalize();
 }
 
-void writeHexMesh(const std::string& file)
+void writeHexMesh(const std::string& file, double version = 4.1)
 {
     gmsh::initialize();
     gmsh::option::setNumber("General.Terminal", 0);
@@ -93,6 +102,7 @@ void writeHexMesh(const std::string& file)
     gmsh::model::setPhysicalName(2, gmsh::model::addPhysicalGroup(2, {top}),
                                  "top");
     gmsh::model::mesh::generate(3);
+    gmsh::option::setNumber("Mesh.MshFileVersion", version);
     gmsh::write(file);
     gmsh::finalize();
 }
@@ -221,6 +231,135 @@ TEST(SolidIo, GmshHexahedraAndUnsupportedElements)
     EXPECT_THROW(readGmsh("doesNotExist.msh"), SolidError);
 }
 
+
+namespace
+{
+
+// The two readers give the same mesh: coordinates bit for bit, elements,
+// regions and face sets in the same order, node sets as sets (and in the
+// same order where gmsh lists the nodes in file order: MSH 4.1)
+void expectSameMesh(const Mesh& a, const Mesh& b, bool sameNodeSetOrder)
+{
+    ASSERT_EQ(a.type, b.type);
+    ASSERT_EQ(a.X.size(), b.X.size());
+    for (std::size_t i = 0; i < a.X.size(); ++i)
+    {
+        EXPECT_EQ(a.X[i], b.X[i]) << "node " << i;
+    }
+    EXPECT_EQ(a.conn, b.conn);
+    EXPECT_EQ(a.region, b.region);
+    EXPECT_EQ(a.regionNames, b.regionNames);
+    EXPECT_EQ(a.faceSets, b.faceSets);
+    ASSERT_EQ(a.nodeSets.size(), b.nodeSets.size());
+    for (const auto& s : a.nodeSets)
+    {
+        ASSERT_TRUE(b.nodeSets.count(s.first)) << s.first;
+        const auto& t = b.nodeSets.at(s.first);
+        if (sameNodeSetOrder)
+        {
+            EXPECT_EQ(s.second, t) << s.first;
+        }
+        EXPECT_EQ(std::set<int>(s.second.begin(), s.second.end()),
+                  std::set<int>(t.begin(), t.end())) << s.first;
+    }
+}
+
+std::string readError(const std::string& file, const std::string& text)
+{
+    std::ofstream(file) << text;
+    try
+    {
+        readGmsh(file);
+    }
+    catch (const SolidError& e)
+    {
+        return e.what();
+    }
+    return "no error";
+}
+
+} // namespace
+
+
+TEST(SolidIo, MshReaderEqualsGmshApiReader)
+{
+    for (const double version : {4.1, 2.2})
+    {
+        SCOPED_TRACE("MSH " + std::to_string(version));
+        writeAxisymmetricMesh("cmpAxi.msh", true, version);
+        expectSameMesh(readGmsh("cmpAxi.msh", 1e-6),
+            solidTest::readGmshApi("cmpAxi.msh", 1e-6), version > 4);
+        writeHexMesh("cmpHex.msh", version);
+        expectSameMesh(readGmsh("cmpHex.msh"),
+            solidTest::readGmshApi("cmpHex.msh"), version > 4);
+    }
+}
+
+
+TEST(SolidIo, MshReaderBadFilesNameFileLineAndCause)
+{
+    const std::string head = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n";
+    const std::string nodes =
+        "$Nodes\n1 4 1 4\n2 1 0 4\n1\n2\n3\n4\n"
+        "0 0 0\n1 0 0\n1 1 0\n0 1 0\n$EndNodes\n";
+    const std::string entities =
+        "$Entities\n0 0 1 0\n1 0 0 0 1 1 0 1 7 0\n$EndEntities\n";
+    const std::string elements =
+        "$Elements\n1 1 1 1\n2 1 3 1\n1 1 2 3 4\n$EndElements\n";
+    struct Case { const char* what; std::string text; const char* expect; };
+    const Case cases[] =
+    {
+        {"not a mesh", "not a mesh\n", "must start with $MeshFormat"},
+        {"empty", "", "must start with $MeshFormat"},
+        {"binary", "$MeshFormat\n4.1 1 8\n$EndMeshFormat\n",
+            "reads ASCII MSH 4.1 and 2.2"},
+        {"MSH 4.0", "$MeshFormat\n4 0 8\n$EndMeshFormat\n",
+            "reads ASCII MSH 4.1 and 2.2"},
+        {"truncated nodes", head + entities + "$Nodes\n1 4 1 4\n2 1 0 4\n1\n",
+            "line 11: the file ends inside section $Nodes"},
+        {"letters for a node tag", head + entities
+          + "$Nodes\n1 1 1 1\n2 1 0 1\nx\n", "line 11: expected integers"},
+        {"NaN coordinate", head + entities
+          + "$Nodes\n1 1 1 1\n2 1 0 1\n1\nnan 0 0\n$EndNodes\n",
+            "node 1 has a non-finite coordinate"},
+        {"node count", head + entities
+          + "$Nodes\n1 5 1 4\n2 1 0 4\n1\n2\n3\n4\n"
+            "0 0 0\n1 0 0\n1 1 0\n0 1 0\n$EndNodes\n",
+            "$Nodes announces 5 nodes, its blocks hold 4"},
+        {"no elements", head + entities + nodes, "has no $Elements section"},
+        {"huge node count", head + entities
+          + "$Nodes\n1 4 1 4\n2 1 0 999999999999999999\n1\n",
+            "line 11: the file ends inside section $Nodes"},
+        {"unknown node", head + entities + nodes
+          + "$Elements\n1 1 1 1\n2 1 3 1\n1 1 2 3 9\n$EndElements\n",
+            "element refers to unknown node 9"},
+        {"triangle node count in a quad block", head + entities + nodes
+          + "$Elements\n1 1 1 1\n2 1 3 1\n1 1 2 3\n$EndElements\n",
+            "has 3 nodes, expected 4"},
+        {"more elements than counted", head + entities + nodes
+          + "$Elements\n1 1 1 1\n2 1 3 1\n1 1 2 3 4\n2 1 2 3 4\n"
+            "$EndElements\n", "expected $EndElements"},
+        {"no physical group", head
+          + "$Entities\n0 0 1 0\n1 0 0 0 1 1 0 0 0\n$EndEntities\n"
+          + nodes + elements, "has no 2D or 3D physical group"},
+        {"2.2 malformed element", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+            "$Nodes\n1\n1 0 0 0\n$EndNodes\n$Elements\n1\n1 3 5\n"
+            "$EndElements\n", "line 10: malformed element line"},
+    };
+    // The good file reads (one quad in the unnamed region 7)
+    std::ofstream("good.msh") << head + entities + nodes + elements;
+    const Mesh good = readGmsh("good.msh");
+    EXPECT_EQ(good.nElements(), 1);
+    EXPECT_EQ(good.regionNames, std::vector<std::string>{"region7"});
+    for (const Case& c : cases)
+    {
+        const std::string msg = readError("bad.msh", c.text);
+        EXPECT_NE(msg.find(c.expect), std::string::npos)
+            << c.what << ": " << msg;
+        EXPECT_NE(msg.find("bad.msh"), std::string::npos)
+            << c.what << ": " << msg;
+    }
+}
 
 namespace
 {

@@ -9,8 +9,6 @@
 #include "RigidSphereContact.H"
 #include "StaticSolver.H"
 
-#include <gmsh.h>
-
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -31,12 +29,7 @@ int main(int argc, char** argv)
     const double tolerance = std::atof(argv[7]);
     const auto t0 = std::chrono::steady_clock::now();
 
-    // readGmsh leaves gmsh uninitialised when it was never initialised in
-    // the process (its check gmsh::model::getCurrent does not throw before
-    // gmsh::initialize in gmsh 4.8) and then finds no physical groups
-    gmsh::initialize();
     Model model(readGmsh(argv[1], 1e-6));
-    gmsh::finalize();
     double zTop = 0;
     for (const Vec3& X : model.mesh().X) zTop = std::max(zTop, X(1));
 

@@ -50,6 +50,51 @@ Foam::FixedList<scalar, 3> closestOnTriangle
     return {1 - v - w, v, w};
 }
 
+// Weights that add up to 1, rounded to multiples of 2^-32 and scaled back
+// to sum 1: weights equal in exact arithmetic (symmetric faces, matching
+// meshes) become bitwise equal, so that a symmetric load stays symmetric
+// (a round-off asymmetry seeds the zero-stiffness modes of a fluid-like
+// solid, which an added-mass-prone coupling amplifies: fsi.addedMass)
+void snapWeights(Foam::UList<scalar>& w)
+{
+    const scalar q = std::ldexp(1.0, 32);
+    scalar sum = 0;
+    for (scalar& x : w)
+    {
+        x = std::round(x*q)/q;
+        sum += x;
+    }
+    if (sum > 0)
+    {
+        for (scalar& x : w) x /= sum;
+    }
+}
+
+// Compensated sum (Neumaier) of products w*x with their exact rounding
+// errors (fma): the result does not depend on the order of the terms
+// (except in rare ties), so that symmetric weights give bitwise symmetric
+// values whatever the numbering
+struct exactSum
+{
+    scalar s = 0, c = 0;
+
+    void add(const scalar x)
+    {
+        const scalar t = s + x;
+        c += std::abs(s) >= std::abs(x) ? (s - t) + x : (x - t) + s;
+        s = t;
+    }
+
+    void addProduct(const scalar w, const scalar x)
+    {
+        const scalar p = w*x;
+        add(p);
+        add(std::fma(w, x, -p));
+    }
+
+    scalar value() const { return s + c; }
+};
+
 } // namespace
 
 
@@ -327,6 +372,300 @@ void Foam::interfaceMap::quadratureRz
 }
 
 
+void Foam::interfaceMap::pointWeights3D(const polyPatch& fluidPatch)
+{
+    // A face triangle t = (centre, p_k, p_k+1) of area share a_t: a_t/3 to
+    // p_k and to p_k+1, a_t/3 to the centre, spread as 1/n over the n
+    // points of the face (the centre's velocity in the swept volume of a
+    // triangular face is the mean of its points' velocities)
+    const pointField& lp = fluidPatch.localPoints();
+    const pointField Cf(fluidPatch.faceCentres());
+    DynamicList<label> df, dp;
+    DynamicList<scalar> dw;
+    forAll(fluidPatch.localFaces(), facei)
+    {
+        const face& f = fluidPatch.localFaces()[facei];
+        scalarField w(f.size(), Zero);
+        scalar total = 0;
+        forAll(f, k)
+        {
+            const label k1 = f.fcIndex(k);
+            const scalar area =
+                0.5*mag((lp[f[k]] - Cf[facei]) ^ (lp[f[k1]] - Cf[facei]));
+            w[k] += area/3;
+            w[k1] += area/3;
+            w += area/3/f.size();
+            total += area;
+        }
+        w /= max(total, VSMALL);
+        snapWeights(w);
+        forAll(f, k)
+        {
+            df.append(facei);
+            dp.append(f[k]);
+            dw.append(w[k]);
+        }
+    }
+    dualFace_.transfer(df);
+    dualPoint_.transfer(dp);
+    dualWeight_.transfer(dw);
+}
+
+
+void Foam::interfaceMap::pointInterpolationWeights()
+{
+    pointStart_.setSize(pointStencil_.size() + 1);
+    DynamicList<label> nodes;
+    DynamicList<scalar> weights;
+    forAll(pointStencil_, pointi)
+    {
+        pointStart_[pointi] = nodes.size();
+        const stencil& s = pointStencil_[pointi];
+        for (label k = 0; k < 4; ++k)
+        {
+            if (s.weight[k] != 0)
+            {
+                nodes.append(s.node[k]);
+                weights.append(s.weight[k]);
+            }
+        }
+    }
+    pointStart_.last() = nodes.size();
+    pointNode_.transfer(nodes);
+    pointWeight_.transfer(weights);
+}
+
+
+void Foam::interfaceMap::projectionWeights
+(
+    const polyPatch& fluidPatch,
+    const scalar tol,
+    const boolList& fixedDofs
+)
+{
+    // Quadrature: each face triangle t = (centre, p_k, p_k+1) cut into m^2
+    // equal triangles, their centroids with the area A_t/m^2; m from the
+    // face size over the solid face size at the face (about two quadrature
+    // points per solid face length, at most 6)
+    const pointField& lp = fluidPatch.localPoints();
+    const faceList& lf = fluidPatch.localFaces();
+    const pointField Cf(fluidPatch.faceCentres());
+    const label nPts = lp.size();
+
+    DynamicList<point> qx;          // quadrature points
+    DynamicList<scalar> qA;         // their areas
+    DynamicList<label> qFace, qK;   // face, its triangle k
+    DynamicList<scalar> qS, qT;     // weights of p_k and p_k+1
+    forAll(lf, facei)
+    {
+        const face& f = lf[facei];
+        scalar hf = 0;
+        forAll(f, k)
+        {
+            hf = max(hf, mag(lp[f[k]] - lp[f[f.fcIndex(k)]]));
+        }
+        // Solid face size near the face: the longest edge of the stencils
+        // of its points
+        scalar hs = GREAT;
+        forAll(f, k)
+        {
+            const stencil& st = pointStencil_[f[k]];
+            scalar h = 0;
+            for (label a = 0; a < 4; ++a)
+            {
+                for (label b = a + 1; b < 4; ++b)
+                {
+                    h = max
+                    (
+                        h,
+                        mag(solidPoint(st.node[a]) - solidPoint(st.node[b]))
+                    );
+                }
+            }
+            hs = min(hs, h);
+        }
+        const label m =
+            min(label(6), max(label(1), label(std::ceil(2*hf/max(hs, VSMALL)))));
+        forAll(f, k)
+        {
+            const point& c = Cf[facei];
+            const vector e1 = lp[f[k]] - c, e2 = lp[f[f.fcIndex(k)]] - c;
+            const scalar At = 0.5*mag(e1 ^ e2)/scalar(m*m);
+            for (label i = 0; i < m; ++i)
+            {
+                for (label j = 0; i + j < m; ++j)
+                {
+                    // Upward triangle, then the downward one beside it
+                    for (label up = 0; up < 2; ++up)
+                    {
+                        if (up == 1 && i + j > m - 2) break;
+                        const scalar s = (3*i + 1 + up)/(3.0*m);
+                        const scalar t = (3*j + 1 + up)/(3.0*m);
+                        qx.append(c + s*e1 + t*e2);
+                        qA.append(At);
+                        qFace.append(facei);
+                        qK.append(k);
+                        qS.append(s);
+                        qT.append(t);
+                    }
+                }
+            }
+        }
+    }
+    const pointField pts(qx);
+    const vectorField xs(pts);
+    const List<stencil> qStencil(projectAll(xs, pts, tol, "projection points"));
+
+    // Per patch point: sum_q phi_p(x_q) A_q N_a(x_q), then normalised
+    List<std::map<label, scalar>> rows(nPts);
+    scalarField Ap(nPts, Zero);
+    forAll(qStencil, q)
+    {
+        const face& f = lf[qFace[q]];
+        const label n = f.size();
+        const scalar lc = 1 - qS[q] - qT[q];
+        const stencil& st = qStencil[q];
+        forAll(f, j)
+        {
+            scalar phi = lc/n;
+            if (j == qK[q]) phi += qS[q];
+            if (j == f.fcIndex(qK[q])) phi += qT[q];
+            const scalar w = phi*qA[q];
+            const label p = f[j];
+            Ap[p] += w;
+            for (label a = 0; a < 4; ++a)
+            {
+                if (st.weight[a] != 0)
+                {
+                    rows[p][st.node[a]] += w*st.weight[a];
+                }
+            }
+        }
+    }
+
+    // Components prescribed at every node of a point's stencil keep the
+    // point stencil (symmetry planes, substrate)
+    const label dim = solidMesh_.dim();
+    pointPinned_.setSize(nPts, 0);
+    label nPinned = 0;
+    if (fixedDofs.size())
+    {
+        forAll(pointPinned_, p)
+        {
+            const stencil& st = pointStencil_[p];
+            for (label d = 0; d < dim; ++d)
+            {
+                bool all = true;
+                for (label a = 0; a < 4; ++a)
+                {
+                    if
+                    (
+                        st.weight[a] != 0
+                     && !fixedDofs[dim*nodes_[st.node[a]] + d]
+                    )
+                    {
+                        all = false;
+                    }
+                }
+                if (all)
+                {
+                    pointPinned_[p] |= (1 << d);
+                    ++nPinned;
+                }
+            }
+        }
+    }
+
+    pointStart_.setSize(nPts + 1);
+    DynamicList<label> nodes;
+    DynamicList<scalar> weights;
+    forAll(rows, p)
+    {
+        pointStart_[p] = nodes.size();
+        if (!(Ap[p] > 0))
+        {
+            FatalErrorInFunction
+                << "fluid patch point " << lp[p] << " has no projection"
+                << " weight" << exit(FatalError);
+        }
+        scalarField w(label(rows[p].size()));
+        label i = 0;
+        for (const auto& e : rows[p])
+        {
+            nodes.append(e.first);
+            w[i++] = e.second/Ap[p];
+        }
+        snapWeights(w);
+        weights.append(w);
+    }
+    pointStart_.last() = nodes.size();
+    pointNode_.transfer(nodes);
+    pointWeight_.transfer(weights);
+    Info<< "FSI interface: projection map, " << qStencil.size()
+        << " quadrature points on " << lf.size() << " fluid faces, "
+        << pointNode_.size() << " point weights, " << nPinned
+        << " point components pinned to prescribed solid nodes" << endl;
+}
+
+
+Foam::scalarField Foam::interfaceMap::pointMap(const vectorField& G) const
+{
+    const label dim = solidMesh_.dim();
+    List<FixedList<exactSum, 3>> gAcc(pointStart_.size() - 1);
+    forAll(dualWeight_, i)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            gAcc[dualPoint_[i]][d].addProduct
+            (
+                dualWeight_[i], G[dualFace_[i]][d]
+            );
+        }
+    }
+    vectorField Gp(gAcc.size());
+    forAll(Gp, p)
+    {
+        for (direction d = 0; d < 3; ++d) Gp[p][d] = gAcc[p][d].value();
+    }
+    List<exactSum> acc(nDofs());
+    forAll(Gp, pointi)
+    {
+        const label pinned =
+            pointPinned_.size() ? pointPinned_[pointi] : label(0);
+        for (label d = 0; d < dim; ++d)
+        {
+            if (pinned & (1 << d))
+            {
+                const stencil& s = pointStencil_[pointi];
+                for (label k = 0; k < 4; ++k)
+                {
+                    acc[dim*s.node[k] + d].addProduct
+                    (
+                        s.weight[k], Gp[pointi][d]
+                    );
+                }
+                continue;
+            }
+            for
+            (
+                label i = pointStart_[pointi];
+                i < pointStart_[pointi + 1];
+                ++i
+            )
+            {
+                acc[dim*pointNode_[i] + d].addProduct
+                (
+                    pointWeight_[i], Gp[pointi][d]
+                );
+            }
+        }
+    }
+    scalarField f(nDofs());
+    forAll(f, i) f[i] = acc[i].value();
+    return f;
+}
+
+
 Foam::vector Foam::interfaceMap::toSolidForce
 (
     const vector& F,
@@ -350,7 +689,8 @@ Foam::interfaceMap::interfaceMap
 (
     const polyPatch& fluidPatch,
     const solid::Mesh& solidMesh,
-    const dictionary& dict
+    const dictionary& dict,
+    const boolList& fixedDofs
 )
 :
     solidMesh_(solidMesh),
@@ -358,7 +698,8 @@ Foam::interfaceMap::interfaceMap
     axisOrigin_(Zero),
     axisDirection_(Zero),
     ringFactorRadial_(1),
-    ringFactorAxial_(1)
+    ringFactorAxial_(1),
+    mapType_(axisymmetric_ ? "faces" : "projection")
 {
     const word setName(dict.get<word>("solidFaceSet"));
     if (!solidMesh.faceSets.count(setName))
@@ -456,6 +797,30 @@ Foam::interfaceMap::interfaceMap
         forAll(lp, i) xs[i] = toSolidFrame(lp[i], pointRadial_[i]);
         pointStencil_ = projectAll(xs, lp, tol, "points");
     }
+    mapType_ = dict.getOrDefault<word>("map", mapType_);
+    if
+    (
+        mapType_ != "faces"
+     && (axisymmetric_ || (mapType_ != "points" && mapType_ != "projection"))
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "map " << mapType_ << " is not valid: "
+            << (axisymmetric_ ? "faces (r-z)" : "projection, points or faces")
+            << exit(FatalIOError);
+    }
+    if (mapType_ == "projection")
+    {
+        projectionWeights(fluidPatch, tol, fixedDofs);
+    }
+    else
+    {
+        pointInterpolationWeights();
+    }
+    if (mapType_ != "faces")
+    {
+        pointWeights3D(fluidPatch);
+    }
     {
         vectorField xs;
         pointField pts;
@@ -473,7 +838,8 @@ Foam::interfaceMap::interfaceMap
     Info<< "FSI interface: fluid patch " << fluidPatch.name() << " ("
         << fluidPatch.size() << " faces) <-> solid face set " << setName
         << " (" << faces_.size() << " faces, " << nodes_.size()
-        << " nodes), largest gap " << maxGap() << " m" << endl;
+        << " nodes), largest gap " << maxGap() << " m, map " << mapType_
+        << endl;
 }
 
 
@@ -500,15 +866,50 @@ Foam::tmp<Foam::vectorField> Foam::interfaceMap::pointValues
     const label dim = solidMesh_.dim();
     tmp<vectorField> tv(new vectorField(pointStencil_.size(), Zero));
     vectorField& v = tv.ref();
+    const bool compensated = mapType_ == "projection";
     forAll(pointStencil_, pointi)
     {
-        const stencil& s = pointStencil_[pointi];
         vector val(Zero);
-        for (label k = 0; k < 4; ++k)
+        if (compensated)
         {
             for (label d = 0; d < dim; ++d)
             {
-                val[d] += s.weight[k]*dofs[dim*s.node[k] + d];
+                exactSum a;
+                for
+                (
+                    label i = pointStart_[pointi];
+                    i < pointStart_[pointi + 1];
+                    ++i
+                )
+                {
+                    a.addProduct
+                    (
+                        pointWeight_[i], dofs[dim*pointNode_[i] + d]
+                    );
+                }
+                val[d] = a.value();
+            }
+        }
+        else
+        for (label i = pointStart_[pointi]; i < pointStart_[pointi + 1]; ++i)
+        {
+            for (label d = 0; d < dim; ++d)
+            {
+                val[d] += pointWeight_[i]*dofs[dim*pointNode_[i] + d];
+            }
+        }
+        const label pinned =
+            pointPinned_.size() ? pointPinned_[pointi] : label(0);
+        for (label d = 0; pinned && d < dim; ++d)
+        {
+            if (pinned & (1 << d))
+            {
+                const stencil& s = pointStencil_[pointi];
+                val[d] = 0;
+                for (label k = 0; k < 4; ++k)
+                {
+                    val[d] += s.weight[k]*dofs[dim*s.node[k] + d];
+                }
             }
         }
         v[pointi] = axisymmetric_
@@ -524,6 +925,10 @@ Foam::scalarField Foam::interfaceMap::nodalForces
     const vectorField& faceForces
 ) const
 {
+    if (mapType_ != "faces")
+    {
+        return pointMap(faceForces);
+    }
     const label dim = solidMesh_.dim();
     scalarField f(nDofs(), Zero);
     forAll(quadStencil_, q)
@@ -551,6 +956,17 @@ Foam::scalarField Foam::interfaceMap::nodalImpedance
 {
     // Per quadrature point: Z S_d^2/|S| in the solid frame, components
     // taken positive (a diagonal, not a force)
+    if (mapType_ != "faces")
+    {
+        vectorField D(Z.size());
+        forAll(D, facei)
+        {
+            D[facei] =
+                Z[facei]*cmptMultiply(Sf[facei], Sf[facei])
+               /max(mag(Sf[facei]), VSMALL);
+        }
+        return pointMap(D);
+    }
     const label dim = solidMesh_.dim();
     scalarField f(nDofs(), Zero);
     forAll(quadStencil_, q)

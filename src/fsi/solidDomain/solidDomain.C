@@ -150,6 +150,30 @@ Foam::solidDomain::solidDomain(const Time& runTime)
 }
 
 
+Foam::boolList Foam::solidDomain::fixedDofs() const
+{
+    const label dim = mesh().dim();
+    boolList fixed(mesh().nNodes()*dim, false);
+    for
+    (
+        const auto& f
+      : dict_.get<List<Tuple2<word, label>>>("fixed")
+    )
+    {
+        const auto it = mesh().nodeSets.find(f.first());
+        if (it == mesh().nodeSets.end() || f.second() < 0 || f.second() >= dim)
+        {
+            continue;       // reported by the model (constructor)
+        }
+        for (const int node : it->second)
+        {
+            fixed[dim*node + f.second()] = true;
+        }
+    }
+    return fixed;
+}
+
+
 void Foam::solidDomain::couple(const labelList& interfaceNodes)
 {
     interfaceNodes_.assign(interfaceNodes.begin(), interfaceNodes.end());

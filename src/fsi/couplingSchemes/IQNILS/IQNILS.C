@@ -35,6 +35,8 @@ void Foam::IQNILS::newStep()
 {
     rPrev_.clear();
     xTildePrev_.clear();
+    rBest_ = GREAT;
+    nStall_ = 0;
     // Keep the columns of the last reuse_ steps (stepColumns_: per step,
     // newest first)
     stepColumns_.push_front(0);
@@ -57,6 +59,26 @@ void Foam::IQNILS::relax
     const scalarField&
 )
 {
+    // Stagnation: drop the columns, relax again
+    const scalar rNorm = max(mag(r));
+    if (rNorm < 0.999*rBest_)
+    {
+        rBest_ = rNorm;
+        nStall_ = 0;
+    }
+    else if (++nStall_ >= 4 && !V_.empty())
+    {
+        V_.clear();
+        W_.clear();
+        for (label& n : stepColumns_) n = 0;
+        rPrev_.clear();
+        xTildePrev_.clear();
+        rBest_ = rNorm;
+        nStall_ = 0;
+        x += omega0_*r;
+        return;
+    }
+
     if (rPrev_.size() == r.size())
     {
         V_.push_front(scalarField(r - rPrev_));
