@@ -7,8 +7,7 @@
 # pulse has reached the cell) and continued to the end. Asserted: every
 # step of the coupling log, the solid probes and the interface maxima after
 # each start equal to the uninterrupted run's bitwise (compareRestart.py;
-# the coupling log complete, the solid logs lose the rows after their last
-# flush in a killed run) and the fields of the last time (fluid, points,
+# every log complete: each is flushed at every write time) and the fields of the last time (fluid, points,
 # solid and coupling state) byte-equal. Kills inside writes:
 # restartKilledWrites.sh.
 set -euo pipefail

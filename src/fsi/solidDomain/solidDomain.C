@@ -689,6 +689,10 @@ void Foam::solidDomain::write(const scalar dt)
     }
     if (runTime_.writeTime())
     {
+        // The logs complete up to this write time before it is committed:
+        // a run killed later restarts here and loses no row
+        if (probeFile_.valid()) probeFile_().flush();
+        if (interfaceFile_.valid()) interfaceFile_().flush();
         label k = -1;
         guarded("solid output", [&] { k = writer_->write(*model_); });
         writeState(k);
