@@ -90,6 +90,9 @@ int main(int argc, char *argv[])
         {
             if (stage > 0)
             {
+                // An invalid stage state stops here with the cell named
+                // (not as a floating-point exception in the flux)
+                thermo.checkStates();
                 flux->fluxes(thermo, U, phi, phiU, phiE, amaxSf);
             }
 

@@ -109,7 +109,7 @@ void Foam::rhoEThermo::correctFromPT()
 }
 
 
-void Foam::rhoEThermo::checkStates() const
+void Foam::rhoEThermo::checkStates(const string& hint) const
 {
     string reason;
     const label celli =
@@ -126,6 +126,7 @@ void Foam::rhoEThermo::checkStates() const
             << " J/kg" << nl
             << "    The last written time directory is kept; reduce maxCo"
             << " or check the initial and boundary conditions."
+            << (hint.empty() ? "" : "\n    ") << hint.c_str()
             << exit(FatalError);
     }
 }
