@@ -2,12 +2,13 @@
 # tests/indentation/restartIndentation.sh, tests/blast/restart.sh,
 # tests/blast/restartKilledWrites.sh. Sourced (after set -euo pipefail),
 # it sets the project environment (etc/bashrc), $root (the project) and
-# $work (a temporary directory removed at exit), and defines runUntil and
+# $work (a temporary directory removed at exit, kept with KEEP_WORK=1), and
+# defines runUntil and
 # sameFiles.
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 . "$root/etc/bashrc"
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+[ -n "${KEEP_WORK:-}" ] || trap 'rm -rf "$work"' EXIT
 
 # runUntil SIGNAL CONDITION LOG COMMAND...
 #   Runs COMMAND in the background (stdout and stderr to LOG), evaluates

@@ -28,6 +28,13 @@ Description
     postProcessing/fsi/<time>/coupling.dat; non-converged steps are counted
     and reported (or stop the run).
 
+    Parallel (decomposePar, -parallel): the fluid is decomposed, the solid
+    is whole on every rank. The interface map is built on the FSI patch
+    of all ranks (src/fsi/globalInterfacePatch); per coupling pass the
+    ranks exchange their interface face forces and all take the same
+    solid step and coupling update. The master writes solid/solid.h5 and
+    the logs at the case root.
+
     Restart (startFrom latestTime): every write time holds the fluid
     fields and points, the solid state (uniform/solidState and its step in
     solid/solid.h5) and the coupling state (uniform/fsiState), written

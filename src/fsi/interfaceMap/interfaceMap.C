@@ -270,7 +270,7 @@ Foam::List<Foam::interfaceMap::stencil> Foam::interfaceMap::projectAll
 
 void Foam::interfaceMap::quadrature3D
 (
-    const polyPatch& fluidPatch,
+    const globalInterfacePatch& fluidPatch,
     vectorField& xs,
     pointField& pts
 )
@@ -306,7 +306,7 @@ void Foam::interfaceMap::quadrature3D
 
 void Foam::interfaceMap::quadratureRz
 (
-    const polyPatch& fluidPatch,
+    const globalInterfacePatch& fluidPatch,
     vectorField& xs,
     pointField& pts
 )
@@ -372,7 +372,10 @@ void Foam::interfaceMap::quadratureRz
 }
 
 
-void Foam::interfaceMap::pointWeights3D(const polyPatch& fluidPatch)
+void Foam::interfaceMap::pointWeights3D
+(
+    const globalInterfacePatch& fluidPatch
+)
 {
     // A face triangle t = (centre, p_k, p_k+1) of area share a_t: a_t/3 to
     // p_k and to p_k+1, a_t/3 to the centre, spread as 1/n over the n
@@ -438,7 +441,7 @@ void Foam::interfaceMap::pointInterpolationWeights()
 
 void Foam::interfaceMap::projectionWeights
 (
-    const polyPatch& fluidPatch,
+    const globalInterfacePatch& fluidPatch,
     const scalar tol,
     const boolList& fixedDofs
 )
@@ -687,7 +690,7 @@ Foam::vector Foam::interfaceMap::toSolidForce
 
 Foam::interfaceMap::interfaceMap
 (
-    const polyPatch& fluidPatch,
+    const globalInterfacePatch& fluidPatch,
     const solid::Mesh& solidMesh,
     const dictionary& dict,
     const boolList& fixedDofs

@@ -21,6 +21,7 @@ Foam::interfaceMotion::interfaceMotion
 (
     const fvMesh& mesh,
     const label interfacePatchi,
+    const globalInterfacePatch& interfacePatch,
     const dictionary& interfaceDict,
     const vector& axisOrigin,
     const vector& axisDirection
@@ -28,6 +29,7 @@ Foam::interfaceMotion::interfaceMotion
 :
     mesh_(mesh),
     patchi_(interfacePatchi),
+    patch_(interfacePatch),
     points0_
     (
         pointIOField
@@ -61,9 +63,11 @@ Foam::interfaceMotion::interfaceMotion
     }
     const bool axi = mag(axisDirection_) > 0;
 
-    // Interface points in the interpolation space: (r, z, 0) or x
+    // Interface points (whole patch) in the interpolation space: (r, z, 0)
+    // or x
     const polyPatch& ip = mesh.boundaryMesh()[patchi_];
     const labelList& ipPoints = ip.meshPoints();
+    const pointField& gp = patch_.localPoints();
     auto toSpace = [&](const point& x)
     {
         if (!axi) return vector(x);
@@ -71,8 +75,8 @@ Foam::interfaceMotion::interfaceMotion
         const scalar z = d & axisDirection_;
         return vector(mag(d - z*axisDirection_), z, 0);
     };
-    vectorField xi(ipPoints.size());
-    forAll(ipPoints, k) xi[k] = toSpace(points0_[ipPoints[k]]);
+    vectorField xi(gp.size());
+    forAll(gp, k) xi[k] = toSpace(gp[k]);
 
     // Slip normals of the points of the other wall-type patches
     vectorField normal(mesh.nPoints(), Zero);
@@ -85,6 +89,7 @@ Foam::interfaceMotion::interfaceMotion
         (
             patchi == patchi_ || isA<wedgePolyPatch>(pp)
          || isA<emptyPolyPatch>(pp) || pp.empty()
+         || pp.coupled()            // processor (or cyclic) faces: no wall
         )
         {
             continue;
@@ -100,8 +105,9 @@ Foam::interfaceMotion::interfaceMotion
     DynamicList<labelList> stencil;
     DynamicList<scalarField> weights;
     DynamicList<vector> slip;
-    labelList order(ipPoints.size());
-    scalarField dist(ipPoints.size());
+    DynamicList<labelPair> shared;
+    labelList order(gp.size());
+    scalarField dist(gp.size());
     forAll(points0_, pointi)
     {
         if (onInterface[pointi]) continue;
@@ -116,6 +122,12 @@ Foam::interfaceMotion::interfaceMotion
         );
         const scalar s = dist[order[0]]/L;
         if (s >= 1) continue;
+        if (dist[order[0]] < VSMALL)
+        {
+            // On the interface of another rank: that point's displacement
+            shared.append(labelPair(pointi, order[0]));
+            continue;
+        }
         const scalar phi = 1 - 3*sqr(s) + 2*pow3(s);
         labelList st(m);
         scalarField w(m);
@@ -134,8 +146,9 @@ Foam::interfaceMotion::interfaceMotion
     stencil_.transfer(stencil);
     weights_.transfer(weights);
     slipNormal_.transfer(slip);
+    sharedPoints_.transfer(shared);
 
-    Info<< "FSI mesh motion: interpolation from the " << ipPoints.size()
+    Info<< "FSI mesh motion: interpolation from the " << gp.size()
         << " interface points to " << movingPoints_.size()
         << " mesh points within " << L << " m (" << n << " nearest)"
         << endl;
@@ -149,25 +162,28 @@ Foam::tmp<Foam::pointField> Foam::interfaceMotion::newPoints
 {
     const polyPatch& ip = mesh_.boundaryMesh()[patchi_];
     const labelList& ipPoints = ip.meshPoints();
+    const labelList& toGlobal = patch_.localToGlobal();
+    const pointField& gp = patch_.localPoints();
     const bool axi = mag(axisDirection_) > 0;
 
     // Interface displacements in the interpolation space: (d_r, d_z, 0)
     vectorField di(patchDisplacement);
     if (axi)
     {
-        forAll(ipPoints, k)
+        forAll(gp, k)
         {
             const vector& d = patchDisplacement[k];
-            di[k] = vector
-            (
-                d & radial(points0_[ipPoints[k]]), d & axisDirection_, 0
-            );
+            di[k] = vector(d & radial(gp[k]), d & axisDirection_, 0);
         }
     }
 
     tmp<pointField> tnew(new pointField(points0_));
     pointField& x = tnew.ref();
-    forAll(ipPoints, k) x[ipPoints[k]] += patchDisplacement[k];
+    forAll(ipPoints, k) x[ipPoints[k]] += patchDisplacement[toGlobal[k]];
+    for (const labelPair& pk : sharedPoints_)
+    {
+        x[pk.first()] += patchDisplacement[pk.second()];
+    }
     forAll(movingPoints_, i)
     {
         const label pointi = movingPoints_[i];

@@ -34,6 +34,22 @@ void guarded(const char* context, F&& f)
     }
 }
 
+//- The same for what a dictionary entry gave: the error names the file
+//  (constant/solidProperties), the entry and its line
+template<class F>
+void guarded(const Foam::dictionary& dict, const char* context, F&& f)
+{
+    try
+    {
+        f();
+    }
+    catch (const std::exception& e)
+    {
+        FatalIOErrorInFunction(dict)
+            << context << ": " << e.what() << Foam::exit(Foam::FatalIOError);
+    }
+}
+
 } // namespace
 
 
@@ -49,7 +65,7 @@ solid::Mesh Foam::solidDomain::readMesh
     {
         const labelVector n(dict.get<labelVector>("cells"));
         const vector lo(dict.get<vector>("min")), hi(dict.get<vector>("max"));
-        guarded("solid mesh box", [&]
+        guarded(dict, "solid mesh box", [&]
         {
             m = solid::Mesh::box
             (
@@ -64,7 +80,7 @@ solid::Mesh Foam::solidDomain::readMesh
         const Vector2D<label> n(dict.get<Vector2D<label>>("cells"));
         const vector2D lo(dict.get<vector2D>("min"));
         const vector2D hi(dict.get<vector2D>("max"));
-        guarded("solid mesh rectangle", [&]
+        guarded(dict, "solid mesh rectangle", [&]
         {
             m = solid::Mesh::rectangle
             (
@@ -76,9 +92,12 @@ solid::Mesh Foam::solidDomain::readMesh
     {
         fileName file(dict.get<fileName>("file"));
         file.expand();
-        if (!file.isAbsolute()) file = runTime.path()/file;
+        if (!file.isAbsolute()) file = runTime.globalPath()/file;
         const scalar scale = dict.getOrDefault<scalar>("scale", 1);
-        guarded("solid mesh gmsh", [&] { m = solid::readGmsh(file, scale); });
+        guarded(dict, "solid mesh gmsh", [&]
+        {
+            m = solid::readGmsh(file, scale);
+        });
     }
     else
     {
@@ -126,7 +145,7 @@ Foam::solidDomain::solidDomain(const Time& runTime)
             for (const token& t : e.stream()) os << t;
             entries[e.keyword()] = os.str();
         }
-        guarded("solid material", [&]
+        guarded(mats.subDict(region), "solid material", [&]
         {
             model_->setMaterial
             (
@@ -145,7 +164,10 @@ Foam::solidDomain::solidDomain(const Time& runTime)
     );
     for (const auto& f : fixed)
     {
-        guarded("solid fixed", [&] { model_->fix(f.first(), f.second()); });
+        guarded(dict_, "solid fixed", [&]
+        {
+            model_->fix(f.first(), f.second());
+        });
     }
 }
 
@@ -192,13 +214,11 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
 
     setupOutput();
 
-    const fileName dir(runTime_.path()/"solid");
-    mkDir(dir);
+    // One result file for the case, written by the master (in parallel
+    // every rank holds the whole solid, src/fsi/globalInterfacePatch.H)
+    const fileName dir(runTime_.globalPath()/"solid");
+    const fileName h5(dir/"solid.h5");
     const bool restart = runTime_.value() > 0;
-    guarded("solid output", [&]
-    {
-        writer_.reset(new solid::ResultWriter(dir/"solid", *model_, restart));
-    });
     if (restart)
     {
         const fileName stateFile
@@ -217,7 +237,7 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
         const label k = d.get<label>("h5Step");
         guarded("solid restart", [&]
         {
-            solid::ResultWriter::restart(writer_->h5File(), k, *model_);
+            solid::ResultWriter::restart(h5, k, *model_);
         });
         auto vec = [&](const word& name)
         {
@@ -255,8 +275,23 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
                 << exit(FatalIOError);
         }
         probeStrain_ = ps;
-        Info<< "Solid: restarted from " << writer_->h5File() << " step " << k
+        Info<< "Solid: restarted from " << h5 << " step " << k
             << " (t = " << model_->time << " s) and " << stateFile << endl;
+    }
+    // Every rank has read the file before the master opens it for writing
+    // (a reduction as the barrier)
+    label readDone = 1;
+    reduce(readDone, sumOp<label>());
+    if (Pstream::master())
+    {
+        mkDir(dir);
+        guarded("solid output", [&]
+        {
+            writer_.reset
+            (
+                new solid::ResultWriter(dir/"solid", *model_, restart)
+            );
+        });
     }
     save();
 }
@@ -348,7 +383,7 @@ Foam::labelList Foam::solidDomain::interfaceElements
 {
     const solid::Mesh& m = mesh();
     int ra = -1, rb = -1;
-    guarded("solid interfaces", [&]
+    guarded(dict_, "solid interfaces", [&]
     {
         ra = m.regionId(a);
         rb = m.regionId(b);
@@ -397,7 +432,7 @@ Foam::point Foam::solidDomain::interfacePoint
     const int dim = m.dim();
     const int axial = dim - 1;
     int ro = -1, ri = -1;
-    guarded("interfaceProbe", [&]
+    guarded(dict_, "interfaceProbe", [&]
     {
         ro = m.regionId(outer);
         ri = m.regionId(inner);
@@ -486,7 +521,7 @@ void Foam::solidDomain::setupOutput()
         const scalar f = ip.get<scalar>("heightFraction");
         const point P(interfacePoint(regions.first(), regions.second(), f));
         int ra = -1, rb = -1;
-        guarded("interfaceProbe", [&]
+        guarded(dict_, "interfaceProbe", [&]
         {
             ra = mesh().regionId(regions.first());
             rb = mesh().regionId(regions.second());
@@ -526,7 +561,7 @@ void Foam::solidDomain::setupOutput()
     {
         const fileName dir
         (
-            runTime_.path()/"postProcessing"/"solidProbes"
+            runTime_.globalPath()/"postProcessing"/"solidProbes"
            /runTime_.timeName()
         );
         mkDir(dir);
@@ -578,7 +613,7 @@ void Foam::solidDomain::setupOutput()
     {
         const fileName dir
         (
-            runTime_.path()/"postProcessing"/"solidInterfaces"
+            runTime_.globalPath()/"postProcessing"/"solidInterfaces"
            /runTime_.timeName()
         );
         mkDir(dir);
@@ -694,7 +729,11 @@ void Foam::solidDomain::write(const scalar dt)
         if (probeFile_.valid()) probeFile_().flush();
         if (interfaceFile_.valid()) interfaceFile_().flush();
         label k = -1;
-        guarded("solid output", [&] { k = writer_->write(*model_); });
+        if (writer_)
+        {
+            guarded("solid output", [&] { k = writer_->write(*model_); });
+        }
+        Pstream::scatter(k);
         writeState(k);
         const solid::EnergyReport& e = solver_->energy();
         Info<< "Solid: energy balance " << e.balance() << " J of "

@@ -1,0 +1,80 @@
+#include "globalInterfacePatch.H"
+#include "Pstream.H"
+#include "SubField.H"
+
+#include <array>
+#include <map>
+
+Foam::globalInterfacePatch::globalInterfacePatch(const polyPatch& pp)
+:
+    name_(pp.name()),
+    faceOffsets_(pp.size())
+{
+    if (!Pstream::parRun())
+    {
+        faces_ = pp.localFaces();
+        points_ = pp.localPoints();
+        faceCentres_ = pp.faceCentres();
+        localToGlobal_ = identity(pp.nPoints());
+        meshPoint_ = pp.meshPoints();
+        return;
+    }
+
+    // Every rank's patch on the master, in rank order
+    List<pointField> allPoints(Pstream::nProcs());
+    List<faceList> allFaces(Pstream::nProcs());
+    allPoints[Pstream::myProcNo()] = pp.localPoints();
+    allFaces[Pstream::myProcNo()] = pp.localFaces();
+    Pstream::gatherList(allPoints);
+    Pstream::gatherList(allFaces);
+    faceOffsets_.gather(pointField(pp.faceCentres()), faceCentres_);
+
+    // Merge the points that ranks share (equal coordinates: decomposePar
+    // writes a shared point once per processor, with the same digits)
+    List<labelList> rankToGlobal(Pstream::nProcs());
+    if (Pstream::master())
+    {
+        std::map<std::array<scalar, 3>, label> index;
+        DynamicList<point> merged;
+        forAll(allPoints, proci)
+        {
+            const pointField& p = allPoints[proci];
+            labelList& map = rankToGlobal[proci];
+            map.setSize(p.size());
+            forAll(p, i)
+            {
+                const std::array<scalar, 3> key
+                {{
+                    p[i].x(), p[i].y(), p[i].z()
+                }};
+                const auto it = index.emplace(key, merged.size());
+                if (it.second) merged.append(p[i]);
+                map[i] = it.first->second;
+            }
+        }
+        points_.transfer(merged);
+        DynamicList<face> faces;
+        forAll(allFaces, proci)
+        {
+            for (const face& f : allFaces[proci])
+            {
+                face g(f.size());
+                forAll(f, k) g[k] = rankToGlobal[proci][f[k]];
+                faces.append(g);
+            }
+        }
+        faces_.transfer(faces);
+    }
+    Pstream::scatter(points_);
+    Pstream::scatter(faces_);
+    Pstream::scatter(faceCentres_);
+    // (scatterList would not send a rank its own entry)
+    Pstream::scatter(rankToGlobal);
+    localToGlobal_ = rankToGlobal[Pstream::myProcNo()];
+
+    meshPoint_.setSize(points_.size(), -1);
+    forAll(localToGlobal_, i)
+    {
+        meshPoint_[localToGlobal_[i]] = pp.meshPoints()[i];
+    }
+}

@@ -1,0 +1,173 @@
+#!/bin/bash
+# cellBlastFoam on 2 MPI ranks (issue 5: "the fluid in parallel giving the
+# same probe results as serial"; issue 8: serial and parallel agree, a
+# parallel run killed and continued ends as the uninterrupted one).
+# The fluid is decomposed, the solid is whole on every rank
+# (src/fsi/globalInterfacePatch.H).
+#   1. The axisymmetric preview on the short column (shortColumn.sh, to
+#      16 ns, a write every 50 steps), decomposed by hand at y = 4 um so
+#      that the processor boundary cuts the cell's interface (both ranks
+#      hold interface faces and share interface points): 2 ranks against
+#      serial, every step of the coupling log (time, dt, iterations exact),
+#      the solid probes, the interface maxima and every dataset of
+#      solid/solid.h5 within 1e-9 of each column's largest magnitude
+#      (compareRestart.py; the logs carry 10 digits).
+#   2. The same decomposed case killed (SIGKILL of both ranks and mpirun)
+#      after 3 committed writes, continued from the latest time, stopped by
+#      SIGTERM after 5, continued to the end: logs and solid.h5 bitwise
+#      equal to the uninterrupted 2-rank run, the last time's processor
+#      fields byte-equal.
+#   3. The 3D quarter smoke case (tests/blast/quarter3DSmoke.sh's meshes,
+#      20 um box, to 9.5 ns, through the pulse's arrival at the cell top),
+#      simple decomposition (2 1 1) at x = 5 um through the cell: 2 ranks
+#      against serial as in 1.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+. "$here/../lib/restartTools.sh"
+compare=$here/compareRestart.py
+
+# decomposeAtY DIR Y: manual decomposition of the case DIR, rank 1 above
+# y = Y [m]
+decomposeAtY()
+{
+    (
+        cd "$1"
+        foamDictionary -entry writeFormat -set ascii system/controlDict \
+            > /dev/null
+        postProcess -func writeCellCentres -time 0 > log.centres 2>&1
+        foamDictionary -entry writeFormat -set binary system/controlDict \
+            > /dev/null
+        /usr/bin/python3 - "$2" <<'PY'
+import re, sys
+y0 = float(sys.argv[1])
+s = open("0/Cy").read()
+m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*\n?(\d+)\s*\n?"
+              r"\(\n(.*?)\n\)", s, re.S)
+y = [float(v) for v in m.group(2).split()]
+with open("constant/cellDecomposition", "w") as f:
+    f.write("FoamFile { version 2.0; format ascii; class labelList; "
+            "object cellDecomposition; }\n%d\n(\n" % len(y))
+    f.write("\n".join("1" if v > y0 else "0" for v in y))
+    f.write("\n)\n")
+PY
+        rm -f 0/C 0/Cx 0/Cy 0/Cz 0/V
+        cat > system/decomposeParDict <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
+numberOfSubdomains 2;
+method          manual;
+coeffs          { dataFile "cellDecomposition"; }
+DICT
+        decomposePar > log.decompose 2>&1 \
+            || { tail log.decompose; exit 1; }
+    )
+}
+
+# interfaceFaces DIR: faces of the FSI patch on each rank
+interfaceFaces()
+{
+    local patch r n
+    patch=$(foamDictionary -entry interface/fluidPatch -value \
+        "$1/constant/fsiProperties")
+    for r in 0 1
+    do
+        n=$(foamDictionary -entry entry0/$patch/nFaces -value \
+            "$1/processor$r/constant/polyMesh/boundary")
+        echo -n "$n "
+    done
+}
+
+# runParallel DIR LOG: cellBlastFoam on 2 ranks in DIR
+runParallel()
+{
+    (cd "$1" && mpirun -np 2 cellBlastFoam -parallel > "$2" 2>&1) \
+        || { tail -20 "$1/$2"; exit 1; }
+}
+
+# 1. Axisymmetric: serial against 2 ranks
+bash "$here/shortColumn.sh" "$work/serial" writeControl timeStep \
+    writeInterval 50
+serial=$work/serial/axisymmetricPreview
+cp -r "$work/serial" "$work/parallel"
+par=$work/parallel/axisymmetricPreview
+decomposeAtY "$par" 4e-6
+faces=$(interfaceFaces "$par")
+echo "axisymmetric: interface faces per rank: $faces"
+for n in $faces
+do
+    [ "$n" -gt 0 ] || { echo "FAIL: a rank without interface faces"; exit 1; }
+done
+cp -r "$work/parallel" "$work/killed"
+killed=$work/killed/axisymmetricPreview
+(cd "$serial" && cellBlastFoam > log.cellBlastFoam 2>&1) \
+    || { tail -20 "$serial/log.cellBlastFoam"; exit 1; }
+runParallel "$par" log.cellBlastFoam
+/usr/bin/python3 "$compare" "$serial" "$par" --tol 1e-9 --h5
+
+# 2. The 2-rank run killed and continued
+committed()
+{
+    ls -d "$killed"/processor1/*/.writeCommitted 2> /dev/null | wc -l
+}
+foamDictionary -entry startFrom -set latestTime \
+    "$killed/system/controlDict" > /dev/null
+(
+    cd "$killed"
+    mpirun -np 2 cellBlastFoam -parallel > log.first 2>&1 &
+    pid=$!
+    until [ "$(committed)" -ge 3 ]
+    do
+        kill -0 $pid 2> /dev/null \
+            || { echo "FAIL: ended before 3 writes"; tail log.first; exit 1; }
+        sleep 0.01
+    done
+    pkill -KILL -P $pid || true
+    kill -KILL $pid 2> /dev/null || true
+    wait $pid 2> /dev/null || true
+    echo "SIGKILL of the ranks after $(committed) committed writes"
+    runUntil TERM "[ \$(committed) -ge 5 ]" log.second \
+        mpirun -np 2 cellBlastFoam -parallel
+    grep -q "Solid: restarted from" log.second
+    echo "SIGTERM after $(committed) committed writes"
+    mpirun -np 2 cellBlastFoam -parallel > log.restart 2>&1 \
+        || { tail -20 log.restart; exit 1; }
+    grep -q "Solid: restarted from" log.restart
+)
+/usr/bin/python3 "$compare" "$par" "$killed" --bitwise --h5
+last=$(foamListTimes -case "$par" -processor -latestTime | tail -1)
+for r in 0 1
+do
+    sameFiles "$par/processor$r/$last" "$killed/processor$r/$last" \
+        p U T rho rhoU rhoE polyMesh/points uniform/solidState \
+        uniform/fsiState
+done
+echo "parallel restart: logs, solid.h5 and the fields of t = $last s bitwise"
+
+# 3. The 3D quarter: serial against 2 ranks
+q=$work/q3D/quarter3D
+mkdir -p "$q"
+cp "$root/tutorials/blast/plotBlast.py" "$work/q3D/"
+cp -r "$root"/tutorials/blast/quarter3D/{0.orig,constant,system,Allrun} "$q/"
+rm -rf "$q/constant/polyMesh" "$q"/constant/*.msh
+(cd "$q" && PROJECT_DIR=$root ./Allrun -box 20e-6 -h 0.6e-6 -far 2e-6 \
+    -growth 5e-6 -cell 1.4e-6 -endTime 9.5e-9 -noPlots -noRun \
+    > log.prepare 2>&1) || { tail -20 "$q/log.prepare"; exit 1; }
+for e in writeControl:timeStep writeInterval:200
+do
+    foamDictionary -entry "${e%%:*}" -set "${e#*:}" \
+        "$q/system/controlDict" > /dev/null
+done
+cp -r "$work/q3D" "$work/q3Dpar"
+qpar=$work/q3Dpar/quarter3D
+(cd "$qpar" && decomposePar > log.decompose 2>&1) \
+    || { tail "$qpar/log.decompose"; exit 1; }
+faces=$(interfaceFaces "$qpar")
+echo "3D quarter: interface faces per rank: $faces"
+for n in $faces
+do
+    [ "$n" -gt 0 ] || { echo "FAIL: a rank without interface faces"; exit 1; }
+done
+(cd "$q" && cellBlastFoam > log.cellBlastFoam 2>&1) \
+    || { tail -20 "$q/log.cellBlastFoam"; exit 1; }
+runParallel "$qpar" log.cellBlastFoam
+/usr/bin/python3 "$compare" "$q" "$qpar" --tol 1e-9 --h5 --pulse 1e6
+echo "cellBlastFoam: 2 ranks equal serial (axisymmetric and 3D quarter)"
