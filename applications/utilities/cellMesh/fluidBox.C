@@ -96,20 +96,23 @@ void Foam::fluidBox::box3D()
     std::map<std::string, std::vector<int>> patches;
     for (const auto& dt : bnd)
     {
+        // Classified by the centre of mass: OCC's bounding boxes of the
+        // cut faces are loose (the bottom of the full box, with the cell's
+        // footprint cut out, spans z = -+7e-5 um)
         const int s = std::abs(dt.second);
-        double xa, ya, za, xb, yb, zb;
-        gmsh::model::getBoundingBox(2, s, xa, ya, za, xb, yb, zb);
-        const auto on = [&](double lo, double hi, double v)
+        double xc, yc, zc;
+        occ::getCenterOfMass(2, s, xc, yc, zc);
+        const auto on = [&](double c, double v)
         {
-            return std::abs(lo - v) < tol && std::abs(hi - v) < tol;
+            return std::abs(c - v) < tol;
         };
         const char* name =
-            on(za, zb, L) ? "top"
-          : on(za, zb, 0) ? "bottom"
-          : on(xa, xb, 0.5*L) || on(ya, yb, 0.5*L)
-         || on(xa, xb, -0.5*L) || on(ya, yb, -0.5*L) ? "sides"
-          : on(xa, xb, 0) ? "symmetryX"
-          : on(ya, yb, 0) ? "symmetryY"
+            on(zc, L) ? "top"
+          : on(zc, 0) ? "bottom"
+          : on(xc, 0.5*L) || on(yc, 0.5*L) || on(xc, -0.5*L)
+         || on(yc, -0.5*L) ? "sides"
+          : quarter && on(xc, 0) ? "symmetryX"
+          : quarter && on(yc, 0) ? "symmetryY"
           : "cellInterface";
         patches[name].push_back(s);
     }
