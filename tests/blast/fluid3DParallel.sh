@@ -12,6 +12,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$here/../..
 . "$root/etc/bashrc"
+. "$here/../lib/splitAtPlane.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 src=$root/tutorials/blast/quarter3D
@@ -46,25 +47,7 @@ sed -i 's/cellInterface *{ type movingWallVelocity; value uniform (0 0 0); }/cel
 grep -q "cellInterface   { type slip; }" 0.orig/U
 cp -r 0.orig 0
 # processor 1: cells above z = 80 um
-postProcess -func writeCellCentres -time 0 > log.centres 2>&1
-/usr/bin/python3 - <<'PY'
-import re
-s = open("0/Cz").read()
-m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*\n?(\d+)\s*\n?\(\n(.*?)\n\)", s, re.S)
-z = [float(v) for v in m.group(2).split()]
-with open("constant/cellDecomposition", "w") as f:
-    f.write("FoamFile { version 2.0; format ascii; class labelList; "
-            "object cellDecomposition; }\n%d\n(\n" % len(z))
-    f.write("\n".join("1" if v > 80e-6 else "0" for v in z))
-    f.write("\n)\n")
-PY
-rm -f 0/C 0/Cx 0/Cy 0/Cz 0/V
-cat > system/decomposeParDict <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
-numberOfSubdomains 2;
-method          manual;
-coeffs          { dataFile "cellDecomposition"; }
-DICT
+splitAtPlane . z 80e-6
 cp -r "$work/serial" "$work/parallel"
 rhoRiemannFoam > log.solver 2>&1 || { tail log.solver; exit 1; }
 cd "$work/parallel"

@@ -24,56 +24,27 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../lib/restartTools.sh"
+. "$here/../lib/splitAtPlane.sh"
 compare=$here/compareRestart.py
 
-# decomposeAtY DIR Y: manual decomposition of the case DIR, rank 1 above
-# y = Y [m]
-decomposeAtY()
-{
-    (
-        cd "$1"
-        foamDictionary -entry writeFormat -set ascii system/controlDict \
-            > /dev/null
-        postProcess -func writeCellCentres -time 0 > log.centres 2>&1
-        foamDictionary -entry writeFormat -set binary system/controlDict \
-            > /dev/null
-        /usr/bin/python3 - "$2" <<'PY'
-import re, sys
-y0 = float(sys.argv[1])
-s = open("0/Cy").read()
-m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*\n?(\d+)\s*\n?"
-              r"\(\n(.*?)\n\)", s, re.S)
-y = [float(v) for v in m.group(2).split()]
-with open("constant/cellDecomposition", "w") as f:
-    f.write("FoamFile { version 2.0; format ascii; class labelList; "
-            "object cellDecomposition; }\n%d\n(\n" % len(y))
-    f.write("\n".join("1" if v > y0 else "0" for v in y))
-    f.write("\n)\n")
-PY
-        rm -f 0/C 0/Cx 0/Cy 0/Cz 0/V
-        cat > system/decomposeParDict <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }
-numberOfSubdomains 2;
-method          manual;
-coeffs          { dataFile "cellDecomposition"; }
-DICT
-        decomposePar > log.decompose 2>&1 \
-            || { tail log.decompose; exit 1; }
-    )
-}
-
-# interfaceFaces DIR: faces of the FSI patch on each rank
-interfaceFaces()
+# decompose DIR NAME: decomposePar in DIR; both ranks must hold faces of
+# the FSI patch (printed)
+decompose()
 {
     local patch r n
+    (cd "$1" && decomposePar > log.decompose 2>&1) \
+        || { tail "$1/log.decompose"; exit 1; }
     patch=$(foamDictionary -entry interface/fluidPatch -value \
         "$1/constant/fsiProperties")
+    echo -n "$2: interface faces per rank:"
     for r in 0 1
     do
         n=$(foamDictionary -entry entry0/$patch/nFaces -value \
             "$1/processor$r/constant/polyMesh/boundary")
-        echo -n "$n "
+        echo -n " $n"
+        [ "$n" -gt 0 ] || { echo; echo "FAIL: rank $r has none"; exit 1; }
     done
+    echo
 }
 
 # runParallel DIR LOG: cellBlastFoam on 2 ranks in DIR
@@ -89,13 +60,8 @@ bash "$here/shortColumn.sh" "$work/serial" writeControl timeStep \
 serial=$work/serial/axisymmetricPreview
 cp -r "$work/serial" "$work/parallel"
 par=$work/parallel/axisymmetricPreview
-decomposeAtY "$par" 4e-6
-faces=$(interfaceFaces "$par")
-echo "axisymmetric: interface faces per rank: $faces"
-for n in $faces
-do
-    [ "$n" -gt 0 ] || { echo "FAIL: a rank without interface faces"; exit 1; }
-done
+splitAtPlane "$par" y 4e-6
+decompose "$par" axisymmetric
 cp -r "$work/parallel" "$work/killed"
 killed=$work/killed/axisymmetricPreview
 (cd "$serial" && cellBlastFoam > log.cellBlastFoam 2>&1) \
@@ -158,14 +124,7 @@ do
 done
 cp -r "$work/q3D" "$work/q3Dpar"
 qpar=$work/q3Dpar/quarter3D
-(cd "$qpar" && decomposePar > log.decompose 2>&1) \
-    || { tail "$qpar/log.decompose"; exit 1; }
-faces=$(interfaceFaces "$qpar")
-echo "3D quarter: interface faces per rank: $faces"
-for n in $faces
-do
-    [ "$n" -gt 0 ] || { echo "FAIL: a rank without interface faces"; exit 1; }
-done
+decompose "$qpar" "3D quarter"
 (cd "$q" && cellBlastFoam > log.cellBlastFoam 2>&1) \
     || { tail -20 "$q/log.cellBlastFoam"; exit 1; }
 runParallel "$qpar" log.cellBlastFoam
