@@ -103,6 +103,23 @@ expect unknownNucleusShape 's/^mode .*/mode axisymmetric; nucleusShape cube;/' \
 expect scaledNucleus3D 's/^mode .*/mode full3D; nucleusShape scaledCell;/' \
     "nucleusShape scaledCell is available with mode axisymmetric only"
 expect missingNearSize '/^nearSize/d' "nearSize"
+# The refined column (3D only; columnSize in (0, farSize], columnRadius in
+# (0, L/2], both or neither)
+q3='s/^mode .*/mode quarter3D;/; s/^nucleusSize .*/nucleusSize 1.4e-6;/; s/^cytoplasmSize .*/cytoplasmSize 1.4e-6;/; s/^membraneSize .*/membraneSize 1e-6;/'
+expect columnSizeNegative "$q3; s/^growthDistance .*/growthDistance 30e-6; columnSize -1e-6; columnRadius 12e-6;/" \
+    "columnSize = -1e-06 m is outside the valid range \(0, 2e-05\]"
+expect columnCoarserThanFar "$q3; s/^growthDistance .*/growthDistance 30e-6; columnSize 25e-6; columnRadius 12e-6;/" \
+    "columnSize = 2.5e-05 m is outside the valid range \(0, 2e-05\]"
+expect columnRadiusOutside "$q3; s/^growthDistance .*/growthDistance 30e-6; columnSize 1e-6; columnRadius 60e-6;/" \
+    "columnRadius = 6e-05 m is outside the valid range \(0, 5e-05\]"
+expect columnRadiusZero "$q3; s/^growthDistance .*/growthDistance 30e-6; columnSize 1e-6; columnRadius 0;/" \
+    "columnRadius = 0 m is outside the valid range \(0, 5e-05\]"
+expect columnRadiusMissing "$q3; s/^growthDistance .*/growthDistance 30e-6; columnSize 1e-6;/" \
+    "columnRadius is missing"
+expect columnSizeMissing "$q3; s/^growthDistance .*/growthDistance 30e-6; columnRadius 12e-6;/" \
+    "columnSize is missing"
+expect columnAxisymmetric 's/^growthDistance .*/growthDistance 30e-6; columnSize 1e-6; columnRadius 12e-6;/' \
+    "columnSize is available in the 3D modes \(quarter3D, full3D\) only"
 
 echo "badInput: $((n - failures)) passed, $failures failed"
 [ $failures -eq 0 ]

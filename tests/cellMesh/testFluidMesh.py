@@ -14,7 +14,18 @@ wedge; quarter3D; full3D), checked
     "Mesh OK." and its total volume is the box minus the cell (wedge: sin
     of the angle times the section's int r dr dz) within 2 % of the
     cell's share (the cell surface is polygonal).
-Usage: testFluidMesh.py axisymmetric|quarter3D|full3D"""
+The mode quarter3DColumn meshes the quarter twice, without and with the
+refined column (columnSize, columnRadius), and asserts that
+  - the cells inside the column (centroid within columnRadius -
+    columnSize of the axis) have a mean edge <= 1.3 columnSize (and
+    >= 0.6 columnSize above the cell's near field: it is the column's
+    size, not a finer one), 99 % of them a mean edge <= 1.6 columnSize;
+  - the cells beyond the column's transition (centroid farther than
+    columnRadius + growthDistance + farSize from the axis and farther
+    than growthDistance + farSize from the cell) have the same mean edge
+    as without the column (to 10 %) (growthDistance 15 um here);
+  - the column mesh passes gmshToFoam and checkMesh (as above).
+Usage: testFluidMesh.py axisymmetric|quarter3D|full3D|quarter3DColumn"""
 import os
 import re
 import subprocess
@@ -82,39 +93,110 @@ def meanEdge(X, elems, patch, across):
     return np.mean(lengths)
 
 
+def cellEdges(X, elems):
+    """Centroids and mean edge lengths of the water tetrahedra"""
+    cen, edge = [], []
+    for typ, name, nodes in elems:
+        if name == "water" and typ == 4:
+            P = np.array([X[n] for n in nodes])
+            cen.append(P.mean(axis=0))
+            edge.append(np.mean([np.linalg.norm(P[i] - P[j])
+                                 for i in range(4) for j in range(i)]))
+    return np.array(cen), np.array(edge)
+
+
+def writeCase(case, mode, column="", growth=growth):
+    os.makedirs(os.path.join(case, "system"))
+    with open(os.path.join(case, "system/cellMeshDict"), "w") as d:
+        d.write(f"""FoamFile {{ version 2.0; format ascii;
+    class dictionary; object cellMeshDict; }}
+mode {mode}; cellDiameter {D}; cellHeight {H}; membraneThickness {t};
+membraneLayers 1; nucleusSize 0.8e-6; cytoplasmSize 0.8e-6;
+membraneSize 0.6e-6; contactRadius 0;
+fluid {{ boxSize {L}; nearSize {near}; farSize {far};
+    growthDistance {growth}; wedgeAngle {wedgeDeg}; {column} }}
+""")
+    for name, text in (
+        ("controlDict", "application none; startFrom startTime;"
+         " startTime 0; stopAt endTime; endTime 1; deltaT 1;"
+         " writeControl timeStep; writeInterval 1;"),
+        ("fvSchemes", "ddtSchemes {} gradSchemes {} divSchemes {}"
+         " laplacianSchemes {} interpolationSchemes {}"
+         " snGradSchemes {}"),
+            ("fvSolution", "")):
+        with open(os.path.join(case, "system", name), "w") as f:
+            f.write("FoamFile { version 2.0; format ascii; class"
+                    f" dictionary; object {name}; }}\n{text}\n")
+    p = sh("cellMesh", case)
+    if p.returncode != 0:
+        print(p.stdout[-3000:], p.stderr[-3000:])
+        sys.exit("cellMesh failed")
+    return p.stdout
+
+
+def column():
+    """The quarter without and with the column"""
+    # A shorter growth than the other modes' 30 um, so that the region
+    # beyond the column's transition is not only the box corner
+    hc, R, grow = 2e-6, 12e-6, 15e-6
+    meshes = {}
+    for name, entries in (("plain", ""),
+                          ("column", f"columnSize {hc}; columnRadius {R};")):
+        with tempfile.TemporaryDirectory() as case:
+            out = writeCase(case, "quarter3D", entries, grow)
+            if name == "column":
+                check("column of radius" in out,
+                      "column: cellMesh reports the column")
+            X, elems = read2(os.path.join(case, "constant/fluid.msh"))
+            meshes[name] = cellEdges(X, elems)
+            if name == "column":
+                p = sh("gmshToFoam constant/fluid.msh", case)
+                check(p.returncode == 0, "column: gmshToFoam")
+                p = sh("checkMesh", case)
+                check(p.returncode == 0 and "\nMesh OK." in p.stdout,
+                      f"column: checkMesh exit {p.returncode}, "
+                      + ("Mesh OK" if "Mesh OK." in p.stdout else "FAILED"))
+    region = {}
+    for name, (c, e) in meshes.items():
+        r = np.hypot(c[:, 0], c[:, 1])
+        level = (np.sqrt((r/a)**2 + (c[:, 2]/H)**2) - 1)*min(a, H)
+        region[name] = (e[r < R - hc], e[(r < R - hc) & (level > grow)],
+                        e[(r > R + grow + far) & (level > grow + far)])
+    n0, n1 = len(meshes["plain"][1]), len(meshes["column"][1])
+    inside, high, _ = region["column"]
+    o0, o1 = region["plain"][2], region["column"][2]
+    q99 = np.quantile(inside, 0.99)
+    # gmsh's tetrahedra have a mean edge about 1.2 times the size field:
+    # the far cells of the mesh without the column give the ratio
+    k = np.mean(o0)/far
+    check(np.mean(inside) <= 1.3*hc and q99 <= 1.8*hc,
+          f"column: {len(inside)} cells inside (radius {R*1e6:g} um), mean"
+          f" edge {np.mean(inside)*1e6:.2f} um (<= {1.3*hc*1e6:.2f}), 99 %"
+          f" {q99*1e6:.2f} um (<= {1.8*hc*1e6:.2f}); columnSize"
+          f" {hc*1e6:g} um")
+    check(0.8 <= np.mean(high)/(k*hc) <= 1.1,
+          f"column: above the near field mean edge {np.mean(high)*1e6:.2f}"
+          f" um = {np.mean(high)/hc:.3f} columnSize, {np.mean(high)/(k*hc):.3f}"
+          f" of gmsh's edge/size ratio {k:.3f} in the far field (in [0.8,"
+          f" 1.1])")
+    check(len(o0) > 100 and abs(np.mean(o1)/np.mean(o0) - 1) < 0.1,
+          f"column: beyond the transition {len(o1)} cells, mean edge"
+          f" {np.mean(o1)*1e6:.2f} um against {np.mean(o0)*1e6:.2f} um"
+          f" ({len(o0)} cells) without the column (to 10 %)")
+    print(f"column: {n1} tetrahedra with the column, {n0} without")
+
+
 def main(mode):
+    if mode == "quarter3DColumn":
+        column()
+        return
     patches = {"axisymmetric": ["top", "bottom", "sides", "cellInterface",
                                 "front", "back"],
                "quarter3D": ["top", "bottom", "sides", "cellInterface",
                              "symmetryX", "symmetryY"],
                "full3D": ["top", "bottom", "sides", "cellInterface"]}[mode]
     with tempfile.TemporaryDirectory() as case:
-        os.makedirs(os.path.join(case, "system"))
-        with open(os.path.join(case, "system/cellMeshDict"), "w") as d:
-            d.write(f"""FoamFile {{ version 2.0; format ascii;
-    class dictionary; object cellMeshDict; }}
-mode {mode}; cellDiameter {D}; cellHeight {H}; membraneThickness {t};
-membraneLayers 1; nucleusSize 0.8e-6; cytoplasmSize 0.8e-6;
-membraneSize 0.6e-6; contactRadius 0;
-fluid {{ boxSize {L}; nearSize {near}; farSize {far};
-    growthDistance {growth}; wedgeAngle {wedgeDeg}; }}
-""")
-        for name, text in (
-            ("controlDict", "application none; startFrom startTime;"
-             " startTime 0; stopAt endTime; endTime 1; deltaT 1;"
-             " writeControl timeStep; writeInterval 1;"),
-            ("fvSchemes", "ddtSchemes {} gradSchemes {} divSchemes {}"
-             " laplacianSchemes {} interpolationSchemes {}"
-             " snGradSchemes {}"),
-                ("fvSolution", "")):
-            with open(os.path.join(case, "system", name), "w") as f:
-                f.write("FoamFile { version 2.0; format ascii; class"
-                        f" dictionary; object {name}; }}\n{text}\n")
-        p = sh("cellMesh", case)
-        if p.returncode != 0:
-            print(p.stdout[-3000:], p.stderr[-3000:])
-            sys.exit("cellMesh failed")
-
+        writeCase(case, mode)
         X, elems = read2(os.path.join(case, "constant/fluid.msh"))
         names = {e[1] for e in elems}
         # Axis of the wedge: y (x = r, y = z as the axisymmetric cell.msh)

@@ -28,6 +28,39 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
     (
         d, "wedgeAngle", "deg", 0, 10, false, true, 5
     )*pi/180;
+
+    // Optional column: both entries or neither
+    columnSize_ = 0;
+    columnRadius_ = 0;
+    const bool hasSize = d.found("columnSize");
+    const bool hasRadius = d.found("columnRadius");
+    if (hasSize || hasRadius)
+    {
+        if (g_.axisymmetric())
+        {
+            FatalIOErrorInFunction(d)
+                << (hasSize ? "columnSize" : "columnRadius")
+                << " is available in the 3D modes (quarter3D, full3D) only: "
+                << "the axisymmetric wedge is a structured grid"
+                << exit(FatalIOError);
+        }
+        if (!hasSize || !hasRadius)
+        {
+            FatalIOErrorInFunction(d)
+                << (hasSize ? "columnRadius" : "columnSize")
+                << " is missing: columnSize and columnRadius define the "
+                << "refined column together (give both, or neither for no "
+                << "column)" << exit(FatalIOError);
+        }
+        columnSize_ = cellGeometry::readInRange
+        (
+            d, "columnSize", "m", 0, farSize_, false
+        );
+        columnRadius_ = cellGeometry::readInRange
+        (
+            d, "columnRadius", "m", 0, 0.5*L_, false
+        );
+    }
 }
 
 
@@ -45,7 +78,26 @@ void Foam::fluidBox::sizeField() const
         << ") - 1)*" << min(a, H) << "/" << growth_/unit_ << "))";
     const int f = field::add("MathEval");
     field::setString(f, "F", os.str());
-    field::setAsBackgroundMesh(f);
+    if (columnRadius_ > 0)
+    {
+        // The column: columnSize within columnRadius of the axis
+        // x = y = 0, growing linearly to farSize over growthDistance
+        // outside it; the size is the smaller of the two fields
+        std::ostringstream oc;
+        oc.precision(17);
+        oc  << columnSize_/unit_ << " + " << (farSize_ - columnSize_)/unit_
+            << "*min(1, max(0, sqrt(x*x + y*y) - " << columnRadius_/unit_
+            << ")/" << growth_/unit_ << ")";
+        const int c = field::add("MathEval");
+        field::setString(c, "F", oc.str());
+        const int m = field::add("Min");
+        field::setNumbers(m, "FieldsList", {double(f), double(c)});
+        field::setAsBackgroundMesh(m);
+    }
+    else
+    {
+        field::setAsBackgroundMesh(f);
+    }
     gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
     gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
     gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
@@ -353,6 +405,12 @@ void Foam::fluidBox::generate()
     if (g_.axisymmetric())
     {
         Info<< ", wedge " << wedge_*180/pi << " deg";
+    }
+    if (columnRadius_ > 0)
+    {
+        Info<< "; column of radius " << columnRadius_ << " m about the axis "
+            << "at " << columnSize_ << " m, growing to " << farSize_
+            << " m over " << growth_ << " m outside it";
     }
     Info<< nl;
     for (const auto& g : groups)
