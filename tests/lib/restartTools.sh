@@ -1,10 +1,9 @@
 # Shared by the restart tests: tests/verification/restartKilledWrites.sh,
 # tests/indentation/restartIndentation.sh, tests/blast/restart.sh,
-# tests/blast/restartKilledWrites.sh, tests/blast/parallel.sh. Sourced (after set -euo pipefail),
-# it sets the project environment (etc/bashrc), $root (the project) and
-# $work (a temporary directory removed at exit, kept with KEEP_WORK=1), and
-# defines runUntil and
-# sameFiles.
+# tests/blast/restartKilledWrites.sh, tests/blast/parallel.sh. Sourced
+# (after set -euo pipefail), it sets the project environment (etc/bashrc),
+# $root (the project) and $work (a temporary directory removed at exit,
+# kept with KEEP_WORK=1), and defines runUntil and sameFiles.
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 . "$root/etc/bashrc"
 work=$(mktemp -d)

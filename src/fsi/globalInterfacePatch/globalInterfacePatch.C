@@ -16,7 +16,6 @@ Foam::globalInterfacePatch::globalInterfacePatch(const polyPatch& pp)
         points_ = pp.localPoints();
         faceCentres_ = pp.faceCentres();
         localToGlobal_ = identity(pp.nPoints());
-        meshPoint_ = pp.meshPoints();
         return;
     }
 
@@ -30,7 +29,7 @@ Foam::globalInterfacePatch::globalInterfacePatch(const polyPatch& pp)
     faceOffsets_.gather(pointField(pp.faceCentres()), faceCentres_);
 
     // Merge the points that ranks share (equal coordinates: decomposePar
-    // writes a shared point once per processor, with the same digits)
+    // writes a shared point to each of its processors with the same bits)
     List<labelList> rankToGlobal(Pstream::nProcs());
     if (Pstream::master())
     {
@@ -71,10 +70,4 @@ Foam::globalInterfacePatch::globalInterfacePatch(const polyPatch& pp)
     // (scatterList would not send a rank its own entry)
     Pstream::scatter(rankToGlobal);
     localToGlobal_ = rankToGlobal[Pstream::myProcNo()];
-
-    meshPoint_.setSize(points_.size(), -1);
-    forAll(localToGlobal_, i)
-    {
-        meshPoint_[localToGlobal_[i]] = pp.meshPoints()[i];
-    }
 }

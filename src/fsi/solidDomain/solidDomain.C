@@ -19,9 +19,11 @@
 namespace
 {
 
-//- Run f; a solid::SolidError becomes a FatalError naming the context
+//- Run f; a solid::SolidError (any std::exception) it throws stops the run
+//  naming the context and, when the input came from a dictionary entry
+//  (dict not null), the file, the entry and its line (FatalIOError)
 template<class F>
-void guarded(const char* context, F&& f)
+void guarded(const Foam::dictionary* dict, const char* context, F&& f)
 {
     try
     {
@@ -29,25 +31,29 @@ void guarded(const char* context, F&& f)
     }
     catch (const std::exception& e)
     {
+        if (dict)
+        {
+            FatalIOErrorInFunction(*dict)
+                << context << ": " << e.what()
+                << Foam::exit(Foam::FatalIOError);
+        }
         FatalErrorInFunction
             << context << ": " << e.what() << Foam::exit(Foam::FatalError);
     }
 }
 
-//- The same for what a dictionary entry gave: the error names the file
-//  (constant/solidProperties), the entry and its line
+//- The same for failures of the running solid (no input to name)
+template<class F>
+void guarded(const char* context, F&& f)
+{
+    guarded(nullptr, context, f);
+}
+
+//- The same for what a dictionary entry gave
 template<class F>
 void guarded(const Foam::dictionary& dict, const char* context, F&& f)
 {
-    try
-    {
-        f();
-    }
-    catch (const std::exception& e)
-    {
-        FatalIOErrorInFunction(dict)
-            << context << ": " << e.what() << Foam::exit(Foam::FatalIOError);
-    }
+    guarded(&dict, context, f);
 }
 
 } // namespace
