@@ -10,7 +10,9 @@
 # the unit-pressure force equals the projected areas of the quarter cell
 # (1 %); the pulse reaches the probe (cytoplasm-nucleus interface, 75 %
 # of the nucleus height) at 0.05 ns + (L - z_probe)/Us within 3 %; every
-# coupling step converged, no NaN; fluid and solid VTK files exist.
+# coupling step converged, no NaN; fluid and solid VTK files exist; the
+# fluid points of the symmetry planes and the substrate are exactly on
+# them at the end.
 # usage: quarter3DSmoke.sh [atRest]
 #   atRest: to 2 ns only (the chain and the interface at rest before the
 #   pulse's precursor reaches the cell; checkQuarter3D.py --atRest)
@@ -30,6 +32,10 @@ do
     cp -r "$src/quarter3D/$f" "$work/quarter3D/"
 done
 case=$work/quarter3D
+# Writes at half the end time and at the end (the moved mesh after the
+# arrival for the plane check of checkQuarter3D.py)
+foamDictionary -entry writeInterval -set "$(/usr/bin/python3 -c "print($endTime/2)")" \
+    "$case/system/controlDict" > /dev/null
 rm -rf "$case/constant/polyMesh" "$case"/constant/*.msh
 PROJECT_DIR=$here/../.. "$case/Allrun" -box 20e-6 -h 0.6e-6 -far 2e-6 \
     -growth 5e-6 -cell 1.4e-6 -endTime $endTime -noPlots > "$work.log" 2>&1 \

@@ -17,6 +17,64 @@ Foam::vector Foam::interfaceMotion::radial(const point& p) const
 }
 
 
+Foam::tensorField Foam::interfaceMotion::slipProjectors() const
+{
+    // Unit normals of every wall-type patch at its points, from the
+    // reference points (a restart's mesh has moved); components below
+    // 1e-9 are round-off of a plane along the axes and are dropped
+    List<DynamicList<vector>> normals(mesh_.nPoints());
+    forAll(mesh_.boundaryMesh(), patchi)
+    {
+        const polyPatch& pp = mesh_.boundaryMesh()[patchi];
+        if
+        (
+            patchi == patchi_ || isA<wedgePolyPatch>(pp)
+         || isA<emptyPolyPatch>(pp) || pp.empty()
+         || pp.coupled()            // processor (or cyclic) faces: no wall
+        )
+        {
+            continue;
+        }
+        const labelList& mp = pp.meshPoints();
+        vectorField pn(mp.size(), Zero);
+        const faceList& lf = pp.localFaces();
+        forAll(lf, facei)
+        {
+            const vector a = pp[facei].areaNormal(points0_);
+            for (const label i : lf[facei]) pn[i] += a;
+        }
+        forAll(mp, i)
+        {
+            vector n = pn[i]/(mag(pn[i]) + VSMALL);
+            for (direction c = 0; c < vector::nComponents; ++c)
+            {
+                if (mag(n[c]) < 1e-9) n[c] = 0;
+            }
+            normals[mp[i]].append(n/(mag(n) + VSMALL));
+        }
+    }
+
+    // Projectors: Gram-Schmidt over the normals of each point (a normal
+    // within 1e-6 of the span of the earlier ones adds no constraint)
+    tensorField P(mesh_.nPoints(), tensor::I);
+    forAll(normals, pointi)
+    {
+        DynamicList<vector> basis;
+        for (vector n : normals[pointi])
+        {
+            for (const vector& b : basis) n -= (n & b)*b;
+            if (mag(n) > 1e-6)
+            {
+                n /= mag(n);
+                basis.append(n);
+                P[pointi] -= n*n;
+            }
+        }
+    }
+    return P;
+}
+
+
 Foam::interfaceMotion::interfaceMotion
 (
     const fvMesh& mesh,
@@ -78,34 +136,28 @@ Foam::interfaceMotion::interfaceMotion
     vectorField xi(gp.size());
     forAll(gp, k) xi[k] = toSpace(gp[k]);
 
-    // Slip normals of the points of the other wall-type patches
-    vectorField normal(mesh.nPoints(), Zero);
+    // Slip projectors of the points of the other wall-type patches
+    const tensorField P(slipProjectors());
     boolList onInterface(mesh.nPoints(), false);
     for (const label p : ipPoints) onInterface[p] = true;
-    forAll(mesh.boundaryMesh(), patchi)
     {
-        const polyPatch& pp = mesh.boundaryMesh()[patchi];
-        if
-        (
-            patchi == patchi_ || isA<wedgePolyPatch>(pp)
-         || isA<emptyPolyPatch>(pp) || pp.empty()
-         || pp.coupled()            // processor (or cyclic) faces: no wall
-        )
+        DynamicList<Tuple2<label, tensor>> held;
+        forAll(ipPoints, k)
         {
-            continue;
+            if (P[ipPoints[k]] != tensor::I)
+            {
+                held.append(Tuple2<label, tensor>(k, P[ipPoints[k]]));
+            }
         }
-        const vectorField pn(pp.pointNormals());
-        forAll(pp.meshPoints(), i)
-        {
-            normal[pp.meshPoints()[i]] = pn[i];
-        }
+        interfaceSlip_.transfer(held);
     }
 
     DynamicList<label> moving;
     DynamicList<labelList> stencil;
     DynamicList<scalarField> weights;
-    DynamicList<vector> slip;
+    DynamicList<tensor> slip;
     DynamicList<labelPair> shared;
+    DynamicList<tensor> sharedP;
     labelList order(gp.size());
     scalarField dist(gp.size());
     forAll(points0_, pointi)
@@ -126,6 +178,7 @@ Foam::interfaceMotion::interfaceMotion
         {
             // On the interface of another rank: that point's displacement
             shared.append(labelPair(pointi, order[0]));
+            sharedP.append(P[pointi]);
             continue;
         }
         const scalar phi = 1 - 3*sqr(s) + 2*pow3(s);
@@ -140,18 +193,20 @@ Foam::interfaceMotion::interfaceMotion
         moving.append(pointi);
         stencil.append(st);
         weights.append(w);
-        slip.append(normal[pointi]);
+        slip.append(P[pointi]);
     }
     movingPoints_.transfer(moving);
     stencil_.transfer(stencil);
     weights_.transfer(weights);
-    slipNormal_.transfer(slip);
+    slip_.transfer(slip);
     sharedPoints_.transfer(shared);
+    sharedSlip_.transfer(sharedP);
 
     Info<< "FSI mesh motion: interpolation from the " << gp.size()
         << " interface points to " << movingPoints_.size()
-        << " mesh points within " << L << " m (" << n << " nearest)"
-        << endl;
+        << " mesh points within " << L << " m (" << n << " nearest); "
+        << interfaceSlip_.size() << " interface points held on wall or"
+        << " symmetry patches" << endl;
 }
 
 
@@ -180,9 +235,18 @@ Foam::tmp<Foam::pointField> Foam::interfaceMotion::newPoints
     tmp<pointField> tnew(new pointField(points0_));
     pointField& x = tnew.ref();
     forAll(ipPoints, k) x[ipPoints[k]] += patchDisplacement[toGlobal[k]];
-    for (const labelPair& pk : sharedPoints_)
+    for (const Tuple2<label, tensor>& kP : interfaceSlip_)
     {
-        x[pk.first()] += patchDisplacement[pk.second()];
+        // The coupling's displacement, held on the wall (the part removed
+        // is round-off of the map or a component the solid prescribes)
+        const label k = kP.first();
+        x[ipPoints[k]] =
+            points0_[ipPoints[k]] + (kP.second() & patchDisplacement[toGlobal[k]]);
+    }
+    forAll(sharedPoints_, i)
+    {
+        const labelPair& pk = sharedPoints_[i];
+        x[pk.first()] += (sharedSlip_[i] & patchDisplacement[pk.second()]);
     }
     forAll(movingPoints_, i)
     {
@@ -193,8 +257,7 @@ Foam::tmp<Foam::pointField> Foam::interfaceMotion::newPoints
         {
             d = d.x()*radial(points0_[pointi]) + d.y()*axisDirection_;
         }
-        d -= (d & slipNormal_[i])*slipNormal_[i];
-        x[pointi] += d;
+        x[pointi] += (slip_[i] & d);
     }
     return tnew;
 }
