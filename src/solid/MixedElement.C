@@ -54,6 +54,33 @@ double solid::characteristicLength
 }
 
 
+namespace
+{
+
+// Corner Jacobian at node a: the determinant of its edges to its
+// neighbours along xi, eta (, zeta), right-handed for a valid element in
+// the gmsh node order (the corners of Verdict's hexahedron Jacobian);
+// x(a): node a's coordinates
+template<class Coords>
+double cornerJacobian(solid::ElementType type, const Coords& x, int a)
+{
+    static const int hex[8][3] =
+    {
+        {1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7},
+        {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}
+    };
+    const solid::Vec3 o = x(a);
+    if (type == solid::ElementType::quad4Axi)
+    {
+        const solid::Vec3 d1 = x((a + 1) % 4) - o, d2 = x((a + 3) % 4) - o;
+        return d1(0)*d2(1) - d1(1)*d2(0);
+    }
+    return (x(hex[a][0]) - o).dot((x(hex[a][1]) - o).cross(x(hex[a][2]) - o));
+}
+
+} // namespace
+
+
 void solid::ElementGeometry::build(const Mesh& mesh, int e)
 {
     const ShapeRule& rule = volumeRule(mesh.type);
@@ -251,6 +278,50 @@ void solid::MixedElement::evaluate
             for (int i = 0; i < dim; ++i)
                 xe(a*dim + i) = mesh.X[en[a]](i) + ue(a*dim + i);
         out.length = characteristicLength(mesh.type, xe, axi ? 0 : out.v);
+
+        // A corner folded while every Gauss point keeps J > 0 (a node of
+        // a thin element pushed through the opposite face): the corner
+        // Jacobians, checked against the reference ones (a reference
+        // corner that is not positive is the mesh's, not the solve's)
+        auto current = [&](int a)
+        {
+            Vec3 p = Vec3::Zero();
+            for (int i = 0; i < dim; ++i) p(i) = xe(a*dim + i);
+            return p;
+        };
+        int node = 0;
+        double jc = 1e300;
+        for (int a = 0; a < nen; ++a)
+        {
+            const double j = cornerJacobian(mesh.type, current, a);
+            if (j < jc)
+            {
+                jc = j;
+                node = a;
+            }
+        }
+        if (!(jc > 0))
+        {
+            auto reference = [&](int a)
+            {
+                Vec3 p = Vec3::Zero();
+                for (int i = 0; i < dim; ++i) p(i) = mesh.X[en[a]](i);
+                return p;
+            };
+            const double j0 = cornerJacobian(mesh.type, reference, node);
+            if (j0 > 0)
+            {
+                std::ostringstream os;
+                os  << "element " << e << " (region '"
+                    << mesh.regionNames.at(mesh.region[e])
+                    << "') inverted during the solve: its corner at node "
+                    << en[node] << " is folded (corner Jacobian " << jc
+                    << " m^" << dim << " against " << j0 << " in the"
+                    " reference) while every Gauss point has J > 0"
+                    " (smallest " << out.Jmin << ")";
+                throw SolidError(SolidError::Kind::invertedElement, os.str());
+            }
+        }
     }
 
     const double rho = mat.rho0()/out.theta;

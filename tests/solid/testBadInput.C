@@ -159,6 +159,48 @@ TEST(SolidBadInput, InvertedElementMessageNamesElement)
 }
 
 
+TEST(SolidBadInput, FoldedCornerWithPositiveGaussPointsIsInverted)
+{
+    // One hexahedron, its corner node 4 (0, 0, L) moved to t (L, L, -L)
+    // + (0, 0, L): past the plane of its three neighbours for t > 1/3,
+    // while the eight Gauss points keep J > 0 up to t = 0.5 (at t = 0.4
+    // the smallest Gauss J is 0.25 and the corner's -0.2 of the cube's)
+    const double L = 1e-6;
+    Mesh m = Mesh::box(1, 1, 1, Vec3(0, 0, 0), Vec3(L, L, L));
+    Model model(m);
+    model.setMaterial("solid", solidTest::material(100, 1e-2));
+    model.initialise();
+    const int n = model.mesh().element(0)[4];
+    ASSERT_NEAR(model.mesh().X[n](2), L, 1e-18);
+    Assembly a;
+    for (const double t : {0.3, 0.4})
+    {
+        Eigen::VectorXd x = model.u;
+        x(3*n) = t*L;
+        x(3*n + 1) = t*L;
+        x(3*n + 2) = -t*L;
+        if (t < 1.0/3)
+        {
+            // Distorted, not folded: assembles
+            EXPECT_NO_THROW
+            (
+                model.assemble(x, model.pressure, 0, 0, false, a)
+            );
+            continue;
+        }
+        const std::string msg = messageOf
+        (
+            [&] { model.assemble(x, model.pressure, 0, 0, false, a); },
+            SolidError::Kind::invertedElement
+        );
+        EXPECT_TRUE(has(msg, "element 0 (region 'solid') inverted")) << msg;
+        EXPECT_TRUE(has(msg, "corner at node " + std::to_string(n)))
+            << msg;
+        EXPECT_TRUE(has(msg, "every Gauss point has J > 0")) << msg;
+    }
+}
+
+
 TEST(SolidBadInput, MieGruneisenOutsideDomain)
 {
     eos::MieGruneisen::Parameters w;
