@@ -547,7 +547,10 @@ void Foam::interfaceMap::projectionWeights
     }
 
     // Components prescribed at every node of a point's stencil keep the
-    // point stencil (symmetry planes, substrate)
+    // point stencil (symmetry planes, substrate). A weight below 1e-9 is
+    // the round-off of a point on a stencil edge or node (gmsh writes the
+    // points of y = 0 at y ~ 1e-21 m): it is dropped from the stencil
+    // first, else the pole and the contact-line points were not pinned
     const label dim = solidMesh_.dim();
     pointPinned_.setSize(nPts, 0);
     label nPinned = 0;
@@ -555,7 +558,19 @@ void Foam::interfaceMap::projectionWeights
     {
         forAll(pointPinned_, p)
         {
-            const stencil& st = pointStencil_[p];
+            stencil& st = pointStencil_[p];
+            bool dropped = false;
+            scalar sum = 0;
+            for (label a = 0; a < 4; ++a)
+            {
+                if (st.weight[a] != 0 && mag(st.weight[a]) < 1e-9)
+                {
+                    st.weight[a] = 0;
+                    dropped = true;
+                }
+                sum += st.weight[a];
+            }
+            for (label a = 0; dropped && a < 4; ++a) st.weight[a] /= sum;
             for (label d = 0; d < dim; ++d)
             {
                 bool all = true;
