@@ -1,4 +1,6 @@
 #include "ExplicitSolver.H"
+
+#include <algorithm>
 #include "SolidError.H"
 
 #include <cmath>
@@ -26,6 +28,15 @@ const int hexSigns[8][3] =
 };
 
 } // namespace
+
+
+double solid::ExplicitSolver::hourglassCoefficient(int e) const
+{
+    const Mesh& mesh = model_.mesh();
+    const auto it =
+        set_.hourglassRegions.find(mesh.regionNames.at(mesh.region[e]));
+    return it != set_.hourglassRegions.end() ? it->second : set_.hourglass;
+}
 
 
 void solid::ExplicitSolver::buildHourglass()
@@ -85,8 +96,9 @@ void solid::ExplicitSolver::buildHourglass()
         const double S =
             axi ? std::sqrt(2*M_PI*(geo.V/(2*M_PI*area))*geo.V)
                 : std::pow(geo.V, 2.0/3.0);
-        const double D = set_.hourglass*m.material(e).rho0()*c*S;
+        const double D = hourglassCoefficient(e)*m.material(e).rho0()*c*S;
         hourglassDamping_[e] = D*P;
+        if (!(D > 0)) continue;
 
         // Explicit limit of the damper (eigenvalue of P is 1): dt < 2 m/D
         for (int a = 0; a < nen; ++a)
@@ -161,10 +173,32 @@ solid::ExplicitSolver::ExplicitSolver
             "explicit solver", "hourglass", set_.hourglass, 0, 1, "-"
         );
     }
+    bool anyHourglass = set_.hourglass > 0;
+    for (const auto& r : set_.hourglassRegions)
+    {
+        const auto& names = m.mesh().regionNames;
+        if (std::find(names.begin(), names.end(), r.first) == names.end())
+        {
+            std::string list;
+            for (const auto& n : names) list += " '" + n + "'";
+            throw SolidError
+            (
+                SolidError::Kind::parameter,
+                "explicit solver: hourglass viscosity of region '" + r.first
+              + "': the mesh has no such region (regions:" + list + ")"
+            );
+        }
+        checkParameter
+        (
+            "explicit solver", "hourglass of region '" + r.first + "'",
+            r.second, 0, 1, "-", true
+        );
+        anyHourglass |= r.second > 0;
+    }
     m.condensePressure(true);
     fixed_ = m.prescribedDofs();
     invMass_ = m.lumpedMass().cwiseInverse();
-    if (set_.hourglass > 0) buildHourglass();
+    if (anyHourglass) buildHourglass();
     m.assemble(m.u, m.pressure, m.time, 0, false, asm_);
     m.commit();
     fint_ = asm_.fint;

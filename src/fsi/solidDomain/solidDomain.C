@@ -212,6 +212,15 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
     solid::ExplicitSettings set;
     set.safety = dict_.getOrDefault<scalar>("explicitSafety", 0.8);
     set.hourglass = dict_.getOrDefault<scalar>("hourglassViscosity", 0);
+    if (dict_.found("hourglassViscosityRegions"))
+    {
+        // kappa per region name, overriding hourglassViscosity there
+        const dictionary& hr = dict_.subDict("hourglassViscosityRegions");
+        for (const entry& e : hr)
+        {
+            set.hourglassRegions[e.keyword()] = hr.get<scalar>(e.keyword());
+        }
+    }
     guarded("solid initialise", [&]
     {
         model_->initialise();
