@@ -103,7 +103,7 @@ def fig10(cases, labels, out):
         a.grid(alpha=0.3)
     ax[0, 0].legend()
     fig.suptitle("Cytoplasm-nucleus interface, 75 % of the nucleus height "
-                 "(axisymmetric preview; paper Fig. 10)")
+                 "(paper Fig. 10)")
     fig.tight_layout()
     fig.savefig(out, dpi=120)
     plt.close(fig)
