@@ -394,7 +394,7 @@ public:
         {
             const auto v = integers(need("Elements"), "tag type numTags "
                 "tags... nodes...");
-            if (v.size() < 3 || v[2] < 0 || std::size_t(3 + v[2]) >= v.size())
+            if (v.size() < 3 || v[2] < 0 || std::size_t(v[2]) >= v.size() - 3)
             {
                 fail("malformed element line (tag type numTags tags... "
                      "nodes...)");
