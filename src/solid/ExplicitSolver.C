@@ -196,6 +196,7 @@ solid::ExplicitSolver::ExplicitSolver
         anyHourglass |= r.second > 0;
     }
     m.condensePressure(true);
+    m.setCornerCheck(true);
     fixed_ = m.prescribedDofs();
     invMass_ = m.lumpedMass().cwiseInverse();
     if (anyHourglass) buildHourglass();

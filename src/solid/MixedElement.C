@@ -149,7 +149,8 @@ void solid::MixedElement::evaluate
     const double* elemOld,
     double* elemNew,
     bool tangent,
-    ElementOutput& out
+    ElementOutput& out,
+    bool checkCorners
 )
 {
     const int nen = mesh.nen();
@@ -291,7 +292,7 @@ void solid::MixedElement::evaluate
         };
         int node = 0;
         double jc = 1e300;
-        for (int a = 0; a < nen; ++a)
+        for (int a = 0; checkCorners && a < nen; ++a)
         {
             const double j = cornerJacobian(mesh.type, current, a);
             if (j < jc)
@@ -300,7 +301,7 @@ void solid::MixedElement::evaluate
                 node = a;
             }
         }
-        if (!(jc > 0))
+        if (checkCorners && !(jc > 0))
         {
             auto reference = [&](int a)
             {

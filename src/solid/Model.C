@@ -337,7 +337,7 @@ void solid::Model::assemble
             m >= 0, m >= 0 ? p(m) : 0.0, dt,
             pointState_.old(e), pointState_.current(e),
             elementState_.old(e), elementState_.current(e),
-            tangent, out
+            tangent, out, cornerCheck_
         );
         for (int i = 0; i < nd; ++i) a.fint(dofs[i]) += out.f(i);
         a.energy += out.energy;
