@@ -1,8 +1,7 @@
 #include "ExplicitSolver.H"
-
-#include <algorithm>
 #include "SolidError.H"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 

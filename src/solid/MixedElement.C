@@ -60,21 +60,27 @@ namespace
 // Corner Jacobian at node a: the determinant of its edges to its
 // neighbours along xi, eta (, zeta), right-handed for a valid element in
 // the gmsh node order (the corners of Verdict's hexahedron Jacobian);
-// x(a): node a's coordinates
-template<class Coords>
-double cornerJacobian(solid::ElementType type, const Coords& x, int a)
+// xe: the element's node coordinates (nen dim)
+double cornerJacobian
+(
+    solid::ElementType type,
+    const Eigen::Ref<const Eigen::VectorXd>& xe,
+    int a
+)
 {
     static const int hex[8][3] =
     {
         {1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7},
         {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}
     };
-    const solid::Vec3 o = x(a);
     if (type == solid::ElementType::quad4Axi)
     {
-        const solid::Vec3 d1 = x((a + 1) % 4) - o, d2 = x((a + 3) % 4) - o;
-        return d1(0)*d2(1) - d1(1)*d2(0);
+        const int b = (a + 1) % 4, c = (a + 3) % 4;
+        return (xe(2*b) - xe(2*a))*(xe(2*c + 1) - xe(2*a + 1))
+             - (xe(2*b + 1) - xe(2*a + 1))*(xe(2*c) - xe(2*a));
     }
+    const auto x = [&](int n) { return solid::Vec3(xe.segment<3>(3*n)); };
+    const solid::Vec3 o = x(a);
     return (x(hex[a][0]) - o).dot((x(hex[a][1]) - o).cross(x(hex[a][2]) - o));
 }
 
@@ -284,44 +290,25 @@ void solid::MixedElement::evaluate
         // a thin element pushed through the opposite face): the corner
         // Jacobians, checked against the reference ones (a reference
         // corner that is not positive is the mesh's, not the solve's)
-        auto current = [&](int a)
-        {
-            Vec3 p = Vec3::Zero();
-            for (int i = 0; i < dim; ++i) p(i) = xe(a*dim + i);
-            return p;
-        };
-        int node = 0;
-        double jc = 1e300;
         for (int a = 0; checkCorners && a < nen; ++a)
         {
-            const double j = cornerJacobian(mesh.type, current, a);
-            if (j < jc)
-            {
-                jc = j;
-                node = a;
-            }
-        }
-        if (checkCorners && !(jc > 0))
-        {
-            auto reference = [&](int a)
-            {
-                Vec3 p = Vec3::Zero();
-                for (int i = 0; i < dim; ++i) p(i) = mesh.X[en[a]](i);
-                return p;
-            };
-            const double j0 = cornerJacobian(mesh.type, reference, node);
-            if (j0 > 0)
-            {
-                std::ostringstream os;
-                os  << "element " << e << " (region '"
-                    << mesh.regionNames.at(mesh.region[e])
-                    << "') inverted during the solve: its corner at node "
-                    << en[node] << " is folded (corner Jacobian " << jc
-                    << " m^" << dim << " against " << j0 << " in the"
-                    " reference) while every Gauss point has J > 0"
-                    " (smallest " << out.Jmin << ")";
-                throw SolidError(SolidError::Kind::invertedElement, os.str());
-            }
+            const double jc = cornerJacobian(mesh.type, xe, a);
+            if (jc > 0) continue;
+            Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 24, 1> x0(nen*dim);
+            for (int b = 0; b < nen; ++b)
+                for (int i = 0; i < dim; ++i)
+                    x0(b*dim + i) = mesh.X[en[b]](i);
+            const double j0 = cornerJacobian(mesh.type, x0, a);
+            if (!(j0 > 0)) continue;
+            std::ostringstream os;
+            os  << "element " << e << " (region '"
+                << mesh.regionNames.at(mesh.region[e])
+                << "') inverted during the solve: its corner at node "
+                << en[a] << " is folded (corner Jacobian " << jc
+                << " m^" << dim << " against " << j0 << " in the"
+                " reference) while every Gauss point has J > 0"
+                " (smallest " << out.Jmin << ")";
+            throw SolidError(SolidError::Kind::invertedElement, os.str());
         }
     }
 
