@@ -109,7 +109,7 @@ while IFS= read -r row
 do
     name=$(field "$row" 1); base=$(field "$row" 2); app=$(field "$row" 3)
     fileRe=$(field "$row" 4); entryRe=$(field "$row" 5); edit=$(field "$row" 6)
-    echo "$name" | grep -Eq "$select" || continue
+    grep -Eq "$select" <<< "$name" || continue
     n=$((n + 1))
     c=$work/case
     rm -rf "$c"

@@ -55,7 +55,7 @@ expect() {
         return
     fi
     for regex in "FATAL IO ERROR" "system/cellMeshDict" "$@"; do
-        if ! echo "$out" | grep -Eq "$regex"; then
+        if ! grep -Eq "$regex" <<< "$out"; then
             echo "FAIL $name: message does not match '$regex':"
             echo "$out" | grep -A6 "FATAL" | head -12
             failures=$((failures + 1)); return

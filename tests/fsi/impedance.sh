@@ -46,8 +46,8 @@ do
         if [ $status -ne 0 ]
         then
             # A clean stop naming the invalid state, not a signal
-            if echo "$out" | grep -q "FOAM FATAL ERROR.*Invalid thermodynamic state" \
-                && ! echo "$out" | grep -qi "floating point\|sigFpe\|segmentation"
+            if grep -q "FOAM FATAL ERROR.*Invalid thermodynamic state" <<< "$out" \
+                && ! grep -qi "floating point\|sigFpe\|segmentation" <<< "$out"
             then
                 echo "  ratio $ratio: run stopped with the invalid state named, as expected (unstable)"
             else

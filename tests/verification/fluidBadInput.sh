@@ -34,7 +34,7 @@ expect() {
         echo "FAIL $name: crashed (exit $code)"; failures=$((failures + 1)); return
     fi
     for regex in "$@"; do
-        if ! echo "$out" | grep -Eq "$regex"; then
+        if ! grep -Eq "$regex" <<< "$out"; then
             echo "FAIL $name: message does not match '$regex':"
             echo "$out" | grep -A6 "FATAL" | head -12
             failures=$((failures + 1)); return

@@ -10,7 +10,7 @@ for f in "$FOAM_USER_LIBBIN"/*.so "$FOAM_USER_APPBIN"/*
 do
     n=$((n + 1))
     out=$(ldd -r "$f" 2>&1)
-    if echo "$out" | grep -qE "undefined symbol|not found"
+    if grep -qE "undefined symbol|not found" <<< "$out"
     then
         echo "$f:"; echo "$out" | grep -E "undefined symbol|not found" | head
         status=1

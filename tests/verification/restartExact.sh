@@ -38,7 +38,7 @@ do
     # wait until the second write is complete: a time step logged after it
     for i in $(seq 1 1200)
     do
-        if awk -v t="Time = $second s" '$0==t{f=1;next} f&&/^Time = /{print; exit}' "$work/$run/log.1" | grep -q Time
+        if [ -n "$(awk -v t="Time = $second s" '$0==t{f=1;next} f&&/^Time = /{print; exit}' "$work/$run/log.1")" ]
         then
             break
         fi
