@@ -120,6 +120,11 @@ expect columnSizeMissing "$q3; s/^growthDistance .*/growthDistance 30e-6; column
     "columnSize is missing"
 expect columnAxisymmetric 's/^growthDistance .*/growthDistance 30e-6; columnSize 1e-6; columnRadius 12e-6;/' \
     "columnSize is available in the 3D modes \(quarter3D, full3D\) only"
+# The azimuthal size (3D only, (0, H])
+expect azimuthZero "$q3; s/^contactRadius .*/contactRadius 5e-6; azimuthSize 0;/" \
+    "azimuthSize = 0 m is outside the valid range \(0, 7.9e-06\]"
+expect azimuthAxisymmetric 's/^contactRadius .*/contactRadius 5e-6; azimuthSize 2e-6;/' \
+    "azimuthSize is available in the 3D modes \(quarter3D, full3D\) only"
 
 echo "badInput: $((n - failures)) passed, $failures failed"
 [ $failures -eq 0 ]

@@ -113,6 +113,18 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     nucleusSize_ = readInRange(dict, "nucleusSize", "m", 0, H_, false);
     cytoplasmSize_ = readInRange(dict, "cytoplasmSize", "m", 0, H_, false);
     membraneSize_ = readInRange(dict, "membraneSize", "m", 0, H_, false);
+    azimuthSize_ = min(cytoplasmSize_, membraneSize_);
+    if (dict.found("azimuthSize"))
+    {
+        if (mode_ == meshMode::axisymmetric)
+        {
+            FatalIOErrorInFunction(dict)
+                << "azimuthSize is available in the 3D modes (quarter3D, "
+                << "full3D) only: the axisymmetric mesh has no azimuth"
+                << exit(FatalIOError);
+        }
+        azimuthSize_ = readInRange(dict, "azimuthSize", "m", 0, H_, false);
+    }
     contactRadius_ =
         readInRange(dict, "contactRadius", "m", 0, a_, true);
     contactSize_ = cytoplasmSize_;

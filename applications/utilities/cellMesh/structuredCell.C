@@ -421,7 +421,7 @@ Foam::structuredCell::structuredCell(const cellGeometry& geom)
 
     // Azimuth: elements per quarter turn (even: the quarter's planes are
     // grid planes of the butterfly)
-    nSq_ = 2*atLeastOne(0.25*pi*0.5*(rc_ + a)/hT);
+    nSq_ = 2*atLeastOne(0.25*pi*0.5*(rc_ + a)/g_.azimuthSize());
     nRing_ = max
     (
         label(1), label(std::round((rc_ - s_)/(0.5*pi*rc_/nSq_)))
