@@ -43,6 +43,16 @@ if ! cellBlastFoam > log.cellBlastFoam 2>&1; then
         | grep -m1 -A3 "FOAM FATAL\|Floating point\|sigFpe\|Segmentation" \
         || tail -3 log.cellBlastFoam; } | tr '\n' ' '
     echo
+    # The per-step logs end with complete rows (flushed per row: the stop
+    # runs no destructor)
+    for f in postProcessing/fsi/0/coupling.dat \
+        postProcessing/solidProbes/0/solidProbes.dat
+    do
+        [ -f "$f" ] || continue
+        awk -v f="$f" '!/^#/ { if (!n) n = NF; if (NF != n) bad++; rows++ }
+            END { printf "%s: %d rows, %s\n", f, rows,
+                  bad ? "rows cut: logs incomplete" : "logs complete" }' "$f"
+    done
     echo "scheme=$scheme ratio=$ratio by=$by: run failed at" \
         "$(grep '^Time = ' log.cellBlastFoam | tail -1)"
     exit 2

@@ -718,7 +718,10 @@ void Foam::solidDomain::write(const scalar dt)
             os  << ' ' << ez << ' ' << (ez - probeStrain_[2*i + 1])/dt;
             probeStrain_[2*i + 1] = ez;
         }
+        // Flushed per row: a run stopped by a FatalError (MPI_Abort runs
+        // no destructor) leaves complete rows up to its last step
         os  << nl;
+        os.flush();
     }
     if (interfaceFile_.valid())
     {
@@ -736,6 +739,7 @@ void Foam::solidDomain::write(const scalar dt)
             os  << ' ' << pMax << ' ' << vmMax;
         }
         os  << nl;
+        os.flush();
     }
     if (runTime_.writeTime())
     {
