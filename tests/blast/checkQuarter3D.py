@@ -54,6 +54,20 @@ for i, c in enumerate("xyz"):
     check(f"unit-pressure force {c} = minus the projected area", fluid[i],
           exact[i], 1e-2)
 
+# load pressure (the fluid pressure on the solid's own faces): its total
+# force for a unit pressure is the solid surface's, within 1 % of the exact
+# projected areas and 0.5 % of the fluid's (two discretized surfaces)
+m = re.search(r"uniform pressure 1 Pa: total force on the solid \((\S+) (\S+) "
+              r"(\S+)\) N against the fluid's \((\S+) (\S+) (\S+)\) N", log)
+if m:
+    ps = [float(x) for x in m.groups()[:3]]
+    pf = [float(x) for x in m.groups()[3:]]
+    for i, c in enumerate("xyz"):
+        check(f"pressure load, unit-pressure force {c} = minus the projected "
+              "area", ps[i], exact[i], 1e-2)
+        check(f"pressure load against the fluid's force, {c}", ps[i], pf[i],
+              5e-3)
+
 # Arrival at the probe element (its centroid from the header)
 f = f"{case}/postProcessing/solidProbes/0/solidProbes.dat"
 zc = None

@@ -142,6 +142,7 @@ Foam::interfaceMap::stencil Foam::interfaceMap::project(const vector& x) const
             if (d < best.distance)
             {
                 best.distance = d;
+                best.face = facei;
                 best.node = {f[0], f[1], f[1], f[1]};
                 best.weight = {1 - t, t, 0, 0};
             }
@@ -190,6 +191,7 @@ Foam::interfaceMap::stencil Foam::interfaceMap::project(const vector& x) const
             if (d < best.distance)
             {
                 best.distance = d;
+                best.face = facei;
                 best.node = {f[0], f[1], f[2], f[3]};
                 best.weight = N;
             }
@@ -205,6 +207,7 @@ Foam::interfaceMap::stencil Foam::interfaceMap::project(const vector& x) const
             if (d < best.distance)
             {
                 best.distance = d;
+                best.face = facei;
                 best.node = {i0, i1, i2, i2};
                 best.weight = {w[0], w[1], w[2], 0};
             }
@@ -853,6 +856,73 @@ Foam::interfaceMap::interfaceMap
         quadStencil_ = projectAll(xs, pts, tol, "face points");
     }
 
+    load_ = dict.getOrDefault<word>("load", "projection");
+    if (load_ != "projection" && load_ != "pressure")
+    {
+        FatalIOErrorInFunction(dict)
+            << "load " << load_ << " is not valid: projection (the map's "
+            << "conservative nodal forces) or pressure (the fluid pressure "
+            << "on the solid's faces)" << exit(FatalIOError);
+    }
+    if (load_ == "pressure")
+    {
+        if (axisymmetric_)
+        {
+            FatalIOErrorInFunction(dict)
+                << "load pressure is available in 3D only" << exit(FatalIOError);
+        }
+        // Solid faces without a quadrature point take the nearest face's
+        labelList count(faces_.size(), Zero);
+        for (const stencil& st : quadStencil_) ++count[st.face];
+        vectorField c(faces_.size(), Zero);
+        forAll(faces_, s)
+        {
+            for (const label a : faces_[s]) c[s] += solidPoint(a);
+            c[s] /= faces_[s].size();
+        }
+        pressureDonor_ = identity(faces_.size());
+        label nDonated = 0;
+        forAll(faces_, s)
+        {
+            if (count[s]) continue;
+            scalar dBest = GREAT;
+            forAll(faces_, k)
+            {
+                if (count[k] && mag(c[k] - c[s]) < dBest)
+                {
+                    dBest = mag(c[k] - c[s]);
+                    pressureDonor_[s] = k;
+                }
+            }
+            ++nDonated;
+        }
+        // Total force of a uniform pressure: solid faces against fluid
+        vectorField Sf(fluidPatch.size(), Zero);
+        {
+            const pointField& lp = fluidPatch.localPoints();
+            forAll(fluidPatch.localFaces(), f)
+            {
+                Sf[f] = fluidPatch.localFaces()[f].areaNormal(lp);
+            }
+        }
+        const scalarField f1
+        (
+            nodalPressureForces(Sf, Sf, scalarField(nDofs(), Zero))
+        );
+        vector Fs(Zero);
+        forAll(nodes_, i)
+        {
+            for (label d = 0; d < 3; ++d) Fs[d] += f1[3*i + d];
+        }
+        const vector Ff = sum(Sf);
+        Info<< "FSI interface: load pressure (the fluid pressure on the "
+            << "solid's faces); " << nDonated << " solid faces without a "
+            << "fluid quadrature point take the nearest one's; uniform "
+            << "pressure 1 Pa: total force on the solid " << Fs
+            << " N against the fluid's " << Ff << " N (difference "
+            << mag(Fs - Ff)/max(mag(Ff), VSMALL) << " of it)" << endl;
+    }
+
     Info<< "FSI interface: fluid patch " << fluidPatch.name() << " ("
         << fluidPatch.size() << " faces) <-> solid face set " << setName
         << " (" << faces_.size() << " faces, " << nodes_.size()
@@ -1026,4 +1096,83 @@ Foam::scalar Foam::interfaceMap::maxGap() const
     for (const stencil& s : pointStencil_) g = max(g, s.distance);
     for (const stencil& s : quadStencil_) g = max(g, s.distance);
     return g;
+}
+
+
+Foam::scalarField Foam::interfaceMap::nodalPressureForces
+(
+    const vectorField& faceForces,
+    const vectorField& Sf,
+    const scalarField& u
+) const
+{
+    // Area-averaged fluid pressure per solid face
+    scalarField P(faces_.size(), Zero), A(faces_.size(), Zero);
+    forAll(quadStencil_, q)
+    {
+        const label f = quadFace_[q];
+        const scalar a = quadWeight_[q]*mag(Sf[f]);
+        const scalar p = (faceForces[f] & Sf[f])/max(magSqr(Sf[f]), VSMALL);
+        P[quadStencil_[q].face] += a*p;
+        A[quadStencil_[q].face] += a;
+    }
+    forAll(P, s)
+    {
+        if (A[s] > 0) P[s] /= A[s];
+    }
+    scalarField Pd(P);
+    forAll(Pd, s) Pd[s] = P[pressureDonor_[s]];
+
+    // -P_s int N_a n da on the current faces: bilinear quadrilaterals (2x2
+    // Gauss points) or linear triangles
+    const label dim = solidMesh_.dim();
+    scalarField f(nDofs(), Zero);
+    const scalar g = 1/std::sqrt(3.0);
+    const scalar xs[4] = {-1, 1, 1, -1}, es[4] = {-1, -1, 1, 1};
+    forAll(faces_, s)
+    {
+        const labelList& fc = faces_[s];
+        List<vector> x(fc.size());
+        forAll(fc, k)
+        {
+            x[k] = solidPoint(fc[k]);
+            for (label d = 0; d < dim; ++d) x[k][d] += u[dim*fc[k] + d];
+        }
+        if (fc.size() == 3)
+        {
+            const vector nda = 0.5*((x[1] - x[0]) ^ (x[2] - x[0]));
+            for (label k = 0; k < 3; ++k)
+            {
+                for (label d = 0; d < dim; ++d)
+                {
+                    f[dim*fc[k] + d] -= Pd[s]*nda[d]/3;
+                }
+            }
+            continue;
+        }
+        for (label i = 0; i < 2; ++i)
+        {
+            for (label j = 0; j < 2; ++j)
+            {
+                const scalar xi = (2*i - 1)*g, eta = (2*j - 1)*g;
+                vector dxi(Zero), deta(Zero);
+                scalar N[4];
+                for (label a = 0; a < 4; ++a)
+                {
+                    N[a] = 0.25*(1 + xs[a]*xi)*(1 + es[a]*eta);
+                    dxi += 0.25*xs[a]*(1 + es[a]*eta)*x[a];
+                    deta += 0.25*es[a]*(1 + xs[a]*xi)*x[a];
+                }
+                const vector nda = dxi ^ deta;
+                for (label a = 0; a < 4; ++a)
+                {
+                    for (label d = 0; d < dim; ++d)
+                    {
+                        f[dim*fc[a] + d] -= Pd[s]*N[a]*nda[d];
+                    }
+                }
+            }
+        }
+    }
+    return f;
 }
