@@ -59,6 +59,12 @@ for i, c in enumerate("xyz"):
 # projected areas and 0.5 % of the fluid's (two discretized surfaces)
 m = re.search(r"uniform pressure 1 Pa: total force on the solid \((\S+) (\S+) "
               r"(\S+)\) N against the fluid's \((\S+) (\S+) (\S+)\) N", log)
+pressureLoad = re.search(r"^\s*load\s+pressure\s*;",
+                         open(f"{case}/constant/fsiProperties").read(), re.M)
+if pressureLoad and not m:
+    print("FAIL load pressure is set, but the log has no unit-pressure "
+          "check of it")
+    ok = False
 if m:
     ps = [float(x) for x in m.groups()[:3]]
     pf = [float(x) for x in m.groups()[3:]]

@@ -2,6 +2,7 @@
 #include "mathematicalConstants.H"
 #include "unitConversion.H"
 #include "SubField.H"
+#include "Shape.H"
 
 #include <map>
 
@@ -1123,12 +1124,11 @@ Foam::scalarField Foam::interfaceMap::nodalPressureForces
     scalarField Pd(P);
     forAll(Pd, s) Pd[s] = P[pressureDonor_[s]];
 
-    // -P_s int N_a n da on the current faces: bilinear quadrilaterals (2x2
-    // Gauss points) or linear triangles
+    // -P_s int N_a n da on the current faces, with the solid's own face
+    // rule (as solid::PressureLoad)
     const label dim = solidMesh_.dim();
+    const solid::ShapeRule& rule = solid::faceRule(solidMesh_.type);
     scalarField f(nDofs(), Zero);
-    const scalar g = 1/std::sqrt(3.0);
-    const scalar xs[4] = {-1, 1, 1, -1}, es[4] = {-1, -1, 1, 1};
     forAll(faces_, s)
     {
         const labelList& fc = faces_[s];
@@ -1138,38 +1138,20 @@ Foam::scalarField Foam::interfaceMap::nodalPressureForces
             x[k] = solidPoint(fc[k]);
             for (label d = 0; d < dim; ++d) x[k][d] += u[dim*fc[k] + d];
         }
-        if (fc.size() == 3)
+        for (label q = 0; q < rule.nqp(); ++q)
         {
-            const vector nda = 0.5*((x[1] - x[0]) ^ (x[2] - x[0]));
-            for (label k = 0; k < 3; ++k)
+            vector dxi(Zero), deta(Zero);
+            forAll(fc, a)
+            {
+                dxi += rule.dNdxi[q](a, 0)*x[a];
+                deta += rule.dNdxi[q](a, 1)*x[a];
+            }
+            const vector nda = rule.w[q]*(dxi ^ deta);
+            forAll(fc, a)
             {
                 for (label d = 0; d < dim; ++d)
                 {
-                    f[dim*fc[k] + d] -= Pd[s]*nda[d]/3;
-                }
-            }
-            continue;
-        }
-        for (label i = 0; i < 2; ++i)
-        {
-            for (label j = 0; j < 2; ++j)
-            {
-                const scalar xi = (2*i - 1)*g, eta = (2*j - 1)*g;
-                vector dxi(Zero), deta(Zero);
-                scalar N[4];
-                for (label a = 0; a < 4; ++a)
-                {
-                    N[a] = 0.25*(1 + xs[a]*xi)*(1 + es[a]*eta);
-                    dxi += 0.25*xs[a]*(1 + es[a]*eta)*x[a];
-                    deta += 0.25*es[a]*(1 + xs[a]*xi)*x[a];
-                }
-                const vector nda = dxi ^ deta;
-                for (label a = 0; a < 4; ++a)
-                {
-                    for (label d = 0; d < dim; ++d)
-                    {
-                        f[dim*fc[a] + d] -= Pd[s]*N[a]*nda[d];
-                    }
+                    f[dim*fc[a] + d] -= Pd[s]*rule.N[q](a)*nda[d];
                 }
             }
         }
