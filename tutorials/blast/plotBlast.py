@@ -16,6 +16,7 @@ Several cases (pulse or mesh study): the Fig. 10 curves on one figure
 <prefix>fig10.png, the interface maxima against time of every case on
 <prefix>interfaceMaxima.png and a summary table on stdout.
 """
+import glob
 import sys
 import os
 import numpy as np
@@ -47,18 +48,42 @@ def load(f):
     return np.array([r for r in rows if len(r) == n], dtype=float)
 
 
+def series(case, log):
+    """The rows of postProcessing/<dir>/<start>/<file> (log "dir/file")
+    over every start of the run (a restart writes its rows under its start
+    time): each start's rows up to the next start, earliest first"""
+    d, name = log.split("/")
+    segs = sorted((float(os.path.basename(os.path.dirname(p))), p) for p in
+                  glob.glob(f"{case}/postProcessing/{d}/*/{name}"))
+    if not segs:
+        sys.exit(f"plotBlast.py: no {case}/postProcessing/{d}/*/{name}")
+    parts = []
+    for k, (t0, p) in enumerate(segs):
+        a = load(p)
+        if k + 1 < len(segs):
+            a = a[a[:, 0] <= segs[k + 1][0]*(1 + 1e-12)]
+        parts.append(a)
+    return np.vstack(parts)
+
+
+def logHeader(case, log):
+    """the header lines of the run's first start of a log"""
+    d, name = log.split("/")
+    first = min(glob.glob(f"{case}/postProcessing/{d}/*/{name}"),
+                key=lambda p: float(os.path.basename(os.path.dirname(p))))
+    return [line for line in open(first) if line.startswith("#")]
+
+
 def probes(case):
     """time [s] and, for probe 0, p, vM, strainZ, strainRateZ"""
-    f = f"{case}/postProcessing/solidProbes/0/solidProbes.dat"
-    d = load(f)
+    d = series(case, "solidProbes/solidProbes.dat")
     nProbe = (d.shape[1] - 1)//7
     base = 1 + 5*nProbe
     return d[:, 0], d[:, 1], d[:, 2], d[:, base], d[:, base + 1]
 
 
 def coupling(case):
-    d = load(f"{case}/postProcessing/fsi/0/coupling.dat")
-    return d
+    return series(case, "fsi/coupling.dat")
 
 
 def wallTime(case):
@@ -110,10 +135,10 @@ def fig10(cases, labels, out):
 
 
 def interfaceMaxima(case, out):
-    f = f"{case}/postProcessing/solidInterfaces/0/interfaceMaxima.dat"
-    d = load(f)
+    d = series(case, "solidInterfaces/interfaceMaxima.dat")
     names = [w.split(":")[1].split("[")[0] for w in
-             open(f).readlines()[1].split()[2:] if w.startswith("pMax")]
+             logHeader(case, "solidInterfaces/interfaceMaxima.dat")[1]
+             .split()[2:] if w.startswith("pMax")]
     fig, ax = plt.subplots(1, 2, figsize=(10, 4))
     for k, n in enumerate(names):
         ax[0].plot(d[:, 0]*1e9, d[:, 1 + 2*k]/1e6, label=n)
@@ -139,10 +164,10 @@ def interfaceMaximaCases(cases, labels, out):
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.5))
     styles = ["-", "--", ":", "-."]
     for c, (case, lab) in enumerate(zip(cases, labels)):
-        f = f"{case}/postProcessing/solidInterfaces/0/interfaceMaxima.dat"
-        d = load(f)
+        d = series(case, "solidInterfaces/interfaceMaxima.dat")
         names = [w.split(":")[1].split("[")[0] for w in
-                 open(f).readlines()[1].split()[2:] if w.startswith("pMax")]
+                 logHeader(case, "solidInterfaces/interfaceMaxima.dat")[1]
+                 .split()[2:] if w.startswith("pMax")]
         for k, n in enumerate(names):
             kw = dict(color=f"C{c}", ls=styles[k % 4], label=f"{lab} {n}")
             ax[0].plot(d[:, 0]*1e9, d[:, 1 + 2*k]/1e6, **kw)
