@@ -43,3 +43,11 @@ PROJECT_DIR=$here/../.. "$case/Allrun" -box 20e-6 -h 0.6e-6 -far 2e-6 \
 ls "$case"/VTK/*.vtm > /dev/null
 ls "$case"/VTK/solid > /dev/null
 /usr/bin/python3 "$here/checkQuarter3D.py" "$case" 20e-6 "$mode"
+# The tutorial's pictures (Fig. 10 curves, interface maxima, the cell with
+# a quarter cut away at the write nearest 65.5 ns)
+/usr/bin/python3 "$work/plotBlast.py" "$case" > "$work.log" 2>&1 \
+    || { cat "$work.log"; exit 1; }
+for png in fig10 interfaceMaxima snapshot65.5ns
+do
+    [ -s "$case/$png.png" ] || { echo "FAIL: no $png.png"; exit 1; }
+done

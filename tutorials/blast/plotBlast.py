@@ -185,6 +185,95 @@ def interfaceMaximaCases(cases, labels, out):
     plt.close(fig)
 
 
+# hex8 faces (gmsh/VTK node order), outward
+HEX_FACES = ((0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5),
+             (2, 3, 7, 6), (3, 0, 4, 7))
+
+
+def snapshot3D(tk, X, conn, p, vm, out):
+    """The 3D cell at one time with a quarter cut away (paper Figs. 7-8):
+    the solid's element pressure and von Mises on its outer surface and
+    on the two cut planes x = 0 and y = 0. A quarter case (x, y >= 0,
+    symmetry planes) is mirrored into the other three quarters and its own
+    quarter is the one cut away, so that the cut faces are its symmetry
+    faces; a whole cell shows the elements outside x, y > 0."""
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+    L = np.ptp(X, axis=0).max()
+    tol = 1e-6*L
+    quarter = X[:, 0].min() > -tol and X[:, 1].min() > -tol
+    cent = X[conn].mean(axis=1)
+    keep = np.ones(len(conn), bool) if quarter else \
+        ~((cent[:, 0] > 0) & (cent[:, 1] > 0))
+    owner = {}          # face (sorted nodes) -> [elements sharing it, one]
+    for e in np.nonzero(keep)[0]:
+        for fn in HEX_FACES:
+            o = owner.setdefault(tuple(sorted(conn[e, list(fn)])), [0, e, fn])
+            o[0] += 1
+    faces = {"outer": [], "x0": [], "y0": []}
+    for n, e, fn in owner.values():
+        if n != 1:
+            continue                        # shared by two: inside
+        q = X[conn[e, list(fn)]]
+        if np.all(np.abs(q[:, 2]) < tol):
+            continue                        # on the substrate: not seen
+        if np.all(np.abs(q[:, 0]) < tol):
+            faces["x0"].append((q, e))
+        elif np.all(np.abs(q[:, 1]) < tol):
+            faces["y0"].append((q, e))
+        else:
+            faces["outer"].append((q, e))
+    polys, elems = [], []
+    if quarter:
+        # outer surface of the three mirrored quarters; the cut faces are
+        # the quarter's own symmetry faces (x = 0 for y > 0 belongs to the
+        # (-x, y) copy, y = 0 for x > 0 to the (x, -y) copy: the same
+        # points)
+        for sx, sy in ((-1, 1), (1, -1), (-1, -1)):
+            for q, e in faces["outer"]:
+                polys.append(q*np.array([sx, sy, 1]))
+                elems.append(e)
+        for q, e in faces["x0"] + faces["y0"]:
+            polys.append(q)
+            elems.append(e)
+    else:
+        # the whole cell: faces exposed by the cut lie on x = 0 (y > 0) or
+        # y = 0 (x > 0); boundary faces of the kept set on the other halves
+        # of those planes do not exist (their neighbours are kept)
+        for q, e in faces["outer"] + faces["x0"] + faces["y0"]:
+            polys.append(q)
+            elems.append(e)
+    polys = np.array(polys)*1e6
+    elems = np.array(elems)
+    fig = plt.figure(figsize=(13, 6.4))
+    R = np.abs(X[:, :2]).max()*1e6
+    H = X[:, 2].max()*1e6
+    for k, (v, lab, cmap) in enumerate(((p/1e6, "pressure [MPa]", "viridis"),
+                                        (vm, "von Mises [Pa]", "magma"))):
+        a = fig.add_subplot(1, 2, k + 1, projection="3d")
+        pc = Poly3DCollection(polys, array=v[elems], cmap=cmap,
+                              edgecolors="k", linewidths=0.05)
+        a.add_collection3d(pc)
+        a.set_xlim(-R, R)
+        a.set_ylim(-R, R)
+        a.set_zlim(0, H)
+        a.set_box_aspect((2*R, 2*R, H))
+        a.view_init(elev=28, azim=40)
+        a.set_xlabel("x [um]")
+        a.set_ylabel("y [um]")
+        a.set_zlabel("z [um]")
+        fig.colorbar(pc, ax=a, label=lab, shrink=0.6, pad=0.02,
+                     orientation="horizontal")
+    fig.suptitle(f"Solid at t = {tk*1e9:.2f} ns, a quarter cut away (cut "
+                 "planes x = 0 and y = 0 through nucleus, cytoplasm and the "
+                 "200 nm membrane)" + ("; the computed quarter mirrored "
+                                       "about them" if quarter else ""),
+                 fontsize=10)
+    fig.tight_layout()
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+    return tk
+
+
 def snapshot(case, out, time=65.5e-9):
     import h5py
     from matplotlib.collections import PolyCollection
@@ -192,10 +281,13 @@ def snapshot(case, out, time=65.5e-9):
         steps = f["steps"]
         k = min(steps, key=lambda s: abs(steps[s].attrs["time"] - time))
         tk = steps[k].attrs["time"]
-        X = f["mesh/coordinates"][:, :2] + steps[k]["displacement"][:, :2]
         conn = f["mesh/connectivity"][:]
         p = steps[k]["pressure"][:]
         vm = steps[k]["vonMises"][:]
+        if conn.shape[1] == 8:
+            X3 = f["mesh/coordinates"][:] + steps[k]["displacement"][:]
+            return snapshot3D(tk, X3, conn, p, vm, out)
+        X = f["mesh/coordinates"][:, :2] + steps[k]["displacement"][:, :2]
     polys = X[conn]*1e6
     mirror = polys*np.array([-1, 1])
     fig, ax = plt.subplots(1, 2, figsize=(12, 4))
