@@ -6,8 +6,9 @@
 # (src/fsi/globalInterfacePatch.H).
 #   1. The axisymmetric preview on the short column (shortColumn.sh, to
 #      16 ns, a write every 25 steps: 9 of its 225 with maxCo 0.9),
-#      decomposed by hand at y = 4 um so that the processor boundary cuts the cell's interface (both ranks
-#      hold interface faces and share interface points): 2 ranks against
+#      decomposed by hand at y = 4 um so that the processor boundary
+#      cuts the cell's interface (both ranks hold interface faces and
+#      share interface points): 2 ranks against
 #      serial, every step of the coupling log (time, dt, iterations exact),
 #      the solid probes, the interface maxima and every dataset of
 #      solid/solid.h5 within 1e-9 of each column's largest magnitude
