@@ -6,7 +6,8 @@ d = np.genfromtxt(case + '/postProcessing/solidProbes/0/solidProbes.dat', invali
 d = d[d[:, 0] <= T]
 t = d[:, 0]
 p, vm = d[:, 1], d[:, 2]
-sz, srz = d[:, 16], d[:, 17]
+base = 1 + 5*((d.shape[1] - 1)//7)    # strain_z, rate of probe 0
+sz, srz = d[:, base], d[:, base + 1]
 i, j = np.argmax(p), np.argmax(vm)
 print('%s: to %.2f ns; probe p max %.2f MPa at %.2f ns, vM max %.2f Pa at %.2f ns, '
       'strain_z min %.4f, strain rate min/max %.3g / %.3g 1/s, dT max %.3f K' % (
