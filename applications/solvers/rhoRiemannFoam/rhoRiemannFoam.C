@@ -10,39 +10,27 @@ Description
     equation of state (Mie-Grueneisen water, stiffened gas, ideal gas:
     rhoEThermo), for shocks and blast waves in liquids.
 
-    Conservative variables (rho, rho U, rho E); Godunov-type fluxes from an
-    approximate Riemann solver (riemannFlux: HLLC, HLL, rusanov) on MUSCL
-    face states (limiter per variable in fvSchemes, reconstruct(...));
-    strong-stability-preserving Runge-Kutta in time (Shu & Osher, J. Comput.
-    Phys. 77, 1988: Euler, SSPRK2, SSPRK3); time step from maxCo with the
-    fastest signal speed |U.n| + c. Optional Newtonian viscous stress.
+    The fluid is a conservativeFluid (src/fluid): conservative variables
+    (rho, rho U, rho E), Godunov-type fluxes from an approximate Riemann
+    solver (riemannFlux: HLLC, HLL, rusanov) on MUSCL face states,
+    strong-stability-preserving Runge-Kutta in time (Euler, SSPRK2,
+    SSPRK3), optional Newtonian viscous stress. Time step from maxCo with
+    the fastest signal speed |U.n| + c.
 
-    Every written time holds the conservative state (rho, rhoU, rhoE): a run
-    continued from it is exact. Writes are guarded (src/foamTools/
-    writeGuard.H): a time directory whose write was interrupted is moved
-    aside at the next start from latestTime. Every time step checks that each cell state
-    lies inside the domain of the
-    equation of state; if not, the run stops naming the cell, its position
-    and the time, and the last written time directory is kept.
+    Writes are guarded (src/foamTools/writeGuard.H): a time directory whose
+    write was interrupted is moved aside at the next start from latestTime.
+    Every time step checks that each cell state lies inside the domain of
+    the equation of state; if not, the run stops naming the cell, its
+    position and the time, and the last written time directory is kept.
 
 Usage
-    In system/fvSolution:
-    \verbatim
-        riemann
-        {
-            riemannSolver   HLLC;       // HLLC | HLL | rusanov
-            timeScheme      SSPRK3;     // Euler | SSPRK2 | SSPRK3
-            viscous         false;      // add the Newtonian viscous stress
-            mu              1e-3;       // dynamic viscosity [Pa s], if viscous
-        }
-    \endverbatim
+    system/fvSolution riemann{} (see src/fluid/conservativeFluid), 0/p,
+    0/T, 0/U, constant/thermophysicalProperties (docs/userGuide/).
 
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
-#include "rhoEThermo.H"
-#include "riemannFlux.H"
-#include "rungeKuttaScheme.H"
+#include "conservativeFluid.H"
 #include "writeGuard.H"
 #include "inputChecks.H"
 
@@ -62,7 +50,9 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
     foamTools::checkCellVolumes(mesh);
+
     #include "createFields.H"
+
     #include "createTimeControls.H"
     foamTools::checkTimeControls(runTime, adjustTimeStep, maxCo, maxDeltaT);
 
@@ -73,33 +63,18 @@ int main(int argc, char *argv[])
         #include "readTimeControls.H"
         foamTools::checkTimeControls(runTime, adjustTimeStep, maxCo, maxDeltaT);
 
-        flux->fluxes(thermo, U, phi, phiU, phiE, amaxSf);
+        fluid.fluxes();
 
-        #include "courantNo.H"
+        const scalar CoNum = fluid.courantNumber(runTime.deltaTValue());
         #include "setDeltaT.H"
 
         ++runTime;
 
         Info<< "Time = " << runTime.timeName() << " s" << nl << endl;
 
-        const scalarField rhoOld(rho.primitiveField());
-        const vectorField rhoUOld(rhoU.primitiveField());
-        const scalarField rhoEOld(rhoE.primitiveField());
-
-        for (label stage = 0; stage < rk.nStages(); ++stage)
-        {
-            if (stage > 0)
-            {
-                // An invalid stage state stops here with the cell named
-                // (not as a floating-point exception in the flux)
-                thermo.checkStates();
-                flux->fluxes(thermo, U, phi, phiU, phiE, amaxSf);
-            }
-
-            #include "conservativeStage.H"
-        }
-
-        thermo.checkStates();
+        fluid.storeOldState();
+        fluid.step(runTime.deltaTValue());
+        fluid.thermo().checkStates();
 
         foamTools::writeGuard::write(runTime);
 
@@ -110,3 +85,6 @@ int main(int argc, char *argv[])
 
     return 0;
 }
+
+
+// ************************************************************************* //

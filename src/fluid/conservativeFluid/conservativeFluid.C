@@ -1,0 +1,347 @@
+#include "conservativeFluid.H"
+#include "fvc.H"
+#include "wedgePolyPatch.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
+:
+    mesh_(mesh),
+    thermo_(rhoEThermo::New(mesh)),
+    U_
+    (
+        IOobject
+        (
+            "U",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh
+    ),
+    rhoU_
+    (
+        IOobject
+        (
+            "rhoU",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
+        thermo_->rho()*U_
+    ),
+    rhoE_
+    (
+        IOobject
+        (
+            "rhoE",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
+        thermo_->rho()*(thermo_->e() + 0.5*magSqr(U_))
+    ),
+    flux_(riemannFlux::New(mesh, mesh.solutionDict().subDict("riemann"))),
+    rk_(mesh.solutionDict().subDict("riemann")),
+    viscous_
+    (
+        mesh.solutionDict().subDict("riemann")
+       .lookupOrDefault<Switch>("viscous", false)
+    ),
+    mu_("mu", dimDynamicViscosity, Zero),
+    phi_
+    (
+        IOobject("phi", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimMass/dimTime, Zero)
+    ),
+    phiU_
+    (
+        IOobject("phiU", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedVector(dimForce, Zero)
+    ),
+    phiE_
+    (
+        IOobject("phiE", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimPower, Zero)
+    ),
+    amaxSf_
+    (
+        IOobject("amaxSf", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimVolume/dimTime, Zero)
+    ),
+    swirlDirection_(Zero)
+{
+    // The conservative state of a written time: a restart continues
+    // exactly (bitwise with writePrecision 17 or binary)
+    const word& t = mesh.time().timeName();
+    const bool conservativeRestart =
+        IOobject("rhoU", t, mesh).typeHeaderOk<volVectorField>(true)
+     && IOobject("rhoE", t, mesh).typeHeaderOk<volScalarField>(true)
+     && IOobject("rho", t, mesh).typeHeaderOk<volScalarField>(true);
+
+    if (conservativeRestart)
+    {
+        Info<< "Restarting from the conservative state rho, rhoU, rhoE of"
+            << " time " << t << " s" << nl << endl;
+
+        const volScalarField rhoWritten
+        (
+            IOobject
+            (
+                "rho",
+                t,
+                mesh,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            mesh
+        );
+        thermo_->rho().primitiveFieldRef() = rhoWritten.primitiveField();
+        correctPrimitives();
+    }
+    thermo_->checkStates();
+
+    if (viscous_)
+    {
+        const dictionary& riemannDict =
+            mesh.solutionDict().subDict("riemann");
+        mu_.read(riemannDict);
+        if (mu_.value() < 0)
+        {
+            FatalIOErrorInFunction(riemannDict)
+                << "mu = " << mu_.value() << " Pa s is outside the valid"
+                << " range [0, inf)" << exit(FatalIOError);
+        }
+        Info<< "Newtonian viscous stress with mu = " << mu_.value()
+            << " Pa s" << nl << endl;
+    }
+
+    forAll(mesh.boundaryMesh(), patchi)
+    {
+        if (isA<wedgePolyPatch>(mesh.boundaryMesh()[patchi]))
+        {
+            swirlDirection_ =
+                refCast<const wedgePolyPatch>(mesh.boundaryMesh()[patchi])
+               .centreNormal();
+            break;
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::conservativeFluid::addViscousTerms
+(
+    vectorField& divPhiU,
+    scalarField& divPhiE
+) const
+{
+    const volTensorField tauMC("tauMC", mu_*dev2(T(fvc::grad(U_))));
+
+    divPhiU -=
+        fvc::laplacian(mu_, U_)().primitiveField()
+      + fvc::div(tauMC)().primitiveField();
+
+    const surfaceScalarField sigmaDotU
+    (
+        (
+            mu_*mesh_.magSf()*fvc::snGrad(U_)
+          + fvc::dotInterpolate(mesh_.Sf(), tauMC)
+        )
+      & fvc::interpolate(U_)
+    );
+
+    divPhiE -= fvc::div(sigmaDotU)().primitiveField();
+}
+
+
+void Foam::conservativeFluid::divergences
+(
+    scalarField& divPhi,
+    vectorField& divPhiU,
+    scalarField& divPhiE
+) const
+{
+    // surfaceIntegrate accumulates into its first argument
+    divPhi = Zero;
+    divPhiU = Zero;
+    divPhiE = Zero;
+    fvc::surfaceIntegrate(divPhi, phi_);
+    fvc::surfaceIntegrate(divPhiU, phiU_);
+    fvc::surfaceIntegrate(divPhiE, phiE_);
+
+    if (viscous_)
+    {
+        addViscousTerms(divPhiU, divPhiE);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::conservativeFluid::fluxes()
+{
+    flux_->fluxes(thermo_(), U_, phi_, phiU_, phiE_, amaxSf_);
+}
+
+
+Foam::scalar Foam::conservativeFluid::courantNumber(const scalar deltaT) const
+{
+    tmp<surfaceScalarField> tspeedSf(amaxSf_);
+    if (viscous_)
+    {
+        // (8/3) nu/d: the explicit diffusion limit of longitudinal waves
+        // (diffusivity 4/3 nu) as a speed, d the distance of the centres
+        tspeedSf =
+            amaxSf_
+          + (8.0/3.0)*mu_/fvc::interpolate(thermo_->rho())
+           *mesh_.magSf()*mesh_.deltaCoeffs();
+    }
+    const scalarField sumSpeedSf
+    (
+        fvc::surfaceSum(tspeedSf())().primitiveField()
+    );
+    const scalar CoNum = 0.5*gMax(sumSpeedSf/mesh_.V().field())*deltaT;
+
+    Info<< "Courant number max: " << CoNum << endl;
+
+    return CoNum;
+}
+
+
+void Foam::conservativeFluid::storeOldState()
+{
+    rho0_ = thermo_->rho().primitiveField();
+    rhoU0_ = rhoU_.primitiveField();
+    rhoE0_ = rhoE_.primitiveField();
+    V0_ = mesh_.V().field();
+}
+
+
+void Foam::conservativeFluid::restoreOldState()
+{
+    thermo_->rho().primitiveFieldRef() = rho0_;
+    rhoU_.primitiveFieldRef() = rhoU0_;
+    rhoE_.primitiveFieldRef() = rhoE0_;
+    correctPrimitives();
+}
+
+
+void Foam::conservativeFluid::correctPrimitives()
+{
+    const scalarField& rho = thermo_->rho().primitiveField();
+
+    U_.primitiveFieldRef() = rhoU_.primitiveField()/rho;
+    thermo_->e().primitiveFieldRef() =
+        rhoE_.primitiveField()/rho - 0.5*magSqr(U_.primitiveField());
+
+    U_.correctBoundaryConditions();
+    thermo_->correct();
+}
+
+
+void Foam::conservativeFluid::step(const scalar dt)
+{
+    scalarField divPhi(mesh_.nCells());
+    vectorField divPhiU(mesh_.nCells());
+    scalarField divPhiE(mesh_.nCells());
+
+    volScalarField& rho = thermo_->rho();
+
+    for (label stage = 0; stage < rk_.nStages(); ++stage)
+    {
+        if (stage > 0)
+        {
+            // An invalid stage state stops here with the cell named (not
+            // as a floating-point exception in the flux)
+            thermo_->checkStates();
+            fluxes();
+        }
+
+        const scalar a = rk_.a(stage);
+
+        divergences(divPhi, divPhiU, divPhiE);
+
+        rho.primitiveFieldRef() =
+            a*rho0_ + (1 - a)*(rho.primitiveField() - dt*divPhi);
+        rhoU_.primitiveFieldRef() =
+            a*rhoU0_ + (1 - a)*(rhoU_.primitiveField() - dt*divPhiU);
+        rhoE_.primitiveFieldRef() =
+            a*rhoE0_ + (1 - a)*(rhoE_.primitiveField() - dt*divPhiE);
+
+        correctPrimitives();
+    }
+}
+
+
+Foam::scalar Foam::conservativeFluid::aleStep
+(
+    const scalar dt,
+    const string& hint
+)
+{
+    // Swept volume of each cell over the step [m^3]
+    scalarField dV(mesh_.nCells(), Zero);
+    fvc::surfaceIntegrate(dV, mesh_.phi());
+    dV *= dt*mesh_.V().field();
+
+    scalarField Vk(V0_);
+
+    scalarField divPhi(mesh_.nCells());
+    vectorField divPhiU(mesh_.nCells());
+    scalarField divPhiE(mesh_.nCells());
+
+    volScalarField& rho = thermo_->rho();
+
+    for (label stage = 0; stage < rk_.nStages(); ++stage)
+    {
+        const scalar a = rk_.a(stage);
+
+        fluxes();
+        divergences(divPhi, divPhiU, divPhiE);
+
+        const scalarField& V = mesh_.V().field();
+        const scalarField Vnew(a*V0_ + (1 - a)*(Vk + dV));
+
+        rho.primitiveFieldRef() =
+            (a*V0_*rho0_ + (1 - a)*(Vk*rho.primitiveField() - dt*V*divPhi))
+           /Vnew;
+        rhoU_.primitiveFieldRef() =
+            (
+                a*V0_*rhoU0_
+              + (1 - a)*(Vk*rhoU_.primitiveField() - dt*V*divPhiU)
+            )/Vnew;
+        rhoE_.primitiveFieldRef() =
+            (
+                a*V0_*rhoE0_
+              + (1 - a)*(Vk*rhoE_.primitiveField() - dt*V*divPhiE)
+            )/Vnew;
+        Vk = Vnew;
+        if (mag(swirlDirection_) > 0)
+        {
+            rhoU_.primitiveFieldRef() -=
+                (rhoU_.primitiveField() & swirlDirection_)*swirlDirection_;
+        }
+
+        correctPrimitives();
+
+        // An invalid stage state (a diverging coupling first shows here)
+        // stops with the cell and the time named, before a flux turns it
+        // into a floating-point exception
+        thermo_->checkStates(hint);
+    }
+
+    return gMax(mag(Vk - mesh_.V().field())/mesh_.V().field());
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,583 @@
+#include "fluidSolidInteraction.H"
+#include "pointIOField.H"
+#include "IFstream.H"
+#include "clockTime.H"
+#include "wedgeFvPatch.H"
+#include "Checkpoint.H"
+#include "SolidError.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The index of interface{} fluidPatch in the fluid mesh
+Foam::label interfacePatchIndex
+(
+    const Foam::fvMesh& mesh,
+    const Foam::dictionary& interfaceDict
+)
+{
+    using namespace Foam;
+
+    const word name(interfaceDict.get<word>("fluidPatch"));
+    const label patchi = mesh.boundaryMesh().findPatchID(name);
+    if (patchi < 0)
+    {
+        FatalIOErrorInFunction(interfaceDict)
+            << "fluidPatch " << name << " is not a patch of the fluid"
+            << " mesh; patches: " << mesh.boundaryMesh().names()
+            << exit(FatalIOError);
+    }
+    return patchi;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::dynamicFvMesh> Foam::fluidSolidInteraction::newMesh
+(
+    const argList& args,
+    Time& runTime
+)
+{
+    // The interface map pairs the reference points with the solid's, and
+    // OpenFOAM computes the wedge patch transformations once, from the mesh
+    // it starts with: build the mesh at time 0 (the points of
+    // constant/polyMesh), go back to the start time; the constructor then
+    // moves it to that time's points, so that a restart sees the geometry
+    // of the run it continues, bit for bit
+    const instant startInstant(runTime.value(), runTime.timeName());
+    const label startIndex = runTime.timeIndex();
+    if (runTime.value() > 0)
+    {
+        runTime.setTime(instant(0, "0"), 0);
+    }
+
+    Info<< "Create mesh (reference points)" << nl << endl;
+
+    autoPtr<dynamicFvMesh> meshPtr(dynamicFvMesh::New(args, runTime));
+
+    if (startInstant.value() > 0)
+    {
+        runTime.setTime(startInstant, startIndex);
+
+        // The exact start time: OpenFOAM takes it from the directory name
+        // (1.2e-08), the run it continues was at the accumulated value that
+        // uniform/time keeps in full ("value")
+        IFstream is(runTime.timePath()/"uniform"/"time");
+        const dictionary timeDict(is);
+        runTime.setTime(timeDict.get<scalar>("value"), startIndex);
+    }
+
+    return meshPtr;
+}
+
+
+void Foam::fluidSolidInteraction::truncateSolidResults(const Time& runTime)
+{
+    // solid/solid.h5 may hold steps after this time's (h5Step of
+    // uniform/solidState), written by the run that stopped: a write
+    // interrupted after its solid step, whose time the write guard moved
+    // aside, or later times. They are removed (atomically, a copy replaces
+    // the file) so that the steps continue from this time's, as in an
+    // uninterrupted run. A missing state is reported by solidDomain::couple
+    const fileName stateFile(runTime.timePath()/"uniform"/"solidState");
+    const fileName h5(runTime.globalPath()/"solid"/"solid.h5");
+    if (!Pstream::master() || !isFile(stateFile) || !isFile(h5))
+    {
+        return;
+    }
+
+    IFstream is(stateFile);
+    const label k = dictionary(is).get<label>("h5Step");
+    const clockTime timer;
+    label removed = 0;
+    try
+    {
+        removed = solid::truncateSteps(h5, k + 1);
+    }
+    catch (const solid::SolidError& err)
+    {
+        FatalErrorInFunction
+            << "Restart from t = " << runTime.timeName() << " s: cannot"
+            << " remove the steps after " << k << " from " << h5 << ": "
+            << err.what() << exit(FatalError);
+    }
+    if (removed)
+    {
+        Info<< "Solid: removed " << removed << " steps after step " << k
+            << " from " << h5 << " (written after this time by the run"
+            << " that stopped; a copy of "
+            << word::printf("%.1f", fileSize(h5)/1048576.0) << " MB in "
+            << word::printf("%.3f", timer.elapsedTime()) << " s)" << endl;
+    }
+}
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fluidSolidInteraction::createMotion
+(
+    const dictionary& interfaceDict
+)
+{
+    if (interfaceDict.found("motionDistance"))
+    {
+        motion_.reset
+        (
+            new interfaceMotion
+            (
+                mesh_, patchi_, fsiPatch_, interfaceDict,
+                interfaceDict.getOrDefault<vector>("axisOrigin", Zero),
+                map_->axisymmetric()
+              ? interfaceDict.get<vector>("axisDirection") : vector(Zero)
+            )
+        );
+        return;
+    }
+
+    if (!mesh_.foundObject<pointVectorField>("pointDisplacement"))
+    {
+        FatalErrorInFunction
+            << "The fluid mesh has no pointDisplacement field: use"
+            << " dynamicMotionSolverFvMesh with a displacement motion solver"
+            << " (e.g. displacementLaplacian) in constant/dynamicMeshDict,"
+            << " or interface{} motionDistance in fsiProperties"
+            << exit(FatalError);
+    }
+    pointDisplacement_ =
+        &mesh_.lookupObjectRef<pointVectorField>("pointDisplacement");
+    if (!pointDisplacement_->boundaryField()[patchi_].fixesValue())
+    {
+        FatalErrorInFunction
+            << "pointDisplacement on the FSI patch "
+            << mesh_.boundaryMesh()[patchi_].name()
+            << " must be a fixedValue type (set by the coupling)"
+            << exit(FatalError);
+    }
+}
+
+
+void Foam::fluidSolidInteraction::readState()
+{
+    const Time& runTime = mesh_.time();
+    const fileName stateFile(runTime.timePath()/"uniform"/"fsiState");
+    if (!isFile(stateFile))
+    {
+        FatalErrorInFunction
+            << "Restart from t = " << runTime.timeName() << " s: no "
+            << stateFile << " (the run stopped while writing this time?"
+            << " Start from the previous write time)" << exit(FatalError);
+    }
+    IFstream is(stateFile);
+    const dictionary d(is);
+    const scalarField d0(d.get<scalarField>("fluidInterfaceDisplacement"));
+    if (d0.size() != fluidInterfaceDisplacement_.size())
+    {
+        FatalIOErrorInFunction(d)
+            << "fluidInterfaceDisplacement has " << d0.size()
+            << " values, the interface " << fluidInterfaceDisplacement_.size()
+            << exit(FatalIOError);
+    }
+    fluidInterfaceDisplacement_ = d0;
+    coupling_->readState(d);
+    Info<< "FSI: restarted the interface displacement and the coupling"
+        << " statistics from " << stateFile << endl;
+}
+
+
+void Foam::fluidSolidInteraction::checkMap() const
+{
+    // A uniform unit pressure on the fluid patch (force Sf on the solid):
+    // the solid nodal forces must add up to the fluid force (full ring in
+    // r-z; tests/blast/mapCheck.sh)
+    const vectorField Sf
+    (
+        fsiPatch_.faceValues(mesh_.Sf().boundaryField()[patchi_])
+    );
+    const scalarField f(map_->nodalForces(Sf));
+    vector sumF(Zero);
+    const label dim = solid_->mesh().dim();
+    forAll(f, i) sumF[i % dim] += f[i];
+    const vector fluidF(map_->ringForce(Sf));
+    Info<< "FSI map check: unit pressure, fluid force "
+        << (map_->axisymmetric() ? "(full ring, (r z 0)) " : "")
+        << fluidF << " N, solid nodal force " << sumF
+        << " N, relative difference "
+        << mag(fluidF - sumF)/max(mag(fluidF), VSMALL) << endl;
+}
+
+
+void Foam::fluidSolidInteraction::openLog()
+{
+    if (!Pstream::master())
+    {
+        return;
+    }
+    const Time& runTime = mesh_.time();
+    const fileName dir
+    (
+        runTime.globalPath()/"postProcessing"/"fsi"/runTime.timeName()
+    );
+    mkDir(dir);
+    couplingLog_.reset(new OFstream(dir/"coupling.dat"));
+    couplingLog_().precision(10);
+    couplingLog_()
+        << "# FSI coupling (" << coupling_->type() << ")" << nl
+        << "# time [s]  dt [s]  iterations  residual [-]  converged"
+        << "  interfaceForce (x y z) [N]  interfaceVelocityMax [m/s]"
+        << "  gclError [-]" << nl;
+}
+
+
+void Foam::fluidSolidInteraction::moveWall(const scalarField& d)
+{
+    const vectorField wallDisplacement(map_->pointValues(d));
+    if (motion_.valid())
+    {
+        mesh_.movePoints(motion_->newPoints(wallDisplacement));
+    }
+    else
+    {
+        pointDisplacement_->boundaryFieldRef()[patchi_] ==
+            fsiPatch_.localPointValues(wallDisplacement);
+        mesh_.update();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fluidSolidInteraction::fluidSolidInteraction
+(
+    dynamicFvMesh& mesh,
+    conservativeFluid& fluid
+)
+:
+    mesh_(mesh),
+    fluid_(fluid),
+    fsiProperties_
+    (
+        IOobject
+        (
+            "fsiProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    patchi_(interfacePatchIndex(mesh, fsiProperties_.subDict("interface"))),
+    fsiPatch_(mesh.boundaryMesh()[patchi_]),
+    pointDisplacement_(nullptr),
+    cpuMotion_(0),
+    cpuFluid_(0),
+    cpuSolid_(0),
+    cpuStart_(0)
+{
+    const Time& runTime = mesh_.time();
+    const dictionary& interfaceDict = fsiProperties_.subDict("interface");
+
+    if (runTime.value() > 0)
+    {
+        truncateSolidResults(runTime);
+    }
+
+    solid_.reset(new solidDomain(runTime));
+
+    map_.reset
+    (
+        new interfaceMap
+        (
+            fsiPatch_,
+            solid_->mesh(),
+            interfaceDict,
+            solid_->fixedDofs()
+        )
+    );
+
+    // Restart: the mesh (built on the reference points, newMesh) to the
+    // points of the start time
+    if (runTime.value() > 0)
+    {
+        mesh_.movePoints
+        (
+            pointIOField
+            (
+                IOobject
+                (
+                    "points",
+                    runTime.timeName(),
+                    polyMesh::meshSubDir,
+                    mesh_,
+                    IOobject::MUST_READ,
+                    IOobject::NO_WRITE,
+                    false
+                )
+            )
+        );
+    }
+
+    solid_->couple(map_->nodes());
+    Info<< "Solid: " << solid_->mesh().nElements() << " elements, stable"
+        << " time step x explicitSafety " << solid_->timeStep() << " s"
+        << endl;
+
+    coupling_ = couplingScheme::New(fsiProperties_.subDict("coupling"));
+
+    createMotion(interfaceDict);
+
+    fluidInterfaceDisplacement_ = map_->gather(solid_->displacement());
+    if (runTime.value() > 0)
+    {
+        readState();
+    }
+
+    interfaceMass_ = map_->gather(solid_->lumpedMass());
+
+    checkMap();
+
+    openLog();
+
+    cpuStart_ = runTime.elapsedCpuTime();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fluidSolidInteraction::step()
+{
+    const Time& runTime = mesh_.time();
+    const scalar dt = runTime.deltaTValue();
+    const interfaceMap& map = map_();
+    solidDomain& solid = solid_();
+
+    // Start of the step on both sides
+    fluid_.storeOldState();
+    solid.save();
+
+    const scalarField v0(map.gather(solid.velocity()));
+
+    // Central-difference predictor: x = v_n + dt/2 a_n
+    scalarField x(v0 + 0.5*dt*map.gather(solid.acceleration()));
+
+    const string hint
+    (
+        "FSI: coupling scheme " + coupling_->type()
+      + " (a coupling that diverges ends here too: explicitStaggered"
+        " is unstable for a solid much lighter than water,"
+        " docs/results/blastCoupling.md; robin is the stable default)"
+    );
+
+    coupling_->beginStep();
+    scalar gclError = 0;
+    bool done = false;
+    while (!done)
+    {
+        if (coupling_->iterations() > 0)
+        {
+            fluid_.restoreOldState();
+            solid.restore();
+        }
+
+        // Fluid wall to d_n + dt x, mesh motion
+        cpuTimer_.cpuTimeIncrement();
+        moveWall(fluidInterfaceDisplacement_ + dt*x);
+        cpuMotion_ += cpuTimer_.cpuTimeIncrement();
+
+        gclError = fluid_.aleStep(dt, hint);
+
+        // Wall force at t_n+1 -> solid nodes
+        fluid_.fluxes();
+        const vectorField wallForce
+        (
+            fsiPatch_.faceValues(fluid_.phiU().boundaryField()[patchi_])
+        );
+        // Area vectors of the moved interface faces (whole patch): the
+        // pressure load and the Robin impedance
+        const vectorField wallSf
+        (
+            fsiPatch_.faceValues(mesh_.boundary()[patchi_].Sf())
+        );
+        cpuFluid_ += cpuTimer_.cpuTimeIncrement();
+        solid.advance
+        (
+            map.pressureLoad()
+          ? map.nodalPressureForces
+            (
+                wallForce,
+                wallSf,
+                fluidInterfaceDisplacement_ + dt*x
+            )
+          : map.nodalForces(wallForce),
+            runTime.value()
+        );
+        cpuSolid_ += cpuTimer_.cpuTimeIncrement();
+
+        const scalarField xTilde(0.5*(v0 + map.gather(solid.velocity())));
+
+        // Acoustic added damping of the fluid per interface dof (Robin)
+        const rhoEThermo& thermo = fluid_.thermo();
+        const scalarField Z
+        (
+            fsiPatch_.faceValues
+            (
+                scalarField
+                (
+                    thermo.rho().boundaryField()[patchi_]
+                   .patchInternalField()
+                   *thermo.c().boundaryField()[patchi_].patchInternalField()
+                )
+            )
+        );
+        const scalarField beta
+        (
+            0.25*dt*map.nodalImpedance(Z, wallSf)/interfaceMass_
+        );
+
+        done = coupling_->update(x, xTilde, beta);
+
+        Info<< "FSI iteration " << coupling_->iterations() << ": residual "
+            << coupling_->residual() << endl;
+    }
+    coupling_->endStep(runTime.value());
+    fluidInterfaceDisplacement_ += dt*x;
+
+    const vector F = gSum(fluid_.phiU().boundaryField()[patchi_]);
+    if (couplingLog_.valid())
+    {
+        couplingLog_()
+            << runTime.value() << ' ' << dt << ' '
+            << coupling_->iterations() << ' ' << coupling_->residual() << ' '
+            << coupling_->converged() << ' ' << F.x() << ' ' << F.y() << ' '
+            << F.z() << ' ' << max(mag(x)) << ' ' << gclError << nl;
+        // Complete rows up to the last step after a FatalError stop too
+        couplingLog_().flush();
+    }
+}
+
+
+void Foam::fluidSolidInteraction::setDeltaT()
+{
+    Time& runTime = const_cast<Time&>(mesh_.time());
+    const dictionary& controlDict = runTime.controlDict();
+
+    const bool adjustTimeStep =
+        controlDict.lookupOrDefault("adjustTimeStep", false);
+    const scalar maxCo = controlDict.lookupOrDefault<scalar>("maxCo", 1.0);
+    const scalar maxDeltaT =
+        controlDict.lookupOrDefault<scalar>("maxDeltaT", GREAT);
+
+    // A wedge face pair carries no wave across (axisymmetry, the swirl is
+    // removed in the ALE stages): out of the Courant number, else the thin
+    // cells at the axis (width r theta) would set the time step
+    surfaceScalarField& amaxSf = fluid_.amaxSf();
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (isA<wedgeFvPatch>(mesh_.boundary()[patchi]))
+        {
+            amaxSf.boundaryFieldRef()[patchi] = Zero;
+        }
+    }
+
+    const scalar CoNum = fluid_.courantNumber(runTime.deltaTValue());
+
+    // writeControl adjustableRunTime: the step shortened so that steps end
+    // on the next write time, as Time::adjustDeltaT does, but with the
+    // write intervals counted from t = 0. OpenFOAM counts them from the
+    // start time of the run (and takes that from the directory name), so a
+    // restarted run would round differently and its steps, hence all its
+    // results, would differ from the uninterrupted run's in the last bits;
+    // counted from t = 0 the restart is bitwise (tests/blast/restart.sh)
+    const bool adjustToWrites =
+        controlDict.getOrDefault<word>("writeControl", "timeStep")
+     == "adjustableRunTime";
+    const scalar writeInterval = adjustToWrites
+      ? controlDict.get<scalar>("writeInterval")
+      : 0;
+    const label writeIndex = adjustToWrites
+      ? label((runTime.value() + 0.5*runTime.deltaTValue())/writeInterval)
+      : 0;
+    const auto setDeltaT = [&](const scalar dt)
+    {
+        scalar newDt = dt;
+        const scalar toNextWrite =
+            max(0.0, (writeIndex + 1)*writeInterval - runTime.value());
+        const scalar nSteps = toNextWrite/dt;
+        if (adjustToWrites && nSteps < labelMax)
+        {
+            const scalar even = toNextWrite/max(1, round(nSteps));
+            newDt = even >= dt ? min(even, 2*dt) : max(even, 0.2*dt);
+        }
+        runTime.setDeltaT(newDt, false);
+    };
+
+    // As OpenFOAM's setDeltaT.H, with the step above
+    if (adjustTimeStep)
+    {
+        const scalar maxDeltaTFact = maxCo/(CoNum + SMALL);
+        const scalar deltaTFact =
+            min(min(maxDeltaTFact, 1.0 + 0.1*maxDeltaTFact), 1.2);
+        setDeltaT(min(deltaTFact*runTime.deltaTValue(), maxDeltaT));
+        Info<< "deltaT = " <<  runTime.deltaTValue() << endl;
+    }
+
+    if (runTime.deltaTValue() > solid_->timeStep())
+    {
+        setDeltaT(solid_->timeStep());
+    }
+}
+
+
+void Foam::fluidSolidInteraction::write(const scalar stepDeltaT)
+{
+    solid_->write(stepDeltaT);
+
+    const Time& runTime = mesh_.time();
+    if (!runTime.writeTime())
+    {
+        return;
+    }
+
+    // Renamed into place: complete or absent
+    const fileName file(runTime.timePath()/"uniform"/"fsiState");
+    {
+        OFstream os(file + ".tmp");
+        os.precision(17);
+        os.writeEntry("fluidInterfaceDisplacement", fluidInterfaceDisplacement_);
+        coupling_->writeState(os);
+    }
+    mv(file + ".tmp", file);
+
+    // The coupling log on disk up to this time: a run continued from this
+    // time writes its own (postProcessing/fsi/<this time>), which then
+    // starts where this one is complete
+    if (couplingLog_.valid())
+    {
+        couplingLog_().flush();
+    }
+}
+
+
+void Foam::fluidSolidInteraction::report()
+{
+    coupling_->report(Info);
+
+    const scalar total = mesh_.time().elapsedCpuTime() - cpuStart_;
+    Info<< "CPU time of the time loop " << total << " s: mesh motion "
+        << cpuMotion_ << " s, fluid " << cpuFluid_ << " s, solid "
+        << cpuSolid_ << " s, other (coupling, restore, output) "
+        << total - cpuMotion_ - cpuFluid_ - cpuSolid_ << " s" << endl;
+
+    if (couplingLog_.valid())
+    {
+        couplingLog_() << "# ";
+        coupling_->report(couplingLog_());
+    }
+}
+
+
+// ************************************************************************* //
