@@ -330,13 +330,13 @@ Foam::fluidSolidInteraction::fluidSolidInteraction
 
     createMotion(interfaceDict);
 
-    fluidInterfaceDisplacement_ = map_->gather(solid_->displacement());
+    fluidInterfaceDisplacement_ = map_->interfaceDofs(solid_->displacement());
     if (runTime.value() > 0)
     {
         readState();
     }
 
-    interfaceMass_ = map_->gather(solid_->lumpedMass());
+    interfaceMass_ = map_->interfaceDofs(solid_->lumpedMass());
 
     checkMap();
 
@@ -359,10 +359,10 @@ void Foam::fluidSolidInteraction::step()
     fluid_.storeOldState();
     solid.save();
 
-    const scalarField v0(map.gather(solid.velocity()));
+    const scalarField v0(map.interfaceDofs(solid.velocity()));
 
     // Central-difference predictor: x = v_n + dt/2 a_n
-    scalarField x(v0 + 0.5*dt*map.gather(solid.acceleration()));
+    scalarField x(v0 + 0.5*dt*map.interfaceDofs(solid.acceleration()));
 
     const string hint
     (
@@ -417,7 +417,7 @@ void Foam::fluidSolidInteraction::step()
         );
         cpuSolid_ += cpuTimer_.cpuTimeIncrement();
 
-        const scalarField xTilde(0.5*(v0 + map.gather(solid.velocity())));
+        const scalarField xTilde(0.5*(v0 + map.interfaceDofs(solid.velocity())));
 
         // Acoustic added damping of the fluid per interface dof (Robin)
         const rhoEThermo& thermo = fluid_.thermo();

@@ -819,17 +819,15 @@ Foam::interfaceMap::interfaceMap
         forAll(lp, i) xs[i] = toSolidFrame(lp[i], pointRadial_[i]);
         pointStencil_ = projectAll(xs, lp, tol, "points");
     }
-    mapType_ = dict.getOrDefault<word>("map", mapType_);
-    if
-    (
-        mapType_ != "faces"
-     && (axisymmetric_ || (mapType_ != "points" && mapType_ != "projection"))
-    )
+    // One map per dimension: r-z faces, 3D projection (the 3D faces and
+    // points maps, not dual or loading the solid at the fluid points only,
+    // were used by no case and are gone); the entry may name it
+    if (dict.getOrDefault<word>("map", mapType_) != mapType_)
     {
         FatalIOErrorInFunction(dict)
-            << "map " << mapType_ << " is not valid: "
-            << (axisymmetric_ ? "faces (r-z)" : "projection, points or faces")
-            << exit(FatalIOError);
+            << "map " << dict.get<word>("map") << " is not valid for "
+            << (axisymmetric_ ? "an r-z" : "a 3D") << " solid mesh: the map"
+            << " is " << mapType_ << exit(FatalIOError);
     }
     if (mapType_ == "projection")
     {
@@ -932,7 +930,7 @@ Foam::interfaceMap::interfaceMap
 }
 
 
-Foam::scalarField Foam::interfaceMap::gather(const Eigen::VectorXd& full) const
+Foam::scalarField Foam::interfaceMap::interfaceDofs(const Eigen::VectorXd& full) const
 {
     const label dim = solidMesh_.dim();
     scalarField x(nDofs());

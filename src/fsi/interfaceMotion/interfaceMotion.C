@@ -1,5 +1,6 @@
 #include "interfaceMotion.H"
 #include "pointIOField.H"
+#include "bitSet.H"
 #include "wedgePolyPatch.H"
 #include "emptyPolyPatch.H"
 #include "PrimitivePatchInterpolation.H"
@@ -138,8 +139,8 @@ Foam::interfaceMotion::interfaceMotion
 
     // Slip projectors of the points of the other wall-type patches
     const tensorField P(slipProjectors());
-    boolList onInterface(mesh.nPoints(), false);
-    for (const label p : ipPoints) onInterface[p] = true;
+    bitSet onInterface(mesh.nPoints());
+    onInterface.set(ipPoints);
     {
         DynamicList<Tuple2<label, tensor>> held;
         forAll(ipPoints, k)
@@ -162,7 +163,7 @@ Foam::interfaceMotion::interfaceMotion
     scalarField dist(gp.size());
     forAll(points0_, pointi)
     {
-        if (onInterface[pointi]) continue;
+        if (onInterface.test(pointi)) continue;
         const vector x = toSpace(points0_[pointi]);
         forAll(xi, k) dist[k] = mag(x - xi[k]);
         std::iota(order.begin(), order.end(), 0);
