@@ -48,9 +48,7 @@ import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)),
-                                "..", "calibrateCell"))
-import foamDict  # noqa: E402
+from neuronFsi import foamDict
 
 
 class SweepError(Exception):

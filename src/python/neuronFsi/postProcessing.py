@@ -1,0 +1,163 @@
+"""Column files of our solvers: postProcessing/<name>/<startTime>/<file>.
+
+Every file starts with '#' header lines, the last of which names the
+columns with their units ("# time [s]  dt [s]  iterations ..." or
+"# time [s]  p0[Pa] vonMises0[Pa] ..."); then one row per time step. A run
+that is continued writes a new segment under its own start time; series()
+joins the segments in time order, a later segment replacing the rows of an
+earlier one from its start time on (the rows a stopped run wrote after its
+last write are computed again by the continued run).
+
+A run that was stopped may leave a last row cut in the middle: it is
+dropped. Any other malformed row is an error naming the file and line.
+"""
+
+import glob
+import os
+import re
+
+import numpy as np
+
+
+class ColumnFileError(Exception):
+    """A column file that cannot be read; the message names the file."""
+
+
+# a column name (up to blanks, '[' or '('), a component list "(x y z)" or a
+# unit "[Pa]"
+_HEADER_TOKEN = re.compile(r"\([^)]*\)|\[[^\]]*\]|[^\s\[(]+")
+
+
+def columnNames(line):
+    """(names, units) of a header line such as "# time [s]  dt [s]
+    interfaceForce (x y z) [N]"; a component list expands the name before it
+    into name_x, name_y, name_z, and a unit after it holds for each. Units
+    are '' where the header gives none."""
+    names, units = [], []
+    last = 0            # index of the first column of the last name
+    for tok in _HEADER_TOKEN.findall(line.lstrip("#")):
+        if tok[0] in "[(" and not names:
+            raise ColumnFileError("'%s' before any column name in '%s'"
+                                  % (tok, line))
+        if tok.startswith("["):
+            for k in range(last, len(names)):
+                units[k] = tok[1:-1]
+        elif tok.startswith("("):
+            base = names.pop()
+            units.pop()
+            for c in tok[1:-1].split():
+                names.append(base + "_" + c)
+                units.append("")
+        else:
+            last = len(names)
+            names.append(tok)
+            units.append("")
+    return names, units
+
+
+class Table:
+    """The header and rows of one column file.
+
+    header  the '#' lines without the leading '# '
+    names, units  the columns named by the last header line
+    rows    the rows as lists of strings
+    """
+
+    def __init__(self, path, header, rows):
+        self.path = path
+        self.header = header
+        self.rows = rows
+        self.names, self.units = (columnNames(header[-1]) if header
+                                  else ([], []))
+
+    def data(self):
+        """The rows as a float array (every column must be a number)."""
+        try:
+            return np.array(self.rows, dtype=float).reshape(
+                len(self.rows), -1)
+        except ValueError as err:
+            raise ColumnFileError("%s: not a number (%s)" % (self.path, err))
+
+    def column(self, name):
+        """One column by its header name: floats, or strings for a column
+        of words (e.g. the stage of force.dat)."""
+        if name not in self.names:
+            raise ColumnFileError("%s: no column '%s' (columns: %s)"
+                                  % (self.path, name, " ".join(self.names)))
+        k = self.names.index(name)
+        col = [r[k] for r in self.rows]
+        try:
+            return np.array(col, dtype=float)
+        except ValueError:
+            return col
+
+
+def readTable(path):
+    """Table of one column file; a cut last row (fewer fields than the
+    first row, or no newline at its end) is dropped."""
+    try:
+        with open(path) as f:
+            lines = f.read().split("\n")
+    except OSError as err:
+        raise ColumnFileError("%s: %s" % (path, err.strerror))
+    header, rows, lineNo = [], [], []
+    last = len(lines) - 1       # "" after a final newline, else a cut line
+    for i, line in enumerate(lines):
+        if line.startswith("#"):
+            if rows:
+                raise ColumnFileError("%s, line %d: header line after the "
+                                      "rows" % (path, i + 1))
+            header.append(line[1:].strip())
+        elif line.strip() and i < last:
+            rows.append(line.split())
+            lineNo.append(i + 1)
+    n = len(rows[0]) if rows else 0
+    if rows and len(rows[-1]) != n:
+        rows.pop()
+        lineNo.pop()
+    for r, i in zip(rows, lineNo):
+        if len(r) != n:
+            raise ColumnFileError("%s, line %d: %d columns, the first row "
+                                  "has %d" % (path, i, len(r), n))
+    return Table(path, header, rows)
+
+
+def segments(case, log):
+    """[(startTime, path)] of postProcessing/<dir>/<start>/<file> for log
+    "dir/file", earliest start first; an error when there is none."""
+    d, name = os.path.split(log)
+    found = []
+    for p in glob.glob(os.path.join(case, "postProcessing", d, "*", name)):
+        try:
+            found.append((float(os.path.basename(os.path.dirname(p))), p))
+        except ValueError:
+            pass
+    if not found:
+        raise ColumnFileError("no %s" % os.path.join(
+            case, "postProcessing", d, "<startTime>", name))
+    return sorted(found)
+
+
+def series(case, log):
+    """Float rows of log "dir/file" (e.g. "fsi/coupling.dat") over every
+    start of the run: each segment's rows up to the next segment's start
+    time, then that segment's rows."""
+    segs = segments(case, log)
+    parts = []
+    for k, (t0, p) in enumerate(segs):
+        a = readTable(p).data()
+        if k + 1 < len(segs):
+            # relative 1e-12: the start time is a time directory's name
+            a = a[a[:, 0] <= segs[k + 1][0]*(1 + 1e-12)]
+        parts.append(a)
+    return np.vstack(parts)
+
+
+def header(case, log):
+    """The header lines (without '# ') of the first segment of a log."""
+    return readTable(segments(case, log)[0][1]).header
+
+
+def names(case, log):
+    """The column names of a log (from its first segment)."""
+    return readTable(segments(case, log)[0][1]).names
