@@ -24,7 +24,7 @@ and the Fig. 10 probe peaks over t <= 90 ns (the first passage), the
 largest nodal speed of the solid after 110 ns (late-time drift), and each
 difference to the default.
 
-    bench/blast/previewOptions [--out DIR] [--doc FILE] [--jobs 2]
+    bench/blast/previewOptions.py [--out DIR] [--doc FILE] [--jobs 2]
         [--options "default outer1+co0.5+tol1e-6 ..."] [--pulse 5e-9]
         [--reportOnly]
 
@@ -130,7 +130,7 @@ def report(rows, start, end, commit, dirty, pulse):
     w = L.append
     w("# Blast preview per run option: cost against error")
     w("")
-    w(f"Written by `bench/blast/previewOptions` on "
+    w(f"Written by `bench/blast/previewOptions.py` on "
       f"{start.strftime('%Y-%m-%d %H:%M')} UTC, commit {commit}"
       + (" (with uncommitted changes)" if dirty else "")
       + f", {(end - start).total_seconds():.0f} s in all, runs two at a "

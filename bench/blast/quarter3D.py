@@ -23,7 +23,7 @@ on --ranks N ranks (Allrun -np N -noRun: decomposePar, simple (N 1 1);
 mpirun -np N cellBlastFoam -parallel), right after its serial run: the
 speed-up side by side.
 
-    bench/blast/quarter3D [--quick] [--out DIR] [--doc FILE]
+    bench/blast/quarter3D.py [--quick] [--out DIR] [--doc FILE]
                           [--factors "1 0.7"] [--endTime s] [--ranks 2]
 
 Full: factors 1 0.7 to 3 ns; --quick: 1.4 1 to 1 ns, written into --out
@@ -280,7 +280,7 @@ def main():
       "the 3D quarter: docs/results/blast3D.md; of the axisymmetric "
       "preview per mesh: [blast.md](blast.md).")
     w("")
-    w(f"Written by `bench/blast/quarter3D` ({mode}) on "
+    w(f"Written by `bench/blast/quarter3D.py` ({mode}) on "
       f"{start.strftime('%Y-%m-%d %H:%M')} UTC, commit {commit}"
       + (" (with uncommitted changes in src/, applications/, "
          "tutorials/blast or bench/blast)" if dirty else "")

@@ -20,7 +20,7 @@ peak resident memory, and the Fig. 10 probe (cytoplasm-nucleus interface,
 negative) longitudinal strain ln(stretch_z) and strain rate over the window,
 arrival time (first p > 25 MPa); then each difference to the finest level.
 
-    bench/blast/run [--quick] [--out DIR] [--doc FILE]
+    bench/blast/run.py [--quick] [--out DIR] [--doc FILE]
                     [--factors "1.4 1 0.7"] [--endTime s]
 
 Full: factors 1.4 1 0.7, 100 um column to 150 ns, probe peaks over
@@ -366,7 +366,7 @@ def report(rows, size, mode, start, png, commit, dirty, end,
     w = L.append
     w("# Blast preview per mesh: cost against error")
     w("")
-    w(f"Written by `bench/blast/run` ({mode}) on "
+    w(f"Written by `bench/blast/run.py` ({mode}) on "
       f"{start.strftime('%Y-%m-%d %H:%M')} UTC, commit {commit}"
       + (" (with uncommitted changes in src/, applications/, "
          "tutorials/blast or bench/blast)" if dirty else "")

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Plot a shock-tube result against the exact solution.
 
-Usage: plotShockTube CASE_DIR
+Usage: plotShockTube.py CASE_DIR
 Reads CASE_DIR/postProcessing/riemannError/<latest time>/profile.dat (written
 by riemannError) and writes CASE_DIR/shockTube.png: density, velocity and
 pressure, computed (dots) and exact (line).

@@ -244,7 +244,7 @@ def report(rows, cax4, ref, FH, F0, slope, size, repeats, start):
     elapsed = (datetime.datetime.now() - start).total_seconds()
     w("# Solid benchmark: Hertz indentation, ours against CalculiX")
     w("")
-    w(f"Written by `bench/solid/calculix/run` ({size}) on "
+    w(f"Written by `bench/solid/calculix/run.py` ({size}) on "
       f"{start:%Y-%m-%d %H:%M}, {elapsed:.0f} s in all; the machine has "
       f"{os.cpu_count()} cores shared with other jobs, each code runs on "
       "one thread. Absolute times are context; the ratios come from pairs "
