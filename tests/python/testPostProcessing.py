@@ -111,6 +111,25 @@ class ColumnFiles(unittest.TestCase):
         self.assertEqual(pp.header(self.case, "fsi/coupling.dat")[0],
                          "FSI coupling (robin)")
 
+    def testRoundedStartTimeName(self):
+        # a restart at 2.5e-10 written under "2e-10" (timePrecision 1):
+        # the first row of the segment, not its name, ends the one before
+        self.write("postProcessing/fsi/0/coupling.dat", HEADER + "".join(
+            row(t*1e-10, 1) for t in (1, 2, 2.5, 3)))
+        self.write("postProcessing/fsi/2e-10/coupling.dat", HEADER + "".join(
+            row(t*1e-10, 2) for t in (3, 3.5)))
+        d = pp.series(self.case, "fsi/coupling.dat")
+        np.testing.assert_allclose(d[:, 0]*1e10, [1, 2, 2.5, 3, 3.5])
+        np.testing.assert_array_equal(d[:, 2], [1, 1, 1, 2, 2])
+
+    def testEmptySegmentSkipped(self):
+        # a start killed before its first step wrote the header only
+        self.write("postProcessing/fsi/0/coupling.dat",
+                   HEADER + row(1e-10) + row(2e-10))
+        self.write("postProcessing/fsi/2e-10/coupling.dat", HEADER)
+        self.assertEqual(pp.series(self.case, "fsi/coupling.dat").shape,
+                         (2, 9))
+
     def testNonTimeDirectoriesIgnored(self):
         self.write("postProcessing/fsi/0/coupling.dat", HEADER + row(1e-10))
         self.write("postProcessing/fsi/old/coupling.dat", HEADER + row(9))

@@ -5,7 +5,7 @@ columns with their units ("# time [s]  dt [s]  iterations ..." or
 "# time [s]  p0[Pa] vonMises0[Pa] ..."); then one row per time step. A run
 that is continued writes a new segment under its own start time; series()
 joins the segments in time order, a later segment replacing the rows of an
-earlier one from its start time on (the rows a stopped run wrote after its
+earlier one from its first row on (the rows a stopped run wrote after its
 last write are computed again by the continued run).
 
 A run that was stopped may leave a last row cut in the middle: it is
@@ -72,6 +72,8 @@ class Table:
 
     def data(self):
         """The rows as a float array (every column must be a number)."""
+        if not self.rows:
+            return np.empty((0, len(self.names)))
         try:
             return np.array(self.rows, dtype=float).reshape(
                 len(self.rows), -1)
@@ -140,17 +142,16 @@ def segments(case, log):
 
 def series(case, log):
     """Float rows of log "dir/file" (e.g. "fsi/coupling.dat") over every
-    start of the run: each segment's rows up to the next segment's start
-    time, then that segment's rows."""
-    segs = segments(case, log)
-    parts = []
-    for k, (t0, p) in enumerate(segs):
-        a = readTable(p).data()
-        if k + 1 < len(segs):
-            # relative 1e-12: the start time is a time directory's name
-            a = a[a[:, 0] <= segs[k + 1][0]*(1 + 1e-12)]
-        parts.append(a)
-    return np.vstack(parts)
+    start of the run: each segment's rows before the first row of the next
+    segment that has rows, then that segment's rows. The rows delimit the
+    segments, not the directory names: these are rounded to the
+    controlDict's timePrecision."""
+    parts = [readTable(p).data() for t0, p in segments(case, log)]
+    parts = [a for a in parts if len(a)]
+    if not parts:
+        raise ColumnFileError("%s: no rows in %s" % (case, log))
+    out = [a[a[:, 0] < parts[k + 1][0, 0]] for k, a in enumerate(parts[:-1])]
+    return np.vstack(out + [parts[-1]])
 
 
 def header(case, log):
