@@ -92,6 +92,12 @@ class Msh(unittest.TestCase):
             self.assertEqual(groups["axis"][1][0][3], [1, 4])
             self.assertEqual(groups["membrane"][1][0][3], [2, 3, 6, 5])
 
+    def testPhysicalNames(self):
+        for text in (MSH41, MSH22):
+            p = self.write("m.msh", text)
+            self.assertEqual(msh.physicalNames(p, 2), ["nucleus", "membrane"])
+            self.assertEqual(msh.physicalNames(p, 1), ["axis"])
+
     def testElementCount(self):
         for text in (MSH41, MSH22):
             p = self.write("m.msh", text)

@@ -50,6 +50,16 @@ class ColumnFiles(unittest.TestCase):
                                  "pMax:membrane-cytoplasm", "stage"])
         self.assertEqual(units, ["s", "Pa", "Pa", "Pa", ""])
 
+    def testUnitOfSeveralNames(self):
+        # riemannError's headers: a separate unit holds for its group
+        self.assertEqual(pp.columnNames(
+            "# x [m]  rho rhoExact [kg/m^3]  u uExact [m/s]"),
+            (["x", "rho", "rhoExact", "u", "uExact"],
+             ["m", "kg/m^3", "kg/m^3", "m/s", "m/s"]))
+        self.assertEqual(pp.columnNames(
+            "# nCells L1rho[kg/m^3] L1u[m/s] L1p[Pa]"),
+            (["nCells", "L1rho", "L1u", "L1p"], ["", "kg/m^3", "m/s", "Pa"]))
+
     def testUnitBeforeNameIsAnError(self):
         with self.assertRaises(pp.ColumnFileError):
             pp.columnNames("# [s] time")
@@ -63,6 +73,18 @@ class ColumnFiles(unittest.TestCase):
         np.testing.assert_array_equal(t.column("iterations"), [1, 3])
         with self.assertRaisesRegex(pp.ColumnFileError, "no column 'p'"):
             t.column("p")
+
+    def testNamesLineAmongNotes(self):
+        # solidProbes.dat: a description before the names, a note per probe
+        # after them
+        p = self.write("solidProbes.dat",
+                       "# solid probes (element average): pressure\n"
+                       "# time [s]  p0[Pa] vonMises0[Pa]\n"
+                       "# probe 0 at (0 5e-06 0) m: element 7 (nucleus)\n"
+                       "1e-10 2 3\n")
+        t = pp.readTable(p)
+        self.assertEqual(t.names, ["time", "p0", "vonMises0"])
+        self.assertEqual(t.header[2][:7], "probe 0")
 
     def testWordColumn(self):
         p = self.write("force.dat", "# time [s]  force [N]  stage\n"
@@ -110,6 +132,8 @@ class ColumnFiles(unittest.TestCase):
                          "iterations")
         self.assertEqual(pp.header(self.case, "fsi/coupling.dat")[0],
                          "FSI coupling (robin)")
+        np.testing.assert_array_equal(
+            pp.latest(self.case, "fsi/coupling.dat").data()[:, 2], [7, 8])
 
     def testRoundedStartTimeName(self):
         # a restart at 2.5e-10 written under "2e-10" (timePrecision 1):

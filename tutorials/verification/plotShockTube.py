@@ -12,15 +12,17 @@ import sys
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
-import numpy as np
+
+from neuronFsi import postProcessing
 
 
 def main(case):
-    base = os.path.join(case, "postProcessing", "riemannError")
-    if not os.path.isdir(base):
-        sys.exit(f"plotShockTube: {base} not found: run riemannError first")
-    latest = max(os.listdir(base), key=float)
-    data = np.loadtxt(os.path.join(base, latest, "profile.dat"))
+    try:
+        latest, path = postProcessing.segments(
+            case, "riemannError/profile.dat")[-1]
+    except postProcessing.ColumnFileError as err:
+        sys.exit(f"plotShockTube: {err}: run riemannError first")
+    data = postProcessing.readTable(path).data()
     x = data[:, 0]
     fig, axes = plt.subplots(3, 1, figsize=(7, 8), sharex=True)
     labels = [("density [kg/m^3]", 1), ("velocity [m/s]", 3),

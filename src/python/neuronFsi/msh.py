@@ -7,6 +7,7 @@ read(path) -> (X, groups)
     groups  {physical name: (dim, [(dim, entity, type, [node tags])])}
             (format 2.2 files have no entities: entity is the element's
             physical tag)
+physicalNames(path, dim): the names of the groups of one dimension by tag.
 elementCount(path, types): number of elements of the given gmsh types
 (3: quadrangle, 5: hexahedron, ...), whatever their physical group.
 """
@@ -124,6 +125,13 @@ def read(path):
     sections, version = _sections(path)
     nodes, groups = (_read41 if version == "4.1" else _read22)(sections)
     return {t: np.array(x) for t, x in nodes.items()}, groups
+
+
+def physicalNames(path, dim):
+    """Names of the physical groups of dimension dim, by tag (the order of
+    the solid library's region ids)."""
+    names = _names(_sections(path)[0])
+    return [n for (d, t), n in sorted(names.items()) if d == dim]
 
 
 def elementCount(path, types):

@@ -24,24 +24,33 @@ class ColumnFileError(Exception):
 
 
 # a column name (up to blanks, '[' or '('), a component list "(x y z)" or a
-# unit "[Pa]"
-_HEADER_TOKEN = re.compile(r"\([^)]*\)|\[[^\]]*\]|[^\s\[(]+")
+# unit "[Pa]"; two or more blanks separate groups of columns
+_HEADER_TOKEN = re.compile(r"\s{2,}|\s|\([^)]*\)|\[[^\]]*\]|[^\s\[(]+")
 
 
 def columnNames(line):
     """(names, units) of a header line such as "# time [s]  dt [s]
-    interfaceForce (x y z) [N]"; a component list expands the name before it
-    into name_x, name_y, name_z, and a unit after it holds for each. Units
-    are '' where the header gives none."""
+    interfaceForce (x y z) [N]  rho rhoExact [kg/m^3]  p0[Pa] vonMises0[Pa]".
+    A component list expands the name before it into name_x, name_y,
+    name_z. A unit glued to a name is that name's; after a blank it holds
+    for the names before it back to the previous unit or group (two or
+    more blanks). Units are '' where the header gives none."""
     names, units = [], []
-    last = 0            # index of the first column of the last name
+    first = 0           # first column the next separate unit applies to
+    glued = False       # the previous token was a name, no blank between
     for tok in _HEADER_TOKEN.findall(line.lstrip("#")):
+        if tok.isspace():
+            if len(tok) > 1:
+                first = len(names)
+            glued = False
+            continue
         if tok[0] in "[(" and not names:
             raise ColumnFileError("'%s' before any column name in '%s'"
                                   % (tok, line))
         if tok.startswith("["):
-            for k in range(last, len(names)):
+            for k in range(len(names) - 1 if glued else first, len(names)):
                 units[k] = tok[1:-1]
+            first = len(names)
         elif tok.startswith("("):
             base = names.pop()
             units.pop()
@@ -49,9 +58,9 @@ def columnNames(line):
                 names.append(base + "_" + c)
                 units.append("")
         else:
-            last = len(names)
             names.append(tok)
             units.append("")
+        glued = not tok.startswith("[")
     return names, units
 
 
@@ -59,7 +68,8 @@ class Table:
     """The header and rows of one column file.
 
     header  the '#' lines without the leading '# '
-    names, units  the columns named by the last header line
+    names, units  the columns named by the header (the first line with as
+            many names as a row has columns; without rows, the last line)
     rows    the rows as lists of strings
     """
 
@@ -67,8 +77,18 @@ class Table:
         self.path = path
         self.header = header
         self.rows = rows
-        self.names, self.units = (columnNames(header[-1]) if header
-                                  else ([], []))
+        self.names, self.units = [], []
+        # the names line: the first with as many names as a row has
+        # columns (a description may come before it, notes after it)
+        for line in header:
+            try:
+                names, units = columnNames(line)
+            except ColumnFileError:
+                continue
+            if rows and len(names) == len(rows[0]) or not rows:
+                self.names, self.units = names, units
+                if rows:
+                    break
 
     def data(self):
         """The rows as a float array (every column must be a number)."""
@@ -154,11 +174,18 @@ def series(case, log):
     return np.vstack(out + [parts[-1]])
 
 
+def latest(case, log):
+    """Table of the latest segment of a log: the output of a utility run on
+    the latest time (e.g. "riemannError/errors.dat")."""
+    return readTable(segments(case, log)[-1][1])
+
+
 def header(case, log):
     """The header lines (without '# ') of the first segment of a log."""
     return readTable(segments(case, log)[0][1]).header
 
 
 def names(case, log):
-    """The column names of a log (from its first segment)."""
-    return readTable(segments(case, log)[0][1]).names
+    """The column names of a log (from its first segment with rows)."""
+    tables = [readTable(p) for t0, p in segments(case, log)]
+    return next((t for t in tables if t.rows), tables[0]).names
