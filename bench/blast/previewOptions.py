@@ -41,10 +41,12 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
+from neuronFsi.solidResults import SolidResults
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 _loader = importlib.machinery.SourceFileLoader("blastRun",
-                                               os.path.join(HERE, "run"))
+                                               os.path.join(HERE, "run.py"))
 _spec = importlib.util.spec_from_loader("blastRun", _loader)
 B = importlib.util.module_from_spec(_spec)
 _loader.exec_module(B)
@@ -103,16 +105,14 @@ def lateSpeed(c):
     """largest nodal speed component of the solid in the writes from
     110 ns on [m/s] (solid/solid.h5; tests/blast/checkLongRun.py's
     drift measure), None without such writes"""
-    import h5py
     p = os.path.join(c, "solid", "solid.h5")
     if not os.path.exists(p):
         return None
-    with h5py.File(p, "r") as f:
-        late = [k for k in f["steps"]
-                if f["steps"][k].attrs["time"] >= 110e-9]
+    with SolidResults(p) as f:
+        late = [k for k in f.steps() if f.time(k) >= 110e-9]
         if not late:
             return None
-        return max(float(np.abs(f["steps"][k]["velocity"][:]).max())
+        return max(float(np.abs(f.field(k, "velocity")).max())
                    for k in late)
 
 

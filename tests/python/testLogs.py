@@ -53,6 +53,13 @@ class Logs(unittest.TestCase):
         self.assertEqual(logs.timeSteps(p), [(1e-10, 0.5, 1.0),
                                              (2e-10, 0.75, 2.0)])
         self.assertEqual(logs.lastTime(p), 2e-10)
+        self.assertEqual(logs.lastLine(p, "Time ="), "Time = 2e-10")
+        self.assertIsNone(logs.lastLine(p, "CPU time"))
+        self.assertIsNone(logs.cpuSplit(p))
+        q = self.write("log.y", "CPU time of the time loop 12.345 s: fluid "
+                       "3.21 s (26 %)\n")
+        self.assertEqual(logs.cpuSplit(q), "CPU time of the time loop 12.3 s:"
+                         " fluid 3.2 s (26 %)")
         self.assertTrue(logs.completed(p))
         fluid, solid = logs.fsiMapCheck(p)
         self.assertEqual(fluid, [-1.2e-10, -2.2e-10, 0.0])

@@ -65,6 +65,25 @@ def lastTime(path):
     return t
 
 
+def lastLine(path, prefix):
+    """The last line that starts with prefix (stripped), or None."""
+    found = None
+    for line in text(path).split("\n"):
+        if line.startswith(prefix):
+            found = line.strip()
+    return found
+
+
+def cpuSplit(path):
+    """cellBlastFoam's closing "CPU time of the time loop ..." line with its
+    seconds to 0.1 s, or None."""
+    line = lastLine(path, "CPU time of the time loop")
+    if line is None:
+        return None
+    return re.sub(r"(\d+\.\d+)(?= s)", lambda m: f"{float(m.group(1)):.1f}",
+                  line)
+
+
 def completed(path):
     """Whether a solver log ends with OpenFOAM's "End" and has no FATAL."""
     s = text(path)
