@@ -7,15 +7,11 @@
 set -euo pipefail
 src=$(cd "$1" && pwd)
 root=$(cd "$(dirname "$0")/../.." && pwd)
+. "$root/etc/bashrc"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-mkdir -p "$work/tutorials/indentation"
-cp -r "$src" "$work/tutorials/indentation/"
-cp "$root"/tutorials/indentation/{meshCell,cellFallback.geo,plotIndentation.py,plotFields.py} \
-    "$work/tutorials/indentation/"
-ln -s "$root/etc" "$work/etc"
-ln -s "$root/platforms" "$work/platforms"
-case=$work/tutorials/indentation/$(basename "$src")
+cp -r "$src" "$work/"
+case=$work/$(basename "$src")
 cd "$case"
 /usr/bin/python3 - constant/indenterProperties <<'PY'
 import re, sys
