@@ -89,6 +89,18 @@ class Logs(unittest.TestCase):
             "\tExit status: 0\n", "")))
         self.assertIsNone(r["status"])
 
+    def testIndentationRun(self):
+        p = self.write("log.cellIndentationFoam",
+                       "Solid mesh: 1234 elements\ndelta0 = 8.4e-07 m\n"
+                       "Protocol done: 56 Newton iterations, CPU time 12.5 s,"
+                       " wall time 13 s\n")
+        self.assertEqual(logs.indentationRun(p), dict(
+            delta0=8.4e-07, cpu=12.5, wall=13.0, elements=1234,
+            newtonIterations=56))
+        p = self.write("log.x", "1 elements\n2 Newton iterations\n"
+                       "CPU time 1 s, wall time 1 s\n")
+        self.assertIsNone(logs.indentationRun(p)["delta0"])
+
     def testCheckMesh(self):
         p = self.write("log.checkMesh", "Mesh stats\n    points: 10\n"
                        "    cells:            1234\n")

@@ -136,12 +136,17 @@ def couplingSummary(path):
 
 
 def indentationRun(path):
-    """cellIndentationFoam's initial depth delta0 [m], CPU time [s] and
-    number of elements (the first of each line)."""
+    """cellIndentationFoam's initial depth delta0 [m] (None when the run
+    does not search it), CPU and wall time [s], number of elements and of
+    Newton iterations (the first of each line)."""
+    m = re.search(r"delta0 = (\S+) m", text(path))
     return dict(
-        delta0=float(search(path, r"delta0 = (\S+) m", "delta0 line")[0]),
+        delta0=float(m.group(1)) if m else None,
         cpu=float(search(path, r"CPU time ([0-9.]+) s", "CPU time line")[0]),
-        elements=int(search(path, r"(\d+) elements", "element count")[0]))
+        wall=float(search(path, r"wall time ([0-9.]+) s", "wall time")[0]),
+        elements=int(search(path, r"(\d+) elements", "element count")[0]),
+        newtonIterations=int(search(path, r"(\d+) Newton iterations",
+                                    "Newton iteration count")[0]))
 
 
 def timeV(path):
