@@ -102,6 +102,12 @@ class ColumnFiles(unittest.TestCase):
             np.testing.assert_array_equal(pp.readTable(p).data()[:, 0],
                                           [1e-10, 2e-10])
 
+    def testClosingNote(self):
+        # cellBlastFoam ends coupling.dat with a '#' summary line
+        p = self.write("c.dat", HEADER + row(1e-10) + "# 1 steps\n")
+        t = pp.readTable(p)
+        self.assertEqual((len(t.rows), t.notes), (1, ["1 steps"]))
+
     def testMalformedRowIsAnError(self):
         p = self.write("c.dat", HEADER + row(1e-10) + "2e-10 1\n"
                        + row(3e-10))

@@ -67,7 +67,8 @@ def columnNames(line):
 class Table:
     """The header and rows of one column file.
 
-    header  the '#' lines without the leading '# '
+    header  the '#' lines before the rows, without the leading '# '
+    notes   the '#' lines after the first row (e.g. a closing summary)
     names, units  the columns named by the header (the first line with as
             many names as a row has columns; without rows, the last line)
     rows    the rows as lists of strings
@@ -122,14 +123,11 @@ def readTable(path):
             lines = f.read().split("\n")
     except OSError as err:
         raise ColumnFileError("%s: %s" % (path, err.strerror))
-    header, rows, lineNo = [], [], []
+    header, notes, rows, lineNo = [], [], [], []
     last = len(lines) - 1       # "" after a final newline, else a cut line
     for i, line in enumerate(lines):
         if line.startswith("#"):
-            if rows:
-                raise ColumnFileError("%s, line %d: header line after the "
-                                      "rows" % (path, i + 1))
-            header.append(line[1:].strip())
+            (notes if rows else header).append(line[1:].strip())
         elif line.strip() and i < last:
             rows.append(line.split())
             lineNo.append(i + 1)
@@ -141,7 +139,9 @@ def readTable(path):
         if len(r) != n:
             raise ColumnFileError("%s, line %d: %d columns, the first row "
                                   "has %d" % (path, i, len(r), n))
-    return Table(path, header, rows)
+    table = Table(path, header, rows)
+    table.notes = notes
+    return table
 
 
 def segments(case, log):
