@@ -47,7 +47,7 @@ fails=0
 check()     # case, what, git status options
 {
     local out
-    out=$(git status --porcelain $3 -- "$1")
+    out=$(git status --porcelain ${3:-} -- "$1")
     if [ -n "$out" ]
     then
         echo "FAIL $1: $2:"; echo "$out" | head -20; fails=$((fails + 1))
