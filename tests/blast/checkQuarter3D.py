@@ -15,7 +15,7 @@ import re
 import sys
 import numpy as np
 
-from neuronFsi import logs, postProcessing
+from neuronFsi import foamDict, logs, postProcessing
 
 case, L = sys.argv[1], float(sys.argv[2])
 mode = sys.argv[3] if len(sys.argv) > 3 else "arrival"
@@ -50,8 +50,8 @@ for i, c in enumerate("xyz"):
 # force for a unit pressure is the solid surface's, within 1 % of the exact
 # projected areas and 0.5 % of the fluid's (two discretized surfaces)
 m = logs.pressureLoadCheck(log)
-pressureLoad = re.search(r"^\s*load\s+pressure\s*;",
-                         open(f"{case}/constant/fsiProperties").read(), re.M)
+pressureLoad = foamDict.read(f"{case}/constant/fsiProperties").get(
+    "interface", {}).get("load") == "pressure"
 if pressureLoad and not m:
     print("FAIL load pressure is set, but the log has no unit-pressure "
           "check of it")
