@@ -1,8 +1,10 @@
 """Column files of our solvers: postProcessing/<name>/<startTime>/<file>.
 
-Every file starts with '#' header lines, the last of which names the
-columns with their units ("# time [s]  dt [s]  iterations ..." or
-"# time [s]  p0[Pa] vonMises0[Pa] ..."); then one row per time step. A run
+Every file starts with '#' header lines, one of which names the columns
+with their units ("# time [s]  dt [s]  iterations ..." or "# time [s]
+p0[Pa] vonMises0[Pa] ..."; a description may come before it, notes after
+it); then one row per time step ('#' lines after the rows, such as
+cellBlastFoam's closing summary, are notes). A run
 that is continued writes a new segment under its own start time; series()
 joins the segments in time order, a later segment replacing the rows of an
 earlier one from its first row on (the rows a stopped run wrote after its
