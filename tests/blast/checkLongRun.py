@@ -6,10 +6,11 @@ cell is at rest again after the pulse: no node drifts. Before the hourglass
 viscosity (docs/results/blast.md) membrane nodes kept 7-8 m/s from 80 ns on
 and an element failed at 132 ns.
 usage: checkLongRun.py case endTime"""
-import re
 import sys
-import h5py
 import numpy as np
+
+from neuronFsi import logs, postProcessing
+from neuronFsi.solidResults import SolidResults
 
 case, endTime = sys.argv[1], float(sys.argv[2])
 ok = True
@@ -21,33 +22,36 @@ def check(name, good, text):
     print(f"{'ok  ' if good else 'FAIL'} {name}: {text}")
 
 
-log = open(f"{case}/log.cellBlastFoam").read()
-check("run completed", "\nEnd\n" in log and "FATAL" not in log,
-      "log ends with End" if "\nEnd\n" in log else "no End in the log")
-coupling = np.loadtxt(f"{case}/postProcessing/fsi/0/coupling.dat")
+log = f"{case}/log.cellBlastFoam"
+done = logs.completed(log)
+check("run completed", done,
+      "log ends with End" if done else "no End in the log, or FATAL")
+coupling = postProcessing.series(case, "fsi/coupling.dat")
 # OpenFOAM's own criterion: the run ends within half a step of endTime
 check("end time reached", coupling[-1, 0] >= endTime - 0.5*coupling[-1, 1],
       f"last step at {coupling[-1, 0]:.6g} s (dt {coupling[-1, 1]:.3g} s) "
       f"of {endTime:g} s")
-m = re.search(r"FSI coupling \w+: (\d+) steps, (\d+) iterations \(mean (\S+),"
-              r" max (\d+)\), (\d+) steps not converged", log)
-check("coupling converged every step", m and int(m.group(5)) == 0,
-      m.group(0) if m else "no coupling summary")
+try:
+    m = logs.couplingSummary(log)
+except logs.LogError:
+    m = None
+check("coupling converged every step", m and m["notConverged"] == 0,
+      m["line"] if m else "no coupling summary")
 
-probes = np.loadtxt(f"{case}/postProcessing/solidProbes/0/solidProbes.dat")
+probes = postProcessing.series(case, "solidProbes/solidProbes.dat")
 check("pulse reached the probe", probes[:, 1].max() > 25e6,
       f"peak pressure {probes[:, 1].max()/1e6:.4g} MPa")
 
 # Rest after the pulse: particle velocity of the 50 MPa pulse in water is
 # 33 m/s; once it has left (t >= 110 ns) no node may keep 10 % of it
 up = 33.0
-with h5py.File(f"{case}/solid/solid.h5", "r") as f:
-    steps = sorted(f["steps"], key=int)
-    times = np.array([f["steps"][k].attrs["time"] for k in steps])
+with SolidResults(f"{case}/solid/solid.h5") as f:
+    steps = f.steps()
+    times = np.array(f.times())
     late = [k for k, t in zip(steps, times) if t >= 110e-9]
-    vmax = max(np.abs(f["steps"][k]["velocity"][:]).max() for k in late)
-    Jmin = min(f["steps"][k]["J"][:].min() for k in steps)
-    Jmax = max(f["steps"][k]["J"][:].max() for k in steps)
+    vmax = max(np.abs(f.field(k, "velocity")).max() for k in late)
+    Jmin = min(f.field(k, "J").min() for k in steps)
+    Jmax = max(f.field(k, "J").max() for k in steps)
 check("no drift after the pulse", vmax < 0.1*up,
       f"largest nodal speed component from 110 ns {vmax:.3g} m/s "
       f"(< {0.1*up:.3g} m/s) over {len(late)} writes")

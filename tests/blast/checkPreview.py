@@ -7,6 +7,8 @@ import re
 import sys
 import numpy as np
 
+from neuronFsi import logs, postProcessing
+
 case, Z = sys.argv[1], float(sys.argv[2])
 a, H = 8.4e-6, 7.9e-6
 ok = True
@@ -21,23 +23,19 @@ def check(name, value, ref, tol):
           f" (relative {err:.2e}, tolerance {tol:g})")
 
 
-log = open(f"{case}/log.cellBlastFoam").read()
-m = re.search(r"FSI map check: unit pressure, fluid force \(full ring, "
-              r"\(r z 0\)\) \((\S+) (\S+) \S+\) N, solid nodal force "
-              r"\((\S+) (\S+) \S+\) N", log)
-fr, fz, sr, sz = map(float, m.groups())
+(fr, fz, _), (sr, sz, _) = logs.fsiMapCheck(f"{case}/log.cellBlastFoam")
 check("map conservation, radial", sr, fr, 1e-12)
 check("map conservation, axial", sz, fz, 1e-12)
 check("axial ring force = -pi a^2", fz, -math.pi*a*a, 1e-9)
 check("radial ring force ~ -pi^2 a H/2", fr, -math.pi**2*a*H/2, 1e-3)
 
 # Arrival at the probe element (its centroid from the header)
-f = f"{case}/postProcessing/solidProbes/0/solidProbes.dat"
+log = "solidProbes/solidProbes.dat"
 zc = None
-for line in open(f):
-    if line.startswith("# probe 0"):
+for line in postProcessing.header(case, log):
+    if line.startswith("probe 0"):
         zc = float(re.search(r"centroid \S+ (\S+) ", line).group(1))
-d = np.loadtxt(f)
+d = postProcessing.series(case, log)
 t, p = d[:, 0], d[:, 1]
 rho0, C0, s, pulse = 1000.0, 1450.0, 1.99, 50e6
 up = (-C0 + math.sqrt(C0**2 + 4*s*pulse/rho0))/(2*s)
@@ -51,7 +49,7 @@ arrival = t[np.argmax(p > p.max()/2)]
 check(f"arrival at the probe (z = {zc*1e6:.3f} um, Us = {Us:.2f} m/s) [s]",
       arrival, 0.05e-9 + (Z - zc)/Us, 0.03)
 
-c = np.loadtxt(f"{case}/postProcessing/fsi/0/coupling.dat")
+c = postProcessing.series(case, "fsi/coupling.dat")
 nc = int(np.sum(c[:, 4] == 0))
 print(f"{'ok  ' if nc == 0 else 'FAIL'} coupling: {len(c)} steps, "
       f"iterations mean {c[:, 2].mean():.2f} max {int(c[:, 2].max())}, "

@@ -15,19 +15,14 @@ import re
 import sys
 import numpy as np
 
+from neuronFsi import foamDict, logs, postProcessing
+
 case, L = sys.argv[1], float(sys.argv[2])
 mode = sys.argv[3] if len(sys.argv) > 3 else "arrival"
 if mode not in ("arrival", "atRest"):
     sys.exit(f"checkQuarter3D.py: mode {mode}: arrival or atRest")
 a, H = 8.4e-6, 7.9e-6
 ok = True
-
-
-def load(f):
-    """Rows of a column file; a last line cut by a failed run is dropped"""
-    rows = [line.split() for line in open(f) if not line.startswith("#")]
-    n = len(rows[0])
-    return np.array([r for r in rows if len(r) == n], dtype=float)
 
 
 def check(name, value, ref, tol):
@@ -43,11 +38,8 @@ def check(name, value, ref, tol):
 # projected areas, pi a H/4 on x = 0 and y = 0 (quarter ellipses) and
 # pi a^2/4 on z = 0; the fluid's surface is inscribed (faces of about
 # 1 um on radii of 8 um: areas about 0.5 % smaller)
-log = open(f"{case}/log.cellBlastFoam").read()
-m = re.search(r"FSI map check: unit pressure, fluid force \((\S+) (\S+) "
-              r"(\S+)\) N, solid nodal force \((\S+) (\S+) (\S+)\) N", log)
-fluid = [float(x) for x in m.groups()[:3]]
-solid = [float(x) for x in m.groups()[3:]]
+log = f"{case}/log.cellBlastFoam"
+fluid, solid = logs.fsiMapCheck(log)
 exact = [-math.pi*a*H/4, -math.pi*a*H/4, -math.pi*a*a/4]
 for i, c in enumerate("xyz"):
     check(f"map conservation, {c}", solid[i], fluid[i], 1e-12)
@@ -57,17 +49,15 @@ for i, c in enumerate("xyz"):
 # load pressure (the fluid pressure on the solid's own faces): its total
 # force for a unit pressure is the solid surface's, within 1 % of the exact
 # projected areas and 0.5 % of the fluid's (two discretized surfaces)
-m = re.search(r"uniform pressure 1 Pa: total force on the solid \((\S+) (\S+) "
-              r"(\S+)\) N against the fluid's \((\S+) (\S+) (\S+)\) N", log)
-pressureLoad = re.search(r"^\s*load\s+pressure\s*;",
-                         open(f"{case}/constant/fsiProperties").read(), re.M)
+m = logs.pressureLoadCheck(log)
+pressureLoad = foamDict.read(f"{case}/constant/fsiProperties").get(
+    "interface", {}).get("load") == "pressure"
 if pressureLoad and not m:
     print("FAIL load pressure is set, but the log has no unit-pressure "
           "check of it")
     ok = False
 if m:
-    ps = [float(x) for x in m.groups()[:3]]
-    pf = [float(x) for x in m.groups()[3:]]
+    ps, pf = m
     for i, c in enumerate("xyz"):
         check(f"pressure load, unit-pressure force {c} = minus the projected "
               "area", ps[i], exact[i], 1e-2)
@@ -75,17 +65,16 @@ if m:
               5e-3)
 
 # Arrival at the probe element (its centroid from the header)
-f = f"{case}/postProcessing/solidProbes/0/solidProbes.dat"
 zc = None
-for line in open(f):
-    if line.startswith("# probe 0"):
+for line in postProcessing.header(case, "solidProbes/solidProbes.dat"):
+    if line.startswith("probe 0"):
         zc = float(re.search(r"centroid \S+ \S+ (\S+) ", line).group(1))
-d = load(f)
+d = postProcessing.series(case, "solidProbes/solidProbes.dat")
 if not np.isfinite(d).all():
     print("FAIL NaN or Inf in solidProbes.dat")
     sys.exit(1)
 t, p = d[:, 0], d[:, 1]
-c = load(f"{case}/postProcessing/fsi/0/coupling.dat")
+c = postProcessing.series(case, "fsi/coupling.dat")
 if mode == "atRest":
     vmax = c[:, 8].max()
     good = vmax < 1e-9 and abs(p).max() < 1.0

@@ -22,11 +22,12 @@ every dataset within TOL of its largest magnitude over the steps
 (--bitwise: equal).
 """
 import argparse
-import glob
 import os
 import sys
 
 import numpy as np
+
+from neuronFsi import postProcessing
 
 # log, columns compared (None: all), exact columns, complete
 LOGS = (
@@ -37,30 +38,6 @@ LOGS = (
     ("solidProbes/solidProbes.dat", None, (0,), True),
     ("solidInterfaces/interfaceMaxima.dat", None, (0,), True),
 )
-
-
-def rows(path, ncols):
-    """Data rows of a log with ncols columns (a line cut by a kill has
-    fewer columns or is no number and is left out)."""
-    out = []
-    for line in open(path):
-        if not line.strip() or line.startswith('#'):
-            continue
-        try:
-            r = [float(x) for x in line.split()]
-        except ValueError:
-            continue
-        if len(r) == ncols:
-            out.append(r)
-    return np.array(out).reshape(-1, ncols)
-
-
-def segments(case, log):
-    """(start time, path) of every start's log, earliest first."""
-    d, name = log.split('/')
-    found = glob.glob(os.path.join(case, "postProcessing", d, "*", name))
-    return sorted((float(os.path.basename(os.path.dirname(p))), p)
-                  for p in found)
 
 
 def main():
@@ -75,20 +52,21 @@ def main():
     ref, killed, tol, bitwise = a.ref, a.killed, a.tol, a.bitwise
     ok = True
     for log, cols, exact, complete in LOGS:
-        segs = segments(ref, log)
-        if not segs:
+        try:
+            segs = postProcessing.segments(ref, log)
+        except postProcessing.ColumnFileError:
             continue
-        ncols = max(len(l.split()) for l in open(segs[0][1])
-                    if l.strip() and not l.startswith('#'))
-        r = rows(segs[0][1], ncols)
-        ks = segments(killed, log)
+        r = postProcessing.readTable(segs[0][1]).data()
+        ncols = r.shape[1]
+        ks = postProcessing.segments(killed, log)
         compared = missing = 0
         worst = np.zeros(ncols)
         same = True
         # Each start's rows up to the first row of the next start (the
         # directory names are rounded to timePrecision: rows, not names,
         # delimit the starts)
-        segs = [(t0, rows(path, ncols)) for t0, path in ks]
+        segs = [(t0, postProcessing.readTable(path).data())
+                for t0, path in ks]
         segs = [(t0, k) for t0, k in segs if len(k)]
         for i, (t0, k) in enumerate(segs):
             t1 = segs[i + 1][1][0, 0] if i + 1 < len(segs) else np.inf

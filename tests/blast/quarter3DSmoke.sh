@@ -26,7 +26,6 @@ work=${TMPDIR:-/tmp}/quarter3DSmoke.$$
 trap 'rm -rf "$work" "$work.log"' EXIT
 mkdir -p "$work/quarter3D"
 src=$here/../../tutorials/blast
-cp "$src/plotBlast.py" "$work/"
 for f in 0.orig constant system Allrun
 do
     cp -r "$src/quarter3D/$f" "$work/quarter3D/"
@@ -45,7 +44,7 @@ ls "$case"/VTK/solid > /dev/null
 /usr/bin/python3 "$here/checkQuarter3D.py" "$case" 20e-6 "$mode"
 # The tutorial's pictures (Fig. 10 curves, interface maxima, the cell with
 # a quarter cut away at the write nearest 65.5 ns)
-/usr/bin/python3 "$work/plotBlast.py" "$case" > "$work.log" 2>&1 \
+/usr/bin/python3 "$src/plotBlast.py" "$case" > "$work.log" 2>&1 \
     || { cat "$work.log"; exit 1; }
 for png in fig10 interfaceMaxima snapshot65.5ns
 do

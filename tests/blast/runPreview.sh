@@ -9,7 +9,6 @@ src=$here/../../tutorials/blast
 dir=$1; shift
 rm -rf "$dir"
 mkdir -p "$dir/axisymmetricPreview"
-cp "$src/fluidWedgeMesh.py" "$src/plotBlast.py" "$dir/"
 for f in 0.orig constant system Allrun
 do
     cp -r "$src/axisymmetricPreview/$f" "$dir/axisymmetricPreview/"

@@ -26,7 +26,7 @@ ls "$case"/VTK/solid > /dev/null
 /usr/bin/python3 "$here/checkPreview.py" "$case" 30e-6
 # The tutorial's pictures (Fig. 10 curves, interface maxima, the r-z
 # section at the write nearest 65.5 ns)
-/usr/bin/python3 "$work/plotBlast.py" "$case" > "$work.log" 2>&1 \
+/usr/bin/python3 "$here/../../tutorials/blast/plotBlast.py" "$case" > "$work.log" 2>&1 \
     || { cat "$work.log"; rm -f "$work.log"; exit 1; }
 rm -f "$work.log"
 for png in fig10 interfaceMaxima snapshot65.5ns

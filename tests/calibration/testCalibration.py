@@ -62,7 +62,7 @@ def write_dict(case, parameters, targets, extra=""):
 def calibrate(case, work):
     t0 = time.time()
     p = subprocess.run(["/usr/bin/python3", os.path.join(tool,
-                                                         "calibrateCell"),
+                                                         "calibrateCell.py"),
                         "-case", case, "-work", work],
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                        universal_newlines=True)

@@ -33,8 +33,7 @@ import tempfile
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import mshReader  # noqa: E402
+from neuronFsi import msh
 
 root = os.path.abspath(os.path.join(os.path.dirname(__file__), "../.."))
 D, H, t, f = 16.8e-6, 7.9e-6, 200e-9, 1.0/3.0
@@ -63,7 +62,7 @@ def run(case, entries):
     if p.returncode != 0:
         print(p.stdout[-3000:], p.stderr[-3000:])
         sys.exit(f"cellMesh failed in {case}")
-    return mshReader.read(os.path.join(case, "constant/cell.msh"))
+    return msh.read(os.path.join(case, "constant/cell.msh"))
 
 
 def ellipseDistance(P):

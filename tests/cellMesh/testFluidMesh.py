@@ -34,6 +34,8 @@ import tempfile
 
 import numpy as np
 
+from neuronFsi import msh
+
 root = os.path.abspath(os.path.join(os.path.dirname(__file__), "../.."))
 D, H, t = 16.8e-6, 7.9e-6, 200e-9
 a = D/2
@@ -53,31 +55,10 @@ def sh(cmd, case):
 
 
 def read2(path):
-    """gmsh 2.2 ASCII: nodes, and elements (type, physical name, nodes)"""
-    with open(path) as f:
-        lines = f.read().split("\n")
-    i = 0
-    names, X, elems = {}, {}, []
-    while i < len(lines):
-        if lines[i] == "$PhysicalNames":
-            n = int(lines[i + 1])
-            for l in lines[i + 2:i + 2 + n]:
-                d, tag, name = l.split(maxsplit=2)
-                names[int(tag), int(d)] = name.strip('"')
-        elif lines[i] == "$Nodes":
-            n = int(lines[i + 1])
-            for l in lines[i + 2:i + 2 + n]:
-                v = l.split()
-                X[int(v[0])] = np.array([float(x) for x in v[1:4]])
-        elif lines[i] == "$Elements":
-            n = int(lines[i + 1])
-            for l in lines[i + 2:i + 2 + n]:
-                v = [int(x) for x in l.split()]
-                typ, ntags = v[1], v[2]
-                dim = {2: 2, 3: 2, 4: 3, 5: 3, 6: 3, 7: 3}[typ]
-                elems.append((typ, names[v[3], dim], v[3 + ntags:]))
-        i += 1
-    return X, elems
+    """nodes, and elements (type, physical name, nodes) of a gmsh file"""
+    X, groups = msh.read(path)
+    return X, [(e[2], name, e[3]) for name, (dim, els) in groups.items()
+               for e in els]
 
 
 def meanEdge(X, elems, patch, across):

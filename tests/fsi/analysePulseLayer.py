@@ -17,6 +17,8 @@ Usage: analysePulseLayer.py <case> <rho0s>   (one line of key=value)"""
 import sys
 import numpy as np
 
+from neuronFsi.postProcessing import series
+
 case = sys.argv[1]
 rho0s = float(sys.argv[2])
 rho0, C0, s, pInc = 1000.0, 1450.0, 1.99, 50e6
@@ -62,10 +64,9 @@ def exactInterface():
     # the difference decreases with p: reverse for np.interp
     return np.interp(0, (hugoniotP(rho0s, uR) - ps)[::-1], ps[::-1])
 
-fp = np.loadtxt(f"{case}/postProcessing/probes/0/p", comments="#")
-sp = np.loadtxt(f"{case}/postProcessing/solidProbes/0/solidProbes.dat",
-                comments="#")
-cp = np.loadtxt(f"{case}/postProcessing/fsi/0/coupling.dat", comments="#")
+fp = series(case, "probes/p")
+sp = series(case, "solidProbes/solidProbes.dat")
+cp = series(case, "fsi/coupling.dat")
 
 t = fp[:, 0]
 after = (t > 30e-9) & (t < 100e-9)

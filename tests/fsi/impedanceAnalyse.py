@@ -24,6 +24,8 @@ import math
 import sys
 import numpy as np
 
+from neuronFsi.postProcessing import series
+
 case = sys.argv[1]
 rho0s, C0s, pI = (float(a) for a in sys.argv[2:5])
 rho0, C0 = 1000.0, 1450.0
@@ -31,11 +33,9 @@ Z1, Z2 = rho0*C0, rho0s*C0s
 T, R = 2*Z2/(Z1 + Z2), (Z2 - Z1)/(Z1 + Z2)
 tc = 2.55e-9
 
-fp = np.loadtxt(f"{case}/postProcessing/probes/0/p", comments="#", ndmin=2)
-sp = np.loadtxt(f"{case}/postProcessing/solidProbes/0/solidProbes.dat",
-                comments="#", ndmin=2)
-cp = np.loadtxt(f"{case}/postProcessing/fsi/0/coupling.dat", comments="#",
-                ndmin=2)
+fp = series(case, "probes/p")
+sp = series(case, "solidProbes/solidProbes.dat")
+cp = series(case, "fsi/coupling.dat")
 nan = int(not (np.isfinite(fp).all() and np.isfinite(sp).all()
                and np.isfinite(cp).all()))
 

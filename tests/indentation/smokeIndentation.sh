@@ -7,15 +7,11 @@
 set -euo pipefail
 src=$(cd "$1" && pwd)
 root=$(cd "$(dirname "$0")/../.." && pwd)
+. "$root/etc/bashrc"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-mkdir -p "$work/tutorials/indentation"
-cp -r "$src" "$work/tutorials/indentation/"
-cp "$root"/tutorials/indentation/{meshCell,cellFallback.geo,plotIndentation.py,plotFields.py} \
-    "$work/tutorials/indentation/"
-ln -s "$root/etc" "$work/etc"
-ln -s "$root/platforms" "$work/platforms"
-case=$work/tutorials/indentation/$(basename "$src")
+cp -r "$src" "$work/"
+case=$work/$(basename "$src")
 cd "$case"
 /usr/bin/python3 - constant/indenterProperties <<'PY'
 import re, sys
@@ -40,13 +36,12 @@ if grep -l "FOAM FATAL" log.* 2>/dev/null; then
 fi
 ls indentation.png results.md fields_C1_i.png VTK/solid > /dev/null
 /usr/bin/python3 - <<'PY'
-rows = [l.split() for l in open("postProcessing/indentation/force.dat")
-        if not l.startswith("#")]
-peaks = {l.split()[0]: float(l.split()[3])
-         for l in open("postProcessing/indentation/peaks.dat")
-         if not l.startswith("#")}
-A = [float(r[2]) for r in rows if r[5] == "A"]
-B = [float(r[2]) for r in rows if r[5] == "B"]
+from neuronFsi.postProcessing import readTable
+f = readTable("postProcessing/indentation/force.dat")
+p = readTable("postProcessing/indentation/peaks.dat")
+peaks = dict(zip(p.column("label"), p.column("force")))
+A = [F for F, s in zip(f.column("force"), f.column("stage")) if s == "A"]
+B = [F for F, s in zip(f.column("force"), f.column("stage")) if s == "B"]
 assert A[-1] > 0 and all(b > a for a, b in zip(A[1:], A[2:])), A
 assert B[-1] < A[-1], "no relaxation in the hold"
 assert peaks["C1,i"] > 2*B[-1], peaks

@@ -21,6 +21,8 @@ import sys
 import tempfile
 import time
 
+from neuronFsi import postProcessing
+
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 TUTORIALS = os.path.join(ROOT, "tutorials", "verification")
 COLUMNS = ["nCells", "rho", "u", "p", "pStar", "rhoStarL", "rhoStarR",
@@ -73,10 +75,7 @@ def run(case, nCells, work, overrides, overlay=None, maxCo=None):
     foam(f"{app} > log.solver", dst)
     wall = time.perf_counter() - start
     foam("riemannError -latestTime > log.error", dst)
-    base = os.path.join(dst, "postProcessing", "riemannError")
-    latest = max(os.listdir(base), key=float)
-    with open(os.path.join(base, latest, "errors.dat")) as f:
-        values = [float(v) for v in f.read().split("\n")[1].split()]
+    values = postProcessing.latest(dst, "riemannError/errors.dat").data()[0]
     return dict(zip(COLUMNS, values)), wall
 
 

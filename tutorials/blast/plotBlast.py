@@ -16,13 +16,14 @@ Several cases (pulse or mesh study): the Fig. 10 curves on one figure
 <prefix>fig10.png, the interface maxima against time of every case on
 <prefix>interfaceMaxima.png and a summary table on stdout.
 """
-import glob
 import sys
 import os
 import numpy as np
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+
+from neuronFsi import logs, postProcessing
 
 args = sys.argv[1:]
 prefix, labels, cases, until = None, [], [], np.inf
@@ -41,37 +42,20 @@ if not cases:
 labels += [os.path.basename(os.path.abspath(c)) for c in cases[len(labels):]]
 
 
-def load(f):
-    """Rows of a column file (a last line still being written is skipped)"""
-    rows = [line.split() for line in open(f) if not line.startswith("#")]
-    n = len(rows[0])
-    return np.array([r for r in rows if len(r) == n], dtype=float)
-
-
 def series(case, log):
     """The rows of postProcessing/<dir>/<start>/<file> (log "dir/file")
     over every start of the run (a restart writes its rows under its start
-    time): each start's rows up to the next start, earliest first"""
-    d, name = log.split("/")
-    segs = sorted((float(os.path.basename(os.path.dirname(p))), p) for p in
-                  glob.glob(f"{case}/postProcessing/{d}/*/{name}"))
-    if not segs:
-        sys.exit(f"plotBlast.py: no {case}/postProcessing/{d}/*/{name}")
-    parts = []
-    for k, (t0, p) in enumerate(segs):
-        a = load(p)
-        if k + 1 < len(segs):
-            a = a[a[:, 0] <= segs[k + 1][0]*(1 + 1e-12)]
-        parts.append(a)
-    return np.vstack(parts)
+    time)"""
+    try:
+        return postProcessing.series(case, log)
+    except postProcessing.ColumnFileError as err:
+        sys.exit(f"plotBlast.py: {err}")
 
 
-def logHeader(case, log):
-    """the header lines of the run's first start of a log"""
-    d, name = log.split("/")
-    first = min(glob.glob(f"{case}/postProcessing/{d}/*/{name}"),
-                key=lambda p: float(os.path.basename(os.path.dirname(p))))
-    return [line for line in open(first) if line.startswith("#")]
+def interfaceNames(case):
+    """the region interfaces of solidInterfaces/interfaceMaxima.dat"""
+    return [n.split(":")[1] for n in postProcessing.names(
+        case, "solidInterfaces/interfaceMaxima.dat") if n.startswith("pMax:")]
 
 
 def probes(case):
@@ -87,11 +71,7 @@ def coupling(case):
 
 
 def wallTime(case):
-    for line in reversed(open(f"{case}/log.cellBlastFoam").readlines()):
-        if line.startswith("ExecutionTime"):
-            w = line.split()
-            return float(w[2]), float(w[6])
-    return float("nan"), float("nan")
+    return logs.executionTime(f"{case}/log.cellBlastFoam")
 
 
 def summary(case):
@@ -136,9 +116,7 @@ def fig10(cases, labels, out):
 
 def interfaceMaxima(case, out):
     d = series(case, "solidInterfaces/interfaceMaxima.dat")
-    names = [w.split(":")[1].split("[")[0] for w in
-             logHeader(case, "solidInterfaces/interfaceMaxima.dat")[1]
-             .split()[2:] if w.startswith("pMax")]
+    names = interfaceNames(case)
     fig, ax = plt.subplots(1, 2, figsize=(10, 4))
     for k, n in enumerate(names):
         ax[0].plot(d[:, 0]*1e9, d[:, 1 + 2*k]/1e6, label=n)
@@ -165,9 +143,7 @@ def interfaceMaximaCases(cases, labels, out):
     styles = ["-", "--", ":", "-."]
     for c, (case, lab) in enumerate(zip(cases, labels)):
         d = series(case, "solidInterfaces/interfaceMaxima.dat")
-        names = [w.split(":")[1].split("[")[0] for w in
-                 logHeader(case, "solidInterfaces/interfaceMaxima.dat")[1]
-                 .split()[2:] if w.startswith("pMax")]
+        names = interfaceNames(case)
         for k, n in enumerate(names):
             kw = dict(color=f"C{c}", ls=styles[k % 4], label=f"{lab} {n}")
             ax[0].plot(d[:, 0]*1e9, d[:, 1 + 2*k]/1e6, **kw)
@@ -275,19 +251,18 @@ def snapshot3D(tk, X, conn, p, vm, out):
 
 
 def snapshot(case, out, time=65.5e-9):
-    import h5py
     from matplotlib.collections import PolyCollection
-    with h5py.File(f"{case}/solid/solid.h5", "r") as f:
-        steps = f["steps"]
-        k = min(steps, key=lambda s: abs(steps[s].attrs["time"] - time))
-        tk = steps[k].attrs["time"]
-        conn = f["mesh/connectivity"][:]
-        p = steps[k]["pressure"][:]
-        vm = steps[k]["vonMises"][:]
-        if conn.shape[1] == 8:
-            X3 = f["mesh/coordinates"][:] + steps[k]["displacement"][:]
-            return snapshot3D(tk, X3, conn, p, vm, out)
-        X = f["mesh/coordinates"][:, :2] + steps[k]["displacement"][:, :2]
+    from neuronFsi.solidResults import SolidResults
+    with SolidResults(f"{case}/solid/solid.h5") as f:
+        k = f.nearest(time)
+        tk = f.time(k)
+        conn = f.mesh("connectivity")
+        p = f.field(k, "pressure")
+        vm = f.field(k, "vonMises")
+        X = f.mesh("coordinates") + f.field(k, "displacement")
+    if conn.shape[1] == 8:
+        return snapshot3D(tk, X, conn, p, vm, out)
+    X = X[:, :2]
     polys = X[conn]*1e6
     mirror = polys*np.array([-1, 1])
     fig, ax = plt.subplots(1, 2, figsize=(12, 4))

@@ -37,17 +37,15 @@ PY
             cellIndentationFoam > log.cellIndentationFoam 2>&1
         /usr/bin/python3 - "$s" <<'PY'
 import re, sys
-log = open("log.cellIndentationFoam").read()
-ne = re.search(r"(\d+) elements", log).group(1)
-wall = re.search(r"wall time ([0-9.]+) s", log).group(1)
-cpu = re.search(r"CPU time ([0-9.]+) s", log).group(1)
-its = re.search(r"(\d+) Newton iterations", log).group(1)
+from neuronFsi import logs, postProcessing
+run = logs.indentationRun("log.cellIndentationFoam")
+ne, wall, cpu = run["elements"], run["wall"], run["cpu"]
+its = run["newtonIterations"]
 mem = int(re.search(r"peakMemory (\d+) kB", open("log.time").read()).group(1))
-m = re.search(r"delta0 = ([0-9.eE+-]+) m", log)
-d0 = float(m.group(1))*1e6 if m else 1.41
-peaks = {l.split()[0]: float(l.split()[3])*1e9
-         for l in open("postProcessing/indentation/peaks.dat")
-         if not l.startswith("#")}
+d0 = run["delta0"]*1e6 if run["delta0"] is not None else 1.41
+table = postProcessing.readTable("postProcessing/indentation/peaks.dat")
+peaks = {label: force*1e9 for label, force in
+         zip(table.column("label"), table.column("force"))}
 keys = ["endB"] + ["C%d,%s" % (a, b) for a in (1, 2, 3)
                    for b in ("i", "ii", "iii")] + ["endE"]
 print("| %s | %s | %.3f | " % (sys.argv[1], ne, d0)

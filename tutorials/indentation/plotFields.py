@@ -13,51 +13,37 @@ the extremes per region.
 import os
 import sys
 
-import h5py
 import numpy as np
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from matplotlib.collections import PolyCollection
 
+from neuronFsi import msh, postProcessing
+from neuronFsi.solidResults import SolidResults
+
 case = sys.argv[1]
 label = sys.argv[2] if len(sys.argv) > 2 else "C1,i"
 out = os.path.join(case, "postProcessing", "indentation")
-peaks = {l.split()[0]: float(l.split()[1])
-         for l in open(os.path.join(out, "peaks.dat"))
-         if not l.startswith("#")}
+table = postProcessing.readTable(os.path.join(out, "peaks.dat"))
+peaks = dict(zip(table.column("label"), table.column("time")))
 if label not in peaks:
     sys.exit("plotFields: no peak '%s' in %s (have: %s)"
              % (label, os.path.join(out, "peaks.dat"), " ".join(peaks)))
 t = peaks[label]
-with h5py.File(os.path.join(out, "solid.h5"), "r") as f:
-    X = f["mesh/coordinates"][()]
-    conn = f["mesh/connectivity"][()]
-    region = f["mesh/region"][()]
-    steps = f["steps"]
-    k = min(steps, key=lambda s: abs(steps[s].attrs["time"] - t))
-    if abs(steps[k].attrs["time"] - t) > 1e-6*max(1, t):
+with SolidResults(os.path.join(out, "solid.h5")) as f:
+    X = f.mesh("coordinates")
+    conn = f.mesh("connectivity")
+    region = f.mesh("region")
+    k = f.nearest(t)
+    if abs(f.time(k) - t) > 1e-6*max(1, t):
         sys.exit("plotFields: no field step at t = %g s in solid.h5" % t)
-    u = steps[k]["displacement"][()]
-    p = steps[k]["pressure"][()]
-    vm = steps[k]["vonMises"][()]
+    u = f.field(k, "displacement")
+    p = f.field(k, "pressure")
+    vm = f.field(k, "vonMises")
 
 
-def regionNames(msh, dim):
-    """Names of the physical groups of dimension dim in the order of the
-    solid library's region ids (gmsh's order: by tag)"""
-    lines = open(msh).read().split("$PhysicalNames")[1].split("\n")[2:]
-    groups = []
-    for line in lines:
-        if line.startswith("$End"):
-            break
-        d, tag, name = line.split(None, 2)
-        if int(d) == dim:
-            groups.append((int(tag), name.strip().strip('"')))
-    return [n for _, n in sorted(groups)]
-
-
-names = regionNames(os.path.join(case, "constant", "cell.msh"), 2)
+names = msh.physicalNames(os.path.join(case, "constant", "cell.msh"), 2)
 x = (X + u)[:, :2]*1e6
 polys = [x[c] for c in conn]
 fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))

@@ -16,6 +16,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
+from neuronFsi import postProcessing
+
 # Jerusalem & Dao 2012, Table 3 (validation cell 14.2 x 7.6 um) [nN]
 PAPER_EXP = [11.5, 10.8, 10.3, 5.0, 4.9, 4.8, 3.0, 3.0, 3.0]
 PAPER_SIM = [11.5, 11.0, 10.2, 5.3, 4.6, 4.3, 2.5, 2.5, 2.5]
@@ -25,20 +27,13 @@ RATES = {"C1": "10 um/s", "C2": "1 um/s", "C3": "0.1 um/s"}
 
 def read(case):
     d = os.path.join(case, "postProcessing", "indentation")
-    rows = []
-    with open(os.path.join(d, "force.dat")) as f:
-        for line in f:
-            if line.startswith("#"):
-                continue
-            t, z, F, a, pen, stage = line.split()
-            rows.append((float(t), float(z), float(F), stage))
-    peaks = {}
-    with open(os.path.join(d, "peaks.dat")) as f:
-        for line in f:
-            if line.startswith("#"):
-                continue
-            label, t, z, F = line.split()
-            peaks[label] = (float(t), float(z), float(F))
+    f = postProcessing.readTable(os.path.join(d, "force.dat"))
+    rows = list(zip(f.column("time"), f.column("depth"), f.column("force"),
+                    f.column("stage")))
+    p = postProcessing.readTable(os.path.join(d, "peaks.dat"))
+    peaks = {label: (t, z, F) for label, t, z, F in zip(
+        p.column("label"), p.column("time"), p.column("depth"),
+        p.column("force"))}
     return rows, peaks
 
 

@@ -9,7 +9,7 @@ import shutil
 import subprocess
 import time
 
-import foamDict
+from neuronFsi import foamDict
 
 MESH_SIZES = ("nucleusSize", "cytoplasmSize", "membraneSize", "contactSize")
 

@@ -2,9 +2,10 @@
 """Axis column vs its neighbours over time: pressure of the axis element
 (r < 0.25 um) and the mean of the next ring (0.4 < r < 0.9 um) per z layer
 above z0; vz of axis nodes."""
-import sys, h5py, numpy as np
-f = h5py.File(sys.argv[1], 'r')
-X = f['mesh/coordinates'][:]; conn = f['mesh/connectivity'][:]
+import sys, numpy as np
+from neuronFsi.solidResults import SolidResults
+f = SolidResults(sys.argv[1])
+X = f.mesh('coordinates'); conn = f.mesh('connectivity')
 C = X[conn].mean(axis=1); r = np.hypot(C[:, 0], C[:, 1])
 z0 = float(sys.argv[2]) if len(sys.argv) > 2 else 6.0e-6
 RA = float(sys.argv[3]) if len(sys.argv) > 3 else 0.25e-6
@@ -14,10 +15,10 @@ an = np.where((np.hypot(X[:, 0], X[:, 1]) < 1e-9) & (X[:, 2] > z0))[0]
 an = an[np.argsort(-X[an, 2])]
 print('axis elements z [um]:', ' '.join('%.2f' % (C[e, 2]*1e6) for e in ax))
 print('axis nodes z [um]:   ', ' '.join('%.2f' % (X[a, 2]*1e6) for a in an))
-for s in sorted(f['steps'].keys(), key=int):
-    g = f['steps'][s]; t = g.attrs['time']*1e9
+for s in f.steps():
+    t = f.time(s)*1e9
     if t < 50: continue
-    p = g['pressure'][:].ravel()/1e6; v = g['velocity'][:]
+    p = f.field(s, 'pressure').ravel()/1e6; v = f.field(s, 'velocity')
     dp = []
     for e in ax:
         ring = np.where((r > 1.6*RA) & (r < 3.6*RA)

@@ -5,36 +5,20 @@ coupling passes per step over 0-55 / 55-90 / 90-110 / 110-150 ns of a
 blast case. The logs of every start of a restarted run are joined (a
 restart writes postProcessing/<log>/<start time>/).
 usage: late.py CASE"""
-import os
 import sys
 import numpy as np
 
+from neuronFsi.postProcessing import series
+
 case = sys.argv[1]
 
-
-def load(f):
-    """rows of a column file; comment lines and a cut last row skipped"""
-    rows = [l.split() for l in open(f) if not l.startswith('#') and l.strip()]
-    n = len(rows[0])
-    return np.array([r for r in rows if len(r) == n], float)
-
-
-def series(sub, name):
-    """the rows of every start, each up to the next start"""
-    ds = sorted(os.listdir(f'{case}/postProcessing/{sub}'), key=float)
-    parts = [load(f'{case}/postProcessing/{sub}/{d}/{name}') for d in ds]
-    out = [a[a[:, 0] <= float(ds[k + 1])*(1 + 1e-12)]
-           if k + 1 < len(parts) else a for k, a in enumerate(parts)]
-    return np.vstack(out)
-
-
-p = series('solidProbes', 'solidProbes.dat')
+p = series(case, 'solidProbes/solidProbes.dat')
 base = 1 + 5*((p.shape[1] - 1)//7)         # strain_z column of probe 0
 for T in (90, 100, 110, 120, 130, 140, 150):
     i = np.argmin(abs(p[:, 0] - T*1e-9))
     print(f"t {p[i, 0]*1e9:.1f} ns: probe p {p[i, 1]/1e6:.3f} MPa, von Mises "
           f"{p[i, 2]:.2f} Pa, strain_z {p[i, base]:.4f}")
-c = series('fsi', 'coupling.dat')
+c = series(case, 'fsi/coupling.dat')
 w = c[:, 0] > 110e-9
 print(f"interface velocity: max after 110 ns {c[w, 8].max():.3g} m/s, at the "
       f"end {c[-1, 8]:.3g} m/s")

@@ -1,17 +1,18 @@
 #!/usr/bin/python3
 """vz of the nodes at the height of each axis node (|dz| < 0.03 um, r < Rmax)
 by radius, at the given times."""
-import sys, h5py, numpy as np
-f = h5py.File(sys.argv[1], 'r')
-X = f['mesh/coordinates'][:]
+import sys, numpy as np
+from neuronFsi.solidResults import SolidResults
+f = SolidResults(sys.argv[1])
+X = f.mesh('coordinates')
 R = np.hypot(X[:, 0], X[:, 1])
 an = np.where((R < 1e-9) & (X[:, 2] > 6.5e-6))[0]
 an = an[np.argsort(-X[an, 2])]
 want = [float(a) for a in sys.argv[2:]]
-for s in sorted(f['steps'].keys(), key=int):
-    g = f['steps'][s]; t = g.attrs['time']*1e9
+for s in f.steps():
+    t = f.time(s)*1e9
     if not any(abs(t - w) < 0.1 for w in want): continue
-    v = g['velocity'][:]; u = g['displacement'][:]
+    v = f.field(s, 'velocity'); u = f.field(s, 'displacement')
     print('--- %.2f ns' % t)
     for a in an:
         n = np.where((abs(X[:, 2] - X[a, 2]) < 0.03e-6) & (R < 2.5e-6))[0]

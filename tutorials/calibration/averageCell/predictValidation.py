@@ -4,13 +4,14 @@ materials: tutorials/indentation/validationCell (default mesh, stage A to
 against the paper's Table 3 in validationCell/results.md."""
 
 import os
-import re
 import shutil
 import subprocess
 import sys
 
+from neuronFsi import logs, postProcessing
+
 here = os.path.dirname(os.path.abspath(__file__))
-src = os.path.join(here, "../../indentation/validationCell")
+src = os.path.join(os.environ["FOAM_TUTORIALS"], "indentation/validationCell")
 case = os.path.join(here, "validationCell")
 calibrated = os.path.join(here, "constant/solidProperties.calibrated")
 if not os.path.isfile(calibrated):
@@ -31,14 +32,12 @@ for app in ("cellMesh", "cellIndentationFoam"):
 labels = ["C%d,%s" % (c, r) for c in (1, 2, 3) for r in ("i", "ii", "iii")]
 experiment = [11.5, 10.8, 10.3, 5.0, 4.9, 4.8, 3.0, 3.0, 3.0]
 simulation = [11.5, 11.0, 10.2, 5.3, 4.6, 4.3, 2.5, 2.5, 2.5]
-peaks = {l.split()[0]: float(l.split()[3])*1e9
-         for l in open(os.path.join(case, "postProcessing/indentation/"
-                                          "peaks.dat"))
-         if not l.startswith("#")}
-log = open(os.path.join(case, "log.cellIndentationFoam")).read()
-delta0 = float(re.search(r"delta0 = (\S+) m", log).group(1))*1e6
-cpu = float(re.search(r"CPU time ([0-9.]+) s", log).group(1))
-ne = int(re.search(r"(\d+) elements", log).group(1))
+table = postProcessing.readTable(os.path.join(
+    case, "postProcessing/indentation/peaks.dat"))
+peaks = {label: force*1e9 for label, force in
+         zip(table.column("label"), table.column("force"))}
+run = logs.indentationRun(os.path.join(case, "log.cellIndentationFoam"))
+delta0, cpu, ne = run["delta0"]*1e6, run["cpu"], run["elements"]
 ours = [peaks[k] for k in labels]
 err = [100*(o/e - 1) for o, e in zip(ours, experiment)]
 L = ["Validation cell with the calibrated materials: %d elements, delta0 = "

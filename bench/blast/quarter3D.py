@@ -23,7 +23,7 @@ on --ranks N ranks (Allrun -np N -noRun: decomposePar, simple (N 1 1);
 mpirun -np N cellBlastFoam -parallel), right after its serial run: the
 speed-up side by side.
 
-    bench/blast/quarter3D [--quick] [--out DIR] [--doc FILE]
+    bench/blast/quarter3D.py [--quick] [--out DIR] [--doc FILE]
                           [--factors "1 0.7"] [--endTime s] [--ranks 2]
 
 Full: factors 1 0.7 to 3 ns; --quick: 1.4 1 to 1 ns, written into --out
@@ -39,6 +39,8 @@ import subprocess
 import sys
 
 import numpy as np
+
+from neuronFsi import logs, msh, postProcessing
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
@@ -57,42 +59,10 @@ def foamEnv():
                 res.stdout.decode().split("\0") if "=" in v)
 
 
-def load(f):
-    rows = [line.split() for line in open(f) if not line.startswith("#")]
-    rows = [r for r in rows if r]
-    n = len(rows[0])
-    return np.array([r for r in rows if len(r) == n], dtype=float)
-
-
-def mshElements(path, types):
-    """number of elements of the given gmsh types in an ASCII MSH 2/4
-    file"""
-    lines = open(path).read().split("\n")
-    fmt = lines[lines.index("$MeshFormat") + 1].split()[0]
-    i = lines.index("$Elements")
-    n = 0
-    if fmt.startswith("4"):
-        nb = int(lines[i + 1].split()[0])
-        k = i + 2
-        for _ in range(nb):
-            dim, tag, typ, num = map(int, lines[k].split())
-            if typ in types:
-                n += num
-            k += num + 1
-    else:
-        for l in lines[i + 2:int(lines[i + 1]) + i + 2]:
-            if int(l.split()[1]) in types:
-                n += 1
-    return n
-
-
 def timeV(path):
-    t = open(path).read()
-    rss = int(re.search(r"Maximum resident set size \(kbytes\): (\d+)",
-                        t).group(1))/1024
-    w = re.search(r"Elapsed \(wall clock\) time \(h:mm:ss or m:ss\): (\S+)",
-                  t).group(1).split(":")
-    return rss, sum(float(x)*60**k for k, x in enumerate(reversed(w)))
+    """/usr/bin/time -v: max RSS [MB], wall [s]"""
+    r = logs.timeV(path)
+    return r["rss"]/1024, r["wall"]
 
 
 def caseDir(out, f, ranks):
@@ -124,9 +94,8 @@ def runLevel(f, out, endTime, env, ranks=1):
     if res.returncode != 0 or not os.path.isdir(os.path.join(c, "0")):
         sys.stdout.write(res.stdout[-3000:])
         raise RuntimeError(f"Allrun (prepare) failed in {c}")
-    cells = int(re.search(r"^\s*cells:\s+(\d+)", open(os.path.join(
-        c, "log.checkMesh")).read(), re.M).group(1))
-    elements = mshElements(os.path.join(c, "constant", "cell.msh"), {5})
+    cells = logs.checkMeshCells(os.path.join(c, "log.checkMesh"))
+    elements = msh.elementCount(os.path.join(c, "constant", "cell.msh"), {5})
     print(f"3D x{f}: {cells} fluid cells, {elements} solid hexahedra; "
           f"running cellBlastFoam on {ranks} rank(s) ...", flush=True)
     solver = ["cellBlastFoam"] if ranks == 1 else \
@@ -154,30 +123,19 @@ def parseLevel(f, out, endTime, ranks=1):
     c = os.path.join(caseDir(out, f, ranks), "quarter3D")
     s = {k: v*float(f) for k, v in DEFAULT.items()}
     cmd = levelCommand(f, endTime, ranks)
-    cells = int(re.search(r"^\s*cells:\s+(\d+)", open(os.path.join(
-        c, "log.checkMesh")).read(), re.M).group(1))
-    elements = mshElements(os.path.join(c, "constant", "cell.msh"), {5})
-    t = open(os.path.join(c, "log.time")).read()
-    m = re.search(r"Exit status: (\d+)", t)
-    rc = int(m.group(1)) if m else -1
+    cells = logs.checkMeshCells(os.path.join(c, "log.checkMesh"))
+    elements = msh.elementCount(os.path.join(c, "constant", "cell.msh"), {5})
+    rc = logs.timeV(os.path.join(c, "log.time"))["status"]
+    rc = -1 if rc is None else rc
     rss, wallV = timeV(os.path.join(c, "log.time"))
     lp = os.path.join(c, "log.load")
     loadAvg = [float(v) for v in open(lp).read().split()] \
         if os.path.exists(lp) else [float("nan")]*3
-    cpu = wall = float("nan")
-    split = None
-    tLast = None
-    for line in open(os.path.join(c, "log.cellBlastFoam")):
-        if line.startswith("Time = "):
-            tLast = float(line.split()[2])
-        elif line.startswith("ExecutionTime"):
-            w = line.split()
-            cpu, wall = float(w[2]), float(w[6])
-        elif line.startswith("CPU time of the time loop"):
-            split = re.sub(r"(\d+\.\d+)(?= s)",
-                           lambda m: f"{float(m.group(1)):.1f}",
-                           line.strip())
-    d = load(os.path.join(c, "postProcessing", "fsi", "0", "coupling.dat"))
+    log = os.path.join(c, "log.cellBlastFoam")
+    cpu, wall = logs.executionTime(log)
+    split = logs.cpuSplit(log)
+    tLast = logs.lastTime(log)
+    d = postProcessing.series(c, "fsi/coupling.dat")
     loop = float(re.search(r"time loop ([0-9.]+) s", split).group(1)) \
         if split else float("nan")
     r = dict(factor=f, ranks=ranks, sizes=s, cells=cells, elements=elements,
@@ -280,7 +238,7 @@ def main():
       "the 3D quarter: docs/results/blast3D.md; of the axisymmetric "
       "preview per mesh: [blast.md](blast.md).")
     w("")
-    w(f"Written by `bench/blast/quarter3D` ({mode}) on "
+    w(f"Written by `bench/blast/quarter3D.py` ({mode}) on "
       f"{start.strftime('%Y-%m-%d %H:%M')} UTC, commit {commit}"
       + (" (with uncommitted changes in src/, applications/, "
          "tutorials/blast or bench/blast)" if dirty else "")

@@ -4,17 +4,14 @@ exact Hugoniot gives: the 50 MPa incident plateau, its arrival at mid-column
 (the shock speed C0 + s up) and the pressure of its reflection from the rigid
 wall (two colliding 50 MPa states, from the exact Riemann solver). Writes
 probes.png and prints the measured peaks."""
-import os
-import sys
-
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-base = os.path.join("postProcessing", "probes")
-start = sorted(os.listdir(base), key=float)[0]
-data = np.loadtxt(os.path.join(base, start, "p"), comments="#")
+from neuronFsi import postProcessing
+
+data = postProcessing.series(".", "probes/p")
 t, pMid, pWall = data[:, 0], data[:, 1], data[:, 2]
 
 fig, ax = plt.subplots(figsize=(7, 4))

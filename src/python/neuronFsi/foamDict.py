@@ -1,12 +1,16 @@
 """OpenFOAM dictionary text: read into Python values, and replace or add one
 entry in place (comments and layout of the rest of the file kept).
 
-Shared by calibrateCell and sweepCase (applications/utilities). Only the
-subset of the format the project's dictionaries use: nested
-sub-dictionaries, entries `key value...;`, lists `( ... )`, quoted strings,
-// and /* */ comments. No #include, no $variables.
+Used by calibrateCell and sweepCase (applications/utilities) and the
+scripts. Only the subset of the format the project's dictionaries use:
+nested sub-dictionaries, entries `key value...;`, lists `( ... )`, quoted
+strings, // and /* */ comments, and #include "file", #sinclude "file" (or
+#includeIfPresent) merged as OpenFOAM does (a later entry replaces an
+earlier one, sub-dictionaries are merged) when the text is read from a file
+by read(). No $variables, no other directives.
 """
 
+import os
 import re
 
 _TOKEN = re.compile(r'''
@@ -59,10 +63,20 @@ def _value(tok):
     return tok
 
 
-def parse(text, name="<text>"):
+def _merge(d, new):
+    """OpenFOAM's merge of a dictionary read later into d."""
+    for k, v in new.items():
+        if isinstance(v, dict) and isinstance(d.get(k), dict):
+            _merge(d[k], v)
+        else:
+            d[k] = v
+
+
+def parse(text, name="<text>", base=None):
     """Nested dict of the file. An entry of one token is that value (int,
     float, bool for yes/no/true/false/on/off, or str); of several tokens or
-    a list, a Python list; the FoamFile header is dropped."""
+    a list, a Python list; the FoamFile header is dropped. Include
+    directives name files relative to the directory base."""
     toks = tokens(text, name)
     i = [0]
 
@@ -86,6 +100,22 @@ def parse(text, name="<text>"):
             else:
                 items.append(_value(t))
 
+    def directive(key):
+        if key not in ("#include", "#sinclude", "#includeIfPresent"):
+            err("unsupported directive '%s' (valid: #include, #sinclude, "
+                "#includeIfPresent)" % key, i[0] - 1)
+        if i[0] >= len(toks) or not toks[i[0]][0].startswith('"'):
+            err("%s needs a quoted file name" % key, i[0] - 1)
+        if base is None:
+            err("%s in a text that is not a file" % key, i[0] - 1)
+        path = os.path.join(base, toks[i[0]][0][1:-1])
+        i[0] += 1
+        if not os.path.exists(path):
+            if key == "#include":
+                err("%s: no file %s" % (key, path), i[0] - 1)
+            return {}
+        return read(path)
+
     def parse_dict(closing):
         d = {}
         while i[0] < len(toks):
@@ -98,6 +128,9 @@ def parse(text, name="<text>"):
             if key in "{();":
                 err("expected a keyword, found '%s'" % key, i[0])
             i[0] += 1
+            if key.startswith("#"):
+                _merge(d, directive(key))
+                continue
             key = _value(key) if key.startswith('"') else key
             if i[0] < len(toks) and toks[i[0]][0] == "{":
                 i[0] += 1
@@ -128,8 +161,9 @@ def parse(text, name="<text>"):
 
 
 def read(path):
+    """Nested dict of a dictionary file (see parse), includes merged."""
     with open(path) as f:
-        return parse(f.read(), path)
+        return parse(f.read(), path, os.path.dirname(path) or ".")
 
 
 def set_entry(text, path, value, name="<text>"):

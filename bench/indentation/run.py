@@ -8,7 +8,7 @@ elements, the peak forces, Newton iterations, wall and CPU time of
 cellIndentationFoam and its peak resident memory (/usr/bin/time), with the
 difference of each peak to the finest mesh (speed against error).
 
-    bench/indentation/run [--quick] [--out DIR] [--doc FILE]
+    bench/indentation/run.py [--quick] [--out DIR] [--doc FILE]
 
 Full: size factors 1.4 1 0.7 0.5 (about 4 min CPU); --quick: 1.4 and 1
 (about 1 min CPU), written into --out. The case, its parameter set and
@@ -98,7 +98,7 @@ def report(rows, size, start, case):
     w("# Indentation protocol per mesh: cost against error")
     w("")
     stamp = start.strftime("%Y-%m-%d %H:%M")
-    w(f"Written by `bench/indentation/run` ({size}) on {stamp} UTC, "
+    w(f"Written by `bench/indentation/run.py` ({size}) on {stamp} UTC, "
       f"commit {commit}, {elapsed:.0f} s in all; load average "
       f"at the end {load} on {os.cpu_count()} shared cores, so wall times "
       "are noisy: the CPU time of the process is the one-core cost.")

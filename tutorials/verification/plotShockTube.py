@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Plot a shock-tube result against the exact solution.
 
-Usage: plotShockTube CASE_DIR
+Usage: plotShockTube.py CASE_DIR
 Reads CASE_DIR/postProcessing/riemannError/<latest time>/profile.dat (written
 by riemannError) and writes CASE_DIR/shockTube.png: density, velocity and
 pressure, computed (dots) and exact (line).
@@ -12,15 +12,17 @@ import sys
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
-import numpy as np
+
+from neuronFsi import postProcessing
 
 
 def main(case):
-    base = os.path.join(case, "postProcessing", "riemannError")
-    if not os.path.isdir(base):
-        sys.exit(f"plotShockTube: {base} not found: run riemannError first")
-    latest = max(os.listdir(base), key=float)
-    data = np.loadtxt(os.path.join(base, latest, "profile.dat"))
+    try:
+        latest, path = postProcessing.segments(
+            case, "riemannError/profile.dat")[-1]
+    except postProcessing.ColumnFileError as err:
+        sys.exit(f"plotShockTube: {err}: run riemannError first")
+    data = postProcessing.readTable(path).data()
     x = data[:, 0]
     fig, axes = plt.subplots(3, 1, figsize=(7, 8), sharex=True)
     labels = [("density [kg/m^3]", 1), ("velocity [m/s]", 3),

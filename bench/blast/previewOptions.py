@@ -24,7 +24,7 @@ and the Fig. 10 probe peaks over t <= 90 ns (the first passage), the
 largest nodal speed of the solid after 110 ns (late-time drift), and each
 difference to the default.
 
-    bench/blast/previewOptions [--out DIR] [--doc FILE] [--jobs 2]
+    bench/blast/previewOptions.py [--out DIR] [--doc FILE] [--jobs 2]
         [--options "default outer1+co0.5+tol1e-6 ..."] [--pulse 5e-9]
         [--reportOnly]
 
@@ -41,10 +41,12 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
+from neuronFsi.solidResults import SolidResults
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 _loader = importlib.machinery.SourceFileLoader("blastRun",
-                                               os.path.join(HERE, "run"))
+                                               os.path.join(HERE, "run.py"))
 _spec = importlib.util.spec_from_loader("blastRun", _loader)
 B = importlib.util.module_from_spec(_spec)
 _loader.exec_module(B)
@@ -103,16 +105,14 @@ def lateSpeed(c):
     """largest nodal speed component of the solid in the writes from
     110 ns on [m/s] (solid/solid.h5; tests/blast/checkLongRun.py's
     drift measure), None without such writes"""
-    import h5py
     p = os.path.join(c, "solid", "solid.h5")
     if not os.path.exists(p):
         return None
-    with h5py.File(p, "r") as f:
-        late = [k for k in f["steps"]
-                if f["steps"][k].attrs["time"] >= 110e-9]
+    with SolidResults(p) as f:
+        late = [k for k in f.steps() if f.time(k) >= 110e-9]
         if not late:
             return None
-        return max(float(np.abs(f["steps"][k]["velocity"][:]).max())
+        return max(float(np.abs(f.field(k, "velocity")).max())
                    for k in late)
 
 
@@ -130,7 +130,7 @@ def report(rows, start, end, commit, dirty, pulse):
     w = L.append
     w("# Blast preview per run option: cost against error")
     w("")
-    w(f"Written by `bench/blast/previewOptions` on "
+    w(f"Written by `bench/blast/previewOptions.py` on "
       f"{start.strftime('%Y-%m-%d %H:%M')} UTC, commit {commit}"
       + (" (with uncommitted changes)" if dirty else "")
       + f", {(end - start).total_seconds():.0f} s in all, runs two at a "

@@ -48,9 +48,7 @@ import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)),
-                                "..", "calibrateCell"))
-import foamDict  # noqa: E402
+from neuronFsi import foamDict, postProcessing
 
 
 class SweepError(Exception):
@@ -102,21 +100,18 @@ class Output:
         path = os.path.join(case, self.file)
         if not os.path.isfile(path):
             raise SweepError("output '%s': no file %s" % (self.name, path))
-        text = open(path).read()
         if self.regex:
-            found = self.regex.findall(text)
+            found = self.regex.findall(open(path).read())
             if not found:
                 raise SweepError("output '%s': no match of /%s/ in %s"
                                  % (self.name, self.regex.pattern, path))
             last = found[-1]
             return last[0] if isinstance(last, tuple) else last
-        header, rows = [], []
-        for line in text.splitlines():
-            if line.startswith("#"):
-                header = [re.split(r"\s*\[", h)[0] for h in re.findall(
-                    r"[^\s\[\]]+(?:\s*\[[^\]]*\])?", line.lstrip("#"))]
-            elif line.strip():
-                rows.append(line.split())
+        try:
+            table = postProcessing.readTable(path)
+        except postProcessing.ColumnFileError as err:
+            raise SweepError("output '%s': %s" % (self.name, err))
+        header, rows = table.names, table.rows
         if not rows:
             raise SweepError("output '%s': no data rows in %s"
                              % (self.name, path))

@@ -20,7 +20,7 @@ peak resident memory, and the Fig. 10 probe (cytoplasm-nucleus interface,
 negative) longitudinal strain ln(stretch_z) and strain rate over the window,
 arrival time (first p > 25 MPa); then each difference to the finest level.
 
-    bench/blast/run [--quick] [--out DIR] [--doc FILE]
+    bench/blast/run.py [--quick] [--out DIR] [--doc FILE]
                     [--factors "1.4 1 0.7"] [--endTime s]
 
 Full: factors 1.4 1 0.7, 100 um column to 150 ns, probe peaks over
@@ -40,6 +40,8 @@ import subprocess
 import sys
 
 import numpy as np
+
+from neuronFsi import logs, msh, postProcessing
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
@@ -62,14 +64,6 @@ def foamEnv():
                          check=True)
     return dict(v.split("=", 1) for v in
                 res.stdout.decode().split("\0") if "=" in v)
-
-
-def load(f):
-    """Rows of a column file (comment lines and a cut last line skipped)"""
-    rows = [line.split() for line in open(f) if not line.startswith("#")]
-    rows = [r for r in rows if r]
-    n = len(rows[0])
-    return np.array([r for r in rows if len(r) == n], dtype=float)
 
 
 def prepare(case, f, Z, endTime, env, extra=(), pulse=PULSE):
@@ -113,17 +107,8 @@ def prepare(case, f, Z, endTime, env, extra=(), pulse=PULSE):
 
 def timeV(path):
     """/usr/bin/time -v: max RSS [MB], user + system [s], wall [s]"""
-    t = open(path).read()
-    rss = int(re.search(r"Maximum resident set size \(kbytes\): (\d+)",
-                        t).group(1))/1024
-    user = float(re.search(r"User time \(seconds\): ([0-9.]+)", t).group(1))
-    syst = float(re.search(r"System time \(seconds\): ([0-9.]+)", t)
-                 .group(1))
-    w = re.search(r"Elapsed \(wall clock\) time \(h:mm:ss or m:ss\): (\S+)",
-                  t).group(1).split(":")
-    wall = sum(float(x)*60**k for k, x in enumerate(reversed(w)))
-    status = re.search(r"Exit status: (\d+)", t)
-    return rss, user + syst, wall, int(status.group(1)) if status else None
+    r = logs.timeV(path)
+    return r["rss"]/1024, r["user"] + r["system"], r["wall"], r["status"]
 
 
 def logTimes(log, window):
@@ -131,53 +116,22 @@ def logTimes(log, window):
     and at the first step with t >= window (the last step if the run
     ends within 0.1 ns of it); the last time reached [s];
     its CPU split line"""
-    t = None
-    atWindow = None
-    last = (float("nan"), float("nan"))
-    for line in open(log):
-        if line.startswith("Time = "):
-            t = float(line.split()[2])
-        elif line.startswith("ExecutionTime"):
-            w = line.split()
-            last = (float(w[2]), float(w[6]))
-            if atWindow is None and t is not None and t >= window:
-                atWindow = last
+    last = logs.executionTime(log)
+    atWindow = next(((cpu, clock) for t, cpu, clock in logs.timeSteps(log)
+                     if t >= window), None)
+    t = logs.lastTime(log)
     # OpenFOAM ends a run up to half a step short of endTime: a window at
     # the end time is reached within 0.1 ns
     if atWindow is None and t is not None and t >= window - 1e-10:
         atWindow = last
-    split = None
-    for line in open(log):
-        if line.startswith("CPU time of the time loop"):
-            # numbers to 0.1 s
-            split = re.sub(r"(\d+\.\d+)(?= s)",
-                           lambda m: f"{float(m.group(1)):.1f}", line.strip())
-    return last, atWindow, t, split
+    return last, atWindow, t, logs.cpuSplit(log)
 
 
 def count(c):
-    """fluid cells (checkMesh) and solid elements (the cell's MSH file)"""
-    m = re.search(r"^\s*cells:\s+(\d+)", open(os.path.join(
-        c, "log.checkMesh")).read(), re.M)
-    cells = int(m.group(1))
-    # MSH 2 or 4 (ASCII): the quads (type 3) of the $Elements section
-    lines = open(os.path.join(c, "constant", "cell.msh")).read().split("\n")
-    i = lines.index("$Elements")
-    fmt = next(l for l in lines if re.match(r"^[24](\.\d+)? ", l)).split()[0]
-    n = 0
-    if fmt.startswith("4"):
-        nb = int(lines[i + 1].split()[0])
-        k = i + 2
-        for _ in range(nb):
-            dim, tag, typ, num = map(int, lines[k].split())
-            if typ == 3:
-                n += num
-            k += num + 1
-    else:
-        for l in lines[i + 2:int(lines[i + 1]) + i + 2]:
-            if int(l.split()[1]) == 3:
-                n += 1
-    return cells, n
+    """fluid cells (checkMesh) and solid elements (the quads of the cell's
+    MSH file)"""
+    return (logs.checkMeshCells(os.path.join(c, "log.checkMesh")),
+            msh.elementCount(os.path.join(c, "constant", "cell.msh"), {3}))
 
 
 def runLevel(f, out, size, env):
@@ -227,20 +181,20 @@ def parseLevel(f, out, size, name=None):
              cpu=cpu, wall=wall, atWindow=atWindow, split=split,
              load=loadAvg)
     if rc != 0:
-        tail = open(os.path.join(c, "log.cellBlastFoam")).read()[-4000:]
-        m = re.findall(r"(?s)--> FOAM FATAL.*?(?=\n\n|\Z)", tail)
+        log = os.path.join(c, "log.cellBlastFoam")
+        tail = logs.text(log)[-4000:]
+        m = logs.fatalErrors(log)
         r["error"] = (m[-1] if m else tail[-1500:]).strip()
         print(f"factor {f}: cellBlastFoam FAILED (exit {rc}) "
               f"at t = {tLast} s:\n{r['error']}", flush=True)
-    d = load(os.path.join(c, "postProcessing", "fsi", "0", "coupling.dat"))
+    d = postProcessing.series(c, "fsi/coupling.dat")
     r.update(steps=len(d), itMean=d[:, 2].mean(), itMax=int(d[:, 2].max()),
              notConverged=int(np.sum(d[:, 4] == 0)), dtMin=d[:, 1].min(),
              dtMax=d[:, 1].max())
-    pf = os.path.join(c, "postProcessing", "solidProbes", "0",
-                      "solidProbes.dat")
+    pf = "solidProbes/solidProbes.dat"
     # the probe point and the element that samples it (its centroid)
-    for line in open(pf):
-        m = re.match(r"# probe 0 at \((\S+) (\S+) \S+\) m: element (\d+) "
+    for line in postProcessing.header(c, pf):
+        m = re.match(r"probe 0 at \((\S+) (\S+) \S+\) m: element (\d+) "
                      r"\(\"(\w+)\", centroid (\S+) (\S+) ", line)
         if m:
             pr0 = np.array([float(m.group(1)), float(m.group(2))])
@@ -248,7 +202,7 @@ def parseLevel(f, out, size, name=None):
             r.update(probePoint=pr0, probeElement=int(m.group(3)),
                      probeRegion=m.group(4), probeCentroid=ce,
                      probeOffset=float(np.linalg.norm(ce - pr0)))
-    p = load(pf)
+    p = postProcessing.series(c, pf)
     nProbe = (p.shape[1] - 1)//7
     base = 1 + 5*nProbe
     t, pr, vm, ez, rate = p[:, 0], p[:, 1], p[:, 2], p[:, base], \
@@ -366,7 +320,7 @@ def report(rows, size, mode, start, png, commit, dirty, end,
     w = L.append
     w("# Blast preview per mesh: cost against error")
     w("")
-    w(f"Written by `bench/blast/run` ({mode}) on "
+    w(f"Written by `bench/blast/run.py` ({mode}) on "
       f"{start.strftime('%Y-%m-%d %H:%M')} UTC, commit {commit}"
       + (" (with uncommitted changes in src/, applications/, "
          "tutorials/blast or bench/blast)" if dirty else "")

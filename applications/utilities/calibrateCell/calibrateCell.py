@@ -74,7 +74,7 @@ import numpy as np
 from scipy import optimize, stats
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-import foamDict  # noqa: E402
+from neuronFsi import foamDict  # noqa: E402
 from forwardModel import ForwardModel, ModelError  # noqa: E402
 from targets import Targets, TargetError  # noqa: E402
 

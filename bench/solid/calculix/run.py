@@ -42,6 +42,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 sys.path.insert(0, HERE)
 import hertzMesh  # noqa: E402
+from neuronFsi import logs  # noqa: E402
 
 LIB = os.path.join(ROOT, "platforms", "linux64GccDPInt32Opt", "lib")
 
@@ -82,12 +83,8 @@ def timed(cmd, cwd, tag):
     if res.returncode != 0:
         sys.stdout.write(res.stdout[-3000:])
         raise RuntimeError(f"{' '.join(cmd)} failed in {cwd}")
-    t = open(timeFile).read()
-    hms = re.search(r"Elapsed \(wall clock\) time.*: (\S+)", t).group(1)
-    wall = sum(float(x)*60**k for k, x in enumerate(reversed(hms.split(":"))))
-    rss = int(re.search(r"Maximum resident set size \(kbytes\): (\d+)",
-                        t).group(1))/1024
-    return res.stdout, wall, rss
+    t = logs.timeV(timeFile)
+    return res.stdout, t["wall"], t["rss"]/1024
 
 
 def build(out):
@@ -244,7 +241,7 @@ def report(rows, cax4, ref, FH, F0, slope, size, repeats, start):
     elapsed = (datetime.datetime.now() - start).total_seconds()
     w("# Solid benchmark: Hertz indentation, ours against CalculiX")
     w("")
-    w(f"Written by `bench/solid/calculix/run` ({size}) on "
+    w(f"Written by `bench/solid/calculix/run.py` ({size}) on "
       f"{start:%Y-%m-%d %H:%M}, {elapsed:.0f} s in all; the machine has "
       f"{os.cpu_count()} cores shared with other jobs, each code runs on "
       "one thread. Absolute times are context; the ratios come from pairs "

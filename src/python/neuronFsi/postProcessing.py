@@ -1,0 +1,193 @@
+"""Column files of our solvers: postProcessing/<name>/<startTime>/<file>.
+
+Every file starts with '#' header lines, one of which names the columns
+with their units ("# time [s]  dt [s]  iterations ..." or "# time [s]
+p0[Pa] vonMises0[Pa] ..."; a description may come before it, notes after
+it); then one row per time step ('#' lines after the rows, such as
+cellBlastFoam's closing summary, are notes). A run
+that is continued writes a new segment under its own start time; series()
+joins the segments in time order, a later segment replacing the rows of an
+earlier one from its first row on (the rows a stopped run wrote after its
+last write are computed again by the continued run).
+
+A run that was stopped may leave a last row cut in the middle: it is
+dropped. Any other malformed row is an error naming the file and line.
+"""
+
+import glob
+import os
+import re
+
+import numpy as np
+
+
+class ColumnFileError(Exception):
+    """A column file that cannot be read; the message names the file."""
+
+
+# a column name (up to blanks, '[' or '('), a component list "(x y z)" or a
+# unit "[Pa]"; two or more blanks separate groups of columns
+_HEADER_TOKEN = re.compile(r"\s{2,}|\s|\([^)]*\)|\[[^\]]*\]|[^\s\[(]+")
+
+
+def columnNames(line):
+    """(names, units) of a header line such as "# time [s]  dt [s]
+    interfaceForce (x y z) [N]  rho rhoExact [kg/m^3]  p0[Pa] vonMises0[Pa]".
+    A component list expands the name before it into name_x, name_y,
+    name_z. A unit glued to a name is that name's; after a blank it holds
+    for the names before it back to the previous unit or group (two or
+    more blanks). Units are '' where the header gives none."""
+    names, units = [], []
+    first = 0           # first column the next separate unit applies to
+    glued = False       # the previous token was a name, no blank between
+    for tok in _HEADER_TOKEN.findall(line.lstrip("#")):
+        if tok.isspace():
+            if len(tok) > 1:
+                first = len(names)
+            glued = False
+            continue
+        if tok[0] in "[(" and not names:
+            raise ColumnFileError("'%s' before any column name in '%s'"
+                                  % (tok, line))
+        if tok.startswith("["):
+            for k in range(len(names) - 1 if glued else first, len(names)):
+                units[k] = tok[1:-1]
+            first = len(names)
+        elif tok.startswith("("):
+            base = names.pop()
+            units.pop()
+            for c in tok[1:-1].split():
+                names.append(base + "_" + c)
+                units.append("")
+        else:
+            names.append(tok)
+            units.append("")
+        glued = not tok.startswith("[")
+    return names, units
+
+
+class Table:
+    """The header and rows of one column file.
+
+    header  the '#' lines before the rows, without the leading '# '
+    notes   the '#' lines after the first row (e.g. a closing summary)
+    names, units  the columns named by the header (the first line with as
+            many names as a row has columns; without rows, the last line)
+    rows    the rows as lists of strings
+    """
+
+    def __init__(self, path, header, rows):
+        self.path = path
+        self.header = header
+        self.rows = rows
+        self.names, self.units = [], []
+        # the names line: the first with as many names as a row has
+        # columns (a description may come before it, notes after it)
+        for line in header:
+            try:
+                names, units = columnNames(line)
+            except ColumnFileError:
+                continue
+            if rows and len(names) == len(rows[0]) or not rows:
+                self.names, self.units = names, units
+                if rows:
+                    break
+
+    def data(self):
+        """The rows as a float array (every column must be a number)."""
+        if not self.rows:
+            return np.empty((0, len(self.names)))
+        try:
+            return np.array(self.rows, dtype=float).reshape(
+                len(self.rows), -1)
+        except ValueError as err:
+            raise ColumnFileError("%s: not a number (%s)" % (self.path, err))
+
+    def column(self, name):
+        """One column by its header name: floats, or strings for a column
+        of words (e.g. the stage of force.dat)."""
+        if name not in self.names:
+            raise ColumnFileError("%s: no column '%s' (columns: %s)"
+                                  % (self.path, name, " ".join(self.names)))
+        k = self.names.index(name)
+        col = [r[k] for r in self.rows]
+        try:
+            return np.array(col, dtype=float)
+        except ValueError:
+            return col
+
+
+def readTable(path):
+    """Table of one column file; a cut last row (fewer fields than the
+    first row, or no newline at its end) is dropped."""
+    try:
+        with open(path) as f:
+            lines = f.read().split("\n")
+    except OSError as err:
+        raise ColumnFileError("%s: %s" % (path, err.strerror))
+    header, notes, rows, lineNo = [], [], [], []
+    last = len(lines) - 1       # "" after a final newline, else a cut line
+    for i, line in enumerate(lines):
+        if line.startswith("#"):
+            (notes if rows else header).append(line[1:].strip())
+        elif line.strip() and i < last:
+            rows.append(line.split())
+            lineNo.append(i + 1)
+    n = len(rows[0]) if rows else 0
+    if rows and len(rows[-1]) != n:
+        rows.pop()
+        lineNo.pop()
+    for r, i in zip(rows, lineNo):
+        if len(r) != n:
+            raise ColumnFileError("%s, line %d: %d columns, the first row "
+                                  "has %d" % (path, i, len(r), n))
+    table = Table(path, header, rows)
+    table.notes = notes
+    return table
+
+
+def segments(case, log):
+    """[(startTime, path)] of postProcessing/<dir>/<start>/<file> for log
+    "dir/file", earliest start first; an error when there is none."""
+    d, name = os.path.split(log)
+    found = []
+    for p in glob.glob(os.path.join(case, "postProcessing", d, "*", name)):
+        try:
+            found.append((float(os.path.basename(os.path.dirname(p))), p))
+        except ValueError:
+            pass
+    if not found:
+        raise ColumnFileError("no %s" % os.path.join(
+            case, "postProcessing", d, "<startTime>", name))
+    return sorted(found)
+
+
+def series(case, log):
+    """Float rows of log "dir/file" (e.g. "fsi/coupling.dat") over every
+    start of the run: each segment's rows before the first row of the next
+    segment that has rows, then that segment's rows. The rows delimit the
+    segments, not the directory names: these are rounded to the
+    controlDict's timePrecision."""
+    parts = [readTable(p).data() for t0, p in segments(case, log)]
+    parts = [a for a in parts if len(a)]
+    if not parts:
+        raise ColumnFileError("%s: no rows in %s" % (case, log))
+    out = [a[a[:, 0] < parts[k + 1][0, 0]] for k, a in enumerate(parts[:-1])]
+    return np.vstack(out + [parts[-1]])
+
+
+def latest(case, log):
+    """Table of the latest segment of a log: the output of a utility run on
+    the latest time (e.g. "riemannError/errors.dat")."""
+    return readTable(segments(case, log)[-1][1])
+
+
+def header(case, log):
+    """The header lines (without '# ') of the first segment of a log."""
+    return readTable(segments(case, log)[0][1]).header
+
+
+def names(case, log):
+    """The column names of a log (from its first segment with rows)."""
+    tables = [readTable(p) for t0, p in segments(case, log)]
+    return next((t for t in tables if t.rows), tables[0]).names

@@ -1,0 +1,171 @@
+"""neuronFsi.postProcessing on small synthetic column files: header
+parsing, a cut last row, malformed rows, restart stitching."""
+import os
+import tempfile
+import unittest
+
+import numpy as np
+
+from neuronFsi import postProcessing as pp
+
+HEADER = ("# FSI coupling (robin)\n"
+          "# time [s]  dt [s]  iterations  residual [-]  converged"
+          "  interfaceForce (x y z) [N]  interfaceVelocityMax [m/s]\n")
+
+
+def row(t, it=1):
+    return "%g 1e-10 %d 1e-7 1 0 %g 0 0.5\n" % (t, it, t*1e9)
+
+
+class ColumnFiles(unittest.TestCase):
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.case = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def write(self, rel, text):
+        p = os.path.join(self.case, rel)
+        os.makedirs(os.path.dirname(p), exist_ok=True)
+        with open(p, "w") as f:
+            f.write(text)
+        return p
+
+    def testHeaderNamesAndUnits(self):
+        names, units = pp.columnNames(HEADER.split("\n")[1])
+        self.assertEqual(names, [
+            "time", "dt", "iterations", "residual", "converged",
+            "interfaceForce_x", "interfaceForce_y", "interfaceForce_z",
+            "interfaceVelocityMax"])
+        self.assertEqual(units, ["s", "s", "", "-", "", "N", "N", "N",
+                                 "m/s"])
+
+    def testUnitsGluedToNames(self):
+        names, units = pp.columnNames(
+            "# time [s]  p0[Pa] vonMises0[Pa]  pMax:membrane-cytoplasm[Pa]"
+            " stage")
+        self.assertEqual(names, ["time", "p0", "vonMises0",
+                                 "pMax:membrane-cytoplasm", "stage"])
+        self.assertEqual(units, ["s", "Pa", "Pa", "Pa", ""])
+
+    def testUnitOfSeveralNames(self):
+        # riemannError's headers: a separate unit holds for its group
+        self.assertEqual(pp.columnNames(
+            "# x [m]  rho rhoExact [kg/m^3]  u uExact [m/s]"),
+            (["x", "rho", "rhoExact", "u", "uExact"],
+             ["m", "kg/m^3", "kg/m^3", "m/s", "m/s"]))
+        self.assertEqual(pp.columnNames(
+            "# nCells L1rho[kg/m^3] L1u[m/s] L1p[Pa]"),
+            (["nCells", "L1rho", "L1u", "L1p"], ["", "kg/m^3", "m/s", "Pa"]))
+
+    def testUnitBeforeNameIsAnError(self):
+        with self.assertRaises(pp.ColumnFileError):
+            pp.columnNames("# [s] time")
+
+    def testTable(self):
+        p = self.write("postProcessing/fsi/0/coupling.dat",
+                       HEADER + row(1e-10) + row(2e-10, 3))
+        t = pp.readTable(p)
+        self.assertEqual(t.header[0], "FSI coupling (robin)")
+        self.assertEqual(t.data().shape, (2, 9))
+        np.testing.assert_array_equal(t.column("iterations"), [1, 3])
+        with self.assertRaisesRegex(pp.ColumnFileError, "no column 'p'"):
+            t.column("p")
+
+    def testNamesLineAmongNotes(self):
+        # solidProbes.dat: a description before the names, a note per probe
+        # after them
+        p = self.write("solidProbes.dat",
+                       "# solid probes (element average): pressure\n"
+                       "# time [s]  p0[Pa] vonMises0[Pa]\n"
+                       "# probe 0 at (0 5e-06 0) m: element 7 (nucleus)\n"
+                       "1e-10 2 3\n")
+        t = pp.readTable(p)
+        self.assertEqual(t.names, ["time", "p0", "vonMises0"])
+        self.assertEqual(t.header[2][:7], "probe 0")
+
+    def testWordColumn(self):
+        p = self.write("force.dat", "# time [s]  force [N]  stage\n"
+                       "0.1 1e-10 A\n0.2 2e-10 B\n")
+        t = pp.readTable(p)
+        self.assertEqual(t.column("stage"), ["A", "B"])
+        np.testing.assert_array_equal(t.column("force"), [1e-10, 2e-10])
+        with self.assertRaisesRegex(pp.ColumnFileError, "force.dat"):
+            t.data()
+
+    def testCutLastRowDropped(self):
+        # fewer fields, or a complete-looking row without its newline
+        for cut in ("3e-10 1e-10 2", "3e-10 1e-10 2 1e-7 1 0 0.3 0 0.4"):
+            p = self.write("c.dat", HEADER + row(1e-10) + row(2e-10) + cut)
+            np.testing.assert_array_equal(pp.readTable(p).data()[:, 0],
+                                          [1e-10, 2e-10])
+
+    def testClosingNote(self):
+        # cellBlastFoam ends coupling.dat with a '#' summary line
+        p = self.write("c.dat", HEADER + row(1e-10) + "# 1 steps\n")
+        t = pp.readTable(p)
+        self.assertEqual((len(t.rows), t.notes), (1, ["1 steps"]))
+
+    def testMalformedRowIsAnError(self):
+        p = self.write("c.dat", HEADER + row(1e-10) + "2e-10 1\n"
+                       + row(3e-10))
+        with self.assertRaisesRegex(pp.ColumnFileError, r"c.dat, line 4"):
+            pp.readTable(p)
+
+    def testMissingFile(self):
+        with self.assertRaisesRegex(pp.ColumnFileError, "no .*coupling"):
+            pp.series(self.case, "fsi/coupling.dat")
+
+    def testRestartStitching(self):
+        # first start to 4e-10 (its last rows are redone by the restart
+        # from the write at 2e-10), the second from 2e-10 cut while
+        # writing, the third from 5e-10; written out of order on purpose
+        self.write("postProcessing/fsi/5e-10/coupling.dat",
+                   HEADER + row(6e-10, 7) + row(7e-10, 8))
+        self.write("postProcessing/fsi/0/coupling.dat",
+                   HEADER + "".join(row(k*1e-10, 1) for k in range(1, 5)))
+        self.write("postProcessing/fsi/2e-10/coupling.dat",
+                   HEADER + "".join(row(k*1e-10, 5) for k in range(3, 7))
+                   + "7e-10 1e-10")
+        d = pp.series(self.case, "fsi/coupling.dat")
+        np.testing.assert_allclose(d[:, 0], [k*1e-10 for k in range(1, 8)])
+        # later segment wins on the overlap: 3-4e-10 from the second, 6e-10
+        # from the third
+        np.testing.assert_array_equal(d[:, 2], [1, 1, 5, 5, 5, 7, 8])
+        self.assertEqual(pp.names(self.case, "fsi/coupling.dat")[2],
+                         "iterations")
+        self.assertEqual(pp.header(self.case, "fsi/coupling.dat")[0],
+                         "FSI coupling (robin)")
+        np.testing.assert_array_equal(
+            pp.latest(self.case, "fsi/coupling.dat").data()[:, 2], [7, 8])
+
+    def testRoundedStartTimeName(self):
+        # a restart at 2.5e-10 written under "2e-10" (timePrecision 1):
+        # the first row of the segment, not its name, ends the one before
+        self.write("postProcessing/fsi/0/coupling.dat", HEADER + "".join(
+            row(t*1e-10, 1) for t in (1, 2, 2.5, 3)))
+        self.write("postProcessing/fsi/2e-10/coupling.dat", HEADER + "".join(
+            row(t*1e-10, 2) for t in (3, 3.5)))
+        d = pp.series(self.case, "fsi/coupling.dat")
+        np.testing.assert_allclose(d[:, 0]*1e10, [1, 2, 2.5, 3, 3.5])
+        np.testing.assert_array_equal(d[:, 2], [1, 1, 1, 2, 2])
+
+    def testEmptySegmentSkipped(self):
+        # a start killed before its first step wrote the header only
+        self.write("postProcessing/fsi/0/coupling.dat",
+                   HEADER + row(1e-10) + row(2e-10))
+        self.write("postProcessing/fsi/2e-10/coupling.dat", HEADER)
+        self.assertEqual(pp.series(self.case, "fsi/coupling.dat").shape,
+                         (2, 9))
+
+    def testNonTimeDirectoriesIgnored(self):
+        self.write("postProcessing/fsi/0/coupling.dat", HEADER + row(1e-10))
+        self.write("postProcessing/fsi/old/coupling.dat", HEADER + row(9))
+        self.assertEqual(pp.series(self.case, "fsi/coupling.dat").shape,
+                         (1, 9))
+
+
+if __name__ == "__main__":
+    unittest.main()
