@@ -4,6 +4,7 @@
 #include "OSspecific.H"
 
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -64,7 +65,7 @@ Foam::foamUnit::testCase::testCase(const word& name, const scalar deltaT)
     controlDict.add("runTimeModifiable", word("false"));
     runTime_.reset
     (
-        new Time(controlDict, root_, "case", "system", "constant", false, false)
+        new Time(controlDict, root_, "case", "system", "constant", true, false)
     );
 }
 
@@ -72,7 +73,10 @@ Foam::foamUnit::testCase::testCase(const word& name, const scalar deltaT)
 Foam::foamUnit::testCase::~testCase()
 {
     runTime_.clear();
-    rmDir(root_);
+    // (OpenFOAM's rmDir leaves dot files, e.g. the markers of writeGuard,
+    // and then the directory)
+    std::error_code ec;
+    std::filesystem::remove_all(std::string(root_), ec);
 }
 
 

@@ -68,7 +68,10 @@ TEST(inputChecks, timeControls)
 {
     {
         foamUnit::testCase tc("inputChecks", 1e-6);
-        EXPECT_NO_THROW(foamTools::checkTimeControls(tc.time(), true, 0.5, 1e-5));
+        EXPECT_NO_THROW
+        (
+            foamTools::checkTimeControls(tc.time(), true, 0.5, 1e-5)
+        );
         try
         {
             foamTools::checkTimeControls(tc.time(), true, 0, 1e-5);

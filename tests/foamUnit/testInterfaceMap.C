@@ -150,7 +150,8 @@ scalarField consistentForces3D
     {
         const solid::Vec3& X = solid.X[map.nodes()[i]];
         const label j = std::lround(X[1]/hy), k = std::lround(X[2]/hz);
-        const label nFaces = (j > 0 && j < ny ? 2 : 1)*(k > 0 && k < nz ? 2 : 1);
+        const label nFaces =
+            (j > 0 && j < ny ? 2 : 1)*(k > 0 && k < nz ? 2 : 1);
         f[3*i] = p*hy*hz/4*nFaces;
     }
     return f;
@@ -281,7 +282,10 @@ TEST(interfaceMap, projection3DUniformPressureGivesConsistentForces)
             "pressureLoad3D.uniformPressure.relError",
             maxRelDiff
             (
-                map.nodalPressureForces(F, c.Sf(), scalarField(map.nDofs(), Zero)),
+                map.nodalPressureForces
+                (
+                    F, c.Sf(), scalarField(map.nDofs(), Zero)
+                ),
                 exact, scale
             )
         );
@@ -486,7 +490,10 @@ TEST(interfaceMap, badDictionariesNameTheEntry)
         const badCase& b :
         {
             badCase{"solidFaceSet", "nowhere", {"nowhere", "xmin", "zmax"}},
-            badCase{"mapTolerance", "-0.1", {"mapTolerance = -0.1", "(0, inf)"}},
+            badCase
+            {
+                "mapTolerance", "-0.1", {"mapTolerance = -0.1", "(0, inf)"}
+            },
             badCase{"map", "nearest", {"map nearest is not valid"}},
             badCase{"load", "traction", {"load traction is not valid"}}
         }

@@ -114,7 +114,10 @@ struct thermoCase
         mesh = tc.blockMesh
         (
             {nCells, 1, 1},
-            [&](const vector& s) { return 1e-3*cmptMultiply(s, vector(nCells, 1, 1)); },
+            [&](const vector& s)
+            {
+                return 1e-3*cmptMultiply(s, vector(nCells, 1, 1));
+            },
             {"sides", "sides", "sides", "sides", "sides", "sides"},
             {side, side, side, side, side, side}
         );
@@ -209,7 +212,10 @@ void checkLaw
     {
         const label n = 8;
         const scalar h = (r1 - r)/n;
-        auto f = [&](const scalar x, const scalar y) { return pOf(x, y)/(x*x); };
+        auto f = [&](const scalar x, const scalar y)
+        {
+            return pOf(x, y)/(x*x);
+        };
         for (label k = 0; k < n; ++k)
         {
             const scalar k1 = f(r, en);
@@ -276,8 +282,10 @@ void checkLaw
         );
         forAll(cb, facei)
         {
-            errBoundary = max(errBoundary, mag(cb[facei] - ci[facei])/ci[facei]);
-            errBoundary = max(errBoundary, mag(rb[facei] - ri[facei])/ri[facei]);
+            errBoundary =
+                max(errBoundary, mag(cb[facei] - ci[facei])/ci[facei]);
+            errBoundary =
+                max(errBoundary, mag(rb[facei] - ri[facei])/ri[facei]);
         }
     }
     gold().check(law + ".boundaryRelError", errBoundary);
