@@ -14,7 +14,10 @@ Description
       by the same translation;
     - a uniform pressure gives the solid's consistent nodal forces
       f_a = p int N_a dA (r-z: 2 pi p int N_a r ds), computed here in
-      closed form on the structured solid faces.
+      closed form on the structured solid faces;
+    - the acoustic added damping of a uniform impedance Z (the Robin
+      scheme's beta) adds up to Z times the (full-ring) area on the normal
+      dofs.
 
     The interface dictionary is the Usage example of interfaceMap.H.
 
@@ -289,6 +292,20 @@ TEST(interfaceMap, projection3DUniformPressureGivesConsistentForces)
                 exact, scale
             )
         );
+        // The fluid's acoustic added damping (Robin): a uniform impedance
+        // Z on faces normal to x gives Z |Sf| on the x dofs, in total Z
+        // times the area, nothing on the tangential dofs
+        const scalar Z = 1.5e6;
+        const scalarField D
+        (
+            map.nodalImpedance(scalarField(c.Sf().size(), Z), c.Sf())
+        );
+        gold().check
+        (
+            "projection3D.impedance.relErrorTotal",
+            mag(sumForces(D, 3) - vector(Z*L*L, 0, 0))/(Z*L*L)
+        );
+
         // A rigid translation of the solid leaves the pressure load as is
         scalarField u(map.nDofs());
         forAll(u, i) u[i] = vector(1e-6, -2e-6, 5e-7)[i % 3];
@@ -460,6 +477,23 @@ TEST(interfaceMap, rzFacesFullRingForces)
                     max(mag(map.nodalForces(F) - exactF))/max(mag(exactF))
                 );
             }
+
+            // Acoustic added damping of a uniform impedance Z: Z times the
+            // full-ring area on the normal dofs, nothing on the others
+            const scalar Z = 1.5e6;
+            const scalarField D
+            (
+                map.nodalImpedance(scalarField(c.Sf().size(), Z), c.Sf())
+            );
+            const scalar ringArea = radial
+                ? 2*pi*c.r1*c.H : pi*(sqr(c.r1) - sqr(c.r0));
+            const vector exactD = radial
+                ? vector(Z*ringArea, 0, 0) : vector(0, Z*ringArea, 0);
+            gold().check
+            (
+                "rz.impedance.relErrorTotal",
+                mag(sumForces(D, 2) - exactD)/(Z*ringArea)
+            );
 
             // An axial translation of the solid moves every fluid point
             const scalar t = 3e-6;
