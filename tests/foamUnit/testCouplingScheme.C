@@ -8,13 +8,15 @@ Description
     relaxation factors against Kuettler & Wall's formula, the finite
     termination of IQN-ILS on a linear map, Robin's documented update and
     its one-iteration convergence for an acoustic fluid response, the
-    restart statistics and the errors of bad dictionaries.
+    restart statistics, the errors of bad dictionaries and the Usage
+    examples of the headers.
 
 \*---------------------------------------------------------------------------*/
 
 #include "couplingScheme.H"
 #include "IStringStream.H"
 #include "OStringStream.H"
+#include "foamTestCase.H"
 #include "goldFile.H"
 
 #include <gtest/gtest.h>
@@ -497,5 +499,41 @@ TEST(couplingScheme, badDictionariesNameTheEntry)
     {
         EXPECT_NE(err.message().find("couplingStatistics needs 4 values"),
             std::string::npos) << err.message();
+    }
+}
+
+
+TEST(couplingScheme, usageExamplesAreValidInputs)
+{
+    // The Usage example of every scheme's header selects that scheme
+    struct example
+    {
+        fileName header;
+        word scheme;
+    };
+    const fileName dir("src/fsi/couplingSchemes");
+    for
+    (
+        const example& ex :
+        {
+            example{dir/"couplingScheme/couplingScheme.H", "IQNILS"},
+            example
+            {
+                dir/"explicitStaggered/explicitStaggered.H",
+                "explicitStaggered"
+            },
+            example{dir/"aitken/aitken.H", "aitken"},
+            example{dir/"IQNILS/IQNILS.H", "IQNILS"},
+            example{dir/"robin/robin.H", "robin"}
+        }
+    )
+    {
+        SCOPED_TRACE(ex.header);
+        IStringStream is(foamUnit::testCase::usageExample(ex.header));
+        const dictionary usage(is);
+        const dictionary& dict =
+            usage.found("coupling") ? usage.subDict("coupling") : usage;
+        autoPtr<couplingScheme> scheme(couplingScheme::New(dict));
+        EXPECT_EQ(scheme->type(), ex.scheme);
     }
 }
