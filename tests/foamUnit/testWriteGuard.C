@@ -1,0 +1,94 @@
+/*---------------------------------------------------------------------------*\
+Description
+    Unit tests of src/foamTools/writeGuard.H on a case with a Time: a time
+    directory carries .writeInProgress from write() until the run() that
+    follows, then .writeCommitted; at a restart with startFrom latestTime,
+    discardIncompleteTimes moves aside the later time directories left
+    with the in-progress marker or empty (killed writes) and keeps the
+    complete ones and the earliest.
+
+\*---------------------------------------------------------------------------*/
+
+#include "writeGuard.H"
+#include "foamTestCase.H"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using namespace Foam;
+
+TEST(writeGuard, markersAndDiscardOfIncompleteTimes)
+{
+    foamUnit::testCase tc("writeGuard");
+    Time& runTime = tc.time();
+    using foamTools::writeGuard;
+    // The initial conditions (not written by the solver: no marker)
+    tc.writeUniformField("p", dimPressure, 1e5, "zeroGradient");
+
+    // A complete write: in progress until run(), then committed
+    ++runTime;
+    ASSERT_TRUE(runTime.writeTime());
+    const fileName complete(runTime.timePath());
+    writeGuard::write(runTime);
+    EXPECT_TRUE(isFile(complete/writeGuard::inProgressName(), false));
+    EXPECT_TRUE(writeGuard::incomplete(complete));
+    EXPECT_TRUE(writeGuard::run(runTime));
+    EXPECT_FALSE(isFile(complete/writeGuard::inProgressName(), false));
+    EXPECT_TRUE(isFile(complete/writeGuard::committedName(), false));
+    EXPECT_FALSE(writeGuard::incomplete(complete));
+
+    // What a kill leaves: during a write (the in-progress marker, as
+    // write() makes it), and between the creation of the directory and the
+    // marker (empty)
+    ++runTime;
+    const fileName killed(runTime.timePath());
+    mkDir(killed);
+    tc.writeFile
+    (
+        fileName(killed.name())/writeGuard::inProgressName(),
+        runTime.timeName() + "\n"
+    );
+    ++runTime;
+    const fileName empty(runTime.timePath());
+    mkDir(empty);
+    EXPECT_TRUE(writeGuard::incomplete(killed));
+    EXPECT_TRUE(writeGuard::incomplete(empty));
+
+    // The restart: nothing is moved unless it starts from latestTime
+    const std::string controlDict
+    (
+        "FoamFile { version 2.0; format ascii; class dictionary;"
+        " object controlDict; }\n"
+        "application foamUnitTests; startFrom startTime; startTime 0;"
+        " stopAt endTime; endTime 1; deltaT 1e-6; writeControl timeStep;"
+        " writeInterval 1;\n"
+    );
+    tc.writeFile("system/controlDict", controlDict);
+    std::string caseDir(tc.dir());
+    std::vector<char*> argv
+    {
+        const_cast<char*>("foamUnitTests"),
+        const_cast<char*>("-case"),
+        &caseDir[0]
+    };
+    int argc = int(argv.size());
+    char** argvp = argv.data();
+    // Never destroyed: argList's destructor ends the process
+    // (UPstream::exit), which would end this test run with status 0
+    const argList& args = *new argList(argc, argvp);
+    EXPECT_EQ(writeGuard::discardIncompleteTimes(args), 0);
+    EXPECT_TRUE(isDir(killed));
+
+    std::string latest(controlDict);
+    latest.replace(latest.find("startTime;"), 10, "latestTime;");
+    tc.writeFile("system/controlDict", latest);
+    EXPECT_EQ(writeGuard::discardIncompleteTimes(args), 2);
+    EXPECT_TRUE(isDir(complete));
+    EXPECT_TRUE(isDir(tc.dir()/"0"));
+    EXPECT_FALSE(isDir(killed));
+    EXPECT_FALSE(isDir(empty));
+    EXPECT_TRUE(isDir(killed + ".incomplete"));
+    EXPECT_TRUE(isDir(empty + ".incomplete"));
+    EXPECT_EQ(TimePaths::findTimes(tc.dir()).last().name(), complete.name());
+}
