@@ -3,9 +3,10 @@
 # its smoke options in a scratch git repository holding a copy of
 # tutorials/ and the project's .gitignore (the real tree is not touched, and
 # the indentation tables can be shortened in the copy's first commit).
-# Asserted per case: after ./Allrun, `git status --porcelain` is empty (no
-# tracked file edited, every output ignored); after ./Allclean, also with
-# --ignored (the pristine state). The calibration tutorial (minutes of
+# Asserted per case: without the project environment, Allrun and Allclean
+# stop at once with "source <project>/etc/bashrc first"; after ./Allrun,
+# `git status --porcelain` is empty (no tracked file edited, every output
+# ignored); after ./Allclean, also with --ignored (the pristine state). The calibration tutorial (minutes of
 # CPU) is left out.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -68,6 +69,26 @@ run()       # case [Allrun options]
     (cd "$c" && ./Allclean > /dev/null 2>&1)
     check "$c" "pristine after Allclean" --ignored
 }
+
+# Without the project environment every Allrun and Allclean stops at once
+# with the message, touching nothing
+for c in tutorials/*/*/
+do
+    for script in Allrun Allclean
+    do
+        out=$(cd "$c" && env -i HOME="$HOME" PATH=/usr/bin:/bin \
+            bash "./$script" 2>&1) && status=0 || status=$?
+        if [ "$status" -ne 0 ] \
+            && [ "$out" = "$script: source <project>/etc/bashrc first" ]
+        then
+            check "${c%/}" "$script without the environment: '$out'" --ignored
+        else
+            echo "FAIL ${c%/}: $script without the environment: exit" \
+                "$status, '$out'"
+            fails=$((fails + 1))
+        fi
+    done
+done
 
 for c in tutorials/verification/*/
 do
