@@ -1,8 +1,7 @@
 #include "Checkpoint.H"
 #include "AtomicFile.H"
+#include "Hdf5File.H"
 #include "SolidError.H"
-
-#include <hdf5.h>
 
 #include <string>
 #include <sys/stat.h>
@@ -10,78 +9,9 @@
 namespace
 {
 
-using solid::SolidError;
-
-SolidError ioError(const std::string& msg)
+solid::SolidError ioError(const std::string& msg)
 {
-    return SolidError(SolidError::Kind::io, msg);
-}
-
-struct H5File
-{
-    hid_t id;
-    H5File(const std::string& name, unsigned mode, bool create)
-    {
-        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-        id = create
-            ? H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)
-            : H5Fopen(name.c_str(), mode, H5P_DEFAULT);
-        if (id < 0)
-        {
-            throw ioError
-            (
-                "cannot " + std::string(create ? "create" : "open")
-              + " HDF5 file '" + name + "'"
-            );
-        }
-    }
-    //- Close now (flushes), reporting a failure
-    void close()
-    {
-        const hid_t f = id;
-        id = -1;
-        if (H5Fclose(f) < 0) throw ioError("cannot close an HDF5 file");
-    }
-    ~H5File() { if (id >= 0) H5Fclose(id); }
-};
-
-struct Names
-{
-    std::vector<std::string> list;
-};
-
-herr_t collect(hid_t, const char* name, const H5L_info_t*, void* op)
-{
-    static_cast<Names*>(op)->list.emplace_back(name);
-    return 0;
-}
-
-std::vector<std::string> members(hid_t g)
-{
-    Names n;
-    hsize_t idx = 0;
-    H5Literate(g, H5_INDEX_NAME, H5_ITER_NATIVE, &idx, collect, &n);
-    return n.list;
-}
-
-herr_t visitDataset(hid_t, const char* name, const H5O_info_t* info, void* op)
-{
-    if (info->type == H5O_TYPE_DATASET)
-    {
-        static_cast<Names*>(op)->list.emplace_back(name);
-    }
-    return 0;
-}
-
-//- Paths of all datasets below g
-std::vector<std::string> datasets(hid_t g)
-{
-    Names n;
-    if (H5Ovisit(g, H5_INDEX_NAME, H5_ITER_NATIVE, visitDataset, &n) < 0)
-    {
-        throw ioError("cannot list the entries of a checkpoint");
-    }
-    return n.list;
+    return solid::SolidError(solid::SolidError::Kind::io, msg);
 }
 
 } // namespace
@@ -97,30 +27,10 @@ bool solid::Checkpoint::exists(const std::string& file)
 solid::Checkpoint solid::Checkpoint::read(const std::string& file)
 {
     Checkpoint c(file);
-    H5File f(file, H5F_ACC_RDONLY, false);
-    for (const std::string& name : datasets(f.id))
+    const Hdf5File f(file, Hdf5File::Mode::readOnly);
+    for (const std::string& name : f.datasets())
     {
-        const hid_t d = H5Dopen2(f.id, name.c_str(), H5P_DEFAULT);
-        if (d < 0)
-        {
-            throw ioError("checkpoint '" + file + "': cannot open entry '"
-                          + name + "'");
-        }
-        const hid_t space = H5Dget_space(d);
-        const hssize_t n = H5Sget_simple_extent_npoints(space);
-        std::vector<double> v(n > 0 ? n : 0);
-        const herr_t st = n > 0
-            ? H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                      v.data())
-            : 0;
-        H5Sclose(space);
-        H5Dclose(d);
-        if (n < 0 || st < 0)
-        {
-            throw ioError("checkpoint '" + file + "': cannot read entry '"
-                          + name + "'");
-        }
-        c.data_[name] = std::move(v);
+        c.data_[name] = f.read(name);
     }
     return c;
 }
@@ -130,37 +40,13 @@ void solid::Checkpoint::write() const
 {
     const std::string tmp = temporaryName(file_);
     {
-        H5File f(tmp, 0, true);
+        Hdf5File f(tmp, Hdf5File::Mode::create);
         // Names with '/' create their groups
-        const hid_t lcpl = H5Pcreate(H5P_LINK_CREATE);
-        H5Pset_create_intermediate_group(lcpl, 1);
         for (const auto& kv : data_)
         {
-            const hsize_t n = kv.second.size();
-            const hid_t space = H5Screate_simple(1, &n, nullptr);
-            const hid_t d = H5Dcreate2
-            (
-                f.id, kv.first.c_str(), H5T_NATIVE_DOUBLE, space, lcpl,
-                H5P_DEFAULT, H5P_DEFAULT
-            );
-            const herr_t st = d < 0 ? -1
-              : n == 0 ? 0
-              : H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                         kv.second.data());
-            if (d >= 0) H5Dclose(d);
-            H5Sclose(space);
-            if (st < 0)
-            {
-                H5Pclose(lcpl);
-                throw ioError("cannot write entry '" + kv.first + "' to '"
-                              + tmp + "'");
-            }
+            f.write(kv.first, kv.second.data(), kv.second.size());
         }
-        H5Pclose(lcpl);
-        if (H5Fflush(f.id, H5F_SCOPE_GLOBAL) < 0)
-        {
-            throw ioError("cannot flush '" + tmp + "'");
-        }
+        f.close();
     }
     commitFile(tmp, file_);
 }
@@ -236,11 +122,10 @@ int solid::truncateSteps(const std::string& h5, int n)
     // restart) is neither copied nor touched
     std::vector<std::string> remove;
     {
-        H5File f(h5, H5F_ACC_RDONLY, false);
-        if (H5Lexists(f.id, "steps", H5P_DEFAULT) <= 0) return 0;
-        const hid_t g = H5Gopen2(f.id, "steps", H5P_DEFAULT);
-        if (g < 0) throw ioError("cannot open /steps of '" + h5 + "'");
-        for (const std::string& name : members(g))
+        const Hdf5File f(h5, Hdf5File::Mode::readOnly);
+        if (!f.has("steps")) return 0;
+        const Hdf5Group g(f, "steps", false);
+        for (const std::string& name : g.members())
         {
             const bool numeric =
                 !name.empty() && name.size() <= 9
@@ -250,7 +135,6 @@ int solid::truncateSteps(const std::string& h5, int n)
                 remove.push_back(name);
             }
         }
-        H5Gclose(g);
     }
     if (remove.empty()) return 0;
 
@@ -258,19 +142,11 @@ int solid::truncateSteps(const std::string& h5, int n)
     // during the edit leaves the file as it was
     const std::string tmp = copyToTemporary(h5);
     {
-        H5File f(tmp, H5F_ACC_RDWR, false);
-        const hid_t g = H5Gopen2(f.id, "steps", H5P_DEFAULT);
-        if (g < 0) throw ioError("cannot open /steps of '" + tmp + "'");
-        for (const std::string& name : remove)
+        Hdf5File f(tmp, Hdf5File::Mode::readWrite);
         {
-            if (H5Ldelete(g, name.c_str(), H5P_DEFAULT) < 0)
-            {
-                H5Gclose(g);
-                throw ioError("cannot remove step " + name + " of '" + tmp
-                              + "'");
-            }
+            Hdf5Group g(f, "steps", false);
+            for (const std::string& name : remove) g.remove(name);
         }
-        H5Gclose(g);
         f.close();
     }
     commitFile(tmp, h5);

@@ -1,133 +1,13 @@
 #include "ResultWriter.H"
 #include "AtomicFile.H"
+#include "Hdf5File.H"
 #include "SolidError.H"
-
-#include <hdf5.h>
 
 #include <algorithm>
 #include <fstream>
 
 namespace
 {
-
-using solid::SolidError;
-
-void check(herr_t status, const std::string& what)
-{
-    if (status < 0)
-    {
-        throw SolidError(SolidError::Kind::io, "HDF5: failed to " + what);
-    }
-}
-
-hid_t checkId(hid_t id, const std::string& what)
-{
-    if (id < 0)
-    {
-        throw SolidError(SolidError::Kind::io, "HDF5: failed to " + what);
-    }
-    return id;
-}
-
-// RAII file handle
-struct File
-{
-    enum class Mode { create, readWrite, readOnly };
-    hid_t id;
-    File(const std::string& name, Mode mode)
-    {
-        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-        id = mode == Mode::create
-            ? H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)
-            : H5Fopen(name.c_str(), mode == Mode::readWrite ? H5F_ACC_RDWR
-                      : H5F_ACC_RDONLY, H5P_DEFAULT);
-        checkId(id, "open '" + name + "'");
-    }
-    //- Close now (flushes), reporting a failure
-    void close()
-    {
-        const hid_t f = id;
-        id = -1;
-        check(H5Fclose(f), "close file");
-    }
-    ~File() { if (id >= 0) H5Fclose(id); }
-};
-
-struct Group
-{
-    hid_t id;
-    Group(hid_t parent, const std::string& name, bool create)
-    {
-        id = create
-            ? H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT,
-                         H5P_DEFAULT)
-            : H5Gopen2(parent, name.c_str(), H5P_DEFAULT);
-        checkId(id, (create ? "create group " : "open group ") + name);
-    }
-    ~Group() { H5Gclose(id); }
-};
-
-template<class T>
-void writeArray
-(
-    hid_t g, const std::string& name, const T* data, hsize_t rows,
-    hsize_t cols
-)
-{
-    const hid_t type = std::is_same<T, int>::value ? H5T_NATIVE_INT
-                                                   : H5T_NATIVE_DOUBLE;
-    const hsize_t dims[2] = {rows, cols};
-    const hid_t space = H5Screate_simple(cols > 1 ? 2 : 1, dims, nullptr);
-    const hid_t d = checkId
-    (
-        H5Dcreate2(g, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT,
-                   H5P_DEFAULT),
-        "create dataset " + name
-    );
-    if (rows*cols > 0)
-    {
-        check(H5Dwrite(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data),
-              "write " + name);
-    }
-    H5Dclose(d);
-    H5Sclose(space);
-}
-
-std::vector<double> readArray(hid_t g, const std::string& name)
-{
-    const hid_t d = checkId(H5Dopen2(g, name.c_str(), H5P_DEFAULT),
-                            "open dataset " + name);
-    const hid_t space = H5Dget_space(d);
-    const hssize_t n = H5Sget_simple_extent_npoints(space);
-    std::vector<double> v(n);
-    if (n > 0)
-    {
-        check(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                      v.data()), "read " + name);
-    }
-    H5Sclose(space);
-    H5Dclose(d);
-    return v;
-}
-
-void writeTime(hid_t g, double t)
-{
-    const hid_t space = H5Screate(H5S_SCALAR);
-    const hid_t a = H5Acreate2(g, "time", H5T_NATIVE_DOUBLE, space,
-                               H5P_DEFAULT, H5P_DEFAULT);
-    check(H5Awrite(a, H5T_NATIVE_DOUBLE, &t), "write time");
-    H5Aclose(a);
-    H5Sclose(space);
-}
-
-double readTime(hid_t g)
-{
-    double t = 0;
-    const hid_t a = checkId(H5Aopen(g, "time", H5P_DEFAULT), "open time");
-    check(H5Aread(a, H5T_NATIVE_DOUBLE, &t), "read time");
-    H5Aclose(a);
-    return t;
-}
 
 std::vector<double> nodeVectors(const solid::Model& m, const Eigen::VectorXd& x)
 {
@@ -160,18 +40,18 @@ solid::ResultWriter::ResultWriter
     }
     const std::string tmp = temporaryName(h5File());
     {
-        File f(tmp, File::Mode::create);
+        Hdf5File f(tmp, Hdf5File::Mode::create);
         {
-            Group mesh(f.id, "mesh", true);
+            Hdf5Group mesh(f, "mesh", true);
             const Mesh& m = model.mesh();
             std::vector<double> X(3*m.nNodes());
             for (int n = 0; n < m.nNodes(); ++n)
                 for (int i = 0; i < 3; ++i) X[3*n + i] = m.X[n](i);
-            writeArray(mesh.id, "coordinates", X.data(), m.nNodes(), 3);
-            writeArray(mesh.id, "connectivity", m.conn.data(),
-                       m.nElements(), m.nen());
-            writeArray(mesh.id, "region", m.region.data(), m.nElements(), 1);
-            Group s(f.id, "steps", true);
+            mesh.write("coordinates", X.data(), m.nNodes(), 3);
+            mesh.write("connectivity", m.conn.data(), m.nElements(),
+                       m.nen());
+            mesh.write("region", m.region.data(), m.nElements());
+            Hdf5Group s(f, "steps", true);
         }
         f.close();
     }
@@ -199,30 +79,30 @@ int solid::ResultWriter::write(Model& model)
     // file intact (costs one copy of the file per step)
     const std::string tmp = copyToTemporary(h5File());
     {
-        File f(tmp, File::Mode::readWrite);
+        Hdf5File f(tmp, Hdf5File::Mode::readWrite);
         {
-            Group steps(f.id, "steps", false);
-            Group g(steps.id, std::to_string(k), true);
-            writeTime(g.id, model.time);
+            Hdf5Group steps(f, "steps", false);
+            Hdf5Group g(steps, std::to_string(k), true);
+            g.writeAttribute("time", model.time);
             const auto u = nodeVectors(model, model.u);
             const auto v = nodeVectors(model, model.v);
-            writeArray(g.id, "displacement", u.data(), m.nNodes(), 3);
-            writeArray(g.id, "velocity", v.data(), m.nNodes(), 3);
-            writeArray(g.id, "cauchyStress", sigma.data(), ne, 9);
-            writeArray(g.id, "pressure", p.data(), ne, 1);
-            writeArray(g.id, "vonMises", vm.data(), ne, 1);
-            writeArray(g.id, "J", J.data(), ne, 1);
-            writeArray(g.id, "temperatureRise", dT.data(), ne, 1);
-            writeArray(g.id, "region", m.region.data(), ne, 1);
-            Group r(g.id, "restart", true);
-            writeArray(r.id, "u", model.u.data(), model.u.size(), 1);
-            writeArray(r.id, "v", model.v.data(), model.v.size(), 1);
-            writeArray(r.id, "pressure", model.pressure.data(),
-                       model.pressure.size(), 1);
+            g.write("displacement", u.data(), m.nNodes(), 3);
+            g.write("velocity", v.data(), m.nNodes(), 3);
+            g.write("cauchyStress", sigma.data(), ne, 9);
+            g.write("pressure", p.data(), ne);
+            g.write("vonMises", vm.data(), ne);
+            g.write("J", J.data(), ne);
+            g.write("temperatureRise", dT.data(), ne);
+            g.write("region", m.region.data(), ne);
+            Hdf5Group r(g, "restart", true);
+            r.write("u", model.u.data(), model.u.size());
+            r.write("v", model.v.data(), model.v.size());
+            r.write("pressure", model.pressure.data(),
+                    model.pressure.size());
             const auto& ps = model.pointState().oldData();
             const auto& es = model.elementState().oldData();
-            writeArray(r.id, "pointState", ps.data(), ps.size(), 1);
-            writeArray(r.id, "elementState", es.data(), es.size(), 1);
+            r.write("pointState", ps.data(), ps.size());
+            r.write("elementState", es.data(), es.size());
         }   // groups closed before the file, so that close() flushes all
         f.close();
     }
@@ -312,28 +192,27 @@ std::vector<std::pair<int, double>> solid::ResultWriter::steps
     const std::string& h5
 )
 {
-    File f(h5, File::Mode::readOnly);
-    Group g(f.id, "steps", false);
-    hsize_t n = 0;
-    check(H5Gget_num_objs(g.id, &n), "count steps");
+    const Hdf5File f(h5, Hdf5File::Mode::readOnly);
+    const Hdf5Group g(f, "steps", false);
     std::vector<std::pair<int, double>> out;
-    for (hsize_t i = 0; i < n; ++i)
+    for (const std::string& name : g.members())
     {
-        char name[64] = "";
-        if (H5Gget_objname_by_idx(g.id, i, name, sizeof(name)) <= 0
-         || std::string(name).find_first_not_of("0123456789") !=
-                std::string::npos
-         || std::string(name).size() > 9)
+        if
+        (
+            name.empty()
+         || name.find_first_not_of("0123456789") != std::string::npos
+         || name.size() > 9
+        )
         {
             throw SolidError
             (
                 SolidError::Kind::io, "'" + h5 + "': /steps holds '"
-              + std::string(name) + "', not a step number (not a result "
-                "file of the solid library?)"
+              + name + "', not a step number (not a result file of the "
+                "solid library?)"
             );
         }
-        Group s(g.id, name, false);
-        out.emplace_back(std::stoi(name), readTime(s.id));
+        const Hdf5Group s(g, name, false);
+        out.emplace_back(std::stoi(name), s.readAttribute("time"));
     }
     std::sort(out.begin(), out.end());
     return out;
@@ -342,10 +221,10 @@ std::vector<std::pair<int, double>> solid::ResultWriter::steps
 
 void solid::ResultWriter::restart(const std::string& h5, int k, Model& model)
 {
-    File f(h5, File::Mode::readOnly);
-    Group steps(f.id, "steps", false);
+    const Hdf5File f(h5, Hdf5File::Mode::readOnly);
+    const Hdf5Group steps(f, "steps", false);
     const std::string name = std::to_string(k);
-    if (H5Lexists(steps.id, name.c_str(), H5P_DEFAULT) <= 0)
+    if (!steps.has(name))
     {
         throw SolidError
         (
@@ -353,11 +232,11 @@ void solid::ResultWriter::restart(const std::string& h5, int k, Model& model)
           + name
         );
     }
-    Group g(steps.id, name, false);
-    Group r(g.id, "restart", false);
+    const Hdf5Group g(steps, name, false);
+    const Hdf5Group r(g, "restart", false);
     auto load = [&](const char* what, std::size_t expected)
     {
-        std::vector<double> v = readArray(r.id, what);
+        std::vector<double> v = r.read(what);
         if (v.size() != expected)
         {
             throw SolidError
@@ -383,5 +262,5 @@ void solid::ResultWriter::restart(const std::string& h5, int k, Model& model)
     model.elementState().oldData() = es;
     model.pointState().revert();
     model.elementState().revert();
-    model.time = readTime(g.id);
+    model.time = g.readAttribute("time");
 }
