@@ -87,32 +87,37 @@ Eigen::VectorXd solid::Checkpoint::vector
 }
 
 
-void solid::Checkpoint::storeModel(const std::string& prefix, Model& model)
+void solid::Checkpoint::set
+(
+    const std::string& prefix,
+    const ModelSnapshot& state
+)
 {
-    set(prefix + "u", model.u);
-    set(prefix + "v", model.v);
-    set(prefix + "pressure", model.pressure);
-    set(prefix + "time", model.time);
-    set(prefix + "pointState", model.pointState().oldData());
-    set(prefix + "elementState", model.elementState().oldData());
+    for (int i = 0; i < ModelSnapshot::nParts; ++i)
+    {
+        const auto part = ModelSnapshot::Part(i);
+        set(prefix + ModelSnapshot::name(part), state.part(part));
+    }
+    set(prefix + "time", state.time());
 }
 
 
-void solid::Checkpoint::restoreModel
+solid::ModelSnapshot solid::Checkpoint::snapshot
 (
-    const std::string& prefix, Model& model
+    const std::string& prefix,
+    const Model& model
 ) const
 {
-    model.u = vector(prefix + "u", model.u.size());
-    model.v = vector(prefix + "v", model.v.size());
-    model.pressure = vector(prefix + "pressure", model.pressure.size());
-    model.time = scalar(prefix + "time");
-    auto& ps = model.pointState();
-    auto& es = model.elementState();
-    ps.oldData() = get(prefix + "pointState", ps.oldData().size());
-    ps.currentData() = ps.oldData();
-    es.oldData() = get(prefix + "elementState", es.oldData().size());
-    es.currentData() = es.oldData();
+    const auto expected = ModelSnapshot::sizes(model);
+    ModelSnapshot state;
+    for (int i = 0; i < ModelSnapshot::nParts; ++i)
+    {
+        const auto part = ModelSnapshot::Part(i);
+        state.part(part) =
+            get(prefix + ModelSnapshot::name(part), long(expected[i]));
+    }
+    state.setTime(scalar(prefix + "time"));
+    return state;
 }
 
 

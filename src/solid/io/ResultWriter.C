@@ -1,6 +1,7 @@
 #include "ResultWriter.H"
 #include "AtomicFile.H"
 #include "Hdf5File.H"
+#include "ModelSnapshot.H"
 #include "SolidError.H"
 
 #include <algorithm>
@@ -94,15 +95,15 @@ int solid::ResultWriter::write(Model& model)
             g.write("J", J.data(), ne);
             g.write("temperatureRise", dT.data(), ne);
             g.write("region", m.region.data(), ne);
+            // The exact state for a restart: the model's snapshot
             Hdf5Group r(g, "restart", true);
-            r.write("u", model.u.data(), model.u.size());
-            r.write("v", model.v.data(), model.v.size());
-            r.write("pressure", model.pressure.data(),
-                    model.pressure.size());
-            const auto& ps = model.pointState().oldData();
-            const auto& es = model.elementState().oldData();
-            r.write("pointState", ps.data(), ps.size());
-            r.write("elementState", es.data(), es.size());
+            const ModelSnapshot state(model);
+            for (int i = 0; i < ModelSnapshot::nParts; ++i)
+            {
+                const auto part = ModelSnapshot::Part(i);
+                const std::vector<double>& x = state.part(part);
+                r.write(ModelSnapshot::name(part), x.data(), x.size());
+            }
         }   // groups closed before the file, so that close() flushes all
         f.close();
     }
@@ -234,33 +235,26 @@ void solid::ResultWriter::restart(const std::string& h5, int k, Model& model)
     }
     const Hdf5Group g(steps, name, false);
     const Hdf5Group r(g, "restart", false);
-    auto load = [&](const char* what, std::size_t expected)
+    // Every part checked against the model before the model is touched
+    const auto expected = ModelSnapshot::sizes(model);
+    ModelSnapshot state;
+    for (int i = 0; i < ModelSnapshot::nParts; ++i)
     {
-        std::vector<double> v = r.read(what);
-        if (v.size() != expected)
+        const auto part = ModelSnapshot::Part(i);
+        const std::string what = ModelSnapshot::name(part);
+        state.part(part) = r.read(what);
+        if (state.part(part).size() != expected[i])
         {
             throw SolidError
             (
-                SolidError::Kind::io, "restart: '" + std::string(what)
-              + "' in '" + h5 + "' step " + name + " has "
-              + std::to_string(v.size()) + " values, the model needs "
-              + std::to_string(expected) + " (different mesh/materials?)"
+                SolidError::Kind::io, "restart: '" + what + "' in '" + h5
+              + "' step " + name + " has "
+              + std::to_string(state.part(part).size())
+              + " values, the model needs " + std::to_string(expected[i])
+              + " (different mesh/materials?)"
             );
         }
-        return v;
-    };
-    const auto u = load("u", model.u.size());
-    const auto v = load("v", model.v.size());
-    const auto p = load("pressure", model.pressure.size());
-    const auto ps = load("pointState", model.pointState().oldData().size());
-    const auto es =
-        load("elementState", model.elementState().oldData().size());
-    model.u = Eigen::Map<const Eigen::VectorXd>(u.data(), u.size());
-    model.v = Eigen::Map<const Eigen::VectorXd>(v.data(), v.size());
-    model.pressure = Eigen::Map<const Eigen::VectorXd>(p.data(), p.size());
-    model.pointState().oldData() = ps;
-    model.elementState().oldData() = es;
-    model.pointState().revert();
-    model.elementState().revert();
-    model.time = g.readAttribute("time");
+    }
+    state.setTime(g.readAttribute("time"));
+    state.restore(model);
 }
