@@ -29,66 +29,60 @@ Usage
 #include "pointFields.H"
 #include "cellModel.H"
 #include "cellShapeList.H"
-#include <hdf5.h>
+#include "Hdf5File.H"
+#include "SolidError.H"
+
+#include <memory>
 
 using namespace Foam;
 
 namespace
 {
 
-//- An open HDF5 file; errors become FatalErrors naming the file and item
+//- An HDF5 result file read through the solid library's HDF5 layer; its
+//  errors become FatalErrors naming the file and item
 class h5File
 {
-    const fileName name_;
-    hid_t id_;
+    std::unique_ptr<solid::Hdf5File> file_;
+
+    //- Run f; a SolidError (naming the file and item) is fatal
+    template<class F>
+    static void guarded(F&& f)
+    {
+        try
+        {
+            f();
+        }
+        catch (const solid::SolidError& e)
+        {
+            FatalErrorInFunction
+                << e.what() << exit(FatalError);
+        }
+    }
 
 public:
 
     explicit h5File(const fileName& name)
-    :
-        name_(name),
-        id_(-1)
     {
-        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-        id_ = H5Fopen(name.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-        if (id_ < 0)
+        guarded([&]
         {
-            FatalErrorInFunction
-                << "Cannot open " << name << " as an HDF5 file"
-                << exit(FatalError);
-        }
+            file_.reset
+            (
+                new solid::Hdf5File(name, solid::Hdf5File::Mode::readOnly)
+            );
+        });
     }
-
-    ~h5File() { H5Fclose(id_); }
 
     //- Read a dataset of doubles: its rows and columns (1 for a vector)
     List<scalar> read(const word& path, label& rows, label& cols) const
     {
-        const hid_t d = H5Dopen2(id_, path.c_str(), H5P_DEFAULT);
-        if (d < 0)
-        {
-            FatalErrorInFunction
-                << "No dataset " << path << " in " << name_
-                << exit(FatalError);
-        }
-        const hid_t s = H5Dget_space(d);
-        hsize_t dims[2] = {0, 1};
-        const int rank = H5Sget_simple_extent_dims(s, dims, nullptr);
-        rows = dims[0];
-        cols = rank > 1 ? dims[1] : 1;
-        List<scalar> data(rows*cols);
-        if
-        (
-            H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                data.begin()) < 0
-        )
-        {
-            FatalErrorInFunction
-                << "Cannot read " << path << " in " << name_
-                << exit(FatalError);
-        }
-        H5Sclose(s);
-        H5Dclose(d);
+        std::size_t r = 0, c = 0;
+        std::vector<double> v;
+        guarded([&] { v = file_->read(path, &r, &c); });
+        rows = r;
+        cols = c;
+        List<scalar> data(v.size());
+        std::copy(v.begin(), v.end(), data.begin());
         return data;
     }
 
@@ -96,26 +90,25 @@ public:
     List<Tuple2<label, scalar>> steps() const
     {
         List<Tuple2<label, scalar>> result;
-        const hid_t g = H5Gopen2(id_, "/steps", H5P_DEFAULT);
-        if (g < 0)
+        if (!file_->has("steps"))
         {
             return result;
         }
-        hsize_t n = 0;
-        H5Gget_num_objs(g, &n);
-        for (hsize_t i = 0; i < n; ++i)
+        guarded([&]
         {
-            char buf[64];
-            H5Gget_objname_by_idx(g, i, buf, sizeof(buf));
-            const hid_t sg = H5Gopen2(g, buf, H5P_DEFAULT);
-            const hid_t a = H5Aopen(sg, "time", H5P_DEFAULT);
-            double t = 0;
-            H5Aread(a, H5T_NATIVE_DOUBLE, &t);
-            H5Aclose(a);
-            H5Gclose(sg);
-            result.append(Tuple2<label, scalar>(readLabel(buf), t));
-        }
-        H5Gclose(g);
+            const solid::Hdf5Group g(*file_, "steps", false);
+            for (const std::string& name : g.members())
+            {
+                const solid::Hdf5Group s(g, name, false);
+                result.append
+                (
+                    Tuple2<label, scalar>
+                    (
+                        readLabel(name), s.readAttribute("time")
+                    )
+                );
+            }
+        });
         Foam::sort
         (
             result,

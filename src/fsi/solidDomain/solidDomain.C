@@ -655,24 +655,14 @@ void Foam::solidDomain::setupOutput()
 
 void Foam::solidDomain::save()
 {
-    saved_.u = model_->u;
-    saved_.v = model_->v;
-    saved_.pressure = model_->pressure;
-    saved_.time = model_->time;
-    saved_.pointState = model_->pointState();
-    saved_.elementState = model_->elementState();
+    saved_.model = solid::ModelSnapshot(*model_);
     saved_.solver.reset(new solid::ExplicitSolver(*solver_));
 }
 
 
 void Foam::solidDomain::restore()
 {
-    model_->u = saved_.u;
-    model_->v = saved_.v;
-    model_->pressure = saved_.pressure;
-    model_->time = saved_.time;
-    model_->pointState() = saved_.pointState;
-    model_->elementState() = saved_.elementState;
+    saved_.model.restore(*model_);
     solver_.reset(new solid::ExplicitSolver(*saved_.solver));
 }
 

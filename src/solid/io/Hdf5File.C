@@ -1,0 +1,38 @@
+#include "Hdf5File.H"
+#include "SolidError.H"
+
+#include <hdf5.h>
+
+namespace
+{
+
+hid_t openFile(const std::string& name, solid::Hdf5File::Mode mode)
+{
+    using Mode = solid::Hdf5File::Mode;
+    // Failures are reported as SolidErrors naming the file, not as the
+    // library's error stack on stderr
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    const hid_t id = mode == Mode::create
+        ? H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)
+        : H5Fopen(name.c_str(), mode == Mode::readWrite ? H5F_ACC_RDWR
+                  : H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (id < 0)
+    {
+        throw solid::SolidError
+        (
+            solid::SolidError::Kind::io, "cannot "
+          + std::string(mode == Mode::create ? "create" : "open")
+          + " HDF5 file '" + name + "'"
+          + (mode == Mode::create ? "" : " (missing, truncated or not HDF5)")
+        );
+    }
+    return id;
+}
+
+} // namespace
+
+
+solid::Hdf5File::Hdf5File(const std::string& name, Mode mode)
+:
+    Hdf5Group(openFile(name, mode), name)
+{}

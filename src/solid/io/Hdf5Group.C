@@ -1,0 +1,259 @@
+#include "Hdf5Group.H"
+#include "SolidError.H"
+
+#include <hdf5.h>
+
+#include <type_traits>
+
+static_assert
+(
+    std::is_same<hid_t, std::int64_t>::value,
+    "Hdf5Group stores hid_t as std::int64_t (HDF5 >= 1.10)"
+);
+
+namespace
+{
+
+herr_t collectLink(hid_t, const char* name, const H5L_info_t*, void* out)
+{
+    static_cast<std::vector<std::string>*>(out)->emplace_back(name);
+    return 0;
+}
+
+herr_t collectDataset
+(
+    hid_t, const char* name, const H5O_info_t* info, void* out
+)
+{
+    if (info->type == H5O_TYPE_DATASET)
+    {
+        static_cast<std::vector<std::string>*>(out)->emplace_back(name);
+    }
+    return 0;
+}
+
+} // namespace
+
+
+solid::Hdf5Group::Hdf5Group(std::int64_t id, const std::string& file)
+:
+    id_(id),
+    isFile_(true),
+    file_(file),
+    path_("/")
+{}
+
+
+solid::Hdf5Group::Hdf5Group
+(
+    const Hdf5Group& parent,
+    const std::string& name,
+    bool create
+)
+:
+    id_(-1),
+    isFile_(false),
+    file_(parent.file_),
+    path_(parent.where(name))
+{
+    id_ = create
+        ? H5Gcreate2(parent.id_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT,
+                     H5P_DEFAULT)
+        : H5Gopen2(parent.id_, name.c_str(), H5P_DEFAULT);
+    if (id_ < 0)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::io, "HDF5 file '" + file_ + "': cannot "
+          + (create ? "create" : "open") + " group " + path_
+        );
+    }
+}
+
+
+solid::Hdf5Group::~Hdf5Group()
+{
+    if (id_ >= 0)
+    {
+        isFile_ ? H5Fclose(id_) : H5Gclose(id_);
+    }
+}
+
+
+void solid::Hdf5Group::closeNow()
+{
+    const hid_t id = id_;
+    id_ = -1;
+    check((isFile_ ? H5Fclose(id) : H5Gclose(id)) >= 0, "close");
+}
+
+
+void solid::Hdf5Group::check(bool ok, const std::string& what) const
+{
+    if (!ok)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::io, "HDF5 file '" + file_ + "': cannot " + what
+        );
+    }
+}
+
+
+std::string solid::Hdf5Group::where(const std::string& name) const
+{
+    if (!name.empty() && name[0] == '/') return name;
+    return path_ == "/" ? "/" + name : path_ + "/" + name;
+}
+
+
+bool solid::Hdf5Group::has(const std::string& name) const
+{
+    return H5Lexists(id_, name.c_str(), H5P_DEFAULT) > 0;
+}
+
+
+std::vector<std::string> solid::Hdf5Group::members() const
+{
+    std::vector<std::string> names;
+    hsize_t idx = 0;
+    check
+    (
+        H5Literate(id_, H5_INDEX_NAME, H5_ITER_INC, &idx, collectLink, &names)
+        >= 0,
+        "list the members of " + path_
+    );
+    return names;
+}
+
+
+std::vector<std::string> solid::Hdf5Group::datasets() const
+{
+    std::vector<std::string> names;
+    check
+    (
+        H5Ovisit(id_, H5_INDEX_NAME, H5_ITER_INC, collectDataset, &names)
+        >= 0,
+        "list the datasets below " + path_
+    );
+    return names;
+}
+
+
+void solid::Hdf5Group::remove(const std::string& name)
+{
+    check
+    (
+        H5Ldelete(id_, name.c_str(), H5P_DEFAULT) >= 0,
+        "remove " + where(name)
+    );
+}
+
+
+template<class T>
+void solid::Hdf5Group::writeData
+(
+    const std::string& name,
+    const T* data,
+    std::size_t rows,
+    std::size_t cols
+)
+{
+    const hid_t type =
+        std::is_same<T, int>::value ? H5T_NATIVE_INT : H5T_NATIVE_DOUBLE;
+    const hsize_t dims[2] = {rows, cols};
+    const hid_t space = H5Screate_simple(cols > 1 ? 2 : 1, dims, nullptr);
+    // A name with '/' creates its groups (checkpoint entries)
+    const hid_t lcpl = H5Pcreate(H5P_LINK_CREATE);
+    H5Pset_create_intermediate_group(lcpl, 1);
+    const hid_t d = H5Dcreate2
+    (
+        id_, name.c_str(), type, space, lcpl, H5P_DEFAULT, H5P_DEFAULT
+    );
+    H5Pclose(lcpl);
+    // An empty dataset has nothing to write
+    const bool ok = d >= 0
+     && (rows*cols == 0
+      || H5Dwrite(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0);
+    if (d >= 0) H5Dclose(d);
+    H5Sclose(space);
+    check(ok, "write dataset " + where(name));
+}
+
+
+void solid::Hdf5Group::write
+(
+    const std::string& name,
+    const double* data,
+    std::size_t rows,
+    std::size_t cols
+)
+{
+    writeData(name, data, rows, cols);
+}
+
+
+void solid::Hdf5Group::write
+(
+    const std::string& name,
+    const int* data,
+    std::size_t rows,
+    std::size_t cols
+)
+{
+    writeData(name, data, rows, cols);
+}
+
+
+std::vector<double> solid::Hdf5Group::read
+(
+    const std::string& name,
+    std::size_t* rows,
+    std::size_t* cols
+) const
+{
+    const hid_t d = H5Dopen2(id_, name.c_str(), H5P_DEFAULT);
+    check(d >= 0, "open dataset " + where(name) + " (missing?)");
+    const hid_t space = H5Dget_space(d);
+    hsize_t dims[2] = {0, 1};
+    const int rank = space < 0 ? -1
+      : H5Sget_simple_extent_ndims(space) > 2 ? -1
+      : H5Sget_simple_extent_dims(space, dims, nullptr);
+    const hssize_t n = rank < 0 ? -1 : H5Sget_simple_extent_npoints(space);
+    std::vector<double> v(n > 0 ? n : 0);
+    const bool ok = n >= 0
+     && (n == 0
+      || H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                 v.data()) >= 0);
+    if (space >= 0) H5Sclose(space);
+    H5Dclose(d);
+    check(ok, "read dataset " + where(name));
+    if (rows) *rows = rank > 0 ? dims[0] : 1;
+    if (cols) *cols = rank > 1 ? dims[1] : 1;
+    return v;
+}
+
+
+void solid::Hdf5Group::writeAttribute(const std::string& name, double value)
+{
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t a = H5Acreate2
+    (
+        id_, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT
+    );
+    const bool ok = a >= 0 && H5Awrite(a, H5T_NATIVE_DOUBLE, &value) >= 0;
+    if (a >= 0) H5Aclose(a);
+    H5Sclose(space);
+    check(ok, "write attribute " + name + " of " + path_);
+}
+
+
+double solid::Hdf5Group::readAttribute(const std::string& name) const
+{
+    double value = 0;
+    const hid_t a = H5Aopen(id_, name.c_str(), H5P_DEFAULT);
+    const bool ok = a >= 0 && H5Aread(a, H5T_NATIVE_DOUBLE, &value) >= 0;
+    if (a >= 0) H5Aclose(a);
+    check(ok, "read attribute " + name + " of " + path_);
+    return value;
+}

@@ -1,0 +1,120 @@
+// The HDF5 layer (Hdf5File, Hdf5Group): datasets of doubles and ints read
+// back exactly with their shape, nested names, attributes, members and
+// datasets listed, removal, and failures that name the file and object.
+#include "Hdf5File.H"
+#include "SolidError.H"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <limits>
+
+using namespace solid;
+
+namespace
+{
+
+std::string errorOf(const std::function<void()>& f)
+{
+    try
+    {
+        f();
+    }
+    catch (const SolidError& e)
+    {
+        EXPECT_EQ(e.kind(), SolidError::Kind::io);
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+
+TEST(Hdf5, WriteReadBack)
+{
+    const std::vector<double> x =
+        {0.1, -2.5e-300, std::numeric_limits<double>::max(), 1.0/3, 0, 7};
+    const std::vector<int> n = {4, -1, 2147483647};
+    {
+        Hdf5File f("layer.h5", Hdf5File::Mode::create);
+        {
+            Hdf5Group g(f, "group", true);
+            g.write("matrix", x.data(), 2, 3);
+            g.write("ints", n.data(), n.size());
+            g.write("empty", x.data(), 0);
+            g.writeAttribute("time", 1.25e-9);
+            f.write("a/b/c", x.data(), 1);
+        }
+        f.close();
+    }
+    const Hdf5File f("layer.h5", Hdf5File::Mode::readOnly);
+    const Hdf5Group g(f, "group", false);
+    std::size_t rows = 0, cols = 0;
+    EXPECT_EQ(g.read("matrix", &rows, &cols), x);
+    EXPECT_EQ(rows, 2u);
+    EXPECT_EQ(cols, 3u);
+    EXPECT_EQ(g.read("ints", &rows, &cols),
+              std::vector<double>(n.begin(), n.end()));
+    EXPECT_EQ(rows, 3u);
+    EXPECT_EQ(cols, 1u);
+    EXPECT_TRUE(g.read("empty").empty());
+    EXPECT_EQ(g.readAttribute("time"), 1.25e-9);
+    EXPECT_EQ(f.read("/group/matrix"), x);
+    EXPECT_EQ(f.read("a/b/c"), std::vector<double>{0.1});
+    EXPECT_EQ(g.members(),
+              (std::vector<std::string>{"empty", "ints", "matrix"}));
+    EXPECT_EQ(f.datasets(),
+              (std::vector<std::string>{"a/b/c", "group/empty",
+                                        "group/ints", "group/matrix"}));
+    EXPECT_TRUE(f.has("group"));
+    EXPECT_FALSE(f.has("nothing"));
+}
+
+
+TEST(Hdf5, RemoveMember)
+{
+    const double one = 1;
+    {
+        Hdf5File f("remove.h5", Hdf5File::Mode::create);
+        f.write("keep", &one, 1);
+        f.write("drop", &one, 1);
+        f.close();
+    }
+    {
+        Hdf5File f("remove.h5", Hdf5File::Mode::readWrite);
+        f.remove("drop");
+        f.close();
+    }
+    const Hdf5File f("remove.h5", Hdf5File::Mode::readOnly);
+    EXPECT_EQ(f.members(), std::vector<std::string>{"keep"});
+}
+
+
+TEST(Hdf5, FailuresNameTheFileAndObject)
+{
+    std::string msg = errorOf([] { Hdf5File("none.h5", Hdf5File::Mode::readOnly); });
+    EXPECT_NE(msg.find("'none.h5'"), std::string::npos) << msg;
+    std::ofstream("text.h5") << "not hdf5\n";
+    msg = errorOf([] { Hdf5File("text.h5", Hdf5File::Mode::readOnly); });
+    EXPECT_NE(msg.find("'text.h5'"), std::string::npos) << msg;
+
+    const double one = 1;
+    {
+        Hdf5File f("small.h5", Hdf5File::Mode::create);
+        Hdf5Group g(f, "g", true);
+        g.write("x", &one, 1);
+    }
+    const Hdf5File f("small.h5", Hdf5File::Mode::readOnly);
+    const Hdf5Group g(f, "g", false);
+    msg = errorOf([&] { g.read("y"); });
+    EXPECT_NE(msg.find("'small.h5'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("/g/y"), std::string::npos) << msg;
+    msg = errorOf([&] { Hdf5Group(g, "h", false); });
+    EXPECT_NE(msg.find("/g/h"), std::string::npos) << msg;
+    msg = errorOf([&] { g.readAttribute("time"); });
+    EXPECT_NE(msg.find("time"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("/g"), std::string::npos) << msg;
+}
