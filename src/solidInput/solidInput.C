@@ -10,7 +10,6 @@
 #include "GmshReader.H"
 #include "SolidError.H"
 
-#include <algorithm>
 #include <map>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //

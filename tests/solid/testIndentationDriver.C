@@ -211,35 +211,37 @@ TEST(SolidIndentationDriver, HoldStepsGrowAndTheForceRelaxes)
 }
 
 
-TEST(SolidIndentationDriver, ResumedRunEqualsUninterruptedBitForBit)
+namespace
 {
-    ScratchDir first, whole, resumed;
-    IndentationSettings s = baseSettings();
-    s.forceTarget = 1e-9;           // below the force at 1 um
-    s.writeInterval = 0.5;          // fields [s]
-    {
-        Indentation a(table, s, first.path);
-        a.driver->start(false);
-        a.driver->run();
-    }
-    const long n = long(forceRows(first.path).size());
-    ASSERT_GT(n, 20);
 
-    // The last checkpoint after about half the steps: the resumed run has
-    // the other half (the rest of the hold, the cycle, the last hold)
-    s.checkpointInterval = n/2 + 1;
+//- Run the table with a checkpoint every k steps (of n; the last one after
+//  step k: k > n/2, when force.dat has lines lines), copy the outputs (a
+//  run killed after that checkpoint: they carry more steps) and continue
+//  from them; the continued run must equal the uninterrupted one bit for
+//  bit
+void resumeAfter
+(
+    long k,
+    long lines,
+    const IndentationSettings& settings,
+    long n
+)
+{
+    ASSERT_GT(2*k, n);
+    ScratchDir whole, resumed;
+    IndentationSettings s = settings;
+    s.checkpointInterval = k;
     Indentation a(table, s, whole.path);
     a.driver->start(false);
     a.driver->run();
     ASSERT_TRUE(Checkpoint::exists(a.driver->checkpointFile()));
-    // A run killed after its last checkpoint: its outputs carry more steps
     fs::copy(whole.path, resumed.path, fs::copy_options::recursive
            | fs::copy_options::overwrite_existing);
 
     Indentation b(table, s, resumed.path);
     b.driver->start(true);
-    EXPECT_EQ(b.driver->counters().steps, s.checkpointInterval);
-    EXPECT_LT(forceRows(resumed.path).size(), std::size_t(n));
+    EXPECT_EQ(b.driver->counters().steps, k);
+    EXPECT_EQ(forceRows(resumed.path).size(), std::size_t(lines));
     b.driver->run();
 
     EXPECT_EQ(contents(whole.path + "/force.dat"),
@@ -256,7 +258,7 @@ TEST(SolidIndentationDriver, ResumedRunEqualsUninterruptedBitForBit)
     const auto sb = ResultWriter::steps(resumed.path + "/solid.h5");
     EXPECT_EQ(sa, sb);
     ASSERT_FALSE(sb.empty());
-    Indentation fa(table, s, first.path), fb(table, s, first.path);
+    Indentation fa(table, s, whole.path), fb(table, s, resumed.path);
     ResultWriter::restart(whole.path + "/solid.h5", sa.back().first,
                           *fa.model);
     ResultWriter::restart(resumed.path + "/solid.h5", sb.back().first,
@@ -270,4 +272,45 @@ TEST(SolidIndentationDriver, ResumedRunEqualsUninterruptedBitForBit)
     Indentation c(shorter, s, resumed.path);
     EXPECT_THROW(c.driver->start(true), SolidError);
     EXPECT_EQ(contents(resumed.path + "/force.dat"), before);
+}
+
+} // namespace
+
+
+// Checkpoints inside a load row (the predictor u + dt v of the next step
+// needs the rate) and inside a hold (the next step size): both restored
+TEST(SolidIndentationDriver, ResumedRunEqualsUninterruptedBitForBit)
+{
+    ScratchDir first;
+    IndentationSettings s = baseSettings();
+    s.forceTarget = 1e-9;           // below the force at 1 um
+    s.writeInterval = 0.5;          // fields [s]
+    Indentation a(table, s, first.path);
+    a.driver->start(false);
+    a.driver->run();
+    const auto rows = forceRows(first.path);
+    const long n = a.driver->counters().steps;
+    // The steps of the force-controlled row redone by the secant search
+    // have no line in force.dat
+    const long redone = n - long(rows.size());
+    ASSERT_GT(n, 20);
+    ASSERT_GE(redone, 1);
+
+    // The first step k > n/2 that ends inside a load row, and inside a hold
+    long kLoad = 0, kHold = 0;
+    for (long k = n/2 + 1; k < n; ++k)
+    {
+        const double t = rows[k - redone - 1].t;
+        const int r = a.protocol->rowAt(t);
+        const bool inside = t < a.protocol->rowEnd(r)*(1 - 1e-9);
+        const bool hold = a.protocol->rows()[r].motion == "hold";
+        if (inside && hold && !kHold) kHold = k;
+        if (inside && !hold && !kLoad) kLoad = k;
+    }
+    ASSERT_GT(kLoad, 0);
+    ASSERT_GT(kHold, 0);
+    std::printf("%ld steps; continued after step %ld (load) and %ld (hold)\n",
+                n, kLoad, kHold);
+    resumeAfter(kLoad, kLoad - redone, s, n);
+    resumeAfter(kHold, kHold - redone, s, n);
 }
