@@ -24,6 +24,7 @@
 #include "Model.H"
 #include "Shape.H"
 #include "SolidError.H"
+#include "StringEntries.H"
 
 #include <cmath>
 #include <cstdio>
@@ -177,7 +178,14 @@ int main(int argc, char** argv)
             model.setMaterial
             (
                 m.first,
-                Material::create(MaterialParameters::fromEntries(m.first, m.second))
+                Material::create
+                (
+                    MaterialParameters::fromEntries
+                    (
+                        m.first,
+                        StringEntries("material '" + m.first + "'", m.second)
+                    )
+                )
             );
         }
         for (int k = 0; k < 3; ++k) model.fix("fixedBottom", k);

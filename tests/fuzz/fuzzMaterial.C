@@ -1,12 +1,13 @@
 // libFuzzer harness: the material parameter reader of the solid library
-// (MaterialParameters::fromEntries: the "key value" entries of a region
-// sub-dictionary, as cellIndentationFoam/cellBlastFoam pass them) and the
+// (MaterialParameters::fromEntries of StringEntries: the "key value"
+// entries of a region sub-dictionary as text, strictly parsed) and the
 // named paper parameter sets (paperParameterSet). The first line of the
 // input names the parameter set, each further line is "key value...".
 // Any bad input must throw SolidError; accepted parameters must build a
 // Material.
 #include "Material.H"
 #include "SolidError.H"
+#include "StringEntries.H"
 
 #include <cstdint>
 #include <map>
@@ -38,7 +39,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     }
     try
     {
-        const auto p = solid::MaterialParameters::fromEntries("fuzz", entries);
+        const auto p = solid::MaterialParameters::fromEntries
+        (
+            "fuzz", solid::StringEntries("material 'fuzz'", entries)
+        );
         solid::Material::create(p);
     }
     catch (const solid::SolidError&)

@@ -8,6 +8,7 @@
 #include "QuadraticVolumetric.H"
 #include "MieGruneisenVolumetric.H"
 #include "SolidError.H"
+#include "StringEntries.H"
 
 #include <gtest/gtest.h>
 #include <cmath>
@@ -524,7 +525,10 @@ std::string errorOf(const std::map<std::string, std::string>& e)
 {
     try
     {
-        MaterialParameters::fromEntries("cytoplasm", e);
+        MaterialParameters::fromEntries
+        (
+            "cytoplasm", StringEntries("material 'cytoplasm'", e)
+        );
     }
     catch (const SolidError& err)
     {
@@ -557,8 +561,13 @@ TEST(SolidMaterial, ParameterEntriesAndValidation)
     const auto p = MaterialParameters::fromEntries
     (
         "membrane",
-        {{"rho0", "1000"}, {"c0", "166.67"}, {"volumetric", "neoHookean"},
-         {"d0", "0"}, {"mu1", "13.89"}, {"eta1", "41670"}}
+        StringEntries
+        (
+            "material 'membrane'",
+            {{"rho0", "1000"}, {"c0", "166.67"},
+             {"volumetric", "neoHookean"}, {"d0", "0"}, {"mu1", "13.89"},
+             {"eta1", "41670"}}
+        )
     );
     ASSERT_EQ(p.branches.size(), 1u);
     EXPECT_NEAR(p.branches[0].tau, 41670/13.89, 1e-9);

@@ -6,6 +6,7 @@
 #include "Material.H"
 #include "ResultWriter.H"
 #include "StaticSolver.H"
+#include "StringEntries.H"
 
 #include <iostream>
 #include <map>
@@ -26,7 +27,13 @@ std::shared_ptr<const Material> material()
         {"mu1", "50"},      // [Pa]
         {"tau1", "1"}       // [s]
     };
-    return Material::create(MaterialParameters::fromEntries("solid", entries));
+    return Material::create
+    (
+        MaterialParameters::fromEntries
+        (
+            "solid", StringEntries("material 'solid'", entries)
+        )
+    );
 }
 
 void run(Model& model, const std::string& base, const std::string& top)

@@ -44,21 +44,27 @@ if os.environ.get("FULL") != "1":
     (C1  unload  10e-6   2e-6)
 );""" % A, text["constant/indenterProperties"], flags=re.S)
 PAPER = {"membrane": (166.67, 13.89, 3000), "cytoplasm": (1.67, 107.78, 0.01)}
+def material(region, c0, mu1, tau1):
+    """A region's material, last in the materials of solidProperties"""
+    t, n = re.subn(r"(\nmaterials\s*\{.*?)(\n\})",
+                   lambda m: m.group(1) + "\n    %s { c0 %r; d0 0; mu1 %r; "
+                   "tau1 %r; }" % (region, c0, mu1, tau1) + m.group(2),
+                   text["constant/solidProperties"], count=1, flags=re.S)
+    if not n:
+        sys.exit("gapStudy: no materials in constant/solidProperties")
+    text["constant/solidProperties"] = t
 for kv in sys.argv[1:]:
     k, v = kv.split("=", 1)
     if k.startswith("material."):
-        c0, mu1, tau1 = (float(x) for x in v.split(","))
-        text["constant/solidProperties"] += (
-            "\n%s { c0 %g; d0 0; mu1 %g; tau1 %g; }\n"
-            % (k.split(".", 1)[1], c0, mu1, tau1))
+        material(k.split(".", 1)[1], *(float(x) for x in v.split(",")))
         continue
     if k == "membraneAs":
-        c0, mu1, tau1 = PAPER[v]
-        text["constant/solidProperties"] += (
-            "\nmembrane { c0 %g; d0 0; mu1 %g; tau1 %g; }\n" % (c0, mu1, tau1))
+        material("membrane", *PAPER[v])
         continue
     for f in files:
-        t, n = re.subn(r"(\n%s\s+)[^;]*;" % re.escape(k),
+        # solidProperties: also the entries of materials (parameterSet)
+        indent = "[ \t]*" if f == "constant/solidProperties" else ""
+        t, n = re.subn(r"(\n%s%s\s+)[^;]*;" % (indent, re.escape(k)),
                        lambda m: m.group(1) + v + ";", text[f])
         if n:
             text[f] = t

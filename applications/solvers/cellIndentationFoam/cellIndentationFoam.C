@@ -7,20 +7,24 @@ Description
     rigid sphere through a multi-rate loading table (Jerusalem & Dao 2012,
     sec. 2.2.1 and 3; Table 1). Solid only: the solid library (src/solid)
     with incompressible visco-hyperelastic regions (Q1/P0, mixed u-p), a
-    frictionless augmented-Lagrangian sphere contact and backward-Euler
-    Newton steps sized by the loading rate (a depth increment per step)
-    and, in holds, growing geometrically from a small first step (the
-    Maxwell branches relax in 0.01 s .. 3000 s).
+    frictionless augmented-Lagrangian sphere contact, driven through the
+    table by solid::IndentationDriver (backward-Euler Newton steps sized
+    by the loading rate, geometrically growing steps in holds, optionally
+    a force-controlled first row, checkpoints).
 
     Inputs (every entry validated; a bad one is a FatalIOError naming the
     file and the entry):
-        constant/cell.msh           gmsh mesh in metres (cellMesh)
-        constant/solidProperties    one sub-dictionary per region with the
-                                    entries of MaterialParameters, or
-                                    parameterSet table|text|textFactor4|
-                                    instantaneous
+        constant/solidProperties    mesh (gmsh: constant/cell.msh from
+                                    cellMesh), fixed components, one
+                                    material per region or parameterSet
+                                    table|text|textFactor4|instantaneous
+                                    (Foam::solidInput, shared with
+                                    cellBlastFoam)
         constant/indenterProperties sphere, contact, stepping, protocol
-        system/controlDict          fieldWriteInterval [s] of the field output
+        system/controlDict          fieldWriteInterval [s] of the field
+                                    output, checkpointInterval [steps];
+                                    startFrom latestTime continues from
+                                    the last checkpoint
 
     Outputs (postProcessing/indentation/):
         force.dat   time [s], depth [m], force [N], contact radius [m],
@@ -29,6 +33,8 @@ Description
         solid.h5/.xmf   fields (pressure, von Mises, ...) at the peaks, at
                     the stage ends B and E and every fieldWriteInterval;
                     ParaView opens solid.xmf
+        materials.dat   the material of every region as built (17 digits)
+        restart.h5  the last checkpoint
 
 Usage
     cellIndentationFoam [-case dir]
@@ -38,25 +44,17 @@ Usage
 #include "argList.H"
 #include "Time.H"
 #include "IOdictionary.H"
-#include "OFstream.H"
-#include "OSspecific.H"
+
+#include "solidInput.H"
 
 #include "Checkpoint.H"
-#include "GmshReader.H"
-#include "IndentationProtocol.H"
-#include "ResultWriter.H"
-#include "RigidSphereContact.H"
+#include "IndentationDriver.H"
 #include "SolidError.H"
-#include "StaticSolver.H"
-
 
 #include <chrono>
 #include <ctime>
 #include <iostream>
-#include <map>
 #include <memory>
-#include <sstream>
-#include <unistd.h>
 
 using namespace Foam;
 
@@ -77,25 +75,35 @@ int main(int argc, char *argv[])
 
     #include "createModel.H"
     #include "createIndenter.H"
+    #include "createDriver.H"
 
     // Wall and CPU time: on a shared machine the CPU time of this process
     // is the one-core cost
     const auto wall0 = std::chrono::steady_clock::now();
     const std::clock_t cpu0 = std::clock();
-    #include "runProtocol.H"
+    try
+    {
+        driver->run();
+    }
+    catch (const solid::SolidError& err)
+    {
+        FatalErrorInFunction
+            << "at t = " << model.time << " s: " << err.what()
+            << exit(FatalError);
+    }
     const double wall = std::chrono::duration<double>
     (
         std::chrono::steady_clock::now() - wall0
     ).count();
     const double cpu = double(std::clock() - cpu0)/CLOCKS_PER_SEC;
 
-    Info<< nl << "Protocol done: " << nSteps << " steps, " << nIterations
-        << " Newton iterations, " << nAugmentations << " augmentations, "
-        << nCuts << " step cuts, " << contact->penaltyRaises()
+    const solid::IndentationCounters& n = driver->counters();
+    Info<< nl << "Protocol done: " << n.steps << " steps, " << n.iterations
+        << " Newton iterations, " << n.augmentations << " augmentations, "
+        << n.cuts << " step cuts, " << contact->penaltyRaises()
         << " penalty raises, wall time " << wall << " s, CPU time "
-        << cpu << " s (assembly "
-        << assemblySeconds << " s, factorise + solve " << solveSeconds
-        << " s)" << nl
+        << cpu << " s (assembly " << n.assemblySeconds
+        << " s, factorise + solve " << n.solveSeconds << " s)" << nl
         << "End" << nl << endl;
 
     return 0;

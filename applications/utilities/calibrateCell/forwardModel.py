@@ -1,7 +1,7 @@
 """cellIndentationFoam as the forward model of calibrateCell: a meshed
 scratch copy of the case, one run per parameter vector in its own folder,
-the materials of every region written as sub-dictionaries of
-constant/solidProperties."""
+the materials of every region written as sub-dictionaries of the
+materials of constant/solidProperties."""
 
 import os
 import re
@@ -29,6 +29,29 @@ def protocol_text(rows):
         "    (%s %s %s %s)\n" % (r[0], r[1], foamDict.format_value(r[2]),
                                  foamDict.format_value(r[3])) for r in rows
     ) + ")"
+
+
+def read_materials(path):
+    """The materials cellIndentationFoam built, from its materials.dat
+    (region, rho0 [kg/m^3], c0 [Pa], d0 [1/Pa], then muN [Pa] and tauN [s]
+    per Maxwell branch; 17 digits): region -> {c0, d0, mu1, tau1, ...}."""
+    if not os.path.isfile(path):
+        raise ModelError("no %s (the solver writes it at the start)" % path)
+    mats = {}
+    for line in open(path):
+        if line.startswith("#") or not line.strip():
+            continue
+        s = line.split()
+        if len(s) < 4 or len(s) % 2:
+            raise ModelError("%s: malformed line '%s'" % (path, line.strip()))
+        e = {"c0": float(s[2]), "d0": float(s[3])}
+        for n in range(1, (len(s) - 4)//2 + 1):
+            e["mu%d" % n] = float(s[2 + 2*n])
+            e["tau%d" % n] = float(s[3 + 2*n])
+        mats[s[0]] = e
+    if not mats:
+        raise ModelError("%s: no material" % path)
+    return mats
 
 
 class ForwardModel:
@@ -86,8 +109,9 @@ class ForwardModel:
         open(p, "w").write(text)
 
     def _probe(self):
-        """Region materials as the solver reads them (paper set plus the
-        case's sub-dictionaries): a run of one 10 nm load step."""
+        """Region materials as the solver built them (paper set plus the
+        case's sub-dictionaries), every digit: the materials.dat of a run
+        of one 10 nm load step."""
         d = os.path.join(self.work, "probe")
         self._make_run_dir(d, self.sp_text, foamDict.set_entry(
             self.ip_text, ["protocol"], "((A load 0.3e-6 1e-8))", self.ip_path))
@@ -95,19 +119,12 @@ class ForwardModel:
         if _run(["cellIndentationFoam", "-case", d], d, log):
             raise ModelError("the case's own parameters do not run (see %s)"
                              % log)
-        text = open(log).read()
-        mats = {}
-        for m in re.finditer(r'^\s+"?(\w+)"?: c0 (\S+) Pa, d0 (\S+) 1/Pa(.*)$',
-                             text, re.M):
-            e = {"c0": float(m.group(2)), "d0": float(m.group(3))}
-            for n, b in enumerate(re.findall(r"mu (\S+) Pa tau (\S+) s",
-                                             m.group(4)), start=1):
-                e["mu%d" % n] = float(b[0])
-                e["tau%d" % n] = float(b[1])
-            mats[m.group(1)] = e
-        ne = re.search(r"(\d+) elements", text)
-        if not mats or not ne:
-            raise ModelError("cannot read the materials from %s" % log)
+        mats = read_materials(
+            os.path.join(d, "postProcessing/indentation/materials.dat"))
+        ne = re.search(r"(\d+) elements", open(log).read())
+        if not ne:
+            raise ModelError("cannot read the number of elements from %s"
+                             % log)
         if not self.keep:
             shutil.rmtree(d)
         return mats, int(ne.group(1))
@@ -124,12 +141,13 @@ class ForwardModel:
             ip_text)
 
     def solid_properties(self, materials, header=""):
-        """constant/solidProperties text with one sub-dictionary per region
-        (every entry of MaterialParameters the solver reported)."""
+        """constant/solidProperties text with one sub-dictionary of
+        'materials' per region (every entry of MaterialParameters the
+        solver reported)."""
         text = self.sp_text
         for region, e in materials.items():
             text = foamDict.set_subdict(
-                text, region, e, self.sp_path,
+                text, ["materials", region], e, self.sp_path,
                 {k: ("Pa" if k[0] in "cm" else "1/Pa" if k == "d0" else "s")
                  for k in e})
         return header + text if header else text

@@ -16,7 +16,8 @@ Usage
               -output <name>=<file>:<row>:<column> [-output ...]
               [-case dir] [-run "<command>"] [-nProcs N] [-name n] [-keep]
 
-    -entry   the entry to vary, e.g. constant/solidProperties/nucleus/c0 or
+    -entry   the entry to vary, e.g.
+             constant/solidProperties/materials/nucleus/c0 or
              constant/indenterProperties/maxDepthIncrement; it must exist
     -output  a number of an output file of the run (relative to the case):
                <row>    a label in the first column (endB, C1,i), an index
@@ -31,7 +32,7 @@ Usage
 
     Example (the paper's three parameter readings, F_B and the CPU time):
         sweepCase -case tutorials/indentation/averageCell \\
-            -entry constant/solidProperties/parameterSet \\
+            -entry constant/solidProperties/materials/parameterSet \\
             -values "table text instantaneous" -nProcs 2 \\
             -output "F_B [N]=postProcessing/indentation/peaks.dat:endB:force" \\
             -output "CPU [s]=log.cellIndentationFoam:/CPU time (\\S+) s/"

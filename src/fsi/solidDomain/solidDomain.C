@@ -1,13 +1,8 @@
 #include "solidDomain.H"
-#include "GmshReader.H"
-#include "Material.H"
+#include "solidInput.H"
 #include "SolidError.H"
-#include "primitiveEntry.H"
-#include "OStringStream.H"
 #include "IOobject.H"
-#include "labelVector.H"
 #include "pointField.H"
-#include "vector2D.H"
 #include "Pair.H"
 #include "Shape.H"
 #include "IFstream.H"
@@ -59,62 +54,6 @@ void guarded(const Foam::dictionary& dict, const char* context, F&& f)
 } // namespace
 
 
-solid::Mesh Foam::solidDomain::readMesh
-(
-    const dictionary& dict,
-    const Time& runTime
-)
-{
-    const word type(dict.get<word>("type"));
-    solid::Mesh m;
-    if (type == "box")
-    {
-        const labelVector n(dict.get<labelVector>("cells"));
-        const vector lo(dict.get<vector>("min")), hi(dict.get<vector>("max"));
-        guarded(dict, "solid mesh box", [&]
-        {
-            m = solid::Mesh::box
-            (
-                n.x(), n.y(), n.z(),
-                solid::Vec3(lo.x(), lo.y(), lo.z()),
-                solid::Vec3(hi.x(), hi.y(), hi.z())
-            );
-        });
-    }
-    else if (type == "rectangle")
-    {
-        const Vector2D<label> n(dict.get<Vector2D<label>>("cells"));
-        const vector2D lo(dict.get<vector2D>("min"));
-        const vector2D hi(dict.get<vector2D>("max"));
-        guarded(dict, "solid mesh rectangle", [&]
-        {
-            m = solid::Mesh::rectangle
-            (
-                n.x(), n.y(), lo.x(), hi.x(), lo.y(), hi.y()
-            );
-        });
-    }
-    else if (type == "gmsh")
-    {
-        fileName file(dict.get<fileName>("file"));
-        file.expand();
-        if (!file.isAbsolute()) file = runTime.globalPath()/file;
-        const scalar scale = dict.getOrDefault<scalar>("scale", 1);
-        guarded(dict, "solid mesh gmsh", [&]
-        {
-            m = solid::readGmsh(file, scale);
-        });
-    }
-    else
-    {
-        FatalIOErrorInFunction(dict)
-            << "Unknown solid mesh type " << type
-            << "; valid types: (box rectangle gmsh)" << exit(FatalIOError);
-    }
-    return m;
-}
-
-
 Foam::solidDomain::solidDomain(const Time& runTime)
 :
     runTime_(runTime),
@@ -130,51 +69,9 @@ Foam::solidDomain::solidDomain(const Time& runTime)
         )
     )
 {
-    model_.reset(new solid::Model(readMesh(dict_.subDict("mesh"), runTime)));
-
-    const dictionary& mats = dict_.subDict("materials");
-    for (const std::string& region : model_->mesh().regionNames)
-    {
-        if (!mats.isDict(region))
-        {
-            FatalIOErrorInFunction(mats)
-                << "No material for solid region " << region
-                << "; regions: "
-                << wordList(model_->mesh().regionNames.begin(),
-                            model_->mesh().regionNames.end())
-                << exit(FatalIOError);
-        }
-        std::map<std::string, std::string> entries;
-        for (const entry& e : mats.subDict(region))
-        {
-            OStringStream os;
-            for (const token& t : e.stream()) os << t;
-            entries[e.keyword()] = os.str();
-        }
-        guarded(mats.subDict(region), "solid material", [&]
-        {
-            model_->setMaterial
-            (
-                region,
-                solid::Material::create
-                (
-                    solid::MaterialParameters::fromEntries(region, entries)
-                )
-            );
-        });
-    }
-
-    const List<Tuple2<word, label>> fixed
-    (
-        dict_.get<List<Tuple2<word, label>>>("fixed")
-    );
-    for (const auto& f : fixed)
-    {
-        guarded(dict_, "solid fixed", [&]
-        {
-            model_->fix(f.first(), f.second());
-        });
-    }
+    const solidInput input(dict_, runTime.globalPath());
+    model_.reset(new solid::Model(input.mesh()));
+    input.setup(*model_);
 }
 
 

@@ -230,20 +230,15 @@ def format_value(v):
     if isinstance(v, bool):
         return "yes" if v else "no"
     if isinstance(v, float):
-        return "%.10g" % v
+        return repr(v)
     if isinstance(v, (list, tuple)):
         return "(" + " ".join(format_value(x) for x in v) + ")"
     return str(v)
 
 
-def set_subdict(text, name, entries, name_of_text="<text>", units={}):
-    """Text with the top-level sub-dictionary `name` replaced by (or, when
-    missing, appended as) one holding `entries` (dict key -> value, with a
-    unit comment from `units` where given)."""
-    body = "%s\n{\n%s}" % (name, "".join(
-        "    %-5s %s;%s\n" % (k, format_value(v),
-                            "  // [%s]" % units[k] if k in units else "")
-        for k, v in entries.items()))
+def _subdict_span(text, name, name_of_text):
+    """(start, end) of the top-level sub-dictionary `name` in text, from
+    its keyword to its closing brace; None when there is none."""
     toks = tokens(text, name_of_text)
     depth = 0
     for k, (t, s, e) in enumerate(toks):
@@ -258,9 +253,44 @@ def set_subdict(text, name, entries, name_of_text="<text>", units={}):
             for t2, s2, e2 in toks[k + 1:]:
                 level += {"{": 1, "}": -1}.get(t2, 0)
                 if level == 0:
-                    return text[:s] + body + text[e2:]
+                    return s, e2
             raise DictError("%s: unclosed sub-dictionary '%s'"
                             % (name_of_text, name))
+    return None
+
+
+def set_subdict(text, path, entries, name_of_text="<text>", units={},
+                indent=""):
+    """Text with the sub-dictionary `path` (a name at the top level, or a
+    list of names from the top, e.g. ['materials', 'nucleus'], whose
+    parents must exist) replaced by (or, when missing, appended as) one
+    holding `entries` (dict key -> value, with a unit comment from `units`
+    where given)."""
+    path = [path] if isinstance(path, str) else list(path)
+    if len(path) > 1:
+        span = _subdict_span(text, path[0], name_of_text)
+        if span is None:
+            raise DictError("%s: no sub-dictionary '%s'"
+                            % (name_of_text, path[0]))
+        s, e = span
+        i = text.index("{", s) + 1
+        j = text.rindex("}", s, e)
+        return text[:i] + set_subdict(
+            text[i:j], path[1:], entries, name_of_text, units,
+            indent + "    ") + text[j:]
+    name = path[0]
+    body = "%s%s\n%s{\n%s%s}" % (indent, name, indent, "".join(
+        "%s    %-5s %s;%s\n" % (indent, k, format_value(v),
+                              "  // [%s]" % units[k] if k in units else "")
+        for k, v in entries.items()), indent)
+    span = _subdict_span(text, name, name_of_text)
+    if span is not None:
+        s, e = span
+        line = text.rfind("\n", 0, s) + 1
+        start = line if not text[line:s].strip() else s
+        return text[:start] + body + text[e:]
+    if indent:
+        return text.rstrip("\n") + "\n" + body + "\n"
     # before the closing '// ****' banner when there is one
     end = re.search(r"\n// \*+ //\s*$", text)
     if end:

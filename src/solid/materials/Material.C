@@ -8,37 +8,11 @@
 #include <limits>
 #include <set>
 
-namespace
-{
-
-double toNumber
-(
-    const std::string& context,
-    const std::string& key,
-    const std::string& value
-)
-{
-    char* end = nullptr;
-    const double v = std::strtod(value.c_str(), &end);
-    if (value.empty() || end == value.c_str() || *end != '\0')
-    {
-        throw solid::SolidError
-        (
-            solid::SolidError::Kind::parameter,
-            context + ": entry '" + key + "' = '" + value
-          + "' is not a number"
-        );
-    }
-    return v;
-}
-
-} // namespace
-
 
 solid::MaterialParameters solid::MaterialParameters::fromEntries
 (
     const std::string& name,
-    const std::map<std::string, std::string>& entries
+    const Entries& entries
 )
 {
     MaterialParameters par;
@@ -52,18 +26,17 @@ solid::MaterialParameters solid::MaterialParameters::fromEntries
         {"Cv", &par.eos.Cv}, {"T0", &par.eos.T0}, {"b1", &par.b1},
         {"b2", &par.b2}
     };
-    for (const auto& kv : entries)
+    for (const std::string& key : entries.keys())
     {
-        const std::string& key = kv.first;
         if (key == "volumetric")
         {
-            par.volumetric = kv.second;
+            par.volumetric = entries.word(key);
             continue;
         }
         const auto it = scalars.find(key);
         if (it != scalars.end())
         {
-            *it->second = toNumber(ctx, key, kv.second);
+            *it->second = entries.real(key);
             continue;
         }
         bool branch = false;
@@ -78,7 +51,7 @@ solid::MaterialParameters solid::MaterialParameters::fromEntries
             )
             {
                 const int n = std::atoi(key.c_str() + pre.size());
-                const double v = toNumber(ctx, key, kv.second);
+                const double v = entries.real(key);
                 if (n < 1)
                 {
                     throw SolidError

@@ -1,0 +1,435 @@
+#include "IndentationDriver.H"
+#include "Checkpoint.H"
+#include "SolidError.H"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+namespace fs = std::filesystem;
+
+
+solid::IndentationDriver::IndentationDriver
+(
+    Model& model,
+    std::shared_ptr<RigidSphereContact> contact,
+    std::shared_ptr<IndentationProtocol> protocol,
+    const NewtonSettings& newton,
+    const IndentationSettings& settings,
+    const std::string& outDir
+)
+:
+    model_(model),
+    contact_(std::move(contact)),
+    protocol_(std::move(protocol)),
+    settings_(settings),
+    outDir_(outDir),
+    solver_(model, newton)
+{
+    std::error_code ec;
+    fs::create_directories(outDir_, ec);
+    if (ec)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::io,
+            "cannot create " + outDir_ + ": " + ec.message()
+        );
+    }
+}
+
+
+solid::IndentationDriver::~IndentationDriver() = default;
+
+
+std::string solid::IndentationDriver::path(const std::string& name) const
+{
+    return outDir_ + "/" + name;
+}
+
+
+void solid::IndentationDriver::checkResume()
+{
+    resumeFrom_.reset(new Checkpoint(Checkpoint::read(checkpointFile())));
+    // Everything checked before any output is touched: a checkpoint of
+    // another mesh, model or table is refused here
+    const Checkpoint& c = *resumeFrom_;
+    c.restoreModel("model/", model_);
+    contact_->report(model_, model_.u, model_.time);
+    contact_->setMultipliers(c.get("contact/multipliers"));
+    for
+    (
+        const char* e :
+        {
+            "contact/force", "contact/contactRadius",
+            "contact/maxPenetration", "contact/nActive", "row",
+            "holdDt", "extrapolate", "nextWrite", "delta0Found",
+            "fieldSteps"
+        }
+    )
+    {
+        c.scalar(e);
+    }
+    c.get("rate", model_.u.size());
+    c.get("counters", 6);
+    const double row = c.scalar("row");
+    if (row < 0 || row >= protocol_->rows().size())
+    {
+        throw SolidError
+        (
+            SolidError::Kind::io, "entry 'row' = " + std::to_string(row)
+          + " is not a row of the loading table of "
+            "constant/indenterProperties (changed since?)"
+        );
+    }
+    // The output files must be at least as long as when checkpointed
+    for (const char* f : {"force.dat", "peaks.dat"})
+    {
+        const double len = c.scalar(std::string(f) + ".length");
+        std::error_code ec;
+        if
+        (
+            !fs::is_regular_file(path(f), ec)
+         || double(fs::file_size(path(f), ec)) < len
+        )
+        {
+            throw SolidError
+            (
+                SolidError::Kind::io, path(f) + " is missing or shorter "
+                "than when the checkpoint was written ("
+              + std::to_string(long(len)) + " bytes)"
+            );
+        }
+        fs::resize_file(path(f), std::uintmax_t(len), ec);
+        if (ec)
+        {
+            throw SolidError
+            (
+                SolidError::Kind::io, "cannot cut " + path(f) + " back to "
+              + std::to_string(long(len)) + " bytes: " + ec.message()
+            );
+        }
+    }
+    truncateSteps(path("solid.h5"), int(c.scalar("fieldSteps")));
+}
+
+
+void solid::IndentationDriver::openOutputs()
+{
+    const auto mode = resume_ ? std::ios::app : std::ios::trunc;
+    forceFile_.open(path("force.dat"), std::ios::out | mode);
+    forceFile_.precision(settings_.precision);
+    if (!resume_)
+    {
+        forceFile_
+            << "# time [s]  depth [m]  force [N]  contactRadius [m]  "
+            << "maxPenetration [m]  stage" << '\n';
+    }
+    fields_.reset(new ResultWriter(path("solid"), model_, resume_));
+    fieldSteps_ = resume_ ? int(resumeFrom_->scalar("fieldSteps")) : 0;
+    peakFile_.open(path("peaks.dat"), std::ios::out | mode);
+    peakFile_.precision(settings_.precision);
+    if (!resume_)
+    {
+        peakFile_ << "# label  time [s]  depth [m]  force [N]" << '\n';
+    }
+    if (!forceFile_ || !peakFile_)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::io, "cannot open " + path("force.dat")
+          + " and " + path("peaks.dat") + " for writing"
+        );
+    }
+}
+
+
+void solid::IndentationDriver::restoreState()
+{
+    const Checkpoint& c = *resumeFrom_;
+    c.restoreModel("model/", model_);
+    contact_->report(model_, model_.u, model_.time);
+    contact_->setMultipliers(c.get("contact/multipliers"));
+    last_.force = c.scalar("contact/force");
+    last_.contactRadius = c.scalar("contact/contactRadius");
+    last_.maxPenetration = c.scalar("contact/maxPenetration");
+    last_.nActive = int(c.scalar("contact/nActive"));
+    row0_ = long(c.scalar("row"));
+    holdDt_ = c.scalar("holdDt");
+    extrapolate_ = c.scalar("extrapolate") != 0;
+    rate_ = c.vector("rate", model_.u.size());
+    nextWrite_ = c.scalar("nextWrite");
+    delta0Found_ = c.scalar("delta0Found");
+    const std::vector<double>& n = c.get("counters", 6);
+    counters_.steps = long(n[0]);
+    counters_.iterations = long(n[1]);
+    counters_.augmentations = long(n[2]);
+    counters_.cuts = long(n[3]);
+    counters_.assemblySeconds = n[4];
+    counters_.solveSeconds = n[5];
+    if (delta0Found_ > 0)
+    {
+        *protocol_ = protocol_->withFirstRowAmount(delta0Found_);
+    }
+}
+
+
+void solid::IndentationDriver::start(bool resume)
+{
+    resume_ = resume;
+    if (resume_)
+    {
+        checkResume();
+    }
+    else
+    {
+        std::remove(checkpointFile().c_str());
+    }
+    openOutputs();
+    counters_ = IndentationCounters();
+    last_ = ContactReport();
+    nextWrite_ = settings_.writeInterval;
+    extrapolate_ = false;
+    rate_ = Eigen::VectorXd::Zero(model_.u.size());
+    row0_ = 0;
+    holdDt_ = settings_.holdDeltaT0;
+    delta0Found_ = -1;
+    if (resume_)
+    {
+        restoreState();
+        if (settings_.log)
+        {
+            *settings_.log
+                << "Continuing from " << checkpointFile() << ": t = "
+                << model_.time << " s, row " << row0_ + 1 << ", step "
+                << counters_.steps << '\n' << std::endl;
+        }
+    }
+}
+
+
+void solid::IndentationDriver::writeFields()
+{
+    fields_->write(model_);
+    ++fieldSteps_;
+}
+
+
+void solid::IndentationDriver::advance(double dt)
+{
+    // Predictor: while the indenter moves at a constant rate the
+    // displacement is close to linear in time (see the class description)
+    const Eigen::VectorXd uStart = model_.u;
+    if (extrapolate_) model_.u += dt*rate_;
+    const StepReport r = solver_.step(dt);
+    rate_ = (model_.u - uStart)/dt;
+    ++counters_.steps;
+    counters_.iterations += r.iterations;
+    counters_.augmentations += r.augmentations;
+    counters_.cuts += r.cuts;
+    counters_.assemblySeconds += r.assemblySeconds;
+    counters_.solveSeconds += r.solveSeconds;
+    last_ = contact_->report(model_, model_.u, model_.time);
+}
+
+
+void solid::IndentationDriver::record(const std::string& stage)
+{
+    forceFile_
+        << model_.time << ' ' << protocol_->depth(model_.time) << ' '
+        << last_.force << ' ' << last_.contactRadius << ' '
+        << last_.maxPenetration << ' ' << stage << '\n';
+}
+
+
+solid::IndentationDriver::Saved solid::IndentationDriver::save() const
+{
+    return Saved
+    {
+        model_.u, model_.v, model_.pressure, model_.time,
+        model_.pointState().oldData(), model_.elementState().oldData(),
+        contact_->multipliers(), last_
+    };
+}
+
+
+void solid::IndentationDriver::restore(const Saved& s)
+{
+    model_.u = s.u;
+    model_.v = s.v;
+    model_.pressure = s.p;
+    model_.time = s.time;
+    model_.pointState().oldData() = s.point;
+    model_.pointState().currentData() = s.point;
+    model_.elementState().oldData() = s.element;
+    model_.elementState().currentData() = s.element;
+    contact_->setMultipliers(s.lambda);
+    last_ = s.report;
+}
+
+
+void solid::IndentationDriver::peakLine(const std::string& label)
+{
+    const double depth = protocol_->depth(model_.time);
+    peakFile_
+        << label << ' ' << model_.time << ' ' << depth << ' '
+        << last_.force << '\n';
+    if (settings_.log)
+    {
+        *settings_.log
+            << "    " << label << ": t = " << model_.time << " s, depth "
+            << depth << " m, force " << last_.force << " N" << std::endl;
+    }
+}
+
+
+void solid::IndentationDriver::checkpoint(long row)
+{
+    Checkpoint c(checkpointFile());
+    c.storeModel("model/", model_);
+    c.set("contact/multipliers", contact_->multipliers());
+    c.set("contact/force", last_.force);
+    c.set("contact/contactRadius", last_.contactRadius);
+    c.set("contact/maxPenetration", last_.maxPenetration);
+    c.set("contact/nActive", double(last_.nActive));
+    c.set("row", double(row));
+    c.set("holdDt", holdDt_);
+    c.set("extrapolate", double(extrapolate_));
+    c.set("rate", rate_);
+    c.set("nextWrite", nextWrite_);
+    c.set("delta0Found", delta0Found_);
+    c.set("counters", std::vector<double>
+    {
+        double(counters_.steps), double(counters_.iterations),
+        double(counters_.augmentations), double(counters_.cuts),
+        counters_.assemblySeconds, counters_.solveSeconds
+    });
+    c.set("fieldSteps", double(fieldSteps_));
+    forceFile_.flush();
+    peakFile_.flush();
+    c.set("force.dat.length", double(fs::file_size(path("force.dat"))));
+    c.set("peaks.dat.length", double(fs::file_size(path("peaks.dat"))));
+    c.write();
+}
+
+
+void solid::IndentationDriver::run()
+{
+    const IndentationSettings& s = settings_;
+    const long nRows = long(protocol_->rows().size());
+    for (long i = row0_; i < nRows; ++i)
+    {
+        // A copy: the first row's amount may change below
+        const ProtocolRow row = protocol_->rows()[i];
+        const bool hold = row.motion == "hold";
+        const bool untilForce = (i == 0 && s.forceTarget > 0 && !hold);
+        if (s.log)
+        {
+            *s.log
+                << "Row " << i + 1 << ": stage " << row.stage << ' '
+                << row.motion << " to t = " << protocol_->rowEnd(i)
+                << " s" << std::endl;
+        }
+        if (!(resume_ && i == row0_))
+        {
+            holdDt_ = s.holdDeltaT0;
+            extrapolate_ = false;
+        }
+        while
+        (
+            model_.time
+          < protocol_->rowEnd(i) - 1e-9*protocol_->rowEnd(i)
+        )
+        {
+            double dt = hold ? holdDt_ : s.maxDepthIncrement/row.rate;
+            dt = std::min
+            (
+                std::min(dt, s.maxDeltaT), protocol_->rowEnd(i) - model_.time
+            );
+            holdDt_ *= s.holdGrowth;
+            const Saved before = save();
+            advance(dt);
+            extrapolate_ = !hold;
+            if (untilForce && last_.force >= s.forceTarget)
+            {
+                // Secant on F(depth) from the last step below the target
+                Saved lo = before;
+                double tLo = before.time, fLo = before.report.force;
+                double tHi = model_.time, fHi = last_.force;
+                for (int k = 0; k < 8; ++k)
+                {
+                    if
+                    (
+                        std::abs(last_.force/s.forceTarget - 1)
+                     <= s.forceTargetTolerance
+                    )
+                    {
+                        break;
+                    }
+                    const double tNew =
+                        tLo + (s.forceTarget - fLo)*(tHi - tLo)/(fHi - fLo);
+                    restore(lo);
+                    advance(tNew - tLo);
+                    if (last_.force < s.forceTarget)
+                    {
+                        lo = save();
+                        tLo = model_.time;
+                        fLo = last_.force;
+                    }
+                    else
+                    {
+                        tHi = model_.time;
+                        fHi = last_.force;
+                    }
+                }
+                const double delta0 = protocol_->depth(model_.time);
+                *protocol_ = protocol_->withFirstRowAmount(delta0);
+                delta0Found_ = delta0;
+                if (s.log)
+                {
+                    *s.log
+                        << "    force target " << s.forceTarget
+                        << " N reached: delta0 = " << delta0 << " m at t = "
+                        << model_.time << " s (force " << last_.force
+                        << " N)" << std::endl;
+                }
+            }
+            record(row.stage);
+            if (s.writeInterval > 0 && model_.time >= nextWrite_ - 1e-9)
+            {
+                writeFields();
+                nextWrite_ += s.writeInterval;
+            }
+            if
+            (
+                s.checkpointInterval > 0
+             && counters_.steps % s.checkpointInterval == 0
+            )
+            {
+                checkpoint(i);
+            }
+        }
+        // Peaks and stage ends
+        const bool peak = !hold && i + 1 < nRows && row.motion == "load"
+            && protocol_->rows()[i + 1].motion == "unload"
+            && protocol_->rows()[i + 1].stage == row.stage;
+        const bool stageEnd =
+            i + 1 == nRows || protocol_->rows()[i + 1].stage != row.stage;
+        if (peak)
+        {
+            for (const auto& p : protocol_->peaks())
+            {
+                if (std::abs(p.time - model_.time) < 1e-6) peakLine(p.label);
+            }
+            writeFields();
+        }
+        else if (stageEnd && hold)
+        {
+            peakLine("end" + row.stage);
+            writeFields();
+        }
+    }
+    forceFile_.flush();
+    peakFile_.flush();
+}

@@ -1,0 +1,230 @@
+#include "solidInput.H"
+#include "solidEntries.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+#include "Tuple2.H"
+#include "labelVector.H"
+#include "vector.H"
+#include "vector2D.H"
+
+#include "GmshReader.H"
+#include "SolidError.H"
+
+#include <map>
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
+
+Foam::solidInput::solidInput
+(
+    const dictionary& solidProperties,
+    const fileName& caseDir
+)
+:
+    dict_(solidProperties),
+    caseDir_(caseDir)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+solid::Mesh Foam::solidInput::mesh() const
+{
+    const dictionary& dict = dict_.subDict("mesh");
+    const word type(dict.get<word>("type"));
+    try
+    {
+        if (type == "box")
+        {
+            const labelVector n(dict.get<labelVector>("cells"));
+            const vector lo(dict.get<vector>("min"));
+            const vector hi(dict.get<vector>("max"));
+            return solid::Mesh::box
+            (
+                n.x(), n.y(), n.z(),
+                solid::Vec3(lo.x(), lo.y(), lo.z()),
+                solid::Vec3(hi.x(), hi.y(), hi.z())
+            );
+        }
+        if (type == "rectangle")
+        {
+            const Vector2D<label> n(dict.get<Vector2D<label>>("cells"));
+            const vector2D lo(dict.get<vector2D>("min"));
+            const vector2D hi(dict.get<vector2D>("max"));
+            return solid::Mesh::rectangle
+            (
+                n.x(), n.y(), lo.x(), hi.x(), lo.y(), hi.y()
+            );
+        }
+        if (type == "gmsh")
+        {
+            fileName file(dict.get<fileName>("file"));
+            file.expand();
+            if (!file.isAbsolute()) file = caseDir_/file;
+            if (!isFile(file))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Cannot find " << file << " (entry 'file'; run "
+                    << "cellMesh first)" << exit(FatalIOError);
+            }
+            return solid::readGmsh
+            (
+                file, dict.getOrDefault<scalar>("scale", 1)
+            );
+        }
+    }
+    catch (const solid::SolidError& err)
+    {
+        FatalIOErrorInFunction(dict)
+            << "solid mesh " << type << ": " << err.what()
+            << exit(FatalIOError);
+    }
+    FatalIOErrorInFunction(dict)
+        << "Unknown solid mesh type " << type
+        << "; valid types: (box rectangle gmsh)" << exit(FatalIOError);
+    return solid::Mesh();
+}
+
+
+std::vector<solid::MaterialParameters> Foam::solidInput::materials
+(
+    const solid::Mesh& mesh
+) const
+{
+    const dictionary& mats = dict_.subDict("materials");
+    const wordList regions(mesh.regionNames.begin(), mesh.regionNames.end());
+
+    // Every other entry must name a region of the mesh: a misspelt region
+    // would otherwise be ignored silently
+    for (const entry& e : mats)
+    {
+        const word& key = e.keyword();
+        if (key == "parameterSet") continue;
+        if (!e.isDict())
+        {
+            FatalIOErrorInFunction(mats)
+                << "unknown entry '" << key << "'; valid: parameterSet and "
+                << "one sub-dictionary per region " << regions
+                << exit(FatalIOError);
+        }
+        if (!regions.found(key))
+        {
+            FatalIOErrorInFunction(mats)
+                << "sub-dictionary '" << key << "' is not a region of the "
+                << "solid mesh; regions: " << regions << exit(FatalIOError);
+        }
+    }
+
+    // The paper's set first, sub-dictionaries replace it region by region
+    std::map<std::string, solid::MaterialParameters> set;
+    if (mats.found("parameterSet"))
+    {
+        const word name = mats.get<word>("parameterSet");
+        try
+        {
+            for (const auto& p : solid::paperParameterSet(name))
+            {
+                set[p.name] = p;
+            }
+        }
+        catch (const solid::SolidError&)
+        {
+            FatalIOErrorInFunction(mats)
+                << "entry 'parameterSet' = " << name << " is not valid "
+                << "(valid: table, text, textFactor4, instantaneous)"
+                << exit(FatalIOError);
+        }
+        Info<< "Material parameters: the paper's " << name << " reading"
+            << nl;
+    }
+
+    std::vector<solid::MaterialParameters> result;
+    for (const word& region : regions)
+    {
+        if (mats.isDict(region))
+        {
+            const dictionary& d = mats.subDict(region);
+            try
+            {
+                set[region] = solid::MaterialParameters::fromEntries
+                (
+                    region, solidEntries(d, "material '" + region + "'")
+                );
+            }
+            catch (const solid::SolidError& err)
+            {
+                FatalIOErrorInFunction(d) << err.what() << exit(FatalIOError);
+            }
+        }
+        if (!set.count(region))
+        {
+            FatalIOErrorInFunction(mats)
+                << "no material for region '" << region << "': give a "
+                << "sub-dictionary '" << region << "' or parameterSet "
+                << "table|text|textFactor4|instantaneous"
+                << exit(FatalIOError);
+        }
+        const solid::MaterialParameters& p = set[region];
+        Info<< "    " << region << ": c0 " << p.c0 << " Pa, d0 " << p.d0
+            << " 1/Pa";
+        for (const auto& b : p.branches)
+        {
+            Info<< ", mu " << b.mu << " Pa tau " << b.tau << " s";
+        }
+        Info<< nl;
+        result.push_back(p);
+    }
+    Info<< endl;
+    return result;
+}
+
+
+std::vector<solid::MaterialParameters> Foam::solidInput::setup
+(
+    solid::Model& model
+) const
+{
+    const std::vector<solid::MaterialParameters> mats =
+        materials(model.mesh());
+    for (const solid::MaterialParameters& p : mats)
+    {
+        model.setMaterial(p.name, solid::Material::create(p));
+    }
+    for (const auto& f : dict_.get<List<Tuple2<word, label>>>("fixed"))
+    {
+        try
+        {
+            model.fix(f.first(), f.second());
+        }
+        catch (const solid::SolidError& err)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "entry 'fixed': " << err.what() << exit(FatalIOError);
+        }
+    }
+    return mats;
+}
+
+
+void Foam::solidInput::writeMaterials
+(
+    const std::vector<solid::MaterialParameters>& materials,
+    const fileName& file
+)
+{
+    OFstream os(file);
+    os.precision(17);
+    os  << "# region  rho0 [kg/m^3]  c0 [Pa]  d0 [1/Pa]  then for each "
+        << "Maxwell branch N = 1, 2, ...: muN [Pa]  tauN [s]" << nl;
+    for (const solid::MaterialParameters& p : materials)
+    {
+        os  << word(p.name) << ' ' << p.rho0 << ' ' << p.c0 << ' ' << p.d0;
+        for (const auto& b : p.branches)
+        {
+            os  << ' ' << b.mu << ' ' << b.tau;
+        }
+        os  << nl;
+    }
+}
+
+
+// ************************************************************************* //

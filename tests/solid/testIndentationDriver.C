@@ -1,0 +1,316 @@
+// The indentation driver (solid::IndentationDriver) on a small r-z block:
+// the force-controlled first row ends at its target force, the steps of a
+// hold grow geometrically while the force relaxes, and a run continued
+// from a checkpoint (its outputs longer than at the checkpoint, as after
+// a kill) equals the uninterrupted run bit for bit.
+#include "IndentationDriver.H"
+#include "Checkpoint.H"
+#include "SolidError.H"
+#include "SolidTestUtils.H"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace solid;
+namespace fs = std::filesystem;
+
+namespace
+{
+
+//- A scratch directory, removed at the end of the test
+struct ScratchDir
+{
+    std::string path;
+    ScratchDir()
+    {
+        std::string t =
+            (fs::temp_directory_path()/"indentationDriverXXXXXX").string();
+        path = mkdtemp(&t[0]);
+    }
+    ~ScratchDir() { fs::remove_all(path); }
+};
+
+//- The block (10 x 5 um, r-z, incompressible, one Maxwell branch with
+//  tau = 0.5 s) under a 5 um sphere, with its driver
+struct Indentation
+{
+    std::unique_ptr<Model> model;
+    std::shared_ptr<RigidSphereContact> contact;
+    std::shared_ptr<IndentationProtocol> protocol;
+    std::unique_ptr<IndentationDriver> driver;
+
+    Indentation
+    (
+        const std::vector<ProtocolRow>& rows,
+        const IndentationSettings& settings,
+        const std::string& outDir
+    )
+    {
+        model.reset(new Model(Mesh::rectangle(6, 4, 0, 10e-6, 0, 5e-6)));
+        model->setMaterial
+        (
+            "solid", solidTest::material(100, 0, {{200, 0.5}})
+        );
+        model->fix("bottom", 0);
+        model->fix("bottom", 1);
+        model->fix("left", 0);
+        protocol = std::make_shared<IndentationProtocol>(rows);
+        RigidSphereSettings s;
+        s.radius = 5e-6;
+        s.tolerance = 1e-9;
+        s.centre0 = Vec3(0, 5e-6 + s.radius, 0);
+        s.direction = Vec3(0, -1, 0);
+        auto p = protocol;
+        s.depth = [p](double t) { return p->depth(t); };
+        contact = std::make_shared<RigidSphereContact>("top", s);
+        model->add(contact);
+        model->initialise();
+        NewtonSettings newton;
+        newton.maxCuts = 10;
+        driver.reset
+        (
+            new IndentationDriver
+            (
+                *model, contact, protocol, newton, settings, outDir
+            )
+        );
+    }
+};
+
+//- Rows of force.dat (time, depth, force, radius, penetration) by stage
+struct ForceRow
+{
+    double t, depth, force;
+    std::string stage;
+};
+
+std::vector<ForceRow> forceRows(const std::string& dir)
+{
+    std::ifstream is(dir + "/force.dat");
+    std::vector<ForceRow> rows;
+    std::string line;
+    while (std::getline(is, line))
+    {
+        if (line.empty() || line[0] == '#') continue;
+        std::istringstream ls(line);
+        ForceRow r;
+        double radius, penetration;
+        ls >> r.t >> r.depth >> r.force >> radius >> penetration >> r.stage;
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+std::string contents(const std::string& file)
+{
+    std::ifstream is(file, std::ios::binary);
+    std::ostringstream os;
+    os << is.rdbuf();
+    return os.str();
+}
+
+IndentationSettings baseSettings()
+{
+    IndentationSettings s;
+    s.maxDepthIncrement = 0.1e-6;   // [m]
+    s.holdDeltaT0 = 0.01;           // [s]
+    s.maxDeltaT = 0.5;              // [s]
+    s.holdGrowth = 1.5;
+    s.checkpointInterval = 0;
+    s.precision = 17;               // force.dat read back exactly
+    return s;
+}
+
+const std::vector<ProtocolRow> table =
+{
+    {"A", "load", 1e-6, 1e-6},
+    {"B", "hold", 0, 2},
+    {"C", "load", 1e-6, 0.3e-6},
+    {"C", "unload", 1e-6, 0.3e-6},
+    {"E", "hold", 0, 1}
+};
+
+} // namespace
+
+
+TEST(SolidIndentationDriver, ForceControlledFirstRowReachesItsTarget)
+{
+    ScratchDir byDepth, byForce;
+    IndentationSettings s = baseSettings();
+    Indentation a(table, s, byDepth.path);
+    a.driver->start(false);
+    a.driver->run();
+    const auto ra = forceRows(byDepth.path);
+    double fA = 0;
+    for (const auto& r : ra) if (r.stage == "A") fA = r.force;
+    ASSERT_GT(fA, 0);
+
+    // Half the force reached at 1 um: the first row ends there, shorter
+    s.forceTarget = 0.5*fA;
+    s.forceTargetTolerance = 1e-3;
+    Indentation b(table, s, byForce.path);
+    b.driver->start(false);
+    b.driver->run();
+    const auto rb = forceRows(byForce.path);
+    const ForceRow* lastA = nullptr;
+    for (const auto& r : rb) if (r.stage == "A") lastA = &r;
+    ASSERT_TRUE(lastA);
+    std::printf
+    (
+        "force target %.4e N: reached %.4e N at depth %.4e m, t = %.4f s\n",
+        s.forceTarget, lastA->force, lastA->depth, lastA->t
+    );
+    EXPECT_LE(std::abs(lastA->force/s.forceTarget - 1), 1e-3);
+    EXPECT_LT(lastA->depth, 1e-6);
+    // The table now starts with that depth: later rows shift in time
+    EXPECT_DOUBLE_EQ(b.protocol->rows()[0].amount, lastA->depth);
+    EXPECT_DOUBLE_EQ(b.protocol->rowEnd(0), lastA->t);
+    EXPECT_DOUBLE_EQ(rb.back().t, b.protocol->endTime());
+}
+
+
+TEST(SolidIndentationDriver, HoldStepsGrowAndTheForceRelaxes)
+{
+    ScratchDir dir;
+    const IndentationSettings s = baseSettings();
+    Indentation a(table, s, dir.path);
+    a.driver->start(false);
+    a.driver->run();
+    std::vector<ForceRow> hold;
+    double tA = 0;
+    for (const auto& r : forceRows(dir.path))
+    {
+        if (r.stage == "A") tA = r.t;
+        if (r.stage == "B") hold.push_back(r);
+    }
+    ASSERT_GE(hold.size(), 5u);
+    // dt = 0.01 s x 1.5^k up to maxDeltaT, the last one cut to the end
+    double t = tA, dt = s.holdDeltaT0;
+    for (std::size_t k = 0; k + 1 < hold.size(); ++k)
+    {
+        EXPECT_NEAR(hold[k].t - t, std::min(dt, s.maxDeltaT), 1e-12);
+        t = hold[k].t;
+        dt *= s.holdGrowth;
+    }
+    EXPECT_DOUBLE_EQ(hold.back().t, a.protocol->rowEnd(1));
+    for (std::size_t k = 1; k < hold.size(); ++k)
+    {
+        EXPECT_LT(hold[k].force, hold[k - 1].force);
+        EXPECT_DOUBLE_EQ(hold[k].depth, hold[0].depth);
+    }
+    // The stage end (B) and the cycle's peak in peaks.dat
+    const std::string peaks = contents(dir.path + "/peaks.dat");
+    EXPECT_NE(peaks.find("\nendB "), std::string::npos) << peaks;
+    EXPECT_NE(peaks.find("\nC,i "), std::string::npos) << peaks;
+    EXPECT_NE(peaks.find("\nendE "), std::string::npos) << peaks;
+}
+
+
+namespace
+{
+
+//- Run the table with a checkpoint every k steps (of n; the last one after
+//  step k: k > n/2, when force.dat has lines lines), copy the outputs (a
+//  run killed after that checkpoint: they carry more steps) and continue
+//  from them; the continued run must equal the uninterrupted one bit for
+//  bit
+void resumeAfter
+(
+    long k,
+    long lines,
+    const IndentationSettings& settings,
+    long n
+)
+{
+    ASSERT_GT(2*k, n);
+    ScratchDir whole, resumed;
+    IndentationSettings s = settings;
+    s.checkpointInterval = k;
+    Indentation a(table, s, whole.path);
+    a.driver->start(false);
+    a.driver->run();
+    ASSERT_TRUE(Checkpoint::exists(a.driver->checkpointFile()));
+    fs::copy(whole.path, resumed.path, fs::copy_options::recursive
+           | fs::copy_options::overwrite_existing);
+
+    Indentation b(table, s, resumed.path);
+    b.driver->start(true);
+    EXPECT_EQ(b.driver->counters().steps, k);
+    EXPECT_EQ(forceRows(resumed.path).size(), std::size_t(lines));
+    b.driver->run();
+
+    EXPECT_EQ(contents(whole.path + "/force.dat"),
+              contents(resumed.path + "/force.dat"));
+    EXPECT_EQ(contents(whole.path + "/peaks.dat"),
+              contents(resumed.path + "/peaks.dat"));
+    EXPECT_EQ(a.driver->counters().steps, b.driver->counters().steps);
+    EXPECT_EQ(a.driver->counters().iterations,
+              b.driver->counters().iterations);
+    EXPECT_TRUE(a.model->u == b.model->u);
+    EXPECT_TRUE(a.model->pressure == b.model->pressure);
+    EXPECT_EQ(a.model->time, b.model->time);
+    const auto sa = ResultWriter::steps(whole.path + "/solid.h5");
+    const auto sb = ResultWriter::steps(resumed.path + "/solid.h5");
+    EXPECT_EQ(sa, sb);
+    ASSERT_FALSE(sb.empty());
+    Indentation fa(table, s, whole.path), fb(table, s, resumed.path);
+    ResultWriter::restart(whole.path + "/solid.h5", sa.back().first,
+                          *fa.model);
+    ResultWriter::restart(resumed.path + "/solid.h5", sb.back().first,
+                          *fb.model);
+    EXPECT_TRUE(fa.model->u == fb.model->u);
+    EXPECT_TRUE(fa.model->pressure == fb.model->pressure);
+
+    // A checkpoint of another table is refused, the outputs untouched
+    const std::string before = contents(resumed.path + "/force.dat");
+    std::vector<ProtocolRow> shorter(table.begin(), table.begin() + 1);
+    Indentation c(shorter, s, resumed.path);
+    EXPECT_THROW(c.driver->start(true), SolidError);
+    EXPECT_EQ(contents(resumed.path + "/force.dat"), before);
+}
+
+} // namespace
+
+
+// Checkpoints inside a load row (the predictor u + dt v of the next step
+// needs the rate) and inside a hold (the next step size): both restored
+TEST(SolidIndentationDriver, ResumedRunEqualsUninterruptedBitForBit)
+{
+    ScratchDir first;
+    IndentationSettings s = baseSettings();
+    s.forceTarget = 1e-9;           // below the force at 1 um
+    s.writeInterval = 0.5;          // fields [s]
+    Indentation a(table, s, first.path);
+    a.driver->start(false);
+    a.driver->run();
+    const auto rows = forceRows(first.path);
+    const long n = a.driver->counters().steps;
+    // The steps of the force-controlled row redone by the secant search
+    // have no line in force.dat
+    const long redone = n - long(rows.size());
+    ASSERT_GT(n, 20);
+    ASSERT_GE(redone, 1);
+
+    // The first step k > n/2 that ends inside a load row, and inside a hold
+    long kLoad = 0, kHold = 0;
+    for (long k = n/2 + 1; k < n; ++k)
+    {
+        const double t = rows[k - redone - 1].t;
+        const int r = a.protocol->rowAt(t);
+        const bool inside = t < a.protocol->rowEnd(r)*(1 - 1e-9);
+        const bool hold = a.protocol->rows()[r].motion == "hold";
+        if (inside && hold && !kHold) kHold = k;
+        if (inside && !hold && !kLoad) kLoad = k;
+    }
+    ASSERT_GT(kLoad, 0);
+    ASSERT_GT(kHold, 0);
+    std::printf("%ld steps; continued after step %ld (load) and %ld (hold)\n",
+                n, kLoad, kHold);
+    resumeAfter(kLoad, kLoad - redone, s, n);
+    resumeAfter(kHold, kHold - redone, s, n);
+}
