@@ -95,7 +95,8 @@ TEST(Hdf5, RemoveMember)
 
 TEST(Hdf5, FailuresNameTheFileAndObject)
 {
-    std::string msg = errorOf([] { Hdf5File("none.h5", Hdf5File::Mode::readOnly); });
+    std::string msg =
+        errorOf([] { Hdf5File("none.h5", Hdf5File::Mode::readOnly); });
     EXPECT_NE(msg.find("'none.h5'"), std::string::npos) << msg;
     std::ofstream("text.h5") << "not hdf5\n";
     msg = errorOf([] { Hdf5File("text.h5", Hdf5File::Mode::readOnly); });

@@ -227,6 +227,42 @@ public:
 
 } // namespace
 
+TEST(SolidLoads, NodalLoadGivenForces)
+{
+    // Forces per node and component (the FSI coupling's interface forces)
+    // land on their dofs, are replaced by the next setForces(), and a
+    // wrong count or a time-function load is refused
+    Mesh m = Mesh::rectangle(2, 1, 0, 2, 0, 1);
+    Model model(m);
+    model.setMaterial("solid", solidTest::material(1, 1));
+    model.initialise();
+    const std::vector<int> nodes = {4, 1};
+    NodalLoad load(nodes, 2);
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(model.nDisplacementDofs());
+    load.addForce(model, model.u, 0, f, nullptr);
+    EXPECT_EQ(f.norm(), 0);
+    load.setForces({1.5, -2.0, 0.25, 3.0});
+    f.setOnes();
+    load.addForce(model, model.u, 0, f, nullptr);
+    Eigen::VectorXd expected = Eigen::VectorXd::Ones(f.size());
+    expected(2*4) += 1.5;
+    expected(2*4 + 1) += -2.0;
+    expected(2*1) += 0.25;
+    expected(2*1 + 1) += 3.0;
+    EXPECT_EQ(f, expected);
+    load.setForces({0, 0, 0, 1});
+    f.setZero();
+    load.addForce(model, model.u, 0, f, nullptr);
+    EXPECT_EQ(f.sum(), 1);
+    EXPECT_EQ(f(3), 1);
+    EXPECT_THROW(load.setForces({1, 2, 3}), SolidError);
+    NodalLoad timed(nodes, 0, [](double t) { return t; });
+    EXPECT_THROW(timed.setForces({1, 2, 3, 4}), SolidError);
+    NodalLoad threeD(nodes, 3);
+    EXPECT_THROW(threeD.addForce(model, model.u, 0, f, nullptr), SolidError);
+}
+
+
 
 TEST(SolidLoads, AugmentedLagrangianLoop)
 {

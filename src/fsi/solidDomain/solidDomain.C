@@ -103,7 +103,7 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
 {
     interfaceNodes_.assign(interfaceNodes.begin(), interfaceNodes.end());
     force_ =
-        std::make_shared<interfaceForce>(interfaceNodes_, mesh().dim());
+        std::make_shared<solid::NodalLoad>(interfaceNodes_, mesh().dim());
     model_->add(force_);
 
     solid::ExplicitSettings set;
@@ -570,7 +570,7 @@ void Foam::solidDomain::advance
     const scalar t
 )
 {
-    force_->set
+    force_->setForces
     (
         std::vector<double>(interfaceForces.begin(), interfaceForces.end())
     );

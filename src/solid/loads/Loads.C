@@ -12,9 +12,44 @@ solid::NodalLoad::NodalLoad
 )
 :
     nodes_(nodes),
+    givenForces_(false),
     component_(component),
-    force_(std::move(f))
+    force_(std::move(f)),
+    dim_(0)
 {}
+
+
+solid::NodalLoad::NodalLoad(const std::vector<int>& nodes, int dim)
+:
+    nodes_(nodes),
+    givenForces_(true),
+    component_(-1),
+    dim_(dim),
+    forces_(nodes.size()*dim, 0.0)
+{}
+
+
+void solid::NodalLoad::setForces(const std::vector<double>& forces)
+{
+    if (!givenForces_)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter, "nodal load: its force is a "
+            "function of time, not set by setForces()"
+        );
+    }
+    if (forces.size() != forces_.size())
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter, "nodal load: "
+          + std::to_string(forces.size()) + " forces for "
+          + std::to_string(forces_.size()) + " node components"
+        );
+    }
+    forces_ = forces;
+}
 
 
 void solid::NodalLoad::addForce
@@ -27,6 +62,26 @@ void solid::NodalLoad::addForce
 ) const
 {
     const int dim = model.mesh().dim();
+    if (givenForces_)
+    {
+        if (dim_ != dim)
+        {
+            throw SolidError
+            (
+                SolidError::Kind::parameter, "nodal load: forces of "
+              + std::to_string(dim_) + " components per node on a mesh of "
+                "dimension " + std::to_string(dim)
+            );
+        }
+        for (std::size_t i = 0; i < nodes_.size(); ++i)
+        {
+            for (int d = 0; d < dim; ++d)
+            {
+                f(dim*nodes_[i] + d) += forces_[dim*i + d];
+            }
+        }
+        return;
+    }
     if (component_ < 0 || component_ >= dim)
     {
         throw SolidError
