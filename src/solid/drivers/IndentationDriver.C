@@ -245,25 +245,13 @@ void solid::IndentationDriver::record(const std::string& stage)
 
 solid::IndentationDriver::Saved solid::IndentationDriver::save() const
 {
-    return Saved
-    {
-        model_.u, model_.v, model_.pressure, model_.time,
-        model_.pointState().oldData(), model_.elementState().oldData(),
-        contact_->multipliers(), last_
-    };
+    return Saved{ModelSnapshot(model_), contact_->multipliers(), last_};
 }
 
 
 void solid::IndentationDriver::restore(const Saved& s)
 {
-    model_.u = s.u;
-    model_.v = s.v;
-    model_.pressure = s.p;
-    model_.time = s.time;
-    model_.pointState().oldData() = s.point;
-    model_.pointState().currentData() = s.point;
-    model_.elementState().oldData() = s.element;
-    model_.elementState().currentData() = s.element;
+    s.model.restore(model_);
     contact_->setMultipliers(s.lambda);
     last_ = s.report;
 }
@@ -355,7 +343,7 @@ void solid::IndentationDriver::run()
             {
                 // Secant on F(depth) from the last step below the target
                 Saved lo = before;
-                double tLo = before.time, fLo = before.report.force;
+                double tLo = before.model.time(), fLo = before.report.force;
                 double tHi = model_.time, fHi = last_.force;
                 for (int k = 0; k < 8; ++k)
                 {
