@@ -1,12 +1,19 @@
-# The folders of the solid library, one per layer (lower layers first):
-# core (errors, tensors), materials, elements (shapes, quadrature, element
-# kernels), model (mesh, model, contributions), loads, contact, drivers,
-# io (mesh reader, HDF5 layer, results, checkpoints). Headers are
-# included flat ("Model.H", as in OpenFOAM): every folder is an include
-# directory. Used by src/solid/CMakeLists.txt and the fuzz build
+# The folders of the solid library, one per layer, lower layers first; a
+# folder includes only folders before it in this list
+# (docs/architecture.md):
+#   core      errors, tensors, the entries interface of parameters
+#   materials neo-Hookean, Maxwell branches, volumetric laws
+#   elements  shapes, quadrature, the mesh, element kernels
+#   model     model, contributions, state snapshot
+#   loads     nodal and pressure loads
+#   contact   rigid sphere
+#   io        mesh reader, HDF5 layer, results, checkpoints
+#   drivers   Newton, explicit, indentation driver
+# Headers are included flat ("Model.H", as in OpenFOAM): every folder is an
+# include directory. Used by src/solid/CMakeLists.txt and the fuzz build
 # (tests/fuzz/project); wmake sees the same headers through
 # src/solid/lnInclude (./Allwmake).
-set(solidFolders core materials elements model loads contact drivers io)
+set(solidFolders core materials elements model loads contact io drivers)
 
 # solidSources(<var> <root of src/solid>): the library's sources
 function(solidSources var dir)

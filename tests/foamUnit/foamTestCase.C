@@ -2,6 +2,8 @@
 #include "cellModel.H"
 #include "OFstream.H"
 #include "OSspecific.H"
+#include "IStringStream.H"
+#include "OStringStream.H"
 
 #include <cstdlib>
 #include <filesystem>
@@ -101,6 +103,29 @@ void Foam::foamUnit::testCase::writeFile
         FatalErrorInFunction
             << "Cannot write " << file << exit(FatalError);
     }
+}
+
+
+void Foam::foamUnit::testCase::writeThermophysicalProperties
+(
+    const word& equationOfState
+) const
+{
+    IStringStream is
+    (
+        usageExample
+        (
+            "src/thermophysicalModels/rhoEThermo/rhoEThermo/rhoEThermo.H"
+        )
+    );
+    dictionary d(is);
+    d.set("equationOfState", equationOfState);
+    OStringStream os;
+    os.precision(17);
+    os  << "FoamFile { version 2.0; format ascii; class dictionary;"
+        << " object thermophysicalProperties; }" << nl;
+    d.write(os, false);
+    writeFile("constant/thermophysicalProperties", os.str());
 }
 
 

@@ -19,6 +19,7 @@ Description
 #include "IStringStream.H"
 #include "OStringStream.H"
 #include "Random.H"
+#include "bitSet.H"
 #include "foamTestCase.H"
 
 #include <gtest/gtest.h>
@@ -43,21 +44,7 @@ struct fluidCase
     :
         tc("conservativeFluid", 1e-10)
     {
-        IStringStream is
-        (
-            foamUnit::testCase::usageExample
-            (
-                "src/thermophysicalModels/rhoEThermo/rhoEThermo/rhoEThermo.H"
-            )
-        );
-        dictionary d(is);
-        d.set("equationOfState", word("mieGruneisen"));
-        OStringStream os;
-        os.precision(17);
-        os  << "FoamFile { version 2.0; format ascii; class dictionary;"
-            << " object thermophysicalProperties; }" << nl;
-        d.write(os, false);
-        tc.writeFile("constant/thermophysicalProperties", os.str());
+        tc.writeThermophysicalProperties("mieGruneisen");
         tc.writeFile
         (
             "system/fvSolution",
@@ -205,13 +192,16 @@ TEST(conservativeFluid, movingMeshKeepsRestStateUniform)
     // The points off the x and y walls move by up to 2.5 % of a cell each
     // step, in x and y (the mesh is one cell thick in z: its z walls move
     // in their planes and sweep no volume)
-    boolList boundary(mesh.nPoints(), false);
+    bitSet boundary(mesh.nPoints());
     forAll(mesh.points(), p)
     {
         const point& x = mesh.points()[p];
-        boundary[p] =
+        boundary.set
+        (
+            p,
             x.x() < 1e-12 || x.x() > 1e-6 - 1e-12
-         || x.y() < 1e-12 || x.y() > 1e-6 - 1e-12;
+         || x.y() < 1e-12 || x.y() > 1e-6 - 1e-12
+        );
     }
     const scalarField Vstart(mesh.V().field());
 
@@ -226,7 +216,7 @@ TEST(conservativeFluid, movingMeshKeepsRestStateUniform)
         pointField newPoints(mesh.points());
         forAll(newPoints, p)
         {
-            if (!boundary[p])
+            if (!boundary.test(p))
             {
                 newPoints[p] +=
                     0.05e-6/6*vector

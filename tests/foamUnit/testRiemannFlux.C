@@ -111,21 +111,7 @@ struct fluxCase
     :
         tc("riemannFlux")
     {
-        IStringStream is
-        (
-            foamUnit::testCase::usageExample
-            (
-                "src/thermophysicalModels/rhoEThermo/rhoEThermo/rhoEThermo.H"
-            )
-        );
-        dictionary d(is);
-        d.set("equationOfState", word("mieGruneisen"));
-        OStringStream os;
-        os.precision(17);
-        os  << "FoamFile { version 2.0; format ascii; class dictionary;"
-            << " object thermophysicalProperties; }" << nl;
-        d.write(os, false);
-        tc.writeFile("constant/thermophysicalProperties", os.str());
+        tc.writeThermophysicalProperties("mieGruneisen");
         // Walls and symmetry planes take their outer state by reflection;
         // the field condition there only needs to be valid
         tc.writeUniformField("p", dimPressure, 1e5, "zeroGradient");

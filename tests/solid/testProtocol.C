@@ -94,5 +94,10 @@ TEST(SolidProtocol, BadRowsNameTheRow)
     r = rows;
     r[3].amount = 4e-6;                             // unload above surface
     expectMessage(r, "row 4 (stage 'C1', unload): unloads to depth");
+    r = rows;
+    r[2].rate = 6e-301;                             // duration overflows
+    r[2].amount = 4e25;                             // (found by fuzzProtocol)
+    expectMessage(r, "row 3 (stage 'C1', load): the protocol's duration is"
+                  " not finite");
     expectMessage({}, "no rows");
 }

@@ -8,6 +8,9 @@ status=0
 n=0
 for f in "$FOAM_USER_LIBBIN"/*.so "$FOAM_USER_APPBIN"/*
 do
+    # Only ELF files: FOAM_USER_APPBIN also holds the Python utilities'
+    # wrapper scripts (calibrateCell, sweepCase)
+    [ "$(head -c 4 "$f" | tr -d '\0')" = $'\x7fELF' ] || continue
     n=$((n + 1))
     out=$(ldd -r "$f" 2>&1)
     if grep -qE "undefined symbol|not found" <<< "$out"

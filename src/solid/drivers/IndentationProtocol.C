@@ -62,6 +62,16 @@ solid::IndentationProtocol::IndentationProtocol(std::vector<ProtocolRow> rows)
               + " m, above the undeformed surface (depth must stay >= 0)"
             );
         }
+        if (!std::isfinite(t + dt))
+        {
+            throw SolidError
+            (
+                SolidError::Kind::parameter,
+                ctx + ": the protocol's duration is not finite (amount/rate"
+                " = " + std::to_string(dt) + " s); a row must end at a"
+                " finite time"
+            );
+        }
         t0_.push_back(t);
         d0_.push_back(d);
         t += dt;
