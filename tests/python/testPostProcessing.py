@@ -1,11 +1,10 @@
 """neuronFsi.postProcessing on small synthetic column files: header
 parsing, a cut last row, malformed rows, restart stitching."""
-import os
-import tempfile
 import unittest
 
 import numpy as np
 
+from fixtures import TempDirTestCase
 from neuronFsi import postProcessing as pp
 
 HEADER = ("# FSI coupling (robin)\n"
@@ -17,21 +16,7 @@ def row(t, it=1):
     return "%g 1e-10 %d 1e-7 1 0 %g 0 0.5\n" % (t, it, t*1e9)
 
 
-class ColumnFiles(unittest.TestCase):
-
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.case = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def write(self, rel, text):
-        p = os.path.join(self.case, rel)
-        os.makedirs(os.path.dirname(p), exist_ok=True)
-        with open(p, "w") as f:
-            f.write(text)
-        return p
+class ColumnFiles(TempDirTestCase):
 
     def testHeaderNamesAndUnits(self):
         names, units = pp.columnNames(HEADER.split("\n")[1])
@@ -116,7 +101,7 @@ class ColumnFiles(unittest.TestCase):
 
     def testMissingFile(self):
         with self.assertRaisesRegex(pp.ColumnFileError, "no .*coupling"):
-            pp.series(self.case, "fsi/coupling.dat")
+            pp.series(self.tmp, "fsi/coupling.dat")
 
     def testRestartStitching(self):
         # first start to 4e-10 (its last rows are redone by the restart
@@ -129,17 +114,17 @@ class ColumnFiles(unittest.TestCase):
         self.write("postProcessing/fsi/2e-10/coupling.dat",
                    HEADER + "".join(row(k*1e-10, 5) for k in range(3, 7))
                    + "7e-10 1e-10")
-        d = pp.series(self.case, "fsi/coupling.dat")
+        d = pp.series(self.tmp, "fsi/coupling.dat")
         np.testing.assert_allclose(d[:, 0], [k*1e-10 for k in range(1, 8)])
         # later segment wins on the overlap: 3-4e-10 from the second, 6e-10
         # from the third
         np.testing.assert_array_equal(d[:, 2], [1, 1, 5, 5, 5, 7, 8])
-        self.assertEqual(pp.names(self.case, "fsi/coupling.dat")[2],
+        self.assertEqual(pp.names(self.tmp, "fsi/coupling.dat")[2],
                          "iterations")
-        self.assertEqual(pp.header(self.case, "fsi/coupling.dat")[0],
+        self.assertEqual(pp.header(self.tmp, "fsi/coupling.dat")[0],
                          "FSI coupling (robin)")
         np.testing.assert_array_equal(
-            pp.latest(self.case, "fsi/coupling.dat").data()[:, 2], [7, 8])
+            pp.latest(self.tmp, "fsi/coupling.dat").data()[:, 2], [7, 8])
 
     def testRoundedStartTimeName(self):
         # a restart at 2.5e-10 written under "2e-10" (timePrecision 1):
@@ -148,7 +133,7 @@ class ColumnFiles(unittest.TestCase):
             row(t*1e-10, 1) for t in (1, 2, 2.5, 3)))
         self.write("postProcessing/fsi/2e-10/coupling.dat", HEADER + "".join(
             row(t*1e-10, 2) for t in (3, 3.5)))
-        d = pp.series(self.case, "fsi/coupling.dat")
+        d = pp.series(self.tmp, "fsi/coupling.dat")
         np.testing.assert_allclose(d[:, 0]*1e10, [1, 2, 2.5, 3, 3.5])
         np.testing.assert_array_equal(d[:, 2], [1, 1, 1, 2, 2])
 
@@ -157,13 +142,13 @@ class ColumnFiles(unittest.TestCase):
         self.write("postProcessing/fsi/0/coupling.dat",
                    HEADER + row(1e-10) + row(2e-10))
         self.write("postProcessing/fsi/2e-10/coupling.dat", HEADER)
-        self.assertEqual(pp.series(self.case, "fsi/coupling.dat").shape,
+        self.assertEqual(pp.series(self.tmp, "fsi/coupling.dat").shape,
                          (2, 9))
 
     def testNonTimeDirectoriesIgnored(self):
         self.write("postProcessing/fsi/0/coupling.dat", HEADER + row(1e-10))
         self.write("postProcessing/fsi/old/coupling.dat", HEADER + row(9))
-        self.assertEqual(pp.series(self.case, "fsi/coupling.dat").shape,
+        self.assertEqual(pp.series(self.tmp, "fsi/coupling.dat").shape,
                          (1, 9))
 
 
