@@ -21,6 +21,8 @@ import os
 import subprocess
 import sys
 
+from neuronFsi import bench
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 FACTORS = {"full": ["1.4", "1", "0.7", "0.5"], "quick": ["1.4", "1"]}
@@ -88,18 +90,15 @@ def plot(rows, path):
 
 def report(rows, size, start, case):
     elapsed = (datetime.datetime.now() - start).total_seconds()
-    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"],
-                            cwd=ROOT, stdout=subprocess.PIPE,
-                            text=True).stdout.strip()
+    commit = bench.commit(ROOT)
     load = " ".join(f"{x:.2f}" for x in os.getloadavg())
     ref = rows[-1]
     L = []
     w = L.append
     w("# Indentation protocol per mesh: cost against error")
     w("")
-    stamp = start.strftime("%Y-%m-%d %H:%M")
-    w(f"Written by `bench/indentation/run.py` ({size}) on {stamp} UTC, "
-      f"commit {commit}, {elapsed:.0f} s in all; load average "
+    w(bench.writtenBy("bench/indentation/run.py", start, commit, size)
+      + f", {elapsed:.0f} s in all; load average "
       f"at the end {load} on {os.cpu_count()} shared cores, so wall times "
       "are noisy: the CPU time of the process is the one-core cost.")
     w("")
@@ -155,10 +154,7 @@ def main():
     png = "indentation_cost_vs_error.png"
     plot(rows, os.path.join(os.path.dirname(doc), png))
     lines += [f"![peak-force difference against CPU time]({png})", ""]
-    with open(doc, "w") as f:
-        f.write("\n".join(lines))
-    print("\n".join(lines))
-    print(f"wrote {doc}")
+    bench.writeReport(doc, lines)
 
 
 if __name__ == "__main__":
