@@ -30,7 +30,6 @@ Full: factors 1 0.7 to 3 ns; --quick: 1.4 1 to 1 ns, written into --out
 (default bench/blast/output). Writes docs/benchmarks/blastQuarter3D.md
 (full) or <out>/blastQuarter3D.md (quick).
 """
-import argparse
 import datetime
 import os
 import re
@@ -112,10 +111,7 @@ def parseLevel(f, out, endTime, ranks=1):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true")
-    ap.add_argument("--out", default=os.path.join(HERE, "output"))
-    ap.add_argument("--doc", default=None)
+    ap = bench.arguments(__doc__, os.path.join(HERE, "output"))
     ap.add_argument("--factors", default=None)
     ap.add_argument("--endTime", type=float, default=None, help="[s]")
     ap.add_argument("--ranks", type=int, default=2,
@@ -134,9 +130,8 @@ def main():
     if args.endTime:
         size["endTime"] = args.endTime
     out = os.path.abspath(args.out)
-    doc = args.doc or (os.path.join(out, "blastQuarter3D.md") if args.quick
-                       else os.path.join(ROOT, "docs", "benchmarks",
-                                         "blastQuarter3D.md"))
+    doc = bench.reportPath(args.doc, args.quick, out, ROOT,
+                           "blastQuarter3D.md")
     os.makedirs(out, exist_ok=True)
     env = bench.foamEnv(ROOT)
     start = datetime.datetime.utcnow()

@@ -30,7 +30,6 @@ to 25 ns (about 2-3 min), written into --out (default bench/blast/output).
 Writes docs/benchmarks/blast.md and blast_cost_vs_error.png (full) or
 <out>/blast.md and its PNG (quick).
 """
-import argparse
 import datetime
 import math
 import os
@@ -418,11 +417,8 @@ def report(rows, size, mode, start, png, commit, dirty, end,
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true",
-                    help="20 um column to 25 ns, output in --out")
-    ap.add_argument("--out", default=os.path.join(HERE, "output"))
-    ap.add_argument("--doc", default=None)
+    ap = bench.arguments(__doc__, os.path.join(HERE, "output"),
+                         "20 um column to 25 ns, output in --out")
     ap.add_argument("--factors", default=None,
                     help="size factors, coarsest first, e.g. '1.4 1 0.7'")
     ap.add_argument("--endTime", type=float, default=None, help="[s]")
@@ -441,9 +437,7 @@ def main():
         size["endTime"] = args.endTime
         size["window"] = min(size["window"], args.endTime)
     out = os.path.abspath(args.out)
-    doc = args.doc or (os.path.join(out, "blast.md") if args.quick
-                       else os.path.join(ROOT, "docs", "benchmarks",
-                                         "blast.md"))
+    doc = bench.reportPath(args.doc, args.quick, out, ROOT, "blast.md")
     os.makedirs(out, exist_ok=True)
     os.makedirs(os.path.dirname(doc), exist_ok=True)
     env = bench.foamEnv(ROOT)

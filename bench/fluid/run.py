@@ -467,9 +467,7 @@ def main():
                     help="which measurements, e.g. 13")
     args = ap.parse_args()
     size = SIZES["quick" if args.quick else "full"]
-    doc = args.doc or (os.path.join(args.out, "fluid.md") if args.quick
-                       else os.path.join(ROOT, "docs", "benchmarks",
-                                         "fluid.md"))
+    doc = bench.reportPath(args.doc, args.quick, args.out, ROOT, "fluid.md")
     docDir = os.path.dirname(os.path.abspath(doc))
     os.makedirs(args.out, exist_ok=True)
     os.makedirs(docDir, exist_ok=True)

@@ -15,7 +15,6 @@ Full: size factors 1.4 1 0.7 0.5 (about 4 min CPU); --quick: 1.4 and 1
 geometry are whatever is committed in tutorials/indentation/averageCell.
 Writes docs/benchmarks/indentation.md and indentation_cost_vs_error.png.
 """
-import argparse
 import datetime
 import os
 import subprocess
@@ -134,18 +133,14 @@ def report(rows, size, start, case):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true",
-                    help="two coarse meshes, output in --out")
-    ap.add_argument("--out", default=os.path.join(HERE, "output"))
-    ap.add_argument("--doc", default=None)
+    ap = bench.arguments(__doc__, os.path.join(HERE, "output"),
+                         "two coarse meshes, output in --out")
     ap.add_argument("--case", default="averageCell")
     args = ap.parse_args()
     size = "quick" if args.quick else "full"
     out = os.path.abspath(args.out)
-    doc = args.doc or (os.path.join(out, "indentation.md") if args.quick
-                       else os.path.join(ROOT, "docs", "benchmarks",
-                                         "indentation.md"))
+    doc = bench.reportPath(args.doc, args.quick, out, ROOT,
+                           "indentation.md")
     os.makedirs(out, exist_ok=True)
     os.makedirs(os.path.dirname(doc), exist_ok=True)
     start = datetime.datetime.utcnow()

@@ -23,6 +23,23 @@ START = datetime.datetime(2026, 9, 21, 14, 12, 30)
 
 class Bench(TempDirTestCase):
 
+    def testArgumentsAndReportPath(self):
+        ap = bench.arguments("One line.\n\nMore.", "/o", "small sizes")
+        self.assertEqual(ap.description, "One line.")
+        self.assertIn("small sizes", ap.format_help())
+        args = ap.parse_args([])
+        self.assertEqual((args.quick, args.out, args.doc),
+                         (False, "/o", None))
+        self.assertEqual(bench.reportPath(args.doc, args.quick, args.out,
+                                          "/r", "x.md"),
+                         "/r/docs/benchmarks/x.md")
+        args = ap.parse_args(["--quick", "--out", "/q"])
+        self.assertEqual(bench.reportPath(args.doc, args.quick, args.out,
+                                          "/r", "x.md"), "/q/x.md")
+        args = ap.parse_args(["--quick", "--doc", "/d/y.md"])
+        self.assertEqual(bench.reportPath(args.doc, args.quick, args.out,
+                                          "/r", "x.md"), "/d/y.md")
+
     def testCopyInputsLeavesOutIgnored(self):
         src = os.path.join(self.tmp, "case")
         self.write("case/Allrun", "#!/bin/sh\n")

@@ -9,6 +9,7 @@ A level folder is one benchmark run: runTimed leaves in it log.time
 load average at its end); stampCommit leaves bench.commit.
 """
 
+import argparse
 import datetime
 import math
 import os
@@ -22,6 +23,24 @@ from . import postProcessing
 
 COMMIT_FILE = "bench.commit"
 LOAD_FILE = "log.load"
+
+
+def arguments(doc, out, quick=None):
+    """The options every benchmark has: --quick (help: quick), --out (the
+    folder of the runs, default out) and --doc (the report file); the
+    description is the first line of doc."""
+    ap = argparse.ArgumentParser(description=doc.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help=quick)
+    ap.add_argument("--out", default=out)
+    ap.add_argument("--doc", default=None)
+    return ap
+
+
+def reportPath(doc, quick, out, root, name):
+    """The report file: doc (--doc) if given, else out/name with --quick,
+    else root/docs/benchmarks/name."""
+    return doc or (os.path.join(out, name) if quick
+                   else os.path.join(root, "docs", "benchmarks", name))
 
 
 def foamEnv(root):
