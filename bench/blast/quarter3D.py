@@ -36,7 +36,7 @@ import re
 import shutil
 import sys
 
-from neuronFsi import bench, logs, msh
+from neuronFsi import bench, logs, msh, scratch
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
@@ -56,9 +56,9 @@ def runLevel(f, out, endTime, env, ranks=1):
     case = caseDir(out, f, ranks)
     if os.path.exists(case):
         shutil.rmtree(case)
-    bench.copyInputs(TUTORIAL, case, ("plotBlast.py",))
+    scratch.copyInputs(TUTORIAL, case, ("plotBlast.py",))
     c = os.path.join(case, "quarter3D")
-    bench.copyInputs(os.path.join(TUTORIAL, "quarter3D"), c,
+    scratch.copyInputs(os.path.join(TUTORIAL, "quarter3D"), c,
                      ("0.orig", "constant", "system", "Allrun"),
                      ("polyMesh", "*.msh"))
     res = bench.runLogged(levelCommand(f, endTime, ranks).split(), c, env,

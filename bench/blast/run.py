@@ -39,7 +39,7 @@ import sys
 
 import numpy as np
 
-from neuronFsi import bench, logs, msh, postProcessing
+from neuronFsi import bench, logs, msh, postProcessing, scratch
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
@@ -62,9 +62,10 @@ def prepare(case, f, Z, endTime, env, extra=(), pulse=PULSE):
     (sizes scaled by f; extra: more Allrun options)"""
     if os.path.exists(case):
         shutil.rmtree(case)
-    bench.copyInputs(TUTORIAL, case, ("fluidWedgeMesh.py", "plotBlast.py"))
+    scratch.copyInputs(TUTORIAL, case,
+                       ("fluidWedgeMesh.py", "plotBlast.py"))
     c = os.path.join(case, "axisymmetricPreview")
-    bench.copyInputs(os.path.join(TUTORIAL, "axisymmetricPreview"), c,
+    scratch.copyInputs(os.path.join(TUTORIAL, "axisymmetricPreview"), c,
                      ("0.orig", "constant", "system", "Allrun", "Allclean"),
                      ("cell.msh", "polyMesh", "blockMeshDict"))
     x = float(f)
@@ -292,8 +293,8 @@ def report(rows, size, mode, start, png, commit, dirty, end,
     w(f"Case `tutorials/blast/axisymmetricPreview` as committed: the average"
       f" cell on the rigid substrate, a {size['Z']*1e6:.0f} um water column "
       f"of radius 50 um, 50 MPa on the top face for {PULSE*1e9:.0f} ns, to "
-      f"{endNs:.0f} ns. Level x f: fluid {DEFAULT['h']*1e6:g} f um at the cell,"
-      f" {DEFAULT['far']*1e6:g} f um in the column, solid "
+      f"{endNs:.0f} ns. Level x f: fluid {DEFAULT['h']*1e6:g} f um at the "
+      f"cell, {DEFAULT['far']*1e6:g} f um in the column, solid "
       f"{DEFAULT['cell']*1e6:g} f um (membrane 0.8 of it), all scaled "
       "together so that the fluid faces at the cell stay 0.625 of the "
       "membrane faces (the default's ratio; with fluid faces as large as the "

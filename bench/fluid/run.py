@@ -30,7 +30,7 @@ import shutil
 import subprocess
 import time
 
-from neuronFsi import bench
+from neuronFsi import bench, scratch
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 TUTORIALS = os.path.join(ROOT, "tutorials", "verification")
@@ -77,7 +77,7 @@ def copy_tutorial(name, dst, stock=False):
     stock, the rhoCentralFoam overlay on top."""
     if os.path.exists(dst):
         shutil.rmtree(dst)
-    bench.copyInputs(os.path.join(TUTORIALS, name), dst,
+    scratch.copyInputs(os.path.join(TUTORIALS, name), dst,
                      ("0.orig", "system", "constant"), ("polyMesh",))
     if stock:
         shutil.copytree(STOCK_OVERLAY, dst, dirs_exist_ok=True)

@@ -1,6 +1,6 @@
 """neuronFsi.bench, what the benchmark scripts share, on small level
-folders: copies of inputs, logged and timed runs, the commit stamps and
-the report's first words, coupling statistics, the report file."""
+folders: options, logged and timed runs, the commit stamps and the
+report's first words, coupling statistics, the report file."""
 import datetime
 import io
 import math
@@ -39,26 +39,6 @@ class Bench(TempDirTestCase):
         args = ap.parse_args(["--quick", "--doc", "/d/y.md"])
         self.assertEqual(bench.reportPath(args.doc, args.quick, args.out,
                                           "/r", "x.md"), "/d/y.md")
-
-    def testCopyInputsLeavesOutIgnored(self):
-        src = os.path.join(self.tmp, "case")
-        self.write("case/Allrun", "#!/bin/sh\n")
-        os.chmod(os.path.join(src, "Allrun"), 0o755)
-        self.write("case/constant/solidProperties", "a 1;\n")
-        self.write("case/constant/cell.msh", "mesh\n")
-        self.write("case/constant/polyMesh/points", "()\n")
-        self.write("case/system/controlDict", "b 2;\n")
-        self.write("case/log.run", "not copied\n")
-        dst = os.path.join(self.tmp, "copy")
-        bench.copyInputs(src, dst, ("constant", "system", "Allrun"),
-                         ("*.msh", "polyMesh"))
-        found = sorted(os.path.relpath(os.path.join(d, f), dst)
-                       for d, _, fs in os.walk(dst) for f in fs)
-        self.assertEqual(found, ["Allrun", "constant/solidProperties",
-                                 "system/controlDict"])
-        self.assertTrue(os.access(os.path.join(dst, "Allrun"), os.X_OK))
-        with self.assertRaises(FileExistsError):
-            bench.copyInputs(src, dst, ("system",))
 
     def testRunLoggedAndFail(self):
         res = bench.runLogged(["sh", "-c", "echo out; echo err >&2; exit 3"],

@@ -9,7 +9,7 @@ import shutil
 import subprocess
 import time
 
-from neuronFsi import foamDict
+from neuronFsi import foamDict, scratch
 
 MESH_SIZES = ("nucleusSize", "cytoplasmSize", "membraneSize", "contactSize")
 
@@ -67,14 +67,11 @@ class ForwardModel:
         self.base = os.path.join(self.work, "base")
         if os.path.exists(self.base):
             shutil.rmtree(self.base)
-        os.makedirs(self.base)
         for d in ("system", "constant"):
-            src = os.path.join(self.case, d)
-            if not os.path.isdir(src):
+            if not os.path.isdir(os.path.join(self.case, d)):
                 raise ModelError("%s: no %s/ folder" % (self.case, d))
-            shutil.copytree(src, os.path.join(self.base, d),
-                            ignore=shutil.ignore_patterns("cell.msh",
-                                                          "*.calibrated"))
+        scratch.copyInputs(self.case, self.base, ("system", "constant"),
+                           ("cell.msh", "*.calibrated"))
         self._edit_mesh_dict(mesh_factor)
         log = os.path.join(self.base, "log.cellMesh")
         if _run(["cellMesh", "-case", self.base], self.base, log) \

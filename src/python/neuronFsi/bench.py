@@ -1,5 +1,5 @@
-"""What the benchmark scripts (bench/) share: the project's environment,
-a scratch copy of a case's inputs, commands run with their log, a solver
+"""What the benchmark scripts (bench/) share: their options, the project's
+environment, commands run with their log, a solver
 run timed by /usr/bin/time -v, the commit a run measures (stamped in its
 level folders for a later --reportOnly), the coupling statistics of a
 blast run and the report file.
@@ -13,7 +13,6 @@ import argparse
 import datetime
 import math
 import os
-import shutil
 import subprocess
 import sys
 
@@ -50,20 +49,6 @@ def foamEnv(root):
                          check=True)
     return dict(v.split("=", 1) for v in
                 res.stdout.decode().split("\0") if "=" in v)
-
-
-def copyInputs(src, dst, names, ignore=()):
-    """Copy the entries `names` (folders and files) of the case src into
-    the new folder dst, without what matches a pattern of ignore at any
-    depth (meshes that the case's Allrun makes again)."""
-    os.makedirs(dst)
-    for name in names:
-        s = os.path.join(src, name)
-        if os.path.isdir(s):
-            shutil.copytree(s, os.path.join(dst, name),
-                            ignore=shutil.ignore_patterns(*ignore))
-        else:
-            shutil.copy(s, dst)
 
 
 def runLogged(command, cwd, env, log=None):
