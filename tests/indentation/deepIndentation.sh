@@ -14,18 +14,8 @@ trap 'rm -rf "$work"' EXIT
 cp -r "$root/tutorials/indentation/averageCell" "$work/deep"
 cd "$work/deep"
 rm -rf postProcessing log.* *.png results.md constant/*.msh
-/usr/bin/python3 - <<'PY'
-import re
-p = "constant/indenterProperties"
-s = open(p).read()
-s = re.sub(r"protocol\s*\(.*\);", """protocol
-(
-    (A   load    10e-6   5e-6)
-    (B   hold    0       5)
-    (C   unload  10e-6   5e-6)
-);""", s, flags=re.S)
-open(p, "w").write(s)
-PY
+/usr/bin/python3 "$root/tests/lib/setProtocol.py" constant/indenterProperties \
+    "A load 10e-6 5e-6" "B hold 0 5" "C unload 10e-6 5e-6"
 cellMesh > log.cellMesh 2>&1 || { tail log.cellMesh; exit 1; }
 cellIndentationFoam > log.cellIndentationFoam 2>&1 \
     || { tail -20 log.cellIndentationFoam; exit 1; }

@@ -14,26 +14,11 @@ ref=$work/reference
 cp -r "$root/tutorials/indentation/validationCell" "$ref"
 cd "$ref"
 rm -rf postProcessing log.* *.png results.md constant/*.msh
-/usr/bin/python3 - <<'PY'
-import re
-p = "constant/indenterProperties"
-s = open(p).read()
-s = re.sub(r"protocol\s*\(.*\);", """protocol
-(
-    (A   load    0.3e-6  3e-6)
-    (B   hold    0       15)
-    (C1  load    10e-6   2e-6)
-    (C1  unload  10e-6   2e-6)
-    (C3  load    0.1e-6  1e-6)
-    (C3  unload  0.1e-6  1e-6)
-    (E   hold    0       20)
-);""", s, flags=re.S)
-open(p, "w").write(s)
-c = "system/controlDict"
-s = open(c).read()
-s += "\ncheckpointInterval 5;\n"
-open(c, "w").write(s)
-PY
+/usr/bin/python3 "$root/tests/lib/setProtocol.py" constant/indenterProperties \
+    "A load 0.3e-6 3e-6" "B hold 0 15" "C1 load 10e-6 2e-6" \
+    "C1 unload 10e-6 2e-6" "C3 load 0.1e-6 1e-6" "C3 unload 0.1e-6 1e-6" \
+    "E hold 0 20"
+printf '\ncheckpointInterval 5;\n' >> system/controlDict
 cellMesh > log.cellMesh 2>&1 || { tail log.cellMesh; exit 1; }
 cp -r "$ref" "$work/killed"
 cellIndentationFoam > log.reference 2>&1 || { tail log.reference; exit 1; }

@@ -11,6 +11,7 @@ what the scripts share (benchmark steps, scratch copies, checks).
                     the commit a run measures, the report file
     scratch         scratch copies of a case's inputs
     checks          the ok/FAIL checks of a test script
+    indenterProperties  an indentation case's protocol table replaced
 
 etc/bashrc puts src/python on PYTHONPATH.
 """
