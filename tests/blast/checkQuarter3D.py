@@ -15,7 +15,7 @@ import re
 import sys
 import numpy as np
 
-from neuronFsi import foamDict, logs, postProcessing
+from neuronFsi import foamDict, foamField, logs, postProcessing
 from neuronFsi.checks import Checks
 
 case, L = sys.argv[1], float(sys.argv[2])
@@ -86,20 +86,6 @@ if mode == "arrival":
 
 
 
-def read_points(f):
-    """OpenFOAM pointField, ascii or binary"""
-    raw = open(f, "rb").read()
-    head = raw[:raw.index(b"}") + 1].decode()
-    m = re.search(rb"\n(\d+)\s*\(", raw[len(head):])
-    n = int(m.group(1))
-    start = len(head) + m.end()
-    if re.search(r"format\s+binary", head):
-        return np.frombuffer(raw[start:start + 24*n], dtype="<f8").reshape(n, 3)
-    body = raw[start:].decode()
-    pts = re.findall(r"\(([^()]*)\)", body)[:n]
-    return np.array([[float(v) for v in q.split()] for q in pts])
-
-
 # Points that start on the planes x = 0, y = 0 (symmetry) and z = 0
 # (substrate) stay on them (interfaceMotion's slip projectors; before, a
 # point on two planes kept only one normal and interface points took the
@@ -110,8 +96,8 @@ if not times:
     check(False, "no moved mesh points written")
     sys.exit(1)
 last = max(times, key=lambda d: float(os.path.basename(d)))
-x0 = read_points(f"{case}/constant/polyMesh/points")
-x1 = read_points(f"{last}/polyMesh/points")
+x0 = foamField.points(f"{case}/constant/polyMesh/points")
+x1 = foamField.points(f"{last}/polyMesh/points")
 moved = np.abs(x1 - x0).max()
 for k, plane in enumerate(("x = 0", "y = 0", "z = 0")):
     # gmsh writes some of them at 1e-21 m: that offset must not change

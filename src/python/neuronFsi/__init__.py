@@ -7,6 +7,7 @@ what the scripts share (benchmark steps, scratch copies, checks).
     msh             gmsh ASCII meshes (2.2 and 4.1)
     foamDict        OpenFOAM dictionaries: read, set an entry in the text
     logs            the numbers still taken from solver and time -v logs
+    foamField       OpenFOAM fields (ascii internal field) and point lists
     bench           what the benchmark scripts share: options, timed runs,
                     the commit a run measures, the report file
     scratch         scratch copies of a case's inputs
