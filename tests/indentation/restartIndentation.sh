@@ -44,16 +44,16 @@ grep "Continuing from" log.run.TERM log.final
 cmp "$ref/$out/force.dat" "$out/force.dat"
 cmp "$ref/$out/peaks.dat" "$out/peaks.dat"
 /usr/bin/python3 - "$ref/$out/solid.h5" "$out/solid.h5" <<'PY'
-import sys, h5py, numpy as np
+import sys, numpy as np
+from neuronFsi.solidResults import SolidResults
 def steps(f):
-    g = f["steps"]
-    return sorted((int(k), g[k].attrs["time"]) for k in g)
-with h5py.File(sys.argv[1], "r") as a, h5py.File(sys.argv[2], "r") as b:
+    return [(int(k), f.time(k)) for k in f.steps()]
+with SolidResults(sys.argv[1]) as a, SolidResults(sys.argv[2]) as b:
     sa, sb = steps(a), steps(b)
     assert sa == sb, (sa, sb)
     k = str(sa[-1][0])
     for d in ("displacement", "pressure", "vonMises"):
-        x, y = a["steps"][k][d][()], b["steps"][k][d][()]
+        x, y = a.field(k, d), b.field(k, d)
         assert np.array_equal(x, y), (d, np.abs(x - y).max())
     print("solid.h5: %d steps, last (t = %g s) bit-equal" % (len(sa), sa[-1][1]))
 PY
