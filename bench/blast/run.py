@@ -33,7 +33,6 @@ Writes docs/benchmarks/blast.md and blast_cost_vs_error.png (full) or
 import datetime
 import math
 import os
-import re
 import shutil
 import sys
 
@@ -157,15 +156,11 @@ def parseLevel(f, out, size, name=None):
     r.update(bench.couplingStatistics(c))
     pf = "solidProbes/solidProbes.dat"
     # the probe point and the element that samples it (its centroid)
-    for line in postProcessing.header(c, pf):
-        m = re.match(r"probe 0 at \((\S+) (\S+) \S+\) m: element (\d+) "
-                     r"\(\"(\w+)\", centroid (\S+) (\S+) ", line)
-        if m:
-            pr0 = np.array([float(m.group(1)), float(m.group(2))])
-            ce = np.array([float(m.group(5)), float(m.group(6))])
-            r.update(probePoint=pr0, probeElement=int(m.group(3)),
-                     probeRegion=m.group(4), probeCentroid=ce,
-                     probeOffset=float(np.linalg.norm(ce - pr0)))
+    for probe in postProcessing.probes(c, pf)[:1]:
+        pr0, ce = probe["point"][:2], probe["centroid"][:2]
+        r.update(probePoint=pr0, probeElement=probe["element"],
+                 probeRegion=probe["region"], probeCentroid=ce,
+                 probeOffset=float(np.linalg.norm(ce - pr0)))
     p = postProcessing.series(c, pf)
     nProbe = (p.shape[1] - 1)//7
     base = 1 + 5*nProbe

@@ -3,7 +3,6 @@
 map check, arrival time at the probe, coupling convergence.
 usage: checkPreview.py case Z"""
 import math
-import re
 import sys
 import numpy as np
 
@@ -24,10 +23,7 @@ check.relative("radial ring force ~ -pi^2 a H/2", fr, -math.pi**2*a*H/2,
 
 # Arrival at the probe element (its centroid from the header)
 log = "solidProbes/solidProbes.dat"
-zc = None
-for line in postProcessing.header(case, log):
-    if line.startswith("probe 0"):
-        zc = float(re.search(r"centroid \S+ (\S+) ", line).group(1))
+zc = postProcessing.probes(case, log)[0]["centroid"][1]
 d = postProcessing.series(case, log)
 t, p = d[:, 0], d[:, 1]
 rho0, C0, s, pulse = 1000.0, 1450.0, 1.99, 50e6

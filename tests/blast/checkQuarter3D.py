@@ -11,7 +11,6 @@ velocities below 1e-9 m/s, instead of the arrival)"""
 import glob
 import math
 import os
-import re
 import sys
 import numpy as np
 
@@ -56,10 +55,7 @@ if m:
                        ps[i], pf[i], 5e-3)
 
 # Arrival at the probe element (its centroid from the header)
-zc = None
-for line in postProcessing.header(case, "solidProbes/solidProbes.dat"):
-    if line.startswith("probe 0"):
-        zc = float(re.search(r"centroid \S+ \S+ (\S+) ", line).group(1))
+zc = postProcessing.probes(case)[0]["centroid"][2]
 d = postProcessing.series(case, "solidProbes/solidProbes.dat")
 if not np.isfinite(d).all():
     check(False, "NaN or Inf in solidProbes.dat")

@@ -151,6 +151,24 @@ class ColumnFiles(TempDirTestCase):
         self.assertEqual(pp.series(self.tmp, "fsi/coupling.dat").shape,
                          (1, 9))
 
+    def testProbesOfTheHeader(self):
+        self.write("postProcessing/solidProbes/0/solidProbes.dat",
+                   "# solid probes (element average)\n"
+                   "# time [s]  p0[Pa]  p1[Pa]\n"
+                   "# probe 0 at (5.04e-06 5.32e-06 0) m: element 295 "
+                   "(\"cytoplasm\", centroid 4.99e-06 5.53e-06 0 m)\n"
+                   "# probe 1 at (1e-06 2e-06 3e-06) m: element 7 "
+                   "(\"nucleus\", centroid 1.1e-06 2.1e-06 3.1e-06 m)\n"
+                   "1e-10 1 2\n")
+        p = pp.probes(self.tmp)
+        self.assertEqual([(q["element"], q["region"]) for q in p],
+                         [(295, "cytoplasm"), (7, "nucleus")])
+        np.testing.assert_array_equal(p[0]["point"], [5.04e-6, 5.32e-6, 0])
+        np.testing.assert_array_equal(p[1]["centroid"],
+                                      [1.1e-6, 2.1e-6, 3.1e-6])
+        self.write("postProcessing/fsi/0/coupling.dat", HEADER + row(1e-10))
+        self.assertEqual(pp.probes(self.tmp, "fsi/coupling.dat"), [])
+
 
 if __name__ == "__main__":
     unittest.main()

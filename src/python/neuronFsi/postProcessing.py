@@ -187,6 +187,21 @@ def header(case, log):
     return readTable(segments(case, log)[0][1]).header
 
 
+def probes(case, log="solidProbes/solidProbes.dat"):
+    """The probes the header of the solid probes file names, in order:
+    each a dict of point [m] (3 components), element, region and the
+    element's centroid [m] (3 components)."""
+    out = []
+    for line in header(case, log):
+        m = re.match(r"probe \d+ at \((\S+) (\S+) (\S+)\) m: element (\d+) "
+                     r"\(\"(\w+)\", centroid (\S+) (\S+) (\S+) m\)", line)
+        if m:
+            v = [float(m.group(k)) for k in (1, 2, 3, 6, 7, 8)]
+            out.append(dict(point=np.array(v[:3]), element=int(m.group(4)),
+                            region=m.group(5), centroid=np.array(v[3:])))
+    return out
+
+
 def names(case, log):
     """The column names of a log (from its first segment with rows)."""
     tables = [readTable(p) for t0, p in segments(case, log)]
