@@ -18,7 +18,8 @@ HEAD = """FoamFile
 }
 """
 
-P = HEAD % ("ascii", "volScalarField", "p") + """dimensions      [1 -1 -2 0 0 0 0];
+P = HEAD % ("ascii", "volScalarField", "p") + """\
+dimensions      [1 -1 -2 0 0 0 0];
 
 internalField   nonuniform List<scalar>
 3
