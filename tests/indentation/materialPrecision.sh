@@ -43,15 +43,14 @@ do
 done
 /usr/bin/python3 - "$work" <<'PY'
 import sys, numpy as np
-from neuronFsi.postProcessing import readTable
+from neuronFsi.postProcessing import materials
 from neuronFsi.solidResults import SolidResults
 work = sys.argv[1]
 def c0(run):
-    # the header names a variable number of Maxwell branches: by position
-    rows = readTable(work + "/%s/postProcessing/indentation/materials.dat"
-                     % run).rows
-    assert [r[0] for r in rows] == ["solid"], rows
-    return float(rows[0][2])
+    m = materials(work + "/%s/postProcessing/indentation/materials.dat"
+                  % run)
+    assert list(m) == ["solid"], m
+    return m["solid"]["c0"]
 def fields(run):
     with SolidResults(work + "/%s/postProcessing/indentation/solid.h5"
                       % run) as f:

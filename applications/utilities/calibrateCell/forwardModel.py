@@ -9,7 +9,7 @@ import shutil
 import subprocess
 import time
 
-from neuronFsi import foamDict, scratch
+from neuronFsi import foamDict, postProcessing, scratch
 
 MESH_SIZES = ("nucleusSize", "cytoplasmSize", "membraneSize", "contactSize")
 
@@ -37,21 +37,10 @@ def read_materials(path):
     per Maxwell branch; 17 digits): region -> {c0, d0, mu1, tau1, ...}."""
     if not os.path.isfile(path):
         raise ModelError("no %s (the solver writes it at the start)" % path)
-    mats = {}
-    for line in open(path):
-        if line.startswith("#") or not line.strip():
-            continue
-        s = line.split()
-        if len(s) < 4 or len(s) % 2:
-            raise ModelError("%s: malformed line '%s'" % (path, line.strip()))
-        e = {"c0": float(s[2]), "d0": float(s[3])}
-        for n in range(1, (len(s) - 4)//2 + 1):
-            e["mu%d" % n] = float(s[2 + 2*n])
-            e["tau%d" % n] = float(s[3 + 2*n])
-        mats[s[0]] = e
-    if not mats:
-        raise ModelError("%s: no material" % path)
-    return mats
+    try:
+        return postProcessing.materials(path)
+    except postProcessing.ColumnFileError as err:
+        raise ModelError(str(err))
 
 
 class ForwardModel:

@@ -187,6 +187,34 @@ def header(case, log):
     return readTable(segments(case, log)[0][1]).header
 
 
+def materials(path):
+    """The materials a solver built, from its materials.dat (a row per
+    region: region, rho0 [kg/m^3], c0 [Pa], d0 [1/Pa], then muN [Pa] and
+    tauN [s] per Maxwell branch, as many as the region has; 17 digits):
+    region -> {c0, d0, mu1, tau1, ...}."""
+    try:
+        with open(path) as f:
+            lines = f.read().split("\n")
+    except OSError as err:
+        raise ColumnFileError("%s: %s" % (path, err.strerror))
+    mats = {}
+    for line in lines:
+        if line.startswith("#") or not line.strip():
+            continue
+        s = line.split()
+        if len(s) < 4 or len(s) % 2:
+            raise ColumnFileError("%s: malformed line '%s'"
+                                  % (path, line.strip()))
+        e = {"c0": float(s[2]), "d0": float(s[3])}
+        for n in range(1, (len(s) - 4)//2 + 1):
+            e["mu%d" % n] = float(s[2 + 2*n])
+            e["tau%d" % n] = float(s[3 + 2*n])
+        mats[s[0]] = e
+    if not mats:
+        raise ColumnFileError("%s: no material" % path)
+    return mats
+
+
 def probes(case, log="solidProbes/solidProbes.dat"):
     """The probes the header of the solid probes file names, in order:
     each a dict of point [m] (3 components), element, region and the
