@@ -165,17 +165,10 @@ class ForwardModel:
                              "last lines:\n%s" % (rc, log, "\n".join(
                                  text.splitlines()[-8:])))
         pp = os.path.join(d, "postProcessing/indentation")
-        peaks = {}
-        for line in open(os.path.join(pp, "peaks.dat")):
-            if not line.startswith("#"):
-                s = line.split()
-                peaks[s[0]] = float(s[3])
-        t, F = [], []
-        for line in open(os.path.join(pp, "force.dat")):
-            if not line.startswith("#"):
-                s = line.split()
-                t.append(float(s[0]))
-                F.append(float(s[2]))
+        p = postProcessing.readTable(os.path.join(pp, "peaks.dat"))
+        peaks = dict(zip(p.column("label"), p.column("force").tolist()))
+        f = postProcessing.readTable(os.path.join(pp, "force.dat"))
+        t, F = f.column("time").tolist(), f.column("force").tolist()
         m = re.search(r"delta0 = (\S+) m", text)
         cpu = re.search(r"CPU time ([0-9.eE+-]+) s", text)
         out = dict(peaks=peaks, time=t, force=F, wall=wall,
