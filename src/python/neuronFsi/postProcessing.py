@@ -117,14 +117,20 @@ class Table:
             return col
 
 
+def _lines(path):
+    """The lines of a file; a ColumnFileError naming it when it cannot be
+    read."""
+    try:
+        with open(path) as f:
+            return f.read().split("\n")
+    except OSError as err:
+        raise ColumnFileError("%s: %s" % (path, err.strerror))
+
+
 def readTable(path):
     """Table of one column file; a cut last row (fewer fields than the
     first row, or no newline at its end) is dropped."""
-    try:
-        with open(path) as f:
-            lines = f.read().split("\n")
-    except OSError as err:
-        raise ColumnFileError("%s: %s" % (path, err.strerror))
+    lines = _lines(path)
     header, notes, rows, lineNo = [], [], [], []
     last = len(lines) - 1       # "" after a final newline, else a cut line
     for i, line in enumerate(lines):
@@ -192,11 +198,7 @@ def materials(path):
     region: region, rho0 [kg/m^3], c0 [Pa], d0 [1/Pa], then muN [Pa] and
     tauN [s] per Maxwell branch, as many as the region has; 17 digits):
     region -> {c0, d0, mu1, tau1, ...}."""
-    try:
-        with open(path) as f:
-            lines = f.read().split("\n")
-    except OSError as err:
-        raise ColumnFileError("%s: %s" % (path, err.strerror))
+    lines = _lines(path)
     mats = {}
     for line in lines:
         if line.startswith("#") or not line.strip():
