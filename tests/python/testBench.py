@@ -40,6 +40,16 @@ class Bench(TempDirTestCase):
         self.assertEqual(bench.reportPath(args.doc, args.quick, args.out,
                                           "/r", "x.md"), "/d/y.md")
 
+    def testFoamEnvSourcesTheBashrc(self):
+        self.write("etc/bashrc", "export NEURONFSI_TEST='a=b c'\n"
+                   "echo noise\n")
+        env = bench.foamEnv(self.tmp)
+        self.assertEqual(env["NEURONFSI_TEST"], "a=b c")
+        self.assertEqual(env["PATH"], os.environ["PATH"])
+        self.write("etc/bashrc", "return 1\n")
+        with self.assertRaises(subprocess.CalledProcessError):
+            bench.foamEnv(self.tmp)
+
     def testRunLoggedAndFail(self):
         res = bench.runLogged(["sh", "-c", "echo out; echo err >&2; exit 3"],
                               self.tmp, os.environ, "log.x")

@@ -1,8 +1,8 @@
 """What the benchmark scripts (bench/) share: their options, the project's
-environment, commands run with their log, a solver
-run timed by /usr/bin/time -v, the commit a run measures (stamped in its
-level folders for a later --reportOnly), the coupling statistics of a
-blast run and the report file.
+environment, commands run with their log, a solver run timed by
+/usr/bin/time -v, the commit a run measures (stamped in its level folders
+for a later --reportOnly), the coupling statistics of a blast run and the
+report file.
 
 A level folder is one benchmark run: runTimed leaves in it log.time
 (/usr/bin/time -v, read by logs.timeV), the solver log and log.load (the
