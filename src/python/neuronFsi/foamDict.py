@@ -169,7 +169,7 @@ def read(path):
 
 
 def set_entry(text, path, value, name="<text>"):
-    """Text with entry `path` (keys from the top, e.g. ['nucleus', 'c0'])
+    """Text with entry `path` (keys from the top, e.g. ['nucleus', 'C10'])
     set to `value` (the text between the keyword and ';'). An existing entry
     is replaced; a missing one is added at the end of its sub-dictionary,
     which must exist."""
