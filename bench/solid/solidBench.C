@@ -34,7 +34,7 @@ void implicitCase(int n)
     Model model(Mesh::rectangle(n, n, 0, L, 0, L));
     MaterialParameters p;
     p.name = "nucleus";
-    p.c0 = 13.33;
+    p.C10 = 13.33;
     p.branches = {{862.22, 0.5}};
     model.setMaterial("solid", Material::create(p));
     model.fix("bottom", 0);
@@ -58,7 +58,7 @@ void explicitCase(int n)
     MaterialParameters p;
     p.name = "cytoplasm";
     p.volumetric = "mieGruneisen";
-    p.c0 = 1.67;
+    p.C10 = 1.67;
     p.branches = {{107.78, 0.01}};
     model.setMaterial("solid", Material::create(p));
     model.fix("zmin", 2);

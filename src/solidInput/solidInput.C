@@ -10,8 +10,6 @@
 #include "GmshReader.H"
 #include "SolidError.H"
 
-#include <map>
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
 
 Foam::solidInput::solidInput
@@ -93,17 +91,29 @@ std::vector<solid::MaterialParameters> Foam::solidInput::materials
     const dictionary& mats = dict_.subDict("materials");
     const wordList regions(mesh.regionNames.begin(), mesh.regionNames.end());
 
-    // Every other entry must name a region of the mesh: a misspelt region
-    // would otherwise be ignored silently
+    // The paper's parameter sets are data files now: a case of an earlier
+    // version names one with parameterSet
+    if (mats.found("parameterSet", keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(mats)
+            << "entry 'parameterSet' is no longer read: the paper's "
+            << "parameter sets are dictionaries, included in 'materials' as"
+            << nl << "    #include \"$PROJECT_DIR/etc/caseDicts/"
+            << "cellMaterials/<set>\"" << nl << "with <set> one of table, "
+            << "text, textFactor4, instantaneous (docs/userGuide/"
+            << "solidProperties.md)" << exit(FatalIOError);
+    }
+
+    // Every entry must name a region of the mesh: a misspelt region would
+    // otherwise be ignored silently
     for (const entry& e : mats)
     {
         const word& key = e.keyword();
-        if (key == "parameterSet") continue;
         if (!e.isDict())
         {
             FatalIOErrorInFunction(mats)
-                << "unknown entry '" << key << "'; valid: parameterSet and "
-                << "one sub-dictionary per region " << regions
+                << "unknown entry '" << key << "'; valid: one "
+                << "sub-dictionary per region " << regions
                 << exit(FatalIOError);
         }
         if (!regions.found(key))
@@ -114,57 +124,31 @@ std::vector<solid::MaterialParameters> Foam::solidInput::materials
         }
     }
 
-    // The paper's set first, sub-dictionaries replace it region by region
-    std::map<std::string, solid::MaterialParameters> set;
-    if (mats.found("parameterSet"))
-    {
-        const word name = mats.get<word>("parameterSet");
-        try
-        {
-            for (const auto& p : solid::paperParameterSet(name))
-            {
-                set[p.name] = p;
-            }
-        }
-        catch (const solid::SolidError&)
-        {
-            FatalIOErrorInFunction(mats)
-                << "entry 'parameterSet' = " << name << " is not valid "
-                << "(valid: table, text, textFactor4, instantaneous)"
-                << exit(FatalIOError);
-        }
-        Info<< "Material parameters: the paper's " << name << " reading"
-            << nl;
-    }
-
     std::vector<solid::MaterialParameters> result;
     for (const word& region : regions)
     {
-        if (mats.isDict(region))
-        {
-            const dictionary& d = mats.subDict(region);
-            try
-            {
-                set[region] = solid::MaterialParameters::fromEntries
-                (
-                    region, solidEntries(d, "material '" + region + "'")
-                );
-            }
-            catch (const solid::SolidError& err)
-            {
-                FatalIOErrorInFunction(d) << err.what() << exit(FatalIOError);
-            }
-        }
-        if (!set.count(region))
+        if (!mats.isDict(region))
         {
             FatalIOErrorInFunction(mats)
                 << "no material for region '" << region << "': give a "
-                << "sub-dictionary '" << region << "' or parameterSet "
-                << "table|text|textFactor4|instantaneous"
-                << exit(FatalIOError);
+                << "sub-dictionary '" << region << "' (the paper's sets: "
+                << "#include \"$PROJECT_DIR/etc/caseDicts/cellMaterials/"
+                << "<set>\")" << exit(FatalIOError);
         }
-        const solid::MaterialParameters& p = set[region];
-        Info<< "    " << region << ": c0 " << p.c0 << " Pa, d0 " << p.d0
+        const dictionary& d = mats.subDict(region);
+        solid::MaterialParameters p;
+        try
+        {
+            p = solid::MaterialParameters::fromEntries
+            (
+                region, solidEntries(d, "material '" + region + "'")
+            );
+        }
+        catch (const solid::SolidError& err)
+        {
+            FatalIOErrorInFunction(d) << err.what() << exit(FatalIOError);
+        }
+        Info<< "    " << region << ": C10 " << p.C10 << " Pa, d0 " << p.d0
             << " 1/Pa";
         for (const auto& b : p.branches)
         {
@@ -213,11 +197,11 @@ void Foam::solidInput::writeMaterials
 {
     OFstream os(file);
     os.precision(17);
-    os  << "# region  rho0 [kg/m^3]  c0 [Pa]  d0 [1/Pa]  then for each "
+    os  << "# region  rho0 [kg/m^3]  C10 [Pa]  d0 [1/Pa]  then for each "
         << "Maxwell branch N = 1, 2, ...: muN [Pa]  tauN [s]" << nl;
     for (const solid::MaterialParameters& p : materials)
     {
-        os  << word(p.name) << ' ' << p.rho0 << ' ' << p.c0 << ' ' << p.d0;
+        os  << word(p.name) << ' ' << p.rho0 << ' ' << p.C10 << ' ' << p.d0;
         for (const auto& b : p.branches)
         {
             os  << ' ' << b.mu << ' ' << b.tau;

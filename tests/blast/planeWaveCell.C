@@ -165,12 +165,12 @@ int main(int argc, char** argv)
         };
         const std::map<std::string, std::map<std::string, std::string>> mat
         {
-            {"nucleus", with(water, entries({{"c0", "13.33"},
+            {"nucleus", with(water, entries({{"C10", "13.33"},
                 {"mu1", "862.22"}, {"tau1", "0.5"}}))},
-            {"cytoplasm", with(water, entries({{"c0", "1.67"},
+            {"cytoplasm", with(water, entries({{"C10", "1.67"},
                 {"mu1", "107.78"}, {"tau1", "0.01"}}))},
-            {"membrane", entries({{"c0", "166.67"}, {"mu1", "13.89"},
-                {"tau1", "3000"}, {"volumetric", "neoHookean"},
+            {"membrane", entries({{"C10", "166.67"}, {"mu1", "13.89"},
+                {"tau1", "3000"}, {"volumetric", "quadratic"},
                 {"d0", "9.5125e-10"}})}
         };
         for (const auto& m : mat)

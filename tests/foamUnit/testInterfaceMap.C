@@ -529,7 +529,12 @@ TEST(interfaceMap, badDictionariesNameTheEntry)
                 "mapTolerance", "-0.1", {"mapTolerance = -0.1", "(0, inf)"}
             },
             badCase{"map", "nearest", {"map nearest is not valid"}},
-            badCase{"load", "traction", {"load traction is not valid"}}
+            badCase{"load", "traction", {"load traction is not valid"}},
+            badCase
+            {
+                "load", "projection",
+                {"load projection is now 'load mappedForces'", "pressure"}
+            }
         }
     )
     {

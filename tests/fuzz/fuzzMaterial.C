@@ -1,10 +1,9 @@
 // libFuzzer harness: the material parameter reader of the solid library
 // (MaterialParameters::fromEntries of StringEntries: the "key value"
-// entries of a region sub-dictionary as text, strictly parsed) and the
-// named paper parameter sets (paperParameterSet). The first line of the
-// input names the parameter set, each further line is "key value...".
-// Any bad input must throw SolidError; accepted parameters must build a
-// Material.
+// entries of a region sub-dictionary as text, strictly parsed). Each line
+// of the input is "key value..." (the paper's parameter sets are data
+// files, etc/caseDicts/cellMaterials, read by the same reader). Any bad
+// input must throw SolidError; accepted parameters must build a Material.
 #include "Material.H"
 #include "SolidError.H"
 #include "StringEntries.H"
@@ -18,18 +17,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
     std::istringstream is(std::string(reinterpret_cast<const char*>(data),
                                       size));
-    std::string set, line;
-    std::getline(is, set);
-    try
-    {
-        for (const auto& p : solid::paperParameterSet(set))
-        {
-            solid::Material::create(p);
-        }
-    }
-    catch (const solid::SolidError&)
-    {
-    }
+    std::string line;
     std::map<std::string, std::string> entries;
     while (std::getline(is, line))
     {

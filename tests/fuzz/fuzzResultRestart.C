@@ -32,7 +32,7 @@ std::unique_ptr<solid::Model> model()
     );
     solid::MaterialParameters p;
     p.name = "solid";
-    p.c0 = 13.33;
+    p.C10 = 13.33;
     p.d0 = 0;
     p.branches = {{862.22, 0.5}};
     m->setMaterial("solid", solid::Material::create(p));

@@ -1,19 +1,19 @@
 #!/bin/bash
 # Numbers are read as numbers (issue 16): cellIndentationFoam on a small
 # r-z block (constant/solidProperties mesh rectangle, one region) with
-# c0 = 1.6700001 Pa and with c0 = 1.6700004 Pa. Before, the entries went
+# C10 = 1.6700001 Pa and with C10 = 1.6700004 Pa. Before, the entries went
 # through a 6-digit text round trip and both runs were bit-identical.
-# Asserted: materials.dat carries every digit of each c0, the fields of
+# Asserted: materials.dat carries every digit of each C10, the fields of
 # solid.h5 differ between the two values, and a second run with the first
 # value equals the first run bit for bit (the difference is the 8th digit
-# of c0, not run-to-run noise).
+# of C10, not run-to-run noise).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 . "$root/etc/bashrc"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 head='FoamFile { version 2.0; format ascii; class dictionary; object'
-makeCase()  # <dir> <c0 [Pa]>
+makeCase()  # <dir> <C10 [Pa]>
 {
     mkdir -p "$1/system" "$1/constant"
     cat > "$1/system/controlDict" <<DICT
@@ -26,7 +26,7 @@ DICT
 $head solidProperties; }
 mesh { type rectangle; cells (8 4); min (0 0); max (10e-6 5e-6); }
 fixed ((bottom 0) (bottom 1) (left 0));
-materials { solid { c0 $2; d0 0; mu1 107.78; tau1 0.01; } }
+materials { solid { C10 $2; d0 0; mu1 107.78; tau1 0.01; } }
 DICT
     cat > "$1/constant/indenterProperties" <<DICT
 $head indenterProperties; }
@@ -46,27 +46,27 @@ import sys, numpy as np
 from neuronFsi.postProcessing import materials
 from neuronFsi.solidResults import SolidResults
 work = sys.argv[1]
-def c0(run):
+def C10(run):
     m = materials(work + "/%s/postProcessing/indentation/materials.dat"
                   % run)
     assert list(m) == ["solid"], m
-    return m["solid"]["c0"]
+    return m["solid"]["C10"]
 def fields(run):
     with SolidResults(work + "/%s/postProcessing/indentation/solid.h5"
                       % run) as f:
         return [(f.time(k), f.field(k, "displacement"),
                  f.field(k, "pressure")) for k in f.steps()]
-assert c0("a") == 1.6700001 and c0("b") == 1.6700004, (c0("a"), c0("b"))
+assert C10("a") == 1.6700001 and C10("b") == 1.6700004, (C10("a"), C10("b"))
 a, b, c = fields("a"), fields("b"), fields("c")
 assert len(a) >= 2 and len(a) == len(b) == len(c), (len(a), len(b), len(c))
 for (ta, ua, pa), (tb, ub, pb), (tc, uc, pc) in zip(a, b, c):
     assert ta == tb == tc
     assert np.array_equal(ua, uc) and np.array_equal(pa, pc), "a != c"
 last = a[-1][1] - b[-1][1]
-assert np.abs(last).max() > 0, "c0 1.6700001 and 1.6700004 gave the same"
-print("materialPrecision: c0 %r and %r Pa: %d field steps, displacements "
-      "differ by up to %.3e m (of %.3e m); the same c0 twice: bit-equal"
-      % (c0("a"), c0("b"), len(a), np.abs(last).max(),
+assert np.abs(last).max() > 0, "C10 1.6700001 and 1.6700004 gave the same"
+print("materialPrecision: C10 %r and %r Pa: %d field steps, displacements "
+      "differ by up to %.3e m (of %.3e m); the same C10 twice: bit-equal"
+      % (C10("a"), C10("b"), len(a), np.abs(last).max(),
          np.abs(a[-1][1]).max()))
 PY
 echo "materialPrecision: passed"

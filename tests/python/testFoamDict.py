@@ -75,6 +75,22 @@ class FoamDict(TempDirTestCase):
         with self.assertRaisesRegex(foamDict.DictError, "unsupported"):
             foamDict.read(self.write("e", '#remove "a"\n'))
 
+    def testIncludeExpandsEnvironment(self):
+        # As the tutorials include the paper's parameter sets
+        sets = os.path.join(self.tmp.name, "sets")
+        os.makedirs(sets)
+        with open(os.path.join(sets, "table"), "w") as f:
+            f.write("nucleus { C10 13.33; mu1 862.22; }\n")
+        p = self.write("solidProperties", 'materials\n{\n'
+                       '    #include "$FOAMDICT_TEST_DIR/sets/table"\n'
+                       '    nucleus { C10 6.67; }\n}\n')
+        os.environ["FOAMDICT_TEST_DIR"] = self.tmp.name
+        try:
+            self.assertEqual(foamDict.read(p), {"materials": {"nucleus": {
+                "C10": 6.67, "mu1": 862.22}}})
+        finally:
+            del os.environ["FOAMDICT_TEST_DIR"]
+
 
 if __name__ == "__main__":
     unittest.main()

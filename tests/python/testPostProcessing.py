@@ -170,13 +170,13 @@ class ColumnFiles(TempDirTestCase):
         self.assertEqual(pp.probes(self.tmp, "fsi/coupling.dat"), [])
 
     def testMaterialsWithTheirBranches(self):
-        p = self.write("materials.dat", "# region  rho0 [kg/m^3]  c0 [Pa]  "
+        p = self.write("materials.dat", "# region  rho0 [kg/m^3]  C10 [Pa]  "
                        "d0 [1/Pa]  then muN [Pa]  tauN [s]\n"
                        "nucleus 1000 6.6699999999999999 0 431.12 0.5\n"
                        "membrane 1000 166.67 1e-3 13.89 3000 1 2\n\n")
         self.assertEqual(pp.materials(p), {
-            "nucleus": {"c0": 6.67, "d0": 0.0, "mu1": 431.12, "tau1": 0.5},
-            "membrane": {"c0": 166.67, "d0": 1e-3, "mu1": 13.89,
+            "nucleus": {"C10": 6.67, "d0": 0.0, "mu1": 431.12, "tau1": 0.5},
+            "membrane": {"C10": 166.67, "d0": 1e-3, "mu1": 13.89,
                          "tau1": 3000.0, "mu2": 1.0, "tau2": 2.0}})
         with self.assertRaisesRegex(pp.ColumnFileError,
                                     r"b.dat: malformed line 'solid 1 2 3 4'"):

@@ -76,7 +76,7 @@ TEST(SolidElement, TangentAgainstFiniteDifferences)
     eos::MieGruneisen::Parameters w;
     MaterialParameters mg;
     mg.volumetric = "mieGruneisen";
-    mg.c0 = 1.67;
+    mg.C10 = 1.67;
     mg.branches = {{107.78, 0.01}};
     const auto mats =
     {

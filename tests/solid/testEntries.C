@@ -2,7 +2,7 @@
 // the map-of-strings implementation is strict (one finite decimal number,
 // one word) and keeps every digit, so that two parameters differing in
 // the 8th digit build different materials (issue 16: a text round trip
-// through 6 digits made c0 = 1.6700001 and 1.6700004 the same material).
+// through 6 digits made C10 = 1.6700001 and 1.6700004 the same material).
 #include "Material.H"
 #include "SolidError.H"
 #include "StringEntries.H"
@@ -17,10 +17,10 @@ namespace
 //- The message of the SolidError that reading key as a number throws
 std::string numberError(const std::string& value)
 {
-    const StringEntries e("material 'cell'", {{"c0", value}});
+    const StringEntries e("material 'cell'", {{"C10", value}});
     try
     {
-        e.real("c0");
+        e.real("C10");
     }
     catch (const SolidError& err)
     {
@@ -32,7 +32,7 @@ std::string numberError(const std::string& value)
 
 //- Second Piola-Kirchhoff stress of the isochoric model at a sheared,
 //  stretched state (first step of 1 ms from the reference state)
-Mat3 stressOf(const std::string& c0)
+Mat3 stressOf(const std::string& C10)
 {
     const auto m = Material::create
     (
@@ -42,7 +42,7 @@ Mat3 stressOf(const std::string& c0)
             StringEntries
             (
                 "material 'cytoplasm'",
-                {{"c0", c0}, {"mu1", "107.78"}, {"tau1", "0.01"}}
+                {{"C10", C10}, {"mu1", "107.78"}, {"tau1", "0.01"}}
             )
         )
     );
@@ -88,7 +88,7 @@ TEST(SolidEntries, StrictNumbersAndWords)
          "0x10", "1e999", "1.5.2", "--1"}
     )
     {
-        EXPECT_NE(numberError(bad).find("material 'cell': entry 'c0' = '"
+        EXPECT_NE(numberError(bad).find("material 'cell': entry 'C10' = '"
                                         + std::string(bad)
                                         + "' is not a number"),
                   std::string::npos) << "'" << bad << "'";
@@ -101,12 +101,12 @@ TEST(SolidEntries, StrictNumbersAndWords)
     EXPECT_THROW(e.word("volumetric"), SolidError);
     try
     {
-        e.real("c0");
+        e.real("C10");
         ADD_FAILURE() << "a missing entry was read";
     }
     catch (const SolidError& err)
     {
-        EXPECT_STREQ(err.what(), "material 'cell': missing entry 'c0'");
+        EXPECT_STREQ(err.what(), "material 'cell': missing entry 'C10'");
     }
 }
 
@@ -118,7 +118,7 @@ TEST(SolidEntries, EighthDigitChangesTheMaterial)
     const Mat3 c = stressOf("1.6700001");
     EXPECT_NE(a, b);
     EXPECT_EQ(a, c);
-    // The difference is the neo-Hookean part's: 2 dc0 times its shape
+    // The difference is the neo-Hookean part's: 2 dC10 times its shape
     const Mat3 d = stressOf("2.6700001") - a;
     EXPECT_NEAR((b - a).norm(), 3e-7*d.norm(), 1e-3*3e-7*d.norm());
 }

@@ -48,7 +48,7 @@ std::shared_ptr<const Material> water(double b1, double b2)
     MaterialParameters p;
     p.name = "water";
     p.volumetric = "mieGruneisen";
-    p.c0 = 1.67;                    // cytoplasm deviatoric part
+    p.C10 = 1.67;                    // cytoplasm deviatoric part
     p.branches = {{107.78, 0.01}};
     p.b1 = b1;
     p.b2 = b2;
@@ -266,7 +266,7 @@ TEST(SolidExplicit, MaxwellHeatGoesIntoEosEnergy)
     MaterialParameters p;
     p.name = "viscousWater";
     p.volumetric = "mieGruneisen";
-    p.c0 = 1e5;
+    p.C10 = 1e5;
     p.b1 = 0;
     p.b2 = 0;
     const double c = 1450;

@@ -22,7 +22,7 @@ std::shared_ptr<const Material> cytoplasm()
     MaterialParameters p;
     p.name = "cytoplasm";
     p.volumetric = "mieGruneisen";
-    p.c0 = 1.67;
+    p.C10 = 1.67;
     p.branches = {{107.78, 0.01}};
     return Material::create(p);
 }

@@ -22,7 +22,7 @@ std::shared_ptr<const Material> material()
 {
     const std::map<std::string, std::string> entries
     {
-        {"c0", "100"},      // [Pa]
+        {"C10", "100"},      // [Pa]
         {"d0", "1e-3"},     // [1/Pa]: bulk modulus 2000 Pa
         {"mu1", "50"},      // [Pa]
         {"tau1", "1"}       // [s]

@@ -8,9 +8,13 @@
 #   <case>   averageCell | validationCell
 #   key      an entry of system/cellMeshDict, constant/indenterProperties
 #            or constant/solidProperties (replaced where it is found), or
+#            cellMaterials=<set>: the paper's parameter set included in
+#            materials (table, text, textFactor4, instantaneous:
+#            etc/caseDicts/cellMaterials), or
 #            membraneAs=<region>: the membrane takes that region's paper
-#            material (c0, mu1, tau1) of the chosen parameterSet, or
-#            material.<region>=c0,mu1,tau1: that region's material [Pa, Pa, s]
+#            material (C10, mu1, tau1) of Table 2, or
+#            material.<region>=C10,mu1,tau1: that region's material
+#            [Pa, Pa, s]
 # Prints: name, elements, delta0 [um], F_B [nN], C1,i [nN], CPU time [s].
 # FULL=1 keeps the case's whole protocol (Table 1) and prints the nine
 # peaks and F_E [nN] as well.
@@ -41,12 +45,16 @@ if os.environ.get("FULL") != "1":
       [("A", "load", "0.3e-6", A), ("B", "hold", "0", "15"),
        ("C1", "load", "10e-6", "2e-6"), ("C1", "unload", "10e-6", "2e-6")],
       "constant/indenterProperties")
-PAPER = {"membrane": (166.67, 13.89, 3000), "cytoplasm": (1.67, 107.78, 0.01)}
-def material(region, c0, mu1, tau1):
+from neuronFsi import foamDict
+TABLE2 = foamDict.read(os.path.join(os.environ["PROJECT_DIR"],
+                                    "etc/caseDicts/cellMaterials/table"))
+PAPER = {r: (TABLE2[r]["C10"], TABLE2[r]["mu1"], TABLE2[r]["tau1"])
+         for r in ("membrane", "cytoplasm")}
+def material(region, C10, mu1, tau1):
     """A region's material, last in the materials of solidProperties"""
     t, n = re.subn(r"(\nmaterials\s*\{.*?)(\n\})",
-                   lambda m: m.group(1) + "\n    %s { c0 %r; d0 0; mu1 %r; "
-                   "tau1 %r; }" % (region, c0, mu1, tau1) + m.group(2),
+                   lambda m: m.group(1) + "\n    %s { C10 %r; d0 0; mu1 %r; "
+                   "tau1 %r; }" % (region, C10, mu1, tau1) + m.group(2),
                    text["constant/solidProperties"], count=1, flags=re.S)
     if not n:
         sys.exit("gapStudy: no materials in constant/solidProperties")
@@ -59,8 +67,16 @@ for kv in sys.argv[1:]:
     if k == "membraneAs":
         material("membrane", *PAPER[v])
         continue
+    if k == "cellMaterials":
+        t, n = re.subn(r"cellMaterials/\w+", "cellMaterials/" + v,
+                       text["constant/solidProperties"])
+        if not n:
+            sys.exit("gapStudy: no #include of etc/caseDicts/cellMaterials "
+                     "in constant/solidProperties")
+        text["constant/solidProperties"] = t
+        continue
     for f in files:
-        # solidProperties: also the entries of materials (parameterSet)
+        # solidProperties: also the entries of materials
         indent = "[ \t]*" if f == "constant/solidProperties" else ""
         t, n = re.subn(r"(\n%s%s\s+)[^;]*;" % (indent, re.escape(k)),
                        lambda m: m.group(1) + v + ";", text[f])

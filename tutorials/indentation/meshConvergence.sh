@@ -1,7 +1,9 @@
 #!/bin/bash
 # Mesh convergence of the full protocol on $CASE (averageCell, the
 # default, or validationCell): the cellMesh sizes scaled by each factor
-# given (default 1.4 1 0.7), parameter set $SET (default: the case's).
+# given (default 1.4 1 0.7), the paper's parameter set $SET (table, text,
+# textFactor4, instantaneous: etc/caseDicts/cellMaterials; default: the
+# case's).
 # Prints one row per mesh: elements, delta0 [um], F_B, the nine peaks [nN],
 # F_E, Newton iterations, wall and CPU time [s], peak memory [MB] of
 # cellIndentationFoam. Fails if cellMesh fails (no fallback mesh here).
@@ -29,7 +31,7 @@ open(p, "w").write(t)
 p = "constant/solidProperties"
 t = open(p).read()
 if sys.argv[2]:
-    t = re.sub(r"parameterSet\s+\w+;", "parameterSet %s;" % sys.argv[2], t)
+    t = re.sub(r"cellMaterials/\w+", "cellMaterials/" + sys.argv[2], t)
 open(p, "w").write(t)
 PY
         cellMesh > log.cellMesh 2>&1 || { tail log.cellMesh; exit 1; }

@@ -16,8 +16,8 @@ Description
     file and the entry):
         constant/solidProperties    mesh (gmsh: constant/cell.msh from
                                     cellMesh), fixed components, one
-                                    material per region or parameterSet
-                                    table|text|textFactor4|instantaneous
+                                    material per region (the paper's:
+                                    etc/caseDicts/cellMaterials/<set>)
                                     (Foam::solidInput, shared with
                                     cellBlastFoam)
         constant/indenterProperties sphere, contact, stepping, protocol

@@ -36,7 +36,7 @@ Usage
 
         parameters
         {
-            cytoplasm.c0                  // <region>.<entry>: an entry of
+            cytoplasm.C10                 // <region>.<entry>: an entry of
             {                             // MaterialParameters [SI]
                 value   1.67;             // initial (or fixed) value
                 min     0.05;
@@ -45,7 +45,7 @@ Usage
                 fit     yes;              // no: held at value
                 scales  (cytoplasm.mu1);  // multiplied by value/initial
             }
-            nucleusToCytoplasm            // <a>To<B>: a.c0 = value*b.c0
+            nucleusToCytoplasm            // <a>To<B>: a.C10 = value*b.C10
             { value 8; fit no; }
             delta0                        // first protocol row's depth [m]
             { value 1.41e-6; min 0.5e-6; max 3e-6; log no; }
@@ -78,7 +78,7 @@ from neuronFsi import foamDict  # noqa: E402
 from forwardModel import ForwardModel, ModelError  # noqa: E402
 from targets import Targets, TargetError  # noqa: E402
 
-UNITS = {"c0": "Pa", "d0": "1/Pa", "mu": "Pa", "tau": "s", "eta": "Pa s",
+UNITS = {"C10": "Pa", "d0": "1/Pa", "mu": "Pa", "tau": "s", "eta": "Pa s",
          "delta0": "m"}
 
 
@@ -223,7 +223,7 @@ class Calibration:
                         or parts[1][:1].lower() + parts[1][1:] not in regions:
                     raise InputError(
                         "%s: parameter '%s' is not <region>.<entry>, "
-                        "<region>To<Region> (ratio of c0) or delta0 "
+                        "<region>To<Region> (ratio of C10) or delta0 "
                         "(regions: %s)" % (where, p.name,
                                            ", ".join(regions)))
                 a, b = parts[0], parts[1][:1].lower() + parts[1][1:]
@@ -233,6 +233,11 @@ class Calibration:
                 if region not in regions:
                     raise InputError("%s: '%s': no region '%s' (regions: %s)"
                                      % (where, t, region, ", ".join(regions)))
+                if entry == "c0":
+                    raise InputError(
+                        "%s: '%s': entry 'c0' is now 'C10' (the neo-Hookean "
+                        "C10 = mu0/2, the paper's c_0): %s.C10"
+                        % (where, t, region))
                 if entry not in regions[region]:
                     raise InputError(
                         "%s: '%s': region '%s' has no entry '%s' (entries: "
@@ -240,8 +245,8 @@ class Calibration:
                                  ", ".join(regions[region])))
         direct = {p.name for p in self.params if "." in p.name}
         for name, (a, b) in self.ratios.items():
-            if a + ".c0" in direct:
-                raise InputError("%s: %s and %s.c0 both set %s.c0"
+            if a + ".C10" in direct:
+                raise InputError("%s: %s and %s.C10 both set %s.C10"
                                  % (where, name, a, a))
 
     # -- parameters -> model inputs ----------------------------------------
@@ -262,7 +267,7 @@ class Calibration:
                 region, _, entry = t.partition(".")
                 mats[region][entry] *= v[p.name]/p.initial
         for name, (a, b) in self.ratios.items():
-            mats[a]["c0"] = v[name]*mats[b]["c0"]
+            mats[a]["C10"] = v[name]*mats[b]["C10"]
         return mats
 
     # -- evaluations ----------------------------------------------------------

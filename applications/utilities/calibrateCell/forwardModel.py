@@ -33,8 +33,9 @@ def protocol_text(rows):
 
 def read_materials(path):
     """The materials cellIndentationFoam built, from its materials.dat
-    (region, rho0 [kg/m^3], c0 [Pa], d0 [1/Pa], then muN [Pa] and tauN [s]
-    per Maxwell branch; 17 digits): region -> {c0, d0, mu1, tau1, ...}."""
+    (region, rho0 [kg/m^3], C10 [Pa], d0 [1/Pa], then muN [Pa] and tauN
+    [s] per Maxwell branch; 17 digits): region -> {C10, d0, mu1, tau1,
+    ...}."""
     if not os.path.isfile(path):
         raise ModelError("no %s (the solver writes it at the start)" % path)
     try:
@@ -95,8 +96,8 @@ class ForwardModel:
         open(p, "w").write(text)
 
     def _probe(self):
-        """Region materials as the solver built them (paper set plus the
-        case's sub-dictionaries), every digit: the materials.dat of a run
+        """Region materials as the solver built them (the included paper
+        set merged with the case's sub-dictionaries), every digit: the materials.dat of a run
         of one 10 nm load step."""
         d = os.path.join(self.work, "probe")
         self._make_run_dir(d, self.sp_text, foamDict.set_entry(
@@ -134,7 +135,7 @@ class ForwardModel:
         for region, e in materials.items():
             text = foamDict.set_subdict(
                 text, ["materials", region], e, self.sp_path,
-                {k: ("Pa" if k[0] in "cm" else "1/Pa" if k == "d0" else "s")
+                {k: ("Pa" if k[0] in "Cm" else "1/Pa" if k == "d0" else "s")
                  for k in e})
         return header + text if header else text
 

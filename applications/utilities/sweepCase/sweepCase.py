@@ -17,7 +17,7 @@ Usage
               [-case dir] [-run "<command>"] [-nProcs N] [-name n] [-keep]
 
     -entry   the entry to vary, e.g.
-             constant/solidProperties/materials/nucleus/c0 or
+             constant/solidProperties/materials/nucleus/C10 or
              constant/indenterProperties/maxDepthIncrement; it must exist
     -output  a number of an output file of the run (relative to the case):
                <row>    a label in the first column (endB, C1,i), an index
@@ -30,10 +30,10 @@ Usage
     -run     command run in each copy (default ./Allrun, else the
              controlDict application)
 
-    Example (the paper's three parameter readings, F_B and the CPU time):
+    Example (the load step of the indentation, F_B and the CPU time):
         sweepCase -case tutorials/indentation/averageCell \\
-            -entry constant/solidProperties/materials/parameterSet \\
-            -values "table text instantaneous" -nProcs 2 \\
+            -entry constant/indenterProperties/maxDepthIncrement \\
+            -values "0.2e-6 0.1e-6 0.05e-6" -nProcs 2 \\
             -output "F_B [N]=postProcessing/indentation/peaks.dat:endB:force" \\
             -output "CPU [s]=log.cellIndentationFoam:/CPU time (\\S+) s/"
 

@@ -33,11 +33,11 @@ int main(int argc, char** argv)
     double zTop = 0;
     for (const Vec3& X : model.mesh().X) zTop = std::max(zTop, X(1));
 
-    // Psi = c0 (I1bar - 3) + (J - 1)^2/d0: mu = 2 c0, K = 2/d0, the
-    // CalculiX *HYPERELASTIC, NEO HOOKE form with C10 = c0, D1 = d0
+    // Psi = C10 (I1bar - 3) + (J - 1)^2/d0: mu = 2 C10, K = 2/d0, the
+    // CalculiX *HYPERELASTIC, NEO HOOKE form with the same C10, D1 = d0
     MaterialParameters p;
     p.name = "solid";
-    p.c0 = mu/2;
+    p.C10 = mu/2;
     p.d0 = 2/K;
     model.setMaterial("solid", Material::create(p));
     model.fix("bottom", 0);

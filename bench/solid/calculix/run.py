@@ -247,7 +247,7 @@ def report(rows, cax4, ref, FH, F0, slope, size, repeats, start):
       f"um (bottom bonded, side free, frictionless contact), mu = {MU:.0f} "
       f"Pa, K = {K/MU:.0e} mu = {K:.0e} Pa (nearly incompressible: "
       "CalculiX has no exactly incompressible element, so both codes use "
-      "the same finite K; strain energy c0 (I1bar - 3) + (J - 1)^2/d0, "
+      "the same finite K; strain energy C10 (I1bar - 3) + (J - 1)^2/d0, "
       f"CalculiX NEO HOOKE C10 = {MU/2:.0f} Pa, D1 = {2/K:.0e} 1/Pa). "
       "Mesh n x n graded quads, the same nodes in both codes "
       "(bench/solid/calculix/hertzMesh.py).")

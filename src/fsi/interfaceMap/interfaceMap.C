@@ -855,11 +855,20 @@ Foam::interfaceMap::interfaceMap
         quadStencil_ = projectAll(xs, pts, tol, "face points");
     }
 
-    load_ = dict.getOrDefault<word>("load", "projection");
-    if (load_ != "projection" && load_ != "pressure")
+    load_ = dict.getOrDefault<word>("load", "mappedForces");
+    if (load_ == "projection")
+    {
+        // Renamed: 'projection' is also a map, which it is not
+        FatalIOErrorInFunction(dict)
+            << "load projection is now 'load mappedForces' (the fluid's "
+            << "face forces through the transpose of the map: conservative "
+            << "nodal forces); the other load is pressure"
+            << exit(FatalIOError);
+    }
+    if (load_ != "mappedForces" && load_ != "pressure")
     {
         FatalIOErrorInFunction(dict)
-            << "load " << load_ << " is not valid: projection (the map's "
+            << "load " << load_ << " is not valid: mappedForces (the map's "
             << "conservative nodal forces) or pressure (the fluid pressure "
             << "on the solid's faces)" << exit(FatalIOError);
     }

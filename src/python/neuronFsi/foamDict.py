@@ -7,7 +7,9 @@ nested sub-dictionaries, entries `key value...;`, lists `( ... )`, quoted
 strings, // and /* */ comments, and #include "file", #sinclude "file" (or
 #includeIfPresent) merged as OpenFOAM does (a later entry replaces an
 earlier one, sub-dictionaries are merged) when the text is read from a file
-by read(). No $variables, no other directives.
+by read(); environment variables in an included file's name are expanded
+(e.g. "$PROJECT_DIR/etc/caseDicts/cellMaterials/table"). No $variables in
+entries, no other directives.
 """
 
 import os
@@ -108,7 +110,7 @@ def parse(text, name="<text>", base=None):
             err("%s needs a quoted file name" % key, i[0] - 1)
         if base is None:
             err("%s in a text that is not a file" % key, i[0] - 1)
-        path = os.path.join(base, toks[i[0]][0][1:-1])
+        path = os.path.join(base, os.path.expandvars(toks[i[0]][0][1:-1]))
         i[0] += 1
         if not os.path.exists(path):
             if key == "#include":
@@ -134,7 +136,7 @@ def parse(text, name="<text>", base=None):
             key = _value(key) if key.startswith('"') else key
             if i[0] < len(toks) and toks[i[0]][0] == "{":
                 i[0] += 1
-                d[key] = parse_dict(True)
+                _merge(d, {key: parse_dict(True)})
                 continue
             vals = []
             while True:
@@ -167,7 +169,7 @@ def read(path):
 
 
 def set_entry(text, path, value, name="<text>"):
-    """Text with entry `path` (keys from the top, e.g. ['nucleus', 'c0'])
+    """Text with entry `path` (keys from the top, e.g. ['nucleus', 'C10'])
     set to `value` (the text between the keyword and ';'). An existing entry
     is replaced; a missing one is added at the end of its sub-dictionary,
     which must exist."""

@@ -195,9 +195,9 @@ def header(case, log):
 
 def materials(path):
     """The materials a solver built, from its materials.dat (a row per
-    region: region, rho0 [kg/m^3], c0 [Pa], d0 [1/Pa], then muN [Pa] and
+    region: region, rho0 [kg/m^3], C10 [Pa], d0 [1/Pa], then muN [Pa] and
     tauN [s] per Maxwell branch, as many as the region has; 17 digits):
-    region -> {c0, d0, mu1, tau1, ...}."""
+    region -> {C10, d0, mu1, tau1, ...}."""
     lines = _lines(path)
     mats = {}
     for line in lines:
@@ -207,7 +207,7 @@ def materials(path):
         if len(s) < 4 or len(s) % 2:
             raise ColumnFileError("%s: malformed line '%s'"
                                   % (path, line.strip()))
-        e = {"c0": float(s[2]), "d0": float(s[3])}
+        e = {"C10": float(s[2]), "d0": float(s[3])}
         for n in range(1, (len(s) - 4)//2 + 1):
             e["mu%d" % n] = float(s[2 + 2*n])
             e["tau%d" % n] = float(s[3 + 2*n])

@@ -21,7 +21,7 @@ solid::MaterialParameters solid::MaterialParameters::fromEntries
     std::map<int, double> mu, tau, eta;
     const std::map<std::string, double*> scalars =
     {
-        {"rho0", &par.rho0}, {"c0", &par.c0}, {"d0", &par.d0},
+        {"rho0", &par.rho0}, {"C10", &par.C10}, {"d0", &par.d0},
         {"C0", &par.eos.C0}, {"s", &par.eos.s}, {"Gamma0", &par.eos.Gamma0},
         {"Cv", &par.eos.Cv}, {"T0", &par.eos.T0}, {"b1", &par.b1},
         {"b2", &par.b2}
@@ -32,6 +32,17 @@ solid::MaterialParameters solid::MaterialParameters::fromEntries
         {
             par.volumetric = entries.word(key);
             continue;
+        }
+        if (key == "c0")
+        {
+            // Renamed: c0 beside the Mie-Grueneisen C0 read as one name
+            throw SolidError
+            (
+                SolidError::Kind::parameter,
+                ctx + ": entry 'c0' is now 'C10' (the neo-Hookean "
+                "coefficient C10 = mu0/2, the paper's c_0; C0 is the "
+                "Mie-Grueneisen sound speed)"
+            );
         }
         const auto it = scalars.find(key);
         if (it != scalars.end())
@@ -170,14 +181,14 @@ std::unique_ptr<solid::Material> solid::Material::create
     const double inf = std::numeric_limits<double>::infinity();
     checkParameter(ctx, "rho0", par.rho0, 0, inf, "kg/m^3");
 
-    std::unique_ptr<IsochoricModel> iso(new NeoHookean(par.c0, ctx));
+    std::unique_ptr<IsochoricModel> iso(new NeoHookean(par.C10, ctx));
     if (!par.branches.empty())
     {
         iso.reset(new Viscoelastic(std::move(iso), par.branches, ctx));
     }
 
     std::unique_ptr<VolumetricLaw> vol;
-    if (par.volumetric == "neoHookean")
+    if (par.volumetric == "quadratic")
     {
         checkParameter(ctx, "d0", par.d0, 0, inf, "1/Pa", true);
         if (par.d0 == 0)
@@ -195,13 +206,24 @@ std::unique_ptr<solid::Material> solid::Material::create
         e.rho0 = par.rho0;
         vol.reset(new MieGruneisenVolumetric(e, par.b1, par.b2, ctx));
     }
+    else if (par.volumetric == "neoHookean")
+    {
+        // Renamed: the law is the paper's quadratic (J-1)^2/d0, not
+        // neo-Hookean
+        throw SolidError
+        (
+            SolidError::Kind::parameter,
+            ctx + ": volumetric law 'neoHookean' is now 'quadratic' "
+            "(Psi_vol = (J - 1)^2/d0, paper eq. 2; d0 = 0: incompressible)"
+        );
+    }
     else
     {
         throw SolidError
         (
             SolidError::Kind::parameter,
             ctx + ": unknown volumetric law '" + par.volumetric
-          + "'; valid: neoHookean mieGruneisen"
+          + "'; valid: quadratic mieGruneisen"
         );
     }
     return std::unique_ptr<Material>
@@ -210,50 +232,3 @@ std::unique_ptr<solid::Material> solid::Material::create
     );
 }
 
-
-std::vector<solid::MaterialParameters> solid::paperParameterSet
-(
-    const std::string& reading
-)
-{
-    if
-    (
-        reading != "table" && reading != "text" && reading != "textFactor4"
-     && reading != "instantaneous"
-    )
-    {
-        throw SolidError
-        (
-            SolidError::Kind::parameter,
-            "paperParameterSet: unknown reading '" + reading
-          + "'; valid: table text textFactor4 instantaneous"
-        );
-    }
-    MaterialParameters mem, cyto, nuc;
-    mem.name = "membrane";
-    mem.c0 = 166.67;
-    mem.branches = {{13.89, 3000.0}};
-    cyto.name = "cytoplasm";
-    cyto.c0 = 1.67;
-    cyto.branches = {{107.78, 0.01}};
-    nuc.name = "nucleus";
-    nuc.c0 = reading == "table" ? 13.33 : 6.67;
-    nuc.branches = {{862.22, 0.5}};
-    if (reading == "textFactor4")
-    {
-        // Sec. 3.2: the factor 4 between nucleus and cytoplasm "is also
-        // valid for" mu1 (Table 2 has 862.22/107.78 = 8)
-        nuc.branches = {{4*107.78, 0.5}};
-    }
-    if (reading == "instantaneous")
-    {
-        for (MaterialParameters* m : {&mem, &cyto, &nuc})
-        {
-            const double G0 = 2*m->c0;
-            const double g1 = m->branches[0].mu/(G0 + m->branches[0].mu);
-            m->c0 *= 1 - g1;
-            m->branches[0].mu = G0*g1;
-        }
-    }
-    return {mem, cyto, nuc};
-}

@@ -4,13 +4,13 @@
 #include <cmath>
 #include <limits>
 
-solid::NeoHookean::NeoHookean(double c0, const std::string& context)
+solid::NeoHookean::NeoHookean(double C10, const std::string& context)
 :
-    c0_(c0)
+    C10_(C10)
 {
     checkParameter
     (
-        context, "c0", c0, 0, std::numeric_limits<double>::infinity(), "Pa",
+        context, "C10", C10, 0, std::numeric_limits<double>::infinity(), "Pa",
         true
     );
 }
@@ -31,9 +31,9 @@ void solid::NeoHookean::evaluate
     const Mat3 Ci = C.inverse();
     const Mat3 I = Mat3::Identity();
     const double I1 = C.trace();
-    const double mu = 2*c0_;
+    const double mu = 2*C10_;
 
-    r.psi = c0_*(Jm23*I1 - 3.0);
+    r.psi = C10_*(Jm23*I1 - 3.0);
     r.S = mu*Jm23*(I - I1/3.0*Ci);
     r.CC = mu*Jm23*
     (
@@ -55,6 +55,6 @@ void solid::NeoHookean::stress
 {
     const double Jm23 = std::cbrt(1.0/C.determinant());
     const double I1 = C.trace();
-    r.psi = c0_*(Jm23*I1 - 3.0);
-    r.S = 2*c0_*Jm23*(Mat3::Identity() - I1/3.0*C.inverse());
+    r.psi = C10_*(Jm23*I1 - 3.0);
+    r.S = 2*C10_*Jm23*(Mat3::Identity() - I1/3.0*C.inverse());
 }

@@ -22,7 +22,7 @@ solid::Viscoelastic::Viscoelastic
         (
             SolidError::Kind::parameter,
             context + ": Maxwell branches scale the equilibrium energy and "
-            "need c0 > 0 (entry 'c0')"
+            "need C10 > 0 (entry 'C10')"
         );
     }
     for (std::size_t a = 0; a < branches_.size(); ++a)
