@@ -83,21 +83,21 @@ expect nucleusOutside 's/^nucleusVolumeFraction .*/nucleusVolumeFraction 0.7;/' 
 expect membraneThickerThanCell 's/^membraneThickness .*/membraneThickness 8e-6;/' \
     "membraneThickness = 8e-06 m is outside the valid range"
 expect zeroSize 's/^cytoplasmSize .*/cytoplasmSize 0;/' \
-    "cytoplasmSize = 0 m is outside the valid range"
+    "cytoplasmSize' = 0 m is outside the valid range"
 expect negativeHeight 's/^cellHeight .*/cellHeight -7.9e-6;/' \
-    "cellHeight = -7.9e-06 m is outside the valid range"
+    "cellHeight' = -7.9e-06 m is outside the valid range"
 expect micrometres 's/^cellDiameter .*/cellDiameter 16.8;/' \
-    "cellDiameter = 16.8 m is outside the valid range \(0, 0.001\]"
+    "cellDiameter' = 16.8 m is outside the valid range \(0, 0.001\]"
 expect zeroLayers 's/^membraneLayers .*/membraneLayers 0;/' \
-    "membraneLayers = 0 is outside the valid range \[1, 20\]"
+    "membraneLayers' = 0 is outside the valid range \[1, 20\]"
 expect contactRadiusTooLarge 's/^contactRadius .*/contactRadius 9e-6;/' \
-    "contactRadius = 9e-06 m is outside the valid range"
+    "contactRadius' = 9e-06 m is outside the valid range"
 expect unknownMode 's/^mode .*/mode wedge;/' "wedge" "axisymmetric" "full3D" "quarter3D"
 expect missingEntry '/^nucleusSize/d' "nucleusSize"
 expect boxSmallerThanCell 's/^boxSize .*/boxSize 10e-6;/' \
-    "boxSize = 1e-05 m is outside the valid range"
+    "boxSize' = 1e-05 m is outside the valid range"
 expect farFinerThanNear 's/^farSize .*/farSize 1e-6;/' \
-    "farSize = 1e-06 m is outside the valid range \[2e-06"
+    "farSize' = 1e-06 m is outside the valid range \[2e-06"
 expect unknownNucleusShape 's/^mode .*/mode axisymmetric; nucleusShape cube;/' \
     "cube" "centredSpheroid" "scaledCell"
 expect scaledNucleus3D 's/^mode .*/mode full3D; nucleusShape scaledCell;/' \
@@ -107,13 +107,13 @@ expect missingNearSize '/^nearSize/d' "nearSize"
 # (0, L/2], both or neither)
 q3='s/^mode .*/mode quarter3D;/; s/^nucleusSize .*/nucleusSize 1.4e-6;/; s/^cytoplasmSize .*/cytoplasmSize 1.4e-6;/; s/^membraneSize .*/membraneSize 1e-6;/'
 expect columnSizeNegative "$q3; s/^growthDistance .*/growthDistance 30e-6; columnSize -1e-6; columnRadius 12e-6;/" \
-    "columnSize = -1e-06 m is outside the valid range \(0, 2e-05\]"
+    "columnSize' = -1e-06 m is outside the valid range \(0, 2e-05\]"
 expect columnCoarserThanFar "$q3; s/^growthDistance .*/growthDistance 30e-6; columnSize 25e-6; columnRadius 12e-6;/" \
-    "columnSize = 2.5e-05 m is outside the valid range \(0, 2e-05\]"
+    "columnSize' = 2.5e-05 m is outside the valid range \(0, 2e-05\]"
 expect columnRadiusOutside "$q3; s/^growthDistance .*/growthDistance 30e-6; columnSize 1e-6; columnRadius 60e-6;/" \
-    "columnRadius = 6e-05 m is outside the valid range \(0, 5e-05\]"
+    "columnRadius' = 6e-05 m is outside the valid range \(0, 5e-05\]"
 expect columnRadiusZero "$q3; s/^growthDistance .*/growthDistance 30e-6; columnSize 1e-6; columnRadius 0;/" \
-    "columnRadius = 0 m is outside the valid range \(0, 5e-05\]"
+    "columnRadius' = 0 m is outside the valid range \(0, 5e-05\]"
 expect columnRadiusMissing "$q3; s/^growthDistance .*/growthDistance 30e-6; columnSize 1e-6;/" \
     "columnRadius is missing"
 expect columnSizeMissing "$q3; s/^growthDistance .*/growthDistance 30e-6; columnRadius 12e-6;/" \
@@ -122,7 +122,7 @@ expect columnAxisymmetric 's/^growthDistance .*/growthDistance 30e-6; columnSize
     "columnSize is available in the 3D modes \(quarter3D, full3D\) only"
 # The azimuthal size (3D only, (0, H])
 expect azimuthZero "$q3; s/^contactRadius .*/contactRadius 5e-6; azimuthSize 0;/" \
-    "azimuthSize = 0 m is outside the valid range \(0, 7.9e-06\]"
+    "azimuthSize' = 0 m is outside the valid range \(0, 7.9e-06\]"
 expect azimuthAxisymmetric 's/^contactRadius .*/contactRadius 5e-6; azimuthSize 2e-6;/' \
     "azimuthSize is available in the 3D modes \(quarter3D, full3D\) only"
 

@@ -455,19 +455,25 @@ TEST(couplingScheme, badDictionariesNameTheEntry)
             "scheme secant;",
             {"secant", "IQNILS", "aitken", "explicitStaggered", "robin"}
         },
-        {"scheme aitken; tolerance -1e-6;", {"tolerance = -1e-06", "(0, inf)"}},
-        {"scheme robin; velocityScale 0;", {"velocityScale = 0", "(0, inf)"}},
-        {"scheme robin; maxIter 0;", {"maxIter = 0", "[1, inf)"}},
+        {
+            "scheme aitken; tolerance -1e-6;",
+            {"entry 'tolerance' = -1e-06", "(0, inf)"}
+        },
+        {
+            "scheme robin; velocityScale 0;",
+            {"entry 'velocityScale' = 0 m/s", "(0, inf)"}
+        },
+        {"scheme robin; maxIter 0;", {"entry 'maxIter' = 0", "[1, inf)"}},
         {"scheme robin; onNonConvergence maybe;", {"maybe", "(warn stop)"}},
         {
             "scheme aitken; initialRelaxation 1.5;",
-            {"initialRelaxation = 1.5", "(0, 1]"}
+            {"entry 'initialRelaxation' = 1.5", "(0, 1]"}
         },
         {
             "scheme IQNILS; initialRelaxation 0;",
-            {"initialRelaxation = 0", "(0, 1]"}
+            {"entry 'initialRelaxation' = 0", "(0, 1]"}
         },
-        {"scheme IQNILS; reuse -1;", {"reuse = -1", "[0, inf)"}}
+        {"scheme IQNILS; reuse -1;", {"entry 'reuse' = -1", "[0, inf)"}}
     };
     for (const badCase& c : cases)
     {

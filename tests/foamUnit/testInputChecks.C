@@ -2,16 +2,23 @@
 Description
     Unit tests of the start-up checks of src/foamTools/inputChecks.H: an
     inverted mesh and non-positive time controls are errors naming the
-    cell or the entry with its valid range.
+    cell or the entry with its valid range; the one reader of bounded
+    numbers (readInRange) takes every digit, honours open and closed
+    bounds, and names the file, the entry, the value and the range of a
+    missing entry, a word, list or sub-dictionary, a real for an integer
+    or a value outside its range.
 
 \*---------------------------------------------------------------------------*/
 
 #include "inputChecks.H"
 #include "foamTestCase.H"
+#include "IStringStream.H"
 
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace Foam;
 
@@ -100,4 +107,143 @@ TEST(inputChecks, timeControls)
                 << err.message();
         }
     }
+}
+
+
+namespace
+{
+
+//- A dictionary named like a case file, from text
+dictionary dict(const std::string& text)
+{
+    IStringStream is(text);
+    dictionary d(is);
+    d.name() = "system/testDict";
+    return d;
+}
+
+//- The message of the FatalIOError of f; fails if there is none or if it
+//  does not name the file
+template<class F>
+std::string ioError(const F& f)
+{
+    try
+    {
+        f();
+    }
+    catch (const Foam::IOerror& err)
+    {
+        EXPECT_EQ(err.ioFileName(), "system/testDict");
+        return err.message();
+    }
+    ADD_FAILURE() << "no FatalIOError";
+    return std::string();
+}
+
+} // End anonymous namespace
+
+
+TEST(inputChecks, readInRangeBounds)
+{
+    using foamTools::readInRange;
+    const dictionary d(dict("a 0; b 1; c 0.30000000000000004; n 3;"));
+    // Open lower bound excludes lo, a closed one includes it; hi included
+    EXPECT_EQ(readInRange<scalar>(d, "a", "m", 0, 1, true), 0);
+    EXPECT_EQ(readInRange<scalar>(d, "b", "m", 0, 1, false), 1);
+    // The number as written, every digit
+    EXPECT_EQ(readInRange<scalar>(d, "c", "m", 0, 1, false),
+        0.30000000000000004);
+    EXPECT_EQ(readInRange<label>(d, "n", "", 1, 20, true), 3);
+
+    const std::string lo = ioError
+    (
+        [&]() { readInRange<scalar>(d, "a", "m", 0, 1, false); }
+    );
+    EXPECT_NE(lo.find("entry 'a' = 0 m is outside the valid range (0, 1] m"),
+        std::string::npos) << lo;
+    const std::string hi = ioError
+    (
+        [&]() { readInRange<scalar>(d, "b", "s", 0, 0.5, true); }
+    );
+    EXPECT_NE(hi.find("entry 'b' = 1 s is outside the valid range [0, 0.5]"
+        " s"), std::string::npos) << hi;
+    const std::string n = ioError
+    (
+        [&]() { readInRange<label>(d, "n", "", 4, 20, true); }
+    );
+    EXPECT_NE(n.find("entry 'n' = 3 is outside the valid range [4, 20]"),
+        std::string::npos) << n;
+    // No upper bound
+    const std::string inf = ioError
+    (
+        [&]()
+        {
+            readInRange<label>
+            (
+                d, "a", "", 1, foamTools::noUpperBound<label>(), true
+            );
+        }
+    );
+    EXPECT_NE(inf.find("'a' = 0 is outside the valid range [1, inf)"),
+        std::string::npos) << inf;
+    EXPECT_EQ
+    (
+        readInRange<scalar>
+        (
+            d, "b", "m", 0, foamTools::noUpperBound<scalar>(), false
+        ),
+        1
+    );
+}
+
+
+TEST(inputChecks, readInRangeBadEntries)
+{
+    using foamTools::readInRange;
+    const dictionary d
+    (
+        dict("w big; two 1 2; sub { x 1; } list (1); real 2.5;")
+    );
+    const std::vector<std::pair<std::string, std::string>> scalars
+    {
+        {"missing", "missing entry 'missing' [m]"},
+        {"w", "entry 'w' = 'big' is not a number [m]"},
+        {"two", "entry 'two' = '1 2' is not a number [m]"},
+        {"sub", "entry 'sub' is a sub-dictionary, not a number [m]"},
+        {"list", "entry 'list' = '( 1 )' is not a number [m]"}
+    };
+    for (const auto& c : scalars)
+    {
+        const std::string msg = ioError
+        (
+            [&]() { readInRange<scalar>(d, c.first, "m", 0, 10, false); }
+        );
+        EXPECT_NE(msg.find(c.second), std::string::npos)
+            << c.first << ": " << msg;
+    }
+    // A label is an integer: 2.5 is not silently cut to 2
+    const std::string real = ioError
+    (
+        [&]() { readInRange<label>(d, "real", "steps", 0, 10, true); }
+    );
+    EXPECT_NE(real.find("entry 'real' = '2.5' is not an integer [steps]"),
+        std::string::npos) << real;
+}
+
+
+TEST(inputChecks, readInRangeOrDefault)
+{
+    using foamTools::readInRangeOrDefault;
+    const dictionary d(dict("g 20;"));
+    // Missing: the default; present: read and checked
+    EXPECT_EQ(readInRangeOrDefault<scalar>(d, "f", "", 1, 10, true, 1.5),
+        1.5);
+    EXPECT_EQ(readInRangeOrDefault<scalar>(d, "g", "", 1, 100, true, 1.5),
+        20);
+    const std::string msg = ioError
+    (
+        [&]() { readInRangeOrDefault<scalar>(d, "g", "", 1, 10, true, 1.5); }
+    );
+    EXPECT_NE(msg.find("entry 'g' = 20 is outside the valid range [1, 10]"),
+        std::string::npos) << msg;
 }

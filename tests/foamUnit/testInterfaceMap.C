@@ -526,7 +526,8 @@ TEST(interfaceMap, badDictionariesNameTheEntry)
             badCase{"solidFaceSet", "nowhere", {"nowhere", "xmin", "zmax"}},
             badCase
             {
-                "mapTolerance", "-0.1", {"mapTolerance = -0.1", "(0, inf)"}
+                "mapTolerance", "-0.1",
+                {"entry 'mapTolerance' = -0.1", "(0, inf)"}
             },
             badCase{"map", "nearest", {"map nearest is not valid"}},
             badCase{"load", "traction", {"load traction is not valid"}},

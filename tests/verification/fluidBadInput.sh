@@ -55,9 +55,9 @@ expect wrongDimensions setRiemannProblem "[Dd]imensions" "C0"
 fresh; sed -i 's/^    Gamma0 .*/    Gamma0  5;/' "$work/case/$tp"
 expect gammaAbove2s setRiemannProblem "Gamma0"
 fresh; sed -i '0,/^    rho .*/s//    rho     -1;/' "$work/case/system/riemannProblemDict"
-expect negativeDensity setRiemannProblem "rho = -1 kg/m\^3 is outside the valid range"
+expect negativeDensity setRiemannProblem "entry 'rho' = -1 kg/m\^3 is outside the valid range"
 fresh; sed -i 's/^endTime .*/endTime     0;/' "$work/case/system/riemannProblemDict"
-expect zeroEndTime setRiemannProblem "endTime = 0 s is outside the valid range" riemannProblemDict
+expect zeroEndTime setRiemannProblem "entry 'endTime' = 0 s is outside the valid range" riemannProblemDict
 fresh; (cd "$work/case" && setRiemannProblem > /dev/null); sed -i 's/riemannSolver .*/riemannSolver   Roe;/' "$work/case/system/fvSolution"
 expect unknownRiemannSolver rhoRiemannFoam "Unknown riemannSolver type Roe" "HLL HLLC rusanov"
 fresh; (cd "$work/case" && setRiemannProblem > /dev/null); sed -i 's/timeScheme .*/timeScheme      RK4;/' "$work/case/system/fvSolution"

@@ -5,34 +5,19 @@ Application
 Description
     Quasi-static nanoindentation of the axisymmetric (or 3D) cell by a
     rigid sphere through a multi-rate loading table (Jerusalem & Dao 2012,
-    sec. 2.2.1 and 3; Table 1). Solid only: the solid library (src/solid)
-    with incompressible visco-hyperelastic regions (Q1/P0, mixed u-p), a
-    frictionless augmented-Lagrangian sphere contact, driven through the
-    table by solid::IndentationDriver (backward-Euler Newton steps sized
-    by the loading rate, geometrically growing steps in holds, optionally
-    a force-controlled first row, checkpoints).
-
-    Inputs (every entry validated; a bad one is a FatalIOError naming the
-    file and the entry):
-        constant/solidProperties    mesh (gmsh: constant/cell.msh from
-                                    cellMesh), fixed components, one
-                                    material per region (the paper's:
-                                    etc/caseDicts/cellMaterials/<set>)
-                                    (Foam::solidInput, shared with
-                                    cellBlastFoam)
-        constant/indenterProperties sphere, contact, stepping, protocol
-        system/controlDict          fieldWriteInterval [s] of the field
-                                    output, checkpointInterval [steps];
-                                    startFrom latestTime continues from
-                                    the last checkpoint
+    sec. 2.2.1 and 3; Table 1). Solid only: the cell of
+    constant/solidProperties (Foam::solidInput; the paper's materials:
+    etc/caseDicts/cellMaterials/<set>), the sphere, its loading
+    table and stepping of constant/indenterProperties and the output
+    entries of system/controlDict (Foam::indentationInput: entries, ranges,
+    restart), driven by solid::IndentationDriver.
 
     Outputs (postProcessing/indentation/):
         force.dat   time [s], depth [m], force [N], contact radius [m],
                     max penetration [m], stage (header line)
         peaks.dat   the cycle maxima and F at the end of B and E
-        solid.h5/.xmf   fields (pressure, von Mises, ...) at the peaks, at
-                    the stage ends B and E and every fieldWriteInterval;
-                    ParaView opens solid.xmf
+        solid.h5/.xmf   fields at the peaks, the stage ends B and E and
+                    every fieldWriteInterval; ParaView opens solid.xmf
         materials.dat   the material of every region as built (17 digits)
         restart.h5  the last checkpoint
 
@@ -45,20 +30,15 @@ Usage
 #include "Time.H"
 #include "IOdictionary.H"
 
+#include "indentationInput.H"
 #include "solidInput.H"
 
-#include "Checkpoint.H"
-#include "IndentationDriver.H"
 #include "SolidError.H"
 
 #include <chrono>
 #include <ctime>
-#include <iostream>
-#include <memory>
 
 using namespace Foam;
-
-#include "readInputs.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -72,10 +52,7 @@ int main(int argc, char *argv[])
     argList::noParallel();
     #include "setRootCase.H"
     #include "createTime.H"
-
-    #include "createModel.H"
-    #include "createIndenter.H"
-    #include "createDriver.H"
+    #include "createFields.H"
 
     // Wall and CPU time: on a shared machine the CPU time of this process
     // is the one-core cost

@@ -1,6 +1,7 @@
 #include "cellGeometry.H"
 #include "IFstream.H"
 #include "mathematicalConstants.H"
+#include "inputChecks.H"
 
 using Foam::constant::mathematical::pi;
 
@@ -19,32 +20,6 @@ Foam::cellGeometry::nucleusShapeNames
     { nucleusShape::centredSpheroid, "centredSpheroid" },
     { nucleusShape::scaledCell, "scaledCell" },
 });
-
-
-Foam::scalar Foam::cellGeometry::readInRange
-(
-    const dictionary& dict,
-    const word& key,
-    const char* unit,
-    scalar lo,
-    scalar hi,
-    bool closedLo,
-    bool hasDefault,
-    scalar deflt
-)
-{
-    const scalar v =
-        hasDefault ? dict.getOrDefault<scalar>(key, deflt)
-                   : dict.get<scalar>(key);
-    if (!((closedLo ? v >= lo : v > lo) && v <= hi))
-    {
-        FatalIOErrorInFunction(dict)
-            << key << " = " << v << " " << unit
-            << " is outside the valid range " << (closedLo ? "[" : "(")
-            << lo << ", " << hi << "] " << unit << exit(FatalIOError);
-    }
-    return v;
-}
 
 
 Foam::cellGeometry::cellGeometry(const fileName& dictFile)
@@ -79,12 +54,17 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
 
     // Upper bound 1 mm: a larger cell is a length given in um, not m
     const scalar maxLength = 1e-3;
-    a_ = 0.5*readInRange(dict, "cellDiameter", "m", 0, maxLength, false);
-    H_ = readInRange(dict, "cellHeight", "m", 0, maxLength, false);
-    f_ = readInRange
+    a_ = 0.5*foamTools::readInRange<scalar>
     (
-        dict, "nucleusVolumeFraction", "(-)", 0, 1 - SMALL, false, true,
-        1.0/3.0
+        dict, "cellDiameter", "m", 0, maxLength, false
+    );
+    H_ = foamTools::readInRange<scalar>
+    (
+        dict, "cellHeight", "m", 0, maxLength, false
+    );
+    f_ = foamTools::readInRangeOrDefault<scalar>
+    (
+        dict, "nucleusVolumeFraction", "(-)", 0, 1 - SMALL, false, 1.0/3.0
     );
 
     // The inner parallel surface exists below the smallest radius of
@@ -102,17 +82,23 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
             << 2*a_ << " m)" << exit(FatalIOError);
     }
 
-    layers_ = dict.getOrDefault<label>("membraneLayers", 2);
-    if (layers_ < 1 || layers_ > 20)
-    {
-        FatalIOErrorInFunction(dict)
-            << "membraneLayers = " << layers_ << " is outside the valid "
-            << "range [1, 20]" << exit(FatalIOError);
-    }
+    layers_ = foamTools::readInRangeOrDefault<label>
+    (
+        dict, "membraneLayers", "", 1, 20, true, 2
+    );
 
-    nucleusSize_ = readInRange(dict, "nucleusSize", "m", 0, H_, false);
-    cytoplasmSize_ = readInRange(dict, "cytoplasmSize", "m", 0, H_, false);
-    membraneSize_ = readInRange(dict, "membraneSize", "m", 0, H_, false);
+    nucleusSize_ = foamTools::readInRange<scalar>
+    (
+        dict, "nucleusSize", "m", 0, H_, false
+    );
+    cytoplasmSize_ = foamTools::readInRange<scalar>
+    (
+        dict, "cytoplasmSize", "m", 0, H_, false
+    );
+    membraneSize_ = foamTools::readInRange<scalar>
+    (
+        dict, "membraneSize", "m", 0, H_, false
+    );
     azimuthSize_ = min(cytoplasmSize_, membraneSize_);
     if (dict.found("azimuthSize"))
     {
@@ -123,16 +109,27 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
                 << "full3D) only: the axisymmetric mesh has no azimuth"
                 << exit(FatalIOError);
         }
-        azimuthSize_ = readInRange(dict, "azimuthSize", "m", 0, H_, false);
+        azimuthSize_ = foamTools::readInRange<scalar>
+        (
+            dict, "azimuthSize", "m", 0, H_, false
+        );
     }
-    contactRadius_ =
-        readInRange(dict, "contactRadius", "m", 0, a_, true);
+    contactRadius_ = foamTools::readInRange<scalar>
+    (
+        dict, "contactRadius", "m", 0, a_, true
+    );
     contactSize_ = cytoplasmSize_;
     contactDepth_ = H_;
     if (contactRadius_ > 0)
     {
-        contactSize_ = readInRange(dict, "contactSize", "m", 0, H_, false);
-        contactDepth_ = readInRange(dict, "contactDepth", "m", 0, H_, false);
+        contactSize_ = foamTools::readInRange<scalar>
+        (
+            dict, "contactSize", "m", 0, H_, false
+        );
+        contactDepth_ = foamTools::readInRange<scalar>
+        (
+            dict, "contactDepth", "m", 0, H_, false
+        );
     }
 
     gap_ = nucleusGap();

@@ -1,4 +1,5 @@
 #include "fluidBox.H"
+#include "inputChecks.H"
 #include "mathematicalConstants.H"
 #include "OSspecific.H"
 #include "vector.H"
@@ -14,19 +15,25 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
     g_(geom)
 {
     const dictionary& d = g_.fluidDict();
-    L_ = cellGeometry::readInRange
+    L_ = foamTools::readInRangeOrDefault<scalar>
     (
-        d, "boxSize", "m", max(2*g_.a(), g_.H()), 1e-2, false, true, 1e-4
+        d, "boxSize", "m", max(2*g_.a(), g_.H()), 1e-2, false, 1e-4
     );
-    nearSize_ = cellGeometry::readInRange(d, "nearSize", "m", 0, g_.H(), false);
-    farSize_ = cellGeometry::readInRange
+    nearSize_ = foamTools::readInRange<scalar>
+    (
+        d, "nearSize", "m", 0, g_.H(), false
+    );
+    farSize_ = foamTools::readInRange<scalar>
     (
         d, "farSize", "m", nearSize_, 0.25*L_, true
     );
-    growth_ = cellGeometry::readInRange(d, "growthDistance", "m", 0, L_, false);
-    wedge_ = cellGeometry::readInRange
+    growth_ = foamTools::readInRange<scalar>
     (
-        d, "wedgeAngle", "deg", 0, 10, false, true, 5
+        d, "growthDistance", "m", 0, L_, false
+    );
+    wedge_ = foamTools::readInRangeOrDefault<scalar>
+    (
+        d, "wedgeAngle", "deg", 0, 10, false, 5
     )*pi/180;
 
     // Optional column: both entries or neither
@@ -52,11 +59,11 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
                 << "refined column together (give both, or neither for no "
                 << "column)" << exit(FatalIOError);
         }
-        columnSize_ = cellGeometry::readInRange
+        columnSize_ = foamTools::readInRange<scalar>
         (
             d, "columnSize", "m", 0, farSize_, false
         );
-        columnRadius_ = cellGeometry::readInRange
+        columnRadius_ = foamTools::readInRange<scalar>
         (
             d, "columnRadius", "m", 0, 0.5*L_, false
         );

@@ -1,4 +1,5 @@
 #include "interfaceMap.H"
+#include "inputChecks.H"
 #include "mathematicalConstants.H"
 #include "unitConversion.H"
 #include "SubField.H"
@@ -732,13 +733,11 @@ Foam::interfaceMap::interfaceMap
             << "solidFaceSet " << setName << " is not a face set of the"
             << " solid mesh; face sets: " << names << exit(FatalIOError);
     }
-    const scalar tol = dict.getOrDefault<scalar>("mapTolerance", 0.1);
-    if (tol <= 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "mapTolerance = " << tol << " is outside the valid range"
-            << " (0, inf)" << exit(FatalIOError);
-    }
+    const scalar tol = foamTools::readInRangeOrDefault<scalar>
+    (
+        dict, "mapTolerance", "", 0, foamTools::noUpperBound<scalar>(), false,
+        0.1
+    );
     if (fluidPatch.empty())
     {
         FatalIOErrorInFunction(dict)

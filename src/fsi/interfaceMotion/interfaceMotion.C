@@ -1,4 +1,5 @@
 #include "interfaceMotion.H"
+#include "inputChecks.H"
 #include "pointIOField.H"
 #include "bitSet.H"
 #include "wedgePolyPatch.H"
@@ -112,14 +113,16 @@ Foam::interfaceMotion::interfaceMotion
       : vector(Zero)
     )
 {
-    const scalar L = interfaceDict.get<scalar>("motionDistance");
-    const label n = interfaceDict.getOrDefault<label>("motionNearest", 8);
-    if (L <= 0 || n < 1)
-    {
-        FatalIOErrorInFunction(interfaceDict)
-            << "motionDistance " << L << " m must be > 0 and motionNearest "
-            << n << " >= 1" << exit(FatalIOError);
-    }
+    const scalar L = foamTools::readInRange<scalar>
+    (
+        interfaceDict, "motionDistance", "m", 0,
+        foamTools::noUpperBound<scalar>(), false
+    );
+    const label n = foamTools::readInRangeOrDefault<label>
+    (
+        interfaceDict, "motionNearest", "", 1,
+        foamTools::noUpperBound<label>(), true, 8
+    );
     const bool axi = mag(axisDirection_) > 0;
 
     // Interface points (whole patch) in the interpolation space: (r, z, 0)

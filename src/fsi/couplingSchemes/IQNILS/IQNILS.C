@@ -1,5 +1,6 @@
 #include "IQNILS.H"
 #include "addToRunTimeSelectionTable.H"
+#include "inputChecks.H"
 
 #include <Eigen/Dense>
 
@@ -13,22 +14,21 @@ namespace Foam
 Foam::IQNILS::IQNILS(const dictionary& dict)
 :
     couplingScheme(dict),
-    omega0_(dict.getOrDefault<scalar>("initialRelaxation", 0.1)),
-    reuse_(dict.getOrDefault<label>("reuse", 0))
-{
-    if (omega0_ <= 0 || omega0_ > 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "initialRelaxation = " << omega0_ << " is outside the valid"
-            << " range (0, 1]" << exit(FatalIOError);
-    }
-    if (reuse_ < 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "reuse = " << reuse_ << " is outside the valid range [0, inf)"
-            << exit(FatalIOError);
-    }
-}
+    omega0_
+    (
+        foamTools::readInRangeOrDefault<scalar>
+        (
+            dict, "initialRelaxation", "", 0, 1, false, 0.1
+        )
+    ),
+    reuse_
+    (
+        foamTools::readInRangeOrDefault<label>
+        (
+            dict, "reuse", "", 0, foamTools::noUpperBound<label>(), true, 0
+        )
+    )
+{}
 
 
 void Foam::IQNILS::newStep()

@@ -1,5 +1,6 @@
 #include "aitken.H"
 #include "addToRunTimeSelectionTable.H"
+#include "inputChecks.H"
 
 namespace Foam
 {
@@ -11,16 +12,15 @@ namespace Foam
 Foam::aitken::aitken(const dictionary& dict)
 :
     couplingScheme(dict),
-    omega0_(dict.getOrDefault<scalar>("initialRelaxation", 0.1)),
+    omega0_
+    (
+        foamTools::readInRangeOrDefault<scalar>
+        (
+            dict, "initialRelaxation", "", 0, 1, false, 0.1
+        )
+    ),
     omega_(omega0_)
-{
-    if (omega0_ <= 0 || omega0_ > 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "initialRelaxation = " << omega0_ << " is outside the valid"
-            << " range (0, 1]" << exit(FatalIOError);
-    }
-}
+{}
 
 
 void Foam::aitken::newStep()

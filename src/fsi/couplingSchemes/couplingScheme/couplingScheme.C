@@ -1,5 +1,6 @@
 #include "couplingScheme.H"
 #include "error.H"
+#include "inputChecks.H"
 
 namespace Foam
 {
@@ -10,9 +11,29 @@ namespace Foam
 
 Foam::couplingScheme::couplingScheme(const dictionary& dict)
 :
-    maxIter_(dict.getOrDefault<label>("maxIter", 30)),
-    tolerance_(dict.getOrDefault<scalar>("tolerance", 1e-6)),
-    velocityScale_(dict.getOrDefault<scalar>("velocityScale", 1e-2)),
+    maxIter_
+    (
+        foamTools::readInRangeOrDefault<label>
+        (
+            dict, "maxIter", "", 1, foamTools::noUpperBound<label>(), true, 30
+        )
+    ),
+    tolerance_
+    (
+        foamTools::readInRangeOrDefault<scalar>
+        (
+            dict, "tolerance", "", 0, foamTools::noUpperBound<scalar>(),
+            false, 1e-6
+        )
+    ),
+    velocityScale_
+    (
+        foamTools::readInRangeOrDefault<scalar>
+        (
+            dict, "velocityScale", "m/s", 0,
+            foamTools::noUpperBound<scalar>(), false, 1e-2
+        )
+    ),
     stopOnNonConvergence_(false),
     iter_(0),
     residual_(0),
@@ -32,19 +53,6 @@ Foam::couplingScheme::couplingScheme(const dictionary& dict)
         FatalIOErrorInFunction(dict)
             << "onNonConvergence " << action << " is not valid; valid:"
             << " (warn stop)" << exit(FatalIOError);
-    }
-    if (maxIter_ < 1)
-    {
-        FatalIOErrorInFunction(dict)
-            << "maxIter = " << maxIter_ << " is outside the valid range"
-            << " [1, inf)" << exit(FatalIOError);
-    }
-    if (tolerance_ <= 0 || velocityScale_ <= 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "tolerance = " << tolerance_ << " and velocityScale = "
-            << velocityScale_ << " m/s must be in (0, inf)"
-            << exit(FatalIOError);
     }
 }
 

@@ -1,0 +1,233 @@
+#include "indentationInput.H"
+#include "inputChecks.H"
+#include "IOstream.H"
+#include "ITstream.H"
+#include "token.H"
+
+#include "Checkpoint.H"
+#include "SolidError.H"
+
+#include <iostream>
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
+
+Foam::indentationInput::indentationInput
+(
+    const dictionary& indenterProperties,
+    const dictionary& controlDict
+)
+:
+    dict_(indenterProperties),
+    contactPatch_(),
+    continueRun_(false)
+{
+    using foamTools::readInRange;
+    using foamTools::readInRangeOrDefault;
+    const dictionary& d = dict_;
+
+    sphere_.radius = readInRange<scalar>(d, "radius", "m", 0, 1, false);
+    sphere_.tolerance = readInRange<scalar>(d, "tolerance", "m", 0, 1, false);
+    sphere_.penaltyFactor = readInRangeOrDefault<scalar>
+    (
+        d, "penaltyFactor", "", 0, 1e6, false, 10
+    );
+    contactPatch_ = d.getOrDefault<word>("contactPatch", "outerSurface");
+
+    settings_.maxDepthIncrement =
+        readInRange<scalar>(d, "maxDepthIncrement", "m", 0, 1, false);
+    settings_.holdDeltaT0 =
+        readInRange<scalar>(d, "holdDeltaT0", "s", 0, 1e6, false);
+    settings_.maxDeltaT =
+        readInRange<scalar>(d, "maxDeltaT", "s", 0, 1e6, false);
+    settings_.holdGrowth =
+        readInRangeOrDefault<scalar>(d, "holdGrowth", "", 1, 10, true, 1.5);
+    settings_.forceTarget =
+        readInRangeOrDefault<scalar>(d, "forceTarget", "N", 0, 1, true, 0);
+    settings_.forceTargetTolerance = readInRangeOrDefault<scalar>
+    (
+        d, "forceTargetTolerance", "", 0, 1, false, 0.01
+    );
+
+    protocol_ = std::make_shared<solid::IndentationProtocol>(readProtocol());
+
+    settings_.writeInterval = readInRange<scalar>
+    (
+        controlDict, "fieldWriteInterval", "s", 0, GREAT, true
+    );
+    settings_.checkpointInterval = readInRangeOrDefault<label>
+    (
+        controlDict, "checkpointInterval", "steps", 0, 1000000000, true, 10
+    );
+    // force.dat and peaks.dat at the precision of the case's other outputs
+    settings_.precision = IOstream::defaultPrecision();
+    settings_.log = &std::cout;
+
+    newton_.maxCuts = 10;
+    if (d.getOrDefault<bool>("logNewton", false))
+    {
+        newton_.log = &std::cout;
+    }
+
+    continueRun_ =
+        controlDict.getOrDefault<word>("startFrom", "startTime")
+     == "latestTime";
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+std::vector<solid::ProtocolRow> Foam::indentationInput::readProtocol() const
+{
+    if (!dict_.found("protocol"))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "missing entry 'protocol' (list of (stage motion rate "
+            << "amount) rows)" << exit(FatalIOError);
+    }
+    ITstream& is = dict_.lookup("protocol");
+    std::vector<solid::ProtocolRow> rows;
+    auto bad = [&](const std::string& why)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "entry 'protocol', row " << rows.size() + 1 << ": " << why
+            << "; expected (stage load|unload|hold rate[m/s] "
+            << "amount[m or s])" << exit(FatalIOError);
+    };
+    token t(is);
+    if (!t.isPunctuation() || t.pToken() != token::BEGIN_LIST)
+    {
+        bad("the table must start with '('");
+    }
+    while (true)
+    {
+        token r(is);
+        if (r.isPunctuation() && r.pToken() == token::END_LIST) break;
+        if (!r.isPunctuation() || r.pToken() != token::BEGIN_LIST)
+        {
+            bad("a row must start with '('");
+        }
+        solid::ProtocolRow row;
+        token s(is), m(is), v(is), a(is), e(is);
+        if (!s.isWord() || !m.isWord() || !v.isNumber() || !a.isNumber())
+        {
+            bad("wrong types");
+        }
+        if (!e.isPunctuation() || e.pToken() != token::END_LIST)
+        {
+            bad("more than four items");
+        }
+        row.stage = s.wordToken();
+        row.motion = m.wordToken();
+        row.rate = v.number();
+        row.amount = a.number();
+        rows.push_back(row);
+    }
+    try
+    {
+        solid::IndentationProtocol check(rows);
+    }
+    catch (const solid::SolidError& err)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "entry 'protocol': " << err.what() << exit(FatalIOError);
+    }
+    return rows;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+std::shared_ptr<solid::RigidSphereContact>
+Foam::indentationInput::addContact(solid::Model& model) const
+{
+    const solid::Mesh& mesh = model.mesh();
+
+    // The sphere above the highest point of the contact surface, on the
+    // axis, moving down (-z in 3D, -z in r-z: the second coordinate)
+    scalar zTop = -GREAT;
+    try
+    {
+        for (const auto& f : mesh.faceSet(contactPatch_))
+        {
+            for (int n : f) zTop = max(zTop, mesh.X[n](mesh.dim() - 1));
+        }
+    }
+    catch (const solid::SolidError& err)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "entry 'contactPatch': " << err.what() << exit(FatalIOError);
+    }
+    solid::RigidSphereSettings sphere(sphere_);
+    sphere.centre0 = mesh.axisymmetric()
+        ? solid::Vec3(0, zTop + sphere.radius, 0)
+        : solid::Vec3(0, 0, zTop + sphere.radius);
+    sphere.direction = mesh.axisymmetric()
+        ? solid::Vec3(0, -1, 0) : solid::Vec3(0, 0, -1);
+    const std::shared_ptr<solid::IndentationProtocol> protocol(protocol_);
+    sphere.depth = [protocol](double t) { return protocol->depth(t); };
+
+    auto contact =
+        std::make_shared<solid::RigidSphereContact>(contactPatch_, sphere);
+    model.add(contact);
+    try
+    {
+        model.initialise();
+    }
+    catch (const solid::SolidError& err)
+    {
+        FatalErrorInFunction << err.what() << exit(FatalError);
+    }
+
+    Info<< "Indenter: radius " << sphere.radius << " m, top of the cell z = "
+        << zTop << " m, penetration tolerance " << sphere.tolerance << " m"
+        << nl << "Protocol: " << protocol_->rows().size() << " rows, "
+        << protocol_->endTime() << " s";
+    if (settings_.forceTarget > 0)
+    {
+        Info<< " (stage " << protocol_->rows()[0].stage << " ends at "
+            << settings_.forceTarget << " N)";
+    }
+    Info<< nl << endl;
+    return contact;
+}
+
+
+std::unique_ptr<solid::IndentationDriver> Foam::indentationInput::driver
+(
+    solid::Model& model,
+    const std::shared_ptr<solid::RigidSphereContact>& contact,
+    const fileName& outDir
+) const
+{
+    const bool resume =
+        continueRun_ && solid::Checkpoint::exists(outDir/"restart.h5");
+    std::unique_ptr<solid::IndentationDriver> driver;
+    try
+    {
+        driver.reset
+        (
+            new solid::IndentationDriver
+            (
+                model, contact, protocol_, newton_, settings_, outDir
+            )
+        );
+        driver->start(resume);
+    }
+    catch (const solid::SolidError& err)
+    {
+        if (resume)
+        {
+            FatalErrorInFunction
+                << "Cannot continue from " << outDir/"restart.h5" << ": "
+                << err.what() << nl << "Set startFrom startTime in "
+                << "system/controlDict to start again" << exit(FatalError);
+        }
+        FatalErrorInFunction
+            << "Cannot start in " << outDir << ": " << err.what()
+            << exit(FatalError);
+    }
+    return driver;
+}
+
+
+// ************************************************************************* //
