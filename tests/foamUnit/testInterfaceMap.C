@@ -4,8 +4,8 @@ Description
     globalInterfacePatch, between a fluid patch built with
     foamUnit::testCase::blockMesh and a solid mesh built in code
     (solid::Mesh::box, solid::Mesh::rectangle), for the maps and loads the
-    tutorials use: the 3D projection map with load pressure and the r-z
-    faces map.
+    tutorials use: the 3D projection map and the r-z faces map, each with
+    both loads (mappedForces, pressure).
 
     - conservation: the solid nodal forces add up to the fluid force (3D),
       to the full-ring force in r-z (k_r = pi/sin(theta/2),
@@ -15,6 +15,8 @@ Description
     - a uniform pressure gives the solid's consistent nodal forces
       f_a = p int N_a dA (r-z: 2 pi p int N_a r ds), computed here in
       closed form on the structured solid faces;
+    - load pressure in r-z: the exact ring force of a uniform pressure for
+      any face sizes, the exact nodal forces of a pressure linear in z;
     - the acoustic added damping of a uniform impedance Z (the Robin
       scheme's beta) adds up to Z times the (full-ring) area on the normal
       dofs.
@@ -504,6 +506,90 @@ TEST(interfaceMap, rzFacesFullRingForces)
             (
                 "rz.relErrorTranslation",
                 max(mag(u - vector(0, t, 0)))/t
+            );
+        }
+    }
+}
+
+
+TEST(interfaceMap, rzPressureLoadRingForces)
+{
+    // load pressure in r-z: the fluid pressure averaged over each solid
+    // segment, integrated by solid::PressureLoad per full ring. A uniform
+    // pressure gives the exact ring force of the solid's surface for any
+    // face sizes (fluid 1 face on 6 solid faces: solid faces without a
+    // quadrature point take their donor's pressure); a pressure linear in
+    // z on the side r = r1 with matching faces the exact nodal forces
+    // 2 pi r1 P_s len/2 (P_s the segment's mean); a rigid translation of
+    // the solid changes nothing
+    const scalar p = 5e7;
+    for (const bool radial : {true, false})
+    {
+        const List<FixedList<label, 2>> sizes({{4, 4}, {3, 5}, {1, 6}});
+        for (const FixedList<label, 2>& n : sizes)
+        {
+            SCOPED_TRACE
+            (
+                std::string(radial ? "radial" : "axial")
+              + " fluid " + std::to_string(n[0])
+              + " solid " + std::to_string(n[1])
+            );
+            caseRz c(radial, n[0], n[1]);
+            dictionary dict(c.dict(radial));
+            dict.set("load", word("pressure"));
+            const interfaceMap map(c.patch(), c.solid, dict);
+            ASSERT_TRUE(map.pressureLoad());
+            const scalarField u0(map.nDofs(), Zero);
+
+            const vectorField F(p*c.Sf());
+            const scalarField f(map.nodalPressureForces(F, c.Sf(), u0));
+            const vector exact = radial
+                ? vector(-p*2*pi*c.r1*c.H, 0, 0)
+                : vector(0, -p*pi*(sqr(c.r1) - sqr(c.r0)), 0);
+            gold().check
+            (
+                "rz.pressureLoad.uniformTotal.relError",
+                mag(sumForces(f, 2) - exact)/mag(exact)
+            );
+
+            scalarField u(map.nDofs());
+            forAll(u, i) u[i] = (i % 2 ? 3e-6 : 0);
+            gold().check
+            (
+                "rz.pressureLoad.translated.relError",
+                max(mag(map.nodalPressureForces(F, c.Sf(), u) - f))
+               /max(mag(f))
+            );
+
+            if (!radial || n[0] != n[1])
+            {
+                continue;
+            }
+            // p0 + g z on the side, from 50 to 150 MPa over the height
+            const scalar g = 1e8/c.H;
+            const pointField Cf(c.patch->faceCentres());
+            vectorField G(F.size());
+            forAll(G, i) G[i] = (p + g*Cf[i].y())*c.Sf()[i];
+            scalarField exactF(map.nDofs(), Zero);
+            for (const auto& seg : c.solid.faceSets.at("right"))
+            {
+                const solid::Vec3& a = c.solid.X[seg[0]];
+                const solid::Vec3& b = c.solid.X[seg[1]];
+                const scalar Ps = p + g*0.5*(a[1] + b[1]);
+                const scalar fa = 2*pi*c.r1*Ps*(b - a).norm()/2;
+                forAll(map.nodes(), i)
+                {
+                    if (map.nodes()[i] == seg[0] || map.nodes()[i] == seg[1])
+                    {
+                        exactF[2*i] -= fa;
+                    }
+                }
+            }
+            gold().check
+            (
+                "rz.pressureLoad.linearZ.relError",
+                max(mag(map.nodalPressureForces(G, c.Sf(), u0) - exactF))
+               /max(mag(exactF))
             );
         }
     }

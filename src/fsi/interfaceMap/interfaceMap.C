@@ -3,7 +3,7 @@
 #include "mathematicalConstants.H"
 #include "unitConversion.H"
 #include "SubField.H"
-#include "Shape.H"
+#include "Loads.H"
 
 #include <map>
 
@@ -722,9 +722,10 @@ Foam::interfaceMap::interfaceMap
     axisDirection_(Zero),
     ringFactorRadial_(1),
     ringFactorAxial_(1),
+    faceSet_(dict.get<word>("solidFaceSet")),
     mapType_(axisymmetric_ ? "faces" : "projection")
 {
-    const word setName(dict.get<word>("solidFaceSet"));
+    const word& setName = faceSet_;
     if (!solidMesh.faceSets.count(setName))
     {
         wordList names;
@@ -873,11 +874,6 @@ Foam::interfaceMap::interfaceMap
     }
     if (load_ == "pressure")
     {
-        if (axisymmetric_)
-        {
-            FatalIOErrorInFunction(dict)
-                << "load pressure is available in 3D only" << exit(FatalIOError);
-        }
         // Solid faces without a quadrature point take the nearest face's
         labelList count(faces_.size(), Zero);
         for (const stencil& st : quadStencil_) ++count[st.face];
@@ -916,18 +912,17 @@ Foam::interfaceMap::interfaceMap
         (
             nodalPressureForces(Sf, Sf, scalarField(nDofs(), Zero))
         );
+        const label dim = solidMesh_.dim();
         vector Fs(Zero);
-        forAll(nodes_, i)
-        {
-            for (label d = 0; d < 3; ++d) Fs[d] += f1[3*i + d];
-        }
-        const vector Ff = sum(Sf);
+        forAll(f1, i) Fs[i % dim] += f1[i];
+        const vector Ff = axisymmetric_ ? ringForce(Sf) : sum(Sf);
         Info<< "FSI interface: load pressure (the fluid pressure on the "
             << "solid's faces); " << nDonated << " solid faces without a "
             << "fluid quadrature point take the nearest one's; uniform "
             << "pressure 1 Pa: total force on the solid " << Fs
             << " N against the fluid's " << Ff << " N (difference "
-            << mag(Fs - Ff)/max(mag(Ff), VSMALL) << " of it)" << endl;
+            << mag(Fs - Ff)/max(mag(Ff), VSMALL) << " of it"
+            << (axisymmetric_ ? "; full ring, (r z 0)" : "") << ")" << endl;
     }
 
     Info<< "FSI interface: fluid patch " << fluidPatch.name() << " ("
@@ -1106,14 +1101,14 @@ Foam::scalar Foam::interfaceMap::maxGap() const
 }
 
 
-Foam::scalarField Foam::interfaceMap::nodalPressureForces
+Foam::scalarField Foam::interfaceMap::facePressures
 (
     const vectorField& faceForces,
-    const vectorField& Sf,
-    const scalarField& u
+    const vectorField& Sf
 ) const
 {
-    // Area-averaged fluid pressure per solid face
+    // Area average of the fluid face pressures at the quadrature points on
+    // each solid face (r-z: the weights r ds of the ring)
     scalarField P(faces_.size(), Zero), A(faces_.size(), Zero);
     forAll(quadStencil_, q)
     {
@@ -1127,40 +1122,36 @@ Foam::scalarField Foam::interfaceMap::nodalPressureForces
     {
         if (A[s] > 0) P[s] /= A[s];
     }
-    scalarField Pd(P);
+    scalarField Pd(P.size());
     forAll(Pd, s) Pd[s] = P[pressureDonor_[s]];
+    return Pd;
+}
 
-    // -P_s int N_a n da on the current faces, with the solid's own face
-    // rule (as solid::PressureLoad)
+
+Foam::scalarField Foam::interfaceMap::nodalPressureForces
+(
+    const vectorField& faceForces,
+    const vectorField& Sf,
+    const scalarField& u
+) const
+{
+    // The solid's own follower pressure on the face set, on the faces
+    // displaced by u (the fluid's wall: the configuration in which the
+    // fluid computed these pressures)
+    const scalarField P(facePressures(faceForces, Sf));
+    solid::PressureLoad load(faceSet_, [](double) { return 1.0; });
+    load.setFacePressures(std::vector<double>(P.begin(), P.end()));
+
     const label dim = solidMesh_.dim();
-    const solid::ShapeRule& rule = solid::faceRule(solidMesh_.type);
-    scalarField f(nDofs(), Zero);
-    forAll(faces_, s)
+    Eigen::VectorXd uAll(Eigen::VectorXd::Zero(dim*solidMesh_.nNodes()));
+    forAll(nodes_, i)
     {
-        const labelList& fc = faces_[s];
-        List<vector> x(fc.size());
-        forAll(fc, k)
+        for (label d = 0; d < dim; ++d)
         {
-            x[k] = solidPoint(fc[k]);
-            for (label d = 0; d < dim; ++d) x[k][d] += u[dim*fc[k] + d];
-        }
-        for (label q = 0; q < rule.nqp(); ++q)
-        {
-            vector dxi(Zero), deta(Zero);
-            forAll(fc, a)
-            {
-                dxi += rule.dNdxi[q](a, 0)*x[a];
-                deta += rule.dNdxi[q](a, 1)*x[a];
-            }
-            const vector nda = rule.w[q]*(dxi ^ deta);
-            forAll(fc, a)
-            {
-                for (label d = 0; d < dim; ++d)
-                {
-                    f[dim*fc[a] + d] -= Pd[s]*rule.N[q](a)*nda[d];
-                }
-            }
+            uAll(dim*nodes_[i] + d) = u[dim*i + d];
         }
     }
-    return f;
+    Eigen::VectorXd f(Eigen::VectorXd::Zero(uAll.size()));
+    load.addForce(solidMesh_, uAll, 0, f, nullptr);
+    return interfaceDofs(f);
 }

@@ -112,7 +112,19 @@ void solid::PressureLoad::addForce
     Triplets* K
 ) const
 {
-    const Mesh& mesh = model.mesh();
+    addForce(model.mesh(), u, t, f, K);
+}
+
+
+void solid::PressureLoad::addForce
+(
+    const Mesh& mesh,
+    const Eigen::VectorXd& u,
+    double t,
+    Eigen::VectorXd& f,
+    Triplets* K
+) const
+{
     const int dim = mesh.dim();
     const double p0 = pressure_(t);
     const auto& faces = mesh.faceSet(faceSet_);
