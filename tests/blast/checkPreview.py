@@ -29,12 +29,12 @@ check("map conservation, axial", sz, fz, 1e-12)
 check("axial ring force = -pi a^2", fz, -math.pi*a*a, 1e-9)
 check("radial ring force ~ -pi^2 a H/2", fr, -math.pi**2*a*H/2, 1e-3)
 
-# Arrival at the probe element (its centroid from the header)
+# Arrival at the probe (its reference point from the header)
 log = "solidProbes/solidProbes.dat"
 zc = None
 for line in postProcessing.header(case, log):
     if line.startswith("probe 0"):
-        zc = float(re.search(r"centroid \S+ (\S+) ", line).group(1))
+        zc = float(re.search(r" at \(\S+ (\S+) \S+\) m", line).group(1))
 d = postProcessing.series(case, log)
 t, p = d[:, 0], d[:, 1]
 rho0, C0, s, pulse = 1000.0, 1450.0, 1.99, 50e6

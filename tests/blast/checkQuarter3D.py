@@ -64,11 +64,11 @@ if m:
         check(f"pressure load against the fluid's force, {c}", ps[i], pf[i],
               5e-3)
 
-# Arrival at the probe element (its centroid from the header)
+# Arrival at the probe (its reference point from the header)
 zc = None
 for line in postProcessing.header(case, "solidProbes/solidProbes.dat"):
     if line.startswith("probe 0"):
-        zc = float(re.search(r"centroid \S+ \S+ (\S+) ", line).group(1))
+        zc = float(re.search(r" at \(\S+ \S+ (\S+)\) m", line).group(1))
 d = postProcessing.series(case, "solidProbes/solidProbes.dat")
 if not np.isfinite(d).all():
     print("FAIL NaN or Inf in solidProbes.dat")
