@@ -521,7 +521,8 @@ void Foam::solidDomain::setupOutput()
             os  << "# probe " << i << " " << probeNames_[i] << " at ("
                 << p.point()(0) << ' ' << p.point()(1) << ' '
                 << p.point()(2) << ") m in "
-                << m.regionNames[p.region()] << ": element " << p.element()
+                << word(m.regionNames[p.region()]) << ": element "
+                << p.element()
                 << ", patch of " << p.patch().size() << " elements" << nl;
         }
     }
