@@ -155,12 +155,11 @@ def parseLevel(f, out, size, name=None):
               f"at t = {tLast} s:\n{r['error']}", flush=True)
     r.update(bench.couplingStatistics(c))
     pf = "solidProbes/solidProbes.dat"
-    # the probe point and the element that samples it (its centroid)
+    # the probe point, the element containing it and the recovery patch
     for probe in postProcessing.probes(c, pf)[:1]:
-        pr0, ce = probe["point"][:2], probe["centroid"][:2]
-        r.update(probePoint=pr0, probeElement=probe["element"],
-                 probeRegion=probe["region"], probeCentroid=ce,
-                 probeOffset=float(np.linalg.norm(ce - pr0)))
+        r.update(probePoint=probe["point"][:2],
+                 probeElement=probe["element"],
+                 probeRegion=probe["region"], probePatch=probe["patch"])
     p = postProcessing.series(c, pf)
     nProbe = (p.shape[1] - 1)//7
     base = 1 + 5*nProbe
@@ -336,20 +335,19 @@ def report(rows, size, mode, start, png, commit, dirty, end,
           f"{r['strainMin']:.5f} ({d['strainMin']:+.2f} %) | "
           f"{r['rateMin']:.4g} ({d['rateMin']:+.2f} %) | {d['max']:.2f} |")
     w("")
-    w("The probe is the element nearest to the interface point (its "
-      "element average): the sampled point moves with the mesh, which is "
-      "part of each level's difference:")
+    w("The probe is a point (solid::PointProbe: the element containing it,"
+      " element quantities recovered at the point from a patch of elements "
+      "of its region), the same reference point on every level up to the "
+      "interface's chord:")
     w("")
-    w("| level | probe point (r, z) [um] | element (region) | its centroid "
-      "(r, z) [um] | centroid to point [um] |")
-    w("|---|---|---|---|---:|")
+    w("| level | probe point (r, z) [um] | element (region) | patch "
+      "[elements] |")
+    w("|---|---|---|---:|")
     for r in rows:
         if "probePoint" in r:
-            w(f"| x{r['factor']} | ({r['probePoint'][0]*1e6:.3f}, "
-              f"{r['probePoint'][1]*1e6:.3f}) | {r['probeElement']} "
-              f"({r['probeRegion']}) | ({r['probeCentroid'][0]*1e6:.3f}, "
-              f"{r['probeCentroid'][1]*1e6:.3f}) | "
-              f"{r['probeOffset']*1e6:.3f} |")
+            w(f"| x{r['factor']} | ({r['probePoint'][0]*1e6:.4f}, "
+              f"{r['probePoint'][1]*1e6:.4f}) | {r['probeElement']} "
+              f"({r['probeRegion']}) | {r['probePatch']} |")
     w("")
     bad = [r for r in rows if r["rc"] != 0]
     for r in bad:

@@ -4,7 +4,7 @@
 #   core      errors, tensors, the entries interface of parameters
 #   materials neo-Hookean, Maxwell branches, volumetric laws
 #   elements  shapes, quadrature, the mesh, element kernels
-#   model     model, contributions, state snapshot
+#   model     model, contributions, state snapshot, point probes
 #   loads     nodal and pressure loads
 #   contact   rigid sphere
 #   io        mesh reader, HDF5 layer, results, checkpoints

@@ -21,9 +21,9 @@ check.relative("axial ring force = -pi a^2", fz, -math.pi*a*a, 1e-9)
 check.relative("radial ring force ~ -pi^2 a H/2", fr, -math.pi**2*a*H/2,
                1e-3)
 
-# Arrival at the probe element (its centroid from the header)
+# Arrival at the probe (its reference point from the header)
 log = "solidProbes/solidProbes.dat"
-zc = postProcessing.probes(case, log)[0]["centroid"][1]
+zc = postProcessing.probes(case, log)[0]["point"][1]
 d = postProcessing.series(case, log)
 t, p = d[:, 0], d[:, 1]
 rho0, C0, s, pulse = 1000.0, 1450.0, 1.99, 50e6

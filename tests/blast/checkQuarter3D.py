@@ -54,8 +54,8 @@ if m:
         check.relative(f"pressure load against the fluid's force, {c}",
                        ps[i], pf[i], 5e-3)
 
-# Arrival at the probe element (its centroid from the header)
-zc = postProcessing.probes(case)[0]["centroid"][2]
+# Arrival at the probe (its reference point from the header)
+zc = postProcessing.probes(case)[0]["point"][2]
 d = postProcessing.series(case, "solidProbes/solidProbes.dat")
 if not np.isfinite(d).all():
     check(False, "NaN or Inf in solidProbes.dat")

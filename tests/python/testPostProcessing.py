@@ -153,19 +153,20 @@ class ColumnFiles(TempDirTestCase):
 
     def testProbesOfTheHeader(self):
         self.write("postProcessing/solidProbes/0/solidProbes.dat",
-                   "# solid probes (element average)\n"
+                   "# solid probes at points\n"
                    "# time [s]  p0[Pa]  p1[Pa]\n"
-                   "# probe 0 at (5.04e-06 5.32e-06 0) m: element 295 "
-                   "(\"cytoplasm\", centroid 4.99e-06 5.53e-06 0 m)\n"
-                   "# probe 1 at (1e-06 2e-06 3e-06) m: element 7 "
-                   "(\"nucleus\", centroid 1.1e-06 2.1e-06 3.1e-06 m)\n"
+                   "# probe 0 fig10 at (5.04e-06 5.32e-06 0) m in cytoplasm:"
+                   " element 295, patch of 7 elements\n"
+                   "# probe 1 top at (1e-06 2e-06 3e-06) m in nucleus: "
+                   "element 7, patch of 9 elements\n"
                    "1e-10 1 2\n")
         p = pp.probes(self.tmp)
-        self.assertEqual([(q["element"], q["region"]) for q in p],
-                         [(295, "cytoplasm"), (7, "nucleus")])
+        self.assertEqual([(q["name"], q["element"], q["region"], q["patch"])
+                          for q in p],
+                         [("fig10", 295, "cytoplasm", 7),
+                          ("top", 7, "nucleus", 9)])
         np.testing.assert_array_equal(p[0]["point"], [5.04e-6, 5.32e-6, 0])
-        np.testing.assert_array_equal(p[1]["centroid"],
-                                      [1.1e-6, 2.1e-6, 3.1e-6])
+        np.testing.assert_array_equal(p[1]["point"], [1e-6, 2e-6, 3e-6])
         self.write("postProcessing/fsi/0/coupling.dat", HEADER + row(1e-10))
         self.assertEqual(pp.probes(self.tmp, "fsi/coupling.dat"), [])
 

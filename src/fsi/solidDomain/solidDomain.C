@@ -4,7 +4,6 @@
 #include "IOobject.H"
 #include "pointField.H"
 #include "Pair.H"
-#include "Shape.H"
 #include "IFstream.H"
 #include "OSspecific.H"
 #include "SubList.H"
@@ -253,40 +252,6 @@ void Foam::solidDomain::writeState(const label k) const
 }
 
 
-Foam::scalar Foam::solidDomain::longitudinalStrain(const label e) const
-{
-    const solid::Mesh& m = mesh();
-    const int dim = m.dim();
-    const int axial = dim - 1;
-    const int* conn = m.element(e);
-    const solid::ShapeRule& rule = solid::volumeRule(m.type);
-    Eigen::MatrixXd F(Eigen::MatrixXd::Zero(dim, dim));
-    for (int q = 0; q < rule.nqp(); ++q)
-    {
-        const Eigen::MatrixXd& dNdxi = rule.dNdxi[q];
-        Eigen::MatrixXd J(Eigen::MatrixXd::Zero(dim, dim));
-        for (int a = 0; a < rule.nen; ++a)
-        {
-            for (int i = 0; i < dim; ++i)
-            {
-                J.row(i) += m.X[conn[a]][i]*dNdxi.row(a);
-            }
-        }
-        const Eigen::MatrixXd dNdX = dNdxi*J.inverse();
-        Eigen::MatrixXd Fq(Eigen::MatrixXd::Identity(dim, dim));
-        for (int a = 0; a < rule.nen; ++a)
-        {
-            for (int i = 0; i < dim; ++i)
-            {
-                Fq.row(i) += model_->u(dim*conn[a] + i)*dNdX.row(a);
-            }
-        }
-        F += Fq/rule.nqp();
-    }
-    return std::log(F.col(axial).norm());
-}
-
-
 Foam::labelList Foam::solidDomain::interfaceElements
 (
     const word& a,
@@ -420,56 +385,109 @@ Foam::point Foam::solidDomain::interfacePoint
 }
 
 
-void Foam::solidDomain::setupOutput()
+void Foam::solidDomain::addProbe
+(
+    const word& name,
+    const point& X,
+    const word& region,
+    const dictionary& dict,
+    const word& entry
+)
 {
-    // Probes: the element whose reference centroid is nearest (of any
-    // region, or of the given one)
-    pointField probes(dict_.getOrDefault<pointField>("probes", {}));
-    labelList probeRegion(probes.size(), -1);
+    const std::string context(entry + ": probe '" + name + "'");
+    guarded(dict, context.c_str(), [&]
+    {
+        const int r = region.empty() ? -1 : mesh().regionId(region);
+        probes_.emplace_back(mesh(), solid::Vec3(X.x(), X.y(), X.z()), r);
+    });
+    probeNames_.append(name);
+}
+
+
+void Foam::solidDomain::setupProbes()
+{
+    if (dict_.isDict("probes"))
+    {
+        const dictionary& pd = dict_.subDict("probes");
+        for (const entry& e : pd)
+        {
+            if (!e.isDict())
+            {
+                FatalIOErrorInFunction(pd)
+                    << "probes: entry " << e.keyword() << " is not a "
+                    << "dictionary { point (x y z); region <name>; } (point"
+                    << " [m] in the reference configuration, r-z: (r z 0);"
+                    << " region optional)" << exit(FatalIOError);
+            }
+            const dictionary& d = e.dict();
+            addProbe
+            (
+                e.keyword(),
+                d.get<point>("point"),
+                d.getOrDefault<word>("region", word::null),
+                d,
+                "probes"
+            );
+        }
+    }
+    else if (dict_.found("probes"))
+    {
+        const pointField points(dict_.get<pointField>("probes"));
+        forAll(points, i)
+        {
+            addProbe
+            (
+                "probe" + Foam::name(i), points[i], word::null, dict_, "probes"
+            );
+        }
+    }
     if (dict_.found("interfaceProbe"))
     {
         const dictionary& ip = dict_.subDict("interfaceProbe");
         const Pair<word> regions(ip.get<Pair<word>>("regions"));
         const scalar f = ip.get<scalar>("heightFraction");
-        const point P(interfacePoint(regions.first(), regions.second(), f));
-        int ra = -1, rb = -1;
-        guarded(dict_, "interfaceProbe", [&]
+        if (!(f > 0 && f < 1))
         {
-            ra = mesh().regionId(regions.first());
-            rb = mesh().regionId(regions.second());
-        });
+            FatalIOErrorInFunction(ip)
+                << "interfaceProbe: heightFraction " << f << " [-] out of "
+                << "range: 0 < heightFraction < 1 (of the inner region's "
+                << "height)" << exit(FatalIOError);
+        }
+        const word side(ip.getOrDefault<word>("side", "outer"));
+        if (side != "outer" && side != "inner")
+        {
+            FatalIOErrorInFunction(ip)
+                << "interfaceProbe: side " << side << " unknown: outer (the"
+                << " first of regions, " << regions.first() << ") or inner ("
+                << regions.second() << ")" << exit(FatalIOError);
+        }
+        const point P(interfacePoint(regions.first(), regions.second(), f));
         Info<< "Solid: interface probe " << regions << " at "
             << 100*f << " % of the " << regions.second() << " height: "
             << P << " m" << endl;
-        probes.append(P);
-        probeRegion.append(-1);
-        probes.append(P);
-        probeRegion.append(rb);
-        probes.append(P);
-        probeRegion.append(ra);
-    }
-    const solid::Mesh& m = mesh();
-    probeElements_.setSize(probes.size());
-    forAll(probes, i)
-    {
-        scalar best = GREAT;
-        for (int e = 0; e < m.nElements(); ++e)
+        addProbe
+        (
+            "interfaceProbe",
+            P,
+            side == "outer" ? regions.first() : regions.second(),
+            ip,
+            "interfaceProbe"
+        );
+        for (const word& r : {regions.second(), regions.first()})
         {
-            if (probeRegion[i] >= 0 && m.region[e] != probeRegion[i])
-            {
-                continue;
-            }
-            solid::Vec3 c(solid::Vec3::Zero());
-            for (int a = 0; a < m.nen(); ++a) c += m.X[m.element(e)[a]];
-            c /= m.nen();
-            const scalar d =
-                (c - solid::Vec3(probes[i].x(), probes[i].y(), probes[i].z()))
-               .norm();
-            if (d < best) { best = d; probeElements_[i] = e; }
+            addProbe("interfaceProbe." + r, P, r, ip, "interfaceProbe");
         }
     }
-    probeStrain_.setSize(2*probes.size(), 0);
-    if (probes.size() && Pstream::master())
+}
+
+
+void Foam::solidDomain::setupOutput()
+{
+    setupProbes();
+    const solid::Mesh& m = mesh();
+    const label nProbes = label(probes_.size());
+    probeStrain_.setSize(2*nProbes, 0);
+    if (nProbes && Pstream::master())
     {
         const fileName dir
         (
@@ -480,34 +498,32 @@ void Foam::solidDomain::setupOutput()
         probeFile_.reset(new OFstream(dir/"solidProbes.dat"));
         OFstream& os = probeFile_();
         os.precision(10);
-        os  << "# solid probes (element average): per probe pressure"
-            << " (+ compression), von Mises, volumetric strain ln J and its"
-            << " rate, temperature rise; then per probe the longitudinal"
-            << " strain ln|F e_z| (shock direction) and its rate" << nl
-            << "# time [s]";
-        forAll(probes, i)
+        os  << "# solid probes at fixed points of the reference "
+            << "configuration (each follows its material point), recovered"
+            << " from the elements of the probe's region around it: per "
+            << "probe pressure (+ compression), von Mises, volumetric strain"
+            << " ln J and its rate, temperature rise; then per probe the "
+            << "longitudinal strain ln|F e_z| (shock direction) and its rate"
+            << nl << "# time [s]";
+        for (label i = 0; i < nProbes; ++i)
         {
             os  << "  p" << i << "[Pa] vonMises" << i << "[Pa] strain" << i
                 << "[-] strainRate" << i << "[1/s] dT" << i << "[K]";
         }
-        forAll(probes, i)
+        for (label i = 0; i < nProbes; ++i)
         {
             os  << "  strainZ" << i << "[-] strainRateZ" << i << "[1/s]";
         }
         os  << nl;
-        forAll(probes, i)
+        for (label i = 0; i < nProbes; ++i)
         {
-            solid::Vec3 c(solid::Vec3::Zero());
-            for (int a = 0; a < m.nen(); ++a)
-            {
-                c += m.X[m.element(probeElements_[i])[a]];
-            }
-            c /= m.nen();
-            os  << "# probe " << i << " at " << probes[i] << " m: element "
-                << probeElements_[i] << " ("
-                << m.regionNames[m.region[probeElements_[i]]]
-                << ", centroid " << c[0] << ' ' << c[1] << ' ' << c[2]
-                << " m)" << nl;
+            const solid::PointProbe& p = probes_[i];
+            os  << "# probe " << i << " " << probeNames_[i] << " at ("
+                << p.point()(0) << ' ' << p.point()(1) << ' '
+                << p.point()(2) << ") m in "
+                << word(m.regionNames[p.region()]) << ": element "
+                << p.element()
+                << ", patch of " << p.patch().size() << " elements" << nl;
         }
     }
 
@@ -589,21 +605,22 @@ void Foam::solidDomain::write(const scalar dt)
     {
         OFstream& os = probeFile_();
         os  << runTime_.value();
-        forAll(probeElements_, i)
+        const int axial = mesh().dim() - 1;
+        scalarField ez(probes_.size());
+        for (label i = 0; i < label(probes_.size()); ++i)
         {
-            const solid::ElementOutput o =
-                model_->evaluateElement(probeElements_[i], 0);
-            const scalar logJ = std::log(o.theta);
-            os  << ' ' << o.p << ' ' << vonMises(o.sigma) << ' ' << logJ
+            const solid::ProbeValues v = probes_[i].evaluate(*model_);
+            const scalar logJ = std::log(v.theta);
+            os  << ' ' << v.p << ' ' << vonMises(v.sigma) << ' ' << logJ
                 << ' ' << (logJ - probeStrain_[2*i])/dt << ' '
-                << o.temperatureRise;
+                << v.temperatureRise;
             probeStrain_[2*i] = logJ;
+            ez[i] = std::log(v.F.col(axial).norm());
         }
-        forAll(probeElements_, i)
+        forAll(ez, i)
         {
-            const scalar ez = longitudinalStrain(probeElements_[i]);
-            os  << ' ' << ez << ' ' << (ez - probeStrain_[2*i + 1])/dt;
-            probeStrain_[2*i + 1] = ez;
+            os  << ' ' << ez[i] << ' ' << (ez[i] - probeStrain_[2*i + 1])/dt;
+            probeStrain_[2*i + 1] = ez[i];
         }
         // Flushed per row: a run stopped by a FatalError (MPI_Abort runs
         // no destructor) leaves complete rows up to its last step
@@ -645,5 +662,12 @@ void Foam::solidDomain::write(const scalar dt)
         Info<< "Solid: energy balance " << e.balance() << " J of "
             << e.externalWork << " J external work, " << solver_->steps()
             << " steps" << endl;
+        // The probes are material points: where they have moved to
+        for (label i = 0; i < label(probes_.size()); ++i)
+        {
+            const solid::Vec3 u(probes_[i].interpolate(model_->u));
+            Info<< "Solid: probe " << probeNames_[i] << " displaced by ("
+                << u(0) << ' ' << u(1) << ' ' << u(2) << ") m" << endl;
+        }
     }
 }

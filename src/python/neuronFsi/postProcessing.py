@@ -219,16 +219,19 @@ def materials(path):
 
 def probes(case, log="solidProbes/solidProbes.dat"):
     """The probes the header of the solid probes file names, in order:
-    each a dict of point [m] (3 components), element, region and the
-    element's centroid [m] (3 components)."""
+    each a dict of name, point [m] (its reference coordinates, 3
+    components), region, element (the one containing the point) and patch
+    (the number of elements its value is recovered from)."""
     out = []
     for line in header(case, log):
-        m = re.match(r"probe \d+ at \((\S+) (\S+) (\S+)\) m: element (\d+) "
-                     r"\(\"(\w+)\", centroid (\S+) (\S+) (\S+) m\)", line)
+        m = re.match(r"probe \d+ (\S+) at \((\S+) (\S+) (\S+)\) m in (\w+): "
+                     r"element (\d+), patch of (\d+) elements", line)
         if m:
-            v = [float(m.group(k)) for k in (1, 2, 3, 6, 7, 8)]
-            out.append(dict(point=np.array(v[:3]), element=int(m.group(4)),
-                            region=m.group(5), centroid=np.array(v[3:])))
+            out.append(dict(name=m.group(1),
+                            point=np.array([float(m.group(k))
+                                            for k in (2, 3, 4)]),
+                            region=m.group(5), element=int(m.group(6)),
+                            patch=int(m.group(7))))
     return out
 
 

@@ -180,6 +180,7 @@ void solid::MixedElement::evaluate
     double heatStep = 0;
     out.Jmin = 1e300;
     out.sigma.setZero();
+    out.F.setZero();
 
     Eigen::Matrix<double, 9, Eigen::Dynamic> B;
     if (tangent) B.resize(9, nd);
@@ -262,6 +263,7 @@ void solid::MixedElement::evaluate
             }
         }
         out.v += J*wq;
+        out.F += wq*F;
         out.energy += r.psi*wq;
         out.dissipated += iso.dissipated(pointNew + q*nh)*wq;
         heatStep +=
@@ -276,6 +278,7 @@ void solid::MixedElement::evaluate
         }
     }
     out.theta = out.v/geo.V;
+    out.F /= geo.V;
 
     {
         // No heap allocation in the explicit hot loop (24 = 8 nodes x 3)

@@ -29,22 +29,18 @@ ShapeRule makeLine2()
 
 ShapeRule makeQuad4()
 {
-    static const double xa[4] = {-1, 1, 1, -1};
-    static const double ya[4] = {-1, -1, 1, 1};
     ShapeRule r;
     r.nen = 4;
     r.pdim = 2;
     for (double eta : {-gp, gp})
     for (double xi : {-gp, gp})
     {
-        Eigen::VectorXd N(4);
-        Eigen::MatrixXd d(4, 2);
-        for (int a = 0; a < 4; ++a)
-        {
-            N(a) = 0.25*(1 + xa[a]*xi)*(1 + ya[a]*eta);
-            d(a, 0) = 0.25*xa[a]*(1 + ya[a]*eta);
-            d(a, 1) = 0.25*ya[a]*(1 + xa[a]*xi);
-        }
+        Eigen::VectorXd N;
+        Eigen::MatrixXd d;
+        solid::shapeAt
+        (
+            solid::ElementType::quad4Axi, Eigen::Vector3d(xi, eta, 0), N, d
+        );
         r.N.push_back(N);
         r.dNdxi.push_back(d);
         r.w.push_back(1.0);
@@ -54,9 +50,6 @@ ShapeRule makeQuad4()
 
 ShapeRule makeHex8()
 {
-    static const double xa[8] = {-1, 1, 1, -1, -1, 1, 1, -1};
-    static const double ya[8] = {-1, -1, 1, 1, -1, -1, 1, 1};
-    static const double za[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
     ShapeRule r;
     r.nen = 8;
     r.pdim = 3;
@@ -64,17 +57,12 @@ ShapeRule makeHex8()
     for (double eta : {-gp, gp})
     for (double xi : {-gp, gp})
     {
-        Eigen::VectorXd N(8);
-        Eigen::MatrixXd d(8, 3);
-        for (int a = 0; a < 8; ++a)
-        {
-            const double fx = 1 + xa[a]*xi, fy = 1 + ya[a]*eta,
-                fz = 1 + za[a]*ze;
-            N(a) = 0.125*fx*fy*fz;
-            d(a, 0) = 0.125*xa[a]*fy*fz;
-            d(a, 1) = 0.125*ya[a]*fx*fz;
-            d(a, 2) = 0.125*za[a]*fx*fy;
-        }
+        Eigen::VectorXd N;
+        Eigen::MatrixXd d;
+        solid::shapeAt
+        (
+            solid::ElementType::hex8, Eigen::Vector3d(xi, eta, ze), N, d
+        );
         r.N.push_back(N);
         r.dNdxi.push_back(d);
         r.w.push_back(1.0);
@@ -83,6 +71,46 @@ ShapeRule makeHex8()
 }
 
 } // namespace
+
+
+void solid::shapeAt
+(
+    ElementType t,
+    const Eigen::Vector3d& p,
+    Eigen::VectorXd& N,
+    Eigen::MatrixXd& d
+)
+{
+    const double xi = p(0), eta = p(1), ze = p(2);
+    if (t == ElementType::quad4Axi)
+    {
+        static const double xa[4] = {-1, 1, 1, -1};
+        static const double ya[4] = {-1, -1, 1, 1};
+        N.resize(4);
+        d.resize(4, 2);
+        for (int a = 0; a < 4; ++a)
+        {
+            N(a) = 0.25*(1 + xa[a]*xi)*(1 + ya[a]*eta);
+            d(a, 0) = 0.25*xa[a]*(1 + ya[a]*eta);
+            d(a, 1) = 0.25*ya[a]*(1 + xa[a]*xi);
+        }
+        return;
+    }
+    static const double xa[8] = {-1, 1, 1, -1, -1, 1, 1, -1};
+    static const double ya[8] = {-1, -1, 1, 1, -1, -1, 1, 1};
+    static const double za[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
+    N.resize(8);
+    d.resize(8, 3);
+    for (int a = 0; a < 8; ++a)
+    {
+        const double fx = 1 + xa[a]*xi, fy = 1 + ya[a]*eta,
+            fz = 1 + za[a]*ze;
+        N(a) = 0.125*fx*fy*fz;
+        d(a, 0) = 0.125*xa[a]*fy*fz;
+        d(a, 1) = 0.125*ya[a]*fx*fz;
+        d(a, 2) = 0.125*za[a]*fx*fy;
+    }
+}
 
 
 const solid::ShapeRule& solid::volumeRule(ElementType t)

@@ -1,0 +1,247 @@
+#include "PointProbe.H"
+#include "SolidError.H"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+namespace
+{
+
+//- How far outside [-1, 1] a parametric coordinate may lie and still count
+//  as inside: a point on an element edge or face comes back from the
+//  Newton iteration a few round-offs outside
+const double insideTol = 1e-9;
+
+//- The first dim coordinates of X (a fixed-size head of a dynamic length
+//  trips GCC's array-bounds analysis)
+Eigen::VectorXd head(const solid::Vec3& X, int dim)
+{
+    Eigen::VectorXd h(dim);
+    for (int i = 0; i < dim; ++i) h(i) = X(i);
+    return h;
+}
+
+std::string pointName(const solid::Vec3& X, int dim)
+{
+    std::ostringstream os;
+    os.precision(10);
+    os  << '(' << X(0) << ' ' << X(1);
+    if (dim == 3) os << ' ' << X(2);
+    os  << ") m";
+    return os.str();
+}
+
+} // namespace
+
+
+bool solid::PointProbe::inverseMap
+(
+    const Mesh& m,
+    int e,
+    const Vec3& X,
+    Vec3& xi
+)
+{
+    const int dim = m.dim();
+    const int* en = m.element(e);
+    xi.setZero();
+    Eigen::VectorXd N;
+    Eigen::MatrixXd dN;
+    // Newton converges in a few iterations inside a reasonably shaped
+    // element; points far outside may not converge at all (then they are
+    // not in this element)
+    for (int it = 0; it < 30; ++it)
+    {
+        shapeAt(m.type, xi, N, dN);
+        Eigen::VectorXd r = head(X, dim);
+        Eigen::MatrixXd J = Eigen::MatrixXd::Zero(dim, dim);
+        for (int a = 0; a < m.nen(); ++a)
+        {
+            const Eigen::VectorXd Xa = head(m.X[en[a]], dim);
+            r -= N(a)*Xa;
+            J += Xa*dN.row(a);
+        }
+        const double det = J.determinant();
+        if (!(std::abs(det) > 0)) return false;
+        const Eigen::VectorXd d = J.partialPivLu().solve(r);
+        for (int i = 0; i < dim; ++i) xi(i) += d(i);
+        if (!(xi.cwiseAbs().maxCoeff() < 10)) return false;
+        if (d.cwiseAbs().maxCoeff() < 1e-13) return true;
+    }
+    return false;
+}
+
+
+solid::PointProbe::PointProbe(const Mesh& mesh, const Vec3& X, int region)
+:
+    X_(X),
+    region_(region),
+    xi_(Vec3::Zero()),
+    dim_(mesh.dim())
+{
+    if (region >= int(mesh.regionNames.size()))
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter,
+            "region id " + std::to_string(region) + " not in the mesh"
+        );
+    }
+    if (mesh.axisymmetric()) X_(2) = 0;
+    const int nen = mesh.nen();
+    double bestDepth = 1e300;
+    std::set<int> regionsFound;
+    for (int e = 0; e < mesh.nElements(); ++e)
+    {
+        if (region >= 0 && mesh.region[e] != region) continue;
+        const int* en = mesh.element(e);
+        Vec3 lo = mesh.X[en[0]], hi = mesh.X[en[0]];
+        for (int a = 1; a < nen; ++a)
+        {
+            lo = lo.cwiseMin(mesh.X[en[a]]);
+            hi = hi.cwiseMax(mesh.X[en[a]]);
+        }
+        const double tol = insideTol*(hi - lo).maxCoeff();
+        // r-z: the third coordinates are all 0
+        if
+        (
+            ((X_ - lo).array() < -tol).any()
+         || ((hi - X_).array() < -tol).any()
+        )
+        {
+            continue;
+        }
+        Vec3 xi;
+        if (!inverseMap(mesh, e, X_, xi)) continue;
+        const double depth = xi.cwiseAbs().maxCoeff();
+        if (depth > 1 + insideTol) continue;
+        regionsFound.insert(mesh.region[e]);
+        if (depth < bestDepth)
+        {
+            bestDepth = depth;
+            element_ = e;
+            xi_ = xi;
+        }
+    }
+    if (element_ < 0)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter,
+            "point " + pointName(X_, dim_) + " lies in no element"
+          + (
+                region >= 0
+              ? " of region '" + mesh.regionNames[region] + "'"
+              : std::string(" of the mesh")
+            )
+          + " (reference configuration)"
+        );
+    }
+    if (regionsFound.size() > 1)
+    {
+        std::string names;
+        for (const int r : regionsFound)
+        {
+            names += (names.empty() ? "'" : ", '") + mesh.regionNames[r] + "'";
+        }
+        throw SolidError
+        (
+            SolidError::Kind::parameter,
+            "point " + pointName(X_, dim_) + " lies on the "
+            "interface of regions " + names + ": name the region of the "
+            "probe (the side whose fields it reports)"
+        );
+    }
+    region_ = mesh.region[element_];
+    nodes_.assign(mesh.element(element_), mesh.element(element_) + nen);
+    Eigen::MatrixXd dN;
+    shapeAt(mesh.type, xi_, N_, dN);
+
+    // Patch: the containing element and the elements of its region that
+    // share a node with it
+    const int* host = mesh.element(element_);
+    for (int e = 0; e < mesh.nElements(); ++e)
+    {
+        if (mesh.region[e] != region_) continue;
+        const int* en = mesh.element(e);
+        bool touches = false;
+        for (int a = 0; a < nen && !touches; ++a)
+        {
+            touches = std::find(host, host + nen, en[a]) != host + nen;
+        }
+        if (touches) patch_.push_back(e);
+    }
+
+    // Linear least-squares fit over the centroids, in the directions they
+    // span (offsets from X scaled by the patch size); the value at X is the
+    // constant coefficient, a fixed linear combination of the samples
+    const int n = int(patch_.size());
+    Eigen::MatrixXd D(n, dim_);
+    for (int i = 0; i < n; ++i)
+    {
+        D.row(i) = head(centroid(mesh, patch_[i]) - X_, dim_).transpose();
+    }
+    const double h = D.rowwise().norm().maxCoeff();
+    if (h > 0) D /= h;
+    const Eigen::MatrixXd C = D.rowwise() - D.colwise().mean();
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(C, Eigen::ComputeFullV);
+    const Eigen::VectorXd& s = svd.singularValues();
+    int k = 0;
+    while (k < s.size() && s(k) > 1e-8*std::max(s(0), 1e-300)) ++k;
+    Eigen::MatrixXd A(n, 1 + k);
+    A.col(0).setOnes();
+    A.rightCols(k) = D*svd.matrixV().leftCols(k);
+    const Eigen::VectorXd e0 = Eigen::VectorXd::Unit(1 + k, 0);
+    const Eigen::VectorXd w = A*(A.transpose()*A).ldlt().solve(e0);
+    weights_.assign(w.data(), w.data() + n);
+}
+
+
+solid::Vec3 solid::PointProbe::centroid(const Mesh& mesh, int e)
+{
+    ElementGeometry g;
+    g.build(mesh, e);
+    const int* en = mesh.element(e);
+    Vec3 c(Vec3::Zero());
+    for (std::size_t q = 0; q < g.w.size(); ++q)
+    {
+        for (int a = 0; a < mesh.nen(); ++a)
+        {
+            c += g.w[q]*g.N[q](a)*mesh.X[en[a]];
+        }
+    }
+    return c/g.V;
+}
+
+
+solid::Vec3 solid::PointProbe::interpolate(const Eigen::VectorXd& nodal) const
+{
+    Vec3 v(Vec3::Zero());
+    for (int a = 0; a < int(N_.size()); ++a)
+    {
+        for (int i = 0; i < dim_; ++i) v(i) += N_(a)*nodal(dim_*nodes_[a] + i);
+    }
+    return v;
+}
+
+
+solid::ProbeValues solid::PointProbe::evaluate(Model& model) const
+{
+    ProbeValues v;
+    v.sigma.setZero();
+    v.F.setZero();
+    v.theta = 0;
+    for (std::size_t i = 0; i < patch_.size(); ++i)
+    {
+        const ElementOutput o = model.evaluateElement(patch_[i], 0);
+        const double w = weights_[i];
+        v.p += w*o.p;
+        v.sigma += w*o.sigma;
+        v.F += w*o.F;
+        v.theta += w*o.theta;
+        v.temperatureRise += w*o.temperatureRise;
+    }
+    return v;
+}
