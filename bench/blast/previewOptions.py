@@ -41,6 +41,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
+from neuronFsi import bench
 from neuronFsi.solidResults import SolidResults
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -93,12 +94,7 @@ def runOption(option, out, env, pulse):
     with open(os.path.join(c, "bench.cmd"), "w") as o:
         o.write(cmd + "\n")
     print(f"{option}: running cellBlastFoam in {c} ...", flush=True)
-    subprocess.run(["/usr/bin/time", "-v", "-o", "log.time",
-                    "cellBlastFoam"], cwd=c, env=env,
-                   stdout=open(os.path.join(c, "log.cellBlastFoam"), "w"),
-                   stderr=subprocess.STDOUT)
-    with open(os.path.join(c, "log.load"), "w") as o:
-        o.write("%.2f %.2f %.2f\n" % os.getloadavg())
+    bench.runTimed(c, ["cellBlastFoam"], env, "log.cellBlastFoam")
 
 
 def lateSpeed(c):
@@ -130,9 +126,8 @@ def report(rows, start, end, commit, dirty, pulse):
     w = L.append
     w("# Blast preview per run option: cost against error")
     w("")
-    w(f"Written by `bench/blast/previewOptions.py` on "
-      f"{start.strftime('%Y-%m-%d %H:%M')} UTC, commit {commit}"
-      + (" (with uncommitted changes)" if dirty else "")
+    w(bench.writtenBy("bench/blast/previewOptions.py", start, commit,
+                      dirty=dirty)
       + f", {(end - start).total_seconds():.0f} s in all, runs two at a "
       f"time on the {os.cpu_count()}-core machine (one core each; the CPU "
       "time of cellBlastFoam is the cost to compare). Case "
@@ -195,14 +190,9 @@ def main():
         parts(o)                        # unknown pieces fail before a run
     out = os.path.abspath(args.out)
     os.makedirs(out, exist_ok=True)
-    env = B.foamEnv()
-    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"],
-                            cwd=ROOT, stdout=subprocess.PIPE,
-                            text=True).stdout.strip()
-    dirty = subprocess.run(["git", "status", "--porcelain", "--", "src",
-                            "applications", "tutorials/blast",
-                            "bench/blast"], cwd=ROOT,
-                           stdout=subprocess.PIPE, text=True).stdout.strip()
+    env = bench.foamEnv(ROOT)
+    commit = bench.commit(ROOT)
+    dirty = bench.uncommitted(ROOT, B.SOURCES)
     start = datetime.datetime.utcnow()
     if not args.reportOnly:
         with ThreadPoolExecutor(max_workers=args.jobs) as ex:
@@ -211,10 +201,7 @@ def main():
     end = datetime.datetime.utcnow()
     rows = [parse(o, out) for o in options]
     lines = report(rows, start, end, commit, dirty, args.pulse)
-    with open(args.doc, "w") as f:
-        f.write("\n".join(lines))
-    print("\n".join(lines))
-    print(f"wrote {args.doc}")
+    bench.writeReport(args.doc, lines)
     if any(r["rc"] != 0 for r in rows):
         sys.exit(1)
 

@@ -30,17 +30,13 @@ Full: factors 1 0.7 to 3 ns; --quick: 1.4 1 to 1 ns, written into --out
 (default bench/blast/output). Writes docs/benchmarks/blastQuarter3D.md
 (full) or <out>/blastQuarter3D.md (quick).
 """
-import argparse
 import datetime
 import os
 import re
 import shutil
-import subprocess
 import sys
 
-import numpy as np
-
-from neuronFsi import logs, msh, postProcessing
+from neuronFsi import bench, logs, msh, scratch
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
@@ -48,21 +44,7 @@ TUTORIAL = os.path.join(ROOT, "tutorials", "blast")
 DEFAULT = dict(h=0.5e-6, far=5e-6, cell=1.4e-6)     # [m], Allrun defaults
 SIZES = {"full": dict(factors=["1", "0.7"], endTime=3e-9),
          "quick": dict(factors=["1.4", "1"], endTime=1e-9)}
-
-
-
-def foamEnv():
-    res = subprocess.run(["bash", "-c", f". '{ROOT}/etc/bashrc' > /dev/null"
-                          " 2>&1 && env -0"], stdout=subprocess.PIPE,
-                         check=True)
-    return dict(v.split("=", 1) for v in
-                res.stdout.decode().split("\0") if "=" in v)
-
-
-def timeV(path):
-    """/usr/bin/time -v: max RSS [MB], wall [s]"""
-    r = logs.timeV(path)
-    return r["rss"]/1024, r["wall"]
+SOURCES, SOURCES_TEXT = bench.measuredCode("blast")
 
 
 def caseDir(out, f, ranks):
@@ -74,26 +56,15 @@ def runLevel(f, out, endTime, env, ranks=1):
     case = caseDir(out, f, ranks)
     if os.path.exists(case):
         shutil.rmtree(case)
-    os.makedirs(case)
-    shutil.copy(os.path.join(TUTORIAL, "plotBlast.py"), case)
+    scratch.copyInputs(TUTORIAL, case, ("plotBlast.py",))
     c = os.path.join(case, "quarter3D")
-    os.makedirs(c)
-    src = os.path.join(TUTORIAL, "quarter3D")
-    for s in ("0.orig", "constant", "system", "Allrun"):
-        (shutil.copytree if s != "Allrun" else shutil.copy)(
-            os.path.join(src, s), os.path.join(c, s))
-    if os.path.isdir(os.path.join(c, "constant", "polyMesh")):
-        shutil.rmtree(os.path.join(c, "constant", "polyMesh"))
-    for s in os.listdir(os.path.join(c, "constant")):
-        if s.endswith(".msh"):
-            os.remove(os.path.join(c, "constant", s))
-    res = subprocess.run(levelCommand(f, endTime, ranks).split(), cwd=c,
-                         env=env, stdout=subprocess.PIPE,
-                         stderr=subprocess.STDOUT, text=True)
-    open(os.path.join(c, "log.Allrun"), "w").write(res.stdout)
+    scratch.copyInputs(os.path.join(TUTORIAL, "quarter3D"), c,
+                     ("0.orig", "constant", "system", "Allrun"),
+                     ("polyMesh", "*.msh"))
+    res = bench.runLogged(levelCommand(f, endTime, ranks).split(), c, env,
+                          "log.Allrun")
     if res.returncode != 0 or not os.path.isdir(os.path.join(c, "0")):
-        sys.stdout.write(res.stdout[-3000:])
-        raise RuntimeError(f"Allrun (prepare) failed in {c}")
+        bench.fail(res, f"Allrun (prepare) failed in {c}")
     cells = logs.checkMeshCells(os.path.join(c, "log.checkMesh"))
     elements = msh.elementCount(os.path.join(c, "constant", "cell.msh"), {5})
     print(f"3D x{f}: {cells} fluid cells, {elements} solid hexahedra; "
@@ -101,12 +72,7 @@ def runLevel(f, out, endTime, env, ranks=1):
     solver = ["cellBlastFoam"] if ranks == 1 else \
         ["mpirun", "-np", str(ranks), "--bind-to", "none", "cellBlastFoam",
          "-parallel"]
-    subprocess.run(["/usr/bin/time", "-v", "-o", "log.time"] + solver,
-                   cwd=c, env=env,
-                   stdout=open(os.path.join(c, "log.cellBlastFoam"), "w"),
-                   stderr=subprocess.STDOUT)
-    with open(os.path.join(c, "log.load"), "w") as o:
-        o.write("%.2f %.2f %.2f\n" % os.getloadavg())
+    bench.runTimed(c, solver, env, "log.cellBlastFoam")
     return parseLevel(f, out, endTime, ranks)
 
 
@@ -125,38 +91,27 @@ def parseLevel(f, out, endTime, ranks=1):
     cmd = levelCommand(f, endTime, ranks)
     cells = logs.checkMeshCells(os.path.join(c, "log.checkMesh"))
     elements = msh.elementCount(os.path.join(c, "constant", "cell.msh"), {5})
-    rc = logs.timeV(os.path.join(c, "log.time"))["status"]
-    rc = -1 if rc is None else rc
-    rss, wallV = timeV(os.path.join(c, "log.time"))
-    lp = os.path.join(c, "log.load")
-    loadAvg = [float(v) for v in open(lp).read().split()] \
-        if os.path.exists(lp) else [float("nan")]*3
+    timeV = logs.timeV(os.path.join(c, "log.time"))
+    rc = -1 if timeV["status"] is None else timeV["status"]
     log = os.path.join(c, "log.cellBlastFoam")
     cpu, wall = logs.executionTime(log)
     split = logs.cpuSplit(log)
     tLast = logs.lastTime(log)
-    d = postProcessing.series(c, "fsi/coupling.dat")
     loop = float(re.search(r"time loop ([0-9.]+) s", split).group(1)) \
         if split else float("nan")
     r = dict(factor=f, ranks=ranks, sizes=s, cells=cells, elements=elements,
              rc=rc, tLast=tLast, cpu=cpu, wall=wall, loop=loop,
-             rss=rss, steps=len(d), itMean=d[:, 2].mean(),
-             itMax=int(d[:, 2].max()), notConverged=int(np.sum(d[:, 4] == 0)),
-             dtMin=d[:, 1].min(), dtMax=d[:, 1].max(),
-             dtMedian=float(np.median(d[:, 1])), split=split,
-             load=loadAvg, cmd=cmd)
+             rss=timeV["rss"]/1024, split=split, load=bench.loadAverage(c),
+             cmd=cmd, **bench.couplingStatistics(c))
     print(f"3D x{f}: exit {rc}, {r['steps']} steps to "
           f"{tLast} s, dt {r['dtMin']:.3g}-{r['dtMax']:.3g} s, CPU {cpu:.1f}"
           f" s ({loop/max(r['steps'], 1):.3f} s per step in the loop), "
-          f"wall {wall:.1f} s, peak RSS {rss:.0f} MB", flush=True)
+          f"wall {wall:.1f} s, peak RSS {r['rss']:.0f} MB", flush=True)
     return r
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true")
-    ap.add_argument("--out", default=os.path.join(HERE, "output"))
-    ap.add_argument("--doc", default=None)
+    ap = bench.arguments(__doc__, os.path.join(HERE, "output"))
     ap.add_argument("--factors", default=None)
     ap.add_argument("--endTime", type=float, default=None, help="[s]")
     ap.add_argument("--ranks", type=int, default=2,
@@ -175,19 +130,13 @@ def main():
     if args.endTime:
         size["endTime"] = args.endTime
     out = os.path.abspath(args.out)
-    doc = args.doc or (os.path.join(out, "blastQuarter3D.md") if args.quick
-                       else os.path.join(ROOT, "docs", "benchmarks",
-                                         "blastQuarter3D.md"))
+    doc = bench.reportPath(args.doc, args.quick, out, ROOT,
+                           "blastQuarter3D.md")
     os.makedirs(out, exist_ok=True)
-    env = foamEnv()
+    env = bench.foamEnv(ROOT)
     start = datetime.datetime.utcnow()
-    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"],
-                            cwd=ROOT, stdout=subprocess.PIPE,
-                            text=True).stdout.strip()
-    dirty = subprocess.run(["git", "status", "--porcelain", "--", "src",
-                            "applications", "tutorials/blast",
-                            "bench/blast"], cwd=ROOT,
-                           stdout=subprocess.PIPE, text=True).stdout.strip()
+    commit = bench.commit(ROOT)
+    dirty = bench.uncommitted(ROOT, SOURCES)
     f0 = size["factors"][0]
     if args.reportOnly:
         rows = [parseLevel(f, out, size["endTime"])
@@ -196,24 +145,11 @@ def main():
             if args.ranks > 1 else None
         cases = [os.path.join(out, f"quarter3D_{f}")
                  for f in size["factors"]]
-        info = {open(os.path.join(c, "bench.commit")).read().strip()
-                for c in cases if os.path.exists(os.path.join(c,
-                                                              "bench.commit"))}
-        if args.commit:
-            info = {args.commit}
-        if len(info) != 1:
-            raise RuntimeError("--reportOnly: the levels' commit is unknown "
-                               f"or not one ({info}); give --commit")
-        commit, dirty = info.pop(), ""
-        if commit.endswith("+"):
-            commit, dirty = commit[:-1], "yes"
+        commit, dirty = bench.stampedCommit(cases, args.commit)
         # the first level's start: its copy of plotBlast.py
-        start = datetime.datetime.utcfromtimestamp(min(
-            os.path.getmtime(os.path.join(c, "plotBlast.py"))
-            for c in cases))
-        endT = datetime.datetime.utcfromtimestamp(max(
-            os.path.getmtime(os.path.join(c, "quarter3D", "log.time"))
-            for c in cases))
+        start, endT = bench.runPeriod(
+            [os.path.join(c, "plotBlast.py") for c in cases],
+            [os.path.join(c, "quarter3D", "log.time") for c in cases])
     else:
         rows, par = [], None
         for f in size["factors"]:
@@ -221,11 +157,8 @@ def main():
             if f == f0 and args.ranks > 1:
                 par = runLevel(f, out, size["endTime"], env, args.ranks)
             for n in {1, args.ranks if f == f0 else 1}:
-                with open(os.path.join(caseDir(out, f, n), "bench.commit"),
-                          "w") as o:
-                    o.write(commit + ("+" if dirty else "") + "\n")
+                bench.stampCommit(caseDir(out, f, n), commit, dirty)
         endT = datetime.datetime.utcnow()
-    elapsed = (endT - start).total_seconds()
     end = size["endTime"]*1e9
     L = []
     w = L.append
@@ -238,14 +171,8 @@ def main():
       "the 3D quarter: docs/results/blast3D.md; of the axisymmetric "
       "preview per mesh: [blast.md](blast.md).")
     w("")
-    w(f"Written by `bench/blast/quarter3D.py` ({mode}) on "
-      f"{start.strftime('%Y-%m-%d %H:%M')} UTC, commit {commit}"
-      + (" (with uncommitted changes in src/, applications/, "
-         "tutorials/blast or bench/blast)" if dirty else "")
-      + f", {elapsed:.0f} s in all, the levels one after the other"
-      + (f" (this text regenerated with --reportOnly on "
-         f"{datetime.datetime.utcnow().strftime('%Y-%m-%d %H:%M')} UTC "
-         "from the same level cases)" if args.reportOnly else "")
+    w(bench.levelsWrittenBy("bench/blast/quarter3D.py", mode, start, endT,
+                            commit, dirty, SOURCES_TEXT, args.reportOnly)
       + ", on "
       f"{os.cpu_count()} cores shared with other engineers' builds and "
       "runs (load average at the end of each level in the table): the "
@@ -278,8 +205,7 @@ def main():
           f"{r['itMean']:.2f} / {r['itMax']} | {r['notConverged']} | "
           f"{r['cpu']:.1f}{fail} | {per:.4f} | {1e6*per/r['cells']:.2f} | "
           f"{r['wall']:.1f} | {r['rss']:.0f} | "
-          + ("-" if r["load"][0] != r["load"][0] else f"{r['load'][0]:.2f}")
-          + " |")
+          + bench.loadColumn(r["load"]) + " |")
     w("")
     if len(rows) > 1 and all(r["rc"] == 0 for r in rows):
         a, b = rows[0], rows[-1]
@@ -329,10 +255,7 @@ def main():
          f"{par['ranks']} --bind-to none cellBlastFoam -parallel`"
          if par else "") + ".")
     w("")
-    os.makedirs(os.path.dirname(doc), exist_ok=True)
-    open(doc, "w").write("\n".join(L))
-    print("\n".join(L))
-    print(f"wrote {doc}")
+    bench.writeReport(doc, L)
     if any(r["rc"] != 0 for r in rows + ([par] if par else [])):
         sys.exit(1)
 

@@ -30,18 +30,15 @@ to 25 ns (about 2-3 min), written into --out (default bench/blast/output).
 Writes docs/benchmarks/blast.md and blast_cost_vs_error.png (full) or
 <out>/blast.md and its PNG (quick).
 """
-import argparse
 import datetime
 import math
 import os
-import re
 import shutil
-import subprocess
 import sys
 
 import numpy as np
 
-from neuronFsi import logs, msh, postProcessing
+from neuronFsi import bench, logs, msh, postProcessing, scratch
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
@@ -55,15 +52,7 @@ SIZES = {
                   window=2.5e-8),
 }
 ARRIVAL = 25e6          # [Pa] arrival: first probe pressure above it
-
-
-def foamEnv():
-    """The environment of etc/bashrc, sourced once."""
-    res = subprocess.run(["bash", "-c", f". '{ROOT}/etc/bashrc' > /dev/null"
-                          " 2>&1 && env -0"], stdout=subprocess.PIPE,
-                         check=True)
-    return dict(v.split("=", 1) for v in
-                res.stdout.decode().split("\0") if "=" in v)
+SOURCES, SOURCES_TEXT = bench.measuredCode("blast")
 
 
 def prepare(case, f, Z, endTime, env, extra=(), pulse=PULSE):
@@ -72,36 +61,21 @@ def prepare(case, f, Z, endTime, env, extra=(), pulse=PULSE):
     (sizes scaled by f; extra: more Allrun options)"""
     if os.path.exists(case):
         shutil.rmtree(case)
-    os.makedirs(case)
-    for s in ("fluidWedgeMesh.py", "plotBlast.py"):
-        shutil.copy(os.path.join(TUTORIAL, s), case)
+    scratch.copyInputs(TUTORIAL, case,
+                       ("fluidWedgeMesh.py", "plotBlast.py"))
     c = os.path.join(case, "axisymmetricPreview")
-    os.makedirs(c)
-    src = os.path.join(TUTORIAL, "axisymmetricPreview")
-    for s in ("0.orig", "constant", "system"):
-        shutil.copytree(os.path.join(src, s), os.path.join(c, s))
-    for s in ("Allrun", "Allclean"):
-        shutil.copy(os.path.join(src, s), c)
-    for s in ("constant/cell.msh", "constant/polyMesh",
-              "system/blockMeshDict"):
-        p = os.path.join(c, s)
-        if os.path.isdir(p):
-            shutil.rmtree(p)
-        elif os.path.exists(p):
-            os.remove(p)
+    scratch.copyInputs(os.path.join(TUTORIAL, "axisymmetricPreview"), c,
+                     ("0.orig", "constant", "system", "Allrun", "Allclean"),
+                     ("cell.msh", "polyMesh", "blockMeshDict"))
     x = float(f)
     sizes = {k: v*x for k, v in DEFAULT.items()}
     cmd = ["./Allrun", "-noRun", "-noPlots", "-pulse", f"{pulse:g}",
            "-h", f"{sizes['h']:.6g}", "-far", f"{sizes['far']:.6g}",
            "-cell", f"{sizes['cell']:.6g}", "-Z", f"{Z:g}",
            "-endTime", f"{endTime:g}"] + list(extra)
-    res = subprocess.run(cmd, cwd=c, env=env, stdout=subprocess.PIPE,
-                         stderr=subprocess.STDOUT, text=True)
-    with open(os.path.join(c, "log.Allrun"), "w") as o:
-        o.write(res.stdout)
+    res = bench.runLogged(cmd, c, env, "log.Allrun")
     if res.returncode != 0:
-        sys.stdout.write(res.stdout[-3000:])
-        raise RuntimeError(f"Allrun -noRun failed in {c}")
+        bench.fail(res, f"Allrun -noRun failed in {c}")
     return c, sizes, "gmsh fallback" in res.stdout, " ".join(cmd)
 
 
@@ -143,12 +117,7 @@ def runLevel(f, out, size, env):
     print(f"factor {f}: {cells} fluid cells, {elements} solid elements "
           f"(h {sizes['h']:.3g} m, far {sizes['far']:.3g} m, cell "
           f"{sizes['cell']:.3g} m); running cellBlastFoam ...", flush=True)
-    subprocess.run(["/usr/bin/time", "-v", "-o", "log.time",
-                    "cellBlastFoam"], cwd=c, env=env,
-                   stdout=open(os.path.join(c, "log.cellBlastFoam"), "w"),
-                   stderr=subprocess.STDOUT)
-    with open(os.path.join(c, "log.load"), "w") as o:
-        o.write("%.2f %.2f %.2f\n" % os.getloadavg())
+    bench.runTimed(c, ["cellBlastFoam"], env, "log.cellBlastFoam")
     return parseLevel(f, out, size)
 
 
@@ -172,14 +141,11 @@ def parseLevel(f, out, size, name=None):
             os.path.join(c, "log.time")).read() else 0
     (cpu, wall), atWindow, tLast, split = logTimes(
         os.path.join(c, "log.cellBlastFoam"), window)
-    lp = os.path.join(c, "log.load")
-    loadAvg = [float(v) for v in open(lp).read().split()] \
-        if os.path.exists(lp) else [float("nan")]*3
     r = dict(factor=f, sizes=sizes, cells=cells, elements=elements,
              fallback=fallback, cmd=cmd, case=c, rc=rc,
              tLast=tLast, rss=rss, cpuTimeV=cpuTimeV, wallTimeV=wallTimeV,
              cpu=cpu, wall=wall, atWindow=atWindow, split=split,
-             load=loadAvg)
+             load=bench.loadAverage(c))
     if rc != 0:
         log = os.path.join(c, "log.cellBlastFoam")
         tail = logs.text(log)[-4000:]
@@ -187,21 +153,14 @@ def parseLevel(f, out, size, name=None):
         r["error"] = (m[-1] if m else tail[-1500:]).strip()
         print(f"factor {f}: cellBlastFoam FAILED (exit {rc}) "
               f"at t = {tLast} s:\n{r['error']}", flush=True)
-    d = postProcessing.series(c, "fsi/coupling.dat")
-    r.update(steps=len(d), itMean=d[:, 2].mean(), itMax=int(d[:, 2].max()),
-             notConverged=int(np.sum(d[:, 4] == 0)), dtMin=d[:, 1].min(),
-             dtMax=d[:, 1].max())
+    r.update(bench.couplingStatistics(c))
     pf = "solidProbes/solidProbes.dat"
     # the probe point and the element that samples it (its centroid)
-    for line in postProcessing.header(c, pf):
-        m = re.match(r"probe 0 at \((\S+) (\S+) \S+\) m: element (\d+) "
-                     r"\(\"(\w+)\", centroid (\S+) (\S+) ", line)
-        if m:
-            pr0 = np.array([float(m.group(1)), float(m.group(2))])
-            ce = np.array([float(m.group(5)), float(m.group(6))])
-            r.update(probePoint=pr0, probeElement=int(m.group(3)),
-                     probeRegion=m.group(4), probeCentroid=ce,
-                     probeOffset=float(np.linalg.norm(ce - pr0)))
+    for probe in postProcessing.probes(c, pf)[:1]:
+        pr0, ce = probe["point"][:2], probe["centroid"][:2]
+        r.update(probePoint=pr0, probeElement=probe["element"],
+                 probeRegion=probe["region"], probeCentroid=ce,
+                 probeOffset=float(np.linalg.norm(ce - pr0)))
     p = postProcessing.series(c, pf)
     nProbe = (p.shape[1] - 1)//7
     base = 1 + 5*nProbe
@@ -311,23 +270,16 @@ def successive(good):
 
 def report(rows, size, mode, start, png, commit, dirty, end,
            reportOnly=False):
-    elapsed = (end - start).total_seconds()
     good = [r for r in rows if r["rc"] == 0]
     ref = min(good, key=lambda r: float(r["factor"]))
     win = size["window"]*1e9
-    end = size["endTime"]*1e9
+    endNs = size["endTime"]*1e9
     L = []
     w = L.append
     w("# Blast preview per mesh: cost against error")
     w("")
-    w(f"Written by `bench/blast/run.py` ({mode}) on "
-      f"{start.strftime('%Y-%m-%d %H:%M')} UTC, commit {commit}"
-      + (" (with uncommitted changes in src/, applications/, "
-         "tutorials/blast or bench/blast)" if dirty else "")
-      + f", {elapsed:.0f} s in all, the levels one after the other"
-      + (f" (this text regenerated with --reportOnly on "
-         f"{datetime.datetime.utcnow().strftime('%Y-%m-%d %H:%M')} UTC "
-         "from the same level cases)" if reportOnly else "") + ". "
+    w(bench.levelsWrittenBy("bench/blast/run.py", mode, start, end, commit,
+                            dirty, SOURCES_TEXT, reportOnly) + ". "
       f"Machine: {os.cpu_count()} cores shared with other engineers' builds "
       "and runs (load average at the end of each level in the table), so "
       "wall times are noisy: the CPU time of cellBlastFoam is the one-core "
@@ -336,8 +288,8 @@ def report(rows, size, mode, start, png, commit, dirty, end,
     w(f"Case `tutorials/blast/axisymmetricPreview` as committed: the average"
       f" cell on the rigid substrate, a {size['Z']*1e6:.0f} um water column "
       f"of radius 50 um, 50 MPa on the top face for {PULSE*1e9:.0f} ns, to "
-      f"{end:.0f} ns. Level x f: fluid {DEFAULT['h']*1e6:g} f um at the cell,"
-      f" {DEFAULT['far']*1e6:g} f um in the column, solid "
+      f"{endNs:.0f} ns. Level x f: fluid {DEFAULT['h']*1e6:g} f um at the "
+      f"cell, {DEFAULT['far']*1e6:g} f um in the column, solid "
       f"{DEFAULT['cell']*1e6:g} f um (membrane 0.8 of it), all scaled "
       "together so that the fluid faces at the cell stay 0.625 of the "
       "membrane faces (the default's ratio; with fluid faces as large as the "
@@ -363,8 +315,7 @@ def report(rows, size, mode, start, png, commit, dirty, end,
           f"{r['dtMin']:.3g}-{r['dtMax']:.3g} | {r['itMean']:.2f} / "
           f"{r['itMax']} | {r['notConverged']} | {cw} | {r['cpu']:.1f}{end_}"
           f" | {r['wall']:.1f} | {r['rss']:.0f} | "
-          + ("-" if math.isnan(r["load"][0]) else f"{r['load'][0]:.2f}")
-          + " |")
+          + bench.loadColumn(r["load"]) + " |")
     w("")
     w(f"Fig. 10 probe (t <= {win:.0f} ns) and the difference to the finest "
       f"level (x{ref['factor']}): relative [%] for the peaks, [ns] for the "
@@ -462,11 +413,8 @@ def report(rows, size, mode, start, png, commit, dirty, end,
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true",
-                    help="20 um column to 25 ns, output in --out")
-    ap.add_argument("--out", default=os.path.join(HERE, "output"))
-    ap.add_argument("--doc", default=None)
+    ap = bench.arguments(__doc__, os.path.join(HERE, "output"),
+                         "20 um column to 25 ns, output in --out")
     ap.add_argument("--factors", default=None,
                     help="size factors, coarsest first, e.g. '1.4 1 0.7'")
     ap.add_argument("--endTime", type=float, default=None, help="[s]")
@@ -485,49 +433,27 @@ def main():
         size["endTime"] = args.endTime
         size["window"] = min(size["window"], args.endTime)
     out = os.path.abspath(args.out)
-    doc = args.doc or (os.path.join(out, "blast.md") if args.quick
-                       else os.path.join(ROOT, "docs", "benchmarks",
-                                         "blast.md"))
+    doc = bench.reportPath(args.doc, args.quick, out, ROOT, "blast.md")
     os.makedirs(out, exist_ok=True)
     os.makedirs(os.path.dirname(doc), exist_ok=True)
-    env = foamEnv()
+    env = bench.foamEnv(ROOT)
     start = datetime.datetime.utcnow()
     # the commit of the code that runs (taken before the run)
-    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"],
-                            cwd=ROOT, stdout=subprocess.PIPE,
-                            text=True).stdout.strip()
-    dirty = subprocess.run(["git", "status", "--porcelain", "--", "src",
-                            "applications", "tutorials/blast",
-                            "bench/blast"], cwd=ROOT,
-                           stdout=subprocess.PIPE, text=True).stdout.strip()
+    commit = bench.commit(ROOT)
+    dirty = bench.uncommitted(ROOT, SOURCES)
     if args.reportOnly:
         rows = [parseLevel(f, out, size) for f in size["factors"]]
         cases = [os.path.dirname(r["case"]) for r in rows]
-        info = {open(os.path.join(c, "bench.commit")).read().strip()
-                for c in cases if os.path.exists(os.path.join(c,
-                                                              "bench.commit"))}
-        if args.commit:
-            info = {args.commit}
-        if len(info) != 1:
-            raise RuntimeError("--reportOnly: the levels' commit is unknown "
-                               f"or not one ({info}); give --commit")
-        commit, dirty = info.pop(), ""
-        if commit.endswith("+"):
-            commit, dirty = commit[:-1], "yes"
+        commit, dirty = bench.stampedCommit(cases, args.commit)
         # the first level's start: its copy of fluidWedgeMesh.py
-        start = datetime.datetime.utcfromtimestamp(min(
-            os.path.getmtime(os.path.join(c, "fluidWedgeMesh.py"))
-            for c in cases))
-        end = datetime.datetime.utcfromtimestamp(max(
-            os.path.getmtime(os.path.join(r["case"], "log.time"))
-            for r in rows))
+        start, end = bench.runPeriod(
+            [os.path.join(c, "fluidWedgeMesh.py") for c in cases],
+            [os.path.join(r["case"], "log.time") for r in rows])
     else:
         rows = []
         for f in size["factors"]:
             rows.append(runLevel(f, out, size, env))
-            with open(os.path.join(out, f"level_{f}", "bench.commit"),
-                      "w") as o:
-                o.write(commit + ("+" if dirty else "") + "\n")
+            bench.stampCommit(os.path.join(out, f"level_{f}"), commit, dirty)
         end = datetime.datetime.utcnow()
     if not any(r["rc"] == 0 for r in rows):
         raise RuntimeError("every level failed")
@@ -535,10 +461,7 @@ def main():
     lines, ref = report(rows, size, mode, start, png, commit, dirty, end,
                         args.reportOnly)
     plot(rows, ref, size, os.path.join(os.path.dirname(doc), png))
-    with open(doc, "w") as f:
-        f.write("\n".join(lines))
-    print("\n".join(lines))
-    print(f"wrote {doc}")
+    bench.writeReport(doc, lines)
     if any(r["rc"] != 0 for r in rows):
         sys.exit(1)
 

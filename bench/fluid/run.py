@@ -28,8 +28,9 @@ import os
 import re
 import shutil
 import subprocess
-import sys
 import time
+
+from neuronFsi import bench, scratch
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 TUTORIALS = os.path.join(ROOT, "tutorials", "verification")
@@ -53,29 +54,14 @@ SOD_CO = 0.2            # [-]
 SOD_LENGTH = 10.0       # tube length [m]
 
 
-def foam_env():
-    """The environment of etc/bashrc, sourced once."""
-    res = subprocess.run(["bash", "-c", f". '{ROOT}/etc/bashrc' > /dev/null"
-                          " 2>&1 && env -0"], stdout=subprocess.PIPE,
-                         check=True)
-    return dict(v.split("=", 1) for v in
-                res.stdout.decode().split("\0") if "=" in v)
-
-
-ENV = foam_env()
+ENV = bench.foamEnv(ROOT)
 
 
 def foam(cmd, cwd, log=None):
     """Run a shell command in the project environment; raise on failure."""
-    res = subprocess.run(["bash", "-c", cmd], cwd=cwd, env=ENV,
-                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                         text=True)
-    if log:
-        with open(os.path.join(cwd, log), "w") as f:
-            f.write(res.stdout)
+    res = bench.runLogged(["bash", "-c", cmd], cwd, ENV, log)
     if res.returncode != 0:
-        sys.stdout.write(res.stdout[-3000:])
-        raise RuntimeError(f"'{cmd}' failed in {cwd} (exit {res.returncode})")
+        bench.fail(res, f"'{cmd}' failed in {cwd} (exit {res.returncode})")
     return res.stdout
 
 
@@ -91,13 +77,8 @@ def copy_tutorial(name, dst, stock=False):
     stock, the rhoCentralFoam overlay on top."""
     if os.path.exists(dst):
         shutil.rmtree(dst)
-    src = os.path.join(TUTORIALS, name)
-    os.makedirs(dst)
-    for d in ("0.orig", "system"):
-        shutil.copytree(os.path.join(src, d), os.path.join(dst, d))
-    shutil.copytree(os.path.join(src, "constant"),
-                    os.path.join(dst, "constant"),
-                    ignore=shutil.ignore_patterns("polyMesh"))
+    scratch.copyInputs(os.path.join(TUTORIALS, name), dst,
+                     ("0.orig", "system", "constant"), ("polyMesh",))
     if stock:
         shutil.copytree(STOCK_OVERLAY, dst, dirs_exist_ok=True)
     app = "rhoCentralFoam" if stock else "rhoRiemannFoam"
@@ -486,18 +467,14 @@ def main():
                     help="which measurements, e.g. 13")
     args = ap.parse_args()
     size = SIZES["quick" if args.quick else "full"]
-    doc = args.doc or (os.path.join(args.out, "fluid.md") if args.quick
-                       else os.path.join(ROOT, "docs", "benchmarks",
-                                         "fluid.md"))
+    doc = bench.reportPath(args.doc, args.quick, args.out, ROOT, "fluid.md")
     docDir = os.path.dirname(os.path.abspath(doc))
     os.makedirs(args.out, exist_ok=True)
     os.makedirs(docDir, exist_ok=True)
 
     start = time.perf_counter()
     load0 = loadavg()
-    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"],
-                            cwd=ROOT, stdout=subprocess.PIPE,
-                            text=True).stdout.strip()
+    commit = bench.commit(ROOT)
     parts = {}
     summary = []
     if "1" in args.parts:

@@ -15,11 +15,12 @@ Full: size factors 1.4 1 0.7 0.5 (about 4 min CPU); --quick: 1.4 and 1
 geometry are whatever is committed in tutorials/indentation/averageCell.
 Writes docs/benchmarks/indentation.md and indentation_cost_vs_error.png.
 """
-import argparse
 import datetime
 import os
 import subprocess
 import sys
+
+from neuronFsi import bench
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
@@ -88,18 +89,15 @@ def plot(rows, path):
 
 def report(rows, size, start, case):
     elapsed = (datetime.datetime.now() - start).total_seconds()
-    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"],
-                            cwd=ROOT, stdout=subprocess.PIPE,
-                            text=True).stdout.strip()
+    commit = bench.commit(ROOT)
     load = " ".join(f"{x:.2f}" for x in os.getloadavg())
     ref = rows[-1]
     L = []
     w = L.append
     w("# Indentation protocol per mesh: cost against error")
     w("")
-    stamp = start.strftime("%Y-%m-%d %H:%M")
-    w(f"Written by `bench/indentation/run.py` ({size}) on {stamp} UTC, "
-      f"commit {commit}, {elapsed:.0f} s in all; load average "
+    w(bench.writtenBy("bench/indentation/run.py", start, commit, size)
+      + f", {elapsed:.0f} s in all; load average "
       f"at the end {load} on {os.cpu_count()} shared cores, so wall times "
       "are noisy: the CPU time of the process is the one-core cost.")
     w("")
@@ -135,18 +133,14 @@ def report(rows, size, start, case):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true",
-                    help="two coarse meshes, output in --out")
-    ap.add_argument("--out", default=os.path.join(HERE, "output"))
-    ap.add_argument("--doc", default=None)
+    ap = bench.arguments(__doc__, os.path.join(HERE, "output"),
+                         "two coarse meshes, output in --out")
     ap.add_argument("--case", default="averageCell")
     args = ap.parse_args()
     size = "quick" if args.quick else "full"
     out = os.path.abspath(args.out)
-    doc = args.doc or (os.path.join(out, "indentation.md") if args.quick
-                       else os.path.join(ROOT, "docs", "benchmarks",
-                                         "indentation.md"))
+    doc = bench.reportPath(args.doc, args.quick, out, ROOT,
+                           "indentation.md")
     os.makedirs(out, exist_ok=True)
     os.makedirs(os.path.dirname(doc), exist_ok=True)
     start = datetime.datetime.utcnow()
@@ -155,10 +149,7 @@ def main():
     png = "indentation_cost_vs_error.png"
     plot(rows, os.path.join(os.path.dirname(doc), png))
     lines += [f"![peak-force difference against CPU time]({png})", ""]
-    with open(doc, "w") as f:
-        f.write("\n".join(lines))
-    print("\n".join(lines))
-    print(f"wrote {doc}")
+    bench.writeReport(doc, lines)
 
 
 if __name__ == "__main__":

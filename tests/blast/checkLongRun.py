@@ -10,37 +10,32 @@ import sys
 import numpy as np
 
 from neuronFsi import logs, postProcessing
+from neuronFsi.checks import Checks
 from neuronFsi.solidResults import SolidResults
 
 case, endTime = sys.argv[1], float(sys.argv[2])
-ok = True
-
-
-def check(name, good, text):
-    global ok
-    ok &= bool(good)
-    print(f"{'ok  ' if good else 'FAIL'} {name}: {text}")
+check = Checks()
 
 
 log = f"{case}/log.cellBlastFoam"
 done = logs.completed(log)
-check("run completed", done,
-      "log ends with End" if done else "no End in the log, or FATAL")
+check(done, "run completed: "
+      + ("log ends with End" if done else "no End in the log, or FATAL"))
 coupling = postProcessing.series(case, "fsi/coupling.dat")
 # OpenFOAM's own criterion: the run ends within half a step of endTime
-check("end time reached", coupling[-1, 0] >= endTime - 0.5*coupling[-1, 1],
-      f"last step at {coupling[-1, 0]:.6g} s (dt {coupling[-1, 1]:.3g} s) "
-      f"of {endTime:g} s")
+check(coupling[-1, 0] >= endTime - 0.5*coupling[-1, 1],
+      f"end time reached: last step at {coupling[-1, 0]:.6g} s (dt "
+      f"{coupling[-1, 1]:.3g} s) of {endTime:g} s")
 try:
     m = logs.couplingSummary(log)
 except logs.LogError:
     m = None
-check("coupling converged every step", m and m["notConverged"] == 0,
-      m["line"] if m else "no coupling summary")
+check(m and m["notConverged"] == 0, "coupling converged every step: "
+      + (m["line"] if m else "no coupling summary"))
 
 probes = postProcessing.series(case, "solidProbes/solidProbes.dat")
-check("pulse reached the probe", probes[:, 1].max() > 25e6,
-      f"peak pressure {probes[:, 1].max()/1e6:.4g} MPa")
+check(probes[:, 1].max() > 25e6, "pulse reached the probe: peak pressure "
+      f"{probes[:, 1].max()/1e6:.4g} MPa")
 
 # Rest after the pulse: particle velocity of the 50 MPa pulse in water is
 # 33 m/s; once it has left (t >= 110 ns) no node may keep 10 % of it
@@ -52,9 +47,9 @@ with SolidResults(f"{case}/solid/solid.h5") as f:
     vmax = max(np.abs(f.field(k, "velocity")).max() for k in late)
     Jmin = min(f.field(k, "J").min() for k in steps)
     Jmax = max(f.field(k, "J").max() for k in steps)
-check("no drift after the pulse", vmax < 0.1*up,
-      f"largest nodal speed component from 110 ns {vmax:.3g} m/s "
-      f"(< {0.1*up:.3g} m/s) over {len(late)} writes")
-check("elements stay sound", Jmin > 0.9 and Jmax < 1.1,
-      f"element dilatation J in [{Jmin:.4f}, {Jmax:.4f}]")
-sys.exit(0 if ok else 1)
+check(vmax < 0.1*up, "no drift after the pulse: largest nodal speed "
+      f"component from 110 ns {vmax:.3g} m/s (< {0.1*up:.3g} m/s) over "
+      f"{len(late)} writes")
+check(Jmin > 0.9 and Jmax < 1.1, "elements stay sound: element dilatation "
+      f"J in [{Jmin:.4f}, {Jmax:.4f}]")
+sys.exit(check.exitStatus())

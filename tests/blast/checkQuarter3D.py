@@ -11,27 +11,18 @@ velocities below 1e-9 m/s, instead of the arrival)"""
 import glob
 import math
 import os
-import re
 import sys
 import numpy as np
 
-from neuronFsi import foamDict, logs, postProcessing
+from neuronFsi import foamDict, foamField, logs, postProcessing
+from neuronFsi.checks import Checks
 
 case, L = sys.argv[1], float(sys.argv[2])
 mode = sys.argv[3] if len(sys.argv) > 3 else "arrival"
 if mode not in ("arrival", "atRest"):
     sys.exit(f"checkQuarter3D.py: mode {mode}: arrival or atRest")
 a, H = 8.4e-6, 7.9e-6
-ok = True
-
-
-def check(name, value, ref, tol):
-    global ok
-    err = abs(value - ref)/abs(ref)
-    good = err <= tol
-    ok &= good
-    print(f"{'ok  ' if good else 'FAIL'} {name}: {value:.10g} vs {ref:.10g}"
-          f" (relative {err:.2e}, tolerance {tol:g})")
+check = Checks()
 
 
 # Unit pressure on the quarter cell surface: the force is minus the
@@ -42,9 +33,9 @@ log = f"{case}/log.cellBlastFoam"
 fluid, solid = logs.fsiMapCheck(log)
 exact = [-math.pi*a*H/4, -math.pi*a*H/4, -math.pi*a*a/4]
 for i, c in enumerate("xyz"):
-    check(f"map conservation, {c}", solid[i], fluid[i], 1e-12)
-    check(f"unit-pressure force {c} = minus the projected area", fluid[i],
-          exact[i], 1e-2)
+    check.relative(f"map conservation, {c}", solid[i], fluid[i], 1e-12)
+    check.relative(f"unit-pressure force {c} = minus the projected area",
+                   fluid[i], exact[i], 1e-2)
 
 # load pressure (the fluid pressure on the solid's own faces): its total
 # force for a unit pressure is the solid surface's, within 1 % of the exact
@@ -53,60 +44,42 @@ m = logs.pressureLoadCheck(log)
 pressureLoad = foamDict.read(f"{case}/constant/fsiProperties").get(
     "interface", {}).get("load") == "pressure"
 if pressureLoad and not m:
-    print("FAIL load pressure is set, but the log has no unit-pressure "
+    check(False, "load pressure is set, but the log has no unit-pressure "
           "check of it")
-    ok = False
 if m:
     ps, pf = m
     for i, c in enumerate("xyz"):
-        check(f"pressure load, unit-pressure force {c} = minus the projected "
-              "area", ps[i], exact[i], 1e-2)
-        check(f"pressure load against the fluid's force, {c}", ps[i], pf[i],
-              5e-3)
+        check.relative(f"pressure load, unit-pressure force {c} = minus "
+                       "the projected area", ps[i], exact[i], 1e-2)
+        check.relative(f"pressure load against the fluid's force, {c}",
+                       ps[i], pf[i], 5e-3)
 
 # Arrival at the probe element (its centroid from the header)
-zc = None
-for line in postProcessing.header(case, "solidProbes/solidProbes.dat"):
-    if line.startswith("probe 0"):
-        zc = float(re.search(r"centroid \S+ \S+ (\S+) ", line).group(1))
+zc = postProcessing.probes(case)[0]["centroid"][2]
 d = postProcessing.series(case, "solidProbes/solidProbes.dat")
 if not np.isfinite(d).all():
-    print("FAIL NaN or Inf in solidProbes.dat")
+    check(False, "NaN or Inf in solidProbes.dat")
     sys.exit(1)
 t, p = d[:, 0], d[:, 1]
 c = postProcessing.series(case, "fsi/coupling.dat")
 if mode == "atRest":
     vmax = c[:, 8].max()
-    good = vmax < 1e-9 and abs(p).max() < 1.0
-    ok &= good
-    print(f"{'ok  ' if good else 'FAIL'} at rest to {c[-1, 0]:.4g} s: largest"
+    check(vmax < 1e-9 and abs(p).max() < 1.0,
+          f"at rest to {c[-1, 0]:.4g} s: largest"
           f" interface velocity {vmax:.3g} m/s (< 1e-9), probe pressure"
           f" {abs(p).max():.3g} Pa (< 1)")
 rho0, C0, s, pulse = 1000.0, 1450.0, 1.99, 50e6
 up = (-C0 + math.sqrt(C0**2 + 4*s*pulse/rho0))/(2*s)
 Us = C0 + s*up
 if mode == "arrival" and p.max() < 0.5*pulse:
-    print(f"FAIL the pulse reached the probe with {p.max()/1e6:.3g} MPa only")
+    check(False, "the pulse reached the probe with "
+          f"{p.max()/1e6:.3g} MPa only")
     sys.exit(1)
 if mode == "arrival":
     arrival = t[np.argmax(p > p.max()/2)]
-    check(f"arrival at the probe (z = {zc*1e6:.3f} um, Us = {Us:.2f} m/s)"
-          " [s]", arrival, 0.05e-9 + (L - zc)/Us, 0.03)
+    check.relative(f"arrival at the probe (z = {zc*1e6:.3f} um, Us = "
+                   f"{Us:.2f} m/s) [s]", arrival, 0.05e-9 + (L - zc)/Us, 0.03)
 
-
-
-def read_points(f):
-    """OpenFOAM pointField, ascii or binary"""
-    raw = open(f, "rb").read()
-    head = raw[:raw.index(b"}") + 1].decode()
-    m = re.search(rb"\n(\d+)\s*\(", raw[len(head):])
-    n = int(m.group(1))
-    start = len(head) + m.end()
-    if re.search(r"format\s+binary", head):
-        return np.frombuffer(raw[start:start + 24*n], dtype="<f8").reshape(n, 3)
-    body = raw[start:].decode()
-    pts = re.findall(r"\(([^()]*)\)", body)[:n]
-    return np.array([[float(v) for v in q.split()] for q in pts])
 
 
 # Points that start on the planes x = 0, y = 0 (symmetry) and z = 0
@@ -116,28 +89,26 @@ def read_points(f):
 times = [d for d in glob.glob(f"{case}/[0-9]*")
          if os.path.isfile(f"{d}/polyMesh/points")]
 if not times:
-    print("FAIL no moved mesh points written")
+    check(False, "no moved mesh points written")
     sys.exit(1)
 last = max(times, key=lambda d: float(os.path.basename(d)))
-x0 = read_points(f"{case}/constant/polyMesh/points")
-x1 = read_points(f"{last}/polyMesh/points")
+x0 = foamField.points(f"{case}/constant/polyMesh/points")
+x1 = foamField.points(f"{last}/polyMesh/points")
 moved = np.abs(x1 - x0).max()
 for k, plane in enumerate(("x = 0", "y = 0", "z = 0")):
     # gmsh writes some of them at 1e-21 m: that offset must not change
     on = np.abs(x0[:, k]) < 1e-15
     off = np.abs(x1[on, k] - x0[on, k]).max()
-    good = off == 0 and on.sum() > 0
-    ok &= good
-    print(f"{'ok  ' if good else 'FAIL'} {on.sum()} fluid points on {plane}:"
+    check(off == 0 and on.sum() > 0,
+          f"{on.sum()} fluid points on {plane}:"
           f" largest motion normal to the plane to t = "
           f"{os.path.basename(last)} s {off:.3g} m (exactly 0 asked; the"
           f" mesh moved up to {moved:.3g} m)")
 
 nc = int(np.sum(c[:, 4] == 0))
 finite = bool(np.isfinite(c).all())
-print(f"{'ok  ' if nc == 0 and finite else 'FAIL'} coupling: {len(c)} "
+check(nc == 0 and finite, f"coupling: {len(c)} "
       f"steps, iterations mean {c[:, 2].mean():.2f} max {int(c[:, 2].max())},"
       f" {nc} not converged, finite {finite}; peak probe pressure "
       f"{p.max()/1e6:.2f} MPa")
-ok &= nc == 0 and finite
-sys.exit(0 if ok else 1)
+sys.exit(check.exitStatus())

@@ -56,18 +56,15 @@ mpirun -np 2 rhoRiemannFoam -parallel > log.solver 2>&1 || { tail log.solver; ex
 reconstructPar -latestTime > log.reconstruct 2>&1
 cd "$work"
 /usr/bin/python3 - serial parallel <<'PY'
-import re, sys
+import sys
 import numpy as np
+from neuronFsi.foamField import internalField
 def probes(case):
     return np.loadtxt(f"{case}/postProcessing/fluidProbes/0/p", comments="#")
-def field(case):
-    s = open(f"{case}/1.5e-08/p").read()
-    m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*\n?(\d+)\s*\n?\(\n(.*?)\n\)", s, re.S)
-    return np.array(m.group(2).split(), float)
 a, b = probes(sys.argv[1]), probes(sys.argv[2])
 ok = a.shape == b.shape and np.allclose(a[:, 0], b[:, 0], rtol=1e-12, atol=0)
 dp = np.max(np.abs(a[:, 1:] - b[:, 1:]))/np.max(np.abs(a[:, 1:])) if ok else np.inf
-fa, fb = field(sys.argv[1]), field(sys.argv[2])
+fa, fb = (internalField(f"{c}/1.5e-08/p") for c in sys.argv[1:3])
 df = np.max(np.abs(fa - fb))/np.max(np.abs(fa))
 peak = np.max(a[:, 1:], axis=0)/1e6
 print(f"fluid3DParallel: {fa.size} cells, {len(a)} probe samples, probe peaks "

@@ -34,20 +34,15 @@ import tempfile
 import numpy as np
 
 from neuronFsi import msh
+from neuronFsi.checks import Checks
 
 root = os.path.abspath(os.path.join(os.path.dirname(__file__), "../.."))
 D, H, t, f = 16.8e-6, 7.9e-6, 200e-9, 1.0/3.0
 a = D/2
-failures = []
+check = Checks()
 # The solid library's reader check (tests/cellMesh/solidReadCheck.C), if
 # given as the second argument
 checker = sys.argv[2] if len(sys.argv) > 2 else None
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
 
 
 def run(case, entries):
@@ -363,5 +358,5 @@ def scaledNucleus():
 {"axisymmetric": axisymmetric, "quarter3D": quarter3D,
  "full3D": full3D, "shapes3D": shapes3D,
  "docExample": docExample, "scaledNucleus": scaledNucleus}[sys.argv[1]]()
-print(f"testCellMesh {sys.argv[1]}: {len(failures)} failed")
-sys.exit(1 if failures else 0)
+print(f"testCellMesh {sys.argv[1]}: {len(check.failed)} failed")
+sys.exit(check.exitStatus())

@@ -35,18 +35,13 @@ import tempfile
 import numpy as np
 
 from neuronFsi import msh
+from neuronFsi.checks import Checks
 
 root = os.path.abspath(os.path.join(os.path.dirname(__file__), "../.."))
 D, H, t = 16.8e-6, 7.9e-6, 200e-9
 a = D/2
 L, near, far, growth, wedgeDeg = 100e-6, 1e-6, 10e-6, 30e-6, 5.0
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
+check = Checks()
 
 
 def sh(cmd, case):
@@ -237,5 +232,5 @@ def main(mode):
 
 
 main(sys.argv[1])
-print(f"testFluidMesh {sys.argv[1]}: {len(failures)} failed")
-sys.exit(1 if failures else 0)
+print(f"testFluidMesh {sys.argv[1]}: {len(check.failed)} failed")
+sys.exit(check.exitStatus())

@@ -14,29 +14,18 @@ trap 'rm -rf "$work"' EXIT
 cp -r "$root/tutorials/indentation/averageCell" "$work/deep"
 cd "$work/deep"
 rm -rf postProcessing log.* *.png results.md constant/*.msh
-/usr/bin/python3 - <<'PY'
-import re
-p = "constant/indenterProperties"
-s = open(p).read()
-s = re.sub(r"protocol\s*\(.*\);", """protocol
-(
-    (A   load    10e-6   5e-6)
-    (B   hold    0       5)
-    (C   unload  10e-6   5e-6)
-);""", s, flags=re.S)
-open(p, "w").write(s)
-PY
+/usr/bin/python3 "$root/tests/lib/setProtocol.py" constant/indenterProperties \
+    "A load 10e-6 5e-6" "B hold 0 5" "C unload 10e-6 5e-6"
 cellMesh > log.cellMesh 2>&1 || { tail log.cellMesh; exit 1; }
 cellIndentationFoam > log.cellIndentationFoam 2>&1 \
     || { tail -20 log.cellIndentationFoam; exit 1; }
 /usr/bin/python3 - <<'PY'
 import math
-rows = [l.split() for l in open("postProcessing/indentation/force.dat")
-        if not l.startswith("#")]
-t = [float(r[0]) for r in rows]
-d = [float(r[1]) for r in rows]
-F = [float(r[2]) for r in rows]
-st = [r[5] for r in rows]
+from neuronFsi.postProcessing import readTable
+rows = readTable("postProcessing/indentation/force.dat")
+d = list(rows.column("depth"))
+F = list(rows.column("force"))
+st = rows.column("stage")
 assert all(math.isfinite(x) for x in F), "NaN/inf force"
 A = [f for f, s in zip(F, st) if s == "A"]
 B = [f for f, s in zip(F, st) if s == "B"]
@@ -48,6 +37,6 @@ lost = [dd for dd, f in C if f == 0]
 assert lost and max(lost) > 0, "contact never lost while withdrawing"
 print("deepIndentation: F(5 um) = %.2f nN, after 5 s hold %.2f nN, "
       "contact lost at depth %.2f um while withdrawing (%d steps)"
-      % (A[-1]*1e9, B[-1]*1e9, max(lost)*1e6, len(rows)))
+      % (A[-1]*1e9, B[-1]*1e9, max(lost)*1e6, len(rows.rows)))
 PY
 grep "Protocol done" log.cellIndentationFoam

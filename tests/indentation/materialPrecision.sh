@@ -42,20 +42,20 @@ do
         || { tail -20 "$work/${run%%:*}/log"; exit 1; }
 done
 /usr/bin/python3 - "$work" <<'PY'
-import sys, h5py, numpy as np
+import sys, numpy as np
+from neuronFsi.postProcessing import materials
+from neuronFsi.solidResults import SolidResults
 work = sys.argv[1]
 def c0(run):
-    rows = [l.split() for l in open(work + "/%s/postProcessing/indentation/"
-                                    "materials.dat" % run)
-            if not l.startswith("#")]
-    assert [r[0] for r in rows] == ["solid"], rows
-    return float(rows[0][2])
+    m = materials(work + "/%s/postProcessing/indentation/materials.dat"
+                  % run)
+    assert list(m) == ["solid"], m
+    return m["solid"]["c0"]
 def fields(run):
-    with h5py.File(work + "/%s/postProcessing/indentation/solid.h5" % run,
-                   "r") as f:
-        g = f["steps"]
-        return [(g[k].attrs["time"], g[k]["displacement"][()],
-                 g[k]["pressure"][()]) for k in sorted(g, key=int)]
+    with SolidResults(work + "/%s/postProcessing/indentation/solid.h5"
+                      % run) as f:
+        return [(f.time(k), f.field(k, "displacement"),
+                 f.field(k, "pressure")) for k in f.steps()]
 assert c0("a") == 1.6700001 and c0("b") == 1.6700004, (c0("a"), c0("b"))
 a, b, c = fields("a"), fields("b"), fields("c")
 assert len(a) >= 2 and len(a) == len(b) == len(c), (len(a), len(b), len(c))

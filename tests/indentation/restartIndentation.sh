@@ -14,26 +14,11 @@ ref=$work/reference
 cp -r "$root/tutorials/indentation/validationCell" "$ref"
 cd "$ref"
 rm -rf postProcessing log.* *.png results.md constant/*.msh
-/usr/bin/python3 - <<'PY'
-import re
-p = "constant/indenterProperties"
-s = open(p).read()
-s = re.sub(r"protocol\s*\(.*\);", """protocol
-(
-    (A   load    0.3e-6  3e-6)
-    (B   hold    0       15)
-    (C1  load    10e-6   2e-6)
-    (C1  unload  10e-6   2e-6)
-    (C3  load    0.1e-6  1e-6)
-    (C3  unload  0.1e-6  1e-6)
-    (E   hold    0       20)
-);""", s, flags=re.S)
-open(p, "w").write(s)
-c = "system/controlDict"
-s = open(c).read()
-s += "\ncheckpointInterval 5;\n"
-open(c, "w").write(s)
-PY
+/usr/bin/python3 "$root/tests/lib/setProtocol.py" constant/indenterProperties \
+    "A load 0.3e-6 3e-6" "B hold 0 15" "C1 load 10e-6 2e-6" \
+    "C1 unload 10e-6 2e-6" "C3 load 0.1e-6 1e-6" "C3 unload 0.1e-6 1e-6" \
+    "E hold 0 20"
+printf '\ncheckpointInterval 5;\n' >> system/controlDict
 cellMesh > log.cellMesh 2>&1 || { tail log.cellMesh; exit 1; }
 cp -r "$ref" "$work/killed"
 cellIndentationFoam > log.reference 2>&1 || { tail log.reference; exit 1; }
@@ -59,16 +44,16 @@ grep "Continuing from" log.run.TERM log.final
 cmp "$ref/$out/force.dat" "$out/force.dat"
 cmp "$ref/$out/peaks.dat" "$out/peaks.dat"
 /usr/bin/python3 - "$ref/$out/solid.h5" "$out/solid.h5" <<'PY'
-import sys, h5py, numpy as np
+import sys, numpy as np
+from neuronFsi.solidResults import SolidResults
 def steps(f):
-    g = f["steps"]
-    return sorted((int(k), g[k].attrs["time"]) for k in g)
-with h5py.File(sys.argv[1], "r") as a, h5py.File(sys.argv[2], "r") as b:
+    return [(int(k), f.time(k)) for k in f.steps()]
+with SolidResults(sys.argv[1]) as a, SolidResults(sys.argv[2]) as b:
     sa, sb = steps(a), steps(b)
     assert sa == sb, (sa, sb)
     k = str(sa[-1][0])
     for d in ("displacement", "pressure", "vonMises"):
-        x, y = a["steps"][k][d][()], b["steps"][k][d][()]
+        x, y = a.field(k, d), b.field(k, d)
         assert np.array_equal(x, y), (d, np.abs(x - y).max())
     print("solid.h5: %d steps, last (t = %g s) bit-equal" % (len(sa), sa[-1][1]))
 PY

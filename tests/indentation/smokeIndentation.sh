@@ -13,21 +13,8 @@ trap 'rm -rf "$work"' EXIT
 cp -r "$src" "$work/"
 case=$work/$(basename "$src")
 cd "$case"
-/usr/bin/python3 - constant/indenterProperties <<'PY'
-import re, sys
-p = sys.argv[1]
-s = open(p).read()
-s = re.sub(r"protocol\s*\(.*\);", """protocol
-(
-    (A   load    0.3e-6  0.3e-6)
-    (B   hold    0       1)
-    (C1  load    10e-6   0.5e-6)
-    (C1  unload  10e-6   0.5e-6)
-);""", s, flags=re.S)
-s = re.sub(r"maxDepthIncrement\s+[^;]*;", "maxDepthIncrement 0.1e-6;", s)
-s = re.sub(r"forceTarget\s+[^;]*;", "forceTarget 0.02e-9;", s)
-open(p, "w").write(s)
-PY
+/usr/bin/python3 "$root/tests/lib/setProtocol.py" constant/indenterProperties \
+    --smoke
 export MESH_SIZE=1.6 CONTACT_SIZE=0.8 MEMBRANE_N=24
 ./Allclean > /dev/null 2>&1 || true
 ./Allrun

@@ -17,11 +17,9 @@ splitAtPlane()
         foamDictionary -entry writeFormat -set "$format" system/controlDict \
             > /dev/null
         /usr/bin/python3 - "0/C$2" "$3" <<'PY'
-import re, sys
-s = open(sys.argv[1]).read()
-m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*\n?(\d+)\s*\n?"
-              r"\(\n(.*?)\n\)", s, re.S)
-c = [float(v) for v in m.group(2).split()]
+import sys
+from neuronFsi.foamField import internalField
+c = internalField(sys.argv[1])
 with open("constant/cellDecomposition", "w") as f:
     f.write("FoamFile { version 2.0; format ascii; class labelList; "
             "object cellDecomposition; }\n%d\n(\n" % len(c))

@@ -1,9 +1,8 @@
 """neuronFsi.foamDict: reading values, nested dictionaries, lists,
 comments, includes; setting entries in the text with the rest kept."""
-import os
-import tempfile
 import unittest
 
+from fixtures import TempDirTestCase
 from neuronFsi import foamDict
 
 TEXT = """FoamFile
@@ -27,19 +26,7 @@ nucleus
 """
 
 
-class FoamDict(unittest.TestCase):
-
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def write(self, name, text):
-        p = os.path.join(self.tmp.name, name)
-        with open(p, "w") as f:
-            f.write(text)
-        return p
+class FoamDict(TempDirTestCase):
 
     def testValues(self):
         d = foamDict.parse(TEXT)

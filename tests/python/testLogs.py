@@ -1,9 +1,9 @@
 """neuronFsi.logs on log excerpts in the form our solvers and
 /usr/bin/time -v write them."""
 import os
-import tempfile
 import unittest
 
+from fixtures import TempDirTestCase
 from neuronFsi import logs
 
 SOLVER = """Starting time loop
@@ -33,19 +33,7 @@ TIMEV = """\tCommand being timed: "cellBlastFoam"
 """
 
 
-class Logs(unittest.TestCase):
-
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def write(self, name, text):
-        p = os.path.join(self.tmp.name, name)
-        with open(p, "w") as f:
-            f.write(text)
-        return p
+class Logs(TempDirTestCase):
 
     def testSolverLog(self):
         p = self.write("log.cellBlastFoam", SOLVER)
@@ -79,7 +67,7 @@ class Logs(unittest.TestCase):
         with self.assertRaisesRegex(logs.LogError, "log.x: no coupling"):
             logs.couplingSummary(p)
         with self.assertRaisesRegex(logs.LogError, "absent"):
-            logs.text(os.path.join(self.tmp.name, "absent"))
+            logs.text(os.path.join(self.tmp, "absent"))
 
     def testTimeV(self):
         r = logs.timeV(self.write("log.time", TIMEV))

@@ -2,9 +2,9 @@
 (groups "nucleus" and "membrane", one boundary line "axis"): gmsh 4.1 as
 cellMesh writes the cell, 2.2 as it writes the fluid box."""
 import os
-import tempfile
 import unittest
 
+from fixtures import TempDirTestCase
 from neuronFsi import msh
 
 NODES = [(1, 0, 0), (2, 1, 0), (3, 2, 0), (4, 0, 1), (5, 1, 1), (6, 2, 1)]
@@ -66,19 +66,7 @@ $EndElements
 """
 
 
-class Msh(unittest.TestCase):
-
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def write(self, name, text):
-        p = os.path.join(self.tmp.name, name)
-        with open(p, "w") as f:
-            f.write(text)
-        return p
+class Msh(TempDirTestCase):
 
     def testBothFormatsAgree(self):
         for text in (MSH41, MSH22):
@@ -107,7 +95,7 @@ class Msh(unittest.TestCase):
 
     def testErrors(self):
         with self.assertRaisesRegex(msh.MshError, "no.msh"):
-            msh.read(os.path.join(self.tmp.name, "no.msh"))
+            msh.read(os.path.join(self.tmp, "no.msh"))
         p = self.write("v3.msh", MSH22.replace("2.2 0 8", "3.0 0 8"))
         with self.assertRaisesRegex(msh.MshError, "v3.msh: gmsh format 3.0"):
             msh.read(p)

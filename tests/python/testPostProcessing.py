@@ -1,11 +1,10 @@
 """neuronFsi.postProcessing on small synthetic column files: header
 parsing, a cut last row, malformed rows, restart stitching."""
-import os
-import tempfile
 import unittest
 
 import numpy as np
 
+from fixtures import TempDirTestCase
 from neuronFsi import postProcessing as pp
 
 HEADER = ("# FSI coupling (robin)\n"
@@ -17,21 +16,7 @@ def row(t, it=1):
     return "%g 1e-10 %d 1e-7 1 0 %g 0 0.5\n" % (t, it, t*1e9)
 
 
-class ColumnFiles(unittest.TestCase):
-
-    def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.case = self.tmp.name
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def write(self, rel, text):
-        p = os.path.join(self.case, rel)
-        os.makedirs(os.path.dirname(p), exist_ok=True)
-        with open(p, "w") as f:
-            f.write(text)
-        return p
+class ColumnFiles(TempDirTestCase):
 
     def testHeaderNamesAndUnits(self):
         names, units = pp.columnNames(HEADER.split("\n")[1])
@@ -116,7 +101,7 @@ class ColumnFiles(unittest.TestCase):
 
     def testMissingFile(self):
         with self.assertRaisesRegex(pp.ColumnFileError, "no .*coupling"):
-            pp.series(self.case, "fsi/coupling.dat")
+            pp.series(self.tmp, "fsi/coupling.dat")
 
     def testRestartStitching(self):
         # first start to 4e-10 (its last rows are redone by the restart
@@ -129,17 +114,17 @@ class ColumnFiles(unittest.TestCase):
         self.write("postProcessing/fsi/2e-10/coupling.dat",
                    HEADER + "".join(row(k*1e-10, 5) for k in range(3, 7))
                    + "7e-10 1e-10")
-        d = pp.series(self.case, "fsi/coupling.dat")
+        d = pp.series(self.tmp, "fsi/coupling.dat")
         np.testing.assert_allclose(d[:, 0], [k*1e-10 for k in range(1, 8)])
         # later segment wins on the overlap: 3-4e-10 from the second, 6e-10
         # from the third
         np.testing.assert_array_equal(d[:, 2], [1, 1, 5, 5, 5, 7, 8])
-        self.assertEqual(pp.names(self.case, "fsi/coupling.dat")[2],
+        self.assertEqual(pp.names(self.tmp, "fsi/coupling.dat")[2],
                          "iterations")
-        self.assertEqual(pp.header(self.case, "fsi/coupling.dat")[0],
+        self.assertEqual(pp.header(self.tmp, "fsi/coupling.dat")[0],
                          "FSI coupling (robin)")
         np.testing.assert_array_equal(
-            pp.latest(self.case, "fsi/coupling.dat").data()[:, 2], [7, 8])
+            pp.latest(self.tmp, "fsi/coupling.dat").data()[:, 2], [7, 8])
 
     def testRoundedStartTimeName(self):
         # a restart at 2.5e-10 written under "2e-10" (timePrecision 1):
@@ -148,7 +133,7 @@ class ColumnFiles(unittest.TestCase):
             row(t*1e-10, 1) for t in (1, 2, 2.5, 3)))
         self.write("postProcessing/fsi/2e-10/coupling.dat", HEADER + "".join(
             row(t*1e-10, 2) for t in (3, 3.5)))
-        d = pp.series(self.case, "fsi/coupling.dat")
+        d = pp.series(self.tmp, "fsi/coupling.dat")
         np.testing.assert_allclose(d[:, 0]*1e10, [1, 2, 2.5, 3, 3.5])
         np.testing.assert_array_equal(d[:, 2], [1, 1, 1, 2, 2])
 
@@ -157,14 +142,49 @@ class ColumnFiles(unittest.TestCase):
         self.write("postProcessing/fsi/0/coupling.dat",
                    HEADER + row(1e-10) + row(2e-10))
         self.write("postProcessing/fsi/2e-10/coupling.dat", HEADER)
-        self.assertEqual(pp.series(self.case, "fsi/coupling.dat").shape,
+        self.assertEqual(pp.series(self.tmp, "fsi/coupling.dat").shape,
                          (2, 9))
 
     def testNonTimeDirectoriesIgnored(self):
         self.write("postProcessing/fsi/0/coupling.dat", HEADER + row(1e-10))
         self.write("postProcessing/fsi/old/coupling.dat", HEADER + row(9))
-        self.assertEqual(pp.series(self.case, "fsi/coupling.dat").shape,
+        self.assertEqual(pp.series(self.tmp, "fsi/coupling.dat").shape,
                          (1, 9))
+
+    def testProbesOfTheHeader(self):
+        self.write("postProcessing/solidProbes/0/solidProbes.dat",
+                   "# solid probes (element average)\n"
+                   "# time [s]  p0[Pa]  p1[Pa]\n"
+                   "# probe 0 at (5.04e-06 5.32e-06 0) m: element 295 "
+                   "(\"cytoplasm\", centroid 4.99e-06 5.53e-06 0 m)\n"
+                   "# probe 1 at (1e-06 2e-06 3e-06) m: element 7 "
+                   "(\"nucleus\", centroid 1.1e-06 2.1e-06 3.1e-06 m)\n"
+                   "1e-10 1 2\n")
+        p = pp.probes(self.tmp)
+        self.assertEqual([(q["element"], q["region"]) for q in p],
+                         [(295, "cytoplasm"), (7, "nucleus")])
+        np.testing.assert_array_equal(p[0]["point"], [5.04e-6, 5.32e-6, 0])
+        np.testing.assert_array_equal(p[1]["centroid"],
+                                      [1.1e-6, 2.1e-6, 3.1e-6])
+        self.write("postProcessing/fsi/0/coupling.dat", HEADER + row(1e-10))
+        self.assertEqual(pp.probes(self.tmp, "fsi/coupling.dat"), [])
+
+    def testMaterialsWithTheirBranches(self):
+        p = self.write("materials.dat", "# region  rho0 [kg/m^3]  c0 [Pa]  "
+                       "d0 [1/Pa]  then muN [Pa]  tauN [s]\n"
+                       "nucleus 1000 6.6699999999999999 0 431.12 0.5\n"
+                       "membrane 1000 166.67 1e-3 13.89 3000 1 2\n\n")
+        self.assertEqual(pp.materials(p), {
+            "nucleus": {"c0": 6.67, "d0": 0.0, "mu1": 431.12, "tau1": 0.5},
+            "membrane": {"c0": 166.67, "d0": 1e-3, "mu1": 13.89,
+                         "tau1": 3000.0, "mu2": 1.0, "tau2": 2.0}})
+        with self.assertRaisesRegex(pp.ColumnFileError,
+                                    r"b.dat: malformed line 'solid 1 2 3 4'"):
+            pp.materials(self.write("b.dat", "solid 1 2 3 4\n"))
+        with self.assertRaisesRegex(pp.ColumnFileError, "e.dat: no material"):
+            pp.materials(self.write("e.dat", "# nothing\n"))
+        with self.assertRaisesRegex(pp.ColumnFileError, "absent.dat"):
+            pp.materials(self.tmp + "/absent.dat")
 
 
 if __name__ == "__main__":

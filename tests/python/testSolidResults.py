@@ -1,20 +1,20 @@
 """neuronFsi.solidResults on a small solid.h5 in the layout of the solid
 library's writer (two quads, three writes)."""
 import os
-import tempfile
 import unittest
 
 import h5py
 import numpy as np
 
+from fixtures import TempDirTestCase
 from neuronFsi.solidResults import SolidResults
 
 
-class Results(unittest.TestCase):
+class Results(TempDirTestCase):
 
     def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.path = os.path.join(self.tmp.name, "solid.h5")
+        super().setUp()
+        self.path = os.path.join(self.tmp, "solid.h5")
         with h5py.File(self.path, "w") as f:
             f["mesh/coordinates"] = np.arange(18.0).reshape(6, 3)
             f["mesh/connectivity"] = [[0, 1, 4, 3], [1, 2, 5, 4]]
@@ -24,9 +24,6 @@ class Results(unittest.TestCase):
                 g = f.create_group("steps/%d" % k)
                 g.attrs["time"] = t
                 g["pressure"] = [k*1.0, -k*1.0]
-
-    def tearDown(self):
-        self.tmp.cleanup()
 
     def testReader(self):
         with SolidResults(self.path) as r:
@@ -41,7 +38,7 @@ class Results(unittest.TestCase):
 
     def testMissingFile(self):
         with self.assertRaisesRegex(OSError, "absent.h5: cannot open"):
-            SolidResults(os.path.join(self.tmp.name, "absent.h5"))
+            SolidResults(os.path.join(self.tmp, "absent.h5"))
 
 
 if __name__ == "__main__":

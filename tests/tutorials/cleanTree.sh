@@ -24,21 +24,8 @@ done
 # The indentation smoke table (tests/indentation/smokeIndentation.sh)
 for c in tutorials/indentation/averageCell tutorials/indentation/validationCell
 do
-    /usr/bin/python3 - "$c/constant/indenterProperties" <<'PY'
-import re, sys
-p = sys.argv[1]
-s = open(p).read()
-s = re.sub(r"protocol\s*\(.*\);", """protocol
-(
-    (A   load    0.3e-6  0.3e-6)
-    (B   hold    0       1)
-    (C1  load    10e-6   0.5e-6)
-    (C1  unload  10e-6   0.5e-6)
-);""", s, flags=re.S)
-s = re.sub(r"maxDepthIncrement\s+[^;]*;", "maxDepthIncrement 0.1e-6;", s)
-s = re.sub(r"forceTarget\s+[^;]*;", "forceTarget 0.02e-9;", s)
-open(p, "w").write(s)
-PY
+    /usr/bin/python3 "$root/tests/lib/setProtocol.py" \
+        "$c/constant/indenterProperties" --smoke
 done
 git init -q
 git add -A

@@ -26,13 +26,10 @@ done
 ( cd "$work/parallel" && decomposePar > log.decompose && mpirun -np 2 rhoRiemannFoam -parallel > log.solver && reconstructPar -latestTime > log.reconstruct )
 t=$(foamListTimes -case "$work/serial" -latestTime | tail -1)
 /usr/bin/python3 - "$work/serial/$t/p" "$work/parallel/$t/p" <<'PY'
-import re, sys
+import sys
 import numpy as np
-def read(f):
-    s = open(f).read()
-    m = re.search(r"internalField\s+nonuniform\s+List<scalar>\s*\n(\d+)\s*\n\(\n(.*?)\n\)", s, re.S)
-    return np.array(m.group(2).split(), float)
-a, b = read(sys.argv[1]), read(sys.argv[2])
+from neuronFsi.foamField import internalField
+a, b = internalField(sys.argv[1]), internalField(sys.argv[2])
 d = np.max(np.abs(a - b))/np.max(np.abs(a))
 print(f"parallelEqualsSerial: {a.size} cells, max |p_2ranks - p_serial|/max|p| = {d:.3e} (<= 1e-12 required)")
 sys.exit(0 if d <= 1e-12 else 1)

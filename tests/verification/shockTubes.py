@@ -21,7 +21,7 @@ import sys
 import tempfile
 import time
 
-from neuronFsi import postProcessing
+from neuronFsi import postProcessing, scratch
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 TUTORIALS = os.path.join(ROOT, "tutorials", "verification")
@@ -49,13 +49,8 @@ def run(case, nCells, work, overrides, overlay=None, maxCo=None):
     copied over it (another solver); return (errors dict, wall time [s])."""
     tag = os.path.basename(overlay) if overlay else "rhoRiemannFoam"
     dst = os.path.join(work, f"{case}_{tag}_{nCells}")
-    src = os.path.join(TUTORIALS, case)
-    os.mkdir(dst)
-    for d in ("0.orig", "system"):
-        shutil.copytree(os.path.join(src, d), os.path.join(dst, d))
-    shutil.copytree(os.path.join(src, "constant"),
-                    os.path.join(dst, "constant"),
-                    ignore=shutil.ignore_patterns("polyMesh"))
+    scratch.copyInputs(os.path.join(TUTORIALS, case), dst,
+                       ("0.orig", "system", "constant"), ("polyMesh",))
     if overlay:
         shutil.copytree(overlay, dst, dirs_exist_ok=True)
     app = "rhoCentralFoam" if overlay else "rhoRiemannFoam"

@@ -32,13 +32,8 @@ done
 /usr/bin/python3 - "$work" <<'PY'
 import math, os, re, sys
 import numpy as np
+from neuronFsi.foamField import internalField
 work = sys.argv[1]
-def read(f, vector=False):
-    s = open(f).read()
-    m = re.search(r"internalField\s+nonuniform\s+List<\w+>\s*\n(\d+)\s*\n\(\n(.*?)\n\)", s, re.S)
-    if vector:
-        return np.array([l.strip("()").split() for l in m.group(2).split("\n")], float)
-    return np.array(m.group(2).split(), float)
 L, U0, rho0, Cv, T0, mu = 10e-6, 1.0, 1000.0, 4184.0, 293.15, 1.0
 k = 2*math.pi/L
 errors = {}
@@ -46,7 +41,7 @@ ok = True
 for n in (32, 64):
     c = os.path.join(work, f"n{n}")
     t = max((d for d in os.listdir(c) if re.fullmatch(r"[0-9.e+-]+", d) and float(d) > 0), key=float)
-    U = read(f"{c}/{t}/U", True); rho = read(f"{c}/{t}/rho"); T = read(f"{c}/{t}/T")
+    U = internalField(f"{c}/{t}/U"); rho = internalField(f"{c}/{t}/rho"); T = internalField(f"{c}/{t}/T")
     x = (np.arange(n) + 0.5)*L/n
     A = 2/n*np.sum(U[:, 1]*np.sin(k*x))
     exact = U0*math.exp(-mu*k*k*float(t)/rho0)

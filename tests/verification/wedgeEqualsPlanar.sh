@@ -29,17 +29,12 @@ do
 done
 t=$(foamListTimes -case "$work/planar" -latestTime | tail -1)
 /usr/bin/python3 - "$work/planar/$t" "$work/wedge/$t" <<'PY'
-import re, sys
+import sys
 import numpy as np
-def read(f, vector=False):
-    s = open(f).read()
-    m = re.search(r"internalField\s+nonuniform\s+List<\w+>\s*\n(\d+)\s*\n\(\n(.*?)\n\)", s, re.S)
-    if vector:
-        return np.array([l.strip("()").split() for l in m.group(2).split("\n")], float)
-    return np.array(m.group(2).split(), float)
-p1 = read(sys.argv[1] + "/p")
-pw = read(sys.argv[2] + "/p").reshape(-1, p1.size)
-Uw = read(sys.argv[2] + "/U", True)
+from neuronFsi.foamField import internalField
+p1 = internalField(sys.argv[1] + "/p")
+pw = internalField(sys.argv[2] + "/p").reshape(-1, p1.size)
+Uw = internalField(sys.argv[2] + "/U")
 d = np.abs(pw - p1[None, :]).max()/np.abs(p1).max()
 ur = np.abs(Uw[:, 1:]).max()
 print(f"wedgeEqualsPlanar: {pw.shape[0]} radial x {p1.size} axial cells, max |p_wedge - p_1D|/max|p| = {d:.2e} (<= 1e-10), max radial/normal velocity {ur:.2e} m/s (<= 1e-9)")

@@ -27,6 +27,7 @@ cp -r "$here/$src" "$c"
 cd "$c"
 /usr/bin/python3 - "$@" <<'PY'
 import os, re, sys
+from neuronFsi.indenterProperties import setProtocol
 files = ["system/cellMeshDict", "constant/indenterProperties",
          "constant/solidProperties"]
 text = {f: open(f).read() for f in files}
@@ -35,14 +36,11 @@ text = {f: open(f).read() for f in files}
 A = "3e-6" if re.search(r"\nforceTarget\s", text["constant/indenterProperties"]) \
     or any(kv.startswith("forceTarget=") for kv in sys.argv[1:]) else "1.41e-6"
 if os.environ.get("FULL") != "1":
-  text["constant/indenterProperties"] = re.sub(
-    r"protocol\s*\(.*\);", """protocol
-(
-    (A   load    0.3e-6  %s)
-    (B   hold    0       15)
-    (C1  load    10e-6   2e-6)
-    (C1  unload  10e-6   2e-6)
-);""" % A, text["constant/indenterProperties"], flags=re.S)
+  text["constant/indenterProperties"] = setProtocol(
+      text["constant/indenterProperties"],
+      [("A", "load", "0.3e-6", A), ("B", "hold", "0", "15"),
+       ("C1", "load", "10e-6", "2e-6"), ("C1", "unload", "10e-6", "2e-6")],
+      "constant/indenterProperties")
 PAPER = {"membrane": (166.67, 13.89, 3000), "cytoplasm": (1.67, 107.78, 0.01)}
 def material(region, c0, mu1, tau1):
     """A region's material, last in the materials of solidProperties"""

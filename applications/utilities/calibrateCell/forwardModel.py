@@ -9,7 +9,7 @@ import shutil
 import subprocess
 import time
 
-from neuronFsi import foamDict
+from neuronFsi import foamDict, postProcessing, scratch
 
 MESH_SIZES = ("nucleusSize", "cytoplasmSize", "membraneSize", "contactSize")
 
@@ -37,21 +37,10 @@ def read_materials(path):
     per Maxwell branch; 17 digits): region -> {c0, d0, mu1, tau1, ...}."""
     if not os.path.isfile(path):
         raise ModelError("no %s (the solver writes it at the start)" % path)
-    mats = {}
-    for line in open(path):
-        if line.startswith("#") or not line.strip():
-            continue
-        s = line.split()
-        if len(s) < 4 or len(s) % 2:
-            raise ModelError("%s: malformed line '%s'" % (path, line.strip()))
-        e = {"c0": float(s[2]), "d0": float(s[3])}
-        for n in range(1, (len(s) - 4)//2 + 1):
-            e["mu%d" % n] = float(s[2 + 2*n])
-            e["tau%d" % n] = float(s[3 + 2*n])
-        mats[s[0]] = e
-    if not mats:
-        raise ModelError("%s: no material" % path)
-    return mats
+    try:
+        return postProcessing.materials(path)
+    except postProcessing.ColumnFileError as err:
+        raise ModelError(str(err))
 
 
 class ForwardModel:
@@ -67,14 +56,11 @@ class ForwardModel:
         self.base = os.path.join(self.work, "base")
         if os.path.exists(self.base):
             shutil.rmtree(self.base)
-        os.makedirs(self.base)
         for d in ("system", "constant"):
-            src = os.path.join(self.case, d)
-            if not os.path.isdir(src):
+            if not os.path.isdir(os.path.join(self.case, d)):
                 raise ModelError("%s: no %s/ folder" % (self.case, d))
-            shutil.copytree(src, os.path.join(self.base, d),
-                            ignore=shutil.ignore_patterns("cell.msh",
-                                                          "*.calibrated"))
+        scratch.copyInputs(self.case, self.base, ("system", "constant"),
+                           ("cell.msh", "*.calibrated"))
         self._edit_mesh_dict(mesh_factor)
         log = os.path.join(self.base, "log.cellMesh")
         if _run(["cellMesh", "-case", self.base], self.base, log) \
@@ -179,17 +165,10 @@ class ForwardModel:
                              "last lines:\n%s" % (rc, log, "\n".join(
                                  text.splitlines()[-8:])))
         pp = os.path.join(d, "postProcessing/indentation")
-        peaks = {}
-        for line in open(os.path.join(pp, "peaks.dat")):
-            if not line.startswith("#"):
-                s = line.split()
-                peaks[s[0]] = float(s[3])
-        t, F = [], []
-        for line in open(os.path.join(pp, "force.dat")):
-            if not line.startswith("#"):
-                s = line.split()
-                t.append(float(s[0]))
-                F.append(float(s[2]))
+        p = postProcessing.readTable(os.path.join(pp, "peaks.dat"))
+        peaks = dict(zip(p.column("label"), p.column("force").tolist()))
+        f = postProcessing.readTable(os.path.join(pp, "force.dat"))
+        t, F = f.column("time").tolist(), f.column("force").tolist()
         m = re.search(r"delta0 = (\S+) m", text)
         cpu = re.search(r"CPU time ([0-9.eE+-]+) s", text)
         out = dict(peaks=peaks, time=t, force=F, wall=wall,

@@ -30,7 +30,6 @@ Writes docs/benchmarks/solidCalculix.md and solidCalculix_error_vs_time.png
 (or into --out with --quick); cases run in --out (default
 bench/solid/calculix/output, ignored by git).
 """
-import argparse
 import datetime
 import math
 import os
@@ -42,7 +41,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 sys.path.insert(0, HERE)
 import hertzMesh  # noqa: E402
-from neuronFsi import logs  # noqa: E402
+from neuronFsi import bench, logs  # noqa: E402
 
 LIB = os.path.join(ROOT, "platforms", "linux64GccDPInt32Opt", "lib")
 
@@ -167,19 +166,15 @@ def timeToError(rows, key, ref, target):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true",
-                    help="meshes up to 24 x 24, one run, output in --out")
-    ap.add_argument("--out", default=os.path.join(HERE, "output"))
-    ap.add_argument("--doc", default=None)
+    ap = bench.arguments(__doc__, os.path.join(HERE, "output"),
+                         "meshes up to 24 x 24, one run, output in --out")
     args = ap.parse_args()
     size = "quick" if args.quick else "full"
     meshes = MESHES[size]
     repeats = 1 if args.quick else REPEATS
     out = os.path.abspath(args.out)
-    doc = args.doc or (os.path.join(out, "solidCalculix.md") if args.quick
-                       else os.path.join(ROOT, "docs", "benchmarks",
-                                         "solidCalculix.md"))
+    doc = bench.reportPath(args.doc, args.quick, out, ROOT,
+                           "solidCalculix.md")
     os.makedirs(out, exist_ok=True)
     os.makedirs(os.path.dirname(doc), exist_ok=True)
     start = datetime.datetime.now()
@@ -229,10 +224,7 @@ def main():
     png = "solidCalculix_error_vs_time.png"
     plot(rows, ref, cax4, os.path.join(os.path.dirname(doc), png))
     lines += ["", f"![force error against wall time]({png})", ""]
-    with open(doc, "w") as f:
-        f.write("\n".join(lines))
-    print("\n".join(lines))
-    print(f"wrote {doc}")
+    bench.writeReport(doc, lines)
 
 
 def report(rows, cax4, ref, FH, F0, slope, size, repeats, start):

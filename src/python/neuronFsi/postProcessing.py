@@ -117,14 +117,20 @@ class Table:
             return col
 
 
+def _lines(path):
+    """The lines of a file; a ColumnFileError naming it when it cannot be
+    read."""
+    try:
+        with open(path) as f:
+            return f.read().split("\n")
+    except OSError as err:
+        raise ColumnFileError("%s: %s" % (path, err.strerror))
+
+
 def readTable(path):
     """Table of one column file; a cut last row (fewer fields than the
     first row, or no newline at its end) is dropped."""
-    try:
-        with open(path) as f:
-            lines = f.read().split("\n")
-    except OSError as err:
-        raise ColumnFileError("%s: %s" % (path, err.strerror))
+    lines = _lines(path)
     header, notes, rows, lineNo = [], [], [], []
     last = len(lines) - 1       # "" after a final newline, else a cut line
     for i, line in enumerate(lines):
@@ -185,6 +191,45 @@ def latest(case, log):
 def header(case, log):
     """The header lines (without '# ') of the first segment of a log."""
     return readTable(segments(case, log)[0][1]).header
+
+
+def materials(path):
+    """The materials a solver built, from its materials.dat (a row per
+    region: region, rho0 [kg/m^3], c0 [Pa], d0 [1/Pa], then muN [Pa] and
+    tauN [s] per Maxwell branch, as many as the region has; 17 digits):
+    region -> {c0, d0, mu1, tau1, ...}."""
+    lines = _lines(path)
+    mats = {}
+    for line in lines:
+        if line.startswith("#") or not line.strip():
+            continue
+        s = line.split()
+        if len(s) < 4 or len(s) % 2:
+            raise ColumnFileError("%s: malformed line '%s'"
+                                  % (path, line.strip()))
+        e = {"c0": float(s[2]), "d0": float(s[3])}
+        for n in range(1, (len(s) - 4)//2 + 1):
+            e["mu%d" % n] = float(s[2 + 2*n])
+            e["tau%d" % n] = float(s[3 + 2*n])
+        mats[s[0]] = e
+    if not mats:
+        raise ColumnFileError("%s: no material" % path)
+    return mats
+
+
+def probes(case, log="solidProbes/solidProbes.dat"):
+    """The probes the header of the solid probes file names, in order:
+    each a dict of point [m] (3 components), element, region and the
+    element's centroid [m] (3 components)."""
+    out = []
+    for line in header(case, log):
+        m = re.match(r"probe \d+ at \((\S+) (\S+) (\S+)\) m: element (\d+) "
+                     r"\(\"(\w+)\", centroid (\S+) (\S+) (\S+) m\)", line)
+        if m:
+            v = [float(m.group(k)) for k in (1, 2, 3, 6, 7, 8)]
+            out.append(dict(point=np.array(v[:3]), element=int(m.group(4)),
+                            region=m.group(5), centroid=np.array(v[3:])))
+    return out
 
 
 def names(case, log):

@@ -8,7 +8,7 @@ import shutil
 import subprocess
 import sys
 
-from neuronFsi import logs, postProcessing
+from neuronFsi import logs, postProcessing, scratch
 
 here = os.path.dirname(os.path.abspath(__file__))
 src = os.path.join(os.environ["FOAM_TUTORIALS"], "indentation/validationCell")
@@ -18,8 +18,7 @@ if not os.path.isfile(calibrated):
     sys.exit("predictValidation: no %s (run calibrateCell first)"
              % calibrated)
 shutil.rmtree(case, ignore_errors=True)
-for d in ("system", "constant"):
-    shutil.copytree(os.path.join(src, d), os.path.join(case, d))
+scratch.copyInputs(src, case, ("system", "constant"))
 shutil.copy(calibrated, os.path.join(case, "constant/solidProperties"))
 for app in ("cellMesh", "cellIndentationFoam"):
     with open(os.path.join(case, "log." + app), "w") as log:

@@ -1,0 +1,47 @@
+"""OpenFOAM field files of our runs: the internal field of a volField
+written in ascii (a nonuniform List<scalar> or List<vector>), and a
+pointField (constant/polyMesh/points, <time>/polyMesh/points) in ascii or
+binary."""
+
+import re
+
+import numpy as np
+
+
+class FieldError(Exception):
+    """A field file that is not what is asked; the message names it."""
+
+
+def internalField(path):
+    """The internal field of an ascii volField file: an array of n values
+    (scalar) or n x 3 (vector)."""
+    with open(path) as f:
+        s = f.read()
+    m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*\n?(\d+)\s*"
+                  r"\n?\(\n(.*?)\n\)", s, re.S)
+    if m is None:
+        raise FieldError(f"{path}: no ascii nonuniform internalField")
+    kind, body = m.group(1), m.group(3)
+    if kind == "scalar":
+        return np.array(body.split(), float)
+    if kind == "vector":
+        return np.array([line.strip("()").split()
+                         for line in body.split("\n")], float)
+    raise FieldError(f"{path}: internalField of {kind}: scalar or vector "
+                     "wanted")
+
+
+def points(path):
+    """The points of a pointField file, n x 3, ascii or binary."""
+    with open(path, "rb") as f:
+        raw = f.read()
+    head = raw[:raw.index(b"}") + 1].decode()
+    m = re.search(rb"\n(\d+)\s*\(", raw[len(head):])
+    n = int(m.group(1))
+    start = len(head) + m.end()
+    if re.search(r"format\s+binary", head):
+        return np.frombuffer(raw[start:start + 24*n],
+                             dtype="<f8").reshape(n, 3)
+    body = raw[start:].decode()
+    pts = re.findall(r"\(([^()]*)\)", body)[:n]
+    return np.array([[float(v) for v in q.split()] for q in pts])

@@ -1,0 +1,28 @@
+"""constant/indenterProperties of an indentation case: its loading table
+(the `protocol` list of rows `(stage kind rate amount)`) replaced by a
+shorter one, for the tests and studies that run a case on a short table."""
+
+import re
+
+
+class ProtocolError(Exception):
+    """A text without a protocol table; the message names it."""
+
+
+def protocolText(rows):
+    """The protocol entry of rows (stage, kind, rate, amount), each a
+    string as it is to stand in the file, in the tutorials' columns."""
+    return ("protocol\n(\n"
+            + "".join(f"    ({stage:<4}{kind:<8}{rate:<8}{amount})\n"
+                      for stage, kind, rate, amount in rows)
+            + ");")
+
+
+def setProtocol(text, rows, name="<text>"):
+    """text with its protocol table replaced by rows (protocolText)."""
+    new, n = re.subn(r"protocol\s*\(.*\);", lambda m: protocolText(rows),
+                     text, flags=re.S)
+    if n == 0:
+        raise ProtocolError(f"{name}: no protocol table "
+                            "(protocol ( ... );)")
+    return new
