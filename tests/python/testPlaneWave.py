@@ -1,12 +1,11 @@
 """neuronFsi.planeWave on synthetic histories with known answers: the
 pulse's shape, the 1-ns running mean, the four measures and their errors
 (the 1D column run itself is tested by tests/blast/planeWave.sh)."""
-import os
-import tempfile
 import unittest
 
 import numpy as np
 
+from fixtures import TempDirTestCase
 from neuronFsi import planeWave as pw
 
 TABLE = [(0, 0), (1e-10, 5e7), (5e-9, 5e7), (5.1e-9, 0), (1, 0)]
@@ -18,7 +17,7 @@ def trapezoid(t, t0, rise, width, amp):
                        0, 1)
 
 
-class PulseShape(unittest.TestCase):
+class PulseShape(TempDirTestCase):
 
     def testAmplitudeAndHalfWidth(self):
         amp, T = pw.pulseShape(TABLE)
@@ -27,19 +26,17 @@ class PulseShape(unittest.TestCase):
         self.assertAlmostEqual(T, 5e-9, delta=1e-20)
 
     def testAppliedPressureReadsTheTopTable(self):
-        with tempfile.TemporaryDirectory() as case:
-            os.makedirs(os.path.join(case, "0.orig"))
-            with open(os.path.join(case, "0.orig", "p"), "w") as f:
-                f.write("internalField uniform 0;\nboundaryField\n{\n"
-                        "    top { type uniformFixedValue; uniformValue "
-                        "table ((0 0) (1e-10 5e7) (5e-09 5e7) (5.1e-09 0)"
-                        " (1 0)); }\n    bottom { type zeroGradient; }\n}\n")
-            self.assertEqual(pw.appliedPressure(case),
-                             [(float(a), float(b)) for a, b in TABLE])
-            with self.assertRaisesRegex(pw.PlaneWaveError,
-                                        "boundaryField/bottom has no "
-                                        "uniformValue table"):
-                pw.appliedPressure(case, "bottom")
+        self.write("0.orig/p",
+                   "internalField uniform 0;\nboundaryField\n{\n"
+                   "    top { type uniformFixedValue; uniformValue "
+                   "table ((0 0) (1e-10 5e7) (5e-09 5e7) (5.1e-09 0)"
+                   " (1 0)); }\n    bottom { type zeroGradient; }\n}\n")
+        self.assertEqual(pw.appliedPressure(self.tmp),
+                         [(float(a), float(b)) for a, b in TABLE])
+        with self.assertRaisesRegex(pw.PlaneWaveError,
+                                    "boundaryField/bottom has no "
+                                    "uniformValue table"):
+            pw.appliedPressure(self.tmp, "bottom")
 
 
 class RunningMean(unittest.TestCase):

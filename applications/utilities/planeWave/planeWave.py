@@ -51,25 +51,17 @@ BOUNDS = {"arrival": 0.3e-9, "peak1ns": 0.05, "plateau": 0.05,
 
 
 def solidProbes(case, rz):
-    """[(name, z [m], t [s], p [Pa])] of the solid probes: the height from
-    the header line '# probe i at (r z 0) m' (rz) or '(x y z) m' (3D)."""
+    """[(name, z [m], t [s], p [Pa])] of the solid probes: the height of
+    the probe point the header names ((r z 0) in r-z, (x y z) in 3D)."""
+    log = "solidProbes/solidProbes.dat"
     try:
-        head = postProcessing.header(case, "solidProbes/solidProbes.dat")
+        found = postProcessing.probes(case, log)
     except postProcessing.ColumnFileError:
         return []
-    data = postProcessing.series(case, "solidProbes/solidProbes.dat")
-    cols = postProcessing.names(case, "solidProbes/solidProbes.dat")
-    out = []
-    for line in head:
-        m = re.match(r"probe (\d+) at \((\S+) (\S+) (\S+)\) m", line)
-        if not m:
-            continue
-        i = int(m.group(1))
-        x = [float(m.group(k)) for k in (2, 3, 4)]
-        z = x[1] if rz else x[2]
-        out.append(("solid p%d" % i, z, data[:, 0],
-                    data[:, cols.index("p%d" % i)]))
-    return out
+    data = postProcessing.series(case, log)
+    cols = postProcessing.names(case, log)
+    return [("solid p%d" % i, q["point"][1 if rz else 2], data[:, 0],
+             data[:, cols.index("p%d" % i)]) for i, q in enumerate(found)]
 
 
 def fluidProbes(case, axis):
@@ -134,8 +126,7 @@ def main():
                      % (a.reference, P.shape[1], len(heights)))
         wave = planeWave.PlaneWave(heights, t, P, a.dz, a.Z)
     else:
-        wave = planeWave.column(case, heights, a.Z, end, dz=a.dz,
-                                work=os.path.join(out, "column"))
+        wave = planeWave.column(case, heights, a.Z, end, dz=a.dz)
         with open(os.path.join(out, "reference.dat"), "w") as f:
             f.write("# 1D plane wave of %s: column %g m, cells %g m, pulse "
                     "%g Pa for %g s\n" % (case, a.Z, a.dz, amp, T))
