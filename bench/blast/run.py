@@ -4,7 +4,7 @@
 Runs tutorials/blast/axisymmetricPreview (the average cell on the substrate
 under a 100 um water column, 50 MPa for 5 ns on the top face) on a mesh
 ladder: the fluid size at the cell (-h 0.25e-6 m), the far column size
-(-far 1e-6 m) and the solid size (-cell 0.5e-6 m; membrane 0.8 of it) are
+(-far 1e-6 m across, -dz 0.25e-6 m along) and the solid size (-cell 0.5e-6 m; membrane 0.8 of it) are
 scaled together by each factor, so that every level keeps the default's
 ratio of fluid face to membrane face (0.25/0.4; the Allrun header: fluid
 faces at the cell about half the solid face size, never as large as them,
@@ -43,7 +43,7 @@ from neuronFsi import bench, logs, msh, postProcessing, scratch
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
 TUTORIAL = os.path.join(ROOT, "tutorials", "blast")
-DEFAULT = dict(h=0.25e-6, far=1e-6, cell=0.5e-6)     # [m], Allrun defaults
+DEFAULT = dict(h=0.25e-6, far=1e-6, dz=0.25e-6, cell=0.5e-6)  # [m], Allrun
 PULSE = 5e-9                                        # [s]
 SIZES = {
     "full": dict(factors=["1.4", "1", "0.7"], Z=100e-6, endTime=1.5e-7,
@@ -71,7 +71,8 @@ def prepare(case, f, Z, endTime, env, extra=(), pulse=PULSE):
     sizes = {k: v*x for k, v in DEFAULT.items()}
     cmd = ["./Allrun", "-noRun", "-noPlots", "-pulse", f"{pulse:g}",
            "-h", f"{sizes['h']:.6g}", "-far", f"{sizes['far']:.6g}",
-           "-cell", f"{sizes['cell']:.6g}", "-Z", f"{Z:g}",
+           "-dz", f"{sizes['dz']:.6g}", "-cell", f"{sizes['cell']:.6g}",
+           "-Z", f"{Z:g}",
            "-endTime", f"{endTime:g}"] + list(extra)
     res = bench.runLogged(cmd, c, env, "log.Allrun")
     if res.returncode != 0:
@@ -131,7 +132,8 @@ def parseLevel(f, out, size, name=None):
     allrun = open(os.path.join(c, "log.Allrun")).read()
     fallback = "gmsh fallback" in allrun
     cmd = ("./Allrun -noRun -noPlots -pulse " f"{PULSE:g} -h "
-           f"{sizes['h']:.6g} -far {sizes['far']:.6g} -cell "
+           f"{sizes['h']:.6g} -far {sizes['far']:.6g} -dz "
+           f"{sizes['dz']:.6g} -cell "
            f"{sizes['cell']:.6g} -Z {size['Z']:g} -endTime "
            f"{size['endTime']:g}")
     cells, elements = count(c)
@@ -288,7 +290,8 @@ def report(rows, size, mode, start, png, commit, dirty, end,
       f" cell on the rigid substrate, a {size['Z']*1e6:.0f} um water column "
       f"of radius 50 um, 50 MPa on the top face for {PULSE*1e9:.0f} ns, to "
       f"{endNs:.0f} ns. Level x f: fluid {DEFAULT['h']*1e6:g} f um at the "
-      f"cell, {DEFAULT['far']*1e6:g} f um in the column, solid "
+      f"cell, {DEFAULT['far']*1e6:g} f um across and "
+      f"{DEFAULT['dz']*1e6:g} f um along the column, solid "
       f"{DEFAULT['cell']*1e6:g} f um (membrane 0.8 of it), all scaled "
       "together so that the fluid faces at the cell stay 0.625 of the "
       "membrane faces (the default's ratio; with fluid faces as large as the "

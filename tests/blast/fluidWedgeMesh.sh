@@ -55,7 +55,7 @@ PY
 
 # 3. Bad sizes: refused, the existing blockMeshDict untouched
 cp system/blockMeshDict keep
-for bad in "-outer 0.5e-6" "-outer -1" "-far 0" "-h 0"
+for bad in "-outer 0.5e-6" "-outer -1" "-far 0" "-h 0" "-dz 0"
 do
     # shellcheck disable=SC2086
     if msg=$(/usr/bin/python3 "$gen" -far 1e-6 $bad -o system/blockMeshDict 2>&1)

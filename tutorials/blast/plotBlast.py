@@ -89,11 +89,39 @@ def summary(case):
         notConverged=int(np.sum(c[:, 4] == 0)), cpu=cpu, clock=clock)
 
 
+def planeWave(case):
+    """time [s] and p [Pa] of the 1D plane wave at probe 0's height
+    (postProcessing/planeWave/0/reference.dat of the planeWave utility),
+    or None"""
+    path = os.path.join(case, "postProcessing", "planeWave", "0",
+                        "reference.dat")
+    if not os.path.isfile(path):
+        return None
+    table = postProcessing.readTable(path)
+    heights = [float(n[3:]) for n in table.names[1:]]
+    z = None
+    for line in postProcessing.header(case, "solidProbes/solidProbes.dat"):
+        if line.startswith("probe 0 at ("):
+            x = line.split("(")[1].split(")")[0].split()
+            z = float(x[1]) if float(x[2]) == 0 else float(x[2])
+    if z is None:
+        return None
+    k = int(np.argmin([abs(h - z) for h in heights]))
+    if abs(heights[k] - z) > 1e-3*z:
+        return None
+    d = table.data()
+    return d[:, 0], d[:, 1 + k]
+
+
 def fig10(cases, labels, out):
     fig, ax = plt.subplots(2, 2, figsize=(10, 7), sharex=True)
     for case, lab in zip(cases, labels):
         t, p, vm, ez, rate = probes(case)
         tn = t*1e9
+        ref = planeWave(case)
+        if ref is not None:
+            ax[0, 0].plot(ref[0]*1e9, ref[1]/1e6, "k--", lw=0.8,
+                          label=f"{lab}: 1D plane wave (planeWave)")
         ax[0, 0].plot(tn, p/1e6, label=lab)
         ax[0, 1].plot(tn, vm, label=lab)
         ax[1, 0].plot(tn, ez, label=lab)

@@ -1,0 +1,319 @@
+"""The plane-wave answer of the blast scene, and a probe measured against it.
+
+The cell has water's bulk response (Mie-Grueneisen, or the membrane's
+quadratic law with water's bulk modulus) and shear moduli about 1e-7 of
+it, and the column's side walls slip: to that order the pressure anywhere
+in the coupled 2D or 3D scene is the 1D nonlinear plane wave of the water
+column, the pulse applied on the top face z = Z and reflected by the rigid
+substrate z = 0 (Jerusalem & Dao 2012, sec. 2.2.2; issue 17).
+
+column() computes that wave with rhoRiemannFoam on a 1D column with the
+scene's own thermophysicalProperties, schemes and top/bottom boundary
+conditions (the 0/p, 0/U, 0/T entries of the patches `top` and `bottom`,
+copied with foamDictionary), at a cell size the caller chooses: the
+default 25 nm is ten times finer than the scene's finest water cell. The
+fluid solver itself is verified against exact Mie-Grueneisen Riemann
+solutions (tests/verification/shockTubes.py, pulseWall.sh);
+converged() reports the change between two sizes, the reference's own
+error bar.
+
+measures() gives the numbers issue 17 asks of a probe history p(t):
+    arrival    first time p reaches half the applied pressure [s]
+               (linear between samples)
+    peak1ns    the largest 1-ns running mean of p [Pa] (window centred)
+    plateau    the mean of p over the incident plateau [Pa]: from 1 ns
+               after the reference's arrival to 1 ns before the earlier
+               of the pulse's end and the reflection's return (2 z / C0
+               after the arrival); None when that window is under 1 ns
+    impulse    int p dt [Pa s] from 2 ns before the reference's arrival to
+               5 ns after the reflected pulse has passed (arrival + T +
+               2 z / C0), cut to the data
+The windows come from the reference, so the scene and the reference are
+integrated over the same times.
+"""
+
+import os
+import shutil
+import subprocess
+import tempfile
+
+import numpy as np
+
+from . import foamDict
+from . import postProcessing
+
+
+class PlaneWaveError(Exception):
+    """A column that cannot be set up or run; the message says why."""
+
+
+def _entry(case, field, patch):
+    """The entry boundaryField/<patch> of <case>/0/<field> (0.orig when
+    0/ has no such file) as foamDictionary prints it: `<patch> { ... }`."""
+    for d in ("0", "0.orig"):
+        path = os.path.join(case, d, field)
+        if os.path.isfile(path):
+            out = subprocess.run(
+                ["foamDictionary", "-entry", "boundaryField/" + patch,
+                 path], capture_output=True, text=True)
+            if out.returncode != 0:
+                raise PlaneWaveError("%s: no boundaryField/%s (%s)"
+                                     % (path, patch, out.stderr.strip()))
+            return out.stdout, path
+    raise PlaneWaveError("%s: no 0/%s or 0.orig/%s" % (case, field, field))
+
+
+def appliedPressure(case, patch="top"):
+    """The pulse table [(t [s], p [Pa])] of the top face: the uniformValue
+    table of 0/p (0.orig/p), relative to the ambient internal pressure."""
+    for d in ("0", "0.orig"):
+        path = os.path.join(case, d, "p")
+        if os.path.isfile(path):
+            p = foamDict.read(path)
+            break
+    else:
+        raise PlaneWaveError("%s: no 0/p or 0.orig/p" % case)
+    try:
+        top = p["boundaryField"][patch]
+        kind, table = top["uniformValue"]
+    except (KeyError, TypeError, ValueError):
+        raise PlaneWaveError("%s: boundaryField/%s has no uniformValue "
+                             "table" % (path, patch))
+    if kind != "table":
+        raise PlaneWaveError("%s: boundaryField/%s/uniformValue is %s, not "
+                             "a table" % (path, patch, kind))
+    return [(float(t), float(v)) for t, v in table]
+
+
+def pulseShape(table):
+    """(amplitude [Pa], duration [s]) of a pulse table: the largest value
+    and the time between the half-amplitude crossings of the ramps."""
+    t = np.array([r[0] for r in table])
+    v = np.array([r[1] for r in table])
+    amp = v.max()
+    half = 0.5*amp
+    k = int(np.argmax(v >= half))
+    up = t[k - 1] + (half - v[k - 1])*(t[k] - t[k - 1])/(v[k] - v[k - 1])
+    j = len(v) - 1 - int(np.argmax(v[::-1] >= half))
+    down = t[j] + (half - v[j])*(t[j + 1] - t[j])/(v[j + 1] - v[j])
+    return amp, down - up
+
+
+_BLOCK_MESH = """FoamFile {{ version 2.0; format ascii; class dictionary;
+    object blockMeshDict; }}
+scale 1;
+vertices
+(
+    (0 0 0) ({w} 0 0) ({w} {Z} 0) (0 {Z} 0)
+    (0 0 {w}) ({w} 0 {w}) ({w} {Z} {w}) (0 {Z} {w})
+);
+blocks ( hex (0 1 2 3 4 5 6 7) (1 {n} 1) simpleGrading (1 1 1) );
+boundary
+(
+    bottom {{ type wall; faces ((0 4 5 1)); }}
+    top {{ type patch; faces ((3 2 6 7)); }}
+    sides {{ type empty; faces ((0 3 7 4) (1 5 6 2) (0 1 2 3) (4 7 6 5)); }}
+);
+"""
+
+_FIELD = """FoamFile {{ version 2.0; format ascii; class {cls};
+    object {name}; }}
+dimensions {dims};
+internalField {internal};
+boundaryField
+{{
+{top}
+{bottom}
+    sides {{ type empty; }}
+}}
+"""
+
+_CONTROL = """FoamFile {{ version 2.0; format ascii; class dictionary;
+    object controlDict; }}
+application rhoRiemannFoam;
+startFrom startTime; startTime 0; stopAt endTime; endTime {end};
+deltaT 1e-13; writeControl adjustableRunTime; writeInterval {end};
+purgeWrite 0; writeFormat binary; writePrecision 17;
+writeCompression off; timeFormat general; timePrecision 8;
+runTimeModifiable false; adjustTimeStep yes; maxCo {co}; maxDeltaT 1e-9;
+functions
+{{
+    probes
+    {{
+        type probes; libs ("libsampling.so");
+        writeControl timeStep; writeInterval 1;
+        fields (p); interpolationScheme cellPoint;
+        probeLocations ( {probes} );
+    }}
+}}
+"""
+
+
+def _internal(case, field):
+    """dimensions and internalField of <case>/0/<field> (0.orig)."""
+    for d in ("0", "0.orig"):
+        path = os.path.join(case, d, field)
+        if os.path.isfile(path):
+            out = []
+            for key in ("dimensions", "internalField"):
+                r = subprocess.run(["foamDictionary", "-entry", key,
+                                    "-value", path],
+                                   capture_output=True, text=True)
+                if r.returncode != 0:
+                    raise PlaneWaveError("%s: no %s" % (path, key))
+                out.append(r.stdout.strip())
+            return out
+    raise PlaneWaveError("%s: no 0/%s" % (case, field))
+
+
+class PlaneWave:
+    """The 1D answer: times [s] and p [Pa] (one column per height)."""
+
+    def __init__(self, heights, t, p, dz, Z):
+        self.heights = np.asarray(heights, dtype=float)
+        self.t = t
+        self.p = p
+        self.dz = dz
+        self.Z = Z
+
+    def at(self, z):
+        """p(t) [Pa] at height z [m] (one of the computed heights)."""
+        k = int(np.argmin(abs(self.heights - z)))
+        if abs(self.heights[k] - z) > 1e-12:
+            raise PlaneWaveError("height %g m not computed (heights %s m)"
+                                 % (z, self.heights))
+        return self.p[:, k]
+
+
+def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
+           log=None):
+    """Run the 1D column of <case> (water column of height Z [m]; the
+    patches top and bottom) to endTime [s] with cells of dz [m], probes at
+    heights [m]; returns a PlaneWave. work: the folder of the run (kept),
+    else a temporary one."""
+    n = int(round(Z/dz))
+    if n < 1 or abs(n*dz - Z) > 1e-9*Z:
+        raise PlaneWaveError("dz %g m does not divide the column height "
+                             "%g m" % (dz, Z))
+    for z in heights:
+        if not 0 <= z <= Z:
+            raise PlaneWaveError("probe height %g m outside the column "
+                                 "[0, %g] m" % (z, Z))
+    keep = work is not None
+    work = work or tempfile.mkdtemp(prefix="planeWave.")
+    try:
+        if os.path.exists(work):
+            shutil.rmtree(work)
+        for d in ("0", "constant", "system"):
+            os.makedirs(os.path.join(work, d))
+        shutil.copy(os.path.join(case, "constant",
+                                 "thermophysicalProperties"),
+                    os.path.join(work, "constant"))
+        for f in ("fvSchemes", "fvSolution"):
+            shutil.copy(os.path.join(case, "system", f),
+                        os.path.join(work, "system"))
+        w = dz
+        with open(os.path.join(work, "system", "blockMeshDict"), "w") as f:
+            f.write(_BLOCK_MESH.format(w=w, Z=Z, n=n))
+        probes = " ".join("(%.17g %.17g %.17g)" % (0.5*w, z, 0.5*w)
+                          for z in heights)
+        with open(os.path.join(work, "system", "controlDict"), "w") as f:
+            f.write(_CONTROL.format(end=endTime, co=maxCo, probes=probes))
+        for field, cls in (("p", "volScalarField"), ("T", "volScalarField"),
+                           ("U", "volVectorField")):
+            dims, internal = _internal(case, field)
+            top, _ = _entry(case, field, "top")
+            bottom, _ = _entry(case, field, "bottom")
+            with open(os.path.join(work, "0", field), "w") as f:
+                f.write(_FIELD.format(cls=cls, name=field, dims=dims,
+                                      internal=internal,
+                                      top=top, bottom=bottom))
+        for app in ("blockMesh", "rhoRiemannFoam"):
+            with open(os.path.join(work, "log." + app), "w") as out:
+                r = subprocess.run([app, "-case", work], stdout=out,
+                                   stderr=subprocess.STDOUT)
+            if r.returncode != 0:
+                raise PlaneWaveError("%s failed in %s (log.%s)"
+                                     % (app, work, app))
+        data = postProcessing.series(work, "probes/p")
+        return PlaneWave(heights, data[:, 0], data[:, 1:], dz, Z)
+    finally:
+        if not keep:
+            shutil.rmtree(work, ignore_errors=True)
+
+
+def _crossing(t, p, level):
+    """First time p reaches level (linear between samples); None if never."""
+    above = np.nonzero(p >= level)[0]
+    if not len(above):
+        return None
+    k = above[0]
+    if k == 0:
+        return t[0]
+    return t[k - 1] + (level - p[k - 1])*(t[k] - t[k - 1])/(p[k] - p[k - 1])
+
+
+def _integral(t, p, a, b):
+    """int_a^b p dt, trapezoidal on the samples, p linear between them."""
+    if b <= a:
+        return 0.0
+    tt = np.concatenate(([a], t[(t > a) & (t < b)], [b]))
+    return np.trapz(np.interp(tt, t, p), tt)
+
+
+def runningMean(t, p, window):
+    """The mean of p over [t - window/2, t + window/2] at every sample
+    whose window lies inside the data (exact for p linear between
+    samples)."""
+    P = np.concatenate(([0.0], np.cumsum(0.5*(p[1:] + p[:-1])*np.diff(t))))
+    ok = (t - 0.5*window >= t[0]) & (t + 0.5*window <= t[-1])
+    tc = t[ok]
+
+    def prim(x):
+        k = np.clip(np.searchsorted(t, x) - 1, 0, len(t) - 2)
+        dt = x - t[k]
+        slope = (p[k + 1] - p[k])/(t[k + 1] - t[k])
+        return P[k] + p[k]*dt + 0.5*slope*dt*dt
+
+    return tc, (prim(tc + 0.5*window) - prim(tc - 0.5*window))/window
+
+
+def measures(t, p, tRef, pRef, amplitude, duration, z, c0=1450.0):
+    """The issue-17 numbers of a history p(t) (see the module text) and
+    of the reference pRef(tRef) at the same height z [m]; the windows are
+    taken from the reference. Returns (scene, reference) dicts."""
+    t = np.asarray(t, dtype=float)
+    p = np.asarray(p, dtype=float)
+    ta = _crossing(tRef, pRef, 0.5*amplitude)
+    if ta is None:
+        raise PlaneWaveError("the reference never reaches half the applied "
+                             "pressure at z = %g m" % z)
+    echo = 2*z/c0
+    plateau = (ta + 1e-9, ta + min(duration, echo) - 1e-9)
+    passage = (ta - 2e-9, ta + duration + echo + 5e-9)
+    out = []
+    for tt, pp in ((t, p), (tRef, pRef)):
+        tc, mean = runningMean(tt, pp, 1e-9)
+        a, b = max(passage[0], tt[0]), min(passage[1], tt[-1])
+        out.append({
+            "arrival": _crossing(tt, pp, 0.5*amplitude),
+            "peak1ns": mean.max() if len(mean) else None,
+            "plateau": (_integral(tt, pp, *plateau)
+                        /(plateau[1] - plateau[0])
+                        if plateau[1] - plateau[0] >= 1e-9
+                        and plateau[1] <= tt[-1] else None),
+            "impulse": _integral(tt, pp, a, b),
+            "impulseWindow": (a, b),
+        })
+    return out[0], out[1]
+
+
+def errors(scene, ref):
+    """Arrival difference [s] and relative errors [-] of peak1ns, plateau
+    and impulse (None where either is missing)."""
+    e = {"arrival": (None if scene["arrival"] is None
+                     else scene["arrival"] - ref["arrival"])}
+    for k in ("peak1ns", "plateau", "impulse"):
+        e[k] = (None if scene[k] is None or ref[k] is None
+                else scene[k]/ref[k] - 1)
+    return e

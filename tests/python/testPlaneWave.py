@@ -1,0 +1,109 @@
+"""neuronFsi.planeWave on synthetic histories with known answers: the
+pulse's shape, the 1-ns running mean, the four measures and their errors
+(the 1D column run itself is tested by tests/blast/planeWave.sh)."""
+import unittest
+
+import numpy as np
+
+from fixtures import TempDirTestCase
+from neuronFsi import planeWave as pw
+
+TABLE = [(0, 0), (1e-10, 5e7), (5e-9, 5e7), (5.1e-9, 0), (1, 0)]
+
+
+def trapezoid(t, t0, rise, width, amp):
+    """A pulse arriving at t0: linear rise, plateau, linear fall."""
+    return amp*np.clip(np.minimum((t - t0)/rise, (t0 + width - t)/rise + 1),
+                       0, 1)
+
+
+class PulseShape(TempDirTestCase):
+
+    def testAmplitudeAndHalfWidth(self):
+        amp, T = pw.pulseShape(TABLE)
+        self.assertEqual(amp, 5e7)
+        # half-amplitude crossings at 0.05 ns and 5.05 ns
+        self.assertAlmostEqual(T, 5e-9, delta=1e-20)
+
+    def testAppliedPressureReadsTheTopTable(self):
+        self.write("0.orig/p",
+                   "internalField uniform 0;\nboundaryField\n{\n"
+                   "    top { type uniformFixedValue; uniformValue "
+                   "table ((0 0) (1e-10 5e7) (5e-09 5e7) (5.1e-09 0)"
+                   " (1 0)); }\n    bottom { type zeroGradient; }\n}\n")
+        self.assertEqual(pw.appliedPressure(self.tmp),
+                         [(float(a), float(b)) for a, b in TABLE])
+        with self.assertRaisesRegex(pw.PlaneWaveError,
+                                    "boundaryField/bottom has no "
+                                    "uniformValue table"):
+            pw.appliedPressure(self.tmp, "bottom")
+
+
+class RunningMean(unittest.TestCase):
+
+    def testExactForPiecewiseLinear(self):
+        # uneven samples of a piecewise linear p: the window mean is exact
+        t = np.sort(np.concatenate(([0, 10e-9], np.random.RandomState(1)
+                                    .uniform(0, 10e-9, 300))))
+        p = trapezoid(t, 2e-9, 1e-9, 4e-9, 3.0)
+        tc, m = pw.runningMean(t, p, 1e-9)
+        # at the plateau's middle the mean is the plateau; on the rise
+        # centred at 2.5 ns (window 2-3 ns) it is the mean of 0..3: 1.5
+        self.assertAlmostEqual(np.interp(4.5e-9, tc, m), 3.0, places=12)
+        k = np.argmin(abs(tc - 2.5e-9))
+        # elsewhere: the mean of the samples' linear interpolant
+        fine = np.linspace(tc[k] - 0.5e-9, tc[k] + 0.5e-9, 2000001)
+        exact = np.trapz(np.interp(fine, t, p), fine)/1e-9
+        self.assertAlmostEqual(m[k], exact, places=9)
+        self.assertTrue(tc[0] >= 0.5e-9 and tc[-1] <= 9.5e-9)
+
+
+class Measures(unittest.TestCase):
+
+    def setUp(self):
+        self.t = np.linspace(0, 100e-9, 20001)
+        # incident pulse at 40 ns, its echo 2 z / c later (z = 6 um)
+        self.z, self.c = 6e-6, 1500.0
+        echo = 2*self.z/self.c
+        self.ref = (trapezoid(self.t, 40e-9, 0.1e-9, 5e-9, 5e7)
+                    + trapezoid(self.t, 40e-9 + echo, 0.1e-9, 5e-9, 5e7))
+
+    def measure(self, p):
+        return pw.measures(self.t, p, self.t, self.ref, 5e7, 5e-9, self.z,
+                           c0=self.c)
+
+    def testReferenceAgainstItself(self):
+        s, r = self.measure(self.ref)
+        self.assertAlmostEqual(r["arrival"], 40.05e-9, delta=1e-15)
+        self.assertAlmostEqual(r["plateau"], 5e7, delta=1e-3)
+        self.assertAlmostEqual(r["peak1ns"], 5e7, delta=1e-3)
+        # two pulses of 5 ns (ramps included: 5.1 - 0.1) x 50 MPa
+        self.assertAlmostEqual(r["impulse"], 2*5e7*5e-9, delta=1e-9)
+        e = pw.errors(s, r)
+        self.assertEqual(e, {"arrival": 0.0, "peak1ns": 0.0,
+                             "plateau": 0.0, "impulse": 0.0})
+
+    def testDelayedAndDiffusedScene(self):
+        # late by 0.2 ns and 10 % low: the errors say so
+        late = 0.9*np.interp(self.t - 0.2e-9, self.t, self.ref)
+        e = pw.errors(*self.measure(late))
+        self.assertAlmostEqual(e["arrival"], 0.2e-9 + 0.1e-9*(1/0.9 - 1)
+                               * 0.5, delta=2e-12)
+        for k in ("peak1ns", "plateau", "impulse"):
+            self.assertAlmostEqual(e[k], -0.1, delta=1e-6, msg=k)
+
+    def testNoPlateauWhenTheEchoComesFirst(self):
+        # probe 0.5 um above the wall: echo after 0.67 ns, no plateau
+        s, r = pw.measures(self.t, self.ref, self.t, self.ref, 5e7, 5e-9,
+                           0.5e-6, c0=self.c)
+        self.assertIsNone(r["plateau"])
+        self.assertIsNone(pw.errors(s, r)["plateau"])
+
+    def testNoArrivalIsAnError(self):
+        with self.assertRaisesRegex(pw.PlaneWaveError, "never reaches"):
+            pw.measures(self.t, self.ref, self.t, 0*self.ref, 5e7, 5e-9,
+                        self.z)
+
+
+if __name__ == "__main__":
+    unittest.main()
