@@ -99,13 +99,12 @@ def planeWave(case):
         return None
     table = postProcessing.readTable(path)
     heights = [float(n[3:]) for n in table.names[1:]]
-    z = None
-    for line in postProcessing.header(case, "solidProbes/solidProbes.dat"):
-        if line.startswith("probe 0 at ("):
-            x = line.split("(")[1].split(")")[0].split()
-            z = float(x[1]) if float(x[2]) == 0 else float(x[2])
-    if z is None:
+    found = postProcessing.probes(case)
+    if not found:
         return None
+    # the height: z of an r-z probe (r z 0), else the third coordinate
+    x = found[0]["point"]
+    z = x[1] if x[2] == 0 else x[2]
     k = int(np.argmin([abs(h - z) for h in heights]))
     if abs(heights[k] - z) > 1e-3*z:
         return None
