@@ -77,7 +77,7 @@ std::unique_ptr<solid::Model> block()
     std::unique_ptr<solid::Model> model(new solid::Model(mesh));
     solid::MaterialParameters p;
     p.name = "solid";
-    p.c0 = 100;
+    p.C10 = 100;
     p.branches = {{200, 0.5}};
     model->setMaterial("solid", solid::Material::create(p));
     model->fix("bottom", 0);
