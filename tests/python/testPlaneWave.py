@@ -77,11 +77,13 @@ class Measures(unittest.TestCase):
         self.assertAlmostEqual(r["arrival"], 40.05e-9, delta=1e-15)
         self.assertAlmostEqual(r["plateau"], 5e7, delta=1e-3)
         self.assertAlmostEqual(r["peak1ns"], 5e7, delta=1e-3)
+        self.assertAlmostEqual(r["peakIncident"], 5e7, delta=1e-3)
         # two pulses of 5 ns (ramps included: 5.1 - 0.1) x 50 MPa
         self.assertAlmostEqual(r["impulse"], 2*5e7*5e-9, delta=1e-9)
         e = pw.errors(s, r)
         self.assertEqual(e, {"arrival": 0.0, "peak1ns": 0.0,
-                             "plateau": 0.0, "impulse": 0.0})
+                             "peakIncident": 0.0, "plateau": 0.0,
+                             "impulse": 0.0})
 
     def testDelayedAndDiffusedScene(self):
         # late by 0.2 ns and 10 % low: the errors say so
@@ -89,8 +91,24 @@ class Measures(unittest.TestCase):
         e = pw.errors(*self.measure(late))
         self.assertAlmostEqual(e["arrival"], 0.2e-9 + 0.1e-9*(1/0.9 - 1)
                                * 0.5, delta=2e-12)
-        for k in ("peak1ns", "plateau", "impulse"):
+        for k in ("peak1ns", "peakIncident", "plateau", "impulse"):
             self.assertAlmostEqual(e[k], -0.1, delta=1e-6, msg=k)
+
+    def testIncidentPeakLeavesTheEchoOut(self):
+        # a pulse longer than the echo delay: incident and echo overlap
+        # (100 MPa) at the probe; an echo 20 % high moves peak1ns, not the
+        # incident peak
+        t, z, c = self.t, 3e-6, self.c
+        echo = 2*z/c
+        inc = trapezoid(t, 40e-9, 0.1e-9, 10e-9, 5e7)
+        ref = inc + trapezoid(t, 40e-9 + echo, 0.1e-9, 10e-9, 5e7)
+        scene = inc + 1.2*trapezoid(t, 40e-9 + echo, 0.1e-9, 10e-9, 5e7)
+        s, r = pw.measures(t, scene, t, ref, 5e7, 10e-9, z, c0=c)
+        self.assertAlmostEqual(r["peak1ns"], 1e8, delta=1)
+        self.assertAlmostEqual(r["peakIncident"], 5e7, delta=1)
+        e = pw.errors(s, r)
+        self.assertAlmostEqual(e["peak1ns"], 0.1, delta=1e-9)
+        self.assertAlmostEqual(e["peakIncident"], 0.0, delta=1e-12)
 
     def testNoPlateauWhenTheEchoComesFirst(self):
         # probe 0.5 um above the wall: echo after 0.67 ns, no plateau
