@@ -1,5 +1,6 @@
 """neuronFsi.foamDict: reading values, nested dictionaries, lists,
 comments, includes; setting entries in the text with the rest kept."""
+import os
 import unittest
 
 from fixtures import TempDirTestCase
@@ -77,14 +78,11 @@ class FoamDict(TempDirTestCase):
 
     def testIncludeExpandsEnvironment(self):
         # As the tutorials include the paper's parameter sets
-        sets = os.path.join(self.tmp.name, "sets")
-        os.makedirs(sets)
-        with open(os.path.join(sets, "table"), "w") as f:
-            f.write("nucleus { C10 13.33; mu1 862.22; }\n")
+        self.write("sets/table", "nucleus { C10 13.33; mu1 862.22; }\n")
         p = self.write("solidProperties", 'materials\n{\n'
                        '    #include "$FOAMDICT_TEST_DIR/sets/table"\n'
                        '    nucleus { C10 6.67; }\n}\n')
-        os.environ["FOAMDICT_TEST_DIR"] = self.tmp.name
+        os.environ["FOAMDICT_TEST_DIR"] = self.tmp
         try:
             self.assertEqual(foamDict.read(p), {"materials": {"nucleus": {
                 "C10": 6.67, "mu1": 862.22}}})
