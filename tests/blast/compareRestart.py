@@ -60,6 +60,16 @@ def main():
             continue
         r = postProcessing.readTable(segs[0][1]).data()
         ncols = r.shape[1]
+        # von Mises (a few Pa) comes from stresses of the pressure's size
+        # (1e8 Pa): its round-off floor is eps x that, about 4e-9 of its
+        # own range. Its column allows that floor (16 eps of the probes'
+        # largest pressure [Pa]) on top of TOL.
+        names = postProcessing.names(ref, log)
+        pScale = max([np.abs(r[:, j]).max() for j, n in enumerate(names)
+                      if n[:1] == "p" and n[1:].isdigit()], default=0)
+        vonMisesFloor = np.array([16*np.finfo(float).eps*pScale
+                                  if n.startswith("vonMises") else 0
+                                  for n in names])
         ks = postProcessing.segments(killed, log)
         compared = missing = 0
         worst = np.zeros(ncols)
@@ -89,15 +99,7 @@ def main():
             compared += len(k)
             c = list(cols) if cols is not None else list(range(ncols))
             scale = np.maximum(np.abs(r[:, c]).max(axis=0), 1e-300)
-            # von Mises (a few Pa) comes from stresses of the pressure's
-            # size (1e8 Pa): its round-off floor is eps x that, about 4e-9
-            # of its own range. Its column allows that floor (16 eps of
-            # the probes' largest pressure) on top of TOL.
-            names = postProcessing.names(ref, log)
-            pScale = max([np.abs(r[:, j]).max() for j, n in enumerate(names)
-                          if n[:1] == "p" and n[1:].isdigit()], default=0)
-            floor = np.array([16*np.finfo(float).eps*pScale/scale[k_]
-                              if names[j].startswith("vonMises") else 0
+            floor = np.array([vonMisesFloor[j]/scale[k_]
                               for k_, j in enumerate(c)])
             if a.pulse is not None and "Probes" in log and i == len(segs) - 1:
                 peak = k[:, 1].max() if len(k) else 0

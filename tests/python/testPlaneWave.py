@@ -39,6 +39,23 @@ class PulseShape(TempDirTestCase):
             pw.appliedPressure(self.tmp, "bottom")
 
 
+class ReferenceFile(TempDirTestCase):
+
+    def testWrittenHeightsAndValuesReadBack(self):
+        heights = [5.3193428690369811e-06, 1e-05]
+        t = np.array([0.0, 1e-10, 2e-10])
+        p = np.array([[0.0, 1.0], [2.5e7, 3.0], [5e7, 0.25]])
+        path = self.tmp + "/reference.dat"
+        pw.writeReference(path, pw.PlaneWave(heights, t, p, 25e-9, 1e-4),
+                          "test")
+        back = pw.readReference(path)
+        np.testing.assert_array_equal(back.heights, heights)
+        np.testing.assert_array_equal(back.t, t)
+        np.testing.assert_array_equal(back.at(heights[0]), p[:, 0])
+        with self.assertRaisesRegex(pw.PlaneWaveError, "not computed"):
+            back.at(2e-5)
+
+
 class RunningMean(unittest.TestCase):
 
     def testExactForPiecewiseLinear(self):

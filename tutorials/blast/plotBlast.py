@@ -23,7 +23,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-from neuronFsi import logs, postProcessing
+from neuronFsi import logs, planeWave, postProcessing
 
 args = sys.argv[1:]
 prefix, labels, cases, until = None, [], [], np.inf
@@ -89,27 +89,20 @@ def summary(case):
         notConverged=int(np.sum(c[:, 4] == 0)), cpu=cpu, clock=clock)
 
 
-def planeWave(case):
+def planeWaveAnswer(case):
     """time [s] and p [Pa] of the 1D plane wave at probe 0's height
     (postProcessing/planeWave/0/reference.dat of the planeWave utility),
     or None"""
     path = os.path.join(case, "postProcessing", "planeWave", "0",
                         "reference.dat")
-    if not os.path.isfile(path):
+    solid = planeWave.caseProbes(case, fluid=False)
+    if not os.path.isfile(path) or not solid:
         return None
-    table = postProcessing.readTable(path)
-    heights = [float(n[3:]) for n in table.names[1:]]
-    found = postProcessing.probes(case)
-    if not found:
+    wave = planeWave.readReference(path)
+    try:
+        return wave.t, wave.at(solid[0][1])
+    except planeWave.PlaneWaveError:
         return None
-    # the height: z of an r-z probe (r z 0), else the third coordinate
-    x = found[0]["point"]
-    z = x[1] if x[2] == 0 else x[2]
-    k = int(np.argmin([abs(h - z) for h in heights]))
-    if abs(heights[k] - z) > 1e-3*z:
-        return None
-    d = table.data()
-    return d[:, 0], d[:, 1 + k]
 
 
 def fig10(cases, labels, out):
@@ -117,7 +110,7 @@ def fig10(cases, labels, out):
     for case, lab in zip(cases, labels):
         t, p, vm, ez, rate = probes(case)
         tn = t*1e9
-        ref = planeWave(case)
+        ref = planeWaveAnswer(case)
         if ref is not None:
             ax[0, 0].plot(ref[0]*1e9, ref[1]/1e6, "k--", lw=0.8,
                           label=f"{lab}: 1D plane wave (planeWave)")

@@ -43,54 +43,13 @@ Usage
 """
 
 import argparse
-import glob
 import os
-import re
 import sys
-
 
 from neuronFsi import planeWave, postProcessing
 
 BOUNDS = {"arrival": 0.3e-9, "peak1ns": 0.05, "peakIncident": 0.05,
           "plateau": 0.05, "impulse": 0.03}
-
-
-def solidProbes(case, rz):
-    """[(name, z [m], t [s], p [Pa])] of the solid probes: the height of
-    the probe point the header names ((r z 0) in r-z, (x y z) in 3D)."""
-    log = "solidProbes/solidProbes.dat"
-    try:
-        found = postProcessing.probes(case, log)
-    except postProcessing.ColumnFileError:
-        return []
-    data = postProcessing.series(case, log)
-    cols = postProcessing.names(case, log)
-    return [("solid p%d" % i, q["point"][1 if rz else 2], data[:, 0],
-             data[:, cols.index("p%d" % i)]) for i, q in enumerate(found)]
-
-
-def fluidProbes(case, axis):
-    """[(name, z [m], t [s], p [Pa])] of every OpenFOAM probes function
-    object of the case (postProcessing/<name>/<start>/p with '# Probe'
-    lines); the height is the coordinate along axis (1: y, 2: z)."""
-    out = []
-    for d in sorted(glob.glob(os.path.join(case, "postProcessing", "*"))):
-        log = os.path.basename(d) + "/p"
-        try:
-            head = postProcessing.header(case, log)
-        except postProcessing.ColumnFileError:
-            continue
-        data = None
-        for line in head:
-            m = re.match(r"Probe (\d+) \((\S+) (\S+) (\S+)\)", line)
-            if m:
-                if data is None:
-                    data = postProcessing.series(case, log)
-                i = int(m.group(1))
-                out.append(("%s %d" % (os.path.basename(d), i),
-                            float(m.group(2 + axis)), data[:, 0],
-                            data[:, 1 + i]))
-    return out
 
 
 def main():
@@ -120,10 +79,7 @@ def main():
     table = planeWave.appliedPressure(case)
     amp, T = planeWave.pulseShape(table)
     kinds = a.probes.split(",")
-    probes = solidProbes(case, _wedge(case)) if "solid" in kinds else []
-    if "fluid" in kinds:
-        # the fluid's height axis: y in the wedge (r along x), z in 3D
-        probes += fluidProbes(case, 1 if _wedge(case) else 2)
+    probes = planeWave.caseProbes(case, "solid" in kinds, "fluid" in kinds)
     if not probes:
         sys.exit("planeWave: no solid or fluid probes in %s/postProcessing"
                  % case)
@@ -138,22 +94,13 @@ def main():
     out = os.path.join(case, "postProcessing", "planeWave", "0")
     os.makedirs(out, exist_ok=True)
     if a.reference:
-        ref = postProcessing.readTable(a.reference).data()
-        t, P = ref[:, 0], ref[:, 1:]
-        if P.shape[1] != len(heights):
-            sys.exit("planeWave: %s has %d heights, the case's probes %d"
-                     % (a.reference, P.shape[1], len(heights)))
-        wave = planeWave.PlaneWave(heights, t, P, a.dz, a.Z)
+        wave = planeWave.readReference(a.reference)
     else:
         wave = planeWave.column(case, heights, a.Z, end, dz=a.dz)
-        with open(os.path.join(out, "reference.dat"), "w") as f:
-            f.write("# 1D plane wave of %s: column %g m, cells %g m, pulse "
-                    "%g Pa for %g s\n" % (case, a.Z, a.dz, amp, T))
-            f.write("# time [s]  " + " ".join(
-                "p_z%.6g[Pa]" % z for z in heights) + "\n")
-            for k in range(len(wave.t)):
-                f.write("%.10g %s\n" % (wave.t[k], " ".join(
-                    "%.10g" % v for v in wave.p[k])))
+        planeWave.writeReference(
+            os.path.join(out, "reference.dat"), wave,
+            "1D plane wave of %s: column %g m, cells %g m, pulse %g Pa for "
+            "%g s" % (case, a.Z, a.dz, amp, T))
 
     rows, bad = [], []
     for name, z, t, pz in probes:
@@ -216,12 +163,6 @@ def main():
 
 def _fmt(kind, v):
     return "%.3g ns" % (v*1e9) if kind == "arrival" else "%.3g %%" % (v*100)
-
-
-def _wedge(case):
-    """True when the fluid mesh is an r-z wedge (height along y)."""
-    path = os.path.join(case, "constant", "polyMesh", "boundary")
-    return os.path.isfile(path) and "wedge" in open(path).read()
 
 
 if __name__ == "__main__":

@@ -38,7 +38,9 @@ The windows come from the reference, so the scene and the reference are
 integrated over the same times.
 """
 
+import glob
 import os
+import re
 import shutil
 import subprocess
 import tempfile
@@ -53,32 +55,32 @@ class PlaneWaveError(Exception):
     """A column that cannot be set up or run; the message says why."""
 
 
-def _entry(case, field, patch):
-    """The entry boundaryField/<patch> of <case>/0/<field> (0.orig when
-    0/ has no such file) as foamDictionary prints it: `<patch> { ... }`."""
+def _fieldFile(case, field):
+    """<case>/0/<field>, else <case>/0.orig/<field> (before restore0Dir)."""
     for d in ("0", "0.orig"):
         path = os.path.join(case, d, field)
         if os.path.isfile(path):
-            out = subprocess.run(
-                ["foamDictionary", "-entry", "boundaryField/" + patch,
-                 path], capture_output=True, text=True)
-            if out.returncode != 0:
-                raise PlaneWaveError("%s: no boundaryField/%s (%s)"
-                                     % (path, patch, out.stderr.strip()))
-            return out.stdout, path
+            return path
     raise PlaneWaveError("%s: no 0/%s or 0.orig/%s" % (case, field, field))
+
+
+def _foamDictionary(path, entry, value=False):
+    """An entry of a dictionary file as foamDictionary prints it (with
+    value: its value only)."""
+    out = subprocess.run(["foamDictionary", "-entry", entry]
+                         + (["-value"] if value else []) + [path],
+                         capture_output=True, text=True)
+    if out.returncode != 0:
+        raise PlaneWaveError("%s: no %s (%s)"
+                             % (path, entry, out.stderr.strip()))
+    return out.stdout
 
 
 def appliedPressure(case, patch="top"):
     """The pulse table [(t [s], p [Pa])] of the top face: the uniformValue
     table of 0/p (0.orig/p), relative to the ambient internal pressure."""
-    for d in ("0", "0.orig"):
-        path = os.path.join(case, d, "p")
-        if os.path.isfile(path):
-            p = foamDict.read(path)
-            break
-    else:
-        raise PlaneWaveError("%s: no 0/p or 0.orig/p" % case)
+    path = _fieldFile(case, "p")
+    p = foamDict.read(path)
     try:
         top = p["boundaryField"][patch]
         kind, table = top["uniformValue"]
@@ -155,23 +157,6 @@ functions
 """
 
 
-def _internal(case, field):
-    """dimensions and internalField of <case>/0/<field> (0.orig)."""
-    for d in ("0", "0.orig"):
-        path = os.path.join(case, d, field)
-        if os.path.isfile(path):
-            out = []
-            for key in ("dimensions", "internalField"):
-                r = subprocess.run(["foamDictionary", "-entry", key,
-                                    "-value", path],
-                                   capture_output=True, text=True)
-                if r.returncode != 0:
-                    raise PlaneWaveError("%s: no %s" % (path, key))
-                out.append(r.stdout.strip())
-            return out
-    raise PlaneWaveError("%s: no 0/%s" % (case, field))
-
-
 class PlaneWave:
     """The 1D answer: times [s] and p [Pa] (one column per height)."""
 
@@ -191,8 +176,7 @@ class PlaneWave:
         return self.p[:, k]
 
 
-def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
-           log=None):
+def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None):
     """Run the 1D column of <case> (water column of height Z [m]; the
     patches top and bottom) to endTime [s] with cells of dz [m], probes at
     heights [m]; returns a PlaneWave. work: the folder of the run (kept),
@@ -218,22 +202,23 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
         for f in ("fvSchemes", "fvSolution"):
             shutil.copy(os.path.join(case, "system", f),
                         os.path.join(work, "system"))
-        w = dz
         with open(os.path.join(work, "system", "blockMeshDict"), "w") as f:
-            f.write(_BLOCK_MESH.format(w=w, Z=Z, n=n))
-        probes = " ".join("(%.17g %.17g %.17g)" % (0.5*w, z, 0.5*w)
+            f.write(_BLOCK_MESH.format(w=dz, Z=Z, n=n))
+        probes = " ".join("(%.17g %.17g %.17g)" % (0.5*dz, z, 0.5*dz)
                           for z in heights)
         with open(os.path.join(work, "system", "controlDict"), "w") as f:
             f.write(_CONTROL.format(end=endTime, co=maxCo, probes=probes))
         for field, cls in (("p", "volScalarField"), ("T", "volScalarField"),
                            ("U", "volVectorField")):
-            dims, internal = _internal(case, field)
-            top, _ = _entry(case, field, "top")
-            bottom, _ = _entry(case, field, "bottom")
+            path = _fieldFile(case, field)
             with open(os.path.join(work, "0", field), "w") as f:
-                f.write(_FIELD.format(cls=cls, name=field, dims=dims,
-                                      internal=internal,
-                                      top=top, bottom=bottom))
+                f.write(_FIELD.format(
+                    cls=cls, name=field,
+                    dims=_foamDictionary(path, "dimensions", True).strip(),
+                    internal=_foamDictionary(path, "internalField",
+                                             True).strip(),
+                    top=_foamDictionary(path, "boundaryField/top"),
+                    bottom=_foamDictionary(path, "boundaryField/bottom")))
         for app in ("blockMesh", "rhoRiemannFoam"):
             with open(os.path.join(work, "log." + app), "w") as out:
                 r = subprocess.run([app, "-case", work], stdout=out,
@@ -246,6 +231,76 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
     finally:
         if not keep:
             shutil.rmtree(work, ignore_errors=True)
+
+
+def writeReference(path, wave, what):
+    """Write a PlaneWave as a column file: time [s], then p_z<height>[Pa]
+    per height (what: the description line)."""
+    with open(path, "w") as f:
+        f.write("# %s\n# time [s]  %s\n" % (what, " ".join(
+            "p_z%.17g[Pa]" % z for z in wave.heights)))
+        for k in range(len(wave.t)):
+            f.write("%.10g %s\n" % (wave.t[k], " ".join(
+                "%.10g" % v for v in wave.p[k])))
+
+
+def readReference(path):
+    """The PlaneWave of a file of writeReference."""
+    table = postProcessing.readTable(path)
+    d = table.data()
+    try:
+        heights = [float(n[3:]) for n in table.names[1:]]
+    except ValueError:
+        raise PlaneWaveError("%s: columns %s are not p_z<height>"
+                             % (path, table.names[1:]))
+    return PlaneWave(heights, d[:, 0], d[:, 1:], None, None)
+
+
+def isWedge(case):
+    """True when the fluid mesh is an r-z wedge (height along y, the solid
+    probes' points (r z 0)); else 3D (height along z)."""
+    path = os.path.join(case, "constant", "polyMesh", "boundary")
+    return os.path.isfile(path) and "wedge" in open(path).read()
+
+
+def caseProbes(case, solid=True, fluid=True):
+    """[(name, height [m], t [s], p [Pa])] of a blast case's probes: the
+    solid probes (postProcessing/solidProbes, pressure p<i> at the probe's
+    reference point) and every OpenFOAM probes function object sampling
+    p (postProcessing/<name>/<start>/p)."""
+    axis = 1 if isWedge(case) else 2
+    out = []
+    log = "solidProbes/solidProbes.dat"
+    if solid and _has(case, log):
+        data = postProcessing.series(case, log)
+        cols = postProcessing.names(case, log)
+        out += [("solid p%d" % i, q["point"][axis], data[:, 0],
+                 data[:, cols.index("p%d" % i)])
+                for i, q in enumerate(postProcessing.probes(case, log))]
+    for d in sorted(glob.glob(os.path.join(case, "postProcessing", "*"))):
+        log = os.path.basename(d) + "/p"
+        if not fluid or not _has(case, log):
+            continue
+        data = None
+        for line in postProcessing.header(case, log):
+            m = re.match(r"Probe (\d+) \((\S+) (\S+) (\S+)\)", line)
+            if m:
+                if data is None:
+                    data = postProcessing.series(case, log)
+                i = int(m.group(1))
+                out.append(("%s %d" % (os.path.basename(d), i),
+                            float(m.group(2 + axis)), data[:, 0],
+                            data[:, 1 + i]))
+    return out
+
+
+def _has(case, log):
+    """True when the case has the log postProcessing/<dir>/<start>/<file>."""
+    try:
+        postProcessing.segments(case, log)
+        return True
+    except postProcessing.ColumnFileError:
+        return False
 
 
 def _crossing(t, p, level):
