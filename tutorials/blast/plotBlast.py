@@ -95,12 +95,13 @@ def planeWaveAnswer(case):
     or None"""
     path = os.path.join(case, "postProcessing", "planeWave", "0",
                         "reference.dat")
-    solid = planeWave.caseProbes(case, fluid=False)
+    solid = postProcessing.probes(case)
     if not os.path.isfile(path) or not solid:
         return None
     wave = planeWave.readReference(path)
+    z = solid[0]["point"][1 if planeWave.isWedge(case) else 2]
     try:
-        return wave.t, wave.at(solid[0][1])
+        return wave.t, wave.at(z)
     except planeWave.PlaneWaveError:
         return None
 
