@@ -30,9 +30,12 @@ Usage
 #include "conservativeFluid.H"
 #include "fluidSolidInteraction.H"
 #include "writeGuard.H"
+#include "heapPolicy.H"
 
 int main(int argc, char *argv[])
 {
+    foamTools::keepFreedMemory();
+
     argList::addNote
     (
         "Fluid-structure interaction of the compressible water solver with"

@@ -32,10 +32,13 @@ Usage
 #include "fvCFD.H"
 #include "conservativeFluid.H"
 #include "writeGuard.H"
+#include "heapPolicy.H"
 #include "inputChecks.H"
 
 int main(int argc, char *argv[])
 {
+    foamTools::keepFreedMemory();
+
     argList::addNote
     (
         "Density-based compressible flow solver for a general equation of"
