@@ -1,4 +1,5 @@
 #include "movingMeshProbes.H"
+#include "volPointInterpolation.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -68,6 +69,14 @@ Foam::movingMeshProbes::movingMeshProbes
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::movingMeshProbes::write()
+{
+    const bool written = probes::write();
+    volPointInterpolation::Delete(mesh_);
+    return written;
+}
+
 
 void Foam::movingMeshProbes::movePoints(const polyMesh& mesh)
 {
