@@ -31,6 +31,7 @@ Usage
 #include "fluidSolidInteraction.H"
 #include "writeGuard.H"
 #include "heapPolicy.H"
+#include "caseLock.H"
 
 int main(int argc, char *argv[])
 {
@@ -46,6 +47,7 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+    const foamTools::caseLock lock(args);    // one run per case
     foamTools::writeGuard::discardIncompleteTimes(args);
     #include "createTime.H"
 

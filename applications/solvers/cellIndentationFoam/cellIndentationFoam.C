@@ -34,6 +34,7 @@ Usage
 #include "solidInput.H"
 
 #include "SolidError.H"
+#include "caseLock.H"
 
 #include <chrono>
 #include <ctime>
@@ -51,6 +52,7 @@ int main(int argc, char *argv[])
     );
     argList::noParallel();
     #include "setRootCase.H"
+    const foamTools::caseLock lock(args);    // one run per case
     #include "createTime.H"
     #include "createFields.H"
 

@@ -34,6 +34,7 @@ Usage
 #include "writeGuard.H"
 #include "heapPolicy.H"
 #include "inputChecks.H"
+#include "caseLock.H"
 
 int main(int argc, char *argv[])
 {
@@ -49,6 +50,7 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+    const foamTools::caseLock lock(args);    // one run per case
     foamTools::writeGuard::discardIncompleteTimes(args);
     #include "createTime.H"
     #include "createMesh.H"

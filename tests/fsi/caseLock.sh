@@ -1,0 +1,82 @@
+#!/bin/bash
+# One run per case (issue 19, class 3; src/foamTools/caseLock.H), on the
+# 1D pulse-layer FSI case in a scratch copy:
+#  - while a run goes on, a second cellBlastFoam in the same case exits
+#    non-zero, naming the running process and the lock file, and writes
+#    nothing; the first run's results are those of a run alone (its
+#    coupling log equal to the reference's, bitwise);
+#  - a run killed with SIGKILL leaves its lock; the next run says it
+#    removes a stale lock and runs;
+#  - a lock of another host is refused with the file to remove named;
+#  - a lock whose process id belongs to another executable (a reused id)
+#    is stale;
+#  - every run that ends (also in a fatal error) removes its lock.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+. "$here/../../etc/bashrc"
+work=$(mktemp -d)
+pids=()
+trap 'for p in "${pids[@]}"; do kill -9 "$p" 2>/dev/null || true; done; rm -rf "$work"' EXIT
+fail=0
+check() { if eval "$2"; then echo "ok   $1"; else echo "FAIL $1"; fail=1; fi; }
+
+cp -r "$here/pulseLayer" "$work/ref"
+(cd "$work/ref" && sed -i "s/^\(endTime *\)[0-9.e+-]*;/\12e-8;/" system/controlDict \
+    && blockMesh > log.blockMesh 2>&1)
+cp -r "$work/ref" "$work/case"
+(cd "$work/ref" && cellBlastFoam > log.cellBlastFoam 2>&1)
+check "a run alone removes its lock" "[ ! -e '$work/ref/.runLock' ]"
+
+# 1. A second run while the first goes on (the first slowed down with
+#    SIGSTOP so that it is surely running when the second starts)
+cd "$work/case"
+cellBlastFoam > log.first 2>&1 &
+first=$!; pids+=("$first")
+for _ in $(seq 100); do [ -s .runLock ] && break; sleep 0.1; done
+kill -STOP "$first"
+status=0; cellBlastFoam > log.second 2>&1 || status=$?
+kill -CONT "$first"
+check "the second run exits non-zero" "[ $status -ne 0 ]"
+check "its message names the first run's process and the lock file" \
+    "grep -q 'is in use by cellBlastFoam (process $first on host' log.second \
+     && grep -q 'remove $work/case/.runLock' log.second"
+wait "$first"
+check "the first run ends normally and removes its lock" \
+    "grep -q '^End' log.first && [ ! -e .runLock ]"
+check "the first run's coupling log equals the reference's" \
+    "cmp -s postProcessing/fsi/0/coupling.dat '$work/ref/postProcessing/fsi/0/coupling.dat'"
+
+# 2. A killed run leaves a stale lock; the next run takes over
+cellBlastFoam > log.killed 2>&1 &
+killed=$!; pids+=("$killed")
+for _ in $(seq 100); do [ -s .runLock ] && break; sleep 0.1; done
+kill -9 "$killed"; wait "$killed" 2>/dev/null || true
+check "a killed run leaves its lock" "[ -s .runLock ]"
+status=0; cellBlastFoam > log.afterKill 2>&1 || status=$?
+check "the next run removes the stale lock and runs" \
+    "[ $status -eq 0 ] && grep -q 'Removing the stale run lock' log.afterKill \
+     && [ ! -e .runLock ]"
+
+# 3. A lock of another host
+printf 'pid 1\nhost another-host\nexecutable cellBlastFoam\nstarted 2026-01-01T00:00:00\n' > .runLock
+status=0; cellBlastFoam > log.otherHost 2>&1 || status=$?
+check "a lock of another host is refused, the file to remove named" \
+    "[ $status -ne 0 ] && grep -q 'on host another-host' log.otherHost \
+     && grep -q 'remove $work/case/.runLock' log.otherHost && [ -s .runLock ]"
+
+# 4. A reused process id (a live process of another executable)
+sleep 60 &
+sleeper=$!; pids+=("$sleeper")
+printf 'pid %s\nhost %s\nexecutable cellBlastFoam\nstarted 2026-01-01T00:00:00\n' \
+    "$sleeper" "$(hostname)" > .runLock
+status=0; cellBlastFoam > log.reused 2>&1 || status=$?
+check "a lock whose process runs another executable is stale" \
+    "[ $status -eq 0 ] && grep -q 'Removing the stale run lock' log.reused"
+
+# 5. A run ending in a fatal error removes its lock
+mv constant/fsiProperties constant/fsiProperties.moved
+status=0; cellBlastFoam > log.fatal 2>&1 || status=$?
+check "a run that ends in a fatal error removes its lock" \
+    "[ $status -ne 0 ] && grep -q 'FOAM FATAL' log.fatal && [ ! -e .runLock ]"
+
+exit $fail
