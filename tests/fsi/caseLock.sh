@@ -11,12 +11,13 @@
 #  - a lock whose process id belongs to another executable (a reused id)
 #    is stale;
 #  - every run that ends (also in a fatal error) removes its lock.
+# The runs over the first run's results start anew with -overwrite.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
 work=$(mktemp -d)
 pids=()
-trap 'for p in "${pids[@]}"; do kill -9 "$p" 2>/dev/null || true; done; rm -rf "$work"' EXIT
+[ -n "${KEEP_WORK:-}" ] || trap 'for p in "${pids[@]}"; do kill -9 "$p" 2>/dev/null || true; done; rm -rf "$work"' EXIT
 fail=0
 check() { if eval "$2"; then echo "ok   $1"; else echo "FAIL $1"; fail=1; fi; }
 
@@ -47,12 +48,12 @@ check "the first run's coupling log equals the reference's" \
     "cmp -s postProcessing/fsi/0/coupling.dat '$work/ref/postProcessing/fsi/0/coupling.dat'"
 
 # 2. A killed run leaves a stale lock; the next run takes over
-cellBlastFoam > log.killed 2>&1 &
+cellBlastFoam -overwrite > log.killed 2>&1 &
 killed=$!; pids+=("$killed")
 for _ in $(seq 100); do [ -s .runLock ] && break; sleep 0.1; done
 kill -9 "$killed"; wait "$killed" 2>/dev/null || true
 check "a killed run leaves its lock" "[ -s .runLock ]"
-status=0; cellBlastFoam > log.afterKill 2>&1 || status=$?
+status=0; cellBlastFoam -overwrite > log.afterKill 2>&1 || status=$?
 check "the next run removes the stale lock and runs" \
     "[ $status -eq 0 ] && grep -q 'Removing the stale run lock' log.afterKill \
      && [ ! -e .runLock ]"
@@ -69,7 +70,7 @@ sleep 60 &
 sleeper=$!; pids+=("$sleeper")
 printf 'pid %s\nhost %s\nexecutable cellBlastFoam\nstarted 2026-01-01T00:00:00\n' \
     "$sleeper" "$(hostname)" > .runLock
-status=0; cellBlastFoam > log.reused 2>&1 || status=$?
+status=0; cellBlastFoam -overwrite > log.reused 2>&1 || status=$?
 check "a lock whose process runs another executable is stale" \
     "[ $status -eq 0 ] && grep -q 'Removing the stale run lock' log.reused"
 

@@ -32,6 +32,8 @@ Usage
 #include "writeGuard.H"
 #include "heapPolicy.H"
 #include "caseLock.H"
+#include "resultGuard.H"
+#include "inputRecord.H"
 
 int main(int argc, char *argv[])
 {
@@ -46,6 +48,7 @@ int main(int argc, char *argv[])
     #include "postProcess.H"
 
     #include "addCheckCaseOptions.H"
+    foamTools::resultGuard::addOption();
     #include "setRootCaseLists.H"
     const foamTools::caseLock lock(args);    // one run per case
     foamTools::writeGuard::discardIncompleteTimes(args);
@@ -58,6 +61,16 @@ int main(int argc, char *argv[])
     dynamicFvMesh& mesh = meshPtr();
 
     #include "createFields.H"
+
+    // A new start stops here, before the coupling writes, if it would
+    // replace the results of an earlier run; a restart if its inputs are
+    // not those its results were computed with
+    foamTools::resultGuard::check
+    (
+        args, runTime, {runTime.globalPath()/"solid"/"solid.h5"}
+    );
+    const foamTools::inputRecord inputs(runTime);
+    inputs.checkRestart();
 
     fluidSolidInteraction fsi(mesh, fluid);
 
@@ -84,10 +97,14 @@ int main(int argc, char *argv[])
 
         fsi.setDeltaT();
 
-        // Fluid fields, then the solid and the coupling state, inside the
-        // write markers: a time whose write was interrupted is moved aside
+        // Fluid fields, then the solid and the coupling state and the
+        // record of the inputs, inside the write markers: a time whose write was interrupted is moved aside
         // at the restart
-        foamTools::writeGuard::write(runTime, [&]{ fsi.write(stepDeltaT); });
+        foamTools::writeGuard::write
+        (
+            runTime,
+            [&]{ fsi.write(stepDeltaT); inputs.write(); }
+        );
 
         runTime.printExecutionTime(Info);
     }

@@ -35,6 +35,7 @@ Usage
 
 #include "SolidError.H"
 #include "caseLock.H"
+#include "resultGuard.H"
 
 #include <chrono>
 #include <ctime>
@@ -51,6 +52,7 @@ int main(int argc, char *argv[])
         "multi-rate loading table (solid only)"
     );
     argList::noParallel();
+    foamTools::resultGuard::addOption();
     #include "setRootCase.H"
     const foamTools::caseLock lock(args);    // one run per case
     #include "createTime.H"

@@ -35,6 +35,8 @@ Usage
 #include "heapPolicy.H"
 #include "inputChecks.H"
 #include "caseLock.H"
+#include "resultGuard.H"
+#include "inputRecord.H"
 
 int main(int argc, char *argv[])
 {
@@ -49,6 +51,7 @@ int main(int argc, char *argv[])
     #include "postProcess.H"
 
     #include "addCheckCaseOptions.H"
+    foamTools::resultGuard::addOption();
     #include "setRootCaseLists.H"
     const foamTools::caseLock lock(args);    // one run per case
     foamTools::writeGuard::discardIncompleteTimes(args);
@@ -60,6 +63,13 @@ int main(int argc, char *argv[])
 
     #include "createTimeControls.H"
     foamTools::checkTimeControls(runTime, adjustTimeStep, maxCo, maxDeltaT);
+
+    // Inputs read and checked; a new start stops here if it would replace
+    // the results of an earlier run, a restart if its inputs are not those
+    // its results were computed with
+    foamTools::resultGuard::check(args, runTime);
+    const foamTools::inputRecord inputs(runTime);
+    inputs.checkRestart();
 
     Info<< "\nStarting time loop\n" << endl;
 
@@ -81,7 +91,7 @@ int main(int argc, char *argv[])
         fluid.step(runTime.deltaTValue());
         fluid.thermo().checkStates();
 
-        foamTools::writeGuard::write(runTime);
+        foamTools::writeGuard::write(runTime, [&]{ inputs.write(); });
 
         runTime.printExecutionTime(Info);
     }

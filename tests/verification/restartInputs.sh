@@ -1,0 +1,81 @@
+#!/bin/bash
+# A restart continues only with the inputs its results were computed with
+# (issue 19, class 1; src/foamTools/inputRecord.H). The pulse-layer FSI
+# case (cellBlastFoam) and the pulse-wall case (rhoRiemannFoam) are run to
+# 10 ns (writes every 5 ns); then, with startFrom latestTime and a later
+# end time:
+#  - a changed material (solid rho0, the water's C0), a changed coupling
+#    setting, a changed scheme, a changed mesh point, an added file in
+#    constant/: each restart exits non-zero, names the file and changes
+#    nothing in the case;
+#  - an edited comment and layout, and a changed end time, are not
+#    changes: the restart runs;
+#  - every write time records the digests (uniform/inputDigests).
+set -euo pipefail
+. "$(dirname "$0")/../lib/restartTools.sh"
+fail=0
+check() { if eval "$2"; then echo "ok   $1"; else echo "FAIL $1"; fail=1; fi; }
+sums() { find . -type f ! -name 'log.*' -print0 | sort -z | xargs -0 md5sum; }
+
+# refusedAfter NAME SOLVER FILE EDIT: apply the sed EDIT to FILE in a copy
+# of the case, restart, expect the refusal naming FILE and no change
+refusedAfter()
+{
+    local name=$1 solver=$2 file=$3 edit=$4
+    rm -rf "$work/edit"; cp -r "$case" "$work/edit"; cd "$work/edit"
+    if [ -n "$edit" ]; then sed -i "$edit" "$file"; else echo "x" > "$file"; fi
+    sums > "$work/before"
+    local status=0
+    $solver > log.restart 2>&1 || status=$?
+    sums > "$work/after"
+    check "$name: the restart is refused, naming $file, nothing changed" \
+        "[ $status -ne 0 ] && grep -q 'would continue the results with other inputs' log.restart \
+         && grep -q '    $file (' log.restart && cmp -s '$work/before' '$work/after'"
+    cd "$case"
+}
+
+# cellBlastFoam
+case=$work/fsi
+mkdir "$case"; cd "$case"
+cp -r "$root/tests/fsi/pulseLayer"/* .
+sed -i 's/^startFrom .*/startFrom latestTime;/; s/^endTime .*/endTime 1e-8;/; s/^writeInterval .*/writeInterval 5e-9;/' system/controlDict
+blockMesh > log.blockMesh 2>&1
+cellBlastFoam > log.first 2>&1
+check "cellBlastFoam: each write time records its inputs, only those" \
+    "[ \"\$(foamListTimes -withZero | tr '\\n' ' ')\" = '0 5e-09 1e-08 ' ] \
+     && [ -s 5e-09/uniform/inputDigests ] && [ -s 1e-08/uniform/inputDigests ] \
+     && grep -q ' constant/solidProperties\$' 1e-08/uniform/inputDigests \
+     && grep -q ' constant/polyMesh/points\$' 1e-08/uniform/inputDigests"
+sed -i 's/^endTime .*/endTime 1.5e-8;/' system/controlDict
+refusedAfter "cellBlastFoam, solid rho0" cellBlastFoam constant/solidProperties \
+    's/rho0        1000;/rho0        1100;/'
+refusedAfter "cellBlastFoam, coupling tolerance" cellBlastFoam constant/fsiProperties \
+    's/tolerance       1e-6;/tolerance       1e-5;/'
+refusedAfter "cellBlastFoam, water C0" cellBlastFoam constant/thermophysicalProperties \
+    's/\(C0 *\)[0-9.e+-]*;/\11460;/'
+refusedAfter "cellBlastFoam, a mesh point" cellBlastFoam constant/polyMesh/points \
+    's/^(0 -5e-07 -5e-07)$/(1e-9 -5e-07 -5e-07)/'
+refusedAfter "cellBlastFoam, an added file" cellBlastFoam constant/notes ""
+sed -i 's#^\(materials\)#// a comment added before the restart\n\1#; s/rho0        1000;/rho0  1000 ;/' constant/solidProperties
+status=0; cellBlastFoam > log.restart 2>&1 || status=$?
+check "cellBlastFoam: a comment, the layout and the end time are not changes" \
+    "[ $status -eq 0 ] && grep -q '^End' log.restart && [ -d 1.5e-08 ]"
+
+# rhoRiemannFoam
+case=$work/fluid
+mkdir "$case"; cd "$case"
+cp -r "$root/tutorials/verification/waterPulseWall"/{0.orig,system,constant} .
+rm -rf constant/polyMesh; cp -r 0.orig 0
+sed -i 's/^startFrom .*/startFrom latestTime;/; s/^endTime .*/endTime 1e-8;/; s/^writeInterval .*/writeInterval 5e-9;/' system/controlDict
+blockMesh > log.blockMesh 2>&1
+rhoRiemannFoam > log.first 2>&1
+sed -i 's/^endTime .*/endTime 1.5e-8;/' system/controlDict
+refusedAfter "rhoRiemannFoam, water C0" rhoRiemannFoam constant/thermophysicalProperties \
+    's/\(C0 *\)[0-9.e+-]*;/\11460;/'
+refusedAfter "rhoRiemannFoam, the Riemann solver" rhoRiemannFoam system/fvSolution \
+    's/riemannSolver *HLLC;/riemannSolver HLL;/'
+status=0; rhoRiemannFoam > log.restart 2>&1 || status=$?
+check "rhoRiemannFoam: the unchanged restart runs" \
+    "[ $status -eq 0 ] && grep -q '^End' log.restart && [ -d 1.5e-08 ]"
+
+exit $fail
