@@ -1,5 +1,4 @@
 #include "riemannFlux.H"
-#include "fvc.H"
 #include "wallFvPatch.H"
 #include "symmetryPlaneFvPatch.H"
 #include "symmetryFvPatch.H"
@@ -26,33 +25,7 @@ bool reflecting(const Foam::fvPatch& patch)
      || isA<wedgeFvPatch>(patch);
 }
 
-Foam::surfaceScalarField directionField
-(
-    const Foam::fvMesh& mesh,
-    const Foam::word& name,
-    const Foam::scalar value
-)
-{
-    using namespace Foam;
-    return surfaceScalarField
-    (
-        IOobject(name, mesh.time().timeName(), mesh),
-        mesh,
-        dimensionedScalar("one", dimless, value)
-    );
-}
-
 } // End anonymous namespace
-
-
-void Foam::riemannFlux::faceStates::resize(const label n)
-{
-    rho.setSize(n);
-    U.setSize(n);
-    p.setSize(n);
-    e.setSize(n);
-    c.setSize(n);
-}
 
 
 void Foam::riemannFlux::faceStates::complete(const rhoEThermo& thermo)
@@ -67,8 +40,7 @@ void Foam::riemannFlux::faceStates::complete(const rhoEThermo& thermo)
 Foam::riemannFlux::riemannFlux(const fvMesh& mesh)
 :
     mesh_(mesh),
-    pos_(directionField(mesh, "pos", 1)),
-    neg_(directionField(mesh, "neg", -1))
+    reconstruction_(mesh)
 {}
 
 
@@ -119,12 +91,6 @@ void Foam::riemannFlux::fluxes
     const volScalarField& rho = thermo.rho();
     const volScalarField& p = thermo.p();
 
-    const surfaceScalarField rhoL(fvc::interpolate(rho, pos_, "reconstruct(rho)"));
-    const surfaceScalarField rhoR(fvc::interpolate(rho, neg_, "reconstruct(rho)"));
-    const surfaceVectorField UL(fvc::interpolate(U, pos_, "reconstruct(U)"));
-    const surfaceVectorField UR(fvc::interpolate(U, neg_, "reconstruct(U)"));
-    const surfaceScalarField pL(fvc::interpolate(p, pos_, "reconstruct(p)"));
-    const surfaceScalarField pR(fvc::interpolate(p, neg_, "reconstruct(p)"));
 
     // Normal speed of moving faces [m/s]
     tmp<surfaceScalarField> tw;
@@ -135,13 +101,8 @@ void Foam::riemannFlux::fluxes
 
     // Internal faces
     {
-        L_.rho = rhoL.primitiveField();
-        L_.U = UL.primitiveField();
-        L_.p = pL.primitiveField();
+        reconstruction_.reconstruct(rho, U, p, L_, R_);
         L_.complete(thermo);
-        R_.rho = rhoR.primitiveField();
-        R_.U = UR.primitiveField();
-        R_.p = pR.primitiveField();
         R_.complete(thermo);
 
         faceFluxes F
@@ -171,12 +132,7 @@ void Foam::riemannFlux::fluxes
         faceStates Lp, Rp;
         if (patch.coupled())
         {
-            Lp.rho = rhoL.boundaryField()[patchi];
-            Lp.U = UL.boundaryField()[patchi];
-            Lp.p = pL.boundaryField()[patchi];
-            Rp.rho = rhoR.boundaryField()[patchi];
-            Rp.U = UR.boundaryField()[patchi];
-            Rp.p = pR.boundaryField()[patchi];
+            reconstruction_.reconstructCoupled(patchi, rho, U, p, Lp, Rp);
         }
         else
         {
