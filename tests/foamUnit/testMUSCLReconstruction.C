@@ -185,14 +185,24 @@ void expectOpenFOAMStates
     const word scheme("reconstruct(" + vf.name() + ')');
     const surfaceScalarField pos
     (
-        primitiveFields::io(mesh, "pos"), mesh, dimensionedScalar("one", dimless, 1)
+        primitiveFields::io(mesh, "pos"),
+        mesh,
+        dimensionedScalar("one", dimless, 1)
     );
     const surfaceScalarField neg
     (
-        primitiveFields::io(mesh, "neg"), mesh, dimensionedScalar("minusOne", dimless, -1)
+        primitiveFields::io(mesh, "neg"),
+        mesh,
+        dimensionedScalar("minusOne", dimless, -1)
     );
-    const Field<Type> refL(fvc::interpolate(vf, pos, scheme)().primitiveField());
-    const Field<Type> refR(fvc::interpolate(vf, neg, scheme)().primitiveField());
+    const Field<Type> refL
+    (
+        fvc::interpolate(vf, pos, scheme)().primitiveField()
+    );
+    const Field<Type> refR
+    (
+        fvc::interpolate(vf, neg, scheme)().primitiveField()
+    );
     ASSERT_EQ(left.size(), mesh.nInternalFaces());
     EXPECT_EQ(nDiffering(left, refL), 0)
         << what << ": owner-side " << vf.name() << " of "
