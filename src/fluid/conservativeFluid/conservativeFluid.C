@@ -194,6 +194,18 @@ void Foam::conservativeFluid::fluxes()
 }
 
 
+void Foam::conservativeFluid::wallFluxes(const label patchi)
+{
+    flux_->wallFluxes(thermo_(), U_, patchi, phi_, phiU_, phiE_, amaxSf_);
+}
+
+
+void Foam::conservativeFluid::signalSpeeds()
+{
+    flux_->signalSpeeds(thermo_(), U_, amaxSf_);
+}
+
+
 Foam::scalar Foam::conservativeFluid::courantNumber(const scalar deltaT) const
 {
     tmp<surfaceScalarField> tspeedSf(amaxSf_);

@@ -390,8 +390,9 @@ void Foam::fluidSolidInteraction::step()
 
         gclError = fluid_.aleStep(dt, hint);
 
-        // Wall force at t_n+1 -> solid nodes
-        fluid_.fluxes();
+        // Wall force at t_n+1 -> solid nodes (the interface patch's fluxes
+        // only: a full evaluation costs as much as a Runge-Kutta stage)
+        fluid_.wallFluxes(patchi_);
         const vectorField wallForce
         (
             fsiPatch_.faceValues(fluid_.phiU().boundaryField()[patchi_])
@@ -445,6 +446,11 @@ void Foam::fluidSolidInteraction::step()
     }
     coupling_->endStep(runTime.value());
     fluidInterfaceDisplacement_ += dt*x;
+
+    // Signal speeds of the final state for the next step's Courant number
+    cpuTimer_.cpuTimeIncrement();
+    fluid_.signalSpeeds();
+    cpuFluid_ += cpuTimer_.cpuTimeIncrement();
 
     const vector F = gSum(fluid_.phiU().boundaryField()[patchi_]);
     if (couplingLog_.valid())

@@ -1,5 +1,4 @@
 #include "riemannFlux.H"
-#include "fvc.H"
 #include "wallFvPatch.H"
 #include "symmetryPlaneFvPatch.H"
 #include "symmetryFvPatch.H"
@@ -26,33 +25,7 @@ bool reflecting(const Foam::fvPatch& patch)
      || isA<wedgeFvPatch>(patch);
 }
 
-Foam::surfaceScalarField directionField
-(
-    const Foam::fvMesh& mesh,
-    const Foam::word& name,
-    const Foam::scalar value
-)
-{
-    using namespace Foam;
-    return surfaceScalarField
-    (
-        IOobject(name, mesh.time().timeName(), mesh),
-        mesh,
-        dimensionedScalar("one", dimless, value)
-    );
-}
-
 } // End anonymous namespace
-
-
-void Foam::riemannFlux::faceStates::resize(const label n)
-{
-    rho.setSize(n);
-    U.setSize(n);
-    p.setSize(n);
-    e.setSize(n);
-    c.setSize(n);
-}
 
 
 void Foam::riemannFlux::faceStates::complete(const rhoEThermo& thermo)
@@ -67,9 +40,33 @@ void Foam::riemannFlux::faceStates::complete(const rhoEThermo& thermo)
 Foam::riemannFlux::riemannFlux(const fvMesh& mesh)
 :
     mesh_(mesh),
-    pos_(directionField(mesh, "pos", 1)),
-    neg_(directionField(mesh, "neg", -1))
+    reconstruction_(mesh)
 {}
+
+
+Foam::tmp<Foam::surfaceScalarField> Foam::riemannFlux::faceSpeeds() const
+{
+    if (mesh_.moving())
+    {
+        return mesh_.phi()/mesh_.magSf();
+    }
+    return tmp<surfaceScalarField>();
+}
+
+
+void Foam::riemannFlux::toFaceFrame
+(
+    faceStates& L,
+    faceStates& R,
+    const vectorField& Sf,
+    const scalarField& magSf,
+    const scalarField& w
+)
+{
+    const vectorField n(Sf/magSf);
+    L.U -= w*n;
+    R.U -= w*n;
+}
 
 
 void Foam::riemannFlux::solveMoving
@@ -92,17 +89,92 @@ void Foam::riemannFlux::solveMoving
     // F_mom = F'_mom + w n F_mass,
     // F_E   = F'_E + w n.F'_mom + w^2/2 F_mass
     const scalarField& w = *wPtr;
-    const vectorField n(Sf/magSf);
-    L.U -= w*n;
-    R.U -= w*n;
+    toFaceFrame(L, R, Sf, magSf, w);
     solve(L, R, Sf, magSf, F);
     forAll(w, facei)
     {
         const scalar wi = w[facei];
+        const vector n = Sf[facei]/magSf[facei];
         F.energy[facei] +=
-            wi*(n[facei] & F.momentum[facei]) + 0.5*wi*wi*F.mass[facei];
-        F.momentum[facei] += wi*F.mass[facei]*n[facei];
+            wi*(n & F.momentum[facei]) + 0.5*wi*wi*F.mass[facei];
+        F.momentum[facei] += wi*F.mass[facei]*n;
     }
+}
+
+
+void Foam::riemannFlux::patchStates
+(
+    const rhoEThermo& thermo,
+    const volVectorField& U,
+    const label patchi,
+    const scalarField* wPtr,
+    faceStates& L,
+    faceStates& R
+) const
+{
+    const fvPatch& patch = mesh_.boundary()[patchi];
+    const volScalarField& rho = thermo.rho();
+    const volScalarField& p = thermo.p();
+
+    if (patch.coupled())
+    {
+        reconstruction_.reconstructCoupled(patchi, rho, U, p, L, R);
+    }
+    else
+    {
+        L.rho = rho.boundaryField()[patchi].patchInternalField();
+        L.U = U.boundaryField()[patchi].patchInternalField();
+        L.p = p.boundaryField()[patchi].patchInternalField();
+
+        if (reflecting(patch))
+        {
+            const vectorField n(patch.nf());
+            scalarField qRel(L.U & n);
+            if (wPtr)
+            {
+                qRel -= *wPtr;
+            }
+            R.rho = L.rho;
+            R.U = L.U - 2*qRel*n;
+            R.p = L.p;
+        }
+        else
+        {
+            R.rho = rho.boundaryField()[patchi];
+            R.U = U.boundaryField()[patchi];
+            R.p = p.boundaryField()[patchi];
+        }
+    }
+    L.complete(thermo);
+    R.complete(thermo);
+}
+
+
+void Foam::riemannFlux::patchFluxes
+(
+    const rhoEThermo& thermo,
+    const volVectorField& U,
+    const label patchi,
+    const scalarField* wPtr,
+    surfaceScalarField& massFlux,
+    surfaceVectorField& momentumFlux,
+    surfaceScalarField& energyFlux,
+    surfaceScalarField& amaxSf
+) const
+{
+    const fvPatch& patch = mesh_.boundary()[patchi];
+
+    faceStates L, R;
+    patchStates(thermo, U, patchi, wPtr, L, R);
+
+    faceFluxes F
+    {
+        massFlux.boundaryFieldRef()[patchi],
+        momentumFlux.boundaryFieldRef()[patchi],
+        energyFlux.boundaryFieldRef()[patchi],
+        amaxSf.boundaryFieldRef()[patchi]
+    };
+    solveMoving(L, R, patch.Sf(), patch.magSf(), wPtr, F);
 }
 
 
@@ -116,32 +188,13 @@ void Foam::riemannFlux::fluxes
     surfaceScalarField& amaxSf
 ) const
 {
-    const volScalarField& rho = thermo.rho();
-    const volScalarField& p = thermo.p();
-
-    const surfaceScalarField rhoL(fvc::interpolate(rho, pos_, "reconstruct(rho)"));
-    const surfaceScalarField rhoR(fvc::interpolate(rho, neg_, "reconstruct(rho)"));
-    const surfaceVectorField UL(fvc::interpolate(U, pos_, "reconstruct(U)"));
-    const surfaceVectorField UR(fvc::interpolate(U, neg_, "reconstruct(U)"));
-    const surfaceScalarField pL(fvc::interpolate(p, pos_, "reconstruct(p)"));
-    const surfaceScalarField pR(fvc::interpolate(p, neg_, "reconstruct(p)"));
-
     // Normal speed of moving faces [m/s]
-    tmp<surfaceScalarField> tw;
-    if (mesh_.moving())
-    {
-        tw = mesh_.phi()/mesh_.magSf();
-    }
+    const tmp<surfaceScalarField> tw(faceSpeeds());
 
     // Internal faces
     {
-        L_.rho = rhoL.primitiveField();
-        L_.U = UL.primitiveField();
-        L_.p = pL.primitiveField();
+        reconstruction_.reconstruct(thermo.rho(), U, thermo.p(), L_, R_);
         L_.complete(thermo);
-        R_.rho = rhoR.primitiveField();
-        R_.U = UR.primitiveField();
-        R_.p = pR.primitiveField();
         R_.complete(thermo);
 
         faceFluxes F
@@ -162,62 +215,89 @@ void Foam::riemannFlux::fluxes
     // Boundary faces
     forAll(mesh_.boundary(), patchi)
     {
+        if (mesh_.boundary()[patchi].size() > 0)
+        {
+            patchFluxes
+            (
+                thermo, U, patchi,
+                tw.valid() ? &tw().boundaryField()[patchi] : nullptr,
+                massFlux, momentumFlux, energyFlux, amaxSf
+            );
+        }
+    }
+}
+
+
+void Foam::riemannFlux::wallFluxes
+(
+    const rhoEThermo& thermo,
+    const volVectorField& U,
+    const label patchi,
+    surfaceScalarField& massFlux,
+    surfaceVectorField& momentumFlux,
+    surfaceScalarField& energyFlux,
+    surfaceScalarField& amaxSf
+) const
+{
+    const fvPatch& patch = mesh_.boundary()[patchi];
+    if (patch.coupled())
+    {
+        FatalErrorInFunction
+            << "Patch " << patch.name() << " is coupled: its face states"
+            << " are reconstructed with the internal faces (fluxes())"
+            << exit(FatalError);
+    }
+
+    tmp<scalarField> tw;
+    if (mesh_.moving())
+    {
+        tw = mesh_.phi().boundaryField()[patchi]/patch.magSf();
+    }
+    patchFluxes
+    (
+        thermo, U, patchi, tw.valid() ? &tw() : nullptr,
+        massFlux, momentumFlux, energyFlux, amaxSf
+    );
+}
+
+
+void Foam::riemannFlux::signalSpeeds
+(
+    const rhoEThermo& thermo,
+    const volVectorField& U,
+    surfaceScalarField& amaxSf
+) const
+{
+    const tmp<surfaceScalarField> tw(faceSpeeds());
+
+    reconstruction_.reconstruct(thermo.rho(), U, thermo.p(), L_, R_);
+    L_.complete(thermo);
+    R_.complete(thermo);
+    if (tw.valid())
+    {
+        toFaceFrame(L_, R_, mesh_.Sf(), mesh_.magSf(), tw().primitiveField());
+    }
+    speeds(L_, R_, mesh_.Sf(), mesh_.magSf(), amaxSf.primitiveFieldRef());
+
+    forAll(mesh_.boundary(), patchi)
+    {
         const fvPatch& patch = mesh_.boundary()[patchi];
         if (patch.size() == 0)
         {
             continue;
         }
+        const scalarField* wPtr =
+            tw.valid() ? &tw().boundaryField()[patchi] : nullptr;
 
-        faceStates Lp, Rp;
-        if (patch.coupled())
+        faceStates L, R;
+        patchStates(thermo, U, patchi, wPtr, L, R);
+        if (wPtr)
         {
-            Lp.rho = rhoL.boundaryField()[patchi];
-            Lp.U = UL.boundaryField()[patchi];
-            Lp.p = pL.boundaryField()[patchi];
-            Rp.rho = rhoR.boundaryField()[patchi];
-            Rp.U = UR.boundaryField()[patchi];
-            Rp.p = pR.boundaryField()[patchi];
+            toFaceFrame(L, R, patch.Sf(), patch.magSf(), *wPtr);
         }
-        else
-        {
-            Lp.rho = rho.boundaryField()[patchi].patchInternalField();
-            Lp.U = U.boundaryField()[patchi].patchInternalField();
-            Lp.p = p.boundaryField()[patchi].patchInternalField();
-
-            if (reflecting(patch))
-            {
-                const vectorField n(patch.nf());
-                scalarField qRel(Lp.U & n);
-                if (tw.valid())
-                {
-                    qRel -= tw().boundaryField()[patchi];
-                }
-                Rp.rho = Lp.rho;
-                Rp.U = Lp.U - 2*qRel*n;
-                Rp.p = Lp.p;
-            }
-            else
-            {
-                Rp.rho = rho.boundaryField()[patchi];
-                Rp.U = U.boundaryField()[patchi];
-                Rp.p = p.boundaryField()[patchi];
-            }
-        }
-        Lp.complete(thermo);
-        Rp.complete(thermo);
-
-        faceFluxes F
-        {
-            massFlux.boundaryFieldRef()[patchi],
-            momentumFlux.boundaryFieldRef()[patchi],
-            energyFlux.boundaryFieldRef()[patchi],
-            amaxSf.boundaryFieldRef()[patchi]
-        };
-        solveMoving
+        speeds
         (
-            Lp, Rp, patch.Sf(), patch.magSf(),
-            tw.valid() ? &tw().boundaryField()[patchi] : nullptr,
-            F
+            L, R, patch.Sf(), patch.magSf(), amaxSf.boundaryFieldRef()[patchi]
         );
     }
 }

@@ -1,0 +1,494 @@
+#include "MUSCLReconstruction.H"
+#include "surfaceFields.H"
+#include "NVDTVD.H"
+#include "NVDVTVDV.H"
+#include "MUSCL.H"
+#include "vanLeer.H"
+#include "Minmod.H"
+#include "vanAlbada.H"
+#include "calculatedFvPatchFields.H"
+#include "IStringStream.H"
+
+const Foam::Enum<Foam::MUSCLReconstruction::limiterType>
+Foam::MUSCLReconstruction::scalarNames
+({
+    { limiterType::upwind, "upwind" },
+    { limiterType::MUSCL, "MUSCL" },
+    { limiterType::vanLeer, "vanLeer" },
+    { limiterType::Minmod, "Minmod" },
+    { limiterType::vanAlbada, "vanAlbada" },
+});
+
+
+const Foam::Enum<Foam::MUSCLReconstruction::limiterType>
+Foam::MUSCLReconstruction::vectorNames
+({
+    { limiterType::upwind, "upwind" },
+    { limiterType::MUSCL, "MUSCLV" },
+    { limiterType::vanLeer, "vanLeerV" },
+    { limiterType::Minmod, "MinmodV" },
+    { limiterType::vanAlbada, "vanAlbadaV" },
+});
+
+
+namespace
+{
+
+using namespace Foam;
+
+//- OpenFOAM's limiter functions of one NVD family (NVDTVD for scalars,
+//  NVDVTVDV for vectors), called rather than copied so that the limiter is
+//  theirs to the last bit; their constructors take the scheme's stream and
+//  read nothing from it
+template<class NVD>
+class limiterFunctions
+{
+    IStringStream none_;
+    MUSCLLimiter<NVD> MUSCL_;
+    vanLeerLimiter<NVD> vanLeer_;
+    MinmodLimiter<NVD> Minmod_;
+    vanAlbadaLimiter<NVD> vanAlbada_;
+
+public:
+
+    typedef MUSCLReconstruction::limiterType limiterType;
+
+    limiterFunctions()
+    :
+        none_(""),
+        MUSCL_(none_),
+        vanLeer_(none_),
+        Minmod_(none_),
+        vanAlbada_(none_)
+    {}
+
+    //- The limiter of a face with weight w for the direction faceFlux
+    //  (+1: from the owner, -1: from the neighbour)
+    inline scalar operator()
+    (
+        const limiterType type,
+        const scalar w,
+        const scalar faceFlux,
+        const typename NVD::phiType& phiP,
+        const typename NVD::phiType& phiN,
+        const typename NVD::gradPhiType& gradP,
+        const typename NVD::gradPhiType& gradN,
+        const vector& d
+    ) const
+    {
+        switch (type)
+        {
+            case limiterType::MUSCL:
+                return MUSCL_.limiter(w, faceFlux, phiP, phiN, gradP, gradN, d);
+            case limiterType::vanLeer:
+                return
+                    vanLeer_.limiter(w, faceFlux, phiP, phiN, gradP, gradN, d);
+            case limiterType::Minmod:
+                return
+                    Minmod_.limiter(w, faceFlux, phiP, phiN, gradP, gradN, d);
+            case limiterType::vanAlbada:
+                return
+                    vanAlbada_.limiter
+                    (
+                        w, faceFlux, phiP, phiN, gradP, gradN, d
+                    );
+            default:
+                return 0;
+        }
+    }
+
+    //- Interpolation weights of the owner-side and neighbour-side values
+    //  of one face: limiter w + (1 - limiter) pos0(faceFlux), the
+    //  pos0(faceFlux) factor kept as a multiplication so that the result
+    //  is OpenFOAM's in every bit (signed zeros included)
+    inline void weights
+    (
+        const limiterType type,
+        const scalar w,
+        const typename NVD::phiType& phiP,
+        const typename NVD::phiType& phiN,
+        const typename NVD::gradPhiType& gradP,
+        const typename NVD::gradPhiType& gradN,
+        const vector& d,
+        scalar& lambdaL,
+        scalar& lambdaR
+    ) const
+    {
+        static const scalar pos0Owner = 1;
+        static const scalar pos0Neighbour = 0;
+
+        const scalar limL =
+            (*this)(type, w, 1, phiP, phiN, gradP, gradN, d);
+        const scalar limR =
+            (*this)(type, w, -1, phiP, phiN, gradP, gradN, d);
+        lambdaL = limL*w + (1.0 - limL)*pos0Owner;
+        lambdaR = limR*w + (1.0 - limR)*pos0Neighbour;
+    }
+};
+
+
+const limiterFunctions<NVDTVD>& scalarLimiters()
+{
+    static const limiterFunctions<NVDTVD> l;
+    return l;
+}
+
+
+const limiterFunctions<NVDVTVDV>& vectorLimiters()
+{
+    static const limiterFunctions<NVDVTVDV> l;
+    return l;
+}
+
+
+//- Owner-side and neighbour-side values of one internal face
+template<class NVD>
+inline void internalFaceValues
+(
+    const limiterFunctions<NVD>& limiters,
+    const MUSCLReconstruction::limiterType type,
+    const scalar w,
+    const typename NVD::phiType& phiP,
+    const typename NVD::phiType& phiN,
+    const typename NVD::gradPhiType& gradP,
+    const typename NVD::gradPhiType& gradN,
+    const vector& d,
+    typename NVD::phiType& left,
+    typename NVD::phiType& right
+)
+{
+    // upwind: the weights pos0(faceFlux) of OpenFOAM's upwind scheme
+    scalar lambdaL = 1;
+    scalar lambdaR = 0;
+    if (type != MUSCLReconstruction::limiterType::upwind)
+    {
+        limiters.weights
+        (
+            type, w, phiP, phiN, gradP, gradN, d, lambdaL, lambdaR
+        );
+    }
+    left = lambdaL*(phiP - phiN) + phiN;
+    right = lambdaR*(phiP - phiN) + phiN;
+}
+
+
+//- Owner-side and neighbour-side values of the faces of a coupled patch
+template<class NVD>
+void coupledFaceValues
+(
+    const limiterFunctions<NVD>& limiters,
+    const MUSCLReconstruction::limiterType type,
+    const fvPatchField<typename NVD::phiType>& pf,
+    const fvPatchField<typename NVD::gradPhiType>& gradPf,
+    Field<typename NVD::phiType>& left,
+    Field<typename NVD::phiType>& right
+)
+{
+    typedef typename NVD::phiType Type;
+    typedef typename NVD::gradPhiType GradType;
+
+    const fvPatch& patch = pf.patch();
+    const scalarField& w =
+        patch.boundaryMesh().mesh().weights().boundaryField()[patch.index()];
+    const Field<Type> phiP(pf.patchInternalField());
+    const Field<Type> phiN(pf.patchNeighbourField());
+
+    left.setSize(patch.size());
+    right.setSize(patch.size());
+
+    const bool upwind = (type == MUSCLReconstruction::limiterType::upwind);
+    Field<GradType> gradP;
+    Field<GradType> gradN;
+    vectorField d;
+    if (!upwind)
+    {
+        gradP = gradPf.patchInternalField();
+        gradN = gradPf.patchNeighbourField();
+        d = patch.delta();
+    }
+
+    forAll(w, facei)
+    {
+        // upwind: the weights pos0(faceFlux) of OpenFOAM's upwind scheme
+        scalar lambdaL = 1;
+        scalar lambdaR = 0;
+        if (!upwind)
+        {
+            limiters.weights
+            (
+                type, w[facei], phiP[facei], phiN[facei], gradP[facei],
+                gradN[facei], d[facei], lambdaL, lambdaR
+            );
+        }
+        left[facei] = lambdaL*phiP[facei] + (1.0 - lambdaL)*phiN[facei];
+        right[facei] = lambdaR*phiP[facei] + (1.0 - lambdaR)*phiN[facei];
+    }
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::MUSCLReconstruction::limiterType
+Foam::MUSCLReconstruction::readLimiter
+(
+    const fvMesh& mesh,
+    const word& fieldName,
+    const Enum<limiterType>& names
+)
+{
+    const word entry("reconstruct(" + fieldName + ')');
+    ITstream& is = mesh.interpolationScheme(entry);
+    const word name(is);
+    if (!names.found(name) || !is.eof())
+    {
+        FatalIOErrorInFunction(mesh.schemesDict())
+            << "system/fvSchemes: interpolationSchemes/" << entry
+            << " is '" << is.toString().c_str() << "'; the reconstruction"
+            << " of the Riemann fluxes takes " << names << nl
+            << exit(FatalIOError);
+    }
+    const limiterType type = names.get(name);
+    if (type == limiterType::upwind)
+    {
+        return type;
+    }
+
+    // The limiter's gradient: the one of OpenFOAM's limited schemes
+    const word gradEntry("grad(" + fieldName + ')');
+    ITstream& gis = mesh.gradScheme(gradEntry);
+    if (gis.toString() != "Gauss linear")
+    {
+        FatalIOErrorInFunction(mesh.schemesDict())
+            << "system/fvSchemes: gradSchemes/" << gradEntry << " is '"
+            << gis.toString().c_str() << "'; the " << name
+            << " reconstruction of the Riemann fluxes takes (Gauss linear)"
+            << nl << exit(FatalIOError);
+    }
+    return type;
+}
+
+
+template<class Type>
+void Foam::MUSCLReconstruction::gaussGrad
+(
+    const GeometricField<Type, fvPatchField, volMesh>& vf,
+    GeometricField
+    <
+        typename outerProduct<vector, Type>::type,
+        fvPatchField,
+        volMesh
+    >& grad
+) const
+{
+    typedef typename outerProduct<vector, Type>::type GradType;
+
+    const labelUList& owner = mesh_.owner();
+    const labelUList& neighbour = mesh_.neighbour();
+    const vectorField& Sf = mesh_.Sf();
+    const scalarField& w = mesh_.weights();
+    const Field<Type>& v = vf;
+
+    Field<GradType>& g = grad.primitiveFieldRef();
+    g = Zero;
+
+    forAll(owner, facei)
+    {
+        const label own = owner[facei];
+        const label nei = neighbour[facei];
+        const GradType Sfssf = Sf[facei]*(w[facei]*(v[own] - v[nei]) + v[nei]);
+        g[own] += Sfssf;
+        g[nei] -= Sfssf;
+    }
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        const labelUList& faceCells = patch.faceCells();
+        const vectorField& pSf = mesh_.Sf().boundaryField()[patchi];
+        const fvPatchField<Type>& pvf = vf.boundaryField()[patchi];
+
+        if (pvf.coupled())
+        {
+            const scalarField& pw = mesh_.weights().boundaryField()[patchi];
+            const Field<Type> vP(pvf.patchInternalField());
+            const Field<Type> vN(pvf.patchNeighbourField());
+            forAll(faceCells, facei)
+            {
+                g[faceCells[facei]] +=
+                    pSf[facei]
+                   *(pw[facei]*vP[facei] + (1.0 - pw[facei])*vN[facei]);
+            }
+        }
+        else
+        {
+            forAll(faceCells, facei)
+            {
+                g[faceCells[facei]] += pSf[facei]*pvf[facei];
+            }
+        }
+    }
+
+    g /= mesh_.V().field();
+
+    // Neighbour cells' gradients on processor and cyclic patches
+    if (coupled_)
+    {
+        grad.correctBoundaryConditions();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
+
+Foam::MUSCLReconstruction::MUSCLReconstruction(const fvMesh& mesh)
+:
+    mesh_(mesh),
+    rhoLimiter_(readLimiter(mesh, "rho", scalarNames)),
+    ULimiter_(readLimiter(mesh, "U", vectorNames)),
+    pLimiter_(readLimiter(mesh, "p", scalarNames)),
+    coupled_
+    (
+        returnReduce
+        (
+            [&mesh]()
+            {
+                for (const fvPatch& patch : mesh.boundary())
+                {
+                    if (patch.coupled())
+                    {
+                        return true;
+                    }
+                }
+                return false;
+            }(),
+            orOp<bool>()
+        )
+    ),
+    gradRho_
+    (
+        IOobject("MUSCLReconstruction:grad(rho)", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedVector(dimDensity/dimLength, Zero),
+        calculatedFvPatchField<vector>::typeName
+    ),
+    gradU_
+    (
+        IOobject("MUSCLReconstruction:grad(U)", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedTensor(dimVelocity/dimLength, Zero),
+        calculatedFvPatchField<tensor>::typeName
+    ),
+    gradP_
+    (
+        IOobject("MUSCLReconstruction:grad(p)", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedVector(dimPressure/dimLength, Zero),
+        calculatedFvPatchField<vector>::typeName
+    )
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+void Foam::MUSCLReconstruction::reconstruct
+(
+    const volScalarField& rho,
+    const volVectorField& U,
+    const volScalarField& p,
+    states& L,
+    states& R
+)
+{
+    if (rhoLimiter_ != limiterType::upwind)
+    {
+        gaussGrad(rho, gradRho_);
+    }
+    if (ULimiter_ != limiterType::upwind)
+    {
+        gaussGrad(U, gradU_);
+    }
+    if (pLimiter_ != limiterType::upwind)
+    {
+        gaussGrad(p, gradP_);
+    }
+
+    const label nFaces = mesh_.nInternalFaces();
+    for (states* s : {&L, &R})
+    {
+        s->rho.setSize(nFaces);
+        s->U.setSize(nFaces);
+        s->p.setSize(nFaces);
+    }
+
+    const labelUList& owner = mesh_.owner();
+    const labelUList& neighbour = mesh_.neighbour();
+    const scalarField& w = mesh_.weights();
+    const vectorField& C = mesh_.C();
+
+    const scalarField& rhoc = rho;
+    const vectorField& Uc = U;
+    const scalarField& pc = p;
+    const vectorField& gradRho = gradRho_;
+    const tensorField& gradU = gradU_;
+    const vectorField& gradP = gradP_;
+
+    const limiterFunctions<NVDTVD>& sLim = scalarLimiters();
+    const limiterFunctions<NVDVTVDV>& vLim = vectorLimiters();
+
+    for (label facei = 0; facei < nFaces; ++facei)
+    {
+        const label own = owner[facei];
+        const label nei = neighbour[facei];
+        const scalar wf = w[facei];
+        const vector d(C[nei] - C[own]);
+
+        internalFaceValues
+        (
+            sLim, rhoLimiter_, wf, rhoc[own], rhoc[nei], gradRho[own],
+            gradRho[nei], d, L.rho[facei], R.rho[facei]
+        );
+        internalFaceValues
+        (
+            vLim, ULimiter_, wf, Uc[own], Uc[nei], gradU[own], gradU[nei],
+            d, L.U[facei], R.U[facei]
+        );
+        internalFaceValues
+        (
+            sLim, pLimiter_, wf, pc[own], pc[nei], gradP[own], gradP[nei],
+            d, L.p[facei], R.p[facei]
+        );
+    }
+}
+
+
+void Foam::MUSCLReconstruction::reconstructCoupled
+(
+    const label patchi,
+    const volScalarField& rho,
+    const volVectorField& U,
+    const volScalarField& p,
+    states& L,
+    states& R
+) const
+{
+    coupledFaceValues
+    (
+        scalarLimiters(), rhoLimiter_, rho.boundaryField()[patchi],
+        gradRho_.boundaryField()[patchi], L.rho, R.rho
+    );
+    coupledFaceValues
+    (
+        vectorLimiters(), ULimiter_, U.boundaryField()[patchi],
+        gradU_.boundaryField()[patchi], L.U, R.U
+    );
+    coupledFaceValues
+    (
+        scalarLimiters(), pLimiter_, p.boundaryField()[patchi],
+        gradP_.boundaryField()[patchi], L.p, R.p
+    );
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,212 @@
+/*---------------------------------------------------------------------------*\
+Description
+    Unit tests of the partial evaluations of riemannFlux that the coupled
+    solver uses instead of a full flux evaluation, against fluxes() to the
+    last bit, for HLLC, HLL and rusanov with MUSCL face states, a
+    non-uniform state and a moving mesh (the frame change of the faces):
+
+    - wallFluxes(patchi): mass, momentum, energy fluxes and amaxSf of a
+      wall patch (the force on the fluid-structure interface per coupling
+      pass);
+    - signalSpeeds(): amaxSf of every internal and boundary face (the
+      Courant number of the next step).
+
+\*---------------------------------------------------------------------------*/
+
+#include "riemannFlux.H"
+#include "rhoEThermo.H"
+#include "zeroGradientFvPatchFields.H"
+#include "foamTestCase.H"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+using namespace Foam;
+
+namespace
+{
+
+const char* fvSchemesText =
+    "FoamFile { version 2.0; format ascii; class dictionary;"
+    " object fvSchemes; }\n"
+    "ddtSchemes { default Euler; }\n"
+    "gradSchemes { default Gauss linear; }\n"
+    "divSchemes { default none; }\n"
+    "laplacianSchemes { default Gauss linear corrected; }\n"
+    "interpolationSchemes\n{\n    default linear;\n"
+    "    reconstruct(rho) MUSCL;\n    reconstruct(U) MUSCLV;\n"
+    "    reconstruct(p) MUSCL;\n}\n"
+    "snGradSchemes { default corrected; }\n";
+
+//- Faces where a and b differ in any bit
+template<class Type>
+label nDiffering(const UList<Type>& a, const UList<Type>& b)
+{
+    label n = 0;
+    forAll(a, facei)
+    {
+        n += std::memcmp(&a[facei], &b[facei], sizeof(Type)) != 0 ? 1 : 0;
+    }
+    return n;
+}
+
+struct fluxFields
+{
+    surfaceScalarField mass;
+    surfaceVectorField momentum;
+    surfaceScalarField energy;
+    surfaceScalarField amaxSf;
+
+    static IOobject io(const fvMesh& mesh, const word& name)
+    {
+        return IOobject(name, mesh.time().timeName(), mesh);
+    }
+
+    explicit fluxFields(const fvMesh& mesh)
+    :
+        mass(io(mesh, "phi"), mesh, dimensionedScalar(dimMass/dimTime, Zero)),
+        momentum(io(mesh, "phiU"), mesh, dimensionedVector(dimForce, Zero)),
+        energy(io(mesh, "phiE"), mesh, dimensionedScalar(dimPower, Zero)),
+        amaxSf
+        (
+            io(mesh, "amaxSf"), mesh, dimensionedScalar(dimVolume/dimTime, Zero)
+        )
+    {}
+};
+
+} // End anonymous namespace
+
+
+TEST(fluxParts, wallFluxesAndSignalSpeedsEqualTheFullEvaluationBitwise)
+{
+    foamUnit::testCase tc("fluxParts");
+    tc.writeFile("system/fvSchemes", fvSchemesText);
+    tc.writeThermophysicalProperties("mieGruneisen");
+    tc.writeUniformField("p", dimPressure, 1e5, "zeroGradient");
+    tc.writeUniformField("T", dimTemperature, 300, "zeroGradient");
+    autoPtr<fvMesh> meshPtr = tc.blockMesh
+    (
+        {5, 4, 2},
+        [](const vector& s)
+        {
+            return 1e-6*vector
+            (
+                8*s.x() + 1.5*s.y()*s.y(), 5*s.y() + 0.8*s.x()*s.z(), 3*s.z()
+            );
+        },
+        {"wall", "outlet", "outlet", "outlet", "front", "back"},
+        {"wall", "patch", "patch", "patch", "patch", "patch"}
+    );
+    fvMesh& mesh = meshPtr();
+    autoPtr<rhoEThermo> thermo = rhoEThermo::New(mesh);
+
+    // Non-uniform state: compression waves and shear
+    volVectorField U
+    (
+        fluxFields::io(mesh, "U"), mesh, dimensionedVector(dimVelocity, Zero),
+        zeroGradientFvPatchVectorField::typeName
+    );
+    forAll(mesh.C(), celli)
+    {
+        const vector x = mesh.C()[celli]/1e-6;
+        thermo->rho()[celli] = 1000 + 40*std::sin(0.9*x.x() + 0.4*x.y());
+        thermo->e()[celli] = 1e4*(1 + 0.5*std::cos(0.7*x.y()));
+        U[celli] = vector(30*std::sin(x.x()), 10*std::cos(x.z()), 5*x.y());
+    }
+    thermo->rho().correctBoundaryConditions();
+    thermo->e().correctBoundaryConditions();
+    thermo->correct();
+    U.correctBoundaryConditions();
+
+    // A moving mesh: the wall at face speeds up to about 20 m/s
+    ++tc.time();
+    const scalar dt = mesh.time().deltaTValue();
+    pointField newPoints(mesh.points());
+    forAll(newPoints, pointi)
+    {
+        const point& x = mesh.points()[pointi];
+        newPoints[pointi] +=
+            20*dt*vector(std::sin(2e5*x.y()), std::cos(3e5*x.x()), 0);
+    }
+    mesh.movePoints(newPoints);
+    ASSERT_TRUE(mesh.moving());
+
+    const label walli = mesh.boundary().findPatchID("wall");
+    ASSERT_GE(walli, 0);
+
+    for (const word solver : {"HLLC", "HLL", "rusanov"})
+    {
+        SCOPED_TRACE(solver);
+        dictionary dict;
+        dict.add("riemannSolver", solver);
+        autoPtr<riemannFlux> flux = riemannFlux::New(mesh, dict);
+
+        fluxFields full(mesh);
+        flux->fluxes
+        (
+            thermo(), U, full.mass, full.momentum, full.energy, full.amaxSf
+        );
+
+        fluxFields wall(mesh);
+        flux->wallFluxes
+        (
+            thermo(), U, walli, wall.mass, wall.momentum, wall.energy,
+            wall.amaxSf
+        );
+        const auto& bf = full.mass.boundaryField()[walli];
+        EXPECT_GT(gMax(mag(full.momentum.boundaryField()[walli])), 0);
+        EXPECT_EQ(nDiffering(wall.mass.boundaryField()[walli], bf), 0);
+        EXPECT_EQ
+        (
+            nDiffering
+            (
+                wall.momentum.boundaryField()[walli],
+                full.momentum.boundaryField()[walli]
+            ),
+            0
+        );
+        EXPECT_EQ
+        (
+            nDiffering
+            (
+                wall.energy.boundaryField()[walli],
+                full.energy.boundaryField()[walli]
+            ),
+            0
+        );
+        EXPECT_EQ
+        (
+            nDiffering
+            (
+                wall.amaxSf.boundaryField()[walli],
+                full.amaxSf.boundaryField()[walli]
+            ),
+            0
+        );
+
+        fluxFields speeds(mesh);
+        flux->signalSpeeds(thermo(), U, speeds.amaxSf);
+        EXPECT_EQ
+        (
+            nDiffering
+            (
+                speeds.amaxSf.primitiveField(), full.amaxSf.primitiveField()
+            ),
+            0
+        ) << "internal faces";
+        forAll(mesh.boundary(), patchi)
+        {
+            EXPECT_EQ
+            (
+                nDiffering
+                (
+                    speeds.amaxSf.boundaryField()[patchi],
+                    full.amaxSf.boundaryField()[patchi]
+                ),
+                0
+            ) << mesh.boundary()[patchi].name();
+        }
+    }
+}
