@@ -30,6 +30,7 @@ Usage
 #include "conservativeFluid.H"
 #include "fluidSolidInteraction.H"
 #include "writeGuard.H"
+#include "inputChecks.H"
 
 int main(int argc, char *argv[])
 {
@@ -43,6 +44,7 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+    foamTools::checkControlDict(args);
     foamTools::writeGuard::discardIncompleteTimes(args);
     #include "createTime.H"
 

@@ -46,6 +46,7 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+    foamTools::checkControlDict(args);
     foamTools::writeGuard::discardIncompleteTimes(args);
     #include "createTime.H"
     #include "createMesh.H"
