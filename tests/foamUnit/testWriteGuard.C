@@ -5,7 +5,8 @@ Description
     follows, then .writeCommitted; at a restart with startFrom latestTime,
     discardIncompleteTimes moves aside the later time directories left
     with the in-progress marker or empty (killed writes) and keeps the
-    complete ones and the earliest.
+    complete ones and the earliest (also when it is empty: constant, which
+    findTimes lists first, is not the earliest time).
 
 \*---------------------------------------------------------------------------*/
 
@@ -15,6 +16,7 @@ Description
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 using namespace Foam;
 
@@ -91,4 +93,41 @@ TEST(writeGuard, markersAndDiscardOfIncompleteTimes)
     EXPECT_TRUE(isDir(killed + ".incomplete"));
     EXPECT_TRUE(isDir(empty + ".incomplete"));
     EXPECT_EQ(TimePaths::findTimes(tc.dir()).last().name(), complete.name());
+}
+
+
+TEST(writeGuard, earliestTimeIsKeptBesideConstant)
+{
+    // findTimes lists constant first: the earliest time directory after
+    // it (here an empty 0, as a case prepared by hand may have) is the
+    // start of the case, never moved aside; a later empty one is
+    foamUnit::testCase tc("writeGuard");
+    using foamTools::writeGuard;
+    ASSERT_TRUE(isDir(tc.dir()/"constant"));
+    ASSERT_TRUE(isDir(tc.dir()/"0"));
+    ASSERT_TRUE(writeGuard::incomplete(tc.dir()/"0"));
+    mkDir(tc.dir()/"1e-06");
+    tc.writeFile
+    (
+        "system/controlDict",
+        "FoamFile { version 2.0; format ascii; class dictionary;"
+        " object controlDict; }\n"
+        "application foamUnitTests; startFrom latestTime; startTime 0;"
+        " stopAt endTime; endTime 1; deltaT 1e-6; writeControl timeStep;"
+        " writeInterval 1;\n"
+    );
+    std::string caseDir(tc.dir());
+    std::vector<char*> argv
+    {
+        const_cast<char*>("foamUnitTests"),
+        const_cast<char*>("-case"),
+        &caseDir[0]
+    };
+    int argc = int(argv.size());
+    char** argvp = argv.data();
+    // Never destroyed (see above)
+    const argList& args = *new argList(argc, argvp);
+    EXPECT_EQ(writeGuard::discardIncompleteTimes(args), 1);
+    EXPECT_TRUE(isDir(tc.dir()/"0"));
+    EXPECT_TRUE(isDir(tc.dir()/"1e-06.incomplete"));
 }

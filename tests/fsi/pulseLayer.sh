@@ -10,7 +10,7 @@
 #    Us = C0 + s up = 1515.65 m/s: 49.53 ns, within 1 %;
 #  - near-doubling at the wall with the nonlinear law: wall peak over the
 #    incident peak in the solid = 104.43/50 (exact collision of two 50 MPa
-#    states, src/riemann) within 1 %, and the wall peak 104.43 MPa within
+#    states, src/exactRiemann) within 1 %, and the wall peak 104.43 MPa within
 #    3 % (the solid's shock capturing overshoots the incident front by 3 %:
 #    51.5 MPa at 75 um, where the fluid's plateau is 50.0 MPa);
 #  - every coupling step converged.

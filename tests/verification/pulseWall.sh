@@ -6,7 +6,7 @@
 #  - arrival at x = 50 um (p > 25 MPa) at 0.05 ns (half the 0.1 ns ramp)
 #    + 50 um / Us, Us = C0 + s up = 1515.65 m/s, i.e. 33.04 ns, within 1 %;
 #  - reflection at the wall 104.43 MPa (exact collision of two 50 MPa
-#    states, src/riemann) within 2 %: the near-doubling with the nonlinear
+#    states, src/exactRiemann) within 2 %: the near-doubling with the nonlinear
 #    law (2.09 x the incident pressure, not 2).
 set -euo pipefail
 dir=$(cd "$(dirname "$0")" && pwd)

@@ -34,6 +34,7 @@ Usage
 #include "caseLock.H"
 #include "resultGuard.H"
 #include "inputRecord.H"
+#include "inputChecks.H"
 
 int main(int argc, char *argv[])
 {
@@ -51,6 +52,7 @@ int main(int argc, char *argv[])
     foamTools::resultGuard::addOption();
     #include "setRootCaseLists.H"
     const foamTools::caseLock lock(args);    // one run per case
+    foamTools::checkControlDict(args);
     foamTools::writeGuard::discardIncompleteTimes(args);
     #include "createTime.H"
 

@@ -54,6 +54,7 @@ int main(int argc, char *argv[])
     foamTools::resultGuard::addOption();
     #include "setRootCaseLists.H"
     const foamTools::caseLock lock(args);    // one run per case
+    foamTools::checkControlDict(args);
     foamTools::writeGuard::discardIncompleteTimes(args);
     #include "createTime.H"
     #include "createMesh.H"

@@ -160,7 +160,13 @@ class Calibration:
             raise InputError(str(err))
         self.d = d
         where = dict_path
-        self.nprocs = int(args.nProcs or d.get("nProcs", 2))
+        # -nProcs 0 is an error, not "unset"
+        self.nprocs = int(args.nProcs if args.nProcs is not None
+                          else d.get("nProcs", 2))
+        if self.nprocs < 1:
+            raise InputError("%s: nProcs (or -nProcs) = %d is outside the "
+                             "valid range [1, inf) (parallel forward runs)"
+                             % (where, self.nprocs))
         self.max_iter = int(d.get("maxIterations", 30))
         self.tol = float(d.get("tolerance", 1e-6))
         self.h = float(d.get("finiteDifferenceStep", 0.01))

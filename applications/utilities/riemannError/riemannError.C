@@ -5,7 +5,7 @@ Application
 Description
     Compares a shock-tube solution with the exact solution of its Riemann
     problem (system/riemannProblemDict, the law of
-    constant/thermophysicalProperties; exact solver: src/riemann).
+    constant/thermophysicalProperties; exact solver: src/exactRiemann).
 
     For each selected time writes postProcessing/riemannError/<time>/
     - profile.dat: x and the computed and exact rho, u (along the tube), p;

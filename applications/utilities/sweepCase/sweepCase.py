@@ -170,6 +170,9 @@ def main():
     ap.add_argument("-keep", action="store_true")
     a = ap.parse_args()
     try:
+        if a.nProcs < 1:
+            raise SweepError("-nProcs %d is outside the valid range [1, inf)"
+                             " (runs at a time)" % a.nProcs)
         case = os.path.abspath(a.case)
         if not os.path.isdir(case):
             raise SweepError("-case %s: no such directory" % case)

@@ -1,10 +1,10 @@
-// libFuzzer harness: the exactRiemann case reader (riemann::riemannCase:
-// "key value" text, comments, ';'), then the exact solver on the accepted
+// libFuzzer harness: the exactRiemann case reader
+// (riemann::exactRiemannInput: "key value" text, comments, ';'), then the exact solver on the accepted
 // case, sampled at a few points. Bad input must be reported by an
 // exception (exactRiemann prints it and exits 1); no crash, hang, or
 // undefined behaviour.
 #include "anyExactRiemannSolver.H"
-#include "riemannCase.H"
+#include "exactRiemannInput.H"
 
 #include <cstdint>
 #include <exception>
@@ -18,9 +18,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
                                       size));
     try
     {
-        riemann::riemannCase::entryTable entries;
-        riemann::riemannCase::read(is, "fuzz", entries);
-        const riemann::riemannCase rc(entries);
+        riemann::exactRiemannInput::entryTable entries;
+        riemann::exactRiemannInput::read(is, "fuzz", entries);
+        const riemann::exactRiemannInput rc(entries);
         const riemann::anyExactRiemannSolver solver
         (
             rc.law(), rc.left(), rc.right()

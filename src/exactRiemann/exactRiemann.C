@@ -8,7 +8,7 @@ Description
     [xMin, xMax] and prints the columns x rho u p e (SI units, header line
     with the units; the star state and the waves as '#' comment lines).
     Input: an optional case file of "key value;" entries followed by
-    key=value arguments, see riemann::riemannCase for the entries.
+    key=value arguments, see riemann::exactRiemannInput for the entries.
     Exit status 1 on invalid input or a solution outside the law.
 
 Usage
@@ -19,7 +19,7 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "anyExactRiemannSolver.H"
-#include "riemannCase.H"
+#include "exactRiemannInput.H"
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -65,12 +65,12 @@ int main(int argc, char* argv[])
 
     try
     {
-        riemann::riemannCase::entryTable entries;
+        riemann::exactRiemannInput::entryTable entries;
         for (int i = 1; i < argc; ++i)
         {
             if (std::strchr(argv[i], '='))
             {
-                riemann::riemannCase::readArgument(argv[i], entries);
+                riemann::exactRiemannInput::readArgument(argv[i], entries);
             }
             else if (i == 1)
             {
@@ -81,7 +81,7 @@ int main(int argc, char* argv[])
                         << argv[i] << "'\n";
                     return 1;
                 }
-                riemann::riemannCase::read(file, argv[i], entries);
+                riemann::exactRiemannInput::read(file, argv[i], entries);
             }
             else
             {
@@ -92,7 +92,7 @@ int main(int argc, char* argv[])
             }
         }
 
-        const riemann::riemannCase rc(entries);
+        const riemann::exactRiemannInput rc(entries);
         const riemann::anyExactRiemannSolver solver
         (
             rc.law(), rc.left(), rc.right()

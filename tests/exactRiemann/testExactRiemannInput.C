@@ -1,13 +1,13 @@
 /*---------------------------------------------------------------------------*\
 Description
     Input of the exactRiemann sampler: the example in the Usage of
-    riemannCase.H parses and solves (keeps the documentation true), and
+    exactRiemannInput.H parses and solves (keeps the documentation true), and
     every invalid entry is rejected naming the entry and its range.
 \*---------------------------------------------------------------------------*/
 
 #include "anyExactRiemannSolver.H"
 #include "inputError.H"
-#include "riemannCase.H"
+#include "exactRiemannInput.H"
 #include <gtest/gtest.h>
 #include <fstream>
 #include <sstream>
@@ -16,10 +16,10 @@ Description
 namespace
 {
 
-//- The \verbatim block after "Example" in riemannCase.H
+//- The \verbatim block after "Example" in exactRiemannInput.H
 std::string usageExample()
 {
-    std::ifstream is(RIEMANN_SOURCE_DIR "/riemannCase.H");
+    std::ifstream is(EXACT_RIEMANN_SOURCE_DIR "/exactRiemannInput.H");
     std::stringstream ss;
     ss << is.rdbuf();
     const std::string text = ss.str();
@@ -30,20 +30,20 @@ std::string usageExample()
     return text.substr(b + 9, e - b - 9);
 }
 
-riemann::riemannCase::entryTable exampleEntries()
+riemann::exactRiemannInput::entryTable exampleEntries()
 {
-    riemann::riemannCase::entryTable entries;
+    riemann::exactRiemannInput::entryTable entries;
     std::istringstream is(usageExample());
-    riemann::riemannCase::read(is, "riemannCase.H", entries);
+    riemann::exactRiemannInput::read(is, "exactRiemannInput.H", entries);
     return entries;
 }
 
 //- The what() of the inputError thrown for the entries
-std::string errorFor(const riemann::riemannCase::entryTable& entries)
+std::string errorFor(const riemann::exactRiemannInput::entryTable& entries)
 {
     try
     {
-        riemann::riemannCase rc(entries);
+        riemann::exactRiemannInput rc(entries);
     }
     catch (const riemann::inputError& err)
     {
@@ -55,11 +55,11 @@ std::string errorFor(const riemann::riemannCase::entryTable& entries)
 } // namespace
 
 
-TEST(riemannCase, usageExampleParsesAndSolves)
+TEST(exactRiemannInput, usageExampleParsesAndSolves)
 {
     const auto entries = exampleEntries();
     ASSERT_EQ(entries.size(), 18u);
-    const riemann::riemannCase rc(entries);
+    const riemann::exactRiemannInput rc(entries);
     EXPECT_EQ(riemann::eosName(rc.law()), "mieGruneisen");
     EXPECT_EQ(rc.points().size(), 201u);
     EXPECT_DOUBLE_EQ(rc.left().p, 1e9);
@@ -72,7 +72,7 @@ TEST(riemannCase, usageExampleParsesAndSolves)
 }
 
 
-TEST(riemannCase, invalidEntriesNameTheEntryAndRange)
+TEST(exactRiemannInput, invalidEntriesNameTheEntryAndRange)
 {
     auto with = [](const std::string& key, const std::string& value)
     {
@@ -111,24 +111,25 @@ TEST(riemannCase, invalidEntriesNameTheEntryAndRange)
     EXPECT_TRUE(contains(m, "missing entry 'pL'")) << m;
     EXPECT_THROW
     (
-        riemann::riemannCase(with("C0", "-1450")), eos::ParameterError
+        riemann::exactRiemannInput(with("C0", "-1450")), eos::ParameterError
     );
 }
 
 
-TEST(riemannCase, argumentsOverrideAndMalformedLinesAreRejected)
+TEST(exactRiemannInput, argumentsOverrideAndMalformedLinesAreRejected)
 {
     auto entries = exampleEntries();
-    riemann::riemannCase::readArgument("t=2e-5", entries);
-    EXPECT_DOUBLE_EQ(riemann::riemannCase(entries).t(), 2e-5);
+    riemann::exactRiemannInput::readArgument("t=2e-5", entries);
+    EXPECT_DOUBLE_EQ(riemann::exactRiemannInput(entries).t(), 2e-5);
     EXPECT_THROW
     (
-        riemann::riemannCase::readArgument("t2e-5", entries),
+        riemann::exactRiemannInput::readArgument("t2e-5", entries),
         riemann::inputError
     );
     std::istringstream bad("rhoL 1 2;\n");
     EXPECT_THROW
     (
-        riemann::riemannCase::read(bad, "bad", entries), riemann::inputError
+        riemann::exactRiemannInput::read(bad, "bad", entries),
+        riemann::inputError
     );
 }

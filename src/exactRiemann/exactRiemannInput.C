@@ -1,8 +1,8 @@
 /*---------------------------------------------------------------------------*\
-    riemann::riemannCase
+    riemann::exactRiemannInput
 \*---------------------------------------------------------------------------*/
 
-#include "riemannCase.H"
+#include "exactRiemannInput.H"
 #include "inputError.H"
 #include <cmath>
 #include <limits>
@@ -16,7 +16,11 @@ namespace
 {
 
 //- A parsed number or an inputError naming the entry
-double number(const riemannCase::entryTable& entries, const std::string& key)
+double number
+(
+    const exactRiemannInput::entryTable& entries,
+    const std::string& key
+)
 {
     const auto it = entries.find(key);
     if (it == entries.end())
@@ -39,7 +43,7 @@ double number(const riemannCase::entryTable& entries, const std::string& key)
 //- A number inside (lo, hi) (finite if the bounds are infinite)
 double numberIn
 (
-    const riemannCase::entryTable& entries,
+    const exactRiemannInput::entryTable& entries,
     const std::string& key,
     double lo,
     double hi,
@@ -73,7 +77,7 @@ const std::vector<std::string> stateKeys
 } // namespace
 
 
-void riemannCase::read
+void exactRiemannInput::read
 (
     std::istream& is,
     const std::string& source,
@@ -111,7 +115,11 @@ void riemannCase::read
 }
 
 
-void riemannCase::readArgument(const std::string& arg, entryTable& entries)
+void exactRiemannInput::readArgument
+(
+    const std::string& arg,
+    entryTable& entries
+)
 {
     const auto eq = arg.find('=');
     if (eq == std::string::npos || eq == 0 || eq + 1 == arg.size())
@@ -125,7 +133,7 @@ void riemannCase::readArgument(const std::string& arg, entryTable& entries)
 }
 
 
-riemannCase::riemannCase(const entryTable& entries)
+exactRiemannInput::exactRiemannInput(const entryTable& entries)
 :
     law_(eos::IdealGas({}))
 {
@@ -199,7 +207,7 @@ riemannCase::riemannCase(const entryTable& entries)
 }
 
 
-std::vector<double> riemannCase::points() const
+std::vector<double> exactRiemannInput::points() const
 {
     std::vector<double> x(n_);
     for (int i = 0; i < n_; ++i)

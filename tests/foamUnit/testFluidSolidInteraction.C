@@ -1,0 +1,557 @@
+/*---------------------------------------------------------------------------*\
+Description
+    Unit tests of src/fsi fluidSolidInteraction as a whole, on a tiny 1D
+    coupled case built in a temporary folder (tests/fsi/pulseLayer shrunk):
+    a water column of 20 cells (10 um, loaded face at x = 0, interface at
+    x = 10 um, interfaceMotion) against a water-like solid layer of 10
+    elements (10-15 um, rigid wall at 15 um, uniaxial strain), robin
+    coupling with tolerance 1e-6. Each run loops as cellBlastFoam does
+    (step, setDeltaT, write inside the write guard).
+
+    - at rest (gauge pressure 0 on both sides) the steps keep the rest:
+      fluid velocity, density change, solid displacement and coupling
+      residual at round-off;
+    - loaded (50 MPa in the water at t = 0): every step converges within
+      the coupling tolerance in more than one and at most maxIter
+      iterations, and coupling.dat reports those iterations, that residual
+      and the convergence of each step;
+    - the force balance of the interface: the fluid force on the wall
+      (coupling.dat's interfaceForce, the momentum flux through the wall)
+      equals the sum of the nodal forces the solid receives (the force
+      map is conservative);
+    - the geometric conservation error of each step (coupling.dat) is at
+      round-off although the wall moves;
+    - a restart from a write time (fluid fields and points, solid state in
+      solid.h5, uniform/fsiState; a time name of 6 digits that does not
+      hold the time exactly) continues bitwise: fields, points, solid
+      state, time and time step, and the coupling.dat rows equal those of
+      the uninterrupted run.
+\*---------------------------------------------------------------------------*/
+
+#include "fluidSolidInteraction.H"
+#include "writeGuard.H"
+#include "foamTestCase.H"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace Foam;
+
+namespace
+{
+
+const scalar fluidLength = 10e-6;       // [m]
+const scalar solidLength = 5e-6;        // [m]
+const scalar couplingTolerance = 1e-6;  // [-]
+const label maxIter = 30;
+
+const std::string header
+(
+    "FoamFile { version 2.0; format ascii; class dictionary; object "
+);
+
+//- system/controlDict: time step from the Courant number, a write every
+//  writeInterval steps; time names of 6 digits, which do not hold the
+//  times (sums of time steps from an odd first one) exactly, as in a real
+//  case: a restart must take its start time from uniform/time
+std::string controlDictText(const word& startFrom, const label writeInterval)
+{
+    return header + "controlDict; }\n"
+        "application cellBlastFoam;\n"
+        "startFrom " + startFrom + ";\n"
+        "startTime 0;\n"
+        "stopAt endTime;\n"
+        "endTime 1;\n"
+        "deltaT 1.234567e-11;\n"
+        "writeControl timeStep;\n"
+        "writeInterval " + std::to_string(writeInterval) + ";\n"
+        "writeFormat ascii;\n"
+        "writePrecision 17;\n"
+        "timeFormat general;\n"
+        "timePrecision 6;\n"
+        "runTimeModifiable false;\n"
+        "adjustTimeStep yes;\n"
+        "maxCo 0.5;\n"
+        "maxDeltaT 1e-9;\n";
+}
+
+
+//- The case files: fluid mesh, water at gauge pressure p [Pa] and rest,
+//  the solid layer, the coupling
+void writeCase(foamUnit::testCase& tc, const scalar p)
+{
+    tc.writeThermophysicalProperties("mieGruneisen");
+    tc.writeFile
+    (
+        "system/fvSolution",
+        header + "fvSolution; }\n"
+        "riemann { riemannSolver HLLC; timeScheme SSPRK3; }\n"
+    );
+    std::ostringstream pText;
+    pText.precision(17);
+    pText
+        << "FoamFile { version 2.0; format ascii; class volScalarField;"
+        << " object p; }\n"
+        << "dimensions [1 -1 -2 0 0 0 0];\n"
+        << "internalField uniform " << p << ";\n"
+        << "boundaryField {\n"
+        << "  loaded { type fixedValue; value uniform " << p << "; }\n"
+        << "  interface { type zeroGradient; }\n"
+        << "  empty { type empty; }\n}\n";
+    tc.writeFile("0/p", pText.str());
+    tc.writeFile
+    (
+        "0/T",
+        "FoamFile { version 2.0; format ascii; class volScalarField;"
+        " object T; }\n"
+        "dimensions [0 0 0 1 0 0 0];\n"
+        "internalField uniform 293.15;\n"
+        "boundaryField { loaded { type zeroGradient; }"
+        " interface { type zeroGradient; } empty { type empty; } }\n"
+    );
+    tc.writeFile
+    (
+        "0/U",
+        "FoamFile { version 2.0; format ascii; class volVectorField;"
+        " object U; }\n"
+        "dimensions [0 1 -1 0 0 0 0];\n"
+        "internalField uniform (0 0 0);\n"
+        "boundaryField { loaded { type zeroGradient; }"
+        " interface { type movingWallVelocity; value uniform (0 0 0); }"
+        " empty { type empty; } }\n"
+    );
+    tc.writeFile
+    (
+        "constant/solidProperties",
+        header + "solidProperties; }\n"
+        "mesh { type box; cells (10 1 1);"
+        " min (10e-6 -0.5e-6 -0.5e-6); max (15e-6 0.5e-6 0.5e-6); }\n"
+        "fixed ((xmax 0) (ymin 1) (ymax 1) (zmin 2) (zmax 2));\n"
+        "explicitSafety 0.8;\n"
+        "materials { solid { rho0 1000; C10 0.5; volumetric mieGruneisen;"
+        " C0 1450; s 1.99; Gamma0 0.1; Cv 4184; T0 293.15; } }\n"
+    );
+    tc.writeFile
+    (
+        "constant/fsiProperties",
+        header + "fsiProperties; }\n"
+        "interface { fluidPatch interface; solidFaceSet xmin;"
+        " mapTolerance 0.1; motionDistance 5e-6; motionNearest 4; }\n"
+        "coupling { scheme robin; maxIter 30; tolerance 1e-6;"
+        " velocityScale 1e-2; onNonConvergence warn; }\n"
+    );
+    tc.blockMesh
+    (
+        {20, 1, 1},
+        [](const vector& s)
+        {
+            return vector
+            (
+                fluidLength*s.x(), 1e-6*(s.y() - 0.5), 1e-6*(s.z() - 0.5)
+            );
+        },
+        {"loaded", "interface", "empty", "empty", "empty", "empty"},
+        {"patch", "wall", "empty", "empty", "empty", "empty"}
+    );
+}
+
+
+//- A run of the case as cellBlastFoam makes it: argList (-case), Time from
+//  system/controlDict, the mesh of fluidSolidInteraction::newMesh, the
+//  fluid, the coupling
+class fsiRun
+{
+    autoPtr<Time> runTime_;
+    autoPtr<dynamicFvMesh> mesh_;
+    autoPtr<conservativeFluid> fluid_;
+    autoPtr<fluidSolidInteraction> fsi_;
+
+public:
+
+    explicit fsiRun(const fileName& caseDir)
+    {
+        std::vector<std::string> words{"foamUnitTests", "-case", caseDir};
+        std::vector<char*> argv;
+        for (std::string& w : words)
+        {
+            argv.push_back(&w[0]);
+        }
+        int argc = int(argv.size());
+        char** argvp = argv.data();
+        // Never destroyed: argList's destructor ends the process
+        // (UPstream::exit); it keeps copies of the arguments
+        const argList& args = *new argList(argc, argvp);
+        runTime_.reset(new Time(Time::controlDictName, args));
+        mesh_ = fluidSolidInteraction::newMesh(args, runTime_());
+        fluid_.reset(new conservativeFluid(mesh_()));
+        fsi_.reset(new fluidSolidInteraction(mesh_(), fluid_()));
+        if (!(runTime_().value() > 0))
+        {
+            fluid_().fluxes();
+            fsi_().setDeltaT();
+        }
+    }
+
+    ~fsiRun()
+    {
+        fsi_.clear();
+        fluid_.clear();
+        mesh_.clear();
+        runTime_.clear();
+    }
+
+    Time& time() { return runTime_(); }
+    const dynamicFvMesh& mesh() const { return mesh_(); }
+    const conservativeFluid& fluid() const { return fluid_(); }
+    const fluidSolidInteraction& fsi() const { return fsi_(); }
+
+    //- One time step of cellBlastFoam's loop; false if the loop would end
+    bool step()
+    {
+        Time& runTime = runTime_();
+        if (!foamTools::writeGuard::run(runTime))
+        {
+            return false;
+        }
+        ++runTime;
+        const scalar stepDeltaT = runTime.deltaTValue();
+        fsi_().step();
+        fluid_().thermo().checkStates();
+        fsi_().setDeltaT();
+        foamTools::writeGuard::write
+        (
+            runTime, [&]{ fsi_().write(stepDeltaT); }
+        );
+        return true;
+    }
+
+    //- The commit of the last write time (the loop's next condition)
+    void finish()
+    {
+        foamTools::writeGuard::run(runTime_());
+    }
+
+    //- Total force the solid receives from its loads [N] (x y z)
+    vector solidForce() const
+    {
+        const solid::Model& model = fsi_().solid().model();
+        Eigen::VectorXd f = Eigen::VectorXd::Zero(model.nDisplacementDofs());
+        for (const auto& c : model.contributions())
+        {
+            c->addForce(model, model.u, runTime_().value(), f, nullptr);
+        }
+        vector sum(Zero);
+        const label dim = model.mesh().dim();
+        for (label i = 0; i < f.size(); ++i)
+        {
+            sum[i % dim] += f[i];
+        }
+        return sum;
+    }
+};
+
+
+//- A coupling.dat row: time dt iterations residual converged Fx Fy Fz
+//  vMax gclError
+struct couplingRow
+{
+    std::string text;
+    scalar time, dt;
+    label iterations;
+    scalar residual;
+    label converged;
+    vector force;
+    scalar vMax, gclError;
+};
+
+
+std::vector<couplingRow> readCouplingLog(const fileName& file)
+{
+    std::ifstream is(file);
+    EXPECT_TRUE(is.good()) << "cannot read " << file;
+    std::vector<couplingRow> rows;
+    std::string line;
+    while (std::getline(is, line))
+    {
+        if (line.empty() || line[0] == '#')
+        {
+            continue;
+        }
+        std::istringstream ls(line);
+        couplingRow r;
+        r.text = line;
+        ls  >> r.time >> r.dt >> r.iterations >> r.residual >> r.converged
+            >> r.force.x() >> r.force.y() >> r.force.z() >> r.vMax
+            >> r.gclError;
+        EXPECT_FALSE(ls.fail()) << "bad row of " << file << ": " << line;
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+
+//- Largest |a - b| over two fields
+template<class Type>
+scalar maxDiff(const Field<Type>& a, const Field<Type>& b)
+{
+    return gMax(mag(a - b));
+}
+
+
+//- Bitwise equality of two fields (the first differing index, or -1)
+template<class Type>
+label firstDifference(const UList<Type>& a, const UList<Type>& b)
+{
+    if (a.size() != b.size())
+    {
+        return 0;
+    }
+    forAll(a, i)
+    {
+        if (std::memcmp(&a[i], &b[i], sizeof(Type)) != 0)
+        {
+            return i;
+        }
+    }
+    return -1;
+}
+
+
+label firstDifference(const Eigen::VectorXd& a, const Eigen::VectorXd& b)
+{
+    return firstDifference
+    (
+        UList<scalar>(const_cast<scalar*>(a.data()), a.size()),
+        UList<scalar>(const_cast<scalar*>(b.data()), b.size())
+    );
+}
+
+} // End anonymous namespace
+
+
+TEST(fluidSolidInteraction, stepsAtRestKeepRest)
+{
+    foamUnit::testCase tc("fluidSolidInteraction");
+    writeCase(tc, 0);
+    tc.writeFile("system/controlDict", controlDictText("startTime", 1000));
+    fsiRun run(tc.dir());
+    const scalarField rho0(run.fluid().rho().primitiveField());
+    const scalarField rhoE0(run.fluid().rhoE().primitiveField());
+    const scalar c = 1450;      // [m/s]
+
+    for (label n = 0; n < 5; ++n)
+    {
+        ASSERT_TRUE(run.step());
+        // Water at rest: no velocity, no compression; p = 0 gauge at
+        // (rho0, e0) makes every pressure flux zero to round-off
+        EXPECT_LE(gMax(mag(run.fluid().U().primitiveField())), 1e-12*c);
+        EXPECT_LE
+        (
+            maxDiff(run.fluid().rho().primitiveField(), rho0),
+            1e-13*gMax(rho0)
+        );
+        EXPECT_LE
+        (
+            maxDiff(run.fluid().rhoE().primitiveField(), rhoE0),
+            1e-12*max(gMax(mag(rhoE0)), 1)
+        );
+        // Solid: no motion (displacement << 1e-12 of an element, 0.5 um)
+        const auto& u = run.fsi().solid().displacement();
+        const auto& v = run.fsi().solid().velocity();
+        EXPECT_LE(u.cwiseAbs().maxCoeff(), 1e-12*0.5e-6);
+        EXPECT_LE(v.cwiseAbs().maxCoeff(), 1e-12*c);
+        EXPECT_TRUE(run.fsi().coupling().converged());
+        // Less than 1 uPa on the 1 um^2 wall [N]
+        EXPECT_LE(mag(run.solidForce()), 1e-18);
+    }
+    run.finish();
+}
+
+
+TEST(fluidSolidInteraction, couplingConvergesAsCouplingDatReports)
+{
+    foamUnit::testCase tc("fluidSolidInteraction");
+    writeCase(tc, 5e7);
+    tc.writeFile("system/controlDict", controlDictText("startTime", 1000));
+    fsiRun run(tc.dir());
+
+    std::vector<label> iterations;
+    std::vector<scalar> residuals;
+    for (label n = 0; n < 6; ++n)
+    {
+        ASSERT_TRUE(run.step());
+        const couplingScheme& cs = run.fsi().coupling();
+        EXPECT_TRUE(cs.converged()) << "step " << n + 1;
+        EXPECT_LE(cs.residual(), couplingTolerance) << "step " << n + 1;
+        // The 50 MPa load moves the interface: the first pass is not the
+        // converged one
+        EXPECT_GT(cs.iterations(), 1) << "step " << n + 1;
+        EXPECT_LE(cs.iterations(), maxIter) << "step " << n + 1;
+        iterations.push_back(cs.iterations());
+        residuals.push_back(cs.residual());
+    }
+    run.finish();
+
+    const std::vector<couplingRow> rows =
+        readCouplingLog(tc.dir()/"postProcessing"/"fsi"/"0"/"coupling.dat");
+    ASSERT_EQ(rows.size(), iterations.size());
+    for (size_t i = 0; i < rows.size(); ++i)
+    {
+        EXPECT_EQ(rows[i].iterations, iterations[i]) << rows[i].text;
+        EXPECT_EQ(rows[i].converged, 1) << rows[i].text;
+        EXPECT_LE(rows[i].residual, couplingTolerance) << rows[i].text;
+        // 10 significant digits in the file
+        EXPECT_NEAR(rows[i].residual, residuals[i], 1e-9*residuals[i])
+            << rows[i].text;
+    }
+}
+
+
+TEST(fluidSolidInteraction, interfaceForceBalanceAndGeometricConservation)
+{
+    foamUnit::testCase tc("fluidSolidInteraction");
+    writeCase(tc, 5e7);
+    tc.writeFile("system/controlDict", controlDictText("startTime", 1000));
+    fsiRun run(tc.dir());
+
+    std::vector<vector> solidForces;
+    for (label n = 0; n < 6; ++n)
+    {
+        ASSERT_TRUE(run.step());
+        // The fluid force on the wall (momentum flux through its faces)
+        const label patchi =
+            run.mesh().boundaryMesh().findPatchID("interface");
+        const vector fluidForce =
+            gSum(run.fluid().phiU().boundaryField()[patchi]);
+        const vector solidForce = run.solidForce();
+        // About p A = 5e7 Pa x 1e-12 m^2 = 5e-5 N, along x
+        EXPECT_GT(fluidForce.x(), 1e-5);
+        EXPECT_LE
+        (
+            mag(solidForce - fluidForce), 1e-13*mag(fluidForce)
+        ) << "fluid " << fluidForce.x() << " N, solid " << solidForce.x()
+          << " N (x)";
+        solidForces.push_back(solidForce);
+    }
+    run.finish();
+
+    const std::vector<couplingRow> rows =
+        readCouplingLog(tc.dir()/"postProcessing"/"fsi"/"0"/"coupling.dat");
+    ASSERT_EQ(rows.size(), solidForces.size());
+    for (size_t i = 0; i < rows.size(); ++i)
+    {
+        // coupling.dat's interfaceForce (10 digits) is what the solid got
+        EXPECT_LE
+        (
+            mag(rows[i].force - solidForces[i]), 1e-9*mag(solidForces[i])
+        ) << rows[i].text;
+        // The wall moved (vMax > 0) and the ALE step kept the geometric
+        // conservation law to round-off
+        EXPECT_GT(rows[i].vMax, 0) << rows[i].text;
+        EXPECT_LE(std::abs(rows[i].gclError), 1e-13) << rows[i].text;
+    }
+}
+
+
+TEST(fluidSolidInteraction, restartContinuesBitwise)
+{
+    const label nSteps = 4;
+
+    // Uninterrupted: nSteps steps
+    foamUnit::testCase whole("fluidSolidInteraction");
+    writeCase(whole, 5e7);
+    whole.writeFile("system/controlDict", controlDictText("startTime", 2));
+    fsiRun a(whole.dir());
+    for (label n = 0; n < nSteps; ++n)
+    {
+        ASSERT_TRUE(a.step());
+    }
+    a.finish();
+
+    // Stopped after the write of step 2, restarted from latestTime
+    foamUnit::testCase parts("fluidSolidInteraction");
+    writeCase(parts, 5e7);
+    parts.writeFile("system/controlDict", controlDictText("startTime", 2));
+    {
+        fsiRun first(parts.dir());
+        ASSERT_TRUE(first.step());
+        ASSERT_TRUE(first.step());
+        first.finish();
+    }
+    parts.writeFile("system/controlDict", controlDictText("latestTime", 2));
+    fsiRun b(parts.dir());
+    ASSERT_GT(b.time().value(), 0);
+    for (label n = 2; n < nSteps; ++n)
+    {
+        ASSERT_TRUE(b.step());
+    }
+    b.finish();
+
+    EXPECT_EQ(b.time().timeIndex(), a.time().timeIndex());
+    EXPECT_EQ(b.time().value(), a.time().value());
+    EXPECT_EQ(b.time().deltaTValue(), a.time().deltaTValue());
+    EXPECT_EQ(firstDifference(b.mesh().points(), a.mesh().points()), -1);
+    EXPECT_EQ
+    (
+        firstDifference
+        (
+            b.fluid().rho().primitiveField(),
+            a.fluid().rho().primitiveField()
+        ),
+        -1
+    );
+    EXPECT_EQ
+    (
+        firstDifference
+        (
+            b.fluid().rhoU().primitiveField(),
+            a.fluid().rhoU().primitiveField()
+        ),
+        -1
+    );
+    EXPECT_EQ
+    (
+        firstDifference
+        (
+            b.fluid().rhoE().primitiveField(),
+            a.fluid().rhoE().primitiveField()
+        ),
+        -1
+    );
+    const solidDomain& sa = a.fsi().solid();
+    const solidDomain& sb = b.fsi().solid();
+    EXPECT_EQ(firstDifference(sb.displacement(), sa.displacement()), -1);
+    EXPECT_EQ(firstDifference(sb.velocity(), sa.velocity()), -1);
+    EXPECT_EQ(firstDifference(sb.acceleration(), sa.acceleration()), -1);
+
+    // The restarted coupling.dat (postProcessing/fsi/<restart time>) holds
+    // the rows of steps 3 and 4 of the uninterrupted run
+    const std::vector<couplingRow> rowsA =
+        readCouplingLog(whole.dir()/"postProcessing"/"fsi"/"0"/"coupling.dat");
+    const fileNameList restartLogs
+    (
+        readDir(parts.dir()/"postProcessing"/"fsi", fileName::DIRECTORY)
+    );
+    ASSERT_EQ(restartLogs.size(), 2);
+    const word restartName =
+        restartLogs[0] == "0" ? restartLogs[1] : restartLogs[0];
+    const std::vector<couplingRow> rowsB = readCouplingLog
+    (
+        parts.dir()/"postProcessing"/"fsi"/restartName/"coupling.dat"
+    );
+    ASSERT_EQ(rowsA.size(), size_t(nSteps));
+    ASSERT_EQ(rowsB.size(), size_t(nSteps - 2));
+    for (size_t i = 0; i < rowsB.size(); ++i)
+    {
+        EXPECT_EQ(rowsB[i].text, rowsA[i + 2].text);
+    }
+}
+
+
+// ************************************************************************* //
