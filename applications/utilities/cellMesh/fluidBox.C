@@ -37,12 +37,9 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
         d, "wedgeAngle", "deg", 0, 10, false, 5
     )*pi/180;
 
-    // Cell type (3D): tetrahedra (the default) or hex, each with its own
-    // entries; an entry of the other type is an error, not ignored
-    const wordList hexEntries
-    ({
-        "axialSize", "lateralSize", "innerMargin", "maxCells"
-    });
+    // Cell type (3D): tetrahedra (the default) or hex, whose entries are
+    // in the sub-dictionary hexCoeffs (ignored with tetrahedra, as
+    // OpenFOAM's <type>Coeffs: a case can switch the type alone)
     const word type = d.getOrDefault<word>("type", "tetrahedra");
     if (d.found("type") && g_.axisymmetric())
     {
@@ -57,14 +54,14 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
             << "entry 'type' = " << type << " is not a water cell type; "
             << "valid: tetrahedra hex" << exit(FatalIOError);
     }
-    for (const word& key : hexEntries)
+    for (const word key : {"axialSize", "lateralSize", "innerMargin",
+                           "maxCells"})
     {
-        if (type != "hex" && d.found(key))
+        if (d.found(key))
         {
             FatalIOErrorInFunction(d)
-                << "entry '" << key << "' belongs to the hexahedral water "
-                << "(type hex; the type is " << type << ")"
-                << exit(FatalIOError);
+                << "entry '" << key << "' belongs in the sub-dictionary "
+                << "hexCoeffs (type hex)" << exit(FatalIOError);
         }
     }
 
@@ -109,13 +106,20 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
     }
     if (type == "hex")
     {
-        readHex(d);
+        readHex(d.subOrEmptyDict("hexCoeffs"));
     }
 }
 
 
 void Foam::fluidBox::readHex(const dictionary& d)
 {
+    if (d.empty())
+    {
+        FatalIOErrorInFunction(g_.fluidDict())
+            << "type hex needs the sub-dictionary hexCoeffs (axialSize and "
+            << "the optional lateralSize, innerMargin, maxCells)"
+            << exit(FatalIOError);
+    }
     const scalar a = g_.a(), H = g_.H();
     hexFluidMesh::sizes s;
     s.a = a;
