@@ -535,6 +535,11 @@ void Foam::fluidBox::generate()
     {
         Info<< ", wedge " << wedge_*180/pi << " deg";
     }
+    if (hex_)
+    {
+        Info<< "; hexahedra " << hex_->input().axialSize << " m along z, "
+            << hex_->input().lateralSize << " m across near the cell";
+    }
     if (columnRadius_ > 0)
     {
         Info<< "; column of radius " << columnRadius_ << " m about the axis "
