@@ -1,10 +1,10 @@
 #!/bin/bash
 # Smoke run of tutorials/blast/quarter3D (its default hexahedral water:
 # 0.5 um along z, 1 um across near the cell, first layer 0.6 um at the
-# cell, 2 um far; cell 1.4 um: membrane faces 1 um; a 30 um water cube,
-# the smallest that holds the default inner box of the O-grid (3.95 um
-# around the cell), so that the pulse reaches the cell at 14.6 ns; to
-# 18.2 ns): the whole Allrun chain (cellMesh quarter3D cell and box,
+# cell, 2 um far; cell 1.4 um: membrane faces 1 um; a 30 um water cube:
+# small, so that the pulse reaches the cell at 14.6 ns, and holding the
+# default inner box of the O-grid, 3.95 um around the cell (L/2 > 12.35
+# um); to 18.2 ns): the whole Allrun chain (cellMesh quarter3D cell and box,
 # gmshToFoam with symmetry planes, cellBlastFoam with robin coupling,
 # foamToVTK, solidToFoam + foamToVTK -region solid).
 # Asserts (checkQuarter3D.py): the force map is conservative (1e-12) and
