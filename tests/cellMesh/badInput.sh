@@ -146,6 +146,8 @@ expect hexBoxTooTight "$hx hexCoeffs { axialSize 1e-6; }/; s/^boxSize .*/boxSize
     "boxSize 2e-05 m leaves 1.6e-06 m between the cell and the box"
 expect hexTooManyCells "$hx hexCoeffs { axialSize 0.1e-6; maxCells 100000; }/" \
     "the hexahedral water would have [0-9]+ cells, more than maxCells 100000"
+expect hexTinyAxialSize "$hx hexCoeffs { axialSize 1e-12; }/" \
+    "the hexahedral water would have at least [0-9.e+]+ cells, more than maxCells 1000000"
 expect hexMaxCellsZero "$hx hexCoeffs { axialSize 2e-6; maxCells 0; }/" \
     "maxCells' = 0 is outside the valid range \[1, 1000000000\]"
 expect hexEntryOutsideCoeffs "$hx axialSize 2e-6;/" \

@@ -157,6 +157,18 @@ void Foam::fluidBox::readHex(const dictionary& d)
     (
         d, "maxCells", "", 1, 1000000000, true, 1000000
     );
+    // A lower bound first, the column above the inner box alone: a tiny
+    // size must be refused before its grid lines are allocated
+    const scalar lower = (s.quarter ? 1 : 4)*sqr((a + s.margin)/s.lateralSize)
+        *(L_ - H - s.margin)/s.axialSize;
+    if (lower > maxCells)
+    {
+        FatalIOErrorInFunction(d)
+            << "the hexahedral water would have at least " << lower
+            << " cells, more than maxCells " << maxCells << " (coarser "
+            << "axialSize, lateralSize or farSize, or a larger maxCells)"
+            << exit(FatalIOError);
+    }
     hex_.reset(new hexFluidMesh(s));
     if (hex_->nCells() > maxCells)
     {
