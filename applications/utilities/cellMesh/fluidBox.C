@@ -173,7 +173,8 @@ void Foam::fluidBox::readHex(const dictionary& d)
     if (hex_->nCells() > maxCells)
     {
         FatalIOErrorInFunction(d)
-            << "the hexahedral water would have " << hex_->nCells()
+            << "the hexahedral water would have "
+            << scalar(hex_->nCells())
             << " cells, more than maxCells " << maxCells << " (coarser "
             << "axialSize, lateralSize or farSize, or a larger maxCells)"
             << exit(FatalIOError);

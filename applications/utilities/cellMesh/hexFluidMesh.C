@@ -179,11 +179,11 @@ std::vector<Foam::scalar> Foam::hexFluidMesh::layers(scalar l) const
 }
 
 
-Foam::label Foam::hexFluidMesh::nCells() const
+std::int64_t Foam::hexFluidMesh::nCells() const
 {
-    const label nx = label(x_.size()) - 1, nz = label(z_.size()) - 1;
-    const label nA = i1_ - i0_;
-    label nOpen = nA*nA;
+    const std::int64_t nx = x_.size() - 1, nz = z_.size() - 1;
+    const std::int64_t nA = i1_ - i0_;
+    std::int64_t nOpen = nA*nA;
     nOpen += (open(0) ? 2 : 1)*nA*kB_ + (open(2) ? 2 : 1)*nA*kB_;
     return nx*nx*nz - nA*nA*kB_ + nLayers_*nOpen;
 }
@@ -337,11 +337,11 @@ void Foam::hexFluidMesh::build()
             });
         }
     }
-    if (label(hexes_.size()) != nCells())
+    if (std::int64_t(hexes_.size()) != nCells())
     {
         FatalErrorInFunction
             << "Built " << label(hexes_.size()) << " hexahedra, estimated "
-            << nCells() << exit(FatalError);
+            << label(nCells()) << exit(FatalError);
     }
     classifyBoundary(onCell);
 }
