@@ -1,9 +1,10 @@
 #!/bin/bash
 # The fluid of tutorials/blast/quarter3D alone (rhoRiemannFoam, the cell a
 # rigid wall) on 2 MPI ranks gives the serial probe values: cellMesh's
-# quarter water box (coarse: 1.5 um at the cell, 5 um far), 50 MPa on the
-# top face, to 15 ns; the processor boundary is the plane z = 80 um
-# (manual decomposition), which the pulse crosses at about 13 ns.
+# tetrahedral quarter water box (type tetrahedra, coarse: 1.5 um at the
+# cell, 5 um far), 50 MPa on the top face, to 15 ns; the processor
+# boundary is the plane z = 80 um (manual decomposition), which the pulse
+# crosses at about 13 ns.
 # Asserts max |p_2ranks - p_serial|/max|p| <= 1e-12 over every probe and
 # time step (probes: the quarter3D fluid probes + one at z = 78 um, below
 # the plane, reached at 14.6 ns) and
@@ -21,8 +22,8 @@ cp -r "$src"/{0.orig,constant,system} "$work/serial/"
 cd "$work/serial"
 rm -rf constant/polyMesh constant/*.msh constant/dynamicMeshDict \
     constant/fsiProperties constant/solidProperties
-for e in fluid/nearSize:1.5e-6 fluid/farSize:5e-6 nucleusSize:1e-6 \
-    cytoplasmSize:1e-6 membraneSize:0.8e-6 application:rhoRiemannFoam \
+for e in fluid/type:tetrahedra fluid/nearSize:1.5e-6 fluid/farSize:5e-6 \
+    nucleusSize:1e-6 cytoplasmSize:1e-6 membraneSize:0.8e-6 application:rhoRiemannFoam \
     endTime:1.5e-8 writeInterval:1.5e-8 writeFormat:ascii \
     writePrecision:17
 do

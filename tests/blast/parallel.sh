@@ -18,8 +18,9 @@
 #      SIGTERM after 5, continued to the end: logs and solid.h5 bitwise
 #      equal to the uninterrupted 2-rank run, the last time's processor
 #      fields byte-equal.
-#   3. The 3D quarter smoke case (tests/blast/quarter3DSmoke.sh's meshes,
-#      20 um box, to 9.5 ns, through the pulse's arrival at the cell top),
+#   3. The 3D quarter with the tetrahedral water (Allrun -tet; the
+#      earlier smoke case's meshes, 20 um box, to 9.5 ns, through the
+#      pulse's arrival at the cell top),
 #      simple decomposition (2 1 1) at x = 5 um through the cell: 2 ranks
 #      against serial as in 1.
 set -euo pipefail
@@ -115,7 +116,7 @@ mkdir -p "$q"
 cp "$root/tutorials/blast/plotBlast.py" "$work/q3D/"
 cp -r "$root"/tutorials/blast/quarter3D/{0.orig,constant,system,Allrun} "$q/"
 rm -rf "$q/constant/polyMesh" "$q"/constant/*.msh
-(cd "$q" && PROJECT_DIR=$root ./Allrun -box 20e-6 -h 0.6e-6 -far 2e-6 \
+(cd "$q" && PROJECT_DIR=$root ./Allrun -tet -box 20e-6 -h 0.6e-6 -far 2e-6 \
     -growth 5e-6 -cell 1.4e-6 -endTime 9.5e-9 -noPlots -noRun \
     > log.prepare 2>&1) || { tail -20 "$q/log.prepare"; exit 1; }
 for e in writeControl:timeStep writeInterval:200

@@ -125,6 +125,35 @@ expect azimuthZero "$q3; s/^contactRadius .*/contactRadius 5e-6; azimuthSize 0;/
     "azimuthSize' = 0 m is outside the valid range \(0, 7.9e-06\]"
 expect azimuthAxisymmetric 's/^contactRadius .*/contactRadius 5e-6; azimuthSize 2e-6;/' \
     "azimuthSize is available in the 3D modes \(quarter3D, full3D\) only"
+# The hexahedral water (type hex, entries in hexCoeffs; 3D only)
+hx="$q3; s/^growthDistance .*/growthDistance 30e-6; type hex;"
+expect hexUnknownType "$q3; s/^growthDistance .*/growthDistance 30e-6; type prisms;/" \
+    "type' = prisms is not a water cell type; valid: tetrahedra hex"
+expect hexAxisymmetric 's/^growthDistance .*/growthDistance 30e-6; type hex;/' \
+    "type hex: the cell type is chosen in the 3D modes"
+expect hexNoCoeffs "$hx/" "type hex needs the sub-dictionary hexCoeffs"
+expect hexMissingAxialSize "$hx hexCoeffs { lateralSize 2e-6; }/" \
+    "missing entry 'axialSize' \[m\]"
+expect hexAxialCoarserThanFar "$hx hexCoeffs { axialSize 30e-6; }/" \
+    "axialSize' = 3e-05 m is outside the valid range \(0, 2e-05\]"
+expect hexLateralZero "$hx hexCoeffs { axialSize 2e-6; lateralSize 0; }/" \
+    "lateralSize' = 0 m is outside the valid range \(0, 2e-05\]"
+expect hexMarginBelowNear "$hx hexCoeffs { axialSize 2e-6; innerMargin 1e-6; }/" \
+    "innerMargin' = 1e-06 m is outside the valid range \[2e-06, 4.16"
+expect hexMarginOutsideBox "$hx hexCoeffs { axialSize 2e-6; innerMargin 45e-6; }/" \
+    "innerMargin' = 4.5e-05 m is outside the valid range \[2e-06, 4.16"
+expect hexBoxTooTight "$hx hexCoeffs { axialSize 1e-6; }/; s/^boxSize .*/boxSize 20e-6;/; s/^farSize .*/farSize 4e-6;/; s/growthDistance 30e-6/growthDistance 10e-6/" \
+    "boxSize 2e-05 m leaves 1.6e-06 m between the cell and the box"
+expect hexTooManyCells "$hx hexCoeffs { axialSize 0.1e-6; maxCells 100000; }/" \
+    "the hexahedral water would have [0-9]+ cells, more than maxCells 100000"
+expect hexTinyAxialSize "$hx hexCoeffs { axialSize 1e-12; }/" \
+    "the hexahedral water would have at least [0-9.e+]+ cells, more than maxCells 1000000"
+expect hexMaxCellsZero "$hx hexCoeffs { axialSize 2e-6; maxCells 0; }/" \
+    "maxCells' = 0 is outside the valid range \[1, 1000000000\]"
+expect hexEntryOutsideCoeffs "$hx axialSize 2e-6;/" \
+    "entry 'axialSize' belongs in the sub-dictionary hexCoeffs"
+expect hexWithColumn "$hx hexCoeffs { axialSize 2e-6; } columnSize 1e-6; columnRadius 12e-6;/" \
+    "columnSize belongs to type tetrahedra"
 
 echo "badInput: $((n - failures)) passed, $failures failed"
 [ $failures -eq 0 ]

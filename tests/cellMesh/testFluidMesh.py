@@ -25,7 +25,29 @@ refined column (columnSize, columnRadius), and asserts that
     than growthDistance + farSize from the cell) have the same mean edge
     as without the column (to 10 %) (growthDistance 15 um here);
   - the column mesh passes gmshToFoam and checkMesh (as above).
-Usage: testFluidMesh.py axisymmetric|quarter3D|full3D|quarter3DColumn"""
+The modes quarter3DHex and full3DHex mesh the hexahedral water (fluid
+type hex, hexCoeffs axialSize 2 um, lateralSize 1.5 um, innerMargin 3 um)
+and assert, with the independent reader:
+  - only hexahedra in water, only quadrilaterals on the patches, the
+    exact group names;
+  - the structure: the grid lines read from the mesh (x on the top face,
+    z on the edge x = y = L/2, the O-grid layers on the ray along x at
+    y = z = 0) include A = a + innerMargin and B = H + innerMargin (the
+    two parts conform there), their spacing is at most axialSize along
+    z, lateralSize inside the inner box and farSize outside, and the cell
+    count is nx^2 nz - nA^2 nB + layers (nA^2 + (2 or 4) nA nB);
+  - conformity: every face is shared by at most two hexahedra, and the
+    faces of one hexahedron are exactly the patch faces (each in one
+    patch);
+  - positive volumes: the Jacobian at every corner of every hexahedron
+    is positive; their 2x2x2 Gauss volume sums to the box minus the
+    cell within 2 % of the cell's share;
+  - the cellInterface nodes are on the spheroid (1e-9), the symmetryX /
+    symmetryY / bottom nodes exactly on x = 0 / y = 0 / z = 0;
+  - gmshToFoam, checkMesh "Mesh OK." with non-orthogonality below 60 deg
+    (its max, skewness and aspect ratio are printed).
+Usage: testFluidMesh.py axisymmetric|quarter3D|full3D|quarter3DColumn|
+       quarter3DHex|full3DHex"""
 import os
 import re
 import subprocess
@@ -162,9 +184,144 @@ def column():
     print(f"column: {n1} tetrahedra with the column, {n0} without")
 
 
+def hexVolumes(P):
+    """Corner Jacobians (n, 8) and 2x2x2 Gauss volumes (n) of hexahedra
+    P (n, 8, 3) in gmsh's node order"""
+    corner = [(1, 3, 4), (2, 0, 5), (3, 1, 6), (0, 2, 7),
+              (7, 5, 0), (4, 6, 1), (5, 7, 2), (6, 4, 3)]
+    J = np.stack([np.einsum("ij,ij->i", np.cross(P[:, i] - P[:, c],
+                                                 P[:, j] - P[:, c]),
+                            P[:, k] - P[:, c])
+                  for c, (i, j, k) in enumerate(corner)], axis=1)
+    ref = np.array([[-1, -1, -1], [1, -1, -1], [1, 1, -1], [-1, 1, -1],
+                    [-1, -1, 1], [1, -1, 1], [1, 1, 1], [-1, 1, 1]], float)
+    g = 1/np.sqrt(3)
+    V = np.zeros(len(P))
+    for xi in ([u, v, w] for u in (-g, g) for v in (-g, g) for w in (-g, g)):
+        dN = np.empty((8, 3))
+        for a in range(3):
+            dN[:, a] = ref[:, a]/8*np.prod(
+                [1 + ref[:, b]*xi[b] for b in range(3) if b != a], axis=0)
+        Jm = np.einsum("nki,kj->nij", P, dN)
+        V += np.linalg.det(Jm)
+    return J, V
+
+
+def hexWater(mode):
+    """The hexahedral water (fluid type hex)"""
+    quarter = mode == "quarter3DHex"
+    dz, dl, margin = 2e-6, 1.5e-6, 3e-6
+    patches = ["top", "bottom", "sides", "cellInterface"] \
+        + (["symmetryX", "symmetryY"] if quarter else [])
+    with tempfile.TemporaryDirectory() as case:
+        writeCase(case, "quarter3D" if quarter else "full3D",
+                  f"type hex; hexCoeffs {{ axialSize {dz}; lateralSize {dl};"
+                  f" innerMargin {margin}; }}")
+        X, elems = read2(os.path.join(case, "constant/fluid.msh"))
+        check({e[1] for e in elems} == set(patches + ["water"]),
+              f"{mode}: groups {sorted({e[1] for e in elems})}")
+        types = {}
+        for typ, name, nodes in elems:
+            types.setdefault(name == "water", set()).add(typ)
+        check(types == {True: {5}, False: {3}}, f"{mode}: element types"
+              f" {types} (water: 5 hexahedra; patches: 3 quadrilaterals)")
+        tags = sorted(X)
+        row = {t: i for i, t in enumerate(tags)}
+        Y = np.array([X[t] for t in tags])
+        hexes = np.array([[row[n] for n in e[2]] for e in elems
+                          if e[1] == "water"])
+        eps = 1e-9*L
+
+        # Structure: grid lines and the count
+        A, B = a + margin, H + margin
+        top = {row[n] for e in elems if e[1] == "top" for n in e[2]}
+        xs = np.unique(np.round(Y[list(top), 0]/eps)*eps)
+        corner = (abs(Y[:, 0] - L/2) < eps) & (abs(Y[:, 1] - L/2) < eps)
+        zs = np.unique(np.round(Y[corner, 2]/eps)*eps)
+        xray = (abs(Y[:, 1]) < eps) & (abs(Y[:, 2]) < eps) \
+            & (Y[:, 0] > 0) & (Y[:, 0] < A + eps)
+        nLayers = int(xray.sum()) - 1
+        x0 = 0 if quarter else -A
+        inner = xs[(xs > x0 - eps) & (xs < A + eps)]
+        nA, nB = len(inner) - 1, int((zs < B + eps).sum()) - 1
+        nx, nz = len(xs) - 1, len(zs) - 1
+        count = nx**2*nz - nA**2*nB + nLayers*(nA**2 + (2 if quarter else 4)
+                                               *nA*nB)
+        check(min(abs(xs - A)) < eps and min(abs(zs - B)) < eps,
+              f"{mode}: x = A = {A*1e6:g} um and z = B = {B*1e6:g} um are"
+              " grid lines (tensor grid and O-grid conform)")
+        outerX = xs[xs > A - eps]
+        check(np.diff(zs).max() <= dz*(1 + 1e-9)
+              and np.diff(inner).max() <= dl*(1 + 1e-9)
+              and np.diff(outerX).max() <= far*(1 + 1e-9),
+              f"{mode}: spacing z {np.diff(zs).max()*1e6:.3f} um (axialSize"
+              f" {dz*1e6:g}), x inside {np.diff(inner).max()*1e6:.3f} um"
+              f" (lateralSize {dl*1e6:g}), outside"
+              f" {np.diff(outerX).max()*1e6:.3f} um (farSize {far*1e6:g})")
+        check(len(hexes) == count and nLayers >= 1,
+              f"{mode}: {len(hexes)} hexahedra, {count} from the grid lines"
+              f" ({nx} x {nx} x {nz}, inner {nA} x {nA} x {nB}, {nLayers}"
+              " O-grid layers)")
+
+        # Conformity: faces of one and of two hexahedra
+        hexFaces = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5),
+                    (2, 3, 7, 6), (3, 0, 4, 7)]
+        F = np.sort(np.concatenate([hexes[:, f] for f in hexFaces]), axis=1)
+        uniq, counts = np.unique(F, axis=0, return_counts=True)
+        once = {tuple(f) for f in uniq[counts == 1]}
+        patchFaces = [tuple(sorted(row[n] for n in e[2])) for e in elems
+                      if e[1] != "water"]
+        check(counts.max() <= 2 and len(patchFaces) == len(set(patchFaces))
+              and set(patchFaces) == once,
+              f"{mode}: {len(uniq)} faces, at most {counts.max()} hexahedra"
+              f" per face; {len(once)} faces of one hexahedron ="
+              f" {len(patchFaces)} patch faces")
+
+        # Positive volumes
+        J, V = hexVolumes(Y[hexes])
+        q = 0.25 if quarter else 1.0
+        Vcell = 2.0/3.0*np.pi*a**2*H
+        e = (V.sum() - q*(L**3 - Vcell))/(q*Vcell)
+        check(J.min() > 0 and abs(e) < 0.02,
+              f"{mode}: smallest corner Jacobian {J.min():.3e} m^3 (> 0),"
+              f" volume {V.sum():.6e} m^3, error {e:.2e} of the cell's"
+              " share")
+
+        # Interface on the spheroid, planes exact
+        def nodesOf(name):
+            return np.array(sorted({row[n] for e in elems if e[1] == name
+                                    for n in e[2]}))
+        c = Y[nodesOf("cellInterface")]
+        level = (c[:, 0]**2 + c[:, 1]**2)/a**2 + c[:, 2]**2/H**2 - 1
+        check(abs(level).max() < 1e-9, f"{mode}: {len(c)} cellInterface"
+              f" nodes on the spheroid (largest |level| {abs(level).max():.1e})")
+        planes = [("bottom", 2)] + ([("symmetryX", 0), ("symmetryY", 1)]
+                                    if quarter else [])
+        for name, k in planes:
+            check(abs(Y[nodesOf(name), k]).max() == 0,
+                  f"{mode}: {name} nodes exactly on {'xyz'[k]} = 0")
+
+        p = sh("gmshToFoam constant/fluid.msh", case)
+        check(p.returncode == 0, f"{mode}: gmshToFoam")
+        p = sh("checkMesh", case)
+        ortho = float(re.search(r"non-orthogonality Max: ([-+.eE\d]+)",
+                                p.stdout).group(1))
+        skew = re.search(r"Max skewness = ([-+.eE\d]+)", p.stdout).group(1)
+        aspect = re.search(r"Max aspect ratio = ([-+.eE\d]+)",
+                           p.stdout).group(1)
+        check(p.returncode == 0 and "\nMesh OK." in p.stdout and ortho < 60,
+              f"{mode}: checkMesh exit {p.returncode}, "
+              + ("Mesh OK" if "Mesh OK." in p.stdout else "FAILED")
+              + f"; max non-orthogonality {ortho:.1f} deg (< 60), skewness"
+              f" {float(skew):.3f}, aspect ratio {float(aspect):.2f}")
+
+
 def main(mode):
     if mode == "quarter3DColumn":
         column()
+        return
+    if mode in ("quarter3DHex", "full3DHex"):
+        hexWater(mode)
         return
     patches = {"axisymmetric": ["top", "bottom", "sides", "cellInterface",
                                 "front", "back"],

@@ -1,5 +1,6 @@
 #include "fluidBox.H"
 #include "inputChecks.H"
+#include "meshQuality.H"
 #include "mathematicalConstants.H"
 #include "OSspecific.H"
 #include "vector.H"
@@ -36,11 +37,46 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
         d, "wedgeAngle", "deg", 0, 10, false, 5
     )*pi/180;
 
+    // Cell type (3D): tetrahedra (the default) or hex, whose entries are
+    // in the sub-dictionary hexCoeffs (ignored with tetrahedra, as
+    // OpenFOAM's <type>Coeffs: a case can switch the type alone)
+    const word type = d.getOrDefault<word>("type", "tetrahedra");
+    if (d.found("type") && g_.axisymmetric())
+    {
+        FatalIOErrorInFunction(d)
+            << "type " << type << ": the cell type is chosen in the 3D "
+            << "modes (quarter3D, full3D) only; the axisymmetric wedge is "
+            << "a structured grid" << exit(FatalIOError);
+    }
+    if (type != "tetrahedra" && type != "hex")
+    {
+        FatalIOErrorInFunction(d)
+            << "entry 'type' = " << type << " is not a water cell type; "
+            << "valid: tetrahedra hex" << exit(FatalIOError);
+    }
+    for (const word key : {"axialSize", "lateralSize", "innerMargin",
+                           "maxCells"})
+    {
+        if (d.found(key))
+        {
+            FatalIOErrorInFunction(d)
+                << "entry '" << key << "' belongs in the sub-dictionary "
+                << "hexCoeffs (type hex)" << exit(FatalIOError);
+        }
+    }
+
     // Optional column: both entries or neither
     columnSize_ = 0;
     columnRadius_ = 0;
     const bool hasSize = d.found("columnSize");
     const bool hasRadius = d.found("columnRadius");
+    if ((hasSize || hasRadius) && type == "hex")
+    {
+        FatalIOErrorInFunction(d)
+            << (hasSize ? "columnSize" : "columnRadius")
+            << " belongs to type tetrahedra: the hexahedral water has "
+            << "axialSize along the whole column" << exit(FatalIOError);
+    }
     if (hasSize || hasRadius)
     {
         if (g_.axisymmetric())
@@ -67,6 +103,81 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
         (
             d, "columnRadius", "m", 0, 0.5*L_, false
         );
+    }
+    if (type == "hex")
+    {
+        readHex(d.subOrEmptyDict("hexCoeffs"));
+    }
+}
+
+
+void Foam::fluidBox::readHex(const dictionary& d)
+{
+    if (d.empty())
+    {
+        FatalIOErrorInFunction(g_.fluidDict())
+            << "type hex needs the sub-dictionary hexCoeffs (axialSize and "
+            << "the optional lateralSize, innerMargin, maxCells)"
+            << exit(FatalIOError);
+    }
+    const scalar a = g_.a(), H = g_.H();
+    hexFluidMesh::sizes s;
+    s.a = a;
+    s.H = H;
+    s.L = L_;
+    s.quarter = g_.mode() == cellGeometry::meshMode::quarter3D;
+    s.nearSize = nearSize_;
+    s.farSize = farSize_;
+    s.growth = growth_;
+    s.axialSize = foamTools::readInRange<scalar>
+    (
+        d, "axialSize", "m", 0, farSize_, false
+    );
+    s.lateralSize = foamTools::readInRangeOrDefault<scalar>
+    (
+        d, "lateralSize", "m", 0, farSize_, false, nearSize_
+    );
+    // The inner box holds the cell with at least one first layer around
+    // it and leaves water between it and the side walls and the top
+    const scalar gap = min(0.5*L_ - a, L_ - H);
+    if (gap <= nearSize_)
+    {
+        FatalIOErrorInFunction(d)
+            << "boxSize " << L_ << " m leaves " << gap << " m between the "
+            << "cell and the box, not more than nearSize " << nearSize_
+            << " m: no room for the inner box of the hexahedral water"
+            << exit(FatalIOError);
+    }
+    s.margin = foamTools::readInRangeOrDefault<scalar>
+    (
+        d, "innerMargin", "m", nearSize_, gap*(1 - 1e-12), true,
+        0.5*min(a, H)
+    );
+    const label maxCells = foamTools::readInRangeOrDefault<label>
+    (
+        d, "maxCells", "", 1, 1000000000, true, 1000000
+    );
+    // A lower bound first, the column above the inner box alone: a tiny
+    // size must be refused before its grid lines are allocated
+    const scalar lower = (s.quarter ? 1 : 4)*sqr((a + s.margin)/s.lateralSize)
+        *(L_ - H - s.margin)/s.axialSize;
+    if (lower > maxCells)
+    {
+        FatalIOErrorInFunction(d)
+            << "the hexahedral water would have at least " << lower
+            << " cells, more than maxCells " << maxCells << " (coarser "
+            << "axialSize, lateralSize or farSize, or a larger maxCells)"
+            << exit(FatalIOError);
+    }
+    hex_.reset(new hexFluidMesh(s));
+    if (hex_->nCells() > maxCells)
+    {
+        FatalIOErrorInFunction(d)
+            << "the hexahedral water would have "
+            << scalar(hex_->nCells())
+            << " cells, more than maxCells " << maxCells << " (coarser "
+            << "axialSize, lateralSize or farSize, or a larger maxCells)"
+            << exit(FatalIOError);
     }
 }
 
@@ -386,12 +497,36 @@ void Foam::fluidBox::wedge()
 }
 
 
+void Foam::fluidBox::hexBox()
+{
+    hex_->build();
+    hex_->toGmsh(unit_);
+    const meshQuality q(3, unit_);
+    const meshQuality::regionStats w = q.total();
+    Info<< "Hexahedral water: rays from the cell to the inner box "
+        << hex_->minRay() << " to "
+        << hex_->maxRay() << " m in " << hex_->nLayers() << " layers "
+        << "(growth ratio at most " << hexFluidMesh::maxRatio_ << ")" << nl;
+    q.write(Info);
+    if (!(w.minScaledJacobian > 0))
+    {
+        FatalErrorInFunction
+            << "The hexahedral water has an inverted cell (smallest scaled "
+            << "Jacobian " << w.minScaledJacobian << ")" << exit(FatalError);
+    }
+}
+
+
 void Foam::fluidBox::generate()
 {
     gmsh::model::add("fluid");
     if (g_.axisymmetric())
     {
         wedge();
+    }
+    else if (hex_)
+    {
+        hexBox();
     }
     else
     {
@@ -412,6 +547,11 @@ void Foam::fluidBox::generate()
     if (g_.axisymmetric())
     {
         Info<< ", wedge " << wedge_*180/pi << " deg";
+    }
+    if (hex_)
+    {
+        Info<< "; hexahedra " << hex_->input().axialSize << " m along z, "
+            << hex_->input().lateralSize << " m across near the cell";
     }
     if (columnRadius_ > 0)
     {

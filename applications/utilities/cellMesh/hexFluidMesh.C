@@ -1,0 +1,469 @@
+#include "hexFluidMesh.H"
+#include "error.H"
+#include <gmsh.h>
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace
+{
+
+// Node positions of [x0, x1] in n equal steps (the last one exact)
+std::vector<Foam::scalar> uniform
+(
+    Foam::scalar x0,
+    Foam::scalar x1,
+    Foam::label n
+)
+{
+    std::vector<Foam::scalar> x(n + 1);
+    for (Foam::label i = 0; i <= n; ++i)
+    {
+        x[i] = x0 + (x1 - x0)*i/n;
+    }
+    x[n] = x1;
+    return x;
+}
+
+} // End anonymous namespace
+
+
+Foam::hexFluidMesh::hexFluidMesh(const sizes& s)
+:
+    s_(s)
+{
+    // x >= 0: lateralSize inside the inner box, then the spacing grows
+    // linearly with the distance from it, from lateralSize to farSize
+    // over growthDistance (the wedge's rule), scaled to end at L/2
+    const scalar A = s_.a + s_.margin, B = s_.H + s_.margin;
+    const scalar hl = s_.lateralSize, hf = s_.farSize;
+    std::vector<scalar> xp =
+        uniform(0, A, label(std::ceil(A/hl*(1 - 1e-12))));
+    const label nIn = label(xp.size()) - 1;
+    const scalar D = 0.5*s_.L - A;
+    std::vector<scalar> f{0};
+    while (f.back() < D)
+    {
+        f.push_back
+        (
+            f.back() + hl + (hf - hl)*std::min(1.0, f.back()/s_.growth)
+        );
+    }
+    if (f.size() > 2 && f.back() - D > 0.5*(f.back() - f[f.size() - 2]))
+    {
+        f.pop_back();
+    }
+    for (std::size_t k = 1; k < f.size(); ++k)
+    {
+        xp.push_back(k + 1 < f.size() ? A + f[k]*D/f.back() : 0.5*s_.L);
+    }
+    if (s_.quarter)
+    {
+        x_ = xp;
+        i0_ = 0;
+        i1_ = nIn;
+    }
+    else
+    {
+        for (std::size_t k = xp.size() - 1; k > 0; --k) x_.push_back(-xp[k]);
+        x_.insert(x_.end(), xp.begin(), xp.end());
+        i0_ = label(xp.size()) - 1 - nIn;
+        i1_ = label(xp.size()) - 1 + nIn;
+    }
+
+    // z: uniform at (at most) axialSize below and above z = B
+    z_ = uniform(0, B, label(std::ceil(B/s_.axialSize*(1 - 1e-12))));
+    kB_ = label(z_.size()) - 1;
+    const std::vector<scalar> zu = uniform
+    (
+        B, s_.L, label(std::ceil((s_.L - B)/s_.axialSize*(1 - 1e-12)))
+    );
+    z_.insert(z_.end(), zu.begin() + 1, zu.end());
+
+    // Rays: the shortest and the longest, then the layer count
+    minRay_ = GREAT;
+    maxRay_ = 0;
+    for (label k = 0; k <= kB_; ++k)
+    for (label j = i0_; j <= i1_; ++j)
+    for (label i = i0_; i <= i1_; ++i)
+    {
+        if (outer(i, j, k))
+        {
+            const scalar l = rayLength({x_[i], x_[j], z_[k]});
+            minRay_ = std::min(minRay_, l);
+            maxRay_ = std::max(maxRay_, l);
+        }
+    }
+    // The smallest n with nearSize (maxRatio^n - 1)/(maxRatio - 1) >= the
+    // longest ray
+    nLayers_ = std::max
+    (
+        label(1),
+        label(std::ceil
+        (
+            std::log(1 + (maxRatio_ - 1)*maxRay_/s_.nearSize)
+           /std::log(maxRatio_) - 1e-12
+        ))
+    );
+}
+
+
+bool Foam::hexFluidMesh::open(int side) const
+{
+    return !(s_.quarter && (side == 0 || side == 2));
+}
+
+
+bool Foam::hexFluidMesh::outer(label i, label j, label k) const
+{
+    if (i < i0_ || i > i1_ || j < i0_ || j > i1_ || k > kB_)
+    {
+        return false;
+    }
+    return (i == i0_ && open(0)) || i == i1_ || (j == i0_ && open(2))
+        || j == i1_ || k == kB_;
+}
+
+
+bool Foam::hexFluidMesh::removed(label i, label j, label k) const
+{
+    return i >= i0_ && i <= i1_ && j >= i0_ && j <= i1_ && k <= kB_
+        && !outer(i, j, k);
+}
+
+
+Foam::scalar Foam::hexFluidMesh::rayLength(const vec& P) const
+{
+    const scalar rho = std::sqrt(P[0]*P[0] + P[1]*P[1] + P[2]*P[2]);
+    const scalar e = 1/std::sqrt
+    (
+        (P[0]*P[0] + P[1]*P[1])/(rho*rho*s_.a*s_.a)
+      + P[2]*P[2]/(rho*rho*s_.H*s_.H)
+    );
+    return rho - e;
+}
+
+
+std::vector<Foam::scalar> Foam::hexFluidMesh::layers(scalar l) const
+{
+    const label n = nLayers_;
+    const scalar h0 = s_.nearSize;
+    // Geometric ratio r with h0 (r^n - 1)/(r - 1) = l (bisection; r = 1:
+    // a ray too short for n layers of h0 gets uniform layers)
+    scalar r = 1;
+    if (l > n*h0)
+    {
+        const auto sum = [&](scalar q)
+        {
+            return h0*(std::pow(q, n) - 1)/(q - 1);
+        };
+        scalar lo = 1, hi = maxRatio_;
+        while (sum(hi) < l) hi *= 2;
+        for (int it = 0; it < 200 && hi - lo > 1e-15; ++it)
+        {
+            const scalar m = 0.5*(lo + hi);
+            (sum(m) < l ? lo : hi) = m;
+        }
+        r = 0.5*(lo + hi);
+    }
+    std::vector<scalar> f(n + 1, 0);
+    scalar h = 1;
+    for (label k = 1; k <= n; ++k)
+    {
+        f[k] = f[k - 1] + h;
+        h *= r;
+    }
+    for (scalar& v : f) v /= f[n];
+    f[n] = 1;
+    return f;
+}
+
+
+std::int64_t Foam::hexFluidMesh::nCells() const
+{
+    const std::int64_t nx = x_.size() - 1, nz = z_.size() - 1;
+    const std::int64_t nA = i1_ - i0_;
+    std::int64_t nOpen = nA*nA;
+    nOpen += (open(0) ? 2 : 1)*nA*kB_ + (open(2) ? 2 : 1)*nA*kB_;
+    return nx*nx*nz - nA*nA*kB_ + nLayers_*nOpen;
+}
+
+
+void Foam::hexFluidMesh::addHex(hex h)
+{
+    const auto d = [&](int p, int q)
+    {
+        vec v;
+        for (int c = 0; c < 3; ++c)
+        {
+            v[c] = nodes_[h[q]][c] - nodes_[h[p]][c];
+        }
+        return v;
+    };
+    // Centre Jacobian of the trilinear map (edge means along the three
+    // local directions)
+    vec e[3];
+    const int pairs[3][4][2] =
+    {
+        {{0, 1}, {3, 2}, {4, 5}, {7, 6}},
+        {{0, 3}, {1, 2}, {4, 7}, {5, 6}},
+        {{0, 4}, {1, 5}, {2, 6}, {3, 7}}
+    };
+    for (int a = 0; a < 3; ++a)
+    {
+        e[a] = {0, 0, 0};
+        for (const auto& pq : pairs[a])
+        {
+            const vec v = d(pq[0], pq[1]);
+            for (int c = 0; c < 3; ++c) e[a][c] += v[c];
+        }
+    }
+    const scalar J =
+        e[2][0]*(e[0][1]*e[1][2] - e[0][2]*e[1][1])
+      + e[2][1]*(e[0][2]*e[1][0] - e[0][0]*e[1][2])
+      + e[2][2]*(e[0][0]*e[1][1] - e[0][1]*e[1][0]);
+    if (J < 0)
+    {
+        std::swap_ranges(h.begin(), h.begin() + 4, h.begin() + 4);
+    }
+    hexes_.push_back(h);
+}
+
+
+void Foam::hexFluidMesh::build()
+{
+    const label nx = label(x_.size()), nz = label(z_.size());
+    const auto t = [&](label i, label j, label k)
+    {
+        return (std::size_t(k)*nx + j)*nx + i;
+    };
+    const std::size_t none = std::size_t(-1);
+
+    // Tensor nodes (those inside the inner box removed)
+    std::vector<std::size_t> id(std::size_t(nx)*nx*nz, none);
+    for (label k = 0; k < nz; ++k)
+    for (label j = 0; j < nx; ++j)
+    for (label i = 0; i < nx; ++i)
+    {
+        if (!removed(i, j, k))
+        {
+            id[t(i, j, k)] = nodes_.size();
+            nodes_.push_back({x_[i], x_[j], z_[k]});
+        }
+    }
+    std::vector<bool> onCell(nodes_.size(), false);
+
+    // Ray nodes of the O-grid: layers 0 (on the spheroid) to nLayers - 1
+    // of each outer node; layer nLayers is the outer node itself
+    std::vector<std::size_t> ray(id.size(), none);
+    for (label k = 0; k <= kB_; ++k)
+    for (label j = i0_; j <= i1_; ++j)
+    for (label i = i0_; i <= i1_; ++i)
+    {
+        if (!outer(i, j, k)) continue;
+        const vec P{x_[i], x_[j], z_[k]};
+        const scalar rho = std::sqrt(P[0]*P[0] + P[1]*P[1] + P[2]*P[2]);
+        const scalar l = rayLength(P);
+        const std::vector<scalar> f = layers(l);
+        ray[t(i, j, k)] = nodes_.size();
+        for (label m = 0; m < nLayers_; ++m)
+        {
+            const scalar c = (rho - l + f[m]*l)/rho;
+            // Exact zeros stay zeros: the symmetry planes and the
+            // substrate remain plane
+            nodes_.push_back({c*P[0], c*P[1], c*P[2]});
+            onCell.push_back(m == 0);
+        }
+    }
+    const auto layerNode = [&](std::size_t tn, label m)
+    {
+        return m == nLayers_ ? id[tn] : ray[tn] + m;
+    };
+
+    // Tensor cells outside the inner box
+    for (label k = 0; k + 1 < nz; ++k)
+    for (label j = 0; j + 1 < nx; ++j)
+    for (label i = 0; i + 1 < nx; ++i)
+    {
+        if (i >= i0_ && i < i1_ && j >= i0_ && j < i1_ && k < kB_) continue;
+        addHex
+        ({
+            id[t(i, j, k)], id[t(i + 1, j, k)], id[t(i + 1, j + 1, k)],
+            id[t(i, j + 1, k)], id[t(i, j, k + 1)], id[t(i + 1, j, k + 1)],
+            id[t(i + 1, j + 1, k + 1)], id[t(i, j + 1, k + 1)]
+        });
+    }
+
+    // O-grid cells: one column of nLayers per quad of an open face
+    std::vector<std::array<std::size_t, 4>> quads;
+    for (label b = 0; b < i1_ - i0_; ++b)
+    {
+        const label p = i0_ + b;
+        for (label c = 0; c < i1_ - i0_; ++c)
+        {
+            const label q = i0_ + c;
+            quads.push_back
+                ({t(p, q, kB_), t(p + 1, q, kB_), t(p + 1, q + 1, kB_),
+                  t(p, q + 1, kB_)});
+        }
+        for (label k = 0; k < kB_; ++k)
+        {
+            for (const label i : {i0_, i1_})
+            {
+                if (i == i0_ && !open(0)) continue;
+                quads.push_back
+                    ({t(i, p, k), t(i, p + 1, k), t(i, p + 1, k + 1),
+                      t(i, p, k + 1)});
+            }
+            for (const label j : {i0_, i1_})
+            {
+                if (j == i0_ && !open(2)) continue;
+                quads.push_back
+                    ({t(p, j, k), t(p + 1, j, k), t(p + 1, j, k + 1),
+                      t(p, j, k + 1)});
+            }
+        }
+    }
+    for (const auto& q : quads)
+    {
+        for (label m = 0; m < nLayers_; ++m)
+        {
+            addHex
+            ({
+                layerNode(q[0], m), layerNode(q[1], m), layerNode(q[2], m),
+                layerNode(q[3], m), layerNode(q[0], m + 1),
+                layerNode(q[1], m + 1), layerNode(q[2], m + 1),
+                layerNode(q[3], m + 1)
+            });
+        }
+    }
+    if (std::int64_t(hexes_.size()) != nCells())
+    {
+        FatalErrorInFunction
+            << "Built " << label(hexes_.size()) << " hexahedra, estimated "
+            << label(nCells()) << exit(FatalError);
+    }
+    classifyBoundary(onCell);
+}
+
+
+void Foam::hexFluidMesh::classifyBoundary(const std::vector<bool>& onCell)
+{
+    struct keyHash
+    {
+        std::size_t operator()(const quad& k) const
+        {
+            std::size_t h = 0;
+            for (const std::size_t v : k) h = h*1000003u ^ v;
+            return h;
+        }
+    };
+    // Faces of the gmsh hexahedron (outward for a positive Jacobian)
+    const int hexFaces[6][4] =
+    {
+        {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+        {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}
+    };
+    std::unordered_map<quad, std::pair<label, quad>, keyHash> count;
+    count.reserve(3*hexes_.size() + 1000);
+    for (const hex& h : hexes_)
+    {
+        for (const auto& hf : hexFaces)
+        {
+            const quad q{h[hf[0]], h[hf[1]], h[hf[2]], h[hf[3]]};
+            quad k = q;
+            std::sort(k.begin(), k.end());
+            auto& c = count[k];
+            if (++c.first == 1) c.second = q;
+        }
+    }
+    const scalar tol = 1e-9*s_.L;
+    const auto all = [&](const quad& q, int c, scalar v)
+    {
+        for (const std::size_t n : q)
+        {
+            if (std::abs(nodes_[n][c] - v) > tol) return false;
+        }
+        return true;
+    };
+    for (const auto& kv : count)
+    {
+        const label n = kv.second.first;
+        const quad& q = kv.second.second;
+        if (n > 2)
+        {
+            FatalErrorInFunction
+                << "A water face is shared by " << n << " hexahedra"
+                << exit(FatalError);
+        }
+        if (n == 2) continue;
+        const scalar h = 0.5*s_.L;
+        const char* name =
+            all(q, 2, 0) ? "bottom"
+          : all(q, 2, s_.L) ? "top"
+          : all(q, 0, h) || all(q, 1, h) || all(q, 0, -h) || all(q, 1, -h)
+          ? "sides"
+          : s_.quarter && all(q, 0, 0) ? "symmetryX"
+          : s_.quarter && all(q, 1, 0) ? "symmetryY"
+          : onCell[q[0]] && onCell[q[1]] && onCell[q[2]] && onCell[q[3]]
+          ? "cellInterface"
+          : nullptr;
+        if (!name)
+        {
+            FatalErrorInFunction
+                << "A boundary face of the hexahedral water at ("
+                << nodes_[q[0]][0] << " " << nodes_[q[0]][1] << " "
+                << nodes_[q[0]][2] << ") m is on no patch: the grid is "
+                << "not conformal" << exit(FatalError);
+        }
+        faces_[name].push_back(q);
+    }
+    // Deterministic order of the patch faces (the hash map's is not)
+    for (auto& kv : faces_)
+    {
+        std::sort(kv.second.begin(), kv.second.end());
+    }
+}
+
+
+void Foam::hexFluidMesh::toGmsh(scalar unit) const
+{
+    gmsh::model::addDiscreteEntity(3, 1);
+    std::vector<std::size_t> tags(nodes_.size());
+    std::vector<double> xyz;
+    xyz.reserve(3*nodes_.size());
+    for (std::size_t n = 0; n < nodes_.size(); ++n)
+    {
+        tags[n] = n + 1;
+        for (int c = 0; c < 3; ++c) xyz.push_back(nodes_[n][c]/unit);
+    }
+    gmsh::model::mesh::addNodes(3, 1, tags, xyz);
+
+    std::size_t next = 1;
+    std::vector<std::size_t> et, nt;
+    for (const hex& h : hexes_)
+    {
+        et.push_back(next++);
+        for (const std::size_t n : h) nt.push_back(n + 1);
+    }
+    gmsh::model::mesh::addElementsByType(1, 5, et, nt);
+    gmsh::model::setPhysicalName(3, gmsh::model::addPhysicalGroup(3, {1}),
+        "water");
+    int surface = 0;
+    for (const auto& kv : faces_)
+    {
+        gmsh::model::addDiscreteEntity(2, ++surface);
+        et.clear();
+        nt.clear();
+        for (const quad& q : kv.second)
+        {
+            et.push_back(next++);
+            for (const std::size_t n : q) nt.push_back(n + 1);
+        }
+        gmsh::model::mesh::addElementsByType(surface, 3, et, nt);
+        gmsh::model::setPhysicalName
+        (
+            2, gmsh::model::addPhysicalGroup(2, {surface}), kv.first
+        );
+    }
+}

@@ -1,0 +1,75 @@
+#!/bin/bash
+# Hexahedral against tetrahedral water of tutorials/blast/quarter3D (issue
+# 18 item 1; not a test). In scratch copies of the tutorial (inputs only),
+# Allrun -noRun prepares each variant, then cellBlastFoam runs on one rank:
+#
+#   bench/blast/hexWater.sh cost [endTime]      (default 2e-9 s)
+#       tet  : Allrun -tet (the tetrahedral box of earlier versions)
+#       hex  : Allrun (the hexahedral default: dz 0.5 um, lateral 1 um)
+#     per variant: fluid cells, time steps to endTime, the last time step,
+#     cellBlastFoam's CPU split of the time loop (before the pulse reaches
+#     the cell: one coupling pass per step, the step set by the sound
+#     speed, so it is the step of the run until the arrival)
+#   bench/blast/hexWater.sh column [endTime]    (default 4e-8 s)
+#       Allrun -lateral 2e-6 -far 10e-6 (the default's 0.5 um along z and
+#       at the cell, coarser across the column: 42,070 cells), then
+#       planeWave -probes fluid -endTime <the last probe time>: the water
+#       probes (axis and x = y = 25 um) against the 1D plane wave
+#
+# The scratch folders are kept (printed) for inspection.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+root=$here/../..
+. "$root/etc/bashrc"
+what=${1:-cost}
+
+prepare() {     # prepare <dir> <Allrun options...>
+    local c=$1/quarter3D
+    shift
+    mkdir -p "$c"
+    cp -r "$root"/tutorials/blast/quarter3D/{0.orig,constant,system,Allrun} "$c/"
+    rm -rf "$c/constant/polyMesh" "$c"/constant/*.msh
+    (cd "$c" && PROJECT_DIR=$root ./Allrun -noRun -noPlots "$@" \
+        > log.prepare 2>&1) || { tail -20 "$c/log.prepare"; exit 1; }
+    echo "$c"
+}
+
+run() {         # run <case> <endTime>
+    (cd "$1" && foamDictionary -entry writeInterval -set "$2" \
+        system/controlDict > /dev/null \
+     && cellBlastFoam > log.cellBlastFoam 2>&1) \
+        || { tail -20 "$1/log.cellBlastFoam"; exit 1; }
+}
+
+summary() {     # summary <name> <case>
+    local c=$2
+    printf '%s: %s cells, %s steps, last deltaT %s s; %s\n' "$1" \
+        "$(awk '/^ *cells:/ {print $2}' "$c/log.checkMesh")" \
+        "$(grep -c '^Time =' "$c/log.cellBlastFoam")" \
+        "$(awk '/^deltaT =/ {d = $3} END {print d}' "$c/log.cellBlastFoam")" \
+        "$(grep '^CPU time of the time loop' "$c/log.cellBlastFoam")"
+}
+
+work=$(mktemp -d /tmp/hexWater.XXXXXX)
+case $what in
+cost)
+    T=${2:-2e-9}
+    tet=$(prepare "$work/tet" -tet -endTime "$T")
+    hex=$(prepare "$work/hex" -endTime "$T")
+    run "$tet" "$T"
+    run "$hex" "$T"
+    summary tetrahedra "$tet"
+    summary hexahedra "$hex"
+    ;;
+column)
+    T=${2:-4e-8}
+    c=$(prepare "$work/column" -lateral 2e-6 -far 10e-6 -endTime "$T")
+    run "$c" "$T"
+    summary "hexahedra, lateral 2 um, far 10 um" "$c"
+    last=$(tail -1 "$c"/postProcessing/fluidProbes/0/p | awk '{print $1}')
+    (cd "$c" && planeWave -probes fluid -endTime "$last")
+    ;;
+*)
+    echo "usage: hexWater.sh cost|column [endTime]" >&2; exit 1 ;;
+esac
+echo "scratch: $work"
