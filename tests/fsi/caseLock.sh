@@ -15,11 +15,10 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
+. "$here/../lib/checks.sh"
 work=$(mktemp -d)
 pids=()
 [ -n "${KEEP_WORK:-}" ] || trap 'for p in "${pids[@]}"; do kill -9 "$p" 2>/dev/null || true; done; rm -rf "$work"' EXIT
-fail=0
-check() { if eval "$2"; then echo "ok   $1"; else echo "FAIL $1"; fail=1; fi; }
 
 cp -r "$here/pulseLayer" "$work/ref"
 (cd "$work/ref" && sed -i "s/^\(endTime *\)[0-9.e+-]*;/\12e-8;/" system/controlDict \

@@ -13,9 +13,7 @@
 #  - every write time records the digests (uniform/inputDigests).
 set -euo pipefail
 . "$(dirname "$0")/../lib/restartTools.sh"
-fail=0
-check() { if eval "$2"; then echo "ok   $1"; else echo "FAIL $1"; fail=1; fi; }
-sums() { find . -type f ! -name 'log.*' -print0 | sort -z | xargs -0 md5sum; }
+. "$(dirname "$0")/../lib/checks.sh"
 
 # refusedAfter NAME SOLVER FILE EDIT: apply the sed EDIT to FILE in a copy
 # of the case, restart, expect the refusal naming FILE and no change
@@ -24,10 +22,10 @@ refusedAfter()
     local name=$1 solver=$2 file=$3 edit=$4
     rm -rf "$work/edit"; cp -r "$case" "$work/edit"; cd "$work/edit"
     if [ -n "$edit" ]; then sed -i "$edit" "$file"; else echo "x" > "$file"; fi
-    sums > "$work/before"
+    caseSums > "$work/before"
     local status=0
     $solver > log.restart 2>&1 || status=$?
-    sums > "$work/after"
+    caseSums > "$work/after"
     check "$name: the restart is refused, naming $file, nothing changed" \
         "[ $status -ne 0 ] && grep -q 'would continue the results with other inputs' log.restart \
          && grep -q '    $file (' log.restart && cmp -s '$work/before' '$work/after'"

@@ -13,14 +13,12 @@
 #  - startFrom latestTime is not stopped (a restart continues the run).
 set -euo pipefail
 . "$(dirname "$0")/../lib/restartTools.sh"
-fail=0
-check() { if eval "$2"; then echo "ok   $1"; else echo "FAIL $1"; fail=1; fi; }
-sums() { find . -type f ! -name 'log.again' -print0 | sort -z | xargs -0 md5sum; }
+. "$(dirname "$0")/../lib/checks.sh"
 
 refused()
 {
     local name=$1 solver=$2
-    sums > "$work/$name.before"
+    caseSums 'log.again' > "$work/$name.before"
     local status=0
     $solver > log.again 2>&1 || status=$?
     check "$name: a new start over the results exits non-zero" "[ $status -ne 0 ]"
@@ -29,41 +27,38 @@ refused()
          && grep -q 'Nothing was changed' log.again \
          && grep -q 'startFrom latestTime' log.again \
          && grep -q -- '-overwrite' log.again"
-    sums > "$work/$name.after"
+    caseSums 'log.again' > "$work/$name.after"
     check "$name: no file of the case changed" \
         "cmp -s '$work/$name.before' '$work/$name.after'"
 }
 
-# rhoRiemannFoam
+# timeDirectorySolver SOLVER: in a meshed case with a controlDict, run to
+# 20 ns, then the refusal, -overwrite to 10 ns, and a restart to 15 ns
+timeDirectorySolver()
+{
+    local solver=$1 status=0
+    sed -i 's/^startFrom .*/startFrom startTime;/; s/^endTime .*/endTime 2e-8;/; s/^writeInterval .*/writeInterval 5e-9;/' system/controlDict
+    $solver > log.first 2>&1
+    refused $solver $solver
+    sed -i 's/^endTime .*/endTime 1e-8;/' system/controlDict
+    $solver -overwrite > log.overwrite 2>&1 || status=$?
+    check "$solver: -overwrite runs, no later time of the first run left" \
+        "[ $status -eq 0 ] && [ \"\$(foamListTimes -latestTime 2>/dev/null | tail -1)\" = 1e-08 ]"
+    sed -i 's/^startFrom .*/startFrom latestTime;/; s/^endTime .*/endTime 1.5e-8;/' system/controlDict
+    status=0; $solver > log.continue 2>&1 || status=$?
+    check "$solver: startFrom latestTime continues" "[ $status -eq 0 ]"
+}
+
 mkdir "$work/fluid"; cd "$work/fluid"
 cp -r "$root/tutorials/verification/waterPulseWall"/{0.orig,system,constant} .
 rm -rf constant/polyMesh; cp -r 0.orig 0
-sed -i 's/^startFrom .*/startFrom startTime;/; s/^endTime .*/endTime 2e-8;/; s/^writeInterval .*/writeInterval 5e-9;/' system/controlDict
 blockMesh > log.blockMesh 2>&1
-rhoRiemannFoam > log.first 2>&1
-refused rhoRiemannFoam rhoRiemannFoam
-sed -i 's/^endTime .*/endTime 1e-8;/' system/controlDict
-status=0; rhoRiemannFoam -overwrite > log.overwrite 2>&1 || status=$?
-check "rhoRiemannFoam: -overwrite runs, no later time of the first run left" \
-    "[ $status -eq 0 ] && [ \"\$(foamListTimes -latestTime 2>/dev/null | tail -1)\" = 1e-08 ]"
-sed -i 's/^startFrom .*/startFrom latestTime;/; s/^endTime .*/endTime 1.5e-8;/' system/controlDict
-status=0; rhoRiemannFoam > log.continue 2>&1 || status=$?
-check "rhoRiemannFoam: startFrom latestTime continues" "[ $status -eq 0 ]"
+timeDirectorySolver rhoRiemannFoam
 
-# cellBlastFoam
 mkdir "$work/fsi"; cd "$work/fsi"
 cp -r "$root/tests/fsi/pulseLayer"/* .
-sed -i 's/^startFrom .*/startFrom startTime;/; s/^endTime .*/endTime 2e-8;/; s/^writeInterval .*/writeInterval 5e-9;/' system/controlDict
 blockMesh > log.blockMesh 2>&1
-cellBlastFoam > log.first 2>&1
-refused cellBlastFoam cellBlastFoam
-sed -i 's/^endTime .*/endTime 1e-8;/' system/controlDict
-status=0; cellBlastFoam -overwrite > log.overwrite 2>&1 || status=$?
-check "cellBlastFoam: -overwrite runs, no later time of the first run left" \
-    "[ $status -eq 0 ] && [ \"\$(foamListTimes -latestTime 2>/dev/null | tail -1)\" = 1e-08 ]"
-sed -i 's/^startFrom .*/startFrom latestTime;/; s/^endTime .*/endTime 1.5e-8;/' system/controlDict
-status=0; cellBlastFoam > log.continue 2>&1 || status=$?
-check "cellBlastFoam: startFrom latestTime continues" "[ $status -eq 0 ]"
+timeDirectorySolver cellBlastFoam
 
 # cellIndentationFoam
 mkdir "$work/indentation"; cd "$work/indentation"
