@@ -1,6 +1,7 @@
 // The HDF5 layer (Hdf5File, Hdf5Group): datasets of doubles and ints read
 // back exactly with their shape, nested names, attributes, members and
-// datasets listed, removal, and failures that name the file and object.
+// datasets listed, removal, and failures that name the file and object;
+// damaged bytes in a dataset or an attribute are errors, not values.
 #include "Hdf5File.H"
 #include "SolidError.H"
 
@@ -9,7 +10,9 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <limits>
+#include <string>
 
 using namespace solid;
 
@@ -118,4 +121,66 @@ TEST(Hdf5, FailuresNameTheFileAndObject)
     msg = errorOf([&] { g.readAttribute("time"); });
     EXPECT_NE(msg.find("time"), std::string::npos) << msg;
     EXPECT_NE(msg.find("/g"), std::string::npos) << msg;
+}
+
+
+namespace
+{
+
+//- Zero the bytes of the first stored copy of value in file; false if
+//  the value is not found
+bool zeroValue(const std::string& file, double value)
+{
+    std::string bytes;
+    {
+        std::ifstream is(file, std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(is), {});
+    }
+    const std::string pattern(reinterpret_cast<const char*>(&value), 8);
+    const auto at = bytes.find(pattern);
+    if (at == std::string::npos)
+    {
+        return false;
+    }
+    bytes.replace(at, 8, std::string(8, '\0'));
+    std::ofstream(file, std::ios::binary) << bytes;
+    return true;
+}
+
+} // namespace
+
+
+TEST(Hdf5, DamagedBytesAreErrorsNotValues)
+{
+    std::vector<double> x(1000);
+    for (std::size_t i = 0; i < x.size(); ++i)
+    {
+        x[i] = 1.0 + 1e-3*i;
+    }
+    const double time = 1.2345678e-9;
+    for (const char* name : {"data.h5", "attribute.h5"})
+    {
+        Hdf5File f(name, Hdf5File::Mode::create);
+        Hdf5Group g(f, "step", true);
+        g.write("u", x.data(), 500, 2);
+        g.writeAttribute("time", time);
+    }
+
+    // A zeroed value inside the dataset
+    ASSERT_TRUE(zeroValue("data.h5", x[600]));
+    std::string msg = errorOf([] {
+        const Hdf5File f("data.h5", Hdf5File::Mode::readOnly);
+        Hdf5Group(f, "step", false).read("u");
+    });
+    EXPECT_NE(msg.find("'data.h5'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("/step/u"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("checksum"), std::string::npos) << msg;
+
+    // A zeroed attribute (in the group's object header)
+    ASSERT_TRUE(zeroValue("attribute.h5", time));
+    msg = errorOf([&] {
+        const Hdf5File f("attribute.h5", Hdf5File::Mode::readOnly);
+        Hdf5Group(f, "step", false).readAttribute("time");
+    });
+    EXPECT_NE(msg.find("'attribute.h5'"), std::string::npos) << msg;
 }

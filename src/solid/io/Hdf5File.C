@@ -12,10 +12,16 @@ hid_t openFile(const std::string& name, solid::Hdf5File::Mode mode)
     // Failures are reported as SolidErrors naming the file, not as the
     // library's error stack on stderr
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    // Files in the format of HDF5 1.8 and later: its superblock, object
+    // headers (with the attributes) and group indices carry checksums,
+    // verified when read, as the datasets do (Hdf5Group::write)
+    const hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
+    H5Pset_libver_bounds(fapl, H5F_LIBVER_V18, H5F_LIBVER_LATEST);
     const hid_t id = mode == Mode::create
-        ? H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT)
+        ? H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl)
         : H5Fopen(name.c_str(), mode == Mode::readWrite ? H5F_ACC_RDWR
                   : H5F_ACC_RDONLY, H5P_DEFAULT);
+    H5Pclose(fapl);
     if (id < 0)
     {
         throw solid::SolidError
@@ -23,7 +29,8 @@ hid_t openFile(const std::string& name, solid::Hdf5File::Mode mode)
             solid::SolidError::Kind::io, "cannot "
           + std::string(mode == Mode::create ? "create" : "open")
           + " HDF5 file '" + name + "'"
-          + (mode == Mode::create ? "" : " (missing, truncated or not HDF5)")
+          + (mode == Mode::create ? ""
+             : " (missing, truncated, damaged or not HDF5)")
         );
     }
     return id;

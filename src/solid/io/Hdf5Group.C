@@ -166,10 +166,20 @@ void solid::Hdf5Group::writeData
     // A name with '/' creates its groups (checkpoint entries)
     const hid_t lcpl = H5Pcreate(H5P_LINK_CREATE);
     H5Pset_create_intermediate_group(lcpl, 1);
+    // A Fletcher-32 checksum over the data (one chunk: the whole
+    // dataset), verified by HDF5 at every read: damaged bytes are an
+    // error, never values (an empty dataset has no chunk to check)
+    const hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+    if (rows*cols > 0)
+    {
+        H5Pset_chunk(dcpl, cols > 1 ? 2 : 1, dims);
+        H5Pset_fletcher32(dcpl);
+    }
     const hid_t d = H5Dcreate2
     (
-        id_, name.c_str(), type, space, lcpl, H5P_DEFAULT, H5P_DEFAULT
+        id_, name.c_str(), type, space, lcpl, dcpl, H5P_DEFAULT
     );
+    H5Pclose(dcpl);
     H5Pclose(lcpl);
     // An empty dataset has nothing to write
     const bool ok = d >= 0
@@ -227,7 +237,12 @@ std::vector<double> solid::Hdf5Group::read
                  v.data()) >= 0);
     if (space >= 0) H5Sclose(space);
     H5Dclose(d);
-    check(ok, "read dataset " + where(name));
+    check
+    (
+        ok,
+        "read dataset " + where(name)
+      + " (its checksum does not match: the file is damaged)"
+    );
     if (rows) *rows = rank > 0 ? dims[0] : 1;
     if (cols) *cols = rank > 1 ? dims[1] : 1;
     return v;
