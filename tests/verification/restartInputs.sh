@@ -10,7 +10,9 @@
 #    nothing in the case;
 #  - an edited comment and layout, and a changed end time, are not
 #    changes: the restart runs;
-#  - every write time records the digests (uniform/inputDigests).
+#  - every write time records the digests (uniform/inputDigests);
+#  - on 2 ranks each rank records its own mesh, a changed point of one
+#    rank is refused, and the reconstructed run restarts serially.
 set -euo pipefail
 . "$(dirname "$0")/../lib/restartTools.sh"
 . "$(dirname "$0")/../lib/checks.sh"
@@ -58,6 +60,37 @@ sed -i 's#^\(materials\)#// a comment added before the restart\n\1#; s/rho0     
 status=0; cellBlastFoam > log.restart 2>&1 || status=$?
 check "cellBlastFoam: a comment, the layout and the end time are not changes" \
     "[ $status -eq 0 ] && grep -q '^End' log.restart && [ -d 1.5e-08 ]"
+
+# cellBlastFoam on 2 ranks: a changed point of one rank's mesh is
+# refused, naming that rank's file; the run reconstructed and restarted
+# serially is not refused (the record of processor0's mesh does not apply
+# to the whole mesh)
+case=$work/fsiParallel
+mkdir "$case"; cd "$case"
+cp -r "$root/tests/fsi/pulseLayer"/* .
+sed -i 's/^startFrom .*/startFrom latestTime;/; s/^endTime .*/endTime 1e-8;/; s/^writeInterval .*/writeInterval 5e-9;/' system/controlDict
+printf 'FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\nnumberOfSubdomains 2;\nmethod simple;\ncoeffs { n (2 1 1); }\n' > system/decomposeParDict
+blockMesh > log.blockMesh 2>&1
+decomposePar > log.decomposePar 2>&1
+mpirun -np 2 cellBlastFoam -parallel > log.first 2>&1
+check "cellBlastFoam -parallel: the ranks record their own meshes" \
+    "grep -q ' processor1/constant/polyMesh/points\$' processor1/1e-08/uniform/inputDigests"
+sed -i 's/^endTime .*/endTime 1.5e-8;/' system/controlDict
+rm -rf "$work/edit"; cp -r "$case" "$work/edit"; cd "$work/edit"
+/usr/bin/python3 - <<'PY'
+import re
+f='processor1/constant/polyMesh/points'; s=open(f).read()
+m=re.search(r'\(([-0-9.e+]+) ', s[s.index('(\n'):])
+open(f,'w').write(s.replace('('+m.group(1)+' ', '('+repr(float(m.group(1))+1e-9)+' ', 1))
+PY
+status=0; mpirun -np 2 cellBlastFoam -parallel > log.restart 2>&1 || status=$?
+check "cellBlastFoam -parallel: a changed point of rank 1 is refused, naming its file" \
+    "[ $status -ne 0 ] && grep -q '    processor1/constant/polyMesh/points (changed)' log.restart"
+cd "$case"
+reconstructPar -latestTime > log.reconstructPar 2>&1
+status=0; cellBlastFoam > log.serial 2>&1 || status=$?
+check "cellBlastFoam: the reconstructed run restarts serially" \
+    "[ $status -eq 0 ] && grep -q '^End' log.serial && [ -d 1.5e-08 ]"
 
 # rhoRiemannFoam
 case=$work/fluid
