@@ -88,6 +88,12 @@ expect negativeHeight 's/^cellHeight .*/cellHeight -7.9e-6;/' \
     "cellHeight' = -7.9e-06 m is outside the valid range"
 expect micrometres 's/^cellDiameter .*/cellDiameter 16.8;/' \
     "cellDiameter' = 16.8 m is outside the valid range \(0, 0.001\]"
+expect tooManyElements 's/^nucleusSize .*/nucleusSize 1e-9;/' \
+    "ask for at least 2.*e\+07 elements, more than maxElements 1000000"
+expect tooManyElements3D 's/^mode .*/mode quarter3D;/; s/^contactRadius .*/contactRadius 0;/; /^fluid/,$d; s/^membraneSize .*/membraneSize 1e-8;/' \
+    "more than maxElements"
+expect maxElementsZero 's/^membraneLayers .*/membraneLayers 2; maxElements 0;/' \
+    "maxElements' = 0 is outside the valid range"
 expect zeroLayers 's/^membraneLayers .*/membraneLayers 0;/' \
     "membraneLayers' = 0 is outside the valid range \[1, 20\]"
 expect contactRadiusTooLarge 's/^contactRadius .*/contactRadius 9e-6;/' \

@@ -132,6 +132,23 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
         );
     }
 
+    const label maxElements = foamTools::readInRangeOrDefault<label>
+    (
+        dict, "maxElements", "", 1, 1000000000, true, 1000000
+    );
+    if (minimumElements() > maxElements)
+    {
+        FatalIOErrorInFunction(dict)
+            << "The element sizes ask for at least "
+            << word::printf("%.3g", minimumElements()) << " elements, more"
+            << " than maxElements " << maxElements << " (nucleusSize "
+            << nucleusSize_ << " m, cytoplasmSize " << cytoplasmSize_
+            << " m, membraneSize " << membraneSize_ << " m, membraneLayers "
+            << layers_ << "; cell " << 2*a_ << " x " << H_ << " m): larger"
+            << " sizes (in metres), or a larger maxElements if that many is"
+            << " meant" << exit(FatalIOError);
+    }
+
     gap_ = nucleusGap();
     if (!(gap_ > 0))
     {
@@ -282,3 +299,26 @@ Foam::scalar Foam::cellGeometry::innerVolume() const
     }
     return V;
 }
+
+
+Foam::scalar Foam::cellGeometry::minimumElements() const
+{
+    const scalar quarter = mode_ == meshMode::quarter3D ? 0.25 : 1;
+    if (axisymmetric())
+    {
+        const scalar A = 0.25*constant::mathematical::pi*a_*H_;
+        const scalar An = pow(f_, 2.0/3.0)*A;
+        return
+            An/sqr(nucleusSize_) + (A - An)/sqr(cytoplasmSize_)
+          + max(a_, H_)/membraneSize_*layers_;
+    }
+    const scalar V =
+        quarter*2.0/3.0*constant::mathematical::pi*sqr(a_)*H_;
+    const scalar S = quarter*constant::mathematical::pi*sqr(a_);
+    return
+        f_*V/pow3(nucleusSize_) + (1 - f_)*V/pow3(cytoplasmSize_)
+      + S/sqr(membraneSize_)*layers_;
+}
+
+
+// ************************************************************************* //
