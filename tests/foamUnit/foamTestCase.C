@@ -14,18 +14,6 @@
 namespace
 {
 
-const char* fvSchemesText =
-    "FoamFile { version 2.0; format ascii; class dictionary;"
-    " object fvSchemes; }\n"
-    "ddtSchemes { default Euler; }\n"
-    "gradSchemes { default Gauss linear; }\n"
-    "divSchemes { default none; }\n"
-    "laplacianSchemes { default Gauss linear corrected; }\n"
-    "interpolationSchemes\n{\n    default linear;\n"
-    "    reconstruct(rho) upwind;\n    reconstruct(U) upwind;\n"
-    "    reconstruct(p) upwind;\n}\n"
-    "snGradSchemes { default corrected; }\n";
-
 const char* fvSolutionText =
     "FoamFile { version 2.0; format ascii; class dictionary;"
     " object fvSolution; }\n"
@@ -50,7 +38,7 @@ Foam::foamUnit::testCase::testCase(const word& name, const scalar deltaT)
     mkDir(dir()/"system");
     mkDir(dir()/"constant");
     mkDir(dir()/"0");
-    writeFile("system/fvSchemes", fvSchemesText);
+    writeReconstruction("upwind", "upwind");
     writeFile("system/fvSolution", fvSolutionText);
 
     dictionary controlDict;
@@ -103,6 +91,30 @@ void Foam::foamUnit::testCase::writeFile
         FatalErrorInFunction
             << "Cannot write " << file << exit(FatalError);
     }
+}
+
+
+void Foam::foamUnit::testCase::writeReconstruction
+(
+    const word& scalarScheme,
+    const word& vectorScheme
+) const
+{
+    writeFile
+    (
+        "system/fvSchemes",
+        "FoamFile { version 2.0; format ascii; class dictionary;"
+        " object fvSchemes; }\n"
+        "ddtSchemes { default Euler; }\n"
+        "gradSchemes { default Gauss linear; }\n"
+        "divSchemes { default none; }\n"
+        "laplacianSchemes { default Gauss linear corrected; }\n"
+        "interpolationSchemes\n{\n    default linear;\n"
+        "    reconstruct(rho) " + scalarScheme + ";\n"
+        "    reconstruct(U) " + vectorScheme + ";\n"
+        "    reconstruct(p) " + scalarScheme + ";\n}\n"
+        "snGradSchemes { default corrected; }\n"
+    );
 }
 
 

@@ -28,18 +28,6 @@ using namespace Foam;
 namespace
 {
 
-const char* fvSchemesText =
-    "FoamFile { version 2.0; format ascii; class dictionary;"
-    " object fvSchemes; }\n"
-    "ddtSchemes { default Euler; }\n"
-    "gradSchemes { default Gauss linear; }\n"
-    "divSchemes { default none; }\n"
-    "laplacianSchemes { default Gauss linear corrected; }\n"
-    "interpolationSchemes\n{\n    default linear;\n"
-    "    reconstruct(rho) MUSCL;\n    reconstruct(U) MUSCLV;\n"
-    "    reconstruct(p) MUSCL;\n}\n"
-    "snGradSchemes { default corrected; }\n";
-
 //- Faces where a and b differ in any bit
 template<class Type>
 label nDiffering(const UList<Type>& a, const UList<Type>& b)
@@ -82,7 +70,7 @@ struct fluxFields
 TEST(fluxParts, wallFluxesAndSignalSpeedsEqualTheFullEvaluationBitwise)
 {
     foamUnit::testCase tc("fluxParts");
-    tc.writeFile("system/fvSchemes", fvSchemesText);
+    tc.writeReconstruction("MUSCL", "MUSCLV");
     tc.writeThermophysicalProperties("mieGruneisen");
     tc.writeUniformField("p", dimPressure, 1e5, "zeroGradient");
     tc.writeUniformField("T", dimTemperature, 300, "zeroGradient");
