@@ -2,7 +2,7 @@
 """Blast preview per run option: cost against error (not a test).
 
 The default mesh of tutorials/blast/axisymmetricPreview (fluid 0.25 um at
-the cell, 1 um column, solid 0.5 um), 100 um column, 50 MPa for 5 ns, to
+the cell, 0.25 um along the column, solid 0.5 um), 100 um column, 50 MPa for 5 ns, to
 150 ns, run with the options that cut its cost without touching the
 resolution at the cell:
 
@@ -14,6 +14,9 @@ resolution at the cell:
              uniform in r there
   co0.5/0.9  maxCo in system/controlDict
   tol1e-6/1e-4  the coupling tolerance in constant/fsiProperties
+  hg0.05/hg0.2  the hourglass viscosity halved / doubled (issue 17 item 5)
+  mappedForces/pressure  the interface load (the preview's is pressure
+             since 2026-12-03)
 and their combinations (--options; "outer1+co0.5+tol1e-6" is the default
 before 2026-12-02). Two runs at a time (one core each, --jobs), so that
 the ratios are measured side by side on the same machine.
@@ -21,8 +24,10 @@ the ratios are measured side by side on the same machine.
 Per option: fluid cells, steps, coupling passes per step, unconverged
 steps, CPU of cellBlastFoam (its ExecutionTime) to 90 and 150 ns, peak RSS,
 and the Fig. 10 probe peaks over t <= 90 ns (the first passage), the
-largest nodal speed of the solid after 110 ns (late-time drift), and each
-difference to the default.
+largest nodal speed of the solid after 110 ns (late-time drift), the
+probe's largest |strain_z| and von Mises after 140 ns (at rest: issue 17
+item 6), the region interfaces' von Mises maxima, and each difference to
+the default.
 
     bench/blast/previewOptions.py [--out DIR] [--doc FILE] [--jobs 2]
         [--options "default outer1+co0.5+tol1e-6 ..."] [--pulse 5e-9]
@@ -64,6 +69,16 @@ PIECES = {
                      "1e-6"}),
     "tol1e-4": ([], {("constant/fsiProperties", "coupling/tolerance"):
                      "1e-4"}),
+    # the numerical knobs of issue 17 item 5: the hourglass viscosity
+    # halved and doubled, the other interface load
+    "hg0.05": ([], {("constant/solidProperties", "hourglassViscosity"):
+                    "0.05"}),
+    "hg0.2": ([], {("constant/solidProperties", "hourglassViscosity"):
+                   "0.2"}),
+    "mappedForces": ([], {("constant/fsiProperties", "interface/load"):
+                          "mappedForces"}),
+    "pressure": ([], {("constant/fsiProperties", "interface/load"):
+                      "pressure"}),
 }
 DEFAULT_OPTIONS = ("default outer1+co0.5+tol1e-6 outer1 co0.5 tol1e-6 "
                    "outer4")
@@ -88,9 +103,9 @@ def runOption(option, out, env, pulse):
     c, _, _, cmd = B.prepare(os.path.join(out, name), "1", SIZE["Z"],
                              SIZE["endTime"], env, extra, pulse)
     for (f, e), v in entries.items():
-        subprocess.run(["foamDictionary", "-entry", e, "-set", v, f], cwd=c,
+        subprocess.run(["foamDictionary", "-entry", e, "-add", v, f], cwd=c,
                        env=env, check=True, stdout=subprocess.DEVNULL)
-        cmd += f"; foamDictionary -entry {e} -set {v} {f}"
+        cmd += f"; foamDictionary -entry {e} -add {v} {f}"
     with open(os.path.join(c, "bench.cmd"), "w") as o:
         o.write(cmd + "\n")
     print(f"{option}: running cellBlastFoam in {c} ...", flush=True)
@@ -132,17 +147,20 @@ def report(rows, start, end, commit, dirty, pulse):
       f"time on the {os.cpu_count()}-core machine (one core each; the CPU "
       "time of cellBlastFoam is the cost to compare). Case "
       "`tutorials/blast/axisymmetricPreview`, default mesh (fluid 0.25 um "
-      f"at the cell, 1 um column, solid 0.5 um), 50 MPa for "
+      "at the cell, 0.25 um along the column, solid 0.5 um), 50 MPa for "
       f"{pulse*1e9:g} ns, 100 um column, to 150 ns; probe peaks over "
       "t <= 90 ns (the first passage); differences to `default`.")
     w("")
     w("| option | fluid cells | steps | passes/step (mean / max) | "
       "unconverged | CPU to 90 ns [s] | CPU to 150 ns [s] | CPU / default "
       "| peak RSS [MB] | arrival [ns] | peak p [MPa] | peak von Mises [Pa] "
-      "| peak strain [-] | peak strain rate [1/s] | largest difference "
-      "[%] | largest nodal speed after 110 ns [m/s] |")
+      "| peak strain [-] | peak strain rate [1/s] | peak 1-ns strain rate"
+      " [1/s] | interface von Mises max m-c / c-n [Pa] | largest "
+      "difference [%] | largest nodal speed after 110 ns [m/s] | after "
+      f"{B.REST*1e9:.0f} ns: max \\|strain_z\\|, max von Mises (of the "
+      "peak) |")
     w("|---|---:|---:|---|---:|---:|---:|---:|---:|---|---|---|---|---|"
-      "---:|---:|")
+      "---|---|---:|---:|---|")
     for r in rows:
         d = B.diffs(r, ref)
         cw = f"{r['atWindow'][0]:.1f}" if r["atWindow"] else "-"
@@ -155,8 +173,14 @@ def report(rows, start, end, commit, dirty, pulse):
           f"| {r['pMax']/1e6:.2f} ({d['pMax']:+.2f} %) | "
           f"{r['vmMax']:.3f} ({d['vmMax']:+.2f} %) | "
           f"{r['strainMin']:.5f} ({d['strainMin']:+.2f} %) | "
-          f"{r['rateMin']:.4g} ({d['rateMin']:+.2f} %) | {d['max']:.2f} | "
-          + ("-" if r["late"] is None else f"{r['late']:.3g}") + " |")
+          f"{r['rateMin']:.4g} ({d['rateMin']:+.2f} %) | "
+          f"{r['rate1nsMin']:.4g} ({d['rate1nsMin']:+.2f} %) | "
+          f"{r['vmMC']:.2f} / {r['vmCN']:.2f} ({d['vmMC']:+.1f} / "
+          f"{d['vmCN']:+.1f} %) | {d['max']:.2f} | "
+          + ("-" if r["late"] is None else f"{r['late']:.3g}") + " | "
+          + ("-" if not r.get("rest") else
+             f"{r['rest'][0]:.4f}, {r['rest'][1]:.3f} Pa "
+             f"({100*r['rest'][1]/r['vmMax']:.0f} %)") + " |")
     w("")
     w("CPU split of the time loop (cellBlastFoam):")
     w("")
