@@ -97,15 +97,27 @@ def parts(option):
     return extra, entries
 
 
-def runOption(option, out, env, pulse):
+def finished(option, out):
+    """True when the option's case in out ran to its end (exit 0 in
+    /usr/bin/time's log)"""
+    path = os.path.join(out, f"opt_{option}", "axisymmetricPreview",
+                        "log.time")
+    return os.path.exists(path) and B.timeV(path)[3] == 0
+
+
+def runOption(option, out, env, pulse, keep=False):
     extra, entries = parts(option)
     name = f"opt_{option}"
+    if keep and finished(option, out):
+        print(f"{option}: finished in {out}, kept", flush=True)
+        return
     c, _, _, cmd = B.prepare(os.path.join(out, name), "1", SIZE["Z"],
                              SIZE["endTime"], env, extra, pulse)
     for (f, e), v in entries.items():
-        subprocess.run(["foamDictionary", "-entry", e, "-add", v, f], cwd=c,
+        # -set: sets or adds (-add leaves an existing entry as it is)
+        subprocess.run(["foamDictionary", "-entry", e, "-set", v, f], cwd=c,
                        env=env, check=True, stdout=subprocess.DEVNULL)
-        cmd += f"; foamDictionary -entry {e} -add {v} {f}"
+        cmd += f"; foamDictionary -entry {e} -set {v} {f}"
     with open(os.path.join(c, "bench.cmd"), "w") as o:
         o.write(cmd + "\n")
     print(f"{option}: running cellBlastFoam in {c} ...", flush=True)
@@ -206,6 +218,9 @@ def main():
     ap.add_argument("--options", default=DEFAULT_OPTIONS)
     ap.add_argument("--pulse", type=float, default=B.PULSE, help="[s]")
     ap.add_argument("--reportOnly", action="store_true")
+    ap.add_argument("--keep", action="store_true",
+                    help="do not run again the options whose case in --out "
+                    "ran to its end (a study continued)")
     args = ap.parse_args()
     options = args.options.split()
     if "default" not in options:
@@ -220,8 +235,8 @@ def main():
     start = datetime.datetime.utcnow()
     if not args.reportOnly:
         with ThreadPoolExecutor(max_workers=args.jobs) as ex:
-            list(ex.map(lambda o: runOption(o, out, env, args.pulse),
-                        options))
+            list(ex.map(lambda o: runOption(o, out, env, args.pulse,
+                                            args.keep), options))
     end = datetime.datetime.utcnow()
     rows = [parse(o, out) for o in options]
     lines = report(rows, start, end, commit, dirty, args.pulse)

@@ -56,6 +56,73 @@ class ReferenceFile(TempDirTestCase):
             back.at(2e-5)
 
 
+    def testDensitiesReadBackAndOldFilesHaveNone(self):
+        heights = [1e-6, 2e-6]
+        t = np.array([0.0, 1e-10])
+        p = np.array([[0.0, 1.0], [2.5e7, 3.0]])
+        rho = np.array([[1000.0, 1000.0], [1016.5, 1000.1]])
+        path = self.tmp + "/reference.dat"
+        pw.writeReference(path, pw.PlaneWave(heights, t, p, 25e-9, 1e-4,
+                                             rho), "test")
+        back = pw.readReference(path)
+        np.testing.assert_array_equal(back.at(heights[1]), p[:, 1])
+        np.testing.assert_array_equal(back.densityAt(heights[0]), rho[:, 0])
+        pw.writeReference(path, pw.PlaneWave(heights, t, p, 25e-9, 1e-4),
+                          "without densities")
+        with self.assertRaisesRegex(pw.PlaneWaveError, "no densities"):
+            pw.readReference(path).densityAt(heights[0])
+        self.write("bad.dat", "# x\n# time  p_z1e-06 rho_z2e-06\n0 1 2\n")
+        with self.assertRaisesRegex(pw.PlaneWaveError, "are not p_z"):
+            pw.readReference(self.tmp + "/bad.dat")
+
+
+class UniaxialResponse(unittest.TestCase):
+    """The exact solid response to a density history: closed forms."""
+
+    def testElasticClosedForm(self):
+        t = np.linspace(0, 1e-8, 11)
+        rho = 1000/np.linspace(1, 0.97, 11)         # lambda 1 -> 0.97
+        ez, vm = pw.uniaxialResponse(t, rho, 1000, 3.34, [(107.78, 1e3)])
+        lam = np.linspace(1, 0.97, 11)
+        np.testing.assert_allclose(ez, np.log(lam), rtol=1e-12)
+        # von Mises = mu |lambda^2 - 1| / lambda^(5/3), mu = mu0 + mu1
+        np.testing.assert_allclose(
+            vm, (3.34 + 107.78)*np.abs(lam**2 - 1)/lam**(5/3), rtol=1e-9,
+            atol=1e-12)
+        # about 2 mu |strain| for small strains: 6.7 Pa at 3 %
+        self.assertAlmostEqual(vm[-1]/(2*111.12*abs(ez[-1])), 1, delta=0.03)
+
+    def testMaxwellBranchRelaxesAfterAStep(self):
+        tau = 1e-9
+        t = np.linspace(0, 5e-9, 5001)
+        lam = np.where(t > 0, 0.98, 1.0)            # strain step at t = 0+
+        _, vm = pw.uniaxialResponse(t, 1000/lam, 1000, 0.0, [(100.0, tau)])
+        s = abs(0.98**2 - 1)/0.98**(5/3)
+        np.testing.assert_allclose(vm[1:], 100*s*np.exp(-(t[1:] - t[1])/tau)
+                                   *np.exp(-0.5*(t[1] - t[0])/tau),
+                                   rtol=1e-9)
+
+
+class SolidMeasures(unittest.TestCase):
+
+    def testAgainstItselfAndTheRestWindow(self):
+        t = np.linspace(0, 1.5e-7, 3001)
+        ez = -0.02*np.exp(-((t - 6e-8)/2e-9)**2)
+        vm = 5.0*np.abs(ez)/0.02
+        s, r = pw.solidMeasures(t, vm, ez, t, vm, ez)
+        self.assertEqual(s, r)
+        self.assertAlmostEqual(s["vonMises1ns"], 5.0, delta=0.3)
+        self.assertAlmostEqual(s["strain1ns"], -0.02, delta=0.0012)
+        self.assertLess(s["restStrain"], 1e-12)
+        # a residual strain after the pulse is seen; a run ending before
+        # the rest window has none
+        s, _ = pw.solidMeasures(t, vm, ez + 0.006*(t > 8e-8), t, vm, ez)
+        self.assertAlmostEqual(s["restStrain"], 0.006, delta=1e-12)
+        short = t < 1.2e-7
+        s, _ = pw.solidMeasures(t[short], vm[short], ez[short], t, vm, ez)
+        self.assertIsNone(s["restStrain"])
+
+
 class RunningMean(unittest.TestCase):
 
     def testExactForPiecewiseLinear(self):

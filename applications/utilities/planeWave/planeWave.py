@@ -15,14 +15,29 @@ Description
     fluid probes (any probes function object sampling p): arrival, 1-ns averaged peak,
     incident plateau and impulse, scene against reference.
 
+    The solid probes' von Mises stress and longitudinal strain have an
+    exact answer too: a material point carried by the plane wave is in
+    uniaxial strain, F = diag(1, 1, rho0/rho(t)), with the water's density
+    history at its height (nucleus and cytoplasm have the water's
+    equation of state), and its region's neo-Hookean + Maxwell law gives
+    the von Mises stress in closed form (neuronFsi.planeWave.
+    uniaxialResponse). Compared: the 1-ns peak of von Mises and of the
+    strain, and after the pulse (t >= 140 ns) the largest |strain| and
+    von Mises, whose answer is rest.
+
     Writes <case>/postProcessing/planeWave/0/:
-        reference.dat   time [s], p [Pa] of the 1D answer at each height
+        reference.dat   time [s], p [Pa] and rho [kg/m^3] of the 1D answer
+                        at each height
         measures.dat    one row per probe: height, the four measures of
                         the scene and of the reference, their errors
-    and prints measures.dat. With -check, exits 1 when a measure is
+        solidMeasures.dat  one row per solid probe: region, height, von
+                        Mises and strain peaks of the scene and of the
+                        answer, their errors, the rest measures
+    and prints them. With -check, exits 1 when a measure is
     outside issue 17's bounds (arrival 0.3 ns, peaks and plateau 5 %,
-    impulse 3 %), naming it; -except leaves the named measures out of
-    the check (they are still printed).
+    impulse 3 %; solid von Mises and strain peaks 5 %; after the pulse
+    |strain| 1e-3 and von Mises 10 % of its peak), naming it; -except
+    leaves the named measures out of the check (they are still printed).
 
 Usage
     planeWave [-case dir] [-Z 100e-6] [-dz 25e-9] [-endTime t]
@@ -35,7 +50,8 @@ Usage
     -endTime    [s]; default: the last time of the case's probes
     -except     measures not checked, [solid:|fluid:]<measure> (all
                 probes, or the solid's or the water's only); measures:
-                arrival, peak1ns, peakIncident, plateau, impulse
+                arrival, peak1ns, peakIncident, plateau, impulse,
+                vonMises1ns, strain1ns, restStrain, restVonMises
     -reference  reuse a reference.dat of an earlier run (same pulse,
                 column and heights) instead of computing it
 
@@ -50,6 +66,11 @@ from neuronFsi import planeWave, postProcessing
 
 BOUNDS = {"arrival": 0.3e-9, "peak1ns": 0.05, "peakIncident": 0.05,
           "plateau": 0.05, "impulse": 0.03}
+# the solid probes' deviatoric response against the uniaxial-strain answer
+# (relative, 1-ns means), and at rest after the pulse (issue 17 item 6:
+# |strain_z| below 1e-3, von Mises below 10 % of the pulse's peak)
+SOLID_BOUNDS = {"vonMises1ns": 0.05, "strain1ns": 0.05, "restStrain": 1e-3,
+                "restVonMises": 0.1}
 
 
 def main():
@@ -68,10 +89,11 @@ def main():
     skip = [tuple(k.split(":")) if ":" in k else (None, k)
             for k in a.skip.split(",") if k]
     for kind, k in skip:
-        if k not in BOUNDS or kind not in (None, "solid", "fluid"):
+        if (k not in BOUNDS and k not in SOLID_BOUNDS) \
+                or kind not in (None, "solid", "fluid"):
             p.error("-except %s: not [solid:|fluid:]<measure> (measures: "
                     "%s)" % (k if kind is None else kind + ":" + k,
-                             ", ".join(BOUNDS)))
+                             ", ".join(list(BOUNDS) + list(SOLID_BOUNDS))))
     for name, v in (("-Z", a.Z), ("-dz", a.dz)):
         if not v > 0:
             p.error("%s %g m: must be positive" % (name, v))
@@ -149,6 +171,12 @@ def main():
     with open(os.path.join(out, "measures.dat"), "w") as f:
         f.write(text)
     sys.stdout.write(text)
+    if "solid" in kinds and wave.rho is not None:
+        text, solidBad = solidRows(case, wave, skip)
+        bad += solidBad
+        with open(os.path.join(out, "solidMeasures.dat"), "w") as f:
+            f.write(text)
+        sys.stdout.write(text)
     if a.check:
         if not rows:
             sys.exit("planeWave: -check, but no probe saw the pulse")
@@ -159,6 +187,61 @@ def main():
               "(arrival 0.3 ns, peaks and plateau 5 %%, impulse 3 %%)"
               % (" but " + ", ".join(k if c is None else c + ":" + k
                                      for c, k in skip) if skip else ""))
+
+
+def solidRows(case, wave, skip):
+    """The solid probes' von Mises and longitudinal strain against the
+    uniaxial-strain answer of the plane wave at their height (text of
+    solidMeasures.dat, failed bounds)"""
+    log = "solidProbes/solidProbes.dat"
+    if not planeWave._has(case, log):
+        return "", []
+    data = postProcessing.series(case, log)
+    cols = postProcessing.names(case, log)
+    axis = 1 if planeWave.isWedge(case) else 2
+    lines = ["# planeWave: solid probes of %s against the uniaxial-strain "
+             "answer of the 1D wave (F = diag(1, 1, rho0/rho), the "
+             "region's neo-Hookean + Maxwell law); von Mises [Pa], strain "
+             "ln(stretch_z) [-]: the 1-ns peak of the scene and of the "
+             "answer and the error [%%]; after %g ns: largest |strain| [-] "
+             "and von Mises [Pa] of the scene (answer: 0)"
+             % (case, planeWave.REST*1e9),
+             "# probe  region  z[m]  vonMises1ns vonMises1nsRef errVonMises"
+             "[%]  strain1ns strain1nsRef errStrain[%]  restStrain "
+             "restVonMises"]
+    bad = []
+    for i, q in enumerate(postProcessing.probes(case, log)):
+        z = q["point"][axis]
+        rho0, mu0, branches = planeWave.solidMaterial(case, q["region"])
+        ezRef, vmRef = planeWave.uniaxialResponse(
+            wave.t, wave.densityAt(z), rho0, mu0, branches)
+        s, r = planeWave.solidMeasures(
+            data[:, 0], data[:, cols.index("vonMises%d" % i)],
+            data[:, cols.index("strainZ%d" % i)], wave.t, vmRef, ezRef)
+        e = {k: s[k]/r[k] - 1 for k in ("vonMises1ns", "strain1ns")}
+
+        def f(v, fmt="%.5g"):
+            return "-" if v is None else fmt % v
+
+        lines.append("solid_%d %s %.5g  %s %s %s  %s %s %s  %s %s" % (
+            i, q["region"], z, f(s["vonMises1ns"]), f(r["vonMises1ns"]),
+            f(100*e["vonMises1ns"], "%.3g"), f(s["strain1ns"]),
+            f(r["strain1ns"]), f(100*e["strain1ns"], "%.3g"),
+            f(s["restStrain"]), f(s["restVonMises"])))
+        checks = [("vonMises1ns", abs(e["vonMises1ns"]), "%.3g %%", 100),
+                  ("strain1ns", abs(e["strain1ns"]), "%.3g %%", 100)]
+        if s["restStrain"] is not None:
+            checks += [("restStrain", s["restStrain"], "%.3g", 1),
+                       ("restVonMises", s["restVonMises"]/s["vonMises1ns"],
+                        "%.3g of the peak", 1)]
+        for k, v, fmt, scale in checks:
+            if (None, k) in skip or ("solid", k) in skip:
+                continue
+            if v > SOLID_BOUNDS[k]:
+                bad.append("solid %d (%s) at z = %.4g um: %s %s (bound %s)"
+                           % (i, q["region"], z*1e6, k, fmt % (v*scale),
+                              fmt % (SOLID_BOUNDS[k]*scale)))
+    return "\n".join(lines) + "\n", bad
 
 
 def _fmt(kind, v):

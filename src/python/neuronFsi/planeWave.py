@@ -150,7 +150,7 @@ functions
     {{
         type probes; libs ("libsampling.so");
         writeControl timeStep; writeInterval 1;
-        fields (p); interpolationScheme cellPoint;
+        fields (p rho); interpolationScheme cellPoint;
         probeLocations ( {probes} );
     }}
 }}
@@ -158,22 +158,65 @@ functions
 
 
 class PlaneWave:
-    """The 1D answer: times [s] and p [Pa] (one column per height)."""
+    """The 1D answer: times [s], p [Pa] and rho [kg/m^3] (one column per
+    height; rho None for a reference file without densities)."""
 
-    def __init__(self, heights, t, p, dz, Z):
+    def __init__(self, heights, t, p, dz, Z, rho=None):
         self.heights = np.asarray(heights, dtype=float)
         self.t = t
         self.p = p
+        self.rho = rho
         self.dz = dz
         self.Z = Z
 
-    def at(self, z):
-        """p(t) [Pa] at height z [m] (one of the computed heights)."""
+    def _column(self, z):
         k = int(np.argmin(abs(self.heights - z)))
         if abs(self.heights[k] - z) > 1e-12:
             raise PlaneWaveError("height %g m not computed (heights %s m)"
                                  % (z, self.heights))
-        return self.p[:, k]
+        return k
+
+    def at(self, z):
+        """p(t) [Pa] at height z [m] (one of the computed heights)."""
+        return self.p[:, self._column(z)]
+
+    def densityAt(self, z):
+        """rho(t) [kg/m^3] at height z [m]"""
+        if self.rho is None:
+            raise PlaneWaveError("the reference has no densities (a "
+                                 "reference.dat written before they were "
+                                 "probed: compute it again)")
+        return self.rho[:, self._column(z)]
+
+
+def uniaxialResponse(t, rho, rho0, mu0, branches=()):
+    """The exact solid response of a material point carried by the plane
+    wave: uniaxial strain along the wave, F = diag(1, 1, lambda) with
+    lambda = J = rho0/rho(t) (the cell's nucleus and cytoplasm have the
+    water's equation of state, so their density history is the water's).
+    Returns (strain_z, vonMises): strain_z = ln(lambda) [-] and the von
+    Mises stress [Pa] of the isochoric neo-Hookean part (mu0 = 2 C10) and
+    the Maxwell branches (mu_k, tau_k), each relaxing as a linear Maxwell
+    element on the same isochoric strain measure (exact in the elastic
+    limit tau_k >> the run, which is the blast's: tau >= 0.01 s):
+
+        sigma_dev = mu/J dev(b_bar),  b_bar = J^(-2/3) diag(1, 1, lambda^2)
+        von Mises = mu |lambda^2 - 1| / J^(5/3)        (J = lambda)
+
+    (Holzapfel 2000, sec. 6.5; the uniaxial-strain closed form). t [s],
+    rho [kg/m^3] arrays; rho0 [kg/m^3]; mu0, mu_k [Pa]; tau_k [s]."""
+    t = np.asarray(t, dtype=float)
+    lam = rho0/np.asarray(rho, dtype=float)
+    s = (lam**2 - 1)/lam**(5.0/3.0)
+    total = mu0*s
+    for mu, tau in branches:
+        h = np.zeros_like(s)
+        for k in range(1, len(s)):
+            dt = t[k] - t[k - 1]
+            h[k] = (np.exp(-dt/tau)*h[k - 1]
+                    + mu*np.exp(-0.5*dt/tau)*(s[k] - s[k - 1]))
+        total = total + h
+    return np.log(lam), np.abs(total)
 
 
 def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None):
@@ -227,7 +270,9 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None):
                 raise PlaneWaveError("%s failed in %s (log.%s)"
                                      % (app, work, app))
         data = postProcessing.series(work, "probes/p")
-        return PlaneWave(heights, data[:, 0], data[:, 1:], dz, Z)
+        rho = postProcessing.series(work, "probes/rho")
+        return PlaneWave(heights, data[:, 0], data[:, 1:], dz, Z,
+                         rho[:, 1:])
     finally:
         if not keep:
             shutil.rmtree(work, ignore_errors=True)
@@ -235,25 +280,39 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None):
 
 def writeReference(path, wave, what):
     """Write a PlaneWave as a column file: time [s], then p_z<height>[Pa]
-    per height (what: the description line)."""
+    per height, then rho_z<height>[kg/m^3] per height when the wave has
+    densities (what: the description line)."""
+    cols = ["p_z%.17g[Pa]" % z for z in wave.heights]
+    data = wave.p
+    if wave.rho is not None:
+        cols += ["rho_z%.17g[kg/m^3]" % z for z in wave.heights]
+        data = np.hstack((wave.p, wave.rho))
     with open(path, "w") as f:
-        f.write("# %s\n# time [s]  %s\n" % (what, " ".join(
-            "p_z%.17g[Pa]" % z for z in wave.heights)))
+        f.write("# %s\n# time [s]  %s\n" % (what, " ".join(cols)))
         for k in range(len(wave.t)):
             f.write("%.10g %s\n" % (wave.t[k], " ".join(
-                "%.10g" % v for v in wave.p[k])))
+                "%.12g" % v for v in data[k])))
 
 
 def readReference(path):
-    """The PlaneWave of a file of writeReference."""
+    """The PlaneWave of a file of writeReference (densities if it has
+    them)."""
     table = postProcessing.readTable(path)
     d = table.data()
+    names = table.names[1:]
+    nP = sum(1 for n in names if n.startswith("p_z"))
     try:
-        heights = [float(n[3:]) for n in table.names[1:]]
+        heights = [float(n[3:]) for n in names[:nP]]
+        rhoHeights = [float(n[5:]) for n in names[nP:]]
     except ValueError:
-        raise PlaneWaveError("%s: columns %s are not p_z<height>"
-                             % (path, table.names[1:]))
-    return PlaneWave(heights, d[:, 0], d[:, 1:], None, None)
+        raise PlaneWaveError("%s: columns %s are not p_z<height> "
+                             "[rho_z<height>]" % (path, names))
+    if nP == 0 or (rhoHeights and rhoHeights != heights) \
+            or len(names) not in (nP, 2*nP):
+        raise PlaneWaveError("%s: columns %s are not p_z<height> "
+                             "[rho_z<height>]" % (path, names))
+    return PlaneWave(heights, d[:, 0], d[:, 1:1 + nP], None, None,
+                     d[:, 1 + nP:] if rhoHeights else None)
 
 
 def isWedge(case):
@@ -378,6 +437,60 @@ def measures(t, p, tRef, pRef, amplitude, duration, z, c0=1450.0):
                         and plateau[1] <= tt[-1] else None),
             "impulse": _integral(tt, pp, a, b),
             "impulseWindow": (a, b),
+        })
+    return out[0], out[1]
+
+
+REST = 140e-9   # [s] "after the pulse" of the 100 um scene (issue 17 item 6)
+
+
+def solidMaterial(case, region):
+    """(rho0 [kg/m^3], mu0 = 2 C10 [Pa], [(mu_k [Pa], tau_k [s])]) of a
+    region of <case>/constant/solidProperties (its materials expanded by
+    foamDictionary -expand: the #include of the parameter set and the
+    case's overrides)."""
+    path = os.path.join(case, "constant", "solidProperties")
+    out = subprocess.run(["foamDictionary", "-expand", path],
+                         capture_output=True, text=True)
+    if out.returncode != 0:
+        raise PlaneWaveError("%s: foamDictionary -expand failed (%s)"
+                             % (path, out.stderr.strip()))
+    d = foamDict.parse(out.stdout, path)
+    try:
+        m = d["materials"][region]
+        rho0 = float(m.get("rho0", 1000))
+        mu0 = 2*float(m["C10"])
+        branches, k = [], 1
+        while "mu%d" % k in m:
+            mu = float(m["mu%d" % k])
+            tau = (float(m["tau%d" % k]) if "tau%d" % k in m
+                   else float(m["eta%d" % k])/mu)
+            branches.append((mu, tau))
+            k += 1
+    except (KeyError, TypeError, ValueError) as err:
+        raise PlaneWaveError("%s: materials/%s: %s" % (path, region, err))
+    return rho0, mu0, branches
+
+
+def solidMeasures(t, vm, ez, tRef, vmRef, ezRef, rest=REST):
+    """Scene and reference measures of a solid probe's von Mises vm(t)
+    [Pa] and longitudinal strain ez(t) [-]: the largest 1-ns running mean
+    of von Mises, the most negative 1-ns mean of the strain (compression
+    along the wave), and after the pulse (t >= rest) the largest |strain|
+    and von Mises (None when the data end before rest + 5 ns). Returns
+    (scene, reference) dicts."""
+    out = []
+    for tt, v, e in ((t, vm, ez), (tRef, vmRef, ezRef)):
+        tt, v, e = (np.asarray(x, dtype=float) for x in (tt, v, e))
+        _, mv = runningMean(tt, v, 1e-9)
+        _, me = runningMean(tt, e, 1e-9)
+        late = tt >= rest
+        has = tt[-1] >= rest + 5e-9
+        out.append({
+            "vonMises1ns": mv.max() if len(mv) else None,
+            "strain1ns": me.min() if len(me) else None,
+            "restStrain": np.abs(e[late]).max() if has else None,
+            "restVonMises": v[late].max() if has else None,
         })
     return out[0], out[1]
 
