@@ -24,8 +24,16 @@ independent reader of the .msh file:
     (1.5 um) in a fine cytoplasm (0.6 um).
   docExample: the dictionary printed in docs/userGuide/cellMesh.md
     meshes (axisymmetric and quarter3D, with the water box).
-Usage: testCellMesh.py axisymmetric|quarter3D|full3D|shapes3D|docExample
-    [solidReadCheck]"""
+  scaledNucleus: nucleusShape scaledCell, axisymmetric.
+  scaledQuarter3D (the blast tutorial's 1.4/1.4/1 um, 1 layer, and
+    0.7/0.7/0.5 um, 2 layers), scaledFull3D (0.8/0.8/0.6 um, 1 layer):
+    nucleusShape scaledCell in 3D, the checks of quarter3D/full3D plus
+    each region's volume within 1 % of the exact one (nucleus f V) and of
+    the axisymmetric scaledCell mesh's (0.35 um), the nucleus in its
+    semi-spheroid touching its top and rim, its base (area pi a_n^2 to
+    1 %) in fixedBottom.
+Usage: testCellMesh.py axisymmetric|quarter3D|full3D|shapes3D|docExample|
+    scaledNucleus|scaledQuarter3D|scaledFull3D [solidReadCheck]"""
 import os
 import subprocess
 import sys
@@ -200,9 +208,13 @@ def solidCheck(case, kind, tol):
     check(p.returncode == 0, f"solid library reads the {kind} mesh")
 
 
-def cell3D(mode, sizes, maxCount=None):
+def cell3D(mode, sizes, maxCount=None, shape="centredSpheroid",
+           record=None, volTol=3.5e-3):
     """Structured hexahedral cell at the given sizes (nucleus, cytoplasm,
-    membrane [m], membrane layers); returns the volume errors"""
+    membrane [m], membrane layers) with the nucleus shape; the cell's and
+    the membrane's volume errors below volTol; returns the volume errors
+    (and appends each mesh's region volumes, of the whole cell, to
+    record)"""
     quarter = mode == "quarter3D"
     share = 0.25 if quarter else 1.0
     errors = []
@@ -214,7 +226,8 @@ def cell3D(mode, sizes, maxCount=None):
                 "mode": mode, "cellDiameter": D, "cellHeight": H,
                 "membraneThickness": t, "membraneLayers": layers,
                 "nucleusSize": hn, "cytoplasmSize": hc,
-                "membraneSize": hm, "contactRadius": 0})
+                "membraneSize": hm, "contactRadius": 0,
+                "nucleusShape": shape})
             bnd = ["fixedBottom", "outerSurface"] + \
                 (["symmetryX", "symmetryY"] if quarter else [])
             check(sorted(g) == sorted(["nucleus", "cytoplasm", "membrane"]
@@ -237,13 +250,15 @@ def cell3D(mode, sizes, maxCount=None):
             tot = sum(V.values())
             exact = share*2.0/3.0*np.pi*a**2*H
             e = abs(tot/exact - 1)
-            check(e < 3.5e-3, f"{name}: volume error {e:.2e} (< 3.5e-3)")
+            check(e < volTol, f"{name}: volume error {e:.2e}"
+                  f" (< {volTol:g})")
             frac = V["nucleus"]/tot
             check(abs(frac/f - 1) < 5e-3, f"{name}: nucleus fraction"
                   f" {frac:.5f} (1/3 within 0.5 %)")
             eM = abs(V["membrane"]/(share*membraneVolume()) - 1)
-            check(eM < 5e-3, f"{name}: membrane volume error {eM:.2e}"
-                  " against the exact offset layer (< 5e-3)")
+            mTol = max(5e-3, volTol)
+            check(eM < mTol, f"{name}: membrane volume error {eM:.2e}"
+                  f" against the exact offset layer (< {mTol:g})")
             outer = np.array(sorted({n for e in g["outerSurface"][1]
                                      for n in e[3]}))
             P = np.array([X[k] for k in outer])
@@ -256,10 +271,53 @@ def cell3D(mode, sizes, maxCount=None):
                 c = max(abs(X[m][k]) for e in g[nm][1] for m in e[3])
                 check(c == 0, f"{name}: {nm} on its plane"
                       f" (max |x_{k}| = {c:.1e} m)")
+            if shape == "scaledCell":
+                scaledChecks(name, X, g, x, V, share)
+            if record is not None:
+                record.append({r: v/share for r, v in V.items()})
             if checker:
-                solidCheck(case, "quarter" if quarter else "full", 3.5e-3)
+                solidCheck(case, "quarter" if quarter else "full", volTol)
             errors.append(e)
     return errors
+
+
+def scaledRegionVolumes():
+    """Exact volumes of the regions with the scaled nucleus: f V, the
+    inner volume minus it, the membrane layer [m^3]"""
+    V = 2.0/3.0*np.pi*a**2*H
+    return {"nucleus": f*V, "cytoplasm": V - membraneVolume() - f*V,
+            "membrane": membraneVolume()}
+
+
+def scaledChecks(name, X, g, x, V, share):
+    """nucleusShape scaledCell in 3D: each region's volume within 1 % of
+    the exact one, the nucleus inside its semi-spheroid (semi-axes
+    cbrt(f) a, cbrt(f) H) touching its top and its base rim, and its base
+    (the disc r <= a_n, z = 0) in fixedBottom"""
+    s3 = f**(1.0/3.0)
+    an, hn = s3*a, s3*H
+    for r, exact in scaledRegionVolumes().items():
+        e = V[r]/(share*exact) - 1
+        check(abs(e) < 1e-2, f"{name}: {r} volume {V[r]/share:.5e} m^3"
+              f" (whole cell), exact {exact:.5e}, error {e:.2e} (< 1e-2)")
+    P = x["nucleus"].reshape(-1, 3)
+    rr, z = np.hypot(P[:, 0], P[:, 1]), P[:, 2]
+    q = (rr/an)**2 + (z/hn)**2
+    check(q.max() < 1 + 1e-9 and abs(z.max()/hn - 1) < 1e-9
+          and abs(rr.max()/an - 1) < 1e-9 and z.min() == 0,
+          f"{name}: nucleus in its semi-spheroid (max (r/a_n)^2 +"
+          f" (z/h_n)^2 = {q.max():.12f}), 0 <= z <= {z.max():.4e} m,"
+          f" r <= {rr.max():.4e} m (exact {hn:.4e}, {an:.4e})")
+    nuc = {n for e in g["nucleus"][1] for n in e[3]}
+    base = [e[3] for e in g["fixedBottom"][1] if set(e[3]) <= nuc]
+    A = 0.0
+    for f4 in base:
+        p = np.array([X[n] for n in f4])
+        A += 0.5*abs(np.cross(p[2] - p[0], p[3] - p[1])[2])
+    exactA = share*np.pi*an**2
+    check(abs(A/exactA - 1) < 1e-2, f"{name}: the nucleus's base in"
+          f" fixedBottom ({len(base)} faces, area {A:.4e} m^2, disc"
+          f" {exactA:.4e} m^2)")
 
 
 def quarter3D():
@@ -355,7 +413,52 @@ def scaledNucleus():
               f"up to r = {max(onBottom):.4e} m)")
 
 
+def scaledAxisymmetricVolumes(h):
+    """Region volumes of revolution of the axisymmetric scaledCell mesh at
+    the size h [m] (the 3D meshes' reference)"""
+    with tempfile.TemporaryDirectory() as tmp:
+        X, g = run(os.path.join(tmp, "axi"), {
+            "mode": "axisymmetric", "cellDiameter": D, "cellHeight": H,
+            "nucleusShape": "scaledCell", "membraneThickness": t,
+            "membraneLayers": 2, "nucleusSize": h, "cytoplasmSize": h,
+            "membraneSize": 0.8*h, "contactRadius": 0})
+        return {r: quadMeasures(X, g[r][1])[1]
+                for r in ("nucleus", "cytoplasm", "membrane")}
+
+
+def scaled3D(mode, sizes, volTol):
+    """nucleusShape scaledCell in 3D (the indentation's nucleus in the
+    blast's cell): the checks of cell3D plus scaledChecks, and each
+    region's volume within 1 % of the axisymmetric mesh's"""
+    record = []
+    cell3D(mode, sizes, shape="scaledCell", record=record, volTol=volTol)
+    axi = scaledAxisymmetricVolumes(0.35e-6)
+    exact = scaledRegionVolumes()
+    print("region volumes [m^3] (whole cell): exact, axisymmetric 0.35 um,"
+          " then the 3D meshes")
+    for r in ("nucleus", "cytoplasm", "membrane"):
+        print(f"    {r:10s} {exact[r]:.5e} {axi[r]:.5e} "
+              + " ".join(f"{v[r]:.5e}" for v in record))
+        for v in record:
+            d = v[r]/axi[r] - 1
+            check(abs(d) < 1e-2, f"{mode} {r}: 3D {v[r]:.5e} against"
+                  f" axisymmetric {axi[r]:.5e} m^3 ({d:+.2e}, < 1e-2)")
+
+
+def scaledQuarter3D():
+    # The blast tutorial's sizes (1.4/1.4/1 um, 1 layer; cell and membrane
+    # volume to 1 %), then the quarter3D test's (0.7/0.7/0.5 um, 2 layers;
+    # 3.5e-3 as the centred spheroid's)
+    scaled3D("quarter3D", [(1.4e-6, 1.4e-6, 1.0e-6, 1)], 1e-2)
+    scaled3D("quarter3D", [(0.7e-6, 0.7e-6, 0.5e-6, 2)], 3.5e-3)
+
+
+def scaledFull3D():
+    scaled3D("full3D", [(0.8e-6, 0.8e-6, 0.6e-6, 1)], 3.5e-3)
+
+
 {"axisymmetric": axisymmetric, "quarter3D": quarter3D,
+ "scaledQuarter3D": scaledQuarter3D, "scaledFull3D": scaledFull3D,
  "full3D": full3D, "shapes3D": shapes3D,
  "docExample": docExample, "scaledNucleus": scaledNucleus}[sys.argv[1]]()
 print(f"testCellMesh {sys.argv[1]}: {len(check.failed)} failed")

@@ -39,14 +39,6 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     (
         "nucleusShape", dict, nucleusShape::centredSpheroid
     );
-    if (shape_ == nucleusShape::scaledCell && !axisymmetric())
-    {
-        FatalIOErrorInFunction(dict)
-            << "nucleusShape scaledCell is available with mode axisymmetric "
-            << "only (the structured 3D meshes have a centred spheroid); "
-            << "use nucleusShape centredSpheroid with mode "
-            << meshModeNames[mode_] << exit(FatalIOError);
-    }
     if (dict.isDict("fluid"))
     {
         fluidDict_ = dict.subDict("fluid");

@@ -76,12 +76,13 @@ Foam::scalar Foam::structuredCell::innerZ(scalar r) const
 std::vector<Foam::scalar> Foam::structuredCell::levels(scalar r) const
 {
     const scalar q = std::sqrt(std::max(scalar(0), 1 - sqr(r/g_.an())));
-    const scalar z1 = g_.zn() - g_.cn()*q;
+    // The scaled cell's nucleus stands on the substrate
+    const scalar z1 = g_.scaledNucleus() ? 0 : g_.zn() - g_.cn()*q;
     const scalar z2 = g_.zn() + g_.cn()*q;
     const scalar z3 = innerZ(r);
     const scalar z4 = g_.H()*std::sqrt(std::max(scalar(0), 1 - sqr(r/g_.a())));
     std::vector<scalar> z;
-    for (label k = 0; k < nGap_; ++k) z.push_back(z1*k/nGap_);
+    for (label k = 0; k < nGapBottom_; ++k) z.push_back(z1*k/nGapBottom_);
     const auto nucleus = [&](scalar l0, scalar l1, label n)
     {
         for (label k = 0; k < n; ++k)
@@ -89,7 +90,7 @@ std::vector<Foam::scalar> Foam::structuredCell::levels(scalar r) const
             z.push_back(z1 + (z2 - z1)*(l0 + (l1 - l0)*k/n));
         }
     };
-    nucleus(0, lambda1_, nRingN_);
+    nucleus(0, lambda1_, nRingBottom_);
     nucleus(lambda1_, lambda2_, nCoreV_);
     nucleus(lambda2_, 1, nRingN_);
     for (label k = 0; k < nGap_; ++k) z.push_back(z2 + (z3 - z2)*k/nGap_);
@@ -306,8 +307,8 @@ void Foam::structuredCell::column()
     }
 
     // Vertical lines: level index ranges of the three regions
-    const label nNuc = 2*nRingN_ + nCoreV_;
-    const label k1 = nGap_, k2 = nGap_ + nNuc, k3 = 2*nGap_ + nNuc;
+    const label nNuc = nRingBottom_ + nCoreV_ + nRingN_;
+    const label k1 = nGapBottom_, k2 = k1 + nNuc, k3 = k2 + nGap_;
     const label k4 = k3 + g_.layers();
     for (const block2D& b : disc)
     {
@@ -407,59 +408,57 @@ void Foam::structuredCell::classifyBoundary()
 }
 
 
-Foam::structuredCell::structuredCell(const cellGeometry& geom)
-:
-    g_(geom),
-    quarter_(geom.mode() == cellGeometry::meshMode::quarter3D)
+Foam::structuredCell::vec2 Foam::structuredCell::nucleusOnDiagonal
+(
+    const vec2& c,
+    scalar dz
+) const
 {
-    const scalar a = g_.a(), t = g_.t(), an = g_.an(), cn = g_.cn(),
-        zn = g_.zn();
-    const scalar hN = g_.nucleusSize(), hC = g_.cytoplasmSize();
-    const scalar hT = min(hC, g_.membraneSize());
-    rc_ = columnFraction*an;
-    s_ = squareFraction*rc_;
-
-    // Azimuth: elements per quarter turn (even: the quarter's planes are
-    // grid planes of the butterfly)
-    nSq_ = 2*atLeastOne(0.25*pi*0.5*(rc_ + a)/g_.azimuthSize());
-    nRing_ = max
-    (
-        label(1), label(std::round((rc_ - s_)/(0.5*pi*rc_/nSq_)))
-    );
-
-    // Nucleus O-grid in the section (half-lens r >= r_c)
-    const scalar qc = std::sqrt(1 - sqr(rc_/an));
-    const scalar z1c = zn - cn*qc, hD = 2*cn*qc;
-    const scalar rq = an - ringFraction*(an - rc_);
-    const scalar kappa = coreFraction*cn*std::sqrt(1 - sqr(rq/an));
-    lambda1_ = (zn - kappa - z1c)/hD;
-    lambda2_ = 1 - lambda1_;
-    // J1: the nucleus surface on the -45 degree ray from the core corner
+    const scalar an = g_.an(), cn = g_.cn(), zn = g_.zn();
     scalar lo = 0, hi = an;
     for (int it = 0; it < 100; ++it)
     {
         const scalar s = 0.5*(lo + hi);
-        const scalar r = rq + s/std::sqrt(2.0);
-        const scalar z = zn - kappa - s/std::sqrt(2.0);
+        const scalar r = c[0] + s/std::sqrt(2.0);
+        const scalar z = c[1] + dz*s/std::sqrt(2.0);
         (sqr(r/an) + sqr((z - zn)/cn) < 1 ? lo : hi) = s;
     }
-    const vec2 J1{rq + lo/std::sqrt(2.0), zn - kappa - lo/std::sqrt(2.0)};
-    const scalar psi1 = std::asin(rc_/an);
-    const scalar psiJ = std::atan2(J1[0]/an, (zn - J1[1])/cn);
-    nRingN_ = atLeastOne(max(lambda1_*hD, an - rq)/hN);
-    const scalar z3c = innerZ(rc_);
+    return {c[0] + lo/std::sqrt(2.0), c[1] + dz*lo/std::sqrt(2.0)};
+}
 
-    // Substrate + membrane inner curve Gamma: its element count T must
-    // equal the nucleus curve's (one C-shaped cytoplasm block)
+
+Foam::scalar Foam::structuredCell::closestNucleusAngle(const vec2& x) const
+{
+    const auto d2 = [&](scalar p)
+    {
+        const vec2 y = nucleusPoint(p);
+        return sqr(y[0] - x[0]) + sqr(y[1] - x[1]);
+    };
+    scalar best = 0;
+    for (int k = 0; k <= 4000; ++k)
+    {
+        const scalar p = pi*k/4000;
+        if (d2(p) < d2(best)) best = p;
+    }
+    scalar lo = best - pi/4000, hi = best + pi/4000;
+    for (int it = 0; it < 60; ++it)
+    {
+        const scalar m1 = lo + (hi - lo)/3, m2 = hi - (hi - lo)/3;
+        if (d2(m1) < d2(m2)) hi = m2; else lo = m1;
+    }
+    return 0.5*(lo + hi);
+}
+
+
+void Foam::structuredCell::membraneCurves
+(
+    label nM,
+    std::vector<vec2>& In,
+    std::vector<vec2>& Out
+) const
+{
+    const scalar a = g_.a(), t = g_.t();
     const scalar theta0 = innerTheta(rc_);
-    const scalar Lb = a - t - rc_;
-    const scalar Li = g_.arcLength(theta0, 0.5*pi, true);
-    const label nB = atLeastOne(Lb/hC);
-    const label nM = atLeastOne(Li/hT);
-    const label T = nB + nM;
-
-    // Membrane inner curve from r_c (theta0) to the substrate, uniform in
-    // arc length, and the matched outer points
     std::vector<scalar> thIn(nM + 1);
     {
         const int nTab = 4000;
@@ -488,7 +487,8 @@ Foam::structuredCell::structuredCell(const cellGeometry& geom)
         thIn[nM] = 0.5*pi;
     }
     const scalar thetaOut0 = std::asin(rc_/a);
-    std::vector<vec2> In(nM + 1), Out(nM + 1);
+    In.resize(nM + 1);
+    Out.resize(nM + 1);
     for (label i = 0; i <= nM; ++i)
     {
         const auto x = g_.inner(thIn[i]);
@@ -497,10 +497,46 @@ Foam::structuredCell::structuredCell(const cellGeometry& geom)
         const auto y = g_.outer(th);
         Out[i] = {y.first(), y.second()};
     }
-    In[0] = {rc_, z3c};
+    In[0] = {rc_, innerZ(rc_)};
     In[nM] = {a - t, 0};
     Out[0] = {rc_, g_.H()*std::sqrt(1 - sqr(rc_/a))};
     Out[nM] = {a, 0};
+}
+
+
+void Foam::structuredCell::centredSections()
+{
+    const scalar a = g_.a(), t = g_.t(), an = g_.an(), cn = g_.cn(),
+        zn = g_.zn();
+    const scalar hN = g_.nucleusSize(), hC = g_.cytoplasmSize();
+    const scalar hT = min(hC, g_.membraneSize());
+
+    // Nucleus O-grid in the section (half-lens r >= r_c)
+    const scalar qc = std::sqrt(1 - sqr(rc_/an));
+    const scalar z1c = zn - cn*qc, hD = 2*cn*qc;
+    const scalar rq = an - ringFraction*(an - rc_);
+    const scalar kappa = coreFraction*cn*std::sqrt(1 - sqr(rq/an));
+    lambda1_ = (zn - kappa - z1c)/hD;
+    lambda2_ = 1 - lambda1_;
+    // J1: the nucleus surface on the -45 degree ray from the core corner
+    const vec2 J1 = nucleusOnDiagonal({rq, zn - kappa}, -1);
+    const scalar psi1 = std::asin(rc_/an);
+    const scalar psiJ = std::atan2(J1[0]/an, (zn - J1[1])/cn);
+    nRingN_ = atLeastOne(max(lambda1_*hD, an - rq)/hN);
+
+    // Substrate + membrane inner curve Gamma: its element count T must
+    // equal the nucleus curve's (one C-shaped cytoplasm block)
+    const scalar theta0 = innerTheta(rc_);
+    const scalar Lb = a - t - rc_;
+    const scalar Li = g_.arcLength(theta0, 0.5*pi, true);
+    const label nB = atLeastOne(Lb/hC);
+    const label nM = atLeastOne(Li/hT);
+    const label T = nB + nM;
+
+    // Membrane inner curve from r_c (theta0) to the substrate, uniform in
+    // arc length, and the matched outer points
+    std::vector<vec2> In, Out;
+    membraneCurves(nM, In, Out);
 
     // Gamma: substrate P0 -> R, then the inner curve R -> P3
     std::vector<vec2> Gamma = segment({rc_, 0}, {a - t, 0}, nB);
@@ -515,26 +551,7 @@ Foam::structuredCell::structuredCell(const cellGeometry& geom)
     std::vector<scalar> psiStar(T + 1);
     for (label i = 0; i <= T; ++i)
     {
-        // Closest point of the nucleus to Gamma(i) (normal lines)
-        const vec2& g = Gamma[i];
-        const auto d2 = [&](scalar p)
-        {
-            const vec2 x = nucleusPoint(p);
-            return sqr(x[0] - g[0]) + sqr(x[1] - g[1]);
-        };
-        scalar best = 0;
-        for (int k = 0; k <= 4000; ++k)
-        {
-            const scalar p = pi*k/4000;
-            if (d2(p) < d2(best)) best = p;
-        }
-        scalar lo = best - pi/4000, hi = best + pi/4000;
-        for (int it = 0; it < 60; ++it)
-        {
-            const scalar m1 = lo + (hi - lo)/3, m2 = hi - (hi - lo)/3;
-            if (d2(m1) < d2(m2)) hi = m2; else lo = m1;
-        }
-        psiStar[i] = 0.5*(lo + hi);
+        psiStar[i] = closestNucleusAngle(Gamma[i]);
     }
     // The ends Gamma(0) = P0, Gamma(T) = P3 (below and above the lens
     // corners) project beyond P1, P2: rescale affinely onto [psi1,
@@ -593,6 +610,8 @@ Foam::structuredCell::structuredCell(const cellGeometry& geom)
         );
     }
     nGap_ = atLeastOne(thick/hC);
+    nGapBottom_ = nGap_;
+    nRingBottom_ = nRingN_;
 
     // Column levels at r_c (shared by the left sides of the r-z blocks)
     const std::vector<scalar> zc = levels(rc_);
@@ -667,7 +686,191 @@ Foam::structuredCell::structuredCell(const cellGeometry& geom)
 
     // Membrane: straight node lines between matched inner/outer points
     revolve(ruled(In, Out, g_.layers()), membraneRegion);
+}
 
+
+void Foam::structuredCell::scaledSections()
+{
+    // The nucleus: the semi-spheroid (r/a_n)^2 + (z/c_n)^2 <= 1, z >= 0
+    // (zn = 0); psi in [pi/2, pi] from its base rim to its top
+    const scalar an = g_.an(), cn = g_.cn();
+    const scalar hN = g_.nucleusSize(), hC = g_.cytoplasmSize();
+    const scalar hT = min(hC, g_.membraneSize());
+
+    // Core rectangle [r_c, r_q] x [0, kappa] on the substrate (the upper
+    // half of the centred spheroid's core) and its column fraction
+    const scalar z2c = cn*std::sqrt(1 - sqr(rc_/an));
+    const scalar rq = an - ringFraction*(an - rc_);
+    const scalar kappa = coreFraction*cn*std::sqrt(1 - sqr(rq/an));
+    lambda1_ = 0;
+    lambda2_ = kappa/z2c;
+    nGapBottom_ = 0;
+    nRingBottom_ = 0;
+    // J: the nucleus surface on the +45 degree ray from the core corner
+    const vec2 J = nucleusOnDiagonal({rq, kappa}, 1);
+    const scalar psiJ = std::atan2(J[0]/an, -J[1]/cn);
+    const scalar psiC = pi - std::asin(rc_/an);
+    nRingN_ = atLeastOne(max(z2c - kappa, an - rq)/hN);
+
+    // One element count T along the membrane inner curve (column to the
+    // substrate) and the nucleus curve (column to its base rim): the
+    // cytoplasm is one ruled block between them
+    const scalar Li = g_.arcLength(innerTheta(rc_), 0.5*pi, true);
+    scalar Ln = 0;
+    {
+        const int n = 4000;
+        for (int i = 0; i < n; ++i)
+        {
+            const vec2 x = nucleusPoint(0.5*pi + (psiC - 0.5*pi)*i/n);
+            const vec2 y = nucleusPoint(0.5*pi + (psiC - 0.5*pi)*(i + 1)/n);
+            Ln += std::hypot(y[0] - x[0], y[1] - x[1]);
+        }
+    }
+    const label T = max
+    (
+        label(2),
+        max(atLeastOne(Li/hT), atLeastOne(Ln/hN))
+    );
+    std::vector<vec2> In, Out;
+    membraneCurves(T, In, Out);
+
+    // Nucleus curve Lambda (column -> J -> base rim (a_n, 0)): node i at
+    // the nucleus point closest to In(i) (cytoplasm node lines along the
+    // nucleus normals), rescaled affinely to end at the column and the
+    // rim (In(T) = (a - t, 0) projects onto the rim exactly); J the node
+    // closest to the design point, each piece remapped to end there
+    std::vector<scalar> psiStar(T + 1);
+    for (label i = 0; i <= T; ++i)
+    {
+        psiStar[i] = closestNucleusAngle(In[i]);
+    }
+    {
+        const scalar p0 = psiStar[0], p1 = psiStar[T];
+        for (scalar& p : psiStar)
+        {
+            p = psiC + (p - p0)*(0.5*pi - psiC)/(p1 - p0);
+        }
+    }
+    psiStar[0] = psiC;
+    psiStar[T] = 0.5*pi;
+    label mB = 1;
+    for (label i = 1; i < T; ++i)
+    {
+        if (std::abs(psiStar[i] - psiJ) < std::abs(psiStar[mB] - psiJ))
+        {
+            mB = i;
+        }
+    }
+    // Elements of the ring above the core (column to J): mB; beside the
+    // core (J to the rim): nCoreV_
+    nCoreV_ = T - mB;
+    const label nNuc = nCoreV_ + nRingN_;
+    std::vector<vec2> Lambda(T + 1);
+    const auto remap = [&](label i0, label i1, scalar p0, scalar p1)
+    {
+        for (label i = i0; i <= i1; ++i)
+        {
+            const scalar f =
+                (psiStar[i] - psiStar[i0])/(psiStar[i1] - psiStar[i0]);
+            Lambda[i] = nucleusPoint(p0 + f*(p1 - p0));
+        }
+    };
+    remap(0, mB, psiC, psiJ);
+    remap(mB, T, psiJ, 0.5*pi);
+
+    // Cytoplasm layers: across the thickest part of the block and the
+    // gap on the axis
+    scalar thick = innerZ(0) - cn;
+    for (label i = 0; i <= T; ++i)
+    {
+        thick = max
+        (
+            thick,
+            std::hypot(In[i][0] - Lambda[i][0], In[i][1] - Lambda[i][1])
+        );
+    }
+    nGap_ = atLeastOne(thick/hC);
+
+    // Column levels at r_c (shared by the left sides of the r-z blocks)
+    const std::vector<scalar> zc = levels(rc_);
+    const auto colPt = [&](label k) { return vec2{rc_, zc[k]}; };
+    const auto colSide = [&](label k0, label k1)
+    {
+        std::vector<vec2> p;
+        const label d = k1 > k0 ? 1 : -1;
+        for (label k = k0; k != k1 + d; k += d) p.push_back(colPt(k));
+        return p;
+    };
+    Lambda.front() = colPt(nNuc);
+    Lambda.back() = {an, 0};
+
+    // Nucleus O-grid blocks: the core, the ring beside it (its base on
+    // the substrate from r_q to a_n) and the ring above it
+    const vec2 K0 = colPt(0), K3 = colPt(nCoreV_);
+    const vec2 K1{rq, 0}, K2{rq, K3[1]};
+    const vec2 Jm = Lambda[mB];
+    const std::vector<vec2> coreBottom = segment(K0, K1, mB);
+    const std::vector<vec2> coreTop = segment(K3, K2, mB);
+    const std::vector<vec2> coreRight = segment(K1, K2, nCoreV_);
+    const std::vector<vec2> ringSide = segment(Jm, K2, nRingN_);
+    const std::vector<vec2> lamR
+    (
+        Lambda.rbegin(), Lambda.rbegin() + nCoreV_ + 1
+    );
+    const std::vector<vec2> lamT(Lambda.begin(), Lambda.begin() + mB + 1);
+    revolve
+    (
+        coons(coreBottom, coreTop, colSide(0, nCoreV_), coreRight),
+        nucleusRegion
+    );
+    revolve
+    (
+        coons
+        (
+            lamR, coreRight, segment(Lambda.back(), K1, nRingN_), ringSide
+        ),
+        nucleusRegion
+    );
+    revolve
+    (
+        coons(lamT, coreTop, colSide(nNuc, nCoreV_), ringSide),
+        nucleusRegion
+    );
+
+    // Cytoplasm: straight node lines from Lambda(i) to In(i) (its ends:
+    // the column's vertical line and the substrate from a_n to a - t)
+    revolve(ruled(Lambda, In, nGap_), cytoplasmRegion);
+
+    // Membrane: straight node lines between matched inner/outer points
+    revolve(ruled(In, Out, g_.layers()), membraneRegion);
+}
+
+
+Foam::structuredCell::structuredCell(const cellGeometry& geom)
+:
+    g_(geom),
+    quarter_(geom.mode() == cellGeometry::meshMode::quarter3D)
+{
+    const scalar a = g_.a(), an = g_.an();
+    rc_ = columnFraction*an;
+    s_ = squareFraction*rc_;
+
+    // Azimuth: elements per quarter turn (even: the quarter's planes are
+    // grid planes of the butterfly)
+    nSq_ = 2*atLeastOne(0.25*pi*0.5*(rc_ + a)/g_.azimuthSize());
+    nRing_ = max
+    (
+        label(1), label(std::round((rc_ - s_)/(0.5*pi*rc_/nSq_)))
+    );
+
+    if (g_.scaledNucleus())
+    {
+        scaledSections();
+    }
+    else
+    {
+        centredSections();
+    }
     column();
     classifyBoundary();
 }
