@@ -90,9 +90,11 @@ def summary(case):
 
 
 def planeWaveAnswer(case):
-    """time [s] and p [Pa] of the 1D plane wave at probe 0's height
-    (postProcessing/planeWave/0/reference.dat of the planeWave utility),
-    or None"""
+    """The exact answer at probe 0 (postProcessing/planeWave/0/
+    reference.dat of the planeWave utility): time [s], p [Pa] of the 1D
+    plane wave, and its uniaxial-strain von Mises [Pa] and strain [-] for
+    probe 0's region (None, None for a reference without densities); or
+    None"""
     path = os.path.join(case, "postProcessing", "planeWave", "0",
                         "reference.dat")
     solid = postProcessing.probes(case)
@@ -101,9 +103,16 @@ def planeWaveAnswer(case):
     wave = planeWave.readReference(path)
     z = solid[0]["point"][1 if planeWave.isWedge(case) else 2]
     try:
-        return wave.t, wave.at(z)
+        p = wave.at(z)
     except planeWave.PlaneWaveError:
         return None
+    vm = ez = None
+    if wave.rho is not None:
+        rho0, mu0, branches = planeWave.solidMaterial(case,
+                                                      solid[0]["region"])
+        ez, vm = planeWave.uniaxialResponse(wave.t, wave.densityAt(z), rho0,
+                                            mu0, branches)
+    return wave.t, p, vm, ez
 
 
 def fig10(cases, labels, out):
@@ -115,6 +124,10 @@ def fig10(cases, labels, out):
         if ref is not None:
             ax[0, 0].plot(ref[0]*1e9, ref[1]/1e6, "k--", lw=0.8,
                           label=f"{lab}: 1D plane wave (planeWave)")
+            if ref[2] is not None:
+                ax[0, 1].plot(ref[0]*1e9, ref[2], "k--", lw=0.8,
+                              label=f"{lab}: uniaxial strain (planeWave)")
+                ax[1, 0].plot(ref[0]*1e9, ref[3], "k--", lw=0.8)
         ax[0, 0].plot(tn, p/1e6, label=lab)
         ax[0, 1].plot(tn, vm, label=lab)
         ax[1, 0].plot(tn, ez, label=lab)
@@ -128,6 +141,7 @@ def fig10(cases, labels, out):
     for a in ax.flat:
         a.grid(alpha=0.3)
     ax[0, 0].legend()
+    ax[0, 1].legend()
     fig.suptitle("Cytoplasm-nucleus interface, 75 % of the nucleus height "
                  "(paper Fig. 10)")
     fig.tight_layout()
