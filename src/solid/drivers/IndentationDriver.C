@@ -294,6 +294,7 @@ void solid::IndentationDriver::checkpoint(long row)
         counters_.assemblySeconds, counters_.solveSeconds
     });
     c.set("fieldSteps", double(fieldSteps_));
+    c.setText("inputDigests", settings_.inputDigests);
     forceFile_.flush();
     peakFile_.flush();
     c.set("force.dat.length", double(fs::file_size(path("force.dat"))));
