@@ -8,6 +8,7 @@
 #include "SolidError.H"
 
 #include <iostream>
+#include <sstream>
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
 
@@ -135,7 +136,114 @@ std::vector<solid::ProtocolRow> Foam::indentationInput::readProtocol() const
 }
 
 
+Foam::label Foam::indentationInput::rowOf(const std::string& name)
+{
+    const std::string marker("entry 'protocol', row ");
+    const auto at = name.find(marker);
+    return at == std::string::npos
+        ? 0 : std::stol(name.substr(at + marker.size()));
+}
+
+
+void Foam::indentationInput::checkRestart
+(
+    const fileName& checkpoint,
+    const foamTools::inputRecord::digestMap& inputs
+) const
+{
+    using foamTools::inputRecord;
+    if (!continueRun_ || !solid::Checkpoint::exists(checkpoint))
+    {
+        return;
+    }
+    inputRecord::digestMap was, now;
+    label lastRow = 0;
+    try
+    {
+        const solid::Checkpoint c(solid::Checkpoint::read(checkpoint));
+        if (!c.hasText("inputDigests"))
+        {
+            // A checkpoint of a version before the record
+            Info<< "Warning: " << checkpoint << " holds no record of its "
+                << "inputs (written by an earlier version): the inputs "
+                << "are not compared" << nl << endl;
+            return;
+        }
+        was = inputRecord::parse(c.text("inputDigests"));
+        lastRow = label(c.scalar("row")) + 1;
+    }
+    catch (const solid::SolidError& err)
+    {
+        FatalErrorInFunction
+            << "Cannot continue from " << checkpoint << ": " << err.what()
+            << nl << "Set startFrom startTime in system/controlDict to "
+            << "start again" << exit(FatalError);
+    }
+    // The rows after the checkpoint's have not run: they may change
+    for (const auto& item : inputs)
+    {
+        if (rowOf(item.first) <= lastRow) now.insert(item);
+    }
+    for (auto it = was.begin(); it != was.end();)
+    {
+        it = rowOf(it->first) > lastRow ? was.erase(it) : std::next(it);
+    }
+    const std::string list(inputRecord::differences(now, was));
+    if (!list.empty())
+    {
+        FatalErrorInFunction
+            << "Cannot continue from " << checkpoint << ": its state was "
+            << "computed with other inputs than those of the case now (the "
+            << "restart would continue the results with other inputs):"
+            << list.c_str() << nl
+            << "    Nothing was changed. Restore those inputs to continue "
+            << "(rows of the loading table after row " << lastRow
+            << ", not yet run, may change); to use the new ones, start "
+            << "anew (startFrom startTime, -overwrite) or run a copy of "
+            << "the case." << exit(FatalError);
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+Foam::foamTools::inputRecord::digestMap
+Foam::indentationInput::digests() const
+{
+    using foamTools::inputRecord;
+    const std::string file("constant/indenterProperties, entry ");
+    inputRecord::digestMap record;
+    auto add = [&](const std::string& name, const auto& value)
+    {
+        std::ostringstream os;
+        os.precision(17);
+        os << value;
+        record[file + "'" + name + "'"] = inputRecord::sha1(os.str());
+    };
+    add("radius", sphere_.radius);
+    add("tolerance", sphere_.tolerance);
+    add("penaltyFactor", sphere_.penaltyFactor);
+    add("contactPatch", std::string(contactPatch_));
+    add("maxDepthIncrement", settings_.maxDepthIncrement);
+    add("holdDeltaT0", settings_.holdDeltaT0);
+    add("maxDeltaT", settings_.maxDeltaT);
+    add("holdGrowth", settings_.holdGrowth);
+    add("forceTarget", settings_.forceTarget);
+    add("forceTargetTolerance", settings_.forceTargetTolerance);
+    const std::vector<solid::ProtocolRow>& rows = protocol_->rows();
+    for (std::size_t i = 0; i < rows.size(); ++i)
+    {
+        std::ostringstream os;
+        os.precision(17);
+        os << rows[i].stage << ' ' << rows[i].motion << ' ' << rows[i].rate
+            << ' ' << rows[i].amount;
+        record[file + "'protocol', row " + std::to_string(i + 1)] =
+            inputRecord::sha1(os.str());
+    }
+    return record;
+}
+
+
 
 std::shared_ptr<solid::RigidSphereContact>
 Foam::indentationInput::addContact(solid::Model& model) const
@@ -196,11 +304,15 @@ std::unique_ptr<solid::IndentationDriver> Foam::indentationInput::driver
 (
     solid::Model& model,
     const std::shared_ptr<solid::RigidSphereContact>& contact,
-    const fileName& outDir
+    const fileName& outDir,
+    const foamTools::inputRecord::digestMap& inputs
 ) const
 {
     const bool resume =
         continueRun_ && solid::Checkpoint::exists(outDir/"restart.h5");
+    checkRestart(outDir/"restart.h5", inputs);
+    solid::IndentationSettings settings(settings_);
+    settings.inputDigests = foamTools::inputRecord::format(inputs);
     std::unique_ptr<solid::IndentationDriver> driver;
     try
     {
@@ -208,7 +320,7 @@ std::unique_ptr<solid::IndentationDriver> Foam::indentationInput::driver
         (
             new solid::IndentationDriver
             (
-                model, contact, protocol_, newton_, settings_, outDir
+                model, contact, protocol_, newton_, settings, outDir
             )
         );
         driver->start(resume);

@@ -189,6 +189,36 @@ std::vector<solid::MaterialParameters> Foam::solidInput::setup
 }
 
 
+Foam::foamTools::inputRecord::digestMap Foam::solidInput::digests
+(
+    const solid::Mesh& mesh
+) const
+{
+    using foamTools::inputRecord;
+    const std::string file("constant/solidProperties, entry ");
+    inputRecord::digestMap record;
+    const dictionary& meshDict = dict_.subDict("mesh");
+    record[file + "'mesh'"] = inputRecord::digest(meshDict);
+    if (meshDict.get<word>("type") == "gmsh")
+    {
+        fileName name(meshDict.get<fileName>("file"));
+        name.expand();
+        const fileName path(name.isAbsolute() ? name : caseDir_/name);
+        record[name] = inputRecord::sha1(inputRecord::bytes(path));
+    }
+    dictionary fixed;
+    fixed.add(dict_.lookupEntry("fixed", keyType::LITERAL));
+    record[file + "'fixed'"] = inputRecord::digest(fixed);
+    const dictionary& mats = dict_.subDict("materials");
+    for (const std::string& region : mesh.regionNames)
+    {
+        record[file + "'materials', region '" + region + "'"] =
+            inputRecord::digest(mats.subDict(region));
+    }
+    return record;
+}
+
+
 void Foam::solidInput::writeMaterials
 (
     const std::vector<solid::MaterialParameters>& materials,

@@ -1,7 +1,8 @@
 // The HDF5 layer (Hdf5File, Hdf5Group): datasets of doubles and ints read
 // back exactly with their shape, nested names, attributes, members and
 // datasets listed, removal, and failures that name the file and object;
-// damaged bytes in a dataset or an attribute are errors, not values.
+// damaged bytes in a dataset or an attribute are errors, not values; text
+// attributes (a checkpoint's input record) read back and are checksummed.
 #include "Hdf5File.H"
 #include "SolidError.H"
 
@@ -183,4 +184,48 @@ TEST(Hdf5, DamagedBytesAreErrorsNotValues)
         Hdf5Group(f, "step", false).readAttribute("time");
     });
     EXPECT_NE(msg.find("'attribute.h5'"), std::string::npos) << msg;
+}
+
+
+TEST(Hdf5, TextAttributesReadBackAndDamagedTextIsAnError)
+{
+    // The record of a checkpoint's inputs: lines with spaces and quotes
+    const std::string text =
+        "0123456789abcdef0123456789abcdef01234567  constant/cell.msh\n"
+        "89abcdef0123456789abcdef0123456789abcdef  constant/solidProperties,"
+        " entry 'materials', region 'nucleus'\n";
+    {
+        Hdf5File f("texts.h5", Hdf5File::Mode::create);
+        f.writeText("inputDigests", text);
+        f.writeText("empty", "");
+        f.writeAttribute("time", 1.5);
+        f.close();
+    }
+    {
+        const Hdf5File f("texts.h5", Hdf5File::Mode::readOnly);
+        // Name order; the double attribute is not a text
+        const auto texts = f.texts();
+        ASSERT_EQ(texts.size(), 2u);
+        EXPECT_EQ(texts[0].first, "empty");
+        EXPECT_EQ(texts[0].second, "");
+        EXPECT_EQ(texts[1].first, "inputDigests");
+        EXPECT_EQ(texts[1].second, text);
+        EXPECT_EQ(f.readAttribute("time"), 1.5);
+    }
+
+    // One changed character of the text (in the root's object header)
+    std::string bytes;
+    {
+        std::ifstream is("texts.h5", std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(is), {});
+    }
+    const auto at = bytes.find("region 'nucleus'");
+    ASSERT_NE(at, std::string::npos);
+    bytes[at + 8] = 'N';
+    std::ofstream("texts.h5", std::ios::binary) << bytes;
+    const std::string msg = errorOf([] {
+        const Hdf5File f("texts.h5", Hdf5File::Mode::readOnly);
+        f.texts();
+    });
+    EXPECT_NE(msg.find("texts.h5"), std::string::npos) << msg;
 }

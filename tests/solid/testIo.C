@@ -312,6 +312,18 @@ TEST(SolidIo, MshReaderBadFilesNameFileLineAndCause)
         "$Entities\n0 0 1 0\n1 0 0 0 1 1 0 1 7 0\n$EndEntities\n";
     const std::string elements =
         "$Elements\n1 1 1 1\n2 1 3 1\n1 1 2 3 4\n$EndElements\n";
+    // physical group 8 (1D) named name, 7 (2D) named "solid"
+    const auto names = [](const std::string& name)
+    {
+        return "$PhysicalNames\n2\n1 8 \"" + name + "\"\n2 7 \"solid\"\n"
+            "$EndPhysicalNames\n";
+    };
+    const std::string edged =
+        "$Entities\n0 1 1 0\n1 0 0 0 1 0 0 1 8 0\n"
+        "1 0 0 0 1 1 0 1 7 0\n$EndEntities\n";
+    const std::string edgedElements =
+        "$Elements\n2 2 1 2\n1 1 1 1\n2 1 2\n2 1 3 1\n1 1 2 3 4\n"
+        "$EndElements\n";
     struct Case { const char* what; std::string text; const char* expect; };
     const Case cases[] =
     {
@@ -351,7 +363,20 @@ TEST(SolidIo, MshReaderBadFilesNameFileLineAndCause)
         {"2.2 malformed element", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
             "$Nodes\n1\n1 0 0 0\n$EndNodes\n$Elements\n1\n1 3 5\n"
             "$EndElements\n", "line 10: malformed element line"},
+        {"a face set named like a region", head + names("solid") + edged
+          + nodes + edgedElements, "the physical name 'solid' is given to "
+            "two physical groups, the 1D group (boundary faces) of tag 8 "
+            "and the 2D group (a region) of tag 7"},
     };
+    // A curve (physical group 8) on the quad's bottom edge: read as a face
+    // set when it has a name of its own
+    {
+        std::ofstream("edged.msh")
+            << head + names("bottom") + edged + nodes + edgedElements;
+        const Mesh m = readGmsh("edged.msh");
+        EXPECT_EQ(m.regionNames, std::vector<std::string>{"solid"});
+        EXPECT_EQ(m.faceSet("bottom").size(), 1u);
+    }
     // The good file reads (one quad in the unnamed region 7)
     std::ofstream("good.msh") << head + entities + nodes + elements;
     const Mesh good = readGmsh("good.msh");

@@ -12,7 +12,7 @@ block edge) so that the fluid patch points lie on it.
 
 usage: fluidWedgeMesh.py [-h size_m] [-far size_m] [-dz size_m]
                          [-outer size_m] [-D m] [-H m] [-R m] [-Z m]
-                         [-wedge deg] [-o file]
+                         [-wedge deg] [-maxCells N] [-o file]
   -h      cell size at the interface [m] (default 0.5e-6)
   -far    radial cell size in the column above the inner box and at the
           inner side of the ring [m] (default 2 h)
@@ -25,6 +25,9 @@ usage: fluidWedgeMesh.py [-h size_m] [-far size_m] [-dz size_m]
           geometrically in r from -far at r = Rb to -outer at r = R. The
           incident plane wave is uniform in r, so the radial size there
           only matters for the waves the cell scatters sideways
+  -maxCells  largest cell count [1, 1e9] (default 1e6): the count is
+          computed from the sizes before anything is written and a
+          larger one refused (issue 19, class 6: -h 1e-9 hung)
 """
 import argparse
 import math
@@ -39,6 +42,7 @@ p.add_argument("-H", type=float, default=7.9e-6)
 p.add_argument("-R", type=float, default=50e-6)
 p.add_argument("-Z", type=float, default=100e-6)
 p.add_argument("-wedge", type=float, default=5.0)
+p.add_argument("-maxCells", type=float, default=1e6)
 p.add_argument("-o", default="system/blockMeshDict")
 args = p.parse_args()
 
@@ -51,6 +55,9 @@ for name, v in (("-h", h), ("-far", far), ("-dz", dz), ("-outer", outer)):
         p.error("%s %g m: must be positive" % (name, v))
 if outer < far:
     p.error("-outer %g m: must be at least -far (%g m)" % (outer, far))
+if not 1 <= args.maxCells <= 1e9:
+    p.error("-maxCells %g is outside the valid range [1, 1e9]"
+            % args.maxCells)
 Rb = Zb = max(a, H) + 4e-6      # inner box around the cell [m]
 alpha = math.radians(args.wedge)/2
 phiP = math.radians(45.0)
@@ -113,6 +120,18 @@ def graded(length, first, last):
     return best[0], last/first
 
 
+def tooMany(cells, atLeast):
+    if cells > args.maxCells:
+        p.error("the wedge water would have %s%d cells, more than -maxCells "
+                "%d (coarser -h, -far, -dz or -outer, or a larger "
+                "-maxCells); nothing was written"
+                % ("at least " if atLeast else "", cells, args.maxCells))
+
+
+# The count before the grading's search, which takes as long as the ring
+# has cells of size -far: its ring and corner have at least (R - Rb)/outer
+# cells across
+tooMany(n1*nr + n2*nr + n1*nTop + n(R - Rb, outer)*(n2 + nTop), True)
 nOut, gOut = graded(R - Rb, far, outer)
 
 
@@ -131,6 +150,9 @@ for i, v in enumerate(rz):
             continue
         index[(i, s)] = len(verts)
         verts.append(side(v, s))
+
+
+tooMany(n1*nr + n2*nr + n1*nTop + nOut*(n2 + nTop), False)
 
 
 def hexv(quad):

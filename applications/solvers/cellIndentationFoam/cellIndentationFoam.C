@@ -27,6 +27,7 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
+#include "inputChecks.H"
 #include "Time.H"
 #include "IOdictionary.H"
 
@@ -54,6 +55,7 @@ int main(int argc, char *argv[])
     argList::noParallel();
     foamTools::resultGuard::addOption();
     #include "setRootCase.H"
+    foamTools::checkCasePath(args);    // a path OpenFOAM can hold
     const foamTools::caseLock lock(args);    // one run per case
     #include "createTime.H"
     #include "createFields.H"
@@ -66,8 +68,10 @@ int main(int argc, char *argv[])
     {
         driver->run();
     }
-    catch (const solid::SolidError& err)
+    catch (const std::exception& err)
     {
+        // solid::SolidError, and any standard exception (a std::
+        // filesystem error) as a FatalError, never std::terminate
         FatalErrorInFunction
             << "at t = " << model.time << " s: " << err.what()
             << exit(FatalError);

@@ -53,6 +53,7 @@ int main(int argc, char *argv[])
     #include "addCheckCaseOptions.H"
     foamTools::resultGuard::addOption();
     #include "setRootCaseLists.H"
+    foamTools::checkCasePath(args);    // a path OpenFOAM can hold
     const foamTools::caseLock lock(args);    // one run per case
     foamTools::checkControlDict(args);
     foamTools::writeGuard::discardIncompleteTimes(args);

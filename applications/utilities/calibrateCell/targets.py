@@ -89,6 +89,21 @@ class Targets:
         for name, e in entries.items():
             self.items.append(self._read(name, e, case, relative_error,
                                          where))
+        # One target per force: a second target on the same peak or
+        # curve would count its force twice in the fit
+        seen = {}
+        for it in self.items:
+            key = (it["kind"], it["peak"] if it["kind"] == "peak"
+                   else os.path.realpath(it["file"]))
+            if key in seen:
+                raise TargetError(
+                    "%s: targets '%s' and '%s' both fit the %s '%s' (a "
+                    "force counted twice: give one target per peak or "
+                    "curve, with 'weight' to weigh it)"
+                    % (where, seen[key], it["name"],
+                       "peak" if it["kind"] == "peak" else "curve file",
+                       it["peak"] if it["kind"] == "peak" else it["file"]))
+            seen[key] = it["name"]
 
     @staticmethod
     def _read(name, e, case, relative_error, where):
@@ -108,6 +123,9 @@ class Targets:
             if isinstance(v, bool) or not isinstance(v, (int, float)):
                 raise TargetError("%s: '%s' must be a number, not '%s'"
                                   % (at, key, v))
+            if not np.isfinite(v):
+                raise TargetError("%s: '%s' = %s is not finite (valid "
+                                  "range (0, inf))" % (at, key, v))
             if not v > 0:
                 raise TargetError("%s: '%s' = %g must be > 0"
                                   % (at, key, v))
@@ -140,6 +158,9 @@ class Targets:
         if isinstance(v, bool) or not isinstance(v, (int, float)):
             raise TargetError("%s: 'value' must be a force [N], not '%s'"
                               % (at, v))
+        if not np.isfinite(v):
+            raise TargetError("%s: 'value' = %s is not a finite force [N] "
+                              "(valid range (0, inf) N)" % (at, v))
         if v <= 0:
             raise TargetError("%s: 'value' = %g N: a target force must be "
                               "positive (compressive contact force)"

@@ -22,6 +22,7 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include "argList.H"
+#include "inputChecks.H"
 #include "cellGeometry.H"
 #include "cellMesher.H"
 #include "fluidBox.H"
@@ -42,6 +43,7 @@ int main(int argc, char *argv[])
     argList::addOption("dict", "file", "Alternative cellMeshDict");
 
     #include "setRootCase.H"
+    foamTools::checkCasePath(args);    // a path OpenFOAM can hold
 
     const fileName dictFile
     (

@@ -57,7 +57,8 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
     for (const word key : {"axialSize", "lateralSize", "innerMargin",
                            "maxCells"})
     {
-        if (d.found(key))
+        // maxCells of the tetrahedra and the wedge is an entry of fluid
+        if (d.found(key) && (key != "maxCells" || type == "hex"))
         {
             FatalIOErrorInFunction(d)
                 << "entry '" << key << "' belongs in the sub-dictionary "
@@ -108,6 +109,127 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
     {
         readHex(d.subOrEmptyDict("hexCoeffs"));
     }
+    else
+    {
+        // The tetrahedra and the wedge: their cell count estimated from
+        // the sizes before gmsh allocates anything (issue 19, class 6)
+        const label maxCells = foamTools::readInRangeOrDefault<label>
+        (
+            d, "maxCells", "", 1, 1000000000, true, 1000000
+        );
+        const bool tets = !g_.axisymmetric();
+        const scalar estimate = tets ? tetCells() : wedgeCells();
+        Info<< "Water: " << (tets ? "about " : "at least ") << estimate
+            << (tets ? " tetrahedra" : " cells") << " estimated from the "
+            << "sizes (maxCells " << maxCells << ")" << nl << endl;
+        if (estimate > maxCells)
+        {
+            FatalIOErrorInFunction(d)
+                << "the " << (tets ? "tetrahedral" : "wedge") << " water "
+                << "would have " << (tets ? "about " : "at least ")
+                << estimate << " cells" << (tets ? " (estimated from the "
+                   "sizes)" : "") << ", more "
+                << "than maxCells " << maxCells << " (coarser nearSize, "
+                << "farSize" << (tets ? ", columnSize" : "") << " or a "
+                << "longer growthDistance, or a larger maxCells)"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+Foam::scalar Foam::fluidBox::sizeAt(scalar r, scalar z) const
+{
+    const scalar a = g_.a(), H = g_.H();
+    const scalar level = std::sqrt(sqr(r/a) + sqr(z/H)) - 1;
+    scalar h = nearSize_ + (farSize_ - nearSize_)
+        *min(1.0, max(0.0, level*min(a, H)/growth_));
+    if (columnRadius_ > 0)
+    {
+        h = min
+        (
+            h,
+            columnSize_ + (farSize_ - columnSize_)
+           *min(1.0, max(0.0, r - columnRadius_)/growth_)
+        );
+    }
+    return h;
+}
+
+
+Foam::scalar Foam::fluidBox::tetCells() const
+{
+    // The water's volume over that of a regular tetrahedron of the local
+    // size, h^3/(6 sqrt 2), summed on a grid over the quarter box, or the
+    // layer on the cell alone if that is more (below)
+    // [0, L/2]^2 x [0, L] (midpoints; at least 8 points per growth
+    // distance and column radius, at most 200 x 200 x 400). An estimate,
+    // not a bound: gmsh made 0.6 to 1.7 times as many on the quarter
+    // (docs/reliability.md, class 6)
+    const scalar a = g_.a(), H = g_.H(), half = 0.5*L_;
+    scalar resolve = min(growth_, min(a, H));
+    if (columnRadius_ > 0) resolve = min(resolve, columnRadius_);
+    const label n = min(label(200), max(label(32),
+        label(std::ceil(8*half/resolve))));
+    const scalar dx = half/n, dz = L_/(2*n);
+    scalar sum = 0;
+    for (label i = 0; i < n; ++i)
+    for (label j = 0; j < n; ++j)
+    {
+        const scalar r = std::hypot((i + 0.5)*dx, (j + 0.5)*dx);
+        for (label k = 0; k < 2*n; ++k)
+        {
+            const scalar z = (k + 0.5)*dz;
+            if (sqr(r/a) + sqr(z/H) < 1) continue;
+            sum += 1/pow3(sizeAt(r, z));
+        }
+    }
+    const bool quarter = g_.mode() == cellGeometry::meshMode::quarter3D;
+    const scalar tet = 6*std::sqrt(2.0);
+    const scalar grid = (quarter ? 1 : 4)*tet*sum*dx*dx*dz;
+
+    // The layer on the cell, where the size grows from nearSize: thinner
+    // than the grid for a small nearSize, summed across it exactly, on
+    // the cell's surface (upper half spheroid, a quarter of it in the
+    // quarter mode): integral of 1/h^3 over the growth distance
+    scalar area = 0;
+    for (label i = 0; i < 1000; ++i)
+    {
+        const scalar phi = 0.5*pi*(i + 0.5)/1000;
+        area += 2*pi*a*std::sin(phi)
+           *std::hypot(a*std::cos(phi), H*std::sin(phi))*0.5*pi/1000;
+    }
+    const scalar n0 = nearSize_, n1 = farSize_;
+    const scalar layer = n1 > n0*(1 + 1e-12)
+        ? growth_/(n1 - n0)*0.5*(1/sqr(n0) - 1/sqr(n1))
+        : growth_/pow3(n0);
+    const scalar shell = (quarter ? 0.25 : 1)*tet*area*layer;
+    return max(grid, shell);
+}
+
+
+Foam::scalar Foam::fluidBox::wedgeCells() const
+{
+    // wedge(): nTh rays (nearSize along the cell surface, at most farSize
+    // at the box), each with at least (longest ray)/farSize cells
+    const scalar L = L_, a = g_.a(), H = g_.H();
+    const scalar thc = std::atan2(0.5*L, L);
+    scalar Dmax = 0;
+    for (label i = 0; i <= 1000; ++i)
+    {
+        const scalar th = 0.5*pi*i/1000;
+        const scalar rhoE =
+            1/std::sqrt(sqr(std::sin(th)/a) + sqr(std::cos(th)/H));
+        const scalar rhoB =
+            th <= thc ? L/std::cos(th) : 0.5*L/std::max(std::sin(th), 1e-300);
+        Dmax = max(Dmax, rhoB - rhoE);
+    }
+    const scalar nTh = max
+    (
+        std::ceil(g_.arcLength(0, 0.5*pi, false)/nearSize_),
+        std::ceil(0.5*pi*std::hypot(0.5*L, L)/farSize_)
+    );
+    return nTh*std::floor(Dmax/farSize_);
 }
 
 

@@ -18,6 +18,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "inputChecks.H"
 #include "OFstream.H"
 #include "rhoEThermoModel.H"
 #include "riemannProblem.H"
@@ -65,6 +66,7 @@ int main(int argc, char *argv[])
     timeSelector::addOptions(false, true);
 
     #include "setRootCase.H"
+    foamTools::checkCasePath(args);    // a path OpenFOAM can hold
 
     const riemannProblem problem(args.path());
 

@@ -11,6 +11,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include "inputChecks.H"
 #include "rhoEThermo.H"
 #include "riemannProblem.H"
 
@@ -23,6 +24,7 @@ int main(int argc, char *argv[])
     argList::noParallel();
 
     #include "setRootCase.H"
+    foamTools::checkCasePath(args);    // a path OpenFOAM can hold
 
     const riemannProblem problem(args.path());
 

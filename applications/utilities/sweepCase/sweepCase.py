@@ -138,8 +138,7 @@ class Output:
 
 
 def run_one(case, copy, f, keys, value, outputs, command):
-    if os.path.exists(copy):
-        shutil.rmtree(copy)
+    # copy does not exist (checked in main): copytree never replaces
     shutil.copytree(case, copy, symlinks=True)
     p = os.path.join(copy, f)
     text = foamDict.set_entry(open(p).read(), keys, value, p)
@@ -191,6 +190,16 @@ def main():
         name = a.name or keys[-1]
         copies = ["%s.sweep_%s_%d" % (case, name, i)
                   for i in range(len(values))]
+        # The run folders are made and removed by the sweep: one that is
+        # there already holds someone's files (a kept or failed earlier
+        # sweep, or the user's), which the sweep used to delete
+        for c in copies:
+            if os.path.lexists(c):
+                raise SweepError(
+                    "the run folder %s of value %s exists (kept by an "
+                    "earlier sweep, or the user's files): the sweep would "
+                    "replace it. Nothing was run: move it away, or choose "
+                    "another -name" % (c, values[copies.index(c)]))
         print("sweepCase: %s = %s, %d runs of '%s' (%d at a time)"
               % ("/".join([f] + keys), " ".join(values), len(values),
                  command, a.nProcs), flush=True)

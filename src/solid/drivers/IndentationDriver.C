@@ -294,10 +294,28 @@ void solid::IndentationDriver::checkpoint(long row)
         counters_.assemblySeconds, counters_.solveSeconds
     });
     c.set("fieldSteps", double(fieldSteps_));
+    c.setText("inputDigests", settings_.inputDigests);
+    // The lengths the outputs have now: a write that failed (a full
+    // disk) or an output removed during the run is an error naming the
+    // file, not a std::filesystem exception that ended the run in
+    // std::terminate (issue 19, class 4)
     forceFile_.flush();
     peakFile_.flush();
-    c.set("force.dat.length", double(fs::file_size(path("force.dat"))));
-    c.set("peaks.dat.length", double(fs::file_size(path("peaks.dat"))));
+    for (const char* f : {"force.dat", "peaks.dat"})
+    {
+        std::error_code ec;
+        const std::uintmax_t size = fs::file_size(path(f), ec);
+        if (ec || !(std::string(f) == "force.dat" ? forceFile_ : peakFile_))
+        {
+            throw SolidError
+            (
+                SolidError::Kind::io, "cannot write " + path(f) + ": "
+              + (ec ? ec.message() + " (removed during the run?)"
+                    : std::string("the write failed (disk full?)"))
+            );
+        }
+        c.set(std::string(f) + ".length", double(size));
+    }
     c.write();
 }
 

@@ -32,6 +32,10 @@ solid::Checkpoint solid::Checkpoint::read(const std::string& file)
     {
         c.data_[name] = f.read(name);
     }
+    for (const auto& t : f.texts())
+    {
+        c.texts_[t.first] = t.second;
+    }
     return c;
 }
 
@@ -45,6 +49,10 @@ void solid::Checkpoint::write() const
         for (const auto& kv : data_)
         {
             f.write(kv.first, kv.second.data(), kv.second.size());
+        }
+        for (const auto& kv : texts_)
+        {
+            f.writeText(kv.first, kv.second);
         }
         f.close();
     }
@@ -72,6 +80,18 @@ const std::vector<double>& solid::Checkpoint::get
           + std::to_string(expected) + " (a checkpoint of another mesh or "
             "model?)"
         );
+    }
+    return it->second;
+}
+
+
+const std::string& solid::Checkpoint::text(const std::string& name) const
+{
+    const auto it = texts_.find(name);
+    if (it == texts_.end())
+    {
+        throw ioError("checkpoint '" + file_ + "': text '" + name
+                      + "' is missing");
     }
     return it->second;
 }

@@ -510,6 +510,41 @@ solid::Mesh solid::readGmsh(const std::string& fileName, double scale)
         );
     }
 
+    // One name per physical group: a face or node set named like a region
+    // (names swapped or copied between groups) would otherwise share its
+    // node set, which the later group replaced silently (issue 19, class
+    // 4: 'fixed (cytoplasm 0)' fixed the whole cytoplasm)
+    const auto kind = [dim](int d)
+    {
+        return std::to_string(d) + "D group ("
+          + (d == dim ? "a region" : d == dim - 1 ? "boundary faces" : "nodes")
+          + ")";
+    };
+    std::map<std::string, std::pair<int, int>> named;
+    for (const auto& g : groups)
+    {
+        const auto nameIt = msh.physicalNames.find(g);
+        if (nameIt == msh.physicalNames.end() || nameIt->second.empty())
+        {
+            continue;
+        }
+        const auto first = named.emplace(nameIt->second, g);
+        if (!first.second)
+        {
+            const std::pair<int, int>& h = first.first->second;
+            throw SolidError
+            (
+                SolidError::Kind::mesh, "gmsh file '" + fileName
+              + "': the physical name '" + nameIt->second + "' is given to "
+                "two physical groups, the " + kind(h.first) + " of tag "
+              + std::to_string(h.second) + " and the " + kind(g.first)
+              + " of tag " + std::to_string(g.second) + "; every physical "
+                "group needs its own name (names swapped or copied between "
+                "groups?)"
+            );
+        }
+    }
+
     Mesh mesh;
     mesh.type = dim == 2 ? ElementType::quad4Axi : ElementType::hex8;
     const int wanted = dim == 2 ? gmshQuad4 : gmshHex8;

@@ -3,6 +3,7 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <type_traits>
 
 static_assert
@@ -29,6 +30,12 @@ herr_t collectDataset
     {
         static_cast<std::vector<std::string>*>(out)->emplace_back(name);
     }
+    return 0;
+}
+
+herr_t collectAttribute(hid_t, const char* name, const H5A_info_t*, void* out)
+{
+    static_cast<std::vector<std::string>*>(out)->emplace_back(name);
     return 0;
 }
 
@@ -271,4 +278,67 @@ double solid::Hdf5Group::readAttribute(const std::string& name) const
     if (a >= 0) H5Aclose(a);
     check(ok, "read attribute " + name + " of " + path_);
     return value;
+}
+
+
+void solid::Hdf5Group::writeText
+(
+    const std::string& name,
+    const std::string& text
+)
+{
+    // A fixed-length string of the text's size (HDF5 refuses size 0)
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, text.empty() ? 1 : text.size());
+    H5Tset_strpad(type, H5T_STR_NULLPAD);
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t a = H5Acreate2
+    (
+        id_, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT
+    );
+    const std::string data = text.empty() ? std::string(1, '\0') : text;
+    const bool ok = a >= 0 && H5Awrite(a, type, data.data()) >= 0;
+    if (a >= 0) H5Aclose(a);
+    H5Sclose(space);
+    H5Tclose(type);
+    check(ok, "write text attribute " + name + " of " + path_);
+}
+
+
+std::vector<std::pair<std::string, std::string>>
+solid::Hdf5Group::texts() const
+{
+    std::vector<std::string> names;
+    hsize_t idx = 0;
+    check
+    (
+        H5Aiterate2
+        (
+            id_, H5_INDEX_NAME, H5_ITER_INC, &idx, collectAttribute, &names
+        ) >= 0,
+        "list the attributes of " + path_
+    );
+    std::vector<std::pair<std::string, std::string>> result;
+    for (const std::string& name : names)
+    {
+        const hid_t a = H5Aopen(id_, name.c_str(), H5P_DEFAULT);
+        check(a >= 0, "open attribute " + name + " of " + path_);
+        const hid_t type = H5Aget_type(a);
+        const bool isText =
+            type >= 0 && H5Tget_class(type) == H5T_STRING
+         && H5Tis_variable_str(type) == 0;
+        bool ok = true;
+        std::string text;
+        if (isText)
+        {
+            text.resize(H5Tget_size(type));
+            ok = H5Aread(a, type, &text[0]) >= 0;
+            text.resize(std::min(text.size(), text.find('\0')));
+        }
+        if (type >= 0) H5Tclose(type);
+        H5Aclose(a);
+        check(ok, "read text attribute " + name + " of " + path_);
+        if (isText) result.emplace_back(name, text);
+    }
+    return result;
 }
