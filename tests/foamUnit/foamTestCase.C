@@ -4,6 +4,7 @@
 #include "OSspecific.H"
 #include "IStringStream.H"
 #include "OStringStream.H"
+#include "mathematicalConstants.H"
 
 #include <cstdlib>
 #include <filesystem>
@@ -291,5 +292,24 @@ Foam::autoPtr<Foam::fvMesh> Foam::foamUnit::testCase::blockMesh
                 IOobject::MUST_READ
             )
         )
+    );
+}
+
+
+Foam::autoPtr<Foam::fvMesh> Foam::foamUnit::testCase::wedgeMesh()
+{
+    const scalar tanHalf = std::tan(2.5*constant::mathematical::pi/180);
+    return blockMesh
+    (
+        {7, 6, 1},
+        [tanHalf](const vector& s)
+        {
+            const scalar r = 2e-6 + 10e-6*(s.x() + 0.6*s.x()*s.x());
+            const scalar y =
+                8e-6*(s.y() + 0.07*std::sin(3.1*s.y())*(1 + s.x()));
+            return point(r, y, (2*s.z() - 1)*tanHalf*r);
+        },
+        {"inner", "outer", "bottom", "top", "front", "back"},
+        {"patch", "wall", "symmetryPlane", "patch", "wedge", "wedge"}
     );
 }

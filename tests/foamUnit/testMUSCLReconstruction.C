@@ -84,27 +84,6 @@ void writeSchemes
 }
 
 
-//- A wedge of 7 x 6 cells, radially graded and sheared (non-uniform
-//  weights, non-orthogonal faces), every kind of non-coupled patch
-autoPtr<fvMesh> wedgeMesh(foamUnit::testCase& tc)
-{
-    const scalar tanHalf = std::tan(2.5*constant::mathematical::pi/180);
-    return tc.blockMesh
-    (
-        {7, 6, 1},
-        [tanHalf](const vector& s)
-        {
-            const scalar r = 2e-6 + 10e-6*(s.x() + 0.6*s.x()*s.x());
-            const scalar y =
-                8e-6*(s.y() + 0.07*std::sin(3.1*s.y())*(1 + s.x()));
-            return point(r, y, (2*s.z() - 1)*tanHalf*r);
-        },
-        {"inner", "outer", "bottom", "top", "front", "back"},
-        {"patch", "wall", "symmetryPlane", "patch", "wedge", "wedge"}
-    );
-}
-
-
 //- rho [kg/m^3], U [m/s], p [Pa]: smooth parts, plateaus (equal
 //  neighbours: the limiters' clamped branch) and a jump
 struct primitiveFields
@@ -223,7 +202,7 @@ std::string refusal
 {
     foamUnit::testCase tc("MUSCLReconstruction");
     writeSchemes(tc, scalarScheme, vectorScheme, gradScheme);
-    autoPtr<fvMesh> mesh = wedgeMesh(tc);
+    autoPtr<fvMesh> mesh = tc.wedgeMesh();
     try
     {
         MUSCLReconstruction r(mesh());
@@ -254,7 +233,7 @@ TEST(MUSCLReconstruction, faceStatesEqualOpenFOAMsLimitedSchemesBitwise)
     {
         foamUnit::testCase tc("MUSCLReconstruction");
         writeSchemes(tc, s.first(), s.second());
-        autoPtr<fvMesh> mesh = wedgeMesh(tc);
+        autoPtr<fvMesh> mesh = tc.wedgeMesh();
         const primitiveFields f(mesh());
 
         MUSCLReconstruction r(mesh());

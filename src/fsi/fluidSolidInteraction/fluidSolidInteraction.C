@@ -136,6 +136,12 @@ void Foam::fluidSolidInteraction::createMotion
               ? interfaceDict.get<vector>("axisDirection") : vector(Zero)
             )
         );
+        bandMotion_.reset(new bandMeshMotion(mesh_, motion_->movedPoints()));
+        Info<< "FSI mesh motion: geometry updated on " << bandMotion_->nFaces()
+            << " faces and " << bandMotion_->nCells() << " cells of "
+            << mesh_.nFaces() << " and " << mesh_.nCells()
+            << (bandMotion_->banded() ? "" : " (whole mesh: a coupled patch"
+                " touches them)") << endl;
         return;
     }
 
@@ -238,7 +244,7 @@ void Foam::fluidSolidInteraction::moveWall(const scalarField& d)
     const vectorField wallDisplacement(map_->pointValues(d));
     if (motion_.valid())
     {
-        mesh_.movePoints(motion_->newPoints(wallDisplacement));
+        bandMotion_->movePoints(motion_->newPoints(wallDisplacement));
     }
     else
     {

@@ -265,3 +265,19 @@ Foam::tmp<Foam::pointField> Foam::interfaceMotion::newPoints
     }
     return tnew;
 }
+
+
+Foam::labelList Foam::interfaceMotion::movedPoints() const
+{
+    const labelList& ipPoints = mesh_.boundaryMesh()[patchi_].meshPoints();
+    labelList moved(ipPoints);
+    moved.append(movingPoints_);
+    for (const labelPair& pk : sharedPoints_)
+    {
+        moved.append(pk.first());
+    }
+    return moved;
+}
+
+
+// ************************************************************************* //

@@ -2,6 +2,8 @@
 #include "volPointInterpolation.H"
 #include "addToRunTimeSelectionTable.H"
 
+#include <Eigen/Dense>
+
 namespace Foam
 {
     defineTypeNameAndDebug(movingMeshProbes, 0);
@@ -53,6 +55,84 @@ void Foam::movingMeshProbes::updateFaces()
 }
 
 
+bool Foam::movingMeshProbes::linearFit() const
+{
+    return fixedLocations_ && interpolationScheme_ == "cellLinearFit";
+}
+
+
+void Foam::movingMeshProbes::fitWeights
+(
+    List<labelList>& cells,
+    List<scalarList>& weights
+) const
+{
+    const labelListList& cellPoints = mesh_.cellPoints();
+    const labelListList& pointCells = mesh_.pointCells();
+    const vectorField& C = mesh_.cellCentres();
+
+    // The fit's gradient in the solution directions only (a wedge's cell
+    // centres all lie on its mid plane)
+    const Vector<label>& solutionD = mesh_.solutionD();
+    DynamicList<direction> dirs;
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (solutionD[d] == 1) dirs.append(d);
+    }
+    const label n = 1 + dirs.size();
+
+    cells.setSize(size());
+    weights.setSize(size());
+    forAll(*this, probei)
+    {
+        cells[probei].clear();
+        weights[probei].clear();
+        const label celli = elementList_[probei];
+        if (celli == -1)
+        {
+            continue;
+        }
+
+        // The cell and the cells that share a point with it
+        DynamicList<label> st(32);
+        st.append(celli);
+        for (const label pointi : cellPoints[celli])
+        {
+            for (const label cellj : pointCells[pointi])
+            {
+                if (!st.found(cellj)) st.append(cellj);
+            }
+        }
+
+        const point& x = operator[](probei);
+        scalar h = 0;
+        for (const label cellj : st) h += mag(C[cellj] - x);
+        h /= st.size();
+
+        // Normal equations in coordinates scaled by h: M m = e_0, then the
+        // weight of cell i is w_i m.q_i with q_i = (1, (x_i - x_p)/h)
+        Eigen::MatrixXd Q(st.size(), n);
+        Eigen::VectorXd w(st.size());
+        forAll(st, i)
+        {
+            const vector d = (C[st[i]] - x)/h;
+            Q(i, 0) = 1;
+            forAll(dirs, k) Q(i, k + 1) = d[dirs[k]];
+            w(i) = 1/(magSqr(d) + 0.01);
+        }
+        const Eigen::MatrixXd M(Q.transpose()*w.asDiagonal()*Q);
+        Eigen::VectorXd e0(Eigen::VectorXd::Zero(n));
+        e0(0) = 1;
+        const Eigen::VectorXd m(M.completeOrthogonalDecomposition().solve(e0));
+        const Eigen::VectorXd lambda(w.cwiseProduct(Q*m));
+
+        cells[probei].transfer(st);
+        weights[probei].setSize(lambda.size());
+        forAll(weights[probei], i) weights[probei][i] = lambda(i);
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::movingMeshProbes::movingMeshProbes
@@ -72,9 +152,36 @@ Foam::movingMeshProbes::movingMeshProbes
 
 bool Foam::movingMeshProbes::write()
 {
-    const bool written = probes::write();
-    volPointInterpolation::Delete(mesh_);
-    return written;
+    if (!linearFit())
+    {
+        const bool written = probes::write();
+        volPointInterpolation::Delete(mesh_);
+        return written;
+    }
+
+    if (size() && prepare())
+    {
+        if
+        (
+            surfaceScalarFields_.size() || surfaceVectorFields_.size()
+         || surfaceSphericalTensorFields_.size()
+         || surfaceSymmTensorFields_.size() || surfaceTensorFields_.size()
+        )
+        {
+            FatalErrorInFunction
+                << name() << ": interpolationScheme cellLinearFit samples"
+                << " vol fields only; fields " << fieldSelection_
+                << " select surface fields" << exit(FatalError);
+        }
+
+        sampleAndWriteFit(scalarFields_);
+        sampleAndWriteFit(vectorFields_);
+        sampleAndWriteFit(sphericalTensorFields_);
+        sampleAndWriteFit(symmTensorFields_);
+        sampleAndWriteFit(tensorFields_);
+    }
+
+    return true;
 }
 
 

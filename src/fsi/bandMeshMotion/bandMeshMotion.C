@@ -1,0 +1,430 @@
+#include "bandMeshMotion.H"
+#include "bitSet.H"
+#include "pointIOField.H"
+#include "labelIOList.H"
+#include "MeshObject.H"
+#include "pointMesh.H"
+#include "lduMesh.H"
+#include "volFields.H"
+#include "surfaceFields.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace Foam
+{
+
+//- Centre and area vector of one face: primitiveMesh::makeFaceCentresAndAreas
+//  for this face, the same operations in the same order
+static void faceCentreAndArea
+(
+    const face& f,
+    const pointField& p,
+    vector& fCtr,
+    vector& fArea
+)
+{
+    const label nPoints = f.size();
+    if (nPoints == 3)
+    {
+        fCtr = (1.0/3.0)*(p[f[0]] + p[f[1]] + p[f[2]]);
+        fArea = 0.5*((p[f[1]] - p[f[0]])^(p[f[2]] - p[f[0]]));
+        return;
+    }
+
+    typedef Vector<solveScalar> solveVector;
+    solveVector sumN = Zero;
+    solveScalar sumA = 0.0;
+    solveVector sumAc = Zero;
+
+    solveVector fCentre = p[f[0]];
+    for (label pi = 1; pi < nPoints; ++pi)
+    {
+        fCentre += solveVector(p[f[pi]]);
+    }
+    fCentre /= nPoints;
+
+    for (label pi = 0; pi < nPoints; ++pi)
+    {
+        const label nextPi(pi == nPoints-1 ? 0 : pi+1);
+        const solveVector nextPoint(p[f[nextPi]]);
+        const solveVector thisPoint(p[f[pi]]);
+
+        solveVector c = thisPoint + nextPoint + fCentre;
+        solveVector n = (nextPoint - thisPoint)^(fCentre - thisPoint);
+        solveScalar a = mag(n);
+        sumN += n;
+        sumA += a;
+        sumAc += a*c;
+    }
+
+    if (sumA < ROOTVSMALL)
+    {
+        fCtr = fCentre;
+        fArea = Zero;
+    }
+    else
+    {
+        fCtr = (1.0/3.0)*sumAc/sumA;
+        fArea = 0.5*sumN;
+    }
+}
+
+} // End namespace Foam
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::bandMeshMotion::storeOldGeometry()
+{
+    // polyMesh::movePoints: the old points are the points at the first
+    // motion of a time step (only the band's differ)
+    pointField& oldPoints = const_cast<pointField&>(mesh_.oldPoints());
+    const pointField& points = mesh_.points();
+    for (const label pointi : points_)
+    {
+        oldPoints[pointi] = points[pointi];
+    }
+
+    // fvMesh::storeOldVol: V00 <- V0 <- V (only the band's cells differ)
+    const scalarField& V = mesh_.V();
+    scalarField& V0 = mesh_.setV0();
+    typedef DimensionedField<scalar, volMesh> volInternal;
+    if (mesh_.foundObject<volInternal>("V00"))
+    {
+        scalarField& V00 = const_cast<volInternal&>(mesh_.V00());
+        for (const label celli : cells_)
+        {
+            V00[celli] = V0[celli];
+        }
+    }
+    for (const label celli : cells_)
+    {
+        V0[celli] = V[celli];
+    }
+
+    // fvMesh::movePoints: the old-time mesh flux
+    surfaceScalarField& phi = const_cast<surfaceScalarField&>(mesh_.phi());
+    if (phi.timeIndex() != mesh_.time().timeIndex())
+    {
+        phi.oldTime();
+    }
+}
+
+
+void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
+{
+    const Time& runTime = mesh_.time();
+
+    // The points, written at the next write time as polyMesh::movePoints
+    // sets them to be
+    // (polyMesh::points is its pointIOField points_)
+    pointIOField& points =
+        const_cast<pointIOField&>
+        (
+            static_cast<const pointIOField&>(mesh_.points())
+        );
+    for (const label pointi : points_)
+    {
+        points[pointi] = newPoints[pointi];
+    }
+    points.writeOpt() = IOobject::AUTO_WRITE;
+    points.instance() = runTime.timeName();
+    points.eventNo() = mesh_.getEvent();
+    if (mesh_.foundObject<labelIOList>("tetBasePtIs"))
+    {
+        labelIOList& tetBasePtIs =
+            const_cast<labelIOList&>(mesh_.tetBasePtIs());
+        tetBasePtIs.writeOpt() = IOobject::AUTO_WRITE;
+        tetBasePtIs.instance() = runTime.timeName();
+        tetBasePtIs.eventNo() = mesh_.getEvent();
+    }
+
+    const faceList& faces = mesh_.faces();
+    const labelList& own = mesh_.faceOwner();
+    const labelList& nei = mesh_.faceNeighbour();
+    const label nInternal = mesh_.nInternalFaces();
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+
+    // Swept volumes since the start of the step -> meshPhi
+    {
+        const pointField& oldPoints = mesh_.oldPoints();
+        const scalar rDeltaT = 1.0/runTime.deltaTValue();
+        surfaceScalarField& phi = const_cast<surfaceScalarField&>(mesh_.phi());
+        scalarField& phii = phi.primitiveFieldRef();
+        surfaceScalarField::Boundary& phibf = phi.boundaryFieldRef();
+        for (const label facei : faces_)
+        {
+            const scalar swept =
+                faces[facei].sweptVol(oldPoints, points)*rDeltaT;
+            if (facei < nInternal)
+            {
+                phii[facei] = swept;
+            }
+            else
+            {
+                const label patchi = pbm.whichPatch(facei);
+                if (phibf[patchi].size())
+                {
+                    phibf[patchi][facei - pbm[patchi].start()] = swept;
+                }
+            }
+        }
+    }
+
+    // Face centres and areas, |Sf|
+    vectorField& fCtrs = const_cast<vectorField&>(mesh_.faceCentres());
+    vectorField& fAreas = const_cast<vectorField&>(mesh_.faceAreas());
+    for (const label facei : faces_)
+    {
+        faceCentreAndArea(faces[facei], points, fCtrs[facei], fAreas[facei]);
+    }
+    {
+        surfaceScalarField& magSf =
+            const_cast<surfaceScalarField&>(mesh_.magSf());
+        scalarField& magSfi = magSf.primitiveFieldRef();
+        surfaceScalarField::Boundary& magSfbf = magSf.boundaryFieldRef();
+        for (const label facei : faces_)
+        {
+            const scalar m = mag(fAreas[facei]) + VSMALL;
+            if (facei < nInternal)
+            {
+                magSfi[facei] = m;
+            }
+            else
+            {
+                const label patchi = pbm.whichPatch(facei);
+                if (magSfbf[patchi].size())
+                {
+                    magSfbf[patchi][facei - pbm[patchi].start()] = m;
+                }
+            }
+        }
+    }
+
+    // Cell centres and volumes: primitiveMesh::makeCellCentresAndVols per
+    // cell, its owned faces first, then its neighbour faces
+    {
+        typedef Vector<solveScalar> solveVector;
+        vectorField& cellCtrs = const_cast<vectorField&>(mesh_.cellCentres());
+        scalarField& cellVols = const_cast<scalarField&>(mesh_.cellVolumes());
+        forAll(cells_, i)
+        {
+            const label celli = cells_[i];
+            const labelList& cf = cellFaces_[i];
+
+            solveVector cEst = Zero;
+            for (const label facei : cf)
+            {
+                cEst += solveVector(fCtrs[facei]);
+            }
+            cEst /= cf.size();
+
+            solveVector ctr = Zero;
+            solveScalar vol = 0.0;
+            for (const label facei : cf)
+            {
+                const solveVector fc(fCtrs[facei]);
+                const solveVector fA(fAreas[facei]);
+                const solveScalar pyr3Vol =
+                    own[facei] == celli ? fA & (fc - cEst) : fA & (cEst - fc);
+                const solveVector pc = (3.0/4.0)*fc + (1.0/4.0)*cEst;
+                ctr += pyr3Vol*pc;
+                vol += pyr3Vol;
+            }
+            if (mag(vol) > VSMALL)
+            {
+                ctr /= vol;
+            }
+            else
+            {
+                ctr = cEst;
+            }
+            cellCtrs[celli] = ctr;
+            cellVols[celli] = vol*(1.0/3.0);
+        }
+    }
+
+    // Interpolation factors of the faces of the band's cells
+    // (surfaceInterpolation::make*, fvPatch::delta and makeWeights)
+    const vectorField& C = mesh_.cellCentres();
+    const surfaceScalarField& magSf = mesh_.magSf();
+    surfaceScalarField& w = const_cast<surfaceScalarField&>(mesh_.weights());
+    surfaceScalarField& dc =
+        const_cast<surfaceScalarField&>(mesh_.deltaCoeffs());
+    surfaceScalarField& nodc =
+        const_cast<surfaceScalarField&>(mesh_.nonOrthDeltaCoeffs());
+    surfaceVectorField& corr =
+        const_cast<surfaceVectorField&>(mesh_.nonOrthCorrectionVectors());
+    scalarField& wi = w.primitiveFieldRef();
+    scalarField& dci = dc.primitiveFieldRef();
+    scalarField& nodci = nodc.primitiveFieldRef();
+    vectorField& corri = corr.primitiveFieldRef();
+    surfaceScalarField::Boundary& wbf = w.boundaryFieldRef();
+    surfaceScalarField::Boundary& dcbf = dc.boundaryFieldRef();
+    surfaceScalarField::Boundary& nodcbf = nodc.boundaryFieldRef();
+    surfaceVectorField::Boundary& corrbf = corr.boundaryFieldRef();
+    for (const label facei : interpFaces_)
+    {
+        const vector& Sf = fAreas[facei];
+        const vector& Cf = fCtrs[facei];
+        if (facei < nInternal)
+        {
+            const label o = own[facei];
+            const label n = nei[facei];
+            const scalar SfdOwn = mag(Sf & (Cf - C[o]));
+            const scalar SfdNei = mag(Sf & (C[n] - Cf));
+            wi[facei] = SfdNei/(SfdOwn + SfdNei);
+
+            const vector delta = C[n] - C[o];
+            dci[facei] = 1.0/mag(delta);
+            const vector unitArea = Sf/magSf[facei];
+            nodci[facei] = 1.0/max(unitArea & delta, 0.05*mag(delta));
+            corri[facei] = unitArea - delta*nodci[facei];
+        }
+        else
+        {
+            const label patchi = pbm.whichPatch(facei);
+            if (!wbf[patchi].size())
+            {
+                continue;
+            }
+            const label i = facei - pbm[patchi].start();
+            const vector unitArea = Sf/magSf.boundaryField()[patchi][i];
+            const vector delta =
+                unitArea*(unitArea & (Cf - C[own[facei]]));
+            wbf[patchi][i] = 1.0;
+            dcbf[patchi][i] = 1.0/mag(delta);
+            nodcbf[patchi][i] = 1.0/max(unitArea & delta, 0.05*mag(delta));
+            corrbf[patchi][i] = Zero;
+        }
+    }
+}
+
+
+void Foam::bandMeshMotion::notify()
+{
+    // As polyMesh::movePoints after the geometry
+    const pointField& points = mesh_.points();
+    const_cast<polyBoundaryMesh&>(mesh_.boundaryMesh()).movePoints(points);
+    const_cast<pointZoneMesh&>(mesh_.pointZones()).movePoints(points);
+    const_cast<faceZoneMesh&>(mesh_.faceZones()).movePoints(points);
+    const_cast<cellZoneMesh&>(mesh_.cellZones()).movePoints(points);
+    mesh_.clearCellTree();
+
+    meshObject::movePoints<polyMesh>(mesh_);
+    meshObject::movePoints<pointMesh>(mesh_);
+
+    const_cast<Time&>(mesh_.time()).functionObjects().movePoints(mesh_);
+
+    // As fvMesh::movePoints after the mesh flux
+    const_cast<fvBoundaryMesh&>(mesh_.boundary()).movePoints();
+    meshObject::movePoints<fvMesh>(mesh_);
+    meshObject::movePoints<lduMesh>(mesh_);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::bandMeshMotion::bandMeshMotion
+(
+    fvMesh& mesh,
+    const labelUList& movingPoints
+)
+:
+    mesh_(mesh),
+    whole_(false),
+    timeIndex_(-1)
+{
+    bitSet inBand(mesh.nPoints());
+    inBand.set(movingPoints);
+    points_ = inBand.toc();
+
+    const labelListList& pointFaces = mesh.pointFaces();
+    bitSet bandFaces(mesh.nFaces());
+    for (const label pointi : points_)
+    {
+        bandFaces.set(pointFaces[pointi]);
+    }
+    faces_ = bandFaces.toc();
+
+    const labelList& own = mesh.faceOwner();
+    const labelList& nei = mesh.faceNeighbour();
+    bitSet bandCells(mesh.nCells());
+    for (const label facei : faces_)
+    {
+        bandCells.set(own[facei]);
+        if (facei < mesh.nInternalFaces())
+        {
+            bandCells.set(nei[facei]);
+        }
+    }
+    cells_ = bandCells.toc();
+
+    const cellList& cells = mesh.cells();
+    bitSet cellsFaces(mesh.nFaces());
+    cellFaces_.setSize(cells_.size());
+    forAll(cells_, i)
+    {
+        const label celli = cells_[i];
+        labelList owned, neighboured;
+        for (const label facei : cells[celli])
+        {
+            (own[facei] == celli ? owned : neighboured).append(facei);
+        }
+        sort(owned);
+        sort(neighboured);
+        cellFaces_[i] = owned;
+        cellFaces_[i].append(neighboured);
+        cellsFaces.set(cells[celli]);
+    }
+    interpFaces_ = cellsFaces.toc();
+
+    // A coupled patch's geometry is exchanged with its other side: those
+    // touching the band's cells take the whole update
+    const polyBoundaryMesh& pbm = mesh.boundaryMesh();
+    for (const label facei : interpFaces_)
+    {
+        if (facei >= mesh.nInternalFaces())
+        {
+            const label patchi = pbm.whichPatch(facei);
+            if (pbm[patchi].coupled())
+            {
+                whole_ = true;
+            }
+        }
+    }
+    reduce(whole_, orOp<bool>());
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::bandMeshMotion::movePoints(const pointField& newPoints)
+{
+    const label timeIndex = mesh_.time().timeIndex();
+
+    // The first motion: OpenFOAM creates meshPhi, V0 and the old points
+    if
+    (
+        whole_
+     || timeIndex_ == -1
+     || !mesh_.moving()
+     || &mesh_.oldPoints() == &mesh_.points()
+    )
+    {
+        mesh_.movePoints(newPoints);
+        timeIndex_ = timeIndex;
+        return;
+    }
+
+    if (timeIndex != timeIndex_)
+    {
+        storeOldGeometry();
+        timeIndex_ = timeIndex;
+    }
+    updateGeometry(newPoints);
+    notify();
+}
+
+
+// ************************************************************************* //
