@@ -93,4 +93,4 @@ print(f"reflection={reflection:.3f}% arrival={arrival:.3f}ns "
       f"interface={interface:.3f}MPa interfaceExact={exact:.3f}MPa "
       f"steps={len(it)} meanIter={it.mean():.2f} maxIter={int(it.max())} "
       f"nonConverged={int(np.sum(cp[:, 4] == 0))} "
-      f"maxResidual={cp[:, 3].max():.2e} maxGcl={cp[:, -1].max():.1e}")
+      f"maxResidual={cp[:, 3].max():.2e} maxGcl={cp[:, 9].max():.1e}")

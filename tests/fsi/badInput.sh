@@ -1,7 +1,8 @@
 #!/bin/bash
 # Input errors of cellBlastFoam: an unknown coupling scheme lists the valid
 # ones; a solid interface that does not overlap the fluid patch is an
-# error naming the gap.
+# error naming the gap; solidSubcycles outside [1, 1000] or not an
+# integer is an error naming the entry and the range.
 set -uo pipefail
 dir=$(cd "$(dirname "$0")" && pwd)
 . "$dir/../../etc/bashrc"
@@ -28,4 +29,8 @@ run "sed -i 's/min         (50e-6/min         (60e-6/; s/max         (100e-6/max
     "lie off the solid interface (no"
 run "sed -i 's/fluidPatch      interface;/fluidPatch      wall;/' constant/fsiProperties" \
     "is not a patch of the fluid"
+run "sed -i 's/^\( *scheme *robin;\)/\1 solidSubcycles 0;/' constant/fsiProperties" \
+    "entry 'solidSubcycles' = 0 is outside the valid range \[1, 1000\]"
+run "sed -i 's/^\( *scheme *robin;\)/\1 solidSubcycles 2.5;/' constant/fsiProperties" \
+    "entry 'solidSubcycles' = '2.5' is not an integer"
 exit $fail

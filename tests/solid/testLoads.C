@@ -7,6 +7,8 @@
 #include "SolidTestUtils.H"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 #include <cstdio>
 #include <random>
 
@@ -262,6 +264,47 @@ TEST(SolidLoads, NodalLoadGivenForces)
     EXPECT_THROW(threeD.addForce(model, model.u, 0, f, nullptr), SolidError);
 }
 
+
+
+TEST(SolidLoads, NodalLoadLinearInTime)
+{
+    // Forces linear between (f0, t0) and (f1, t1): the FSI coupling's load
+    // over the solid substeps of one coupled step. f1 exactly at t1 and
+    // one ulp either side of it (the last substep's end), f0 before t0
+    Mesh m = Mesh::rectangle(2, 1, 0, 2, 0, 1);
+    Model model(m);
+    model.setMaterial("solid", solidTest::material(1, 1));
+    model.initialise();
+    const std::vector<int> nodes = {4, 1};
+    NodalLoad load(nodes, 2);
+    const std::vector<double> f0 = {1.0, -2.0, 0.3, 4.0};
+    const std::vector<double> f1 = {3.0, 2.0, 0.1, -4.0};
+    const double t0 = 1.1e-8, t1 = 1.1e-8 + 7.3e-11;
+    load.setForces(f0, t0, f1, t1);
+    EXPECT_EQ(load.forces(), f1);
+    auto at = [&](double t)
+    {
+        Eigen::VectorXd f = Eigen::VectorXd::Zero(model.nDisplacementDofs());
+        load.addForce(model, model.u, t, f, nullptr);
+        return std::vector<double>{f(8), f(9), f(2), f(3)};
+    };
+    EXPECT_EQ(at(t0), f0);
+    EXPECT_EQ(at(t0 - 1e-9), f0);
+    EXPECT_EQ(at(t1), f1);
+    EXPECT_EQ(at(std::nextafter(t1, 0.0)), f1);
+    EXPECT_EQ(at(std::nextafter(t1, 1.0)), f1);
+    EXPECT_EQ(at(t1 + 1e-9), f1);
+    const std::vector<double> q = at(t0 + 0.25*(t1 - t0));
+    for (int k = 0; k < 4; ++k)
+    {
+        EXPECT_NEAR(q[k], 0.75*f0[k] + 0.25*f1[k], 1e-12) << k;
+    }
+    EXPECT_THROW(load.setForces(f0, t1, f1, t0), SolidError);
+    EXPECT_THROW(load.setForces(f0, t0, {1, 2}, t1), SolidError);
+    // A constant load again after setForces(f)
+    load.setForces(f0);
+    EXPECT_EQ(at(t0 + 0.25*(t1 - t0)), f0);
+}
 
 
 TEST(SolidLoads, AugmentedLagrangianLoop)

@@ -5,6 +5,9 @@
 #include "wedgeFvPatch.H"
 #include "Checkpoint.H"
 #include "SolidError.H"
+#include "inputChecks.H"
+
+#include <cmath>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -189,6 +192,7 @@ void Foam::fluidSolidInteraction::readState()
             << exit(FatalIOError);
     }
     fluidInterfaceDisplacement_ = d0;
+    wallWork_ = d.get<scalar>("wallWork");
     coupling_->readState(d);
     Info<< "FSI: restarted the interface displacement and the coupling"
         << " statistics from " << stateFile << endl;
@@ -235,7 +239,7 @@ void Foam::fluidSolidInteraction::openLog()
         << "# FSI coupling (" << coupling_->type() << ")" << nl
         << "# time [s]  dt [s]  iterations  residual [-]  converged"
         << "  interfaceForce (x y z) [N]  interfaceVelocityMax [m/s]"
-        << "  gclError [-]" << nl;
+        << "  gclError [-]  fluidWallWork [J]  solidExternalWork [J]" << nl;
 }
 
 
@@ -279,6 +283,15 @@ Foam::fluidSolidInteraction::fluidSolidInteraction
     patchi_(interfacePatchIndex(mesh, fsiProperties_.subDict("interface"))),
     fsiPatch_(mesh.boundaryMesh()[patchi_]),
     pointDisplacement_(nullptr),
+    solidSubcycles_
+    (
+        foamTools::readInRangeOrDefault<label>
+        (
+            fsiProperties_.subDict("coupling"), "solidSubcycles", "", 1,
+            1000, true, 1
+        )
+    ),
+    wallWork_(0),
     cpuMotion_(0),
     cpuFluid_(0),
     cpuSolid_(0),
@@ -331,6 +344,12 @@ Foam::fluidSolidInteraction::fluidSolidInteraction
     Info<< "Solid: " << solid_->mesh().nElements() << " elements, stable"
         << " time step x explicitSafety " << solid_->timeStep() << " s"
         << endl;
+    if (solidSubcycles_ > 1)
+    {
+        Info<< "FSI: solidSubcycles " << solidSubcycles_ << ": the coupled"
+            << " step up to " << solidSubcycles_ << " solid steps ("
+            << solidSubcycles_*solid_->timeStep() << " s now)" << endl;
+    }
 
     coupling_ = couplingScheme::New(fsiProperties_.subDict("coupling"));
 
@@ -453,6 +472,11 @@ void Foam::fluidSolidInteraction::step()
     coupling_->endStep(runTime.value());
     fluidInterfaceDisplacement_ += dt*x;
 
+    // The fluid's work on its wall over the step, trapezoidal in time as
+    // the solid's (the same rule on the linear load over its substeps)
+    wallWork_ +=
+        0.5*sum((solid.startForces() + solid.interfaceForces())*dt*x);
+
     // Signal speeds of the final state for the next step's Courant number
     cpuTimer_.cpuTimeIncrement();
     fluid_.signalSpeeds();
@@ -465,7 +489,8 @@ void Foam::fluidSolidInteraction::step()
             << runTime.value() << ' ' << dt << ' '
             << coupling_->iterations() << ' ' << coupling_->residual() << ' '
             << coupling_->converged() << ' ' << F.x() << ' ' << F.y() << ' '
-            << F.z() << ' ' << max(mag(x)) << ' ' << gclError << nl;
+            << F.z() << ' ' << max(mag(x)) << ' ' << gclError << ' '
+            << wallWork_ << ' ' << solid.energy().externalWork << nl;
         // Complete rows up to the last step after a FatalError stop too
         couplingLog_().flush();
     }
@@ -513,7 +538,10 @@ void Foam::fluidSolidInteraction::setDeltaT()
     const label writeIndex = adjustToWrites
       ? label((runTime.value() + 0.5*runTime.deltaTValue())/writeInterval)
       : 0;
-    const auto setDeltaT = [&](const scalar dt)
+    // atMost: dt is a limit (the solid's), the steps to the write time
+    // rounded up so that they stay within it (rounded to the nearest, a
+    // step up to 1.5 dt: 2 solid substeps where 1 was meant)
+    const auto setDeltaT = [&](const scalar dt, const bool atMost)
     {
         scalar newDt = dt;
         const scalar toNextWrite =
@@ -521,7 +549,8 @@ void Foam::fluidSolidInteraction::setDeltaT()
         const scalar nSteps = toNextWrite/dt;
         if (adjustToWrites && nSteps < labelMax)
         {
-            const scalar even = toNextWrite/max(1, round(nSteps));
+            const scalar even = toNextWrite
+               /max(1, atMost ? std::ceil(nSteps) : round(nSteps));
             newDt = even >= dt ? min(even, 2*dt) : max(even, 0.2*dt);
         }
         runTime.setDeltaT(newDt, false);
@@ -533,13 +562,14 @@ void Foam::fluidSolidInteraction::setDeltaT()
         const scalar maxDeltaTFact = maxCo/(CoNum + SMALL);
         const scalar deltaTFact =
             min(min(maxDeltaTFact, 1.0 + 0.1*maxDeltaTFact), 1.2);
-        setDeltaT(min(deltaTFact*runTime.deltaTValue(), maxDeltaT));
+        setDeltaT(min(deltaTFact*runTime.deltaTValue(), maxDeltaT), false);
         Info<< "deltaT = " <<  runTime.deltaTValue() << endl;
     }
 
-    if (runTime.deltaTValue() > solid_->timeStep())
+    const scalar solidDt = solidSubcycles_*solid_->timeStep();
+    if (runTime.deltaTValue() > solidDt)
     {
-        setDeltaT(solid_->timeStep());
+        setDeltaT(solidDt, true);
     }
 }
 
@@ -560,6 +590,7 @@ void Foam::fluidSolidInteraction::write(const scalar stepDeltaT)
         OFstream os(file + ".tmp");
         os.precision(17);
         os.writeEntry("fluidInterfaceDisplacement", fluidInterfaceDisplacement_);
+        os.writeEntry("wallWork", wallWork_);
         coupling_->writeState(os);
     }
     mv(file + ".tmp", file);
@@ -577,6 +608,16 @@ void Foam::fluidSolidInteraction::write(const scalar stepDeltaT)
 void Foam::fluidSolidInteraction::report()
 {
     coupling_->report(Info);
+
+    // The interface energy balance: the solid's external work is that of
+    // the interface load (its other prescribed dofs are fixed at zero)
+    const scalar solidWork = solid_->energy().externalWork;
+    const scalar balance =
+        mag(wallWork_ - solidWork)
+       /max(max(mag(wallWork_), mag(solidWork)), VSMALL);
+    Info<< "FSI interface energy: work of the fluid on the wall "
+        << wallWork_ << " J, external work of the solid " << solidWork
+        << " J, relative difference " << balance << " [-]" << endl;
 
     const scalar total = mesh_.time().elapsedCpuTime() - cpuStart_;
     Info<< "CPU time of the time loop " << total << " s: mesh motion "

@@ -66,7 +66,9 @@ Foam::solidDomain::solidDomain(const Time& runTime)
             IOobject::MUST_READ,
             IOobject::NO_WRITE
         )
-    )
+    ),
+    startTime_(0),
+    substeps_(0)
 {
     const solidInput input(dict_, runTime.globalPath());
     model_.reset(new solid::Model(input.mesh()));
@@ -186,6 +188,13 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
                 << exit(FatalIOError);
         }
         probeStrain_ = ps;
+        // The interface forces of the step that ended at this time: the
+        // start of the next step's load
+        const scalarList f0(d.get<scalarList>("interfaceForce"));
+        guarded(d, "solid restart: interfaceForce", [&]
+        {
+            force_->setForces(std::vector<double>(f0.begin(), f0.end()));
+        });
         Info<< "Solid: restarted from " << h5 << " step " << k
             << " (t = " << model_->time << " s) and " << stateFile << endl;
     }
@@ -243,6 +252,15 @@ void Foam::solidDomain::writeState(const label k) const
             })
         );
         os.writeEntry("probeStrain", probeStrain_);
+        os.writeEntry
+        (
+            "interfaceForce",
+            scalarList(UList<scalar>
+            (
+                const_cast<scalar*>(force_->forces().data()),
+                label(force_->forces().size())
+            ))
+        );
         os.writeEntry("a", list(st.a));
         os.writeEntry("fint", list(st.fint));
         os.writeEntry("fext", list(st.fext));
@@ -570,6 +588,8 @@ void Foam::solidDomain::save()
 {
     saved_.model = solid::ModelSnapshot(*model_);
     saved_.solver.reset(new solid::ExplicitSolver(*solver_));
+    startForces_ = force_->forces();
+    startTime_ = model_->time;
 }
 
 
@@ -586,11 +606,36 @@ void Foam::solidDomain::advance
     const scalar t
 )
 {
-    force_->setForces
+    guarded("solid step", [&]
+    {
+        force_->setForces
+        (
+            startForces_,
+            startTime_,
+            std::vector<double>(interfaceForces.begin(), interfaceForces.end()),
+            t
+        );
+        substeps_ = solver_->advanceTo(t, true);
+    });
+}
+
+
+Foam::scalarField Foam::solidDomain::startForces() const
+{
+    return scalarField(UList<scalar>
     (
-        std::vector<double>(interfaceForces.begin(), interfaceForces.end())
-    );
-    guarded("solid step", [&] { solver_->advanceTo(t); });
+        const_cast<scalar*>(startForces_.data()), label(startForces_.size())
+    ));
+}
+
+
+Foam::scalarField Foam::solidDomain::interfaceForces() const
+{
+    const std::vector<double>& f = force_->forces();
+    return scalarField(UList<scalar>
+    (
+        const_cast<scalar*>(f.data()), label(f.size())
+    ));
 }
 
 

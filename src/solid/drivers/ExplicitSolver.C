@@ -307,13 +307,27 @@ double solid::ExplicitSolver::step()
 }
 
 
-void solid::ExplicitSolver::advanceTo(double tEnd)
+long solid::ExplicitSolver::advanceTo(double tEnd, bool equalSteps)
 {
+    const long steps0 = steps_;
     while (model_.time < tEnd*(1 - 1e-12))
     {
-        if (model_.time + dt_ > tEnd) dt_ = tEnd - model_.time;
+        // Steps the interval left needs (1e-12: an interval of m stable
+        // steps to round-off is m steps); one: the default's arithmetic
+        const double n = equalSteps
+          ? std::ceil((tEnd - model_.time)/dt_*(1 - 1e-12))
+          : 1;
+        if (n > 1)
+        {
+            dt_ = (tEnd - model_.time)/n;
+        }
+        else if (model_.time + dt_ > tEnd)
+        {
+            dt_ = tEnd - model_.time;
+        }
         step();
     }
+    return steps_ - steps0;
 }
 
 

@@ -2,7 +2,9 @@
 #include "Model.H"
 #include "SolidError.H"
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 
 solid::NodalLoad::NodalLoad
 (
@@ -25,11 +27,14 @@ solid::NodalLoad::NodalLoad(const std::vector<int>& nodes, int dim)
     givenForces_(true),
     component_(-1),
     dim_(dim),
-    forces_(nodes.size()*dim, 0.0)
+    forces0_(nodes.size()*dim, 0.0),
+    forces_(nodes.size()*dim, 0.0),
+    time0_(0),
+    time1_(0)
 {}
 
 
-void solid::NodalLoad::setForces(const std::vector<double>& forces)
+void solid::NodalLoad::checkForces(const std::vector<double>& forces) const
 {
     if (!givenForces_)
     {
@@ -48,7 +53,40 @@ void solid::NodalLoad::setForces(const std::vector<double>& forces)
           + std::to_string(forces_.size()) + " node components"
         );
     }
+}
+
+
+void solid::NodalLoad::setForces(const std::vector<double>& forces)
+{
+    checkForces(forces);
+    forces0_ = forces;
     forces_ = forces;
+    time0_ = time1_ = 0;
+}
+
+
+void solid::NodalLoad::setForces
+(
+    const std::vector<double>& forces0,
+    double t0,
+    const std::vector<double>& forces1,
+    double t1
+)
+{
+    checkForces(forces0);
+    checkForces(forces1);
+    if (!(t1 > t0))
+    {
+        std::ostringstream os;
+        os.precision(17);
+        os << "nodal load: forces linear in time need t1 > t0, got t0 = "
+           << t0 << " s, t1 = " << t1 << " s";
+        throw SolidError(SolidError::Kind::parameter, os.str());
+    }
+    forces0_ = forces0;
+    forces_ = forces1;
+    time0_ = t0;
+    time1_ = t1;
 }
 
 
@@ -73,11 +111,19 @@ void solid::NodalLoad::addForce
                 "dimension " + std::to_string(dim)
             );
         }
+        // Weight of the end forces: 1 for a constant load and from
+        // (within round-off of) t1 on
+        const double w = time1_ > time0_
+          ? std::max(0.0, (t - time0_)/(time1_ - time0_))
+          : 1;
         for (std::size_t i = 0; i < nodes_.size(); ++i)
         {
             for (int d = 0; d < dim; ++d)
             {
-                f(dim*nodes_[i] + d) += forces_[dim*i + d];
+                const std::size_t k = dim*i + d;
+                f(dim*nodes_[i] + d) += w >= 1 - 1e-9
+                  ? forces_[k]
+                  : (1 - w)*forces0_[k] + w*forces_[k];
             }
         }
         return;
