@@ -35,6 +35,7 @@ Usage
 
 #include "SolidError.H"
 #include "caseLock.H"
+#include "inputChecks.H"
 #include "resultGuard.H"
 
 #include <chrono>
@@ -54,6 +55,17 @@ int main(int argc, char *argv[])
     argList::noParallel();
     foamTools::resultGuard::addOption();
     #include "setRootCase.H"
+    // A number beyond a double's range is a sigFpe inside OpenFOAM's
+    // tokenizer: refused first, naming the file and the entry
+    foamTools::checkNumbers
+    (
+        args,
+        {
+            "system/controlDict",
+            "constant/solidProperties",
+            "constant/indenterProperties"
+        }
+    );
     const foamTools::caseLock lock(args);    // one run per case
     #include "createTime.H"
     #include "createFields.H"
