@@ -27,19 +27,16 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
                 << "hexCoeffs (type hex)" << exit(FatalIOError);
         }
     }
-    {
-        // hexCoeffs is read with type hex only
-        wordList valid
+    // hexCoeffs is read with type hex only, and kept with tetrahedra: the
+    // 3D tutorial's Allrun -tet switches the type alone
+    foamTools::checkKeywords
+    (
+        d,
         {
             "boxSize", "nearSize", "farSize", "growthDistance", "wedgeAngle",
-            "type", "columnSize", "columnRadius"
-        };
-        if (d.getOrDefault<word>("type", "tetrahedra") == "hex")
-        {
-            valid.append("hexCoeffs");
+            "type", "columnSize", "columnRadius", "hexCoeffs"
         }
-        foamTools::checkKeywords(d, valid);
-    }
+    );
     L_ = foamTools::readInRangeOrDefault<scalar>
     (
         d, "boxSize", "m", max(2*g_.a(), g_.H()), 1e-2, false, 1e-4
