@@ -4,6 +4,7 @@
 
 #include "exactRiemannInput.H"
 #include "inputError.H"
+#include "closestKeyword.H"
 #include <cmath>
 #include <limits>
 #include <set>
@@ -84,6 +85,9 @@ void exactRiemannInput::read
     entryTable& entries
 )
 {
+    // A key given twice in one file is an error (the last would win
+    // silently); a command-line key=value replaces the file's on purpose
+    std::map<std::string, int> firstLine;
     std::string line;
     for (int lineNo = 1; std::getline(is, line); ++lineNo)
     {
@@ -107,6 +111,16 @@ void exactRiemannInput::read
                 (
                     source + ":" + std::to_string(lineNo) + ": expected "
                     "'key value', got '" + statement + "'"
+                );
+            }
+            const auto seen = firstLine.emplace(key, lineNo);
+            if (!seen.second)
+            {
+                throw inputError
+                (
+                    source + ":" + std::to_string(lineNo) + ": entry '" + key
+                  + "' is given twice (first on line "
+                  + std::to_string(seen.first->second) + "): give it once"
                 );
             }
             entries[key] = value;
@@ -165,13 +179,15 @@ exactRiemannInput::exactRiemannInput(const entryTable& entries)
         }
         if (!isCoeff && !known.count(kv.first))
         {
+            std::vector<std::string> names(stateKeys);
+            for (const auto& c : info) names.push_back(c.name);
             std::string valid;
-            for (const auto& k : stateKeys) valid += " " + k;
-            for (const auto& c : info) valid += " " + c.name;
+            for (const auto& k : names) valid += " " + k;
             throw inputError
             (
-                "unknown entry '" + kv.first + "'; valid entries for law "
-              + lawName + ":" + valid
+                "unknown entry '" + kv.first + "'"
+              + keywords::didYouMean(kv.first, names)
+              + "; valid entries for law " + lawName + ":" + valid
             );
         }
     }

@@ -1,5 +1,6 @@
 #include "indentationInput.H"
 #include "inputChecks.H"
+#include "keywordCheck.H"
 #include "IOstream.H"
 #include "ITstream.H"
 #include "token.H"
@@ -25,6 +26,20 @@ Foam::indentationInput::indentationInput
     using foamTools::readInRange;
     using foamTools::readInRangeOrDefault;
     const dictionary& d = dict_;
+    foamTools::checkKeywords
+    (
+        d,
+        {
+            "radius", "tolerance", "penaltyFactor", "contactPatch",
+            "maxDepthIncrement", "holdDeltaT0", "maxDeltaT", "holdGrowth",
+            "forceTarget", "forceTargetTolerance", "protocol", "logNewton"
+        }
+    );
+    // Our entries of system/controlDict (OpenFOAM's are the Time's)
+    foamTools::checkDuplicates
+    (
+        controlDict, {"fieldWriteInterval", "checkpointInterval"}
+    );
 
     sphere_.radius = readInRange<scalar>(d, "radius", "m", 0, 1, false);
     sphere_.tolerance = readInRange<scalar>(d, "tolerance", "m", 0, 1, false);

@@ -9,18 +9,25 @@
 
 #include "GmshReader.H"
 #include "SolidError.H"
+#include "keywordCheck.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
 
 Foam::solidInput::solidInput
 (
     const dictionary& solidProperties,
-    const fileName& caseDir
+    const fileName& caseDir,
+    const wordList& solverEntries
 )
 :
     dict_(solidProperties),
     caseDir_(caseDir)
-{}
+{
+    wordList valid{"mesh", "fixed", "materials"};
+    valid.append(solverEntries);
+    foamTools::checkKeywords(dict_, valid);
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
@@ -29,6 +36,14 @@ solid::Mesh Foam::solidInput::mesh() const
 {
     const dictionary& dict = dict_.subDict("mesh");
     const word type(dict.get<word>("type"));
+    if (type == "box" || type == "rectangle")
+    {
+        foamTools::checkKeywords(dict, {"type", "cells", "min", "max"});
+    }
+    else if (type == "gmsh")
+    {
+        foamTools::checkKeywords(dict, {"type", "file", "scale"});
+    }
     try
     {
         if (type == "box")
@@ -66,7 +81,12 @@ solid::Mesh Foam::solidInput::mesh() const
             }
             return solid::readGmsh
             (
-                file, dict.getOrDefault<scalar>("scale", 1)
+                file,
+                foamTools::readInRangeOrDefault<scalar>
+                (
+                    dict, "scale", "", 0, foamTools::noUpperBound<scalar>(),
+                    false, 1
+                )
             );
         }
     }
@@ -106,23 +126,7 @@ std::vector<solid::MaterialParameters> Foam::solidInput::materials
 
     // Every entry must name a region of the mesh: a misspelt region would
     // otherwise be ignored silently
-    for (const entry& e : mats)
-    {
-        const word& key = e.keyword();
-        if (!e.isDict())
-        {
-            FatalIOErrorInFunction(mats)
-                << "unknown entry '" << key << "'; valid: one "
-                << "sub-dictionary per region " << regions
-                << exit(FatalIOError);
-        }
-        if (!regions.found(key))
-        {
-            FatalIOErrorInFunction(mats)
-                << "sub-dictionary '" << key << "' is not a region of the "
-                << "solid mesh; regions: " << regions << exit(FatalIOError);
-        }
-    }
+    foamTools::checkKeywords(mats, regions);
 
     std::vector<solid::MaterialParameters> result;
     for (const word& region : regions)
@@ -136,6 +140,8 @@ std::vector<solid::MaterialParameters> Foam::solidInput::materials
                 << "<set>\")" << exit(FatalIOError);
         }
         const dictionary& d = mats.subDict(region);
+        // The entries themselves: solid::MaterialParameters::fromEntries
+        foamTools::checkDuplicates(d);
         solid::MaterialParameters p;
         try
         {

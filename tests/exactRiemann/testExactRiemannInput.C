@@ -103,6 +103,10 @@ TEST(exactRiemannInput, invalidEntriesNameTheEntryAndRange)
     EXPECT_TRUE(contains(m, "unknown entry 'pressure'")) << m;
     m = errorFor(with("gamma", "1.4"));
     EXPECT_TRUE(contains(m, "unknown entry 'gamma'")) << m;
+    // a misspelt entry names the closest valid one (issue 19)
+    m = errorFor(with("rhoLL", "1000"));
+    EXPECT_TRUE(contains(m, "unknown entry 'rhoLL'; did you mean 'rhoL'?"))
+        << m;
     m = errorFor(with("law", "tillotson"));
     EXPECT_TRUE(contains(m, "mieGruneisen") && contains(m, "idealGas")) << m;
     auto missing = exampleEntries();
@@ -132,4 +136,22 @@ TEST(exactRiemannInput, argumentsOverrideAndMalformedLinesAreRejected)
         riemann::exactRiemannInput::read(bad, "bad", entries),
         riemann::inputError
     );
+    // a key twice in one file is an error (the last won silently)
+    std::istringstream twice("rhoL 1;\nuL 0; rhoL 2;\n");
+    try
+    {
+        riemann::exactRiemannInput::read(twice, "twice", entries);
+        ADD_FAILURE() << "a key given twice was accepted";
+    }
+    catch (const riemann::inputError& err)
+    {
+        EXPECT_NE
+        (
+            std::string(err.what()).find
+            (
+                "twice:2: entry 'rhoL' is given twice (first on line 1)"
+            ),
+            std::string::npos
+        ) << err.what();
+    }
 }

@@ -13,6 +13,7 @@ Description
 #include "indentationInput.H"
 #include "foamTestCase.H"
 #include "IFstream.H"
+#include "OStringStream.H"
 
 #include "Material.H"
 
@@ -33,23 +34,32 @@ const char* const header =
     " object indenterProperties; }\n";
 
 //- constant/indenterProperties of the case: the header's Usage example
-//  with 'edit' appended (a later entry replaces an earlier one)
+//  with 'edit' in place of the example's entry of the edit's keyword (a
+//  keyword given twice is an error)
 dictionary indenterProperties
 (
     const foamUnit::testCase& tc,
     const std::string& edit = ""
 )
 {
-    tc.writeFile
-    (
-        "constant/indenterProperties",
+    std::string text =
         header
       + foamUnit::testCase::usageExample
         (
             "src/solidInput/indentationInput.H"
-        )
-      + edit
-    );
+        );
+    if (!edit.empty())
+    {
+        IStringStream es(edit);
+        const token key(es);
+        IStringStream is(text);
+        dictionary example(is);
+        example.remove(key.wordToken());
+        OStringStream os;
+        example.write(os, false);
+        text = os.str() + edit;
+    }
+    tc.writeFile("constant/indenterProperties", text);
     IFstream is(tc.dir()/"constant"/"indenterProperties");
     return dictionary(is);
 }
@@ -203,6 +213,8 @@ TEST(indentationInput, badEntries)
         {"radius big;", {"entry 'radius' = 'big' is not a number [m]"}},
         {"radius 1 2;", {"entry 'radius' = '1 2' is not a number [m]"}},
         {"radius { value 1e-6; }", {"entry 'radius' is a sub-dictionary"}},
+        {"holdGrowht 2;", {"unknown entry 'holdGrowht' in the top level;"
+            " did you mean 'holdGrowth'?"}},
         {"tolerance 2;", {"entry 'tolerance' = 2 m", "(0, 1] m"}},
         {"penaltyFactor 0;", {"entry 'penaltyFactor' = 0 is", "range (0, "}},
         {"maxDepthIncrement 0;", {"'maxDepthIncrement' = 0 m", "(0, 1] m"}},

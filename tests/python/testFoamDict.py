@@ -1,5 +1,7 @@
 """neuronFsi.foamDict: reading values, nested dictionaries, lists,
-comments, includes; setting entries in the text with the rest kept."""
+comments, includes; setting entries in the text with the rest kept; a
+keyword twice in one scope and a number beyond a double's range refused;
+the closest valid keyword of a misspelt one (check_keywords)."""
 import os
 import unittest
 
@@ -88,6 +90,56 @@ class FoamDict(TempDirTestCase):
                 "C10": 6.67, "mu1": 862.22}}})
         finally:
             del os.environ["FOAMDICT_TEST_DIR"]
+
+    def testDuplicatesInOneScopeOfOneText(self):
+        with self.assertRaisesRegex(
+                foamDict.DictError,
+                r"x, line 3: entry 'C10' is given twice in "
+                r"'materials/nucleus' \(first on line 2"):
+            foamDict.parse("materials { nucleus {\nC10 1;\nC10 2; } }", "x")
+        with self.assertRaisesRegex(foamDict.DictError,
+                                    "'fluid' is given twice in the top"):
+            foamDict.parse("fluid { a 1; }\nfluid { b 2; }")
+        # the same keyword in two scopes, and an included entry the text
+        # replaces, are not duplicates
+        self.assertEqual(foamDict.parse("a 1; b { a 2; }"),
+                         {"a": 1, "b": {"a": 2}})
+        self.write("set", "nucleus { C10 13.33; }\n")
+        p = self.write("solidProperties", 'materials { #include "set"\n'
+                       'nucleus { C10 6.67; } }\n')
+        self.assertEqual(foamDict.read(p),
+                         {"materials": {"nucleus": {"C10": 6.67}}})
+
+    def testNumberBeyondDoubleRange(self):
+        with self.assertRaisesRegex(foamDict.DictError,
+                                    "x, line 2: '1e999' is beyond the range"):
+            foamDict.parse("a 1;\nC10 1e999;", "x")
+        with self.assertRaisesRegex(foamDict.DictError, "'-1e400'"):
+            foamDict.parse("t (1 -1e400);", "x")
+        # nan and inf are words, as OpenFOAM reads them
+        self.assertEqual(foamDict.parse("a nan; b inf;"),
+                         {"a": "nan", "b": "inf"})
+
+    def testClosestKeyword(self):
+        valid = ["scheme", "maxIter", "tolerance", "velocityScale"]
+        self.assertEqual(foamDict.edit_distance("kitten", "sitting"), 3)
+        self.assertEqual(foamDict.edit_distance("tua1", "tau1"), 1)
+        self.assertEqual(foamDict.closest("maxIterr", valid), "maxIter")
+        self.assertEqual(foamDict.closest("sceme", valid), "scheme")
+        self.assertIsNone(foamDict.closest("xyz", valid))
+        # max(2, len/3): 12 characters, 4 edits close, 5 not
+        self.assertEqual(foamDict.closest("abcdefghWXYZ", ["abcdefghijkl"]),
+                         "abcdefghijkl")
+        self.assertIsNone(foamDict.closest("abcdefgVWXYZ", ["abcdefghijkl"]))
+        self.assertEqual(foamDict.did_you_mean("tolerence", valid),
+                         "; did you mean 'tolerance'?")
+        self.assertEqual(foamDict.did_you_mean("xyz", valid), "")
+        foamDict.check_keywords({"scheme": "robin"}, valid, "f")
+        with self.assertRaisesRegex(
+                foamDict.DictError,
+                r"^f: unknown entry 'maxIterr'; did you mean 'maxIter'\?; "
+                r"valid entries: \(scheme maxIter tolerance velocityScale\)"):
+            foamDict.check_keywords({"maxIterr": 3}, valid, "f")
 
 
 if __name__ == "__main__":

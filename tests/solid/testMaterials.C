@@ -573,6 +573,14 @@ TEST(SolidMaterial, ParameterEntriesAndValidation)
               std::string::npos);
     EXPECT_NE(errorOf({{"cO", "1"}}).find("unknown entry 'cO'"),
               std::string::npos);
+    // the closest valid name (issue 19), a branch's with its number
+    EXPECT_NE(errorOf({{"C10", "1"}, {"mu1", "1"}, {"tua1", "1"}})
+              .find("unknown entry 'tua1'; did you mean 'tau1'?"),
+              std::string::npos);
+    EXPECT_NE(errorOf({{"C10", "1"}, {"Gama0", "1"}})
+              .find("did you mean 'Gamma0'?"), std::string::npos);
+    EXPECT_EQ(errorOf({{"C10", "1"}, {"colour", "1"}}).find("did you mean"),
+              std::string::npos);
     EXPECT_NE(errorOf({{"C10", "abc"}}).find("not a number"),
               std::string::npos);
     EXPECT_NE(errorOf({{"C10", "1"}, {"volumetric", "foo"}})

@@ -36,6 +36,7 @@ Usage
 
 #include "SolidError.H"
 #include "caseLock.H"
+#include "inputChecks.H"
 #include "resultGuard.H"
 
 #include <chrono>
@@ -56,6 +57,17 @@ int main(int argc, char *argv[])
     foamTools::resultGuard::addOption();
     #include "setRootCase.H"
     foamTools::checkCasePath(args);    // a path OpenFOAM can hold
+    // A number beyond a double's range is a sigFpe inside OpenFOAM's
+    // tokenizer: refused first, naming the file and the entry
+    foamTools::checkNumbers
+    (
+        args,
+        {
+            "system/controlDict",
+            "constant/solidProperties",
+            "constant/indenterProperties"
+        }
+    );
     const foamTools::caseLock lock(args);    // one run per case
     #include "createTime.H"
     #include "createFields.H"

@@ -55,7 +55,22 @@ int main(int argc, char *argv[])
     #include "setRootCaseLists.H"
     foamTools::checkCasePath(args);    // a path OpenFOAM can hold
     const foamTools::caseLock lock(args);    // one run per case
-    foamTools::checkControlDict(args);
+    // A number beyond a double's range is a sigFpe inside OpenFOAM's
+    // tokenizer: refused first, naming the file and the entry
+    foamTools::checkNumbers
+    (
+        args,
+        {
+            "system/controlDict",
+            "system/fvSolution",
+            "constant/thermophysicalProperties"
+        }
+    );
+    // our entries of controlDict given once
+    foamTools::checkControlDict
+    (
+        args, {"adjustTimeStep", "maxCo", "maxDeltaT"}
+    );
     foamTools::writeGuard::discardIncompleteTimes(args);
     #include "createTime.H"
     #include "createMesh.H"

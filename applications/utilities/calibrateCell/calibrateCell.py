@@ -104,11 +104,11 @@ class Parameter:
         at = "%s: parameter '%s'" % (where, name)
         if not isinstance(e, dict):
             raise InputError("%s must be a sub-dictionary" % at)
-        known = {"value", "min", "max", "log", "fit", "scales"}
-        for k in e:
-            if k not in known:
-                raise InputError("%s: unknown entry '%s' (valid: %s)"
-                                 % (at, k, ", ".join(sorted(known))))
+        try:
+            foamDict.check_keywords(
+                e, ["value", "min", "max", "log", "fit", "scales"], at)
+        except foamDict.DictError as err:
+            raise InputError(str(err))
         self.name = name
         self.fit = bool(e.get("fit", True))
         self.log = bool(e.get("log", False))
@@ -160,6 +160,14 @@ class Calibration:
             raise InputError(str(err))
         self.d = d
         where = dict_path
+        try:
+            foamDict.check_keywords(
+                d, ["nProcs", "maxIterations", "tolerance",
+                    "finiteDifferenceStep", "covariance", "parameters",
+                    "relativeError", "targets", "protocol",
+                    "meshSizeFactor"], where)
+        except foamDict.DictError as err:
+            raise InputError(str(err))
         # -nProcs 0 is an error, not "unset"
         self.nprocs = int(args.nProcs if args.nProcs is not None
                           else d.get("nProcs", 2))

@@ -8,6 +8,8 @@ import re
 
 import numpy as np
 
+from neuronFsi import foamDict
+
 
 class TargetError(Exception):
     """A bad target; the message names the file and the entry/column/row."""
@@ -110,11 +112,12 @@ class Targets:
         at = "%s: target '%s'" % (where, name)
         if not isinstance(e, dict):
             raise TargetError("%s must be a sub-dictionary" % at)
-        known = {"peak", "value", "file", "sigma", "relativeError", "weight"}
-        for k in e:
-            if k not in known:
-                raise TargetError("%s: unknown entry '%s' (valid: %s)"
-                                  % (at, k, ", ".join(sorted(known))))
+        try:
+            foamDict.check_keywords(
+                e, ["peak", "value", "file", "sigma", "relativeError",
+                    "weight"], at)
+        except foamDict.DictError as err:
+            raise TargetError(str(err))
 
         def positive(key, default=None):
             v = e.get(key, default)

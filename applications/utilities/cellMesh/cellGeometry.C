@@ -2,6 +2,7 @@
 #include "IFstream.H"
 #include "mathematicalConstants.H"
 #include "inputChecks.H"
+#include "keywordCheck.H"
 
 using Foam::constant::mathematical::pi;
 
@@ -26,6 +27,7 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
 :
     file_(dictFile)
 {
+    foamTools::checkNumbers(file_);
     IFstream is(file_);
     if (!is.good())
     {
@@ -33,6 +35,18 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
             << "Cannot read " << file_ << exit(FatalError);
     }
     const dictionary dict(is);
+    // fluid{}: fluidBox
+    foamTools::checkKeywords
+    (
+        dict,
+        {
+            "mode", "nucleusShape", "cellDiameter", "cellHeight",
+            "nucleusVolumeFraction", "membraneThickness", "membraneLayers",
+            "nucleusSize", "cytoplasmSize", "membraneSize", "azimuthSize",
+            "contactRadius", "contactSize", "contactDepth", "maxElements",
+            "fluid"
+        }
+    );
 
     mode_ = meshModeNames.get("mode", dict);
     shape_ = nucleusShapeNames.getOrDefault

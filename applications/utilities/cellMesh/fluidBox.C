@@ -1,5 +1,6 @@
 #include "fluidBox.H"
 #include "inputChecks.H"
+#include "keywordCheck.H"
 #include "meshQuality.H"
 #include "mathematicalConstants.H"
 #include "OSspecific.H"
@@ -16,6 +17,26 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
     g_(geom)
 {
     const dictionary& d = g_.fluidDict();
+    for (const word key : {"axialSize", "lateralSize", "innerMargin",
+                           "maxCells"})
+    {
+        if (d.found(key))
+        {
+            FatalIOErrorInFunction(d)
+                << "entry '" << key << "' belongs in the sub-dictionary "
+                << "hexCoeffs (type hex)" << exit(FatalIOError);
+        }
+    }
+    // hexCoeffs is read with type hex only, and kept with tetrahedra: the
+    // 3D tutorial's Allrun -tet switches the type alone
+    foamTools::checkKeywords
+    (
+        d,
+        {
+            "boxSize", "nearSize", "farSize", "growthDistance", "wedgeAngle",
+            "type", "columnSize", "columnRadius", "hexCoeffs", "maxCells"
+        }
+    );
     L_ = foamTools::readInRangeOrDefault<scalar>
     (
         d, "boxSize", "m", max(2*g_.a(), g_.H()), 1e-2, false, 1e-4
@@ -242,6 +263,10 @@ void Foam::fluidBox::readHex(const dictionary& d)
             << "the optional lateralSize, innerMargin, maxCells)"
             << exit(FatalIOError);
     }
+    foamTools::checkKeywords
+    (
+        d, {"axialSize", "lateralSize", "innerMargin", "maxCells"}
+    );
     const scalar a = g_.a(), H = g_.H();
     hexFluidMesh::sizes s;
     s.a = a;

@@ -67,6 +67,16 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
     foamTools::checkCasePath(args);    // a path OpenFOAM can hold
+    // A number beyond a double's range is a sigFpe inside OpenFOAM's
+    // tokenizer: refused first, naming the file and the entry
+    foamTools::checkNumbers
+    (
+        args,
+        {
+            "system/controlDict",
+            "constant/thermophysicalProperties"
+        }
+    );
 
     const riemannProblem problem(args.path());
 
@@ -75,6 +85,7 @@ int main(int argc, char *argv[])
     instantList timeDirs = timeSelector::select0(runTime, args);
 
     #include "createMesh.H"
+    problem.checkDiaphragm(mesh);
 
     // Only times after the start are compared: a case without one has not
     // been run (or its results were removed), which is an error, not a

@@ -25,11 +25,22 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
     foamTools::checkCasePath(args);    // a path OpenFOAM can hold
+    // A number beyond a double's range is a sigFpe inside OpenFOAM's
+    // tokenizer: refused first, naming the file and the entry
+    foamTools::checkNumbers
+    (
+        args,
+        {
+            "system/controlDict",
+            "constant/thermophysicalProperties"
+        }
+    );
 
     const riemannProblem problem(args.path());
 
     #include "createTime.H"
     #include "createMesh.H"
+    problem.checkDiaphragm(mesh);
 
 
 

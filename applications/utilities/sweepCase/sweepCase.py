@@ -70,8 +70,10 @@ def split_entry(case, entry):
                                      % (os.path.join(case, f), k))
                 d = d[k]
             if keys[-1] not in d or isinstance(d[keys[-1]], dict):
-                raise SweepError("%s: no entry '%s' (entries: %s)"
+                values = [k for k in d if not isinstance(d[k], dict)]
+                raise SweepError("%s: no entry '%s'%s (entries: %s)"
                                  % (os.path.join(case, f), "/".join(keys),
+                                    foamDict.did_you_mean(keys[-1], values),
                                     ", ".join(d)))
             return f, keys
     raise SweepError("-entry %s: no file of case %s in it" % (entry, case))

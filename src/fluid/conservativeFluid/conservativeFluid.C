@@ -1,6 +1,33 @@
 #include "conservativeFluid.H"
 #include "fvc.H"
 #include "wedgePolyPatch.H"
+#include "keywordCheck.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- riemann{} of system/fvSolution after the keyword check: ours, in a
+//  dictionary of OpenFOAM (whose other entries are not checked)
+const Foam::dictionary& checkedRiemannDict(const Foam::fvMesh& mesh)
+{
+    using namespace Foam;
+
+    const dictionary& solution = mesh.solutionDict();
+    foamTools::checkDuplicates(solution, {"riemann"});
+    const dictionary& dict = solution.subDict("riemann");
+    wordList valid{"riemannSolver", "timeScheme", "viscous"};
+    if (dict.getOrDefault<Switch>("viscous", false))
+    {
+        valid.append("mu");
+    }
+    foamTools::checkKeywords(dict, valid);
+    return dict;
+}
+
+} // End anonymous namespace
+
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -44,7 +71,7 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
         ),
         thermo_->rho()*(thermo_->e() + 0.5*magSqr(U_))
     ),
-    flux_(riemannFlux::New(mesh, mesh.solutionDict().subDict("riemann"))),
+    flux_(riemannFlux::New(mesh, checkedRiemannDict(mesh))),
     rk_(mesh.solutionDict().subDict("riemann")),
     viscous_
     (

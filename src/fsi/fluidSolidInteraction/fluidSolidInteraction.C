@@ -8,11 +8,35 @@
 #include "inputChecks.H"
 
 #include <cmath>
+#include "keywordCheck.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
 namespace
 {
+
+//- The interface{} of constant/fsiProperties, after the keyword check of
+//  the file and of interface{} (coupling{}: couplingScheme::New)
+const Foam::dictionary& checkedInterfaceDict
+(
+    const Foam::dictionary& fsiProperties
+)
+{
+    using namespace Foam;
+
+    foamTools::checkKeywords(fsiProperties, {"interface", "coupling"});
+    const dictionary& interfaceDict = fsiProperties.subDict("interface");
+    foamTools::checkKeywords
+    (
+        interfaceDict,
+        {
+            "fluidPatch", "solidFaceSet", "mapTolerance", "map", "load",
+            "axisOrigin", "axisDirection", "motionDistance", "motionNearest"
+        }
+    );
+    return interfaceDict;
+}
+
 
 //- The index of interface{} fluidPatch in the fluid mesh
 Foam::label interfacePatchIndex
@@ -280,7 +304,10 @@ Foam::fluidSolidInteraction::fluidSolidInteraction
             IOobject::NO_WRITE
         )
     ),
-    patchi_(interfacePatchIndex(mesh, fsiProperties_.subDict("interface"))),
+    patchi_
+    (
+        interfacePatchIndex(mesh, checkedInterfaceDict(fsiProperties_))
+    ),
     fsiPatch_(mesh.boundaryMesh()[patchi_]),
     pointDisplacement_(nullptr),
     solidSubcycles_

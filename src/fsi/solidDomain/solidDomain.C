@@ -1,5 +1,6 @@
 #include "solidDomain.H"
 #include "solidInput.H"
+#include "keywordCheck.H"
 #include "SolidError.H"
 #include "IOobject.H"
 #include "pointField.H"
@@ -70,7 +71,15 @@ Foam::solidDomain::solidDomain(const Time& runTime)
     startTime_(0),
     substeps_(0)
 {
-    const solidInput input(dict_, runTime.globalPath());
+    const solidInput input
+    (
+        dict_, runTime.globalPath(),
+        {
+            "explicitSafety", "hourglassViscosity",
+            "hourglassViscosityRegions", "probes", "interfaceProbe",
+            "interfaces"
+        }
+    );
     model_.reset(new solid::Model(input.mesh()));
     input.setup(*model_);
 }
@@ -114,6 +123,10 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
     {
         // kappa per region name, overriding hourglassViscosity there
         const dictionary& hr = dict_.subDict("hourglassViscosityRegions");
+        foamTools::checkKeywords
+        (
+            hr, wordList(mesh().regionNames.begin(), mesh().regionNames.end())
+        );
         for (const entry& e : hr)
         {
             set.hourglassRegions[e.keyword()] = hr.get<scalar>(e.keyword());
@@ -427,6 +440,7 @@ void Foam::solidDomain::setupProbes()
     if (dict_.isDict("probes"))
     {
         const dictionary& pd = dict_.subDict("probes");
+        foamTools::checkDuplicates(pd);
         for (const entry& e : pd)
         {
             if (!e.isDict())
@@ -438,6 +452,7 @@ void Foam::solidDomain::setupProbes()
                     << " region optional)" << exit(FatalIOError);
             }
             const dictionary& d = e.dict();
+            foamTools::checkKeywords(d, {"point", "region"});
             addProbe
             (
                 e.keyword(),
@@ -462,6 +477,7 @@ void Foam::solidDomain::setupProbes()
     if (dict_.found("interfaceProbe"))
     {
         const dictionary& ip = dict_.subDict("interfaceProbe");
+        foamTools::checkKeywords(ip, {"regions", "heightFraction", "side"});
         const Pair<word> regions(ip.get<Pair<word>>("regions"));
         const scalar f = ip.get<scalar>("heightFraction");
         if (!(f > 0 && f < 1))

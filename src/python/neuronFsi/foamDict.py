@@ -9,9 +9,17 @@ strings, // and /* */ comments, and #include "file", #sinclude "file" (or
 earlier one, sub-dictionaries are merged) when the text is read from a file
 by read(); environment variables in an included file's name are expanded
 (e.g. "$PROJECT_DIR/etc/caseDicts/cellMaterials/table"). No $variables in
-entries, no other directives.
+entries, no other directives. A keyword given twice in one scope of one
+text is a DictError (OpenFOAM would keep the last silently; an entry of an
+included file replaced by the text is not a duplicate), as in the C++
+readers (src/foamTools/keywordCheck.H).
+
+check_keywords(d, valid, where) refuses a keyword that is not valid with
+the closest valid one when it is close (closest: the C++ readers' rule of
+src/foamTools/closestKeyword.H, the same distance and threshold).
 """
 
+import math
 import os
 import re
 
@@ -43,6 +51,51 @@ def tokens(text, name="<text>"):
             out.append((m.group(), m.start(), m.end()))
         pos = m.end()
     return out
+
+
+def edit_distance(a, b):
+    """Optimal string alignment distance: insertions, deletions,
+    substitutions and swaps of two adjacent characters count 1 each."""
+    d = [[0]*(len(b) + 1) for _ in range(len(a) + 1)]
+    for i in range(len(a) + 1):
+        d[i][0] = i
+    for j in range(len(b) + 1):
+        d[0][j] = j
+    for i in range(1, len(a) + 1):
+        for j in range(1, len(b) + 1):
+            d[i][j] = min(d[i - 1][j] + 1, d[i][j - 1] + 1,
+                          d[i - 1][j - 1] + (a[i - 1] != b[j - 1]))
+            if i > 1 and j > 1 and a[i - 1] == b[j - 2] \
+                    and a[i - 2] == b[j - 1]:
+                d[i][j] = min(d[i][j], d[i - 2][j - 2] + 1)
+    return d[len(a)][len(b)]
+
+
+def closest(key, valid):
+    """The valid keyword nearest to key, None unless within
+    max(2, len(key)//3) edits; ties go to the first in valid."""
+    best, best_d = None, max(2, len(key)//3) + 1
+    for v in valid:
+        dist = edit_distance(key, v)
+        if dist < best_d:
+            best, best_d = v, dist
+    return best
+
+
+def did_you_mean(key, valid):
+    """"; did you mean 'X'?" for the closest valid keyword, or ""."""
+    c = closest(key, valid)
+    return "" if c is None else "; did you mean '%s'?" % c
+
+
+def check_keywords(d, valid, where):
+    """DictError naming where (the file and scope), the first keyword of
+    d that is not in valid, the closest valid one and the valid ones."""
+    for k in d:
+        if k not in valid:
+            raise DictError("%s: unknown entry '%s'%s; valid entries: (%s)"
+                            % (where, k, did_you_mean(k, list(valid)),
+                               " ".join(valid)))
 
 
 def _line(text, pos):
@@ -86,6 +139,16 @@ def parse(text, name="<text>", base=None):
         pos = toks[k][1] if k < len(toks) else len(text)
         raise DictError("%s, line %d: %s" % (name, _line(text, pos), msg))
 
+    def value(k):
+        t = toks[k][0]
+        v = _value(t)
+        if isinstance(v, float) and not math.isfinite(v):
+            if t.lower().lstrip("+-") in ("nan", "inf", "infinity"):
+                return t            # a word, as OpenFOAM reads it
+            err("'%s' is beyond the range of a double (|x| < 1.8e308)" % t,
+                k)
+        return v
+
     def parse_list():
         items = []
         while True:
@@ -100,7 +163,7 @@ def parse(text, name="<text>", base=None):
             elif t in "{};":
                 err("unexpected '%s' in a list" % t, i[0] - 1)
             else:
-                items.append(_value(t))
+                items.append(value(i[0] - 1))
 
     def directive(key):
         if key not in ("#include", "#sinclude", "#includeIfPresent"):
@@ -118,8 +181,18 @@ def parse(text, name="<text>", base=None):
             return {}
         return read(path)
 
-    def parse_dict(closing):
+    def parse_dict(closing, scope):
         d = {}
+        seen = {}
+
+        def once(key, k):
+            if key in seen:
+                err("entry '%s' is given twice in %s (first on line %d; "
+                    "OpenFOAM would keep the last silently): give it once"
+                    % (key, "'%s'" % "/".join(scope) if scope
+                       else "the top level", seen[key]), k)
+            seen[key] = _line(text, toks[k][1])
+
         while i[0] < len(toks):
             key, _, _ = toks[i[0]]
             if key == "}":
@@ -134,9 +207,10 @@ def parse(text, name="<text>", base=None):
                 _merge(d, directive(key))
                 continue
             key = _value(key) if key.startswith('"') else key
+            once(key, i[0] - 1)
             if i[0] < len(toks) and toks[i[0]][0] == "{":
                 i[0] += 1
-                _merge(d, {key: parse_dict(True)})
+                _merge(d, {key: parse_dict(True, scope + [key])})
                 continue
             vals = []
             while True:
@@ -151,13 +225,13 @@ def parse(text, name="<text>", base=None):
                 elif t in "{})":
                     err("unexpected '%s' in entry '%s'" % (t, key), i[0] - 1)
                 else:
-                    vals.append(_value(t))
+                    vals.append(value(i[0] - 1))
             d[key] = vals[0] if len(vals) == 1 else vals
         if closing:
             err("unclosed '{'", len(toks))
         return d
 
-    d = parse_dict(False)
+    d = parse_dict(False, [])
     d.pop("FoamFile", None)
     return d
 

@@ -3,6 +3,7 @@
 #include "QuadraticVolumetric.H"
 #include "MieGruneisenVolumetric.H"
 #include "SolidError.H"
+#include "closestKeyword.H"
 
 #include <cstdlib>
 #include <limits>
@@ -78,12 +79,27 @@ solid::MaterialParameters solid::MaterialParameters::fromEntries
         }
         if (!branch)
         {
+            // The closest of the names, the branches' numbered as the key
+            // is (tua2: tau2), else as branch 1
+            const auto d = key.find_last_not_of("0123456789");
+            const std::string n =
+                d + 1 < key.size() ? key.substr(d + 1) : std::string("1");
+            std::vector<std::string> names{"volumetric"};
             std::string valid;
-            for (const auto& s : scalars) valid += s.first + " ";
+            for (const auto& s : scalars)
+            {
+                names.push_back(s.first);
+                valid += s.first + " ";
+            }
+            for (const char* prefix : {"mu", "tau", "eta"})
+            {
+                names.push_back(prefix + n);
+            }
             throw SolidError
             (
                 SolidError::Kind::parameter,
-                ctx + ": unknown entry '" + key + "'; valid entries: "
+                ctx + ": unknown entry '" + key + "'"
+              + keywords::didYouMean(key, names) + "; valid entries: "
               + valid + "volumetric muN tauN etaN (N = 1, 2, ...)"
             );
         }

@@ -1,5 +1,6 @@
 #include "rhoEThermo.H"
 #include "Time.H"
+#include "keywordCheck.H"
 
 Foam::autoPtr<Foam::rhoEThermo> Foam::rhoEThermo::New(const fvMesh& mesh)
 {
@@ -15,6 +16,15 @@ Foam::autoPtr<Foam::rhoEThermo> Foam::rhoEThermo::New(const fvMesh& mesh)
             false
         )
     );
+
+    // The coefficients of every law may stay in the file (a case switches
+    // the law by its name); those of the selected one: rhoEThermoModel
+    wordList valid{"equationOfState"};
+    for (const word& law : meshConstructorTablePtr_->sortedToc())
+    {
+        valid.append(law + "Coeffs");
+    }
+    foamTools::checkKeywords(dict, valid);
 
     const word lawName(dict.get<word>("equationOfState"));
 

@@ -1,11 +1,13 @@
 #include "rhoEThermoModel.H"
 #include "eosStatus.H"
+#include "keywordCheck.H"
 
 template<class Law>
 Law Foam::rhoEThermoModel<Law>::makeLaw(const dictionary& dict)
 {
     const dictionary& coeffs =
         dict.subDict(word(Law::typeName) + "Coeffs");
+    foamTools::checkKeywords(coeffs, coeffNames());
     try
     {
         return Law(readParameters(coeffs));

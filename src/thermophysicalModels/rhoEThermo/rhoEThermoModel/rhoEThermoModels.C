@@ -46,6 +46,13 @@ namespace
 
 
 template<>
+wordList rhoEThermoModel<eos::MieGruneisen>::coeffNames()
+{
+    return {"rho0", "C0", "s", "Gamma0", "Cv", "T0"};
+}
+
+
+template<>
 eos::MieGruneisen::Parameters
 rhoEThermoModel<eos::MieGruneisen>::readParameters(const dictionary& dict)
 {
@@ -61,6 +68,13 @@ rhoEThermoModel<eos::MieGruneisen>::readParameters(const dictionary& dict)
 
 
 template<>
+wordList rhoEThermoModel<eos::StiffenedGas>::coeffNames()
+{
+    return {"gamma", "pInf", "Cv"};
+}
+
+
+template<>
 eos::StiffenedGas::Parameters
 rhoEThermoModel<eos::StiffenedGas>::readParameters(const dictionary& dict)
 {
@@ -69,6 +83,13 @@ rhoEThermoModel<eos::StiffenedGas>::readParameters(const dictionary& dict)
     par.pInf = readCoeff(dict, "pInf", dimPressure);
     par.Cv = readCoeff(dict, "Cv", dimEnergy/dimMass/dimTemperature);
     return par;
+}
+
+
+template<>
+wordList rhoEThermoModel<eos::IdealGas>::coeffNames()
+{
+    return {"gamma", "Cv"};
 }
 
 

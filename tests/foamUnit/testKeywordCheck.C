@@ -1,0 +1,282 @@
+/*---------------------------------------------------------------------------*\
+Description
+    Unit tests of the keyword check of our dictionaries (issue 19):
+    the suggestion of the closest valid keyword (src/foamTools/
+    closestKeyword.H: edit distance with adjacent swaps, the threshold
+    max(2, size/3)), the refusal of an unknown keyword naming file, entry
+    and suggestion, and the duplicates of one scope of one file found in
+    its text (src/foamTools/keywordCheck.H): not an entry of an included
+    file replaced by the text, not a duplicate in another scope, not two
+    #include lines; also in a copy of a sub-dictionary and after an
+    #include on the same line. A number beyond a double's range is found
+    in the text (and in an included file) with its file, line and entry,
+    before OpenFOAM's tokenizer traps on it (checkNumbers, inputChecks.H).
+
+\*---------------------------------------------------------------------------*/
+
+#include "keywordCheck.H"
+#include "inputChecks.H"
+#include "foamTestCase.H"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+using namespace Foam;
+
+namespace
+{
+
+//- The message of the FatalIOError of f, "" if none
+template<class F>
+std::string errorOf(F f)
+{
+    try
+    {
+        f();
+    }
+    catch (const Foam::error& err)
+    {
+        const IOerror* io = dynamic_cast<const IOerror*>(&err);
+        return err.message() + " file: " + (io ? io->ioFileName() : "");
+    }
+    return std::string();
+}
+
+
+//- The dictionary of file rel of the test case
+dictionary readDict(const foamUnit::testCase& tc, const fileName& rel)
+{
+    IFstream is(tc.dir()/rel);
+    return dictionary(is);
+}
+
+const std::vector<std::string> coupling
+{
+    "scheme", "maxIter", "tolerance", "velocityScale", "onNonConvergence"
+};
+
+} // End anonymous namespace
+
+
+TEST(keywordCheck, editDistance)
+{
+    EXPECT_EQ(keywords::editDistance("", ""), 0u);
+    EXPECT_EQ(keywords::editDistance("", "abc"), 3u);
+    EXPECT_EQ(keywords::editDistance("kitten", "sitting"), 3u);
+    // an adjacent swap is one edit (plain Levenshtein: 2)
+    EXPECT_EQ(keywords::editDistance("tua1", "tau1"), 1u);
+    EXPECT_EQ(keywords::editDistance("mapTolerence", "mapTolerance"), 1u);
+    // case counts
+    EXPECT_EQ(keywords::editDistance("c10", "C10"), 1u);
+}
+
+
+TEST(keywordCheck, closest)
+{
+    EXPECT_EQ(keywords::closest("maxIterr", coupling), "maxIter");
+    EXPECT_EQ(keywords::closest("tolerence", coupling), "tolerance");
+    EXPECT_EQ(keywords::closest("velocityscale", coupling), "velocityScale");
+    // threshold max(2, size/3): 'sceme' (5) one edit, 'xyz' none close
+    EXPECT_EQ(keywords::closest("sceme", coupling), "scheme");
+    EXPECT_EQ(keywords::closest("xyz", coupling), "");
+    // 12 characters: 4 edits are close, 5 are not
+    const std::vector<std::string> v{"abcdefghijkl"};
+    EXPECT_EQ(keywords::closest("abcdefghWXYZ", v), "abcdefghijkl");
+    EXPECT_EQ(keywords::closest("abcdefgVWXYZ", v), "");
+    // 3 characters: 2 edits are close
+    EXPECT_EQ(keywords::closest("mu", {"mu1"}), "mu1");
+    EXPECT_EQ(keywords::closest("Cv", {"C10"}), "C10");
+    EXPECT_EQ(keywords::closest("xy", {"C10"}), "");
+    // ties: the first valid one
+    EXPECT_EQ(keywords::closest("ab", {"ax", "xb"}), "ax");
+    EXPECT_EQ(keywords::didYouMean("maxIterr", coupling),
+        "; did you mean 'maxIter'?");
+    EXPECT_EQ(keywords::didYouMean("xyz", coupling), "");
+}
+
+
+TEST(keywordCheck, unknownKeyword)
+{
+    foamUnit::testCase tc("keywordCheck");
+    tc.writeFile
+    (
+        "constant/fsiProperties",
+        "FoamFile { version 2.0; format ascii; class dictionary; }\n"
+        "coupling\n{\n    scheme robin;\n    maxIterr 5;\n}\n"
+    );
+    const dictionary top(readDict(tc, "constant/fsiProperties"));
+    EXPECT_EQ(errorOf([&]{ foamTools::checkKeywords(top, {"coupling"}); }),
+        "");
+    const wordList valid(coupling.begin(), coupling.end());
+    const std::string msg = errorOf
+    (
+        [&]{ foamTools::checkKeywords(top.subDict("coupling"), valid); }
+    );
+    for
+    (
+        const std::string part
+      : {
+            "unknown entry 'maxIterr' in 'coupling'",
+            "did you mean 'maxIter'?",
+            "(scheme maxIter tolerance velocityScale onNonConvergence)",
+            "constant/fsiProperties.coupling"
+        }
+    )
+    {
+        EXPECT_NE(msg.find(part), std::string::npos)
+            << "no \"" << part << "\" in: " << msg;
+    }
+    // FoamFile is valid at the top of a file only
+    EXPECT_NE(errorOf([&]{ foamTools::checkKeywords(top, {}); }), "");
+}
+
+
+TEST(keywordCheck, duplicates)
+{
+    foamUnit::testCase tc("keywordCheck");
+    tc.writeFile
+    (
+        "constant/set",
+        "nucleus { C10 13.33; d0 0; }\ncytoplasm { C10 1.6; }\n"
+    );
+    tc.writeFile
+    (
+        "constant/solidProperties",
+        "FoamFile { version 2.0; format ascii; class dictionary; }\n"
+        "x 1;\n"
+        "materials\n"
+        "{\n"
+        "    #include \"set\"\n"                 // line 5
+        "    nucleus { C10 20; mu1 $x; }\n"      // overrides: no duplicate
+        "    #sinclude \"none.allrun\"\n"
+        "    #sinclude \"none2.allrun\"\n"
+        "    cytoplasm { C10 2; C10 3; }\n"      // line 9
+        "}\n"
+        "probes { a (1 2 3); a (1 2 3); }\n"     // line 11
+    );
+    const dictionary top(readDict(tc, "constant/solidProperties"));
+    const dictionary& mats = top.subDict("materials");
+    EXPECT_EQ(errorOf([&]{ foamTools::checkDuplicates(top); }), "");
+    EXPECT_EQ(errorOf([&]{ foamTools::checkDuplicates(mats); }), "");
+    EXPECT_EQ
+    (
+        errorOf([&]{ foamTools::checkDuplicates(mats.subDict("nucleus")); }),
+        ""
+    );
+    // a duplicate of the scope
+    const std::string msg = errorOf
+    (
+        [&]{ foamTools::checkDuplicates(mats.subDict("cytoplasm")); }
+    );
+    for
+    (
+        const std::string part
+      : {
+            "entry 'C10' is given 2 times in 'materials/cytoplasm' (lines 9"
+            " and 9", "constant/solidProperties"
+        }
+    )
+    {
+        EXPECT_NE(msg.find(part), std::string::npos)
+            << "no \"" << part << "\" in: " << msg;
+    }
+    // in a copy of the sub-dictionary (no parent, same name)
+    const dictionary probes(top.subDict("probes"));
+    EXPECT_NE
+    (
+        errorOf([&]{ foamTools::checkDuplicates(probes); })
+       .find("entry 'a' is given 2 times in 'probes' (lines 11 and 11"),
+        std::string::npos
+    );
+    // only the keys asked for
+    EXPECT_EQ(errorOf([&]{ foamTools::checkDuplicates(probes, {"b"}); }), "");
+    // checkKeywords checks duplicates too
+    EXPECT_NE
+    (
+        errorOf
+        (
+            [&]{ foamTools::checkKeywords(mats.subDict("cytoplasm"), {"C10"}); }
+        ),
+        ""
+    );
+}
+
+
+TEST(keywordCheck, duplicateAfterIncludeOnItsLine)
+{
+    foamUnit::testCase tc("keywordCheck");
+    tc.writeFile("constant/set", "nucleus { C10 13.33; }\n");
+    tc.writeFile
+    (
+        "constant/solidProperties",
+        "materials { #include \"set\" nucleus { C10 1; C10 2; } }\n"
+    );
+    const dictionary top(readDict(tc, "constant/solidProperties"));
+    EXPECT_NE
+    (
+        errorOf
+        (
+            [&]
+            {
+                foamTools::checkDuplicates
+                (
+                    top.subDict("materials").subDict("nucleus")
+                );
+            }
+        ).find("entry 'C10' is given 2 times in 'materials/nucleus'"),
+        std::string::npos
+    );
+}
+
+
+TEST(keywordCheck, numbersBeyondDouble)
+{
+    foamUnit::testCase tc("keywordCheck");
+    tc.writeFile
+    (
+        "constant/set",
+        "// 1e999 in a comment\nnucleus\n{\n    C10 13.33;\n"
+        "    mu1 (1 -1e400);\n}\n"
+    );
+    tc.writeFile
+    (
+        "constant/good",
+        "/* 1e999 */ a 1e308; b \"1e999\"; c (1 -1.7e308); d 1e-999;\n"
+        "e [0 1 -1 0 0 0 0] 1450; f inf; g 0x1p3;\n"
+    );
+    tc.writeFile
+    (
+        "constant/solidProperties",
+        "materials\n{\n    #include \"set\"\n}\nradius 1e999;\n"
+    );
+    EXPECT_EQ
+    (
+        errorOf([&]{ foamTools::checkNumbers(tc.dir()/"constant/good"); }),
+        ""
+    );
+    const std::string inc = errorOf
+    (
+        [&]{ foamTools::checkNumbers(tc.dir()/"constant/solidProperties"); }
+    );
+    for
+    (
+        const std::string part
+      : {
+            "entry 'mu1' = -1e400 is beyond the range of a number (a double"
+            " holds |x| <= 1.797", "constant/set"
+        }
+    )
+    {
+        EXPECT_NE(inc.find(part), std::string::npos)
+            << "no \"" << part << "\" in: " << inc;
+    }
+    tc.writeFile("constant/set", "nucleus { C10 13.33; }\n");
+    const std::string top = errorOf
+    (
+        [&]{ foamTools::checkNumbers(tc.dir()/"constant/solidProperties"); }
+    );
+    EXPECT_NE(top.find("entry 'radius' = 1e999"), std::string::npos) << top;
+    EXPECT_NE(top.find("constant/solidProperties"), std::string::npos) << top;
+}
