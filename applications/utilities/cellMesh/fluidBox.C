@@ -17,8 +17,10 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
     g_(geom)
 {
     const dictionary& d = g_.fluidDict();
-    for (const word key : {"axialSize", "lateralSize", "innerMargin",
-                           "maxCells"})
+    // The hexahedral water's entries given outside hexCoeffs: said so
+    // before the keyword check would call them unknown (maxCells, an entry
+    // of fluid for the tetrahedra and the wedge, is checked below)
+    for (const word key : {"axialSize", "lateralSize", "innerMargin"})
     {
         if (d.found(key))
         {

@@ -18,8 +18,11 @@ Foam::autoPtr<Foam::rhoEThermo> Foam::rhoEThermo::New(const fvMesh& mesh)
     );
 
     // The coefficients of every law may stay in the file (a case switches
-    // the law by its name); those of the selected one: rhoEThermoModel
-    wordList valid{"equationOfState"};
+    // the law by its name); those of the selected one: rhoEThermoModel.
+    // thermoType and mixture: OpenFOAM's own thermo, for a case that a
+    // stock solver runs too (the rhoCentralFoam peer of the shock tubes,
+    // tests/verification/rhoCentralFoamSod); not read here
+    wordList valid{"equationOfState", "thermoType", "mixture"};
     for (const word& law : meshConstructorTablePtr_->sortedToc())
     {
         valid.append(law + "Coeffs");
