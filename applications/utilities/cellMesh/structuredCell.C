@@ -587,12 +587,7 @@ void Foam::structuredCell::centredSections()
     std::vector<vec2> Lambda(T + 1);
     const auto remap = [&](label i0, label i1, scalar p0, scalar p1)
     {
-        for (label i = i0; i <= i1; ++i)
-        {
-            const scalar f =
-                (psiStar[i] - psiStar[i0])/(psiStar[i1] - psiStar[i0]);
-            Lambda[i] = nucleusPoint(p0 + f*(p1 - p0));
-        }
+        remapNucleus(psiStar, i0, i1, p0, p1, Lambda);
     };
     remap(0, mB, psi1, psiJ);
     remap(mB, T - mB, psiJ, pi - psiJ);
@@ -768,12 +763,7 @@ void Foam::structuredCell::scaledSections()
     std::vector<vec2> Lambda(T + 1);
     const auto remap = [&](label i0, label i1, scalar p0, scalar p1)
     {
-        for (label i = i0; i <= i1; ++i)
-        {
-            const scalar f =
-                (psiStar[i] - psiStar[i0])/(psiStar[i1] - psiStar[i0]);
-            Lambda[i] = nucleusPoint(p0 + f*(p1 - p0));
-        }
+        remapNucleus(psiStar, i0, i1, p0, p1, Lambda);
     };
     remap(0, mB, psiC, psiJ);
     remap(mB, T, psiJ, 0.5*pi);
@@ -920,5 +910,21 @@ void Foam::structuredCell::toGmsh(scalar unit) const
         gmsh::model::mesh::addElementsByType(surface, 3, et, nt);
         const int g = gmsh::model::addPhysicalGroup(2, {surface});
         gmsh::model::setPhysicalName(2, g, kv.first);
+    }
+}
+
+
+void Foam::structuredCell::remapNucleus
+(
+    const std::vector<scalar>& psiStar,
+    label i0, label i1, scalar p0, scalar p1,
+    std::vector<vec2>& Lambda
+) const
+{
+    for (label i = i0; i <= i1; ++i)
+    {
+        const scalar f =
+            (psiStar[i] - psiStar[i0])/(psiStar[i1] - psiStar[i0]);
+        Lambda[i] = nucleusPoint(p0 + f*(p1 - p0));
     }
 }
