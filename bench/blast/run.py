@@ -278,16 +278,13 @@ def choose(rows, ref, key="max"):
 
 def successive(good):
     """per quantity: the changes between consecutive levels [%] of the
-    finer one, and the observed order of convergence where they shrink"""
+    finer one, and the observed order of the three finest levels where
+    the changes shrink without changing sign (richardson's)"""
     out = []
     for k, lab in QUANTITIES:
         ch = [100*(b[k]/a[k] - 1) for a, b in zip(good, good[1:])]
-        order = None
-        if len(ch) >= 2 and abs(ch[-1]) < abs(ch[-2]) and ch[-1] != 0:
-            r = (float(good[-2]["factor"])/float(good[-1]["factor"])
-                 + float(good[-3]["factor"])/float(good[-2]["factor"]))/2
-            order = math.log(abs(ch[-2])/abs(ch[-1]))/math.log(r)
-        out.append((lab, ch, order))
+        R = richardson(good, k) if len(good) >= 3 else None
+        out.append((lab, ch, R["p"] if R and R["monotone"] else None))
     return out
 
 
@@ -505,7 +502,7 @@ def report(rows, size, mode, start, png, commit, dirty, end,
         for lab, ch, order in successive(good):
             w(f"| {lab} | " + " | ".join(f"{c:+.2f}" for c in ch) + " | "
               + (f"{order:.2f}" if order is not None else
-                 "none (changes do not shrink)") + " |")
+                 "none (changes do not shrink, or alternate)") + " |")
         w("")
     w(f"![probe-peak difference against CPU time; probe pressure per "
       f"level]({png})")
