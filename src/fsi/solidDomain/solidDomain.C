@@ -76,7 +76,7 @@ Foam::solidDomain::solidDomain(const Time& runTime)
         dict_, runTime.globalPath(),
         {
             "explicitSafety", "hourglassViscosity",
-            "hourglassViscosityRegions", "probes", "interfaceProbe",
+            "hourglassViscosityRegions", "volumetricIntegration", "probes", "interfaceProbe",
             "interfaces"
         }
     );
@@ -132,6 +132,22 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
             set.hourglassRegions[e.keyword()] = hr.get<scalar>(e.keyword());
         }
     }
+    // Volumetric law on the element dilatation (the Q1/P0 mean-dilatation
+    // element, needs hourglass control in the explicit path) or at the
+    // Gauss points (no zero-energy mode, volumetric locking: for cells
+    // whose response to the blast is volumetric, docs/userGuide/fsi.md)
+    const word integration
+    (
+        dict_.getOrDefault<word>("volumetricIntegration", "element")
+    );
+    if (integration != "element" && integration != "gaussPoints")
+    {
+        FatalIOErrorInFunction(dict_)
+            << "volumetricIntegration '" << integration << "' in "
+            << dict_.name() << ": valid values are 'element' (the Q1/P0 "
+            << "mean dilatation) and 'gaussPoints'" << exit(FatalIOError);
+    }
+    model_->setPointVolumetric(integration == "gaussPoints");
     guarded("solid initialise", [&]
     {
         model_->initialise();

@@ -156,7 +156,8 @@ void solid::MixedElement::evaluate
     double* elemNew,
     bool tangent,
     ElementOutput& out,
-    bool checkCorners
+    bool checkCorners,
+    bool pointVolumetric
 )
 {
     const int nen = mesh.nen();
@@ -166,6 +167,20 @@ void solid::MixedElement::evaluate
     const IsochoricModel& iso = mat.isochoric();
     const VolumetricLaw& vol = mat.volumetric();
     const int nh = iso.nHistory();
+    const int nv = vol.nHistory();
+    pointVolumetric = pointVolumetric && !vol.isConstraint();
+    if (pointVolumetric && (tangent || useMultiplier))
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter,
+            "the point-wise volumetric integration is explicit only (no "
+            "tangent, no pressure unknown)"
+        );
+    }
+    const double mu = iso.instantaneousShearModulus();
+    // Point-wise volumetric response: sums over the Gauss points
+    double pJw = 0, qJw = 0, c2max = 0, zetaMax = 0, dTw = 0;
 
     out.f = Eigen::VectorXd::Zero(nd);
     out.g = Eigen::VectorXd::Zero(nd);
@@ -240,7 +255,33 @@ void solid::MixedElement::evaluate
                 F.transpose()*F, dt, pointOld + q*nh, pointNew + q*nh, r
             );
         }
-        const Mat3 P = F*r.S;
+        double pq = 0;
+        if (pointVolumetric)
+        {
+            VolumetricInput in;
+            in.theta = J;
+            in.dt = dt;
+            in.length = geo.length;
+            const double dq =
+                iso.dissipated(pointNew + q*nh)
+              - iso.dissipated(pointOld + q*nh);
+            if (vol.absorbsHeat())
+            {
+                in.heat = dq;
+                out.viscousHeat += iso.dissipated(pointNew + q*nh)*wq;
+            }
+            const VolumetricResponse vr =
+                vol.evaluate(in, elemOld + q*nv, elemNew + q*nv);
+            pq = vr.p;
+            pJw += vr.p*J*wq;
+            qJw += vr.q*J*wq;
+            out.energy += vr.energy*wq;
+            out.shockHeat += vol.dissipated(elemNew + q*nv)*wq;
+            dTw += vr.temperatureRise*wq;
+            c2max = std::max(c2max, vr.c2 + 4.0/3.0*mu*J/mat.rho0());
+            zetaMax = std::max(zetaMax, vr.zeta);
+        }
+        const Mat3 P = F*r.S - pq*J*Fi.transpose();
         const Mat3 JFiT = J*Fi.transpose();
         // f_ai = int P : dF/du_ai, g_ai = int J F^-T : dF/du_ai
         for (int a = 0; a < nen; ++a)
@@ -316,7 +357,18 @@ void solid::MixedElement::evaluate
     }
 
     const double rho = mat.rho0()/out.theta;
-    const double mu = iso.instantaneousShearModulus();
+    if (pointVolumetric)
+    {
+        if (vol.absorbsHeat()) out.dissipated = 0;
+        out.p = pJw/out.v;
+        out.q = qJw/out.v;
+        out.c2 = c2max;
+        out.zeta = zetaMax;
+        out.temperatureRise = dTw/geo.V;
+        // out.f and out.sigma already hold the pressure
+        out.sigma = out.sigma/out.v;
+        return;
+    }
     if (vol.isConstraint())
     {
         out.p = pMultiplier;

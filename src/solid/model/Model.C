@@ -96,7 +96,8 @@ void solid::Model::initialise()
         const Material& m = material(e);
         if (m.volumetric().hasInverse()) multiplier_[e] = nm++;
         pointSizes[e] = int(geometry_[e].w.size())*m.isochoric().nHistory();
-        elemSizes[e] = m.volumetric().nHistory();
+        elemSizes[e] = m.volumetric().nHistory()
+           *(pointVolumetric_ ? int(geometry_[e].w.size()) : 1);
         const int* en = mesh_.element(e);
         for (int a = 0; a < mesh_.nen(); ++a)
         {
@@ -117,7 +118,11 @@ void solid::Model::initialise()
         {
             m.isochoric().initHistory(pointState_.old(e) + q*nh);
         }
-        m.volumetric().initHistory(elementState_.old(e));
+        const int nv = m.volumetric().nHistory();
+        for (int q = 0; q*nv < elementState_.size(e); ++q)
+        {
+            m.volumetric().initHistory(elementState_.old(e) + q*nv);
+        }
     }
     pointState_.revert();
     elementState_.revert();
@@ -337,7 +342,7 @@ void solid::Model::assemble
             m >= 0, m >= 0 ? p(m) : 0.0, dt,
             pointState_.old(e), pointState_.current(e),
             elementState_.old(e), elementState_.current(e),
-            tangent, out, cornerCheck_
+            tangent, out, cornerCheck_, pointVolumetric_
         );
         for (int i = 0; i < nd; ++i) a.fint(dofs[i]) += out.f(i);
         a.energy += out.energy;
@@ -403,6 +408,20 @@ void solid::Model::assemble
 }
 
 
+void solid::Model::setPointVolumetric(bool on)
+{
+    if (initialised_)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter,
+            "setPointVolumetric: the model is already initialised"
+        );
+    }
+    pointVolumetric_ = on;
+}
+
+
 solid::ElementOutput solid::Model::evaluateElement(int e, double dt)
 {
     requireInitialised("evaluateElement");
@@ -414,7 +433,7 @@ solid::ElementOutput solid::Model::evaluateElement(int e, double dt)
     (
         mesh_, e, geometry_[e], material(e), elementDisplacement(e, u),
         m >= 0, m >= 0 ? pressure(m) : 0.0, dt, pointState_.old(e), pn.data(),
-        elementState_.old(e), en.data(), false, out
+        elementState_.old(e), en.data(), false, out, false, pointVolumetric_
     );
     return out;
 }
