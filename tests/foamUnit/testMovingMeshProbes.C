@@ -11,9 +11,18 @@ Description
     interpolationScheme cellLinearFit: exact for fields linear in space
     (in the wedge's r-z plane; in 3D) at random probe points, moved mesh
     included, and not the probe's cell value.
+    interpolationScheme cellPoint, and localCellPoint alone: equal to the
+    whole-field interpolation (interpolationCellPoint, volPointInterpolation)
+    to the last bit on a moving wedge and a moving skewed 3D block, for
+    scalar fields everywhere and vector fields off constraint patches, both
+    kinds of point weights (cells, boundary faces) used; the whole-field
+    path where localCellPoint is not exact.
 \*---------------------------------------------------------------------------*/
 
 #include "movingMeshProbes.H"
+#include "localCellPoint.H"
+#include "interpolationCellPoint.H"
+#include "wedgePolyPatch.H"
 #include "IStringStream.H"
 #include "OStringStream.H"
 #include "Random.H"
@@ -23,6 +32,7 @@ Description
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <functional>
 
 using namespace Foam;
@@ -268,6 +278,403 @@ TEST(movingMeshProbes, linearFitIsExactForLinearFieldsIn3DAfterMotion)
     probes.movePoints(mesh);
     linearFitErrors(mesh, probes, f, fitError, cellError);
     EXPECT_LT(fitError, 1e-12);
+}
+
+
+namespace
+{
+
+//- A smooth, non-linear field value at x [m] (its boundary values differ
+//  from the cells' by offset, so that the boundary points' weights count)
+template<class Type>
+Type smooth(const point& x, const scalar offset);
+
+template<>
+scalar smooth(const point& x, const scalar offset)
+{
+    const vector s(x/1e-6);
+    return
+        1e5
+       *(1 + offset + 0.3*std::sin(s.x()) + 0.2*s.y()*s.y() - 0.1*s.z());
+}
+
+template<>
+vector smooth(const point& x, const scalar offset)
+{
+    const vector s(x/1e-6);
+    return vector
+    (
+        std::cos(s.y()) + offset,
+        0.1*s.x()*s.z() - offset,
+        std::sin(s.x() + s.y()) + 2*offset
+    );
+}
+
+
+//- A vol field of smooth values in the cells and on every patch
+template<class Type>
+tmp<GeometricField<Type, fvPatchField, volMesh>> smoothField
+(
+    const fvMesh& mesh,
+    const word& name
+)
+{
+    typedef GeometricField<Type, fvPatchField, volMesh> fieldType;
+    tmp<fieldType> tvf
+    (
+        new fieldType
+        (
+            IOobject(name, mesh.time().timeName(), mesh),
+            mesh,
+            dimensioned<Type>(dimless, Zero)
+        )
+    );
+    fieldType& vf = tvf.ref();
+    forAll(vf, celli)
+    {
+        vf[celli] = smooth<Type>(mesh.C()[celli], 0);
+    }
+    typename fieldType::Boundary& bf = vf.boundaryFieldRef();
+    forAll(bf, patchi)
+    {
+        const vectorField& Cf = mesh.boundary()[patchi].Cf();
+        Field<Type> values(Cf.size());
+        forAll(Cf, facei)
+        {
+            values[facei] = smooth<Type>(Cf[facei], 0.05 + 0.01*patchi);
+        }
+        bf[patchi] == values;
+    }
+    return tvf;
+}
+
+
+//- n random positions in the box x0 + s (x1 - x0) (z = x0.z() if the box is
+//  flat in z)
+List<point> randomPoints
+(
+    const point& x0,
+    const point& x1,
+    const label n,
+    const label seed
+)
+{
+    Random rnd(seed);
+    List<point> points(n);
+    for (point& x : points)
+    {
+        const vector s
+        (
+            rnd.sample01<scalar>(), rnd.sample01<scalar>(),
+            rnd.sample01<scalar>()
+        );
+        x = x0 + cmptMultiply(s, x1 - x0);
+    }
+    return points;
+}
+
+
+//- Move every point that lies on no boundary by up to amplitude [m]
+//  in each direction of the mesh
+void shakeInterior(fvMesh& mesh, Random& rnd, const scalar amplitude)
+{
+    bitSet onBoundary(mesh.nPoints());
+    for (label facei = mesh.nInternalFaces(); facei < mesh.nFaces(); ++facei)
+    {
+        onBoundary.set(mesh.faces()[facei]);
+    }
+    pointField newPoints(mesh.points());
+    forAll(newPoints, pointi)
+    {
+        if (!onBoundary.test(pointi))
+        {
+            newPoints[pointi] += 2*amplitude*vector
+            (
+                rnd.sample01<scalar>() - 0.5,
+                rnd.sample01<scalar>() - 0.5,
+                rnd.sample01<scalar>() - 0.5
+            );
+        }
+    }
+    mesh.movePoints(newPoints);
+}
+
+
+//- Move the wedge's points that lie on no boundary but its sides by up to
+//  amplitude [m] in r (= x) and y, each pair on the two sides alike (a
+//  smooth motion of random phases), keeping them on their sides
+void shakeWedge(fvMesh& mesh, Random& rnd, const scalar amplitude)
+{
+    const polyBoundaryMesh& pbm = mesh.boundaryMesh();
+    bitSet fixed(mesh.nPoints());
+    for (label facei = mesh.nInternalFaces(); facei < mesh.nFaces(); ++facei)
+    {
+        if (!isA<wedgePolyPatch>(pbm[pbm.whichPatch(facei)]))
+        {
+            fixed.set(mesh.faces()[facei]);
+        }
+    }
+    const scalar phaseR = 6.3*rnd.sample01<scalar>();
+    const scalar phaseY = 6.3*rnd.sample01<scalar>();
+    pointField newPoints(mesh.points());
+    forAll(newPoints, pointi)
+    {
+        if (!fixed.test(pointi))
+        {
+            const point& x = newPoints[pointi];
+            const scalar r = x.x() + amplitude*std::sin(1.7e6*x.y() + phaseR);
+            const scalar y = x.y() + amplitude*std::cos(0.9e6*x.x() + phaseY);
+            newPoints[pointi] = point(r, y, x.z()*r/x.x());
+        }
+    }
+    mesh.movePoints(newPoints);
+}
+
+
+//- An OpenFOAM value as text (for the messages of failed checks)
+template<class Type>
+std::string text(const Type& x)
+{
+    OStringStream os;
+    os.precision(17);
+    os  << x;
+    return os.str();
+}
+
+
+//- Whether a and b are the same bits
+template<class Type>
+bool sameBits(const Type& a, const Type& b)
+{
+    return std::memcmp(&a, &b, sizeof(Type)) == 0;
+}
+
+
+//- For each position: localCellPoint's value where it is exact, and
+//  interpolationCellPoint's (the whole field's point values) to the last
+//  bit; returns the number of exact positions, counts the tetrahedra's
+//  vertices with boundary weights (on a patch) and with cell weights
+template<class Type>
+label checkLocalCellPoint
+(
+    const fvMesh& mesh,
+    const List<point>& positions,
+    const GeometricField<Type, fvPatchField, volMesh>& vf,
+    label& patchVertices,
+    label& cellVertices
+)
+{
+    const localCellPoint local(mesh);
+    interpolationCellPoint<Type> whole(vf);
+    label nExact = 0;
+    for (const point& x : positions)
+    {
+        const label celli = mesh.findCell(x);
+        if (celli == -1)
+        {
+            continue;
+        }
+        const cellPointWeight cpw(mesh, x, celli);
+        if (!local.exact<Type>(cpw))
+        {
+            continue;
+        }
+        ++nExact;
+        const Type value = local.interpolate(vf, cpw);
+        const Type reference = whole.interpolate(x, celli, -1);
+        EXPECT_TRUE(sameBits(value, reference))
+            << "at " << text(x) << " in cell " << celli << ": "
+            << text(value) << " against " << text(reference)
+            << " (difference " << text(value - reference) << ")";
+        for (const label pointi : cpw.faceVertices())
+        {
+            bool onPatch = false;
+            for (const label facei : mesh.pointFaces()[pointi])
+            {
+                onPatch = onPatch || !mesh.isInternalFace(facei);
+            }
+            (onPatch ? patchVertices : cellVertices)++;
+        }
+    }
+    return nExact;
+}
+
+} // End anonymous namespace
+
+
+TEST(localCellPoint, equalsTheWholeFieldInterpolationInAMovingWedge)
+{
+    foamUnit::testCase tc("localCellPoint");
+    autoPtr<fvMesh> meshPtr = tc.wedgeMesh();
+    fvMesh& mesh = meshPtr();
+    // On the wedge's mid plane, bottom (symmetryPlane) to top, inner to
+    // outer
+    const List<point> positions
+    (
+        randomPoints
+        (
+            point(2.01e-6, 0.01e-6, 0), point(17.99e-6, 7.99e-6, 0), 80, 7
+        )
+    );
+
+    Random rnd(13);
+    label patchVertices = 0;
+    label cellVertices = 0;
+    for (label n = 0; n < 4; ++n)
+    {
+        if (n)
+        {
+            ++tc.time();
+            shakeWedge(mesh, rnd, 0.3e-6);
+        }
+        const tmp<volScalarField> p(smoothField<scalar>(mesh, "p"));
+        // Scalars: exact everywhere (the wedge sides and the symmetry plane
+        // leave a scalar point value as it is)
+        EXPECT_EQ
+        (
+            checkLocalCellPoint
+            (
+                mesh, positions, p(), patchVertices, cellVertices
+            ),
+            positions.size()
+        );
+
+        // Vectors: every point is on a wedge side, whose constraint
+        // transforms a vector: never exact
+        const tmp<volVectorField> U(smoothField<vector>(mesh, "U"));
+        label unused = 0;
+        EXPECT_EQ
+        (
+            checkLocalCellPoint(mesh, positions, U(), unused, unused), 0
+        );
+    }
+    // Every point of a wedge is on its sides: boundary weights only
+    EXPECT_EQ(patchVertices, 3*4*positions.size());
+    EXPECT_EQ(cellVertices, 0);
+}
+
+
+TEST(localCellPoint, equalsTheWholeFieldInterpolationInAMoving3DBlock)
+{
+    foamUnit::testCase tc("localCellPoint");
+    autoPtr<fvMesh> meshPtr = tc.blockMesh
+    (
+        {6, 5, 4},
+        [](const vector& s)
+        {
+            return point
+            (
+                6e-6*s.x() + 0.5e-6*s.y()*s.z(),
+                5e-6*s.y()*(1 + 0.2*s.x()),
+                4e-6*s.z() + 0.3e-6*s.x()*s.y()
+            );
+        },
+        {"inlet", "walls", "symmetry", "walls", "walls", "walls"},
+        {"patch", "wall", "symmetryPlane", "wall", "wall", "wall"}
+    );
+    fvMesh& mesh = meshPtr();
+    const List<point> positions
+    (
+        randomPoints
+        (
+            point(0.01e-6, 0.01e-6, 0.01e-6),
+            point(5.99e-6, 4.99e-6, 3.99e-6),
+            150,
+            3
+        )
+    );
+
+    Random rnd(17);
+    label patchVertices = 0;
+    label cellVertices = 0;
+    label vectorPatchVertices = 0;
+    label vectorCellVertices = 0;
+    label nScalar = 0;
+    label nVector = 0;
+    for (label n = 0; n < 4; ++n)
+    {
+        if (n)
+        {
+            ++tc.time();
+            shakeInterior(mesh, rnd, 0.15e-6);
+        }
+        const tmp<volScalarField> p(smoothField<scalar>(mesh, "p"));
+        nScalar += checkLocalCellPoint
+        (
+            mesh, positions, p(), patchVertices, cellVertices
+        );
+        // Vectors: exact off the symmetry plane (on the walls and the
+        // inlet the point values need no constraint)
+        const tmp<volVectorField> U(smoothField<vector>(mesh, "U"));
+        nVector += checkLocalCellPoint
+        (
+            mesh, positions, U(), vectorPatchVertices, vectorCellVertices
+        );
+    }
+    // The positions inside the mesh (all of them, as the block's sides are
+    // curved but the box is inside) are all exact for scalars
+    EXPECT_GT(nScalar, 4*120);
+    EXPECT_GT(nVector, nScalar/2);
+    EXPECT_LT(nVector, nScalar);
+    EXPECT_GT(patchVertices, 100);
+    EXPECT_GT(cellVertices, 100);
+    EXPECT_GT(vectorPatchVertices, 50);
+}
+
+
+TEST(movingMeshProbes, cellPointEqualsProbesToTheLastBit)
+{
+    // movingMeshProbes' cellPoint values (localCellPoint where exact, the
+    // whole-field interpolation where not: the vectors on the wedge) equal
+    // probes' (the whole-field interpolation) after every motion
+    foamUnit::testCase tc("movingMeshProbes");
+    autoPtr<fvMesh> meshPtr = tc.wedgeMesh();
+    fvMesh& mesh = meshPtr();
+    OStringStream os;
+    os  << "fields (p U); interpolationScheme cellPoint; probeLocations (";
+    const List<point> positions
+    (
+        randomPoints
+        (
+            point(2.01e-6, 0.01e-6, 0), point(17.99e-6, 7.99e-6, 0), 40, 9
+        )
+    );
+    for (const point& x : positions)
+    {
+        os  << x << ' ';
+    }
+    os  << "(30e-6 1e-6 0));";   // outside the mesh: never found
+    movingMeshProbes probes
+    (
+        "probes", tc.time(), dictionary(IStringStream(os.str())())
+    );
+
+    Random rnd(19);
+    for (label n = 0; n < 4; ++n)
+    {
+        if (n)
+        {
+            ++tc.time();
+            shakeWedge(mesh, rnd, 0.3e-6);
+            probes.movePoints(mesh);
+        }
+        const tmp<volScalarField> p(smoothField<scalar>(mesh, "p"));
+        const tmp<volVectorField> U(smoothField<vector>(mesh, "U"));
+        const scalarField pLocal(probes.sampleCellPoint(p()));
+        const scalarField pWhole(probes.sample(p()));
+        const vectorField ULocal(probes.sampleCellPoint(U()));
+        const vectorField UWhole(probes.sample(U()));
+        forAll(probes, i)
+        {
+            EXPECT_TRUE(sameBits(pLocal[i], pWhole[i]))
+                << "probe " << i << " after motion " << n << ": "
+                << text(pLocal[i]) << " against " << text(pWhole[i]);
+            EXPECT_TRUE(sameBits(ULocal[i], UWhole[i]))
+                << "probe " << i << " after motion " << n << ": "
+                << text(ULocal[i]) << " against " << text(UWhole[i]);
+        }
+        EXPECT_EQ(pLocal.last(), -VGREAT);
+    }
 }
 
 

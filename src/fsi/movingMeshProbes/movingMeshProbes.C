@@ -61,6 +61,12 @@ bool Foam::movingMeshProbes::linearFit() const
 }
 
 
+bool Foam::movingMeshProbes::cellPoint() const
+{
+    return fixedLocations_ && interpolationScheme_ == "cellPoint";
+}
+
+
 void Foam::movingMeshProbes::fitWeights
 (
     List<labelList>& cells,
@@ -152,7 +158,7 @@ Foam::movingMeshProbes::movingMeshProbes
 
 bool Foam::movingMeshProbes::write()
 {
-    if (!linearFit())
+    if (!linearFit() && !cellPoint())
     {
         const bool written = probes::write();
         volPointInterpolation::Delete(mesh_);
@@ -163,9 +169,12 @@ bool Foam::movingMeshProbes::write()
     {
         if
         (
-            surfaceScalarFields_.size() || surfaceVectorFields_.size()
-         || surfaceSphericalTensorFields_.size()
-         || surfaceSymmTensorFields_.size() || surfaceTensorFields_.size()
+            linearFit()
+         && (
+                surfaceScalarFields_.size() || surfaceVectorFields_.size()
+             || surfaceSphericalTensorFields_.size()
+             || surfaceSymmTensorFields_.size() || surfaceTensorFields_.size()
+            )
         )
         {
             FatalErrorInFunction
@@ -174,12 +183,23 @@ bool Foam::movingMeshProbes::write()
                 << " select surface fields" << exit(FatalError);
         }
 
-        sampleAndWriteFit(scalarFields_);
-        sampleAndWriteFit(vectorFields_);
-        sampleAndWriteFit(sphericalTensorFields_);
-        sampleAndWriteFit(symmTensorFields_);
-        sampleAndWriteFit(tensorFields_);
+        sampleAndWriteVol(scalarFields_);
+        sampleAndWriteVol(vectorFields_);
+        sampleAndWriteVol(sphericalTensorFields_);
+        sampleAndWriteVol(symmTensorFields_);
+        sampleAndWriteVol(tensorFields_);
+
+        sampleAndWriteSurface(surfaceScalarFields_);
+        sampleAndWriteSurface(surfaceVectorFields_);
+        sampleAndWriteSurface(surfaceSphericalTensorFields_);
+        sampleAndWriteSurface(surfaceSymmTensorFields_);
+        sampleAndWriteSurface(surfaceTensorFields_);
     }
+
+    // The whole-field interpolation where a tetrahedron's point values are
+    // not localCellPoint's: its weights, a mesh object, would otherwise be
+    // built again at every motion
+    volPointInterpolation::Delete(mesh_);
 
     return true;
 }

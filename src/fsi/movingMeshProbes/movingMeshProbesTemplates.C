@@ -1,5 +1,7 @@
 #include "movingMeshProbes.H"
+#include "localCellPoint.H"
 #include "volFields.H"
+#include "surfaceFields.H"
 #include "IOmanip.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
@@ -59,59 +61,150 @@ Foam::tmp<Foam::Field<Type>> Foam::movingMeshProbes::sampleFit
 }
 
 
+template<class Type>
+Foam::tmp<Foam::Field<Type>> Foam::movingMeshProbes::sampleCellPoint
+(
+    const GeometricField<Type, fvPatchField, volMesh>& vField
+) const
+{
+    // The tetrahedral decomposition's base points: built on every rank
+    // (findFaceBasePts synchronises coupled faces), as interpolationCellPoint
+    // builds them
+    (void)mesh_.tetBasePtIs();
+
+    const localCellPoint interpolator(mesh_);
+    PtrList<cellPointWeight> tets(size());
+    bool local = true;
+    forAll(*this, probei)
+    {
+        const label celli = elementList_[probei];
+        if (celli >= 0)
+        {
+            tets.set
+            (
+                probei, new cellPointWeight(mesh_, operator[](probei), celli)
+            );
+            local = local && interpolator.exact<Type>(tets[probei]);
+        }
+    }
+
+    // The whole-field interpolation (all ranks) if a probe needs it
+    if (!returnReduce(local, andOp<bool>()))
+    {
+        return sample(vField);
+    }
+
+    const Type unset(-VGREAT*pTraits<Type>::one);
+    tmp<Field<Type>> tvalues(new Field<Type>(size(), unset));
+    Field<Type>& values = tvalues.ref();
+    forAll(*this, probei)
+    {
+        if (tets.set(probei))
+        {
+            values[probei] = interpolator.interpolate(vField, tets[probei]);
+        }
+    }
+    Pstream::listCombineGather(values, movingMeshProbesFoundOp<Type>());
+    Pstream::listCombineScatter(values);
+    return tvalues;
+}
+
+
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+template<class GeoField>
+const GeoField* Foam::movingMeshProbes::field
+(
+    const word& fieldName,
+    autoPtr<GeoField>& fromFile
+) const
+{
+    if (loadFromFiles_)
+    {
+        fromFile.reset
+        (
+            new GeoField
+            (
+                IOobject
+                (
+                    fieldName,
+                    mesh_.time().timeName(),
+                    mesh_,
+                    IOobject::MUST_READ,
+                    IOobject::NO_WRITE,
+                    false
+                ),
+                mesh_
+            )
+        );
+        return fromFile.get();
+    }
+    return mesh_.findObject<GeoField>(fieldName);
+}
+
+
 template<class Type>
-void Foam::movingMeshProbes::sampleAndWriteFit(const fieldGroup<Type>& fields)
+void Foam::movingMeshProbes::writeRow
+(
+    const word& fieldName,
+    const Field<Type>& values
+)
+{
+    // probes' rows: the time, then each probe's value
+    if (Pstream::master())
+    {
+        const unsigned int w = IOstream::defaultPrecision() + 7;
+        OFstream& os = *probeFilePtrs_[fieldName];
+        os  << setw(w) << mesh_.time().timeOutputValue();
+        forAll(values, probei)
+        {
+            if (includeOutOfBounds_ || processor_[probei] != -1)
+            {
+                os  << ' ' << setw(w) << values[probei];
+            }
+        }
+        os  << endl;
+    }
+}
+
+
+template<class Type>
+void Foam::movingMeshProbes::sampleAndWriteVol(const fieldGroup<Type>& fields)
 {
     typedef GeometricField<Type, fvPatchField, volMesh> fieldType;
 
     for (const word& fieldName : fields)
     {
         autoPtr<fieldType> fromFile;
-        if (loadFromFiles_)
+        const fieldType* vField = field(fieldName, fromFile);
+        if (vField)
         {
-            fromFile.reset
+            const Field<Type> values
             (
-                new fieldType
-                (
-                    IOobject
-                    (
-                        fieldName,
-                        mesh_.time().timeName(),
-                        mesh_,
-                        IOobject::MUST_READ,
-                        IOobject::NO_WRITE,
-                        false
-                    ),
-                    mesh_
-                )
+                linearFit() ? sampleFit(*vField) : sampleCellPoint(*vField)
             );
+            writeRow(fieldName, values);
         }
-        else if (!mesh_.foundObject<fieldType>(fieldName))
-        {
-            continue;
-        }
-        const fieldType& vField =
-            fromFile.valid()
-          ? fromFile() : mesh_.lookupObject<fieldType>(fieldName);
+    }
+}
 
-        const Field<Type> values(sampleFit(vField));
 
-        // probes' rows: the time, then each probe's value
-        if (Pstream::master())
+template<class Type>
+void Foam::movingMeshProbes::sampleAndWriteSurface
+(
+    const fieldGroup<Type>& fields
+)
+{
+    typedef GeometricField<Type, fvsPatchField, surfaceMesh> fieldType;
+
+    for (const word& fieldName : fields)
+    {
+        autoPtr<fieldType> fromFile;
+        const fieldType* sField = field(fieldName, fromFile);
+        if (sField)
         {
-            const unsigned int w = IOstream::defaultPrecision() + 7;
-            OFstream& os = *probeFilePtrs_[vField.name()];
-            os  << setw(w) << vField.time().timeOutputValue();
-            forAll(values, probei)
-            {
-                if (includeOutOfBounds_ || processor_[probei] != -1)
-                {
-                    os  << ' ' << setw(w) << values[probei];
-                }
-            }
-            os  << endl;
+            const Field<Type> values(sample(*sField));
+            writeRow(fieldName, values);
         }
     }
 }
