@@ -281,7 +281,8 @@ void solid::MixedElement::evaluate
             c2max = std::max(c2max, vr.c2 + 4.0/3.0*mu*J/mat.rho0());
             zetaMax = std::max(zetaMax, vr.zeta);
         }
-        const Mat3 P = F*r.S - pq*J*Fi.transpose();
+        Mat3 P = F*r.S;
+        if (pointVolumetric) P -= pq*J*Fi.transpose();
         const Mat3 JFiT = J*Fi.transpose();
         // f_ai = int P : dF/du_ai, g_ai = int J F^-T : dF/du_ai
         for (int a = 0; a < nen; ++a)
