@@ -92,7 +92,9 @@ reconstructPar > log.reconstructPar 2>&1
 decomposePar -force -time 0 > log.decomposeAgain 2>&1
 # the probes' output moved away: the reconstructed times are the results
 rm -rf postProcessing
-caseSums 'log.*' > "$work/parallel.before"
+# (.runLock aside: a parallel FatalError ends in MPI_Abort, which leaves
+# the lock, taken over as stale by the next run: src/foamTools/caseLock.H)
+caseSums 'log.*' | grep -v '/\.runLock$' > "$work/parallel.before"
 status=0
 mpirun -np 2 rhoRiemannFoam -parallel > log.again 2>&1 || status=$?
 check "rhoRiemannFoam -parallel: a new start over reconstructed times exits non-zero" \
@@ -100,7 +102,7 @@ check "rhoRiemannFoam -parallel: a new start over reconstructed times exits non-
 check "rhoRiemannFoam -parallel: the message names the reconstructed times" \
     "grep -q '4 time directories reconstructed into the case after the start time (5e-09 ... 2e-08 s' log.again \
      && grep -q 'Nothing was changed' log.again"
-caseSums 'log.*' > "$work/parallel.after"
+caseSums 'log.*' | grep -v '/\.runLock$' > "$work/parallel.after"
 check "rhoRiemannFoam -parallel: no file of the case changed" \
     "cmp -s '$work/parallel.before' '$work/parallel.after'"
 sed -i 's/^endTime .*/endTime 1e-8;/' system/controlDict
