@@ -280,3 +280,284 @@ TEST(keywordCheck, numbersBeyondDouble)
     EXPECT_NE(top.find("entry 'radius' = 1e999"), std::string::npos) << top;
     EXPECT_NE(top.find("constant/solidProperties"), std::string::npos) << top;
 }
+
+
+namespace
+{
+
+//- An argList of the test case (never destroyed: argList's destructor
+//  ends the process, see testWriteGuard.C)
+const argList& caseArgs(const foamUnit::testCase& tc)
+{
+    static std::string caseDir;
+    caseDir = tc.dir();
+    static std::vector<char*> argv;
+    argv =
+    {
+        const_cast<char*>("foamUnitTests"),
+        const_cast<char*>("-case"),
+        &caseDir[0]
+    };
+    int argc = int(argv.size());
+    char** argvp = argv.data();
+    return *new argList(argc, argvp);
+}
+
+const std::string header
+(
+    "FoamFile { version 2.0; format ascii; class dictionary; }\n"
+);
+
+std::size_t npos()
+{
+    return std::string::npos;
+}
+
+//- errorOf with the line of the FatalIOError: "... file: F at line N"
+template<class F>
+std::string errorAtLine(F f)
+{
+    try
+    {
+        f();
+    }
+    catch (const Foam::IOerror& err)
+    {
+        return err.message() + " file: " + err.ioFileName() + " at line "
+          + std::to_string(err.ioStartLineNumber());
+    }
+    return std::string();
+}
+
+} // End anonymous namespace
+
+
+TEST(keywordCheck, duplicatesInIncludedFiles)
+{
+    // A keyword twice in the text of an included file is a duplicate of
+    // that file (named, with its lines); a keyword of the including text
+    // that replaces an included one is not; an include in another scope
+    // does not count for this one
+    foamUnit::testCase tc("keywordCheck");
+    tc.writeFile("constant/inner", "C10 1;\nmu1 2;\n");
+    tc.writeFile
+    (
+        "constant/set",
+        "nucleus\n{\n    C10 13.33;\n    #include \"inner\"\n}\n"   // C10 in both
+        "cytoplasm { C10 1.6; }\n"
+    );
+    tc.writeFile("constant/other", "d0 1;\nd0 2;\n");
+    tc.writeFile
+    (
+        "constant/solidProperties",
+        header
+      + "materials\n{\n    #include \"set\"\n    nucleus { C10 20; }\n}\n"
+        "probes { #include \"other\" }\n"
+    );
+    const dictionary top(readDict(tc, "constant/solidProperties"));
+    const dictionary& mats = top.subDict("materials");
+    EXPECT_EQ
+    (
+        errorOf([&]{ foamTools::checkDuplicates(mats.subDict("nucleus")); }),
+        ""
+    );
+    EXPECT_EQ(errorOf([&]{ foamTools::checkDuplicates(mats); }), "");
+    EXPECT_EQ(errorOf([&]{ foamTools::checkDuplicates(top); }), "");
+
+    // twice in the included file, and twice in a file it includes
+    tc.writeFile
+    (
+        "constant/set",
+        "nucleus\n{\n    C10 13.33;\n    mu1 1;\n    C10 6.67;\n}\n"
+    );
+    const std::string msg = errorOf
+    (
+        [&]{ foamTools::checkDuplicates(mats.subDict("nucleus")); }
+    );
+    for
+    (
+        const std::string& part
+      : {
+            std::string
+            (
+                "entry 'C10' is given 2 times in 'materials/nucleus' of the "
+                "included file "
+            ),
+            std::string("constant/set (lines 3 and 5"),
+            "file: " + std::string(tc.dir()/"constant/set")
+        }
+    )
+    {
+        EXPECT_NE(msg.find(part), std::string::npos)
+            << "no \"" << part << "\" in: " << msg;
+    }
+    tc.writeFile
+    (
+        "constant/set",
+        "nucleus\n{\n    C10 13.33;\n    #include \"inner\"\n}\n"
+    );
+    tc.writeFile("constant/inner", "mu1 1;\ntau1 2;\nmu1 3;\n");
+    EXPECT_NE
+    (
+        errorOf([&]{ foamTools::checkDuplicates(mats.subDict("nucleus")); })
+       .find("entry 'mu1' is given 2 times in 'materials/nucleus' of the "
+             "included file "),
+        std::string::npos
+    );
+    // the included file of 'probes'
+    EXPECT_NE
+    (
+        errorOf([&]{ foamTools::checkDuplicates(top.subDict("probes")); })
+       .find("entry 'd0' is given 2 times in 'probes' of the included file"),
+        std::string::npos
+    );
+}
+
+
+TEST(keywordCheck, controlDictKeywords)
+{
+    // OpenFOAM's keywords and the solver's are valid; a misspelt one of
+    // either is refused with the closest; the entries of an included file
+    // (the $endTime of system/riemannProblemDict) are not controlDict's
+    foamUnit::testCase tc("keywordCheck");
+    const argList& args = caseArgs(tc);
+    tc.writeFile
+    (
+        "system/riemannProblemDict",
+        "direction (1 0 0);\nx0 0;\nendTime 1e-8;\n"
+    );
+    const std::string good
+    (
+        header
+      + "#include \"riemannProblemDict\"\n"
+        "application rhoRiemannFoam; startFrom latestTime; startTime 0;\n"
+        "stopAt endTime; endTime $endTime; deltaT 1e-12;\n"
+        "writeControl adjustableRunTime; writeInterval $endTime;\n"
+        "purgeWrite 0; writeFormat ascii; writePrecision 12;\n"
+        "writeCompression off; timeFormat general; timePrecision 8;\n"
+        "runTimeModifiable false; adjustTimeStep yes; maxCo 0.5;\n"
+        "maxDeltaT 1e-9; libs (); functions { p { type probes; } }\n"
+        "#sinclude \"controlDict.allrun\"\n"
+    );
+    const wordList ours{"adjustTimeStep", "maxCo", "maxDeltaT"};
+    tc.writeFile("system/controlDict", good);
+    EXPECT_EQ(errorOf([&]{ foamTools::checkControlDict(args, ours); }), "");
+
+    std::string endTme(good);
+    endTme.replace(endTme.find("endTime $endTime"), 7, "endTme");
+    tc.writeFile("system/controlDict", endTme);
+    const std::string msg =
+        errorOf([&]{ foamTools::checkControlDict(args, ours); });
+    for
+    (
+        const std::string part
+      : {
+            "unknown entry 'endTme' in the top level; did you mean 'endTime'?",
+            "system/controlDict"
+        }
+    )
+    {
+        EXPECT_NE(msg.find(part), std::string::npos)
+            << "no \"" << part << "\" in: " << msg;
+    }
+
+    // maxCo is not cellIndentationFoam's
+    tc.writeFile("system/controlDict", good);
+    EXPECT_NE
+    (
+        errorOf
+        (
+            [&]
+            {
+                foamTools::checkControlDict
+                (
+                    args, {"fieldWriteInterval", "checkpointInterval"}
+                );
+            }
+        ).find("unknown entry 'maxCo' in the top level"),
+        std::string::npos
+    );
+
+    // a keyword twice in the included file of an Allrun option
+    tc.writeFile("system/controlDict.allrun", "maxCo 0.4;\nmaxCo 0.3;\n");
+    EXPECT_NE
+    (
+        errorOf([&]{ foamTools::checkControlDict(args, ours); })
+       .find("entry 'maxCo' is given 2 times in the top level of the "
+             "included file "),
+        std::string::npos
+    );
+}
+
+
+TEST(keywordCheck, caseNumberScan)
+{
+    // checkNumbers(args): every OpenFOAM file of system/, constant/, the
+    // mesh and the start time directory, with the file and the line; not
+    // another time, a file without FoamFile header, nor binary data
+    foamUnit::testCase tc("keywordCheck");
+    const argList& args = caseArgs(tc);
+    const std::string controlDict
+    (
+        header
+      + "application x; startFrom startTime; startTime 0; stopAt endTime;\n"
+        "endTime 1; deltaT 1; writeControl timeStep; writeInterval 1;\n"
+    );
+    tc.writeFile("system/controlDict", controlDict);
+    tc.writeFile
+    (
+        "system/fvSchemes",
+        header + "laplacianSchemes\n{\n    default Gauss linear limited 1;\n}\n"
+    );
+    tc.writeFile("0/p", header + "internalField uniform 0;\n");
+    tc.writeFile("1/p", header + "internalField uniform 1e999;\n");
+    tc.writeFile("constant/notes", "radius 1e999;\n");
+    tc.writeFile
+    (
+        "constant/polyMesh/points",
+        header + "2\n(\n(0 0 0)\n(1 1 1)\n)\n"
+    );
+    tc.writeFile
+    (
+        "constant/binaryField",
+        "FoamFile { version 2.0; format binary; class dictionary; }\n"
+        "a 1e999;\n"
+    );
+    EXPECT_EQ(errorAtLine([&]{ foamTools::checkNumbers(args); }), "");
+
+    // the start time directory: 1 with startFrom latestTime
+    std::string latest(controlDict);
+    latest.replace(latest.find("startTime;"), 10, "latestTime;");
+    tc.writeFile("system/controlDict", latest);
+    std::string msg = errorAtLine([&]{ foamTools::checkNumbers(args); });
+    EXPECT_NE(msg.find("entry 'internalField' = 1e999 is beyond"), npos())
+        << msg;
+    EXPECT_NE(msg.find("1/p"), npos()) << msg;
+    tc.writeFile("system/controlDict", controlDict);
+
+    tc.writeFile
+    (
+        "system/fvSchemes",
+        header + "laplacianSchemes\n{\n    default Gauss linear limited 1e999;\n}\n"
+    );
+    msg = errorAtLine([&]{ foamTools::checkNumbers(args); });
+    for
+    (
+        const std::string part
+      : {"entry 'default' = 1e999 is beyond", "system/fvSchemes at line 4"}
+    )
+    {
+        EXPECT_NE(msg.find(part), npos()) << "no \"" << part << "\" in: " << msg;
+    }
+    tc.writeFile("system/fvSchemes", header);
+
+    tc.writeFile
+    (
+        "constant/polyMesh/points",
+        header + "2\n(\n(0 0 0)\n(1 -1e999 1)\n)\n"
+    );
+    msg = errorAtLine([&]{ foamTools::checkNumbers(args); });
+    EXPECT_NE(msg.find("a value of the list = -1e999 is beyond"), npos())
+        << msg;
+    EXPECT_NE(msg.find("constant/polyMesh/points at line 5"), npos()) << msg;
+}

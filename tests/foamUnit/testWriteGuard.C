@@ -131,3 +131,44 @@ TEST(writeGuard, earliestTimeIsKeptBesideConstant)
     EXPECT_TRUE(isDir(tc.dir()/"0"));
     EXPECT_TRUE(isDir(tc.dir()/"1e-06.incomplete"));
 }
+
+
+TEST(writeGuard, failedWriteIsAnError)
+{
+    // A file of the time that cannot be opened (here a directory in the
+    // place of uniform/time: a non-writable directory does the same to a
+    // user other than root) stops the run with a FatalError naming the
+    // time directory. OpenFOAM's write only returns false then (and
+    // skips the fields after the time dictionary), and the run went on
+    // without the time, silently
+    foamUnit::testCase tc("writeGuard");
+    Time& runTime = tc.time();
+    using foamTools::writeGuard;
+    ++runTime;
+    ASSERT_TRUE(runTime.writeTime());
+    ASSERT_TRUE(mkDir(runTime.timePath()/"uniform"/"time"));
+    std::string msg;
+    try
+    {
+        writeGuard::write(runTime);
+    }
+    catch (const Foam::error& err)
+    {
+        msg = err.message();
+    }
+    for
+    (
+        const std::string& part
+      : {
+            std::string("cannot write time directory"),
+            std::string(runTime.timePath()),
+            std::string("a field could not be written")
+        }
+    )
+    {
+        EXPECT_NE(msg.find(part), std::string::npos)
+            << "no \"" << part << "\" in: " << msg;
+    }
+    // not committed: moved aside at a restart
+    EXPECT_TRUE(writeGuard::incomplete(runTime.timePath()));
+}

@@ -74,4 +74,41 @@ check "cellIndentationFoam: -overwrite runs" \
     "[ $status -eq 0 ] && grep -q '^End' log.overwrite \
      && [ \$(grep -vc '^#' postProcessing/indentation/force.dat) -gt 0 ]"
 
+# In parallel, the times reconstructed into the whole case (reconstructPar)
+# are results too. A new start on processor directories decomposed anew
+# (decomposePar -force -time 0: the start time only; the probes' output
+# moved away) used to run without a word, and the next reconstructPar
+# replaced the reconstructed times or mixed two runs (-overwrite left
+# them); now refused, and -overwrite removes them as well
+mkdir "$work/parallel"; cd "$work/parallel"
+cp -r "$root/tutorials/verification/waterPulseWall"/{0.orig,system,constant} .
+rm -rf constant/polyMesh; cp -r 0.orig 0
+printf 'FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\nnumberOfSubdomains 2;\nmethod simple;\ncoeffs { n (2 1 1); }\n' > system/decomposeParDict
+sed -i 's/^startFrom .*/startFrom startTime;/; s/^endTime .*/endTime 2e-8;/; s/^writeInterval .*/writeInterval 5e-9;/' system/controlDict
+blockMesh > log.blockMesh 2>&1
+decomposePar > log.decomposePar 2>&1
+mpirun -np 2 rhoRiemannFoam -parallel > log.first 2>&1
+reconstructPar > log.reconstructPar 2>&1
+decomposePar -force -time 0 > log.decomposeAgain 2>&1
+# the probes' output moved away: the reconstructed times are the results
+rm -rf postProcessing
+# (.runLock aside: a parallel FatalError ends in MPI_Abort, which leaves
+# the lock, taken over as stale by the next run: src/foamTools/caseLock.H)
+caseSums 'log.*' | grep -v '/\.runLock$' > "$work/parallel.before"
+status=0
+mpirun -np 2 rhoRiemannFoam -parallel > log.again 2>&1 || status=$?
+check "rhoRiemannFoam -parallel: a new start over reconstructed times exits non-zero" \
+    "[ $status -ne 0 ]"
+check "rhoRiemannFoam -parallel: the message names the reconstructed times" \
+    "grep -q '4 time directories reconstructed into the case after the start time (5e-09 ... 2e-08 s' log.again \
+     && grep -q 'Nothing was changed' log.again"
+caseSums 'log.*' | grep -v '/\.runLock$' > "$work/parallel.after"
+check "rhoRiemannFoam -parallel: no file of the case changed" \
+    "cmp -s '$work/parallel.before' '$work/parallel.after'"
+sed -i 's/^endTime .*/endTime 1e-8;/' system/controlDict
+status=0
+mpirun -np 2 rhoRiemannFoam -parallel -overwrite > log.overwrite 2>&1 || status=$?
+check "rhoRiemannFoam -parallel -overwrite: runs, no reconstructed time of the first run left" \
+    "[ $status -eq 0 ] && [ -d processor1/1e-08 ] && [ ! -e 5e-09 ] && [ ! -e 2e-08 ]"
+
 exit $fail

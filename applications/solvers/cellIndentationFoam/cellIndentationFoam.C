@@ -58,15 +58,13 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     foamTools::checkCasePath(args);    // a path OpenFOAM can hold
     // A number beyond a double's range is a sigFpe inside OpenFOAM's
-    // tokenizer: refused first, naming the file and the entry
-    foamTools::checkNumbers
+    // tokenizer: every file of the case the run reads is scanned first,
+    // naming the file, the line and the entry
+    foamTools::checkNumbers(args);
+    // controlDict: OpenFOAM's keywords and ours, each given once
+    foamTools::checkControlDict
     (
-        args,
-        {
-            "system/controlDict",
-            "constant/solidProperties",
-            "constant/indenterProperties"
-        }
+        args, {"fieldWriteInterval", "checkpointInterval"}
     );
     const foamTools::caseLock lock(args);    // one run per case
     #include "createTime.H"

@@ -56,17 +56,10 @@ int main(int argc, char *argv[])
     foamTools::checkCasePath(args);    // a path OpenFOAM can hold
     const foamTools::caseLock lock(args);    // one run per case
     // A number beyond a double's range is a sigFpe inside OpenFOAM's
-    // tokenizer: refused first, naming the file and the entry
-    foamTools::checkNumbers
-    (
-        args,
-        {
-            "system/controlDict",
-            "system/fvSolution",
-            "constant/thermophysicalProperties"
-        }
-    );
-    // our entries of controlDict given once
+    // tokenizer: every file of the case the run reads is scanned first,
+    // naming the file, the line and the entry
+    foamTools::checkNumbers(args);
+    // controlDict: OpenFOAM's keywords and ours, each given once
     foamTools::checkControlDict
     (
         args, {"adjustTimeStep", "maxCo", "maxDeltaT"}

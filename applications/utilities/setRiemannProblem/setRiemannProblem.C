@@ -26,15 +26,9 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     foamTools::checkCasePath(args);    // a path OpenFOAM can hold
     // A number beyond a double's range is a sigFpe inside OpenFOAM's
-    // tokenizer: refused first, naming the file and the entry
-    foamTools::checkNumbers
-    (
-        args,
-        {
-            "system/controlDict",
-            "constant/thermophysicalProperties"
-        }
-    );
+    // tokenizer: every file of the case the run reads is scanned first,
+    // naming the file, the line and the entry
+    foamTools::checkNumbers(args);
 
     const riemannProblem problem(args.path());
 

@@ -9,7 +9,13 @@ Description
     pulse-duration study. Each value runs in a copy of the case placed next
     to it (so that the relative paths of its Allrun still hold), removed
     afterwards unless -keep. The table goes to the terminal and to
-    <case>/postProcessing/sweep/<name>.{md,csv}.
+    <case>/postProcessing/sweep/<name>.{md,csv}. A report of that name
+    that exists already (an earlier sweep's) is kept: the sweep stops
+    before running anything (move it away, or choose another -name), as
+    it does when a run folder exists. Refused rather than written under
+    a new number: the runs cost minutes to hours, and a report beside an
+    older one of the same name would leave the reader to guess which is
+    which.
 
 Usage
     sweepCase -entry <file>/<key>[/<key>...] -values "<v1> <v2> ..."
@@ -202,6 +208,16 @@ def main():
                     "earlier sweep, or the user's files): the sweep would "
                     "replace it. Nothing was run: move it away, or choose "
                     "another -name" % (c, values[copies.index(c)]))
+        # The report of an earlier sweep of this name is kept: checked
+        # before anything runs (and written below only if still absent)
+        out = os.path.join(case, "postProcessing/sweep")
+        reports = [os.path.join(out, name + e) for e in (".md", ".csv")]
+        for r in reports:
+            if os.path.lexists(r):
+                raise SweepError(
+                    "the report %s exists (an earlier sweep's): the sweep "
+                    "would replace it. Nothing was run: move it away, or "
+                    "choose another -name" % r)
         print("sweepCase: %s = %s, %d runs of '%s' (%d at a time)"
               % ("/".join([f] + keys), " ".join(values), len(values),
                  command, a.nProcs), flush=True)
@@ -223,10 +239,11 @@ def main():
         rows = [[v] + r + ["%.1f" % w] for v, (r, w) in zip(values, results)]
         md = "| " + " | ".join(cols) + " |\n" + "|---" * len(cols) + "|\n" \
             + "".join("| " + " | ".join(r) + " |\n" for r in rows)
-        out = os.path.join(case, "postProcessing/sweep")
         os.makedirs(out, exist_ok=True)
-        open(os.path.join(out, name + ".md"), "w").write(md)
-        with open(os.path.join(out, name + ".csv"), "w") as c:
+        # "x": a report made meanwhile (another sweep) is not replaced
+        with open(reports[0], "x") as m:
+            m.write(md)
+        with open(reports[1], "x") as c:
             c.write(",".join('"%s"' % x for x in cols) + "\n")
             c.write("".join(",".join(r) + "\n" for r in rows))
         print("\n" + md + "\nWritten %s.{md,csv}" % os.path.join(out, name))

@@ -295,28 +295,34 @@ void solid::IndentationDriver::checkpoint(long row)
     });
     c.set("fieldSteps", double(fieldSteps_));
     c.setText("inputDigests", settings_.inputDigests);
-    // The lengths the outputs have now: a write that failed (a full
-    // disk) or an output removed during the run is an error naming the
-    // file, not a std::filesystem exception that ended the run in
-    // std::terminate (issue 19, class 4)
+    // The lengths the outputs have now (flushed)
     forceFile_.flush();
     peakFile_.flush();
     for (const char* f : {"force.dat", "peaks.dat"})
     {
-        std::error_code ec;
-        const std::uintmax_t size = fs::file_size(path(f), ec);
-        if (ec || !(std::string(f) == "force.dat" ? forceFile_ : peakFile_))
-        {
-            throw SolidError
-            (
-                SolidError::Kind::io, "cannot write " + path(f) + ": "
-              + (ec ? ec.message() + " (removed during the run?)"
-                    : std::string("the write failed (disk full?)"))
-            );
-        }
-        c.set(std::string(f) + ".length", double(size));
+        c.set(std::string(f) + ".length", double(outputLength(f)));
     }
     c.write();
+}
+
+
+std::uintmax_t solid::IndentationDriver::outputLength(const std::string& f)
+{
+    // A write that failed (a full disk) or an output removed during the
+    // run is an error naming the file, not a std::filesystem exception
+    // that ended the run in std::terminate (issue 19, class 4)
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(path(f), ec);
+    if (ec || !(f == "force.dat" ? forceFile_ : peakFile_))
+    {
+        throw SolidError
+        (
+            SolidError::Kind::io, "cannot write " + path(f) + ": "
+          + (ec ? ec.message() + " (removed during the run?)"
+                : std::string("the write failed (disk full?)"))
+        );
+    }
+    return size;
 }
 
 
@@ -402,6 +408,9 @@ void solid::IndentationDriver::run()
                 }
             }
             record(row.stage);
+            // Every step, checkpoints or not (checkpointInterval 0)
+            outputLength("force.dat");
+            outputLength("peaks.dat");
             if (s.writeInterval > 0 && model_.time >= nextWrite_ - 1e-9)
             {
                 writeFields();
@@ -438,4 +447,6 @@ void solid::IndentationDriver::run()
     }
     forceFile_.flush();
     peakFile_.flush();
+    outputLength("force.dat");
+    outputLength("peaks.dat");
 }
