@@ -6,6 +6,7 @@
 // dissipation closes the energy balance. r-z quads and hexahedra.
 #include "ExplicitSolver.H"
 #include "SolidError.H"
+#include "SolidTestUtils.H"
 
 #include <gtest/gtest.h>
 #include <cmath>
@@ -16,17 +17,6 @@ using namespace solid;
 namespace
 {
 
-// Water's Mie-Grueneisen law with the cytoplasm's deviatoric part
-std::shared_ptr<const Material> cytoplasm()
-{
-    MaterialParameters p;
-    p.name = "cytoplasm";
-    p.volumetric = "mieGruneisen";
-    p.C10 = 1.67;
-    p.branches = {{107.78, 0.01}};
-    return Material::create(p);
-}
-
 // One free element of size 1 um (r-z ring at r in [2, 3] um, or a cube)
 std::unique_ptr<Model> element(bool axi)
 {
@@ -34,7 +24,7 @@ std::unique_ptr<Model> element(bool axi)
     Mesh m = axi ? Mesh::rectangle(1, 1, 2*h, 3*h, 0, h)
                  : Mesh::box(1, 1, 1, Vec3(0, 0, 0), Vec3(h, h, h));
     std::unique_ptr<Model> model(new Model(m));
-    model->setMaterial(m.regionNames[0], cytoplasm());
+    model->setMaterial(m.regionNames[0], solidTest::cytoplasm());
     model->initialise();
     return model;
 }

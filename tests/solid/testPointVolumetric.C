@@ -7,6 +7,7 @@
 // does not converge there: bench/solid/README.md).
 #include "../../bench/solid/planeShockColumn.H"
 #include "SolidError.H"
+#include "SolidTestUtils.H"
 
 #include <gtest/gtest.h>
 #include <cstdio>
@@ -15,16 +16,6 @@ using namespace solid;
 
 namespace
 {
-
-std::shared_ptr<const Material> cytoplasm()
-{
-    MaterialParameters p;
-    p.name = "cytoplasm";
-    p.volumetric = "mieGruneisen";
-    p.C10 = 1.67;
-    p.branches = {{107.78, 0.01}};
-    return Material::create(p);
-}
 
 // One free r-z ring element (r in [2, 3] um, z in [0, 1] um), its nodes
 // moved so that it is not a rectangle
@@ -35,7 +26,7 @@ std::unique_ptr<Model> element(bool gaussPoints)
     m.X[2](0) += 0.2*h;
     m.X[2](1) += 0.1*h;
     std::unique_ptr<Model> model(new Model(m));
-    model->setMaterial(m.regionNames[0], cytoplasm());
+    model->setMaterial(m.regionNames[0], solidTest::cytoplasm());
     model->setPointVolumetric(gaussPoints);
     model->initialise();
     return model;
@@ -123,7 +114,7 @@ TEST(pointVolumetric, explicitOnly)
     );
     Mesh mesh = Mesh::rectangle(1, 1, 0, 1e-6, 0, 1e-6);
     Model late(mesh);
-    late.setMaterial(mesh.regionNames[0], cytoplasm());
+    late.setMaterial(mesh.regionNames[0], solidTest::cytoplasm());
     late.initialise();
     EXPECT_THROW(late.setPointVolumetric(true), SolidError);
 }
