@@ -54,6 +54,7 @@ int main(int argc, char *argv[])
     foamTools::resultGuard::addOption();
     #include "setRootCaseLists.H"
     foamTools::checkCasePath(args);    // a path OpenFOAM can hold
+    foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
     const foamTools::caseLock lock(args);    // one run per case
     // A number beyond a double's range is a sigFpe inside OpenFOAM's
     // tokenizer: every file of the case the run reads is scanned first,

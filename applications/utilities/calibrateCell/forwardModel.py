@@ -55,6 +55,17 @@ class ForwardModel:
         self.work = os.path.abspath(work)
         self.keep = keep
         self.base = os.path.join(self.work, "base")
+        # Only a folder this class made (its marker) is cleaned: a -work
+        # folder holding a user's files is refused, nothing removed
+        marker = os.path.join(self.work, ".calibrateCellWork")
+        if os.path.isdir(self.work) and os.listdir(self.work) \
+                and not os.path.isfile(marker):
+            raise ModelError(
+                "the work folder %s holds files calibrateCell did not write "
+                "(no %s): refused, nothing removed; give -work a new or "
+                "empty folder" % (self.work, os.path.basename(marker)))
+        os.makedirs(self.work, exist_ok=True)
+        open(marker, "a").close()
         if os.path.exists(self.base):
             shutil.rmtree(self.base)
         for d in ("system", "constant"):

@@ -44,6 +44,7 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
     foamTools::checkCasePath(args);    // a path OpenFOAM can hold
+    foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
 
     const fileName dictFile
     (

@@ -67,6 +67,7 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
     foamTools::checkCasePath(args);    // a path OpenFOAM can hold
+    foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
     // A number beyond a double's range is a sigFpe inside OpenFOAM's
     // tokenizer: refused first, naming the file and the entry
     foamTools::checkNumbers

@@ -25,6 +25,7 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
     foamTools::checkCasePath(args);    // a path OpenFOAM can hold
+    foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
     // A number beyond a double's range is a sigFpe inside OpenFOAM's
     // tokenizer: every file of the case the run reads is scanned first,
     // naming the file, the line and the entry

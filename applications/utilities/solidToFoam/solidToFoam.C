@@ -31,6 +31,7 @@ Usage
 #include "cellShapeList.H"
 #include "Hdf5File.H"
 #include "SolidError.H"
+#include "inputChecks.H"
 
 #include <memory>
 
@@ -140,6 +141,7 @@ int main(int argc, char *argv[])
     );
 
     #include "setRootCase.H"
+    foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
     #include "createTime.H"
 
     const fileName h5Name(args[1]);
