@@ -6,6 +6,8 @@
 # the uniaxial-strain von Mises, strain and rest; its table is
 # DIR/axisymmetricPreview/postProcessing/planeWave/0/solidMeasures.dat).
 # Prints cellBlastFoam's CPU time and peak memory and the failed bounds.
+# SOLID_PROBES (environment, optional): a probes { } dictionary appended to
+# constant/solidProperties (extra Lagrangian probes, docs/userGuide/fsi.md).
 # Not a test (issue 17: docs/results/blastPlaneWave.md, "The solid's
 # formulation and the cell's mesh"). Example:
 #   bench/blast/solidVariant.sh /tmp/gp2 gaussPoints 0 -cell 0.25e-6
@@ -21,6 +23,8 @@ foamDictionary constant/solidProperties -entry hourglassViscosity \
     -set "$kappa" > /dev/null
 foamDictionary constant/solidProperties -entry volumetricIntegration \
     -set "$integ" > /dev/null
+[ -z "${SOLID_PROBES:-}" ] \
+    || printf '\nprobes\n{\n%s\n}\n' "$SOLID_PROBES" >> constant/solidProperties
 grep -E "^(hourglassViscosity|volumetricIntegration)" \
     constant/solidProperties
 Z=$(grep -o -- "-Z [^ ]*" <<<"$*" | cut -d' ' -f2)
