@@ -67,6 +67,19 @@ void shake(fvMesh& mesh, Random& rnd, const scalar amplitude)
 } // End anonymous namespace
 
 
+//- The 6 x 5 x 4 um block of the 3D tests, its lines curved and skewed
+//  (s in [0, 1]^3)
+static point skewedBlock(const vector& s)
+{
+    return point
+    (
+        6e-6*s.x() + 0.5e-6*s.y()*s.z(),
+        5e-6*s.y()*(1 + 0.2*s.x()),
+        4e-6*s.z() + 0.3e-6*s.x()*s.y()
+    );
+}
+
+
 TEST(movingMeshProbes, probesAreInTheirCellsAfterEveryMotion)
 {
     foamUnit::testCase tc("movingMeshProbes");
@@ -222,15 +235,7 @@ TEST(movingMeshProbes, linearFitIsExactForLinearFieldsIn3DAfterMotion)
     autoPtr<fvMesh> meshPtr = tc.blockMesh
     (
         {6, 5, 4},
-        [](const vector& s)
-        {
-            return point
-            (
-                6e-6*s.x() + 0.5e-6*s.y()*s.z(),
-                5e-6*s.y()*(1 + 0.2*s.x()),
-                4e-6*s.z() + 0.3e-6*s.x()*s.y()
-            );
-        },
+        skewedBlock,
         {"walls", "walls", "walls", "walls", "walls", "walls"},
         {"wall", "wall", "wall", "wall", "wall", "wall"}
     );
@@ -560,15 +565,7 @@ TEST(localCellPoint, equalsTheWholeFieldInterpolationInAMoving3DBlock)
     autoPtr<fvMesh> meshPtr = tc.blockMesh
     (
         {6, 5, 4},
-        [](const vector& s)
-        {
-            return point
-            (
-                6e-6*s.x() + 0.5e-6*s.y()*s.z(),
-                5e-6*s.y()*(1 + 0.2*s.x()),
-                4e-6*s.z() + 0.3e-6*s.x()*s.y()
-            );
-        },
+        skewedBlock,
         {"inlet", "walls", "symmetry", "walls", "walls", "walls"},
         {"patch", "wall", "symmetryPlane", "wall", "wall", "wall"}
     );
