@@ -1,6 +1,7 @@
 """neuronFsi.planeWave on synthetic histories with known answers: the
 pulse's shape, the 1-ns running mean, the four measures and their errors
 (the 1D column run itself is tested by tests/blast/planeWave.sh)."""
+import os
 import unittest
 
 import numpy as np
@@ -209,3 +210,25 @@ class Measures(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class ColumnRefusesBeforeRunning(TempDirTestCase):
+    """column() refuses a column it cannot run in reasonable time, or bad
+    sizes, before it writes or runs anything (planeWave -dz 1e-11 ran
+    blockMesh on 1e7 cells and was killed; -endTime nan failed inside
+    blockMesh; issue 19)"""
+
+    def testTooManyCellsNaNAndNegative(self):
+        case = self.tmp
+        for kw, msg in (
+                (dict(Z=100e-6, endTime=1e-7, dz=1e-11), "above the limit"),
+                (dict(Z=100e-6, endTime=float("nan"), dz=50e-9),
+                 "end time"),
+                (dict(Z=100e-6, endTime=1e-7, dz=-5e-8), "positive"),
+                (dict(Z=float("inf"), endTime=1e-7, dz=5e-8), "positive")):
+            with self.assertRaisesRegex(pw.PlaneWaveError, msg):
+                pw.column(case, [50e-6], **kw)
+        self.assertEqual(os.listdir(case), [])
+        # the limit is an argument
+        with self.assertRaisesRegex(pw.PlaneWaveError, "above the limit"):
+            pw.column(case, [50e-6], 100e-6, 1e-7, dz=50e-9, maxCells=1000)

@@ -59,6 +59,7 @@ Usage
 """
 
 import argparse
+import math
 import os
 import sys
 
@@ -79,6 +80,7 @@ def main():
     p.add_argument("-Z", type=float, default=100e-6)
     p.add_argument("-dz", type=float, default=25e-9)
     p.add_argument("-endTime", type=float, default=None)
+    p.add_argument("-maxCells", type=int, default=100000)
     p.add_argument("-probes", default="solid,fluid")
     p.add_argument("-check", action="store_true")
     p.add_argument("-except", dest="skip", default="")
@@ -95,8 +97,15 @@ def main():
                     "%s)" % (k if kind is None else kind + ":" + k,
                              ", ".join(list(BOUNDS) + list(SOLID_BOUNDS))))
     for name, v in (("-Z", a.Z), ("-dz", a.dz)):
-        if not v > 0:
-            p.error("%s %g m: must be positive" % (name, v))
+        if not (v > 0 and math.isfinite(v)):
+            p.error("%s %g m: must be positive and finite" % (name, v))
+    if a.endTime is not None and not (a.endTime > 0
+                                      and math.isfinite(a.endTime)):
+        p.error("-endTime %g s: must be positive and finite" % a.endTime)
+    if a.Z/a.dz > a.maxCells:
+        p.error("-Z %g m / -dz %g m = %.3g cells, above -maxCells %d (the "
+                "column's cost grows as the square of its cells)"
+                % (a.Z, a.dz, a.Z/a.dz, a.maxCells))
 
     table = planeWave.appliedPressure(case)
     amp, T = planeWave.pulseShape(table)
@@ -118,7 +127,8 @@ def main():
     if a.reference:
         wave = planeWave.readReference(a.reference)
     else:
-        wave = planeWave.column(case, heights, a.Z, end, dz=a.dz)
+        wave = planeWave.column(case, heights, a.Z, end, dz=a.dz,
+                                maxCells=a.maxCells)
         planeWave.writeReference(
             os.path.join(out, "reference.dat"), wave,
             "1D plane wave of %s: column %g m, cells %g m, pulse %g Pa for "

@@ -39,6 +39,7 @@ integrated over the same times.
 """
 
 import glob
+import math
 import os
 import re
 import shutil
@@ -219,11 +220,25 @@ def uniaxialResponse(t, rho, rho0, mu0, branches=()):
     return np.log(lam), np.abs(total)
 
 
-def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None):
+def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
+           maxCells=100000):
     """Run the 1D column of <case> (water column of height Z [m]; the
     patches top and bottom) to endTime [s] with cells of dz [m], probes at
     heights [m]; returns a PlaneWave. work: the folder of the run (kept),
-    else a temporary one."""
+    else a temporary one. A column of more than maxCells cells is refused
+    before anything is written (its cost grows as the square of the cell
+    count: cells times steps)."""
+    if not (math.isfinite(Z) and Z > 0 and math.isfinite(dz) and dz > 0):
+        raise PlaneWaveError("column height %g m and cell size %g m must "
+                             "be positive and finite" % (Z, dz))
+    if not (math.isfinite(endTime) and endTime > 0):
+        raise PlaneWaveError("end time %g s must be positive and finite"
+                             % endTime)
+    if Z/dz > maxCells:
+        raise PlaneWaveError(
+            "a column of %g m in cells of %g m has %.3g cells, above the "
+            "limit of %d (-maxCells raises it; the run's cost grows as the "
+            "square of the cell count)" % (Z, dz, Z/dz, maxCells))
     n = int(round(Z/dz))
     if n < 1 or abs(n*dz - Z) > 1e-9*Z:
         raise PlaneWaveError("dz %g m does not divide the column height "
