@@ -58,6 +58,28 @@ Foam::localCellPoint::localCellPoint(const fvMesh& mesh)
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
+Foam::scalarList Foam::localCellPoint::inverseDistanceWeights
+(
+    const point& x,
+    const vectorField& centres,
+    const labelUList& labels
+)
+{
+    scalarList w(labels.size());
+    scalar sumW = 0;
+    forAll(labels, i)
+    {
+        w[i] = 1.0/mag(x - centres[labels[i]]);
+        sumW += w[i];
+    }
+    forAll(labels, i)
+    {
+        w[i] /= sumW;
+    }
+    return w;
+}
+
+
 bool Foam::localCellPoint::keeps
 (
     const label pointi,

@@ -33,17 +33,12 @@ Type Foam::localCellPoint::pointValue
         // makeInternalWeights, makeWeights' normalisation,
         // interpolateInternalField
         const labelList& pCells = mesh_.pointCells()[pointi];
-        const vectorField& C = mesh_.cellCentres();
-        scalarList w(pCells.size());
-        scalar sumW = 0;
+        const scalarList w
+        (
+            inverseDistanceWeights(x, mesh_.cellCentres(), pCells)
+        );
         forAll(pCells, i)
         {
-            w[i] = 1.0/mag(x - C[pCells[i]]);
-            sumW += w[i];
-        }
-        forAll(pCells, i)
-        {
-            w[i] /= sumW;
             value += w[i]*vf[pCells[i]];
         }
     }
@@ -52,17 +47,12 @@ Type Foam::localCellPoint::pointValue
         // makeBoundaryWeights, makeWeights' normalisation,
         // interpolateBoundaryField (flatBoundaryField: zero on a coupled
         // patch of the field)
-        const vectorField& Cf = mesh_.faceCentres();
-        scalarList w(faces.size());
-        scalar sumW = 0;
+        const scalarList w
+        (
+            inverseDistanceWeights(x, mesh_.faceCentres(), faces)
+        );
         forAll(faces, j)
         {
-            w[j] = 1.0/mag(x - Cf[faces[j]]);
-            sumW += w[j];
-        }
-        forAll(faces, j)
-        {
-            w[j] /= sumW;
             const label patchi = pbm.whichPatch(faces[j]);
             const fvPatchField<Type>& pf = vf.boundaryField()[patchi];
             const Type boundaryValue
