@@ -512,6 +512,46 @@ TEST(interfaceMap, rzFacesFullRingForces)
 }
 
 
+TEST(interfaceMap, rzUnseenModesAreCounted)
+{
+    // The fluid patch points see the solid interface at their projections
+    // only: n_F + 1 point positions along the interface (the wedge's two
+    // azimuths repeat them) against n_S + 1 solid nodes, all free. A solid
+    // finer than the fluid leaves n_S - n_F patterns unseen; matching or
+    // finer fluid faces see all (cellBlastFoam refuses the first,
+    // tests/blast/unseenModes.sh)
+    for (const bool radial : {true, false})
+    {
+        for
+        (
+            const FixedList<label, 3>& n :
+            List<FixedList<label, 3>>({{4, 4, 0}, {3, 5, 2}, {5, 3, 0},
+                                       {2, 7, 5}})
+        )
+        {
+            SCOPED_TRACE
+            (
+                std::string(radial ? "radial" : "axial")
+              + " fluid " + std::to_string(n[0])
+              + " solid " + std::to_string(n[1])
+            );
+            caseRz c(radial, n[0], n[1]);
+            const interfaceMap map(c.patch(), c.solid, c.dict(radial));
+            scalar sigmaRatio = -1;
+            EXPECT_EQ(map.unseenModes(boolList(), sigmaRatio), n[2]);
+            if (n[2] == 0)
+            {
+                EXPECT_GT(sigmaRatio, 0.1);
+            }
+            else
+            {
+                EXPECT_LT(sigmaRatio, 1e-6);
+            }
+        }
+    }
+}
+
+
 TEST(interfaceMap, rzPressureLoadRingForces)
 {
     // load pressure in r-z: the fluid pressure averaged over each solid

@@ -444,6 +444,71 @@ void Foam::interfaceMap::pointInterpolationWeights()
 }
 
 
+Foam::label Foam::interfaceMap::unseenModes
+(
+    const boolList& fixedDofs,
+    scalar& sigmaRatio
+) const
+{
+    if (mapType_ != "faces")
+    {
+        FatalErrorInFunction
+            << "unseen modes are counted for the r-z faces map only"
+            << abort(FatalError);
+    }
+    // Columns: the interface nodes with a free component (a node fixed in
+    // every component does not move, so the fluid need not see it); one
+    // component suffices, the stencils are the same for both
+    const label dim = solidMesh_.dim();
+    labelList column(nodes_.size(), -1);
+    label nFree = 0;
+    forAll(nodes_, a)
+    {
+        bool free = fixedDofs.empty();
+        for (label d = 0; d < dim && !free; ++d)
+        {
+            free = !fixedDofs[dim*nodes_[a] + d];
+        }
+        if (free) column[a] = nFree++;
+    }
+    Eigen::MatrixXd WtW = Eigen::MatrixXd::Zero(nFree, nFree);
+    forAll(pointStencil_, pointi)
+    {
+        const label start = pointStart_[pointi];
+        const label end = pointStart_[pointi + 1];
+        for (label i = start; i < end; ++i)
+        {
+            const label ci = column[pointNode_[i]];
+            if (ci < 0) continue;
+            for (label j = start; j < end; ++j)
+            {
+                const label cj = column[pointNode_[j]];
+                if (cj < 0) continue;
+                WtW(ci, cj) += pointWeight_[i]*pointWeight_[j];
+            }
+        }
+    }
+    if (!nFree)
+    {
+        sigmaRatio = 1;
+        return 0;
+    }
+    const Eigen::VectorXd lambda =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>
+        (
+            WtW, Eigen::EigenvaluesOnly
+        ).eigenvalues();
+    const scalar lMax = lambda.maxCoeff();
+    sigmaRatio = std::sqrt(std::max(lambda.minCoeff(), 0.0)/lMax);
+    label n = 0;
+    for (Eigen::Index i = 0; i < lambda.size(); ++i)
+    {
+        if (lambda(i) < 1e-6*lMax) ++n;
+    }
+    return n;
+}
+
+
 void Foam::interfaceMap::projectionWeights
 (
     const globalInterfacePatch& fluidPatch,
