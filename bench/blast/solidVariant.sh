@@ -10,7 +10,7 @@
 # constant/solidProperties (extra Lagrangian probes, docs/userGuide/fsi.md).
 # Not a test (issue 17: docs/results/blastPlaneWave.md, "The solid's
 # formulation and the cell's mesh"). Example:
-#   bench/blast/solidVariant.sh /tmp/gp2 gaussPoints 0 -cell 0.25e-6
+#   bench/blast/solidVariant.sh /tmp/gp2 gaussPoints 0 -cell 0.25e-6 -h 0.125e-6
 set -u
 [ $# -ge 3 ] || { sed -n 2,12p "$0"; exit 1; }
 dir=$1; integ=$2; kappa=$3; shift 3
