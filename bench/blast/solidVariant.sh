@@ -8,6 +8,8 @@
 # Prints cellBlastFoam's CPU time and peak memory and the failed bounds.
 # SOLID_PROBES (environment, optional): a probes { } dictionary appended to
 # constant/solidProperties (extra Lagrangian probes, docs/userGuide/fsi.md).
+# SHEAR_VISCOSITY (environment, optional): solidProperties shearViscosity
+# (the deviatoric numerical viscosity beta, solid::ExplicitSolver).
 # Not a test (issue 17: docs/results/blastPlaneWave.md, "The solid's
 # formulation and the cell's mesh"). Example:
 #   bench/blast/solidVariant.sh /tmp/gp2 gaussPoints 0 -cell 0.25e-6 -h 0.125e-6
@@ -23,9 +25,12 @@ foamDictionary constant/solidProperties -entry hourglassViscosity \
     -set "$kappa" > /dev/null
 foamDictionary constant/solidProperties -entry volumetricIntegration \
     -set "$integ" > /dev/null
+[ -z "${SHEAR_VISCOSITY:-}" ] \
+    || foamDictionary constant/solidProperties -entry shearViscosity \
+        -set "$SHEAR_VISCOSITY" > /dev/null
 [ -z "${SOLID_PROBES:-}" ] \
     || printf '\nprobes\n{\n%s\n}\n' "$SOLID_PROBES" >> constant/solidProperties
-grep -E "^(hourglassViscosity|volumetricIntegration)" \
+grep -E "^(hourglassViscosity|volumetricIntegration|shearViscosity)" \
     constant/solidProperties
 Z=$(grep -o -- "-Z [^ ]*" <<<"$*" | cut -d' ' -f2)
 /usr/bin/time -f "cellBlastFoam: %U s CPU, %M KB peak" cellBlastFoam \

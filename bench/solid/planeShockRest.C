@@ -10,7 +10,9 @@
 // von Mises left behind the pulse.
 //
 // Usage: planeShockRest [h1 h2 ...]   (default 0.5e-6 0.25e-6 0.125e-6)
-//        planeShockRest MESH H KAPPA RAMP element|gaussPoints  (one case)
+//        planeShockRest MESH H KAPPA RAMP element|gaussPoints [BETA]
+//                                                             (one case;
+//                   BETA: the deviatoric numerical viscosity, default 0)
 //   cmake --build build --target planeShockRest && build/bin/planeShockRest
 #include "planeShockColumn.H"
 
@@ -25,9 +27,10 @@ namespace
 void print(const planeShock::Options& o)
 {
     const planeShock::Result r = planeShock::run(o);
-    std::printf("%-8s %7.3g %-11s %6.3g %8.2g %11.3e %11.3e %8.3g %8.3g "
-        "%8ld\n", o.mesh.c_str(), o.h*1e6,
-        o.gaussPoints ? "gaussPoints" : "element", o.kappa, o.ramp*1e9,
+    std::printf("%-8s %7.3g %-11s %6.3g %6.3g %8.2g %11.3e %11.3e %8.3g "
+        "%8.3g %8ld\n", o.mesh.c_str(), o.h*1e6,
+        o.gaussPoints ? "gaussPoints" : "element", o.kappa, o.beta,
+        o.ramp*1e9,
         r.maxStrain, r.rmsStrain, r.rAtMax*1e6, r.maxVonMises, r.steps);
     std::fflush(stdout);
 }
@@ -43,12 +46,13 @@ int main(int argc, char** argv)
         "radius of the largest [um], largest von Mises [Pa]; the exact "
         "answer: 0 and 0 (peak while passing: strain 0.022, von Mises "
         "5.2 Pa)\n");
-    std::printf("%-8s %7s %-11s %6s %8s %11s %11s %8s %8s %8s\n", "mesh",
-        "h[um]", "volumetric", "kappa", "ramp[ns]", "maxStrain", "rmsStrain",
+    std::printf("%-8s %7s %-11s %6s %6s %8s %11s %11s %8s %8s %8s\n",
+        "mesh", "h[um]", "volumetric", "kappa", "beta", "ramp[ns]", "maxStrain", "rmsStrain",
         "rMax[um]", "vM[Pa]", "steps");
     planeShock::Options o;
-    if (argc == 6)
+    if (argc == 6 || argc == 7)
     {
+        o.beta = argc == 7 ? std::atof(argv[6]) : 0;
         o.mesh = argv[1];
         o.h = std::atof(argv[2]);
         o.kappa = std::atof(argv[3]);

@@ -76,8 +76,8 @@ Foam::solidDomain::solidDomain(const Time& runTime)
         dict_, runTime.globalPath(),
         {
             "explicitSafety", "hourglassViscosity",
-            "hourglassViscosityRegions", "volumetricIntegration", "probes", "interfaceProbe",
-            "interfaces"
+            "hourglassViscosityRegions", "shearViscosity",
+            "volumetricIntegration", "probes", "interfaceProbe", "interfaces"
         }
     );
     model_.reset(new solid::Model(input.mesh()));
@@ -119,6 +119,7 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
     solid::ExplicitSettings set;
     set.safety = dict_.getOrDefault<scalar>("explicitSafety", 0.8);
     set.hourglass = dict_.getOrDefault<scalar>("hourglassViscosity", 0);
+    set.shearViscosity = dict_.getOrDefault<scalar>("shearViscosity", 0);
     if (dict_.found("hourglassViscosityRegions"))
     {
         // kappa per region name, overriding hourglassViscosity there

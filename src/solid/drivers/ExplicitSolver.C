@@ -97,6 +97,10 @@ void solid::ExplicitSolver::buildHourglass()
                 : std::pow(geo.V, 2.0/3.0);
         const double D = hourglassCoefficient(e)*m.material(e).rho0()*c*S;
         hourglassDamping_[e] = D*P;
+        if (set_.shearViscosity > 0)
+        {
+            buildShearDamping(e, b, c);
+        }
         if (!(D > 0)) continue;
 
         // Explicit limit of the damper (eigenvalue of P is 1): dt < 2 m/D
@@ -105,6 +109,84 @@ void solid::ExplicitSolver::buildHourglass()
             hourglassStableDt_ =
                 std::min(hourglassStableDt_, 2*mass(dim*en[a])/D);
         }
+    }
+}
+
+
+void solid::ExplicitSolver::buildShearDamping
+(
+    int e,
+    const Eigen::MatrixXd& b,
+    double c
+)
+{
+    Model& m = model_;
+    const Mesh& mesh = m.mesh();
+    const bool axi = mesh.axisymmetric();
+    const int nen = mesh.nen(), dim = mesh.dim(), nd = nen*dim;
+    const ElementGeometry& geo = m.geometry(e);
+    const int* en = mesh.element(e);
+    if (shearDamping_.empty()) shearDamping_.resize(mesh.nElements());
+
+    // Mean strain-rate operators: normal rates (3 x nd; r-z: rr, zz and
+    // the hoop rate v_r/R averaged over the ring volume) and tensor shear
+    // rates (r-z: rz; 3D: xy, yz, zx)
+    Eigen::MatrixXd Bn(Eigen::MatrixXd::Zero(3, nd));
+    Eigen::MatrixXd Bs(Eigen::MatrixXd::Zero(axi ? 1 : 3, nd));
+    double area = 0;
+    for (int a = 0; a < nen; ++a)
+    {
+        for (int i = 0; i < dim; ++i) Bn(i, dim*a + i) = b(a, i);
+        if (axi)
+        {
+            double hoop = 0;
+            for (std::size_t q = 0; q < geo.w.size(); ++q)
+            {
+                hoop += geo.w[q]*geo.N[q](a)/geo.R[q];
+            }
+            Bn(2, dim*a) = hoop/geo.V;
+            Bs(0, dim*a) = 0.5*b(a, 1);
+            Bs(0, dim*a + 1) = 0.5*b(a, 0);
+        }
+        else
+        {
+            for (int k = 0; k < 3; ++k)
+            {
+                const int i = k, j = (k + 1) % 3;
+                Bs(k, dim*a + i) = 0.5*b(a, j);
+                Bs(k, dim*a + j) = 0.5*b(a, i);
+            }
+        }
+    }
+    if (axi)
+    {
+        for (std::size_t q = 0; q < geo.w.size(); ++q)
+        {
+            area += geo.w[q]/(2*M_PI*geo.R[q]);
+        }
+    }
+    const Eigen::Matrix3d Pdev =
+        Eigen::Matrix3d::Identity() - Eigen::Matrix3d::Constant(1.0/3.0);
+    const double h = axi ? std::sqrt(area) : std::cbrt(geo.V);
+    const double eta = set_.shearViscosity*m.material(e).rho0()*c*h;
+    Eigen::MatrixXd C =
+        2*eta*geo.V*(Bn.transpose()*Pdev*Bn + 2*Bs.transpose()*Bs);
+    C = 0.5*(C + C.transpose());
+    shearDamping_[e] = C;
+
+    // Explicit limit of the damper: dt < 2 m / lambda_max(C), m the
+    // element's smallest nodal mass
+    const double lambda =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>
+        (
+            C, Eigen::EigenvaluesOnly
+        ).eigenvalues().maxCoeff();
+    if (lambda > 0)
+    {
+        const Eigen::VectorXd& mass = m.lumpedMass();
+        double mMin = 1e300;
+        for (int a = 0; a < nen; ++a) mMin = std::min(mMin, mass(dim*en[a]));
+        hourglassStableDt_ = std::min(hourglassStableDt_, 2*mMin/lambda);
     }
 }
 
@@ -131,6 +213,19 @@ Eigen::VectorXd solid::ExplicitSolver::hourglassForce
             {
                 double s = 0;
                 for (int k = 0; k < nen; ++k) s += DP(a, k)*ve(k, i);
+                f(dim*en[a] + i) -= s;
+            }
+        }
+        if (shearDamping_.empty()) continue;
+        const Eigen::MatrixXd& C = shearDamping_[e];
+        for (int a = 0; a < nen; ++a)
+        {
+            for (int i = 0; i < dim; ++i)
+            {
+                double s = 0;
+                for (int k = 0; k < nen; ++k)
+                    for (int j = 0; j < dim; ++j)
+                        s += C(dim*a + i, dim*k + j)*ve(k, j);
                 f(dim*en[a] + i) -= s;
             }
         }
@@ -172,7 +267,15 @@ solid::ExplicitSolver::ExplicitSolver
             "explicit solver", "hourglass", set_.hourglass, 0, 1, "-"
         );
     }
-    bool anyHourglass = set_.hourglass > 0;
+    if (set_.shearViscosity != 0)
+    {
+        checkParameter
+        (
+            "explicit solver", "shearViscosity", set_.shearViscosity, 0, 1,
+            "-"
+        );
+    }
+    bool anyHourglass = set_.hourglass > 0 || set_.shearViscosity > 0;
     for (const auto& r : set_.hourglassRegions)
     {
         const auto& names = m.mesh().regionNames;
