@@ -280,6 +280,35 @@ Foam::indentationInput::addContact(solid::Model& model) const
         FatalIOErrorInFunction(dict_)
             << "entry 'contactPatch': " << err.what() << exit(FatalIOError);
     }
+    // The table must not push the sphere through the cell: its deepest
+    // point below the top of the contact patch stays above the cell's
+    // bottom (was: the steps failed in Newton's iterations, naming no
+    // input; issue 19)
+    {
+        scalar zBottom = GREAT;
+        for (const solid::Vec3& x : mesh.X)
+        {
+            zBottom = min(zBottom, x(mesh.dim() - 1));
+        }
+        const scalar height = zTop - zBottom;
+        const auto& rows = protocol_->rows();
+        for (std::size_t i = 0; i < rows.size(); ++i)
+        {
+            const scalar depth = protocol_->depth(protocol_->rowEnd(i));
+            if (depth >= height)
+            {
+                FatalIOErrorInFunction(dict_)
+                    << "entry 'protocol', row " << label(i + 1) << " (stage "
+                    << rows[i].stage.c_str() << "): the table indents the"
+                    << " sphere " << depth << " m deep, as deep as or deeper"
+                    << " than the cell (" << height << " m from the top of"
+                    << " the contact patch '" << contactPatch_ << "' at "
+                    << zTop << " m to the bottom at " << zBottom << " m):"
+                    << " valid depths are below " << height << " m"
+                    << " (amounts of load rows in m)" << exit(FatalIOError);
+            }
+        }
+    }
     solid::RigidSphereSettings sphere(sphere_);
     sphere.centre0 = mesh.axisymmetric()
         ? solid::Vec3(0, zTop + sphere.radius, 0)
@@ -323,8 +352,7 @@ std::unique_ptr<solid::IndentationDriver> Foam::indentationInput::driver
     const foamTools::inputRecord::digestMap& inputs
 ) const
 {
-    const bool resume =
-        continueRun_ && solid::Checkpoint::exists(outDir/"restart.h5");
+    const bool resume = resumes(outDir);
     checkRestart(outDir/"restart.h5", inputs);
     solid::IndentationSettings settings(settings_);
     settings.inputDigests = foamTools::inputRecord::format(inputs);

@@ -3,6 +3,7 @@
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "Tuple2.H"
+#include "DynamicList.H"
 #include "labelVector.H"
 #include "vector.H"
 #include "vector2D.H"
@@ -79,15 +80,36 @@ solid::Mesh Foam::solidInput::mesh() const
                     << "Cannot find " << file << " (entry 'file'; run "
                     << "cellMesh first)" << exit(FatalIOError);
             }
-            return solid::readGmsh
+            const scalar scale = foamTools::readInRangeOrDefault<scalar>
             (
-                file,
-                foamTools::readInRangeOrDefault<scalar>
-                (
-                    dict, "scale", "", 0, foamTools::noUpperBound<scalar>(),
-                    false, 1
-                )
+                dict, "scale", "", 0, foamTools::noUpperBound<scalar>(),
+                false, 1
             );
+            solid::Mesh mesh(solid::readGmsh(file, scale));
+            // A cell: its size in metres after scaling lies in cellMesh's
+            // range of cellDiameter, (1e-7, 1e-3] m (a mesh in micrometres
+            // or scaled by 1e6 failed later in the solver, naming no
+            // input; issue 19)
+            solid::Vec3 lo(mesh.X[0]), hi(mesh.X[0]);
+            for (const solid::Vec3& x : mesh.X)
+            {
+                lo = lo.cwiseMin(x);
+                hi = hi.cwiseMax(x);
+            }
+            const scalar size = (hi - lo).maxCoeff();
+            if (!(size > 1e-7 && size <= 1e-3))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "the solid mesh " << file << " scaled by entry"
+                    << " 'scale' = " << scale << " is " << size << " m"
+                    << " across (from (" << lo(0) << " " << lo(1) << " "
+                    << lo(2) << ") m to (" << hi(0) << " " << hi(1) << " "
+                    << hi(2) << ") m): a cell is between 1e-07 and"
+                    << " 0.001 m (valid range (1e-07, 0.001] m, cellMesh's"
+                    << " cellDiameter); check the mesh's units and 'scale'"
+                    << " (metres after scaling)" << exit(FatalIOError);
+            }
+            return mesh;
         }
     }
     catch (const solid::SolidError& err)
@@ -122,6 +144,53 @@ std::vector<solid::MaterialParameters> Foam::solidInput::materials
             << "cellMaterials/<set>\"" << nl << "with <set> one of table, "
             << "text, textFactor4, instantaneous (docs/userGuide/"
             << "solidProperties.md)" << exit(FatalIOError);
+    }
+
+    // A mesh without names for its regions (physical groups without
+    // $PhysicalNames: read as region<tag>) while the materials name
+    // regions: say so, not "unknown entry 'nucleus'" (issue 19)
+    {
+        DynamicList<word> unnamed;
+        for (const word& region : regions)
+        {
+            if
+            (
+                region.size() > 6 && region.compare(0, 6, "region") == 0
+             && region.find_first_not_of("0123456789", 6) == std::string::npos
+             && !mats.found(region, keyType::LITERAL)
+            )
+            {
+                unnamed.append(region);
+            }
+        }
+        DynamicList<word> named;
+        for (const entry& e : mats)
+        {
+            if (e.isDict() && !regions.found(e.keyword()))
+            {
+                named.append(e.keyword());
+            }
+        }
+        if (unnamed.size() && named.size())
+        {
+            const dictionary& meshDict = dict_.subDict("mesh");
+            FatalIOErrorInFunction(mats)
+                << "the solid mesh";
+            if (meshDict.found("file"))
+            {
+                FatalIOError
+                    << " '" << meshDict.get<fileName>("file").c_str() << "'";
+            }
+            FatalIOError
+                << " gives no name to its region"
+                << (unnamed.size() == 1 ? "" : "s") << " "
+                << wordList(unnamed) << " (physical groups without a name:"
+                << " no $PhysicalNames section?), while 'materials' names the"
+                << " regions " << wordList(named) << ": name the physical"
+                << " groups in the mesh (Physical Surface(\"nucleus\") = ..."
+                << " in the .geo, or cellMesh), or give the materials"
+                << " under the names read" << exit(FatalIOError);
+        }
     }
 
     // Every entry must name a region of the mesh: a misspelt region would

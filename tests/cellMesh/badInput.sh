@@ -45,7 +45,7 @@ expect() {
     n=$((n + 1))
     good
     sed -i "$edit" "$work/case/system/cellMeshDict"
-    out=$(cellMesh -case "$work/case" 2>&1)
+    out=$(timeout -k 5 120 cellMesh -case "$work/case" 2>&1)
     code=$?
     if [ $code -eq 0 ]; then
         echo "FAIL $name: exit 0"; failures=$((failures + 1)); return
@@ -92,6 +92,10 @@ expect tooManyElements 's/^nucleusSize .*/nucleusSize 1e-9;/' \
     "ask for at least 2.*e\+07 elements, more than maxElements 1000000"
 expect tooManyElements3D 's/^mode .*/mode quarter3D;/; s/^contactRadius .*/contactRadius 0;/; /^fluid/,$d; s/^membraneSize .*/membraneSize 1e-8;/' \
     "more than maxElements"
+# contactSize was not in the estimate: 1e-10 m meshed without end (issue 19,
+# adversarial pass 'contactSizeTiny'; killed at 120 s)
+expect tooManyElementsContact 's/^contactSize .*/contactSize 1e-10;/' \
+    "ask for at least .* elements, more than maxElements 1000000" "contactSize 1e-10 m"
 expect maxElementsZero 's/^membraneLayers .*/membraneLayers 2; maxElements 0;/' \
     "maxElements' = 0 is outside the valid range"
 expect zeroLayers 's/^membraneLayers .*/membraneLayers 0;/' \

@@ -10,7 +10,9 @@
 #  - a lock of another host is refused with the file to remove named;
 #  - a lock whose process id belongs to another executable (a reused id)
 #    is stale;
-#  - every run that ends (also in a fatal error) removes its lock.
+#  - every run that ends (also in a fatal error) removes its lock;
+#  - an empty lock and a directory in place of the lock are refused as
+#    such; a lock naming another case says so; a run records its case.
 # The runs over the first run's results start anew with -overwrite.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -79,4 +81,31 @@ status=0; cellBlastFoam > log.fatal 2>&1 || status=$?
 check "a run that ends in a fatal error removes its lock" \
     "[ $status -ne 0 ] && grep -q 'FOAM FATAL' log.fatal && [ ! -e .runLock ]"
 
+# 6. Locks that are not ours to check (issue 19, adversarial pass: an
+#    empty or directory .runLock was "in use by another run (process -1 on
+#    host , ...)"; a lock copied with a case did not say so)
+: > .runLock
+status=0; cellBlastFoam > log.emptyLock 2>&1 || status=$?
+check "an empty lock is refused as empty, the file named" \
+    "[ $status -ne 0 ] && grep -q 'run lock $work/case/.runLock of the case $work/case is empty or damaged' log.emptyLock \
+     && [ -e .runLock ] && [ ! -s .runLock ]"
+rm .runLock; mkdir .runLock
+status=0; cellBlastFoam > log.dirLock 2>&1 || status=$?
+check "a directory in place of the lock is refused as a directory" \
+    "[ $status -ne 0 ] && grep -q 'run lock $work/case/.runLock of the case $work/case is a directory' log.dirLock \
+     && [ -d .runLock ]"
+rmdir .runLock
+printf 'pid 1\nhost another-host\nexecutable cellBlastFoam\nstarted 2026-01-01T00:00:00\ncase /somewhere/original\n' > .runLock
+status=0; cellBlastFoam > log.copiedLock 2>&1 || status=$?
+check "a lock of another case says so" \
+    "[ $status -ne 0 ] && grep -q 'The lock names another case, /somewhere/original' log.copiedLock"
+rm .runLock
+mv constant/fsiProperties.moved constant/fsiProperties
+cellBlastFoam -overwrite > log.lockCase 2>&1 &
+own=$!; pids+=("$own")
+for _ in $(seq 100); do [ -s .runLock ] && break; sleep 0.1; done
+kill -STOP "$own"
+check "a run records its case in the lock" "grep -qx 'case $work/case' .runLock"
+kill -CONT "$own"
+wait "$own" || true
 exit $fail

@@ -316,3 +316,22 @@ TEST(AtomicResultWriter, SigkillDuringTruncateStepsLeavesOldOrNew)
                 attempts, kills, inside, before, after);
     EXPECT_GE(inside, 1) << "no kill landed inside a cut";
 }
+
+
+// A new file (no append) over an earlier result pair: the .xmf must list
+// none of the earlier steps (was: the .h5 was replaced, the .xmf kept, so
+// that a new run whose first step failed left a solid.xmf pointing at
+// steps that are gone; issue 19, adversarial pass 'overwriteFails')
+TEST(AtomicResultWriter, NewFileReplacesTheXdmfToo)
+{
+    removeFiles({"fresh.h5", "fresh.xmf"});
+    run("fresh");
+    ASSERT_NE(text("fresh.xmf").find("/steps/1/"), std::string::npos);
+    auto m = creepModel();
+    const ResultWriter w("fresh", *m);
+    EXPECT_TRUE(ResultWriter::steps("fresh.h5").empty());
+    const std::string x = text("fresh.xmf");
+    EXPECT_EQ(x.find("/steps/"), std::string::npos)
+        << "the .xmf of a new file lists earlier steps:\n" << x.substr(0, 400);
+    EXPECT_NE(x.find("CollectionType=\"Temporal\""), std::string::npos);
+}

@@ -363,6 +363,15 @@ TEST(SolidIo, MshReaderBadFilesNameFileLineAndCause)
         {"2.2 malformed element", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
             "$Nodes\n1\n1 0 0 0\n$EndNodes\n$Elements\n1\n1 3 5\n"
             "$EndElements\n", "line 10: malformed element line"},
+        // issue 19, adversarial pass: both were read silently (the first
+        // definition of the node kept; the element run degenerate)
+        {"a node tag defined twice", head + entities
+          + "$Nodes\n1 5 1 4\n2 1 0 5\n1\n2\n3\n4\n2\n"
+            "0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 2 0\n$EndNodes\n" + elements,
+            "node 2 is defined twice"},
+        {"a quad with a repeated node", head + entities + nodes
+          + "$Elements\n1 1 1 1\n2 1 3 1\n1 1 2 2 4\n$EndElements\n",
+            "element 1 of region 'region7' lists node 2 twice"},
         {"a face set named like a region", head + names("solid") + edged
           + nodes + edgedElements, "the physical name 'solid' is given to "
             "two physical groups, the 1D group (boundary faces) of tag 8 "

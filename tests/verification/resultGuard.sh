@@ -10,7 +10,14 @@
 #    file of the case (every file's checksum equal, its own log aside);
 #  - with -overwrite and a shorter end time it runs, and no time directory
 #    of the first run after its own end is left (no mix of two runs);
-#  - startFrom latestTime is not stopped (a restart continues the run).
+#  - startFrom latestTime is not stopped (a restart continues the run),
+#    and a restart to a later end time writes that time (whatever the
+#    write interval counted from the restart);
+#  - startFrom latestTime with nothing to continue from (the times after
+#    the start deleted; cellIndentationFoam: restart.h5 deleted) is a new
+#    start: refused as above, naming what is missing;
+#  - cellIndentationFoam -overwrite whose first step fails leaves a
+#    solid.xmf listing only steps of solid.h5.
 set -euo pipefail
 . "$(dirname "$0")/../lib/restartTools.sh"
 . "$(dirname "$0")/../lib/checks.sh"
@@ -47,6 +54,33 @@ timeDirectorySolver()
     sed -i 's/^startFrom .*/startFrom latestTime;/; s/^endTime .*/endTime 1.5e-8;/' system/controlDict
     status=0; $solver > log.continue 2>&1 || status=$?
     check "$solver: startFrom latestTime continues" "[ $status -eq 0 ]"
+    # A restart with a longer end time and a write interval that, counted
+    # from the restart, misses it: the last time is written all the same
+    # (issue 19: was no time written at all). The time steps are not
+    # shortened to end on 1.7e-8 s (OpenFOAM aligns them with write
+    # times only): the last time lies within half a step before it
+    sed -i 's/^endTime .*/endTime 1.7e-8;/; s/^writeInterval .*/writeInterval 1e-7;/' system/controlDict
+    status=0; $solver > log.extend 2>&1 || status=$?
+    local last
+    last=$(foamListTimes -latestTime 2>/dev/null | tail -1)
+    check "$solver: a restart to a later end time writes its last time ($last s)" \
+        "[ $status -eq 0 ] && awk -v t='$last' 'BEGIN{exit !(t > 1.69e-8 && t <= 1.7e-8)}' \
+         && [ -f '$last/.writeCommitted' ] && [ -f '$last/p' ]"
+    # startFrom latestTime with every time after the start deleted: the
+    # latest time is the start, nothing to continue; a run would start
+    # anew over the results (issue 19: replaced them, the blast's
+    # solid/solid.h5 with it); refused, then -overwrite runs
+    local again=$work/$solver.timesDeleted
+    cp -r . "$again"
+    pushd "$again" > /dev/null
+        rm -rf $(foamListTimes)    # every time but 0
+        refused "$solver.timesDeleted" $solver
+        check "$solver (times deleted): the message says nothing is left to continue" \
+            "grep -q 'startFrom latestTime, but there is nothing to continue from (no time directory after the start time 0 s)' log.again"
+        status=0; $solver -overwrite > log.overwrite 2>&1 || status=$?
+        check "$solver (times deleted): -overwrite starts anew" \
+            "[ $status -eq 0 ] && [ \"\$(foamListTimes | wc -l)\" -ge 1 ]"
+    popd > /dev/null
 }
 
 mkdir "$work/fluid"; cd "$work/fluid"
@@ -73,6 +107,36 @@ status=0; cellIndentationFoam -overwrite > log.overwrite 2>&1 || status=$?
 check "cellIndentationFoam: -overwrite runs" \
     "[ $status -eq 0 ] && grep -q '^End' log.overwrite \
      && [ \$(grep -vc '^#' postProcessing/indentation/force.dat) -gt 0 ]"
+# startFrom latestTime without restart.h5: nothing to continue from, the
+# run would start anew over force.dat, peaks.dat, solid.h5 (issue 19: it
+# did); refused naming the missing checkpoint
+cp -r . "$work/indentationNoCheckpoint"
+pushd "$work/indentationNoCheckpoint" > /dev/null
+    sed -i 's/^startFrom .*/startFrom       latestTime;/' system/controlDict
+    rm postProcessing/indentation/restart.h5
+    refused cellIndentationFoam.noCheckpoint cellIndentationFoam
+    check "cellIndentationFoam (no restart.h5): the missing checkpoint is named" \
+        "grep -q 'nothing to continue from (no checkpoint .*postProcessing/indentation/restart.h5)' log.again"
+popd > /dev/null
+# -overwrite whose first step fails: solid.h5 is new (no step), and
+# solid.xmf must list none of the earlier run's steps (issue 19: it listed
+# them all)
+cp -r . "$work/indentationOverwriteFails"
+pushd "$work/indentationOverwriteFails" > /dev/null
+    sed -i 's|cellMaterials/textFactor4"|&\n    nucleus { C10 1e9; }|' constant/solidProperties
+    status=0; cellIndentationFoam -overwrite > log.fails 2>&1 || status=$?
+    check "cellIndentationFoam -overwrite, first step failing: exits non-zero" "[ $status -ne 0 ]"
+    check "cellIndentationFoam -overwrite, first step failing: solid.xmf lists only steps of solid.h5" \
+        "/usr/bin/python3 - <<'PY'
+import re
+from neuronFsi.solidResults import SolidResults
+with SolidResults('postProcessing/indentation/solid.h5') as r:
+    steps = set(str(k) for k in r.steps())
+listed = set(re.findall(r'solid.h5:/steps/(\d+)/',
+                        open('postProcessing/indentation/solid.xmf').read()))
+assert listed <= steps, sorted(listed - steps)
+PY"
+popd > /dev/null
 
 # In parallel, the times reconstructed into the whole case (reconstructPar)
 # are results too. A new start on processor directories decomposed anew

@@ -65,6 +65,9 @@ int main(int argc, char *argv[])
     );
     foamTools::writeGuard::discardIncompleteTimes(args);
     #include "createTime.H"
+    // The boundary conditions' tables (a pulse): not empty, times
+    // increasing, or an error naming file and patch
+    foamTools::checkTables(runTime.timePath());
 
     autoPtr<dynamicFvMesh> meshPtr
     (

@@ -67,6 +67,9 @@ int main(int argc, char *argv[])
     );
     foamTools::writeGuard::discardIncompleteTimes(args);
     #include "createTime.H"
+    // The boundary conditions' tables (a pulse): not empty, times
+    // increasing, or an error naming file and patch
+    foamTools::checkTables(runTime.timePath());
     #include "createMesh.H"
     foamTools::checkCellVolumes(mesh);
 

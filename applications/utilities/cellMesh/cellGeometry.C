@@ -150,7 +150,16 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
             << " than maxElements " << maxElements << " (nucleusSize "
             << nucleusSize_ << " m, cytoplasmSize " << cytoplasmSize_
             << " m, membraneSize " << membraneSize_ << " m, membraneLayers "
-            << layers_ << "; cell " << 2*a_ << " x " << H_ << " m): larger"
+            << layers_;
+        if (contactRadius_ > 0)
+        {
+            FatalIOError
+                << ", contactSize " << contactSize_ << " m over contactRadius "
+                << contactRadius_ << " m and contactDepth " << contactDepth_
+                << " m";
+        }
+        FatalIOError
+            << "; cell " << 2*a_ << " x " << H_ << " m): larger"
             << " sizes (in metres), or a larger maxElements if that many is"
             << " meant" << exit(FatalIOError);
     }
@@ -310,20 +319,40 @@ Foam::scalar Foam::cellGeometry::innerVolume() const
 Foam::scalar Foam::cellGeometry::minimumElements() const
 {
     const scalar quarter = mode_ == meshMode::quarter3D ? 0.25 : 1;
+    // The contact patch (contactRadius > 0): elements of contactSize in
+    // r <= contactRadius down to contactDepth below the surface there, and
+    // along the membrane's contact patch (was not counted: contactSize
+    // 1e-10 m meshed without end; issue 19, adversarial pass)
+    scalar contact = 0;
+    if (contactRadius_ > 0)
+    {
+        const scalar rc = contactRadius_;
+        const scalar depth = min(contactDepth_, outer(thetaContact()).second());
+        contact = axisymmetric()
+            ? rc*depth/sqr(contactSize_) + rc/contactSize_*layers_
+            : quarter*constant::mathematical::pi*sqr(rc)
+             *(depth/pow3(contactSize_) + layers_/sqr(contactSize_));
+    }
     if (axisymmetric())
     {
         const scalar A = 0.25*constant::mathematical::pi*a_*H_;
         const scalar An = pow(f_, 2.0/3.0)*A;
-        return
+        return max
+        (
+            contact,
             An/sqr(nucleusSize_) + (A - An)/sqr(cytoplasmSize_)
-          + max(a_, H_)/membraneSize_*layers_;
+          + max(a_, H_)/membraneSize_*layers_
+        );
     }
     const scalar V =
         quarter*2.0/3.0*constant::mathematical::pi*sqr(a_)*H_;
     const scalar S = quarter*constant::mathematical::pi*sqr(a_);
-    return
+    return max
+    (
+        contact,
         f_*V/pow3(nucleusSize_) + (1 - f_)*V/pow3(cytoplasmSize_)
-      + S/sqr(membraneSize_)*layers_;
+      + S/sqr(membraneSize_)*layers_
+    );
 }
 
 

@@ -63,7 +63,7 @@ import math
 import os
 import sys
 
-from neuronFsi import planeWave, postProcessing
+from neuronFsi import options, planeWave, postProcessing
 
 BOUNDS = {"arrival": 0.3e-9, "peak1ns": 0.05, "peakIncident": 0.05,
           "plateau": 0.05, "impulse": 0.03}
@@ -85,7 +85,7 @@ def main():
     p.add_argument("-check", action="store_true")
     p.add_argument("-except", dest="skip", default="")
     p.add_argument("-reference", default=None)
-    a = p.parse_args()
+    a = options.parse(p)
     case = os.path.abspath(a.case)
     # [(kind or None, measure)]: "peak1ns" or "fluid:peak1ns"
     skip = [tuple(k.split(":")) if ":" in k else (None, k)

@@ -104,6 +104,10 @@ int main(int argc, char *argv[])
     thermo.p().write();
     thermo.T().write();
     U.write();
+    // What set the fields: riemannError compares the dictionary with it
+    // (an edited dictionary was compared silently with the fields of the
+    // former one; issue 19)
+    problem.writeRecord(runTime.timePath()/"uniform"/"riemannProblem");
 
     Info<< "Left  state: rho " << problem.left.rho << " kg/m^3, U "
         << problem.left.U << " m/s, p " << problem.left.p << " Pa" << nl

@@ -145,7 +145,24 @@ int main(int argc, char *argv[])
     #include "createTime.H"
 
     const fileName h5Name(args[1]);
-    const word region(args.opt<word>("region", "solid"));
+    // A plain name: the region is written to constant/<region>,
+    // system/<region> and <time>/<region> (was: -region ../x wrote outside
+    // the case's layout; issue 19)
+    const string regionOption(args.opt<string>("region", "solid"));
+    if
+    (
+        regionOption.empty() || regionOption == "." || regionOption == ".."
+     || word::validate(regionOption) != regionOption
+    )
+    {
+        FatalErrorInFunction
+            << "option -region '" << regionOption.c_str() << "' is not a"
+            << " plain name (the region is written to constant/<region>,"
+            << " system/<region> and <time>/<region>): give a name without"
+            << " '/', spaces, quotes or ';', not '.' or '..'"
+            << exit(FatalError);
+    }
+    const word region(regionOption);
     const scalar angle =
         degToRad(args.opt<scalar>("wedgeAngle", 5.0));
     if (!(angle > 0 && angle < constant::mathematical::pi))

@@ -55,7 +55,7 @@ import subprocess
 import sys
 import time
 
-from neuronFsi import foamDict, postProcessing
+from neuronFsi import foamDict, options, postProcessing
 
 
 class SweepError(Exception):
@@ -175,7 +175,7 @@ def main():
     ap.add_argument("-nProcs", type=int, default=1)
     ap.add_argument("-name")
     ap.add_argument("-keep", action="store_true")
-    a = ap.parse_args()
+    a = options.parse(ap)
     try:
         if a.nProcs < 1:
             raise SweepError("-nProcs %d is outside the valid range [1, inf)"
@@ -196,6 +196,15 @@ def main():
                 command = str(foamDict.read(os.path.join(
                     case, "system/controlDict"))["application"])
         name = a.name or keys[-1]
+        # a plain name: it names the run folders <case>.sweep_<name>_<i>
+        # and the report postProcessing/sweep/<name>.{md,csv} (was: -name
+        # ../.. wrote the report outside the case; issue 19)
+        if (not name or name in (".", "..") or "/" in name
+                or os.sep in name or "\0" in name):
+            raise SweepError("-name '%s' is not a plain name (it names the"
+                             " run folders and postProcessing/sweep/<name>"
+                             ".{md,csv}): give a name without '/', not '.' "
+                             "or '..'" % name)
         copies = ["%s.sweep_%s_%d" % (case, name, i)
                   for i in range(len(values))]
         # The run folders are made and removed by the sweep: one that is

@@ -118,8 +118,9 @@ void Foam::fluidSolidInteraction::truncateSolidResults(const Time& runTime)
         return;
     }
 
-    IFstream is(stateFile);
-    const label k = dictionary(is).get<label>("h5Step");
+    // h5Step checked against the step's time in the file before any step
+    // is removed (an edited h5Step would cut the file)
+    const label k = solidDomain::restartStep(runTime);
     const clockTime timer;
     label removed = 0;
     try

@@ -1,6 +1,7 @@
 #include "solidDomain.H"
 #include "solidInput.H"
 #include "keywordCheck.H"
+#include "inputChecks.H"
 #include "SolidError.H"
 #include "IOobject.H"
 #include "pointField.H"
@@ -9,6 +10,7 @@
 #include "OSspecific.H"
 #include "SubList.H"
 
+#include <algorithm>
 #include <cmath>
 
 namespace
@@ -177,7 +179,7 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
         }
         IFstream is(stateFile);
         const dictionary d(is);
-        const label k = d.get<label>("h5Step");
+        const label k = restartStep(runTime_);
         guarded("solid restart", [&]
         {
             solid::ResultWriter::restart(h5, k, *model_);
@@ -244,6 +246,71 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
         });
     }
     save();
+}
+
+
+Foam::label Foam::solidDomain::restartStep(const Time& runTime)
+{
+    const fileName stateFile(runTime.timePath()/"uniform"/"solidState");
+    const fileName h5(runTime.globalPath()/"solid"/"solid.h5");
+    IFstream is(stateFile);
+    const dictionary d(is);
+    const label k = foamTools::readInRange<label>
+    (
+        d, "h5Step", "", 0, labelMax, true
+    );
+    const scalar tState = d.get<scalar>("time");
+    std::vector<std::pair<int, double>> steps;
+    guarded("solid restart", [&]
+    {
+        steps = solid::ResultWriter::steps(h5);
+    });
+    const auto it = std::find_if
+    (
+        steps.begin(), steps.end(),
+        [k](const std::pair<int, double>& s) { return s.first == k; }
+    );
+    const scalar t = runTime.value();
+    // The state's time is the one written for the step (17 digits: the
+    // same double); the fluid's restart time agrees to round-off (the
+    // solid sums its substeps)
+    const scalar tol = 1e-9*max(mag(t), mag(tState));
+    if
+    (
+        it == steps.end()
+     || mag(it->second - tState) > 1e-12*mag(tState)
+     || mag(it->second - t) > tol
+    )
+    {
+        FatalIOErrorInFunction(d)
+            << "Restart from t = " << runTime.timeName() << " s: entry"
+            << " 'h5Step' = " << k << " (state time " << tState << " s)";
+        if (it == steps.end())
+        {
+            FatalIOError
+                << " is not a step of " << h5 << " (" << label(steps.size())
+                << " steps";
+            if (steps.size())
+            {
+                FatalIOError
+                    << ", " << steps.front().first << " to "
+                    << steps.back().first;
+            }
+            FatalIOError << "): the solid's state cannot be restored.";
+        }
+        else
+        {
+            FatalIOError
+                << " names the step of " << h5 << " at t = " << it->second
+                << " s, not the restart time " << t << " s: the solid"
+                << " would restart at another time than the fluid.";
+        }
+        FatalIOError
+            << " The file was edited or comes from another run: restart"
+            << " from another time, or start anew (startFrom startTime,"
+            << " -overwrite)" << exit(FatalIOError);
+    }
+    return k;
 }
 
 

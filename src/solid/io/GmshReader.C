@@ -553,9 +553,20 @@ solid::Mesh solid::readGmsh(const std::string& fileName, double scale)
     std::map<std::size_t, int> index;
     for (std::size_t i = 0; i < msh.nodeTags.size(); ++i)
     {
-        if (index.count(msh.nodeTags[i])) continue;
-        index[msh.nodeTags[i]] = int(mesh.X.size());
         const Vec3& x = msh.nodeX[i];
+        const auto it = index.find(msh.nodeTags[i]);
+        if (it != index.end())
+        {
+            // Which of the two would the elements use? (was: the first,
+            // silently; issue 19, adversarial pass 'dupNodeTag')
+            std::ostringstream os;
+            os  << "gmsh file '" << fileName << "': node "
+                << msh.nodeTags[i] << " is defined twice (at ("
+                << msh.nodeX[it->second].transpose() << ") and at ("
+                << x.transpose() << ")); every node tag must be defined once";
+            throw SolidError(SolidError::Kind::mesh, os.str());
+        }
+        index[msh.nodeTags[i]] = int(mesh.X.size());
         mesh.X.push_back(scale*Vec3(x(0), x(1), dim == 2 ? 0.0 : x(2)));
     }
     auto node = [&](std::size_t tag)
@@ -651,6 +662,28 @@ solid::Mesh solid::readGmsh(const std::string& fileName, double scale)
                               + " belongs to two regions (second: '"
                               + name + "')"
                             );
+                        }
+                        // A node given twice: a degenerate element (was
+                        // read, and run, silently; issue 19, adversarial
+                        // pass 'repeatedNodeQuad')
+                        std::set<std::size_t> distinct;
+                        for (int a = 0; a < nen; ++a)
+                        {
+                            const std::size_t t = b.nodes[nn*k + a];
+                            if (!distinct.insert(t).second)
+                            {
+                                throw SolidError
+                                (
+                                    SolidError::Kind::mesh, "gmsh file '"
+                                  + fileName + "': element "
+                                  + std::to_string(b.tags[k]) + " of region"
+                                    " '" + name + "' lists node "
+                                  + std::to_string(t) + " twice (a "
+                                    "degenerate element; each of its "
+                                  + std::to_string(nen) + " nodes must be "
+                                    "distinct)"
+                                );
+                            }
                         }
                         for (int a = 0; a < nen; ++a)
                         {

@@ -57,6 +57,9 @@ solid::ResultWriter::ResultWriter
         f.close();
     }
     commitFile(tmp, h5File());
+    // The .xmf of the new file, with no steps: an earlier .xmf would list
+    // steps that are gone (a new run whose first step fails left it)
+    writeXdmf(model);
 }
 
 

@@ -1,6 +1,7 @@
 #include "couplingScheme.H"
 #include "error.H"
 #include "keywordCheck.H"
+#include "inputChecks.H"
 
 Foam::autoPtr<Foam::couplingScheme> Foam::couplingScheme::New
 (
@@ -20,6 +21,23 @@ Foam::autoPtr<Foam::couplingScheme> Foam::couplingScheme::New
             "reuse"                 // IQNILS
         }
     );
+    // ... and valid whichever scheme runs: an entry of another scheme is
+    // checked too (was: an out-of-range reuse under aitken passed silently
+    // until the scheme was switched; issue 19)
+    if (dict.found("initialRelaxation"))
+    {
+        foamTools::readInRange<scalar>
+        (
+            dict, "initialRelaxation", "", 0, 1, false
+        );
+    }
+    if (dict.found("reuse"))
+    {
+        foamTools::readInRange<label>
+        (
+            dict, "reuse", "", 0, foamTools::noUpperBound<label>(), true
+        );
+    }
     const word name(dict.get<word>("scheme"));
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(name);

@@ -1,0 +1,46 @@
+"""Command-line options of our Python applications (argparse), parsed the
+way OpenFOAM's applications take them: an option's value may be a negative
+number. argparse reads "-dz -25e-9" as the option -dz followed by an
+option "-25e-9" and stops with "expected one argument" (its own test for a
+negative number misses exponents); parse() joins such a pair into
+"-dz=-25e-9" first, so that the application's range check says what is
+wrong with the value (issue 19)."""
+
+import sys
+
+
+def _numbers(s):
+    """Whether s is one or more numbers (sweepCase -values "-1 -2")."""
+    try:
+        return len([float(x) for x in s.split()]) > 0
+    except ValueError:
+        return False
+
+
+def joinNegativeValues(parser, argv):
+    """argv with each option that takes one value and is followed by a
+    negative number joined to it (-opt=-1e-9)."""
+    takesValue = set()
+    for action in parser._actions:
+        if action.option_strings and action.nargs is None \
+                and action.const is None:
+            takesValue.update(action.option_strings)
+    out = []
+    i = 0
+    while i < len(argv):
+        a = argv[i]
+        if a in takesValue and i + 1 < len(argv) \
+                and argv[i + 1].startswith("-") and _numbers(argv[i + 1]):
+            out.append(a + "=" + argv[i + 1])
+            i += 2
+        else:
+            out.append(a)
+            i += 1
+    return out
+
+
+def parse(parser, argv=None):
+    """parser.parse_args of argv (default: the command line) with negative
+    values taken as values."""
+    return parser.parse_args(joinNegativeValues(
+        parser, sys.argv[1:] if argv is None else argv))

@@ -1,0 +1,52 @@
+"""neuronFsi.options: an option's value may be a negative number
+(planeWave -dz -25e-9 was argparse's "expected one argument", not the
+range check's message; issue 19)."""
+import argparse
+import os
+import subprocess
+import sys
+import unittest
+
+from neuronFsi import options
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+
+
+def parser():
+    p = argparse.ArgumentParser(prog="t")
+    p.add_argument("-dz", type=float, default=1.0)
+    p.add_argument("-values")
+    p.add_argument("-check", action="store_true")
+    p.add_argument("rest", nargs="*")
+    return p
+
+
+class NegativeValues(unittest.TestCase):
+
+    def testNegativeNumbersAreValues(self):
+        a = options.parse(parser(), ["-dz", "-25e-9", "-values", "-1 -2e3"])
+        self.assertEqual(a.dz, -25e-9)
+        self.assertEqual(a.values, "-1 -2e3")
+        a = options.parse(parser(), ["-dz", "-.5", "-check"])
+        self.assertEqual(a.dz, -0.5)
+        self.assertTrue(a.check)
+
+    def testOptionsStayOptions(self):
+        # a flag before a negative positional, an option's word value
+        a = options.parse(parser(), ["-check", "-values", "abc"])
+        self.assertTrue(a.check)
+        self.assertEqual(a.values, "abc")
+        with self.assertRaises(SystemExit):
+            options.parse(parser(), ["-dz", "-check"])
+
+    def testPlaneWaveNamesTheNegativeDz(self):
+        r = subprocess.run([sys.executable, os.path.join(
+            ROOT, "applications/utilities/planeWave/planeWave.py"),
+            "-dz", "-25e-9"], capture_output=True, text=True,
+            env=dict(os.environ, PYTHONPATH=os.path.join(ROOT, "src/python")))
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertIn("-dz -2.5e-08 m: must be positive and finite", r.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()
