@@ -3,10 +3,17 @@
 # 18 item 1; not a test). In scratch copies of the tutorial (inputs only),
 # Allrun -noRun prepares each variant, then cellBlastFoam runs on one rank:
 #
-#   bench/blast/hexWater.sh cost [endTime]      (default 2e-9 s)
+#   bench/blast/hexWater.sh cost [endTime [binDir]]   (default 2e-9 s)
 #       tet  : Allrun -tet (the tetrahedral box of earlier versions)
 #       hex  : Allrun (the hexahedral default: dz 0.5 um, lateral 1 um)
-#     per variant: fluid cells, time steps to endTime, the last time step,
+#       with binDir, also
+#       hex of binDir : the same with the cellMesh of binDir (e.g. one
+#              built from an earlier commit: its O-grid against this one;
+#              the solver is this tree's in every variant); the two
+#              hexahedral variants then run at the same time (2 cores)
+#     per variant: fluid cells, the smallest water edge (cellMesh's
+#     quality table), checkMesh's largest non-orthogonality, skewness and
+#     aspect ratio, time steps to endTime, the last time step,
 #     cellBlastFoam's CPU split of the time loop (before the pulse reaches
 #     the cell: one coupling pass per step, the step set by the sound
 #     speed, so it is the step of the run until the arrival)
@@ -43,8 +50,13 @@ run() {         # run <case> <endTime>
 
 summary() {     # summary <name> <case>
     local c=$2
-    printf '%s: %s cells, %s steps, last deltaT %s s; %s\n' "$1" \
+    printf '%s: %s cells, smallest edge %s m, %s; %s steps, last deltaT %s s; %s\n' "$1" \
         "$(awk '/^ *cells:/ {print $2}' "$c/log.checkMesh")" \
+        "$(awk '$1 == "water" && NF == 7 {print $3}' "$c/log.cellMesh")" \
+        "$(awk '/non-orthogonality Max:/ {n = $4} /Max skewness/ {s = $4}
+                /Max aspect ratio/ {a = $5}
+                END {printf "non-orthogonality %s deg, skewness %s, aspect ratio %s", n, s, a}' \
+            "$c/log.checkMesh")" \
         "$(grep -c '^Time =' "$c/log.cellBlastFoam")" \
         "$(awk '/^deltaT =/ {d = $3} END {print d}' "$c/log.cellBlastFoam")" \
         "$(grep '^CPU time of the time loop' "$c/log.cellBlastFoam")"
@@ -54,12 +66,30 @@ work=$(mktemp -d /tmp/hexWater.XXXXXX)
 case $what in
 cost)
     T=${2:-2e-9}
+    other=${3:-}
     tet=$(prepare "$work/tet" -tet -endTime "$T")
     hex=$(prepare "$work/hex" -endTime "$T")
+    if [ -n "$other" ]
+    then
+        [ -x "$other/cellMesh" ] || { echo "no $other/cellMesh" >&2; exit 1; }
+        old=$(PATH=$(cd "$other" && pwd):$PATH prepare "$work/hexOther" \
+            -endTime "$T")
+    fi
     run "$tet" "$T"
-    run "$hex" "$T"
+    if [ -n "$other" ]
+    then
+        # The two hexahedral variants at the same time: on a shared
+        # machine they then see the same load (one after the other, the
+        # same runs differed by 20 % in CPU per step)
+        run "$hex" "$T" & h=$!
+        run "$old" "$T" & o=$!
+        wait $h && wait $o || exit 1
+    else
+        run "$hex" "$T"
+    fi
     summary tetrahedra "$tet"
     summary hexahedra "$hex"
+    [ -z "$other" ] || summary "hexahedra, cellMesh of $other" "$old"
     ;;
 column)
     T=${2:-4e-8}
@@ -70,6 +100,6 @@ column)
     (cd "$c" && planeWave -probes fluid -endTime "$last")
     ;;
 *)
-    echo "usage: hexWater.sh cost|column [endTime]" >&2; exit 1 ;;
+    echo "usage: hexWater.sh cost [endTime [binDir]] | column [endTime]" >&2; exit 1 ;;
 esac
 echo "scratch: $work"

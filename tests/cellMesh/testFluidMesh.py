@@ -44,6 +44,13 @@ and assert, with the independent reader:
     cell within 2 % of the cell's share;
   - the cellInterface nodes are on the spheroid (1e-9), the symmetryX /
     symmetryY / bottom nodes exactly on x = 0 / y = 0 / z = 0;
+  - the O-grid spreads the box's grid evenly over the cell (not the
+    radial projection, which shrinks it near the box's vertical edges
+    and the top of its side faces): the cellInterface nodes on the
+    substrate are equally spaced in azimuth (to 1e-9 of the spacing),
+    and those of the side face x = A in the plane y = 0 divide the cell's
+    meridian into equal chords (to 1 %; the radial projection: about 2x
+    from the equator to the top edge);
   - gmshToFoam, checkMesh "Mesh OK." with non-orthogonality below 60 deg
     (its max, skewness and aspect ratio are printed).
 Usage: testFluidMesh.py axisymmetric|quarter3D|full3D|quarter3DColumn|
@@ -295,6 +302,25 @@ def hexWater(mode):
         level = (c[:, 0]**2 + c[:, 1]**2)/a**2 + c[:, 2]**2/H**2 - 1
         check(abs(level).max() < 1e-9, f"{mode}: {len(c)} cellInterface"
               f" nodes on the spheroid (largest |level| {abs(level).max():.1e})")
+        # The box's grid spread evenly over the cell: azimuths of the
+        # interface nodes on the substrate, chords of those of the side
+        # face x = A in the plane y = 0 (its nB + 1 lowest)
+        eq = c[abs(c[:, 2]) < eps]
+        phi = np.sort(np.arctan2(eq[:, 1], eq[:, 0]))
+        gaps = np.diff(np.concatenate([phi, [] if quarter
+                                       else [phi[0] + 2*np.pi]]))
+        check(len(gaps) == (2 if quarter else 4)*nA
+              and np.ptp(gaps) < 1e-9*gaps.mean(),
+              f"{mode}: {len(gaps)} azimuth gaps of the interface on the"
+              f" substrate from {gaps.min():.6f} to {gaps.max():.6f} rad"
+              " (equal to 1e-9)")
+        mer = c[(abs(c[:, 1]) < eps) & (c[:, 0] > 0)]
+        mer = mer[np.argsort(mer[:, 2])][:nB + 1]
+        chords = np.linalg.norm(np.diff(mer, axis=0), axis=1)
+        check(len(chords) == nB and np.ptp(chords) < 0.01*chords.mean(),
+              f"{mode}: {len(chords)} chords of the side face's line on the"
+              f" cell from {chords.min()*1e6:.4f} to"
+              f" {chords.max()*1e6:.4f} um (equal to 1 %)")
         planes = [("bottom", 2)] + ([("symmetryX", 0), ("symmetryY", 1)]
                                     if quarter else [])
         for name, k in planes:

@@ -652,7 +652,7 @@ void Foam::fluidBox::hexBox()
     hex_->toGmsh(unit_);
     const meshQuality q(3, unit_);
     const meshQuality::regionStats w = q.total();
-    Info<< "Hexahedral water: rays from the cell to the inner box "
+    Info<< "Hexahedral water: segments from the cell to the inner box "
         << hex_->minRay() << " to "
         << hex_->maxRay() << " m in " << hex_->nLayers() << " layers "
         << "(growth ratio at most " << hexFluidMesh::maxRatio_ << ")" << nl;

@@ -1,5 +1,6 @@
 #include "hexFluidMesh.H"
 #include "error.H"
+#include "mathematicalConstants.H"
 #include <gmsh.h>
 #include <algorithm>
 #include <cmath>
@@ -80,7 +81,7 @@ Foam::hexFluidMesh::hexFluidMesh(const sizes& s)
     );
     z_.insert(z_.end(), zu.begin() + 1, zu.end());
 
-    // Rays: the shortest and the longest, then the layer count
+    // Segments: the shortest and the longest, then the layer count
     minRay_ = GREAT;
     maxRay_ = 0;
     for (label k = 0; k <= kB_; ++k)
@@ -89,7 +90,11 @@ Foam::hexFluidMesh::hexFluidMesh(const sizes& s)
     {
         if (outer(i, j, k))
         {
-            const scalar l = rayLength({x_[i], x_[j], z_[k]});
+            const vec S = surfacePoint(i, j, k);
+            const scalar l = std::sqrt
+            (
+                sqr(x_[i] - S[0]) + sqr(x_[j] - S[1]) + sqr(z_[k] - S[2])
+            );
             minRay_ = std::min(minRay_, l);
             maxRay_ = std::max(maxRay_, l);
         }
@@ -132,15 +137,70 @@ bool Foam::hexFluidMesh::removed(label i, label j, label k) const
 }
 
 
-Foam::scalar Foam::hexFluidMesh::rayLength(const vec& P) const
+Foam::hexFluidMesh::vec Foam::hexFluidMesh::project(const vec& P) const
 {
-    const scalar rho = std::sqrt(P[0]*P[0] + P[1]*P[1] + P[2]*P[2]);
-    const scalar e = 1/std::sqrt
+    const scalar c = 1/std::sqrt
     (
-        (P[0]*P[0] + P[1]*P[1])/(rho*rho*s_.a*s_.a)
-      + P[2]*P[2]/(rho*rho*s_.H*s_.H)
+        (P[0]*P[0] + P[1]*P[1])/(s_.a*s_.a) + P[2]*P[2]/(s_.H*s_.H)
     );
-    return rho - e;
+    // c P: exact zeros stay zeros (the symmetry planes, the substrate)
+    return {c*P[0], c*P[1], c*P[2]};
+}
+
+
+Foam::hexFluidMesh::vec Foam::hexFluidMesh::surfacePoint
+(
+    label i,
+    label j,
+    label k
+) const
+{
+    const scalar x = x_[i], y = x_[j];
+    scalar z = z_[k];
+
+    // Side face (below the top edge): the height at which the radial
+    // projection of the vertical line (x, y, 0..B) has covered k/kB of
+    // its arc (chords of nArc equal steps in z, linear in between)
+    if (k > 0 && k < kB_)
+    {
+        const label nArc = 2000;
+        const scalar B = z_[kB_];
+        std::vector<scalar> arc(nArc + 1, 0);
+        vec prev = project({x, y, 0});
+        for (label n = 1; n <= nArc; ++n)
+        {
+            const vec q = project({x, y, B*n/nArc});
+            arc[n] = arc[n - 1] + std::sqrt
+            (
+                sqr(q[0] - prev[0]) + sqr(q[1] - prev[1])
+              + sqr(q[2] - prev[2])
+            );
+            prev = q;
+        }
+        const scalar target = arc[nArc]*k/kB_;
+        const label n = label
+        (
+            std::upper_bound(arc.begin(), arc.end(), target) - arc.begin()
+        );
+        const scalar w = (target - arc[n - 1])/(arc[n] - arc[n - 1]);
+        z = B*(n - 1 + w)/nArc;
+    }
+    vec S = project({x, y, z});
+
+    // Equiangular azimuth (the pole, x = y = 0, has none)
+    if (x != 0 || y != 0)
+    {
+        const scalar quarter = 0.5*constant::mathematical::pi;
+        const scalar phi = std::atan2(y, x);
+        const scalar n = std::round(phi/quarter);
+        const scalar phiE =
+            n*quarter + 0.5*quarter*std::tan(phi - n*quarter);
+        const scalar r = std::sqrt(S[0]*S[0] + S[1]*S[1]);
+        // Nodes on x = 0 or y = 0 stay there exactly
+        S[0] = x == 0 ? 0 : r*std::cos(phiE);
+        S[1] = y == 0 ? 0 : r*std::sin(phiE);
+    }
+    return S;
 }
 
 
@@ -262,16 +322,17 @@ void Foam::hexFluidMesh::build()
     {
         if (!outer(i, j, k)) continue;
         const vec P{x_[i], x_[j], z_[k]};
-        const scalar rho = std::sqrt(P[0]*P[0] + P[1]*P[1] + P[2]*P[2]);
-        const scalar l = rayLength(P);
-        const std::vector<scalar> f = layers(l);
+        const vec S = surfacePoint(i, j, k);
+        const vec d{P[0] - S[0], P[1] - S[1], P[2] - S[2]};
+        const std::vector<scalar> f =
+            layers(std::sqrt(d[0]*d[0] + d[1]*d[1] + d[2]*d[2]));
         ray[t(i, j, k)] = nodes_.size();
         for (label m = 0; m < nLayers_; ++m)
         {
-            const scalar c = (rho - l + f[m]*l)/rho;
-            // Exact zeros stay zeros: the symmetry planes and the
-            // substrate remain plane
-            nodes_.push_back({c*P[0], c*P[1], c*P[2]});
+            // Exact zeros stay zeros (S and P both in the plane): the
+            // symmetry planes and the substrate remain plane
+            nodes_.push_back
+                ({S[0] + f[m]*d[0], S[1] + f[m]*d[1], S[2] + f[m]*d[2]});
             onCell.push_back(m == 0);
         }
     }
