@@ -48,7 +48,11 @@ check "the first run ends normally and removes its lock" \
 check "the first run's coupling log equals the reference's" \
     "cmp -s postProcessing/fsi/0/coupling.dat '$work/ref/postProcessing/fsi/0/coupling.dat'"
 
-# 2. A killed run leaves a stale lock; the next run takes over
+# 2. A killed run leaves a stale lock; the next run takes over. The runs
+#    from here on start anew (startFrom startTime): the first run wrote
+#    its last step, so a latestTime run would have nothing left to do and
+#    end before it can be stopped or killed
+foamDictionary -entry startFrom -set startTime system/controlDict > /dev/null
 cellBlastFoam -overwrite > log.killed 2>&1 &
 killed=$!; pids+=("$killed")
 for _ in $(seq 100); do [ -s .runLock ] && break; sleep 0.1; done
