@@ -20,9 +20,6 @@ Description
 #include "fvCFD.H"
 #include "inputChecks.H"
 #include "OFstream.H"
-#include <algorithm>
-#include <sstream>
-#include <string>
 #include "rhoEThermoModel.H"
 #include "riemannProblem.H"
 #include "anyExactRiemannSolver.H"
@@ -88,113 +85,11 @@ int main(int argc, char *argv[])
 
     instantList timeDirs = timeSelector::select0(runTime, args);
 
-    // -time of a time that is not there: OpenFOAM's selector takes the
-    // nearest one (was: compared silently at another time; issue 19)
-    if (args.found("time"))
-    {
-        const instantList all(runTime.times());
-        std::string values(args["time"]);
-        std::replace(values.begin(), values.end(), ',', ' ');
-        std::istringstream is(values);
-        std::string item;
-        while (is >> item)
-        {
-            // A range (a:b) selects what it covers; a value must be a time
-            std::size_t used = 0;
-            double value = 0;
-            try
-            {
-                value = std::stod(item, &used);
-            }
-            catch (const std::exception&)
-            {
-                continue;
-            }
-            if (used != item.size())
-            {
-                continue;
-            }
-            const scalar want = value;
-            bool found = false;
-            for (const instant& t : all)
-            {
-                found = found
-                 || (
-                        t.name() != "constant"
-                     && mag(t.value() - want)
-                     <= 1e-12*max(mag(want), mag(t.value()))
-                    );
-            }
-            if (!found)
-            {
-                FatalErrorInFunction
-                    << "option -time " << want << ": no time directory "
-                    << want << " s in " << args.path() << " (times: ";
-                label n = 0;
-                for (const instant& t : all)
-                {
-                    if (t.name() != "constant")
-                    {
-                        FatalError << (n++ ? " " : "") << t.name().c_str();
-                    }
-                }
-                FatalError
-                    << " s); give one of them (OpenFOAM would take the"
-                    << " nearest)" << exit(FatalError);
-            }
-        }
-    }
-
-    // The problem that set the initial fields (setRiemannProblem's record
-    // in the earliest time with one): an edited dictionary would measure
-    // the edit, not the solver (was: compared silently; issue 19)
-    {
-        fileName record;
-        for (const instant& t : runTime.times())
-        {
-            const fileName f
-            (
-                runTime.path()/t.name()/"uniform"/"riemannProblem"
-            );
-            if (t.name() != "constant" && isFile(f))
-            {
-                record = f;
-                break;
-            }
-        }
-        if (record.empty())
-        {
-            WarningInFunction
-                << "no record of the problem that set the initial fields"
-                << " (<time>/uniform/riemannProblem, written by"
-                << " setRiemannProblem since issue 19): "
-                << problem.file << " is taken as it is, not compared"
-                << nl << endl;
-        }
-        else
-        {
-            const wordList changed(problem.differsFrom(record));
-            if (changed.size())
-            {
-                FatalErrorInFunction
-                    << problem.file << ": entr"
-                    << (changed.size() == 1 ? "y" : "ies");
-                forAll(changed, i)
-                {
-                    FatalError << (i ? ", '" : " '")
-                        << changed[i].c_str() << "'";
-                }
-                FatalError
-                    << (changed.size() == 1 ? " differs" : " differ")
-                    << " from the problem that set the initial"
-                    << " fields (" << record << "): the errors would"
-                    << " measure the edit, not the solution. Restore the"
-                    << " dictionary, or set the fields anew"
-                    << " (setRiemannProblem) and run the solver again"
-                    << exit(FatalError);
-            }
-        }
-    }
+    // -time of a time that is not there is refused (OpenFOAM's selector
+    // takes the nearest); the dictionary must be the one that set the
+    // initial fields (issue 19)
+    foamTools::requireExistingTimes(args, runTime);
+    problem.requireRecordMatches(runTime);
 
     #include "createMesh.H"
     problem.checkDiaphragm(mesh);
