@@ -99,7 +99,7 @@ void solid::ExplicitSolver::buildHourglass()
         hourglassDamping_[e] = D*P;
         if (set_.shearViscosity > 0)
         {
-            buildShearDamping(e, b, c);
+            buildShearDamping(e, b, c, area);
         }
         if (!(D > 0)) continue;
 
@@ -117,7 +117,8 @@ void solid::ExplicitSolver::buildShearDamping
 (
     int e,
     const Eigen::MatrixXd& b,
-    double c
+    double c,
+    double area
 )
 {
     Model& m = model_;
@@ -133,7 +134,6 @@ void solid::ExplicitSolver::buildShearDamping
     // rates (r-z: rz; 3D: xy, yz, zx)
     Eigen::MatrixXd Bn(Eigen::MatrixXd::Zero(3, nd));
     Eigen::MatrixXd Bs(Eigen::MatrixXd::Zero(axi ? 1 : 3, nd));
-    double area = 0;
     for (int a = 0; a < nen; ++a)
     {
         for (int i = 0; i < dim; ++i) Bn(i, dim*a + i) = b(a, i);
@@ -156,13 +156,6 @@ void solid::ExplicitSolver::buildShearDamping
                 Bs(k, dim*a + i) = 0.5*b(a, j);
                 Bs(k, dim*a + j) = 0.5*b(a, i);
             }
-        }
-    }
-    if (axi)
-    {
-        for (std::size_t q = 0; q < geo.w.size(); ++q)
-        {
-            area += geo.w[q]/(2*M_PI*geo.R[q]);
         }
     }
     const Eigen::Matrix3d Pdev =
