@@ -283,8 +283,10 @@ void Foam::conservativeFluid::correctPrimitives()
     thermo_->e().primitiveFieldRef() =
         rhoE_.primitiveField()/rho - 0.5*magSqr(U_.primitiveField());
 
-    U_.correctBoundaryConditions();
+    // The thermo first: a characteristic boundary (planeWaveInflow) sets
+    // U there from the cells' new p as well as their U
     thermo_->correct();
+    U_.correctBoundaryConditions();
 }
 
 

@@ -1,5 +1,6 @@
 #include "rhoEThermoModel.H"
 #include "eosStatus.H"
+#include "isentropeTable.H"
 #include "keywordCheck.H"
 
 template<class Law>
@@ -127,4 +128,17 @@ Foam::label Foam::rhoEThermoModel<Law>::firstInvalid
         }
     }
     return -1;
+}
+
+
+template<class Law>
+riemann::isentropeTable Foam::rhoEThermoModel<Law>::isentrope
+(
+    const scalar rho,
+    const scalar e,
+    const scalar pLow,
+    const scalar pHigh
+) const
+{
+    return riemann::isentropeTable::build(law_, rho, e, pLow, pHigh);
 }

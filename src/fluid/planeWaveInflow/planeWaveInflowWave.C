@@ -1,0 +1,363 @@
+#include "planeWaveInflowWave.H"
+#include "isentropeTable.H"
+#include "rhoEThermo.H"
+#include "volFields.H"
+#include "IFstream.H"
+#include "Time.H"
+#include <algorithm>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- A `table (...)` entry as a list of (time, value) pairs
+Foam::List<Foam::Tuple2<Foam::scalar, Foam::scalar>> readTable
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key
+)
+{
+    using namespace Foam;
+    ITstream& is = dict.lookup(key);
+    const word kind(is);
+    if (kind != "table")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry " << key << " is `" << kind << " ...`; expected "
+            << "`table ((t0 p0) (t1 p1) ...)` [s Pa]"
+            << exit(FatalIOError);
+    }
+    return List<Tuple2<scalar, scalar>>(is);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
+
+Foam::planeWaveInflowWave::planeWaveInflowWave
+(
+    const dictionary& entry,
+    const fvPatch& patch
+)
+:
+    columnHeight_(entry.get<scalar>("columnHeight")),
+    pulse_(readTable(entry, "pulse")),
+    file_(entry.get<fileName>("file")),
+    path_(file_),
+    n_(Zero),
+    haveAmbient_(false),
+    pAmbient_(0),
+    TAmbient_(0)
+{
+    if (!(columnHeight_ > 0) || !std::isfinite(columnHeight_))
+    {
+        FatalIOErrorInFunction(entry)
+            << "columnHeight " << columnHeight_ << " m of patch "
+            << patch.name() << " must be positive and finite"
+            << exit(FatalIOError);
+    }
+    if (entry.found("ambientPressure") || entry.found("ambientTemperature"))
+    {
+        pAmbient_ = entry.get<scalar>("ambientPressure");
+        TAmbient_ = entry.get<scalar>("ambientTemperature");
+        if (!std::isfinite(pAmbient_) || !(TAmbient_ > 0))
+        {
+            FatalIOErrorInFunction(entry)
+                << "ambientPressure " << pAmbient_ << " Pa and "
+                << "ambientTemperature " << TAmbient_ << " K of patch "
+                << patch.name() << ": finite, T > 0 (they are written by "
+                << "the solver; remove both for a new run)"
+                << exit(FatalIOError);
+        }
+        haveAmbient_ = true;
+    }
+    readWave(entry, patch);
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+void Foam::planeWaveInflowWave::readWave
+(
+    const dictionary& entry,
+    const fvPatch& patch
+)
+{
+    const Time& runTime = patch.boundaryMesh().mesh().time();
+    path_ = file_;
+    path_.expand();
+    if (!path_.isAbsolute())
+    {
+        path_ = runTime.globalPath()/path_;
+    }
+    IFstream is(path_);
+    if (!is.good())
+    {
+        FatalIOErrorInFunction(entry)
+            << "Patch " << patch.name() << ": cannot read the wave file "
+            << path_ << " (written by `planeWave -inflow <height>`)"
+            << exit(FatalIOError);
+    }
+    const dictionary wave(is);
+
+    // A plane patch: one normal
+    const vectorField nf(patch.nf());
+    if (nf.empty())
+    {
+        FatalIOErrorInFunction(entry)
+            << "Patch " << patch.name() << " has no faces"
+            << exit(FatalIOError);
+    }
+    n_ = nf[0];
+    const scalar skew = gMax(mag(nf - n_));
+    if (skew > 1e-6)
+    {
+        FatalIOErrorInFunction(entry)
+            << "Patch " << patch.name() << " is not a plane: its face "
+            << "normals differ by up to " << skew << " (the inflow of a "
+            << "plane wave needs a plane patch)" << exit(FatalIOError);
+    }
+
+    const scalar height = wave.get<scalar>("height");
+    const scalar patchHeight =
+        gSum(patch.magSf()*(patch.Cf() & n_))/gSum(patch.magSf());
+    const scalar tol = 1e-6*columnHeight_;
+    if (mag(height - patchHeight) > tol)
+    {
+        FatalIOErrorInFunction(wave)
+            << "The wave in " << path_ << " is at height " << height
+            << " m, patch " << patch.name() << " at " << patchHeight
+            << " m (tolerance " << tol << " m): compute it for this mesh "
+            << "(planeWave -inflow " << patchHeight << ")"
+            << exit(FatalIOError);
+    }
+    const scalar column = wave.get<scalar>("columnHeight");
+    if (mag(column - columnHeight_) > 1e-12*columnHeight_)
+    {
+        FatalIOErrorInFunction(wave)
+            << "The wave in " << path_ << " is for a column of " << column
+            << " m, the p entry of patch " << patch.name() << " has "
+            << "columnHeight " << columnHeight_ << " m"
+            << exit(FatalIOError);
+    }
+    const List<Tuple2<scalar, scalar>> pulse(readTable(wave, "pulse"));
+    if (pulse != pulse_)
+    {
+        FatalIOErrorInFunction(wave)
+            << "The wave in " << path_ << " is for the pulse " << pulse
+            << ", the p entry of patch " << patch.name() << " has "
+            << pulse_ << ": compute it again (planeWave -inflow)"
+            << exit(FatalIOError);
+    }
+
+    const List<vector> data(wave.lookup("data"));
+    if (data.size() < 2)
+    {
+        FatalIOErrorInFunction(wave)
+            << "data of " << path_ << " has " << data.size() << " rows; "
+            << "at least 2 (time [s], p [Pa], u [m/s])" << exit(FatalIOError);
+    }
+    t_.setSize(data.size());
+    p_.setSize(data.size());
+    u_.setSize(data.size());
+    forAll(data, i)
+    {
+        t_[i] = data[i].x();
+        p_[i] = data[i].y();
+        u_[i] = data[i].z();
+        if
+        (
+            !std::isfinite(t_[i]) || !std::isfinite(p_[i])
+         || !std::isfinite(u_[i]) || (i > 0 && !(t_[i] > t_[i - 1]))
+        )
+        {
+            FatalIOErrorInFunction(wave)
+                << "data row " << i << " of " << path_ << " " << data[i]
+                << ": numbers must be finite and the times increasing"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+const riemann::isentropeTable& Foam::planeWaveInflowWave::table
+(
+    const fvPatch& patch,
+    const rhoEThermo& thermo
+) const
+{
+    if (table_)
+    {
+        return *table_;
+    }
+    if (!haveAmbient_)
+    {
+        // The water at rest next to the patch (a fresh run)
+        const scalarField pI(thermo.p().boundaryField()[patch.index()]
+            .patchInternalField());
+        const scalarField TI(thermo.T().boundaryField()[patch.index()]
+            .patchInternalField());
+        const scalar cI = gMax(thermo.c().primitiveField());
+        const scalar rhoI = gMax(thermo.rho().primitiveField());
+        const scalar dp = gMax(pI) - gMin(pI);
+        const scalar dT = gMax(TI) - gMin(TI);
+        if (dp > 1e-9*rhoI*cI*cI || dT > 1e-9*gMax(TI))
+        {
+            FatalErrorInFunction
+                << "Patch " << patch.name() << " (planeWaveInflow): the "
+                << "cells next to it are not at one state at the start "
+                << "(p from " << gMin(pI) << " to " << gMax(pI) << " Pa, "
+                << "T from " << gMin(TI) << " to " << gMax(TI) << " K); "
+                << "the ambient isentrope is taken from the water at rest "
+                << "there" << exit(FatalError);
+        }
+        pAmbient_ = gAverage(pI);
+        TAmbient_ = gAverage(TI);
+        haveAmbient_ = true;
+    }
+    scalarField rhoA(1), eA(1), cA(1);
+    thermo.rhoEFromPT
+    (
+        scalarField(1, pAmbient_), scalarField(1, TAmbient_), rhoA, eA
+    );
+    thermo.cFromRhoE(rhoA, eA, cA);
+    // The range: 4 times the wave's amplitude above (incident and
+    // reflected waves overlap at the patch), once below; at least 1e-3 of
+    // the bulk modulus
+    const scalar amplitude =
+        max(max(mag(p_ - pAmbient_)), 1e-3*rhoA[0]*sqr(cA[0]));
+    try
+    {
+        table_ = std::make_shared<const riemann::isentropeTable>
+        (
+            thermo.isentrope
+            (
+                rhoA[0], eA[0], pAmbient_ - amplitude,
+                pAmbient_ + 4*amplitude
+            )
+        );
+    }
+    catch (const std::exception& err)
+    {
+        FatalErrorInFunction
+            << "Patch " << patch.name() << " (planeWaveInflow): the "
+            << "isentrope through the ambient state (" << pAmbient_
+            << " Pa, " << TAmbient_ << " K) over [" << pAmbient_ - amplitude
+            << ", " << pAmbient_ + 4*amplitude << "] Pa: " << err.what()
+            << exit(FatalError);
+    }
+    Info<< "planeWaveInflow " << patch.name() << ": ambient "
+        << pAmbient_ << " Pa, " << TAmbient_ << " K; wave from " << path_
+        << " (" << t_.size() << " rows to " << t_.last() << " s)" << endl;
+    return *table_;
+}
+
+
+void Foam::planeWaveInflowWave::waveAt
+(
+    const fvPatch& patch,
+    const scalar t,
+    scalar& p,
+    scalar& u
+) const
+{
+    if (!(t >= t_.first() && t <= t_.last()))
+    {
+        FatalErrorInFunction
+            << "Patch " << patch.name() << " (planeWaveInflow): time " << t
+            << " s is outside the wave of " << path_ << " ["
+            << t_.first() << ", " << t_.last() << "] s: compute it to the "
+            << "run's endTime (planeWave -inflow ... -endTime)"
+            << exit(FatalError);
+    }
+    const label i = min
+    (
+        label(std::upper_bound(t_.begin(), t_.end(), t) - t_.begin()),
+        t_.size() - 1
+    ) - 1;
+    const scalar w = (t - t_[i])/(t_[i + 1] - t_[i]);
+    p = (1 - w)*p_[i] + w*p_[i + 1];
+    u = (1 - w)*u_[i] + w*u_[i + 1];
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+void Foam::planeWaveInflowWave::state
+(
+    const fvPatch& patch,
+    scalarField& pb,
+    vectorField& Ub,
+    scalarField& Tb
+) const
+{
+    const objectRegistry& db = patch.boundaryMesh().mesh();
+    const rhoEThermo& thermo =
+        db.lookupObject<rhoEThermo>("thermophysicalProperties");
+    const volVectorField& U = db.lookupObject<volVectorField>("U");
+    const riemann::isentropeTable& F = table(patch, thermo);
+
+    const scalar t = db.time().value();
+    scalar pw, uw;
+    waveAt(patch, t, pw, uw);
+
+    const scalarField pI
+    (
+        thermo.p().boundaryField()[patch.index()].patchInternalField()
+    );
+    const vectorField UI(U.boundaryField()[patch.index()].patchInternalField());
+
+    pb.setSize(patch.size());
+    Ub.setSize(patch.size());
+    scalarField rhob(patch.size()), eb(patch.size());
+    label face = -1;
+    try
+    {
+        const scalar Jin = uw - F.F(pw);
+        forAll(pI, i)
+        {
+            face = i;
+            const scalar un = UI[i] & n_;
+            const scalar Jout = un + F.F(pI[i]);
+            pb[i] = F.pressure(0.5*(Jout - Jin));
+            Ub[i] = UI[i] + (0.5*(Jout + Jin) - un)*n_;
+            rhob[i] = F.rho(pb[i]);
+            eb[i] = F.e(pb[i]);
+        }
+    }
+    catch (const std::out_of_range& err)
+    {
+        FatalErrorInFunction
+            << "Patch " << patch.name() << " (planeWaveInflow), time " << t
+            << " s, face " << face << " (p next to it "
+            << (face >= 0 ? pI[face] : pw) << " Pa, wave " << pw
+            << " Pa): " << err.what() << " (the isentrope is tabulated "
+            << "for pressures up to 4 times the wave's largest)"
+            << exit(FatalError);
+    }
+    Tb.setSize(patch.size());
+    thermo.TFromRhoE(rhob, eb, Tb);
+}
+
+
+void Foam::planeWaveInflowWave::write(Ostream& os) const
+{
+    // All digits: a restart compares the pulse with the file's and builds
+    // the same isentrope
+    const int precision = os.precision(17);
+    os.writeEntry("columnHeight", columnHeight_);
+    os.writeKeyword("pulse") << "table " << pulse_
+        << token::END_STATEMENT << nl;
+    os.writeEntry("file", file_);
+    if (haveAmbient_)
+    {
+        os.writeEntry("ambientPressure", pAmbient_);
+        os.writeEntry("ambientTemperature", TAmbient_);
+    }
+    os.precision(precision);
+}
+
+
+// ************************************************************************* //
