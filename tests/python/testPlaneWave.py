@@ -295,7 +295,8 @@ class InflowTop(TempDirTestCase):
         for old, new, msg in (
                 ("columnHeight    1e-4;", "columnHeight    -1e-4;",
                  "boundaryField/top/columnHeight = -0.0001: must be"),
-                ("columnHeight    1e-4;", "", "columnHeight = None"),
+                ("columnHeight    1e-4;", "", "boundaryField/top \\(type "
+                 "planeWaveInflow\\) has no columnHeight"),
                 ("pulse           table", "pulse           tabel",
                  "boundaryField/top/pulse is tabel, not a table"),
                 ("(5e-09 5e7)", "(5e-09 nan)", "top/pulse: the table is "

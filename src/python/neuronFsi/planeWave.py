@@ -160,7 +160,11 @@ def inflowColumnHeight(case, patch="top"):
     path, top = _topP(case, patch)
     if top.get("type") != INFLOW:
         return None
-    Z = top.get("columnHeight")
+    if "columnHeight" not in top:
+        raise PlaneWaveError("%s: boundaryField/%s (type %s) has no "
+                             "columnHeight, the physical column's height "
+                             "[m]" % (path, patch, INFLOW))
+    Z = top["columnHeight"]
     if isinstance(Z, bool) or not isinstance(Z, (int, float)) \
             or not (math.isfinite(Z) and Z > 0):
         raise PlaneWaveError("%s: boundaryField/%s/columnHeight = %s: must "
