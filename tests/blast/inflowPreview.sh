@@ -98,9 +98,10 @@ if bash "$here/runPreview.sh" "$work/b" -h 0.25e-6 -far 2e-6 -cell 0.5e-6 \
 then
     fail "Allrun -inflow 12e-6 accepted"
 fi
-grep -q "valid range -Z >= 1.265e-05 m" "$work/log" \
-    && grep -q "Allrun: -inflow 12e-6 is the water's -Z" "$work/log" \
-    || { cat "$work/log"; fail "-inflow 12e-6: message"; }
+for m in "valid range -Z >= 1.265e-05 m" "Allrun: -inflow 12e-6 is the water's -Z"
+do
+    grep -qF -- "$m" "$work/log" || { cat "$work/log"; fail "-inflow 12e-6: no '$m'"; }
+done
 [ ! -e "$work/b/axisymmetricPreview/constant/inflowWave" ] \
     || fail "-inflow 12e-6 wrote constant/inflowWave"
 echo "inflowPreview: ok"
