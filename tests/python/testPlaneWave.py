@@ -478,8 +478,10 @@ class PlaneWaveInflowUtility(TempDirTestCase):
         self.assertEqual((d["height"], d["columnHeight"], d["dz"]),
                          (2e-6, 4e-6, 50e-9))
         self.assertEqual(d["pulse"], pw.appliedPressure(self.tmp + "/case"))
+        # to the end time and one step of the scene beyond (the
+        # preview's maxDeltaT 1e-9 s: its last step may end past endTime)
         self.assertEqual(d["t"][0], 0)
-        self.assertAlmostEqual(d["t"][-1], 3e-9, delta=1e-20)
+        self.assertAlmostEqual(d["t"][-1], 4e-9, delta=1e-20)
         k = (d["t"] > 1.9e-9) & (d["t"] < 2.95e-9)
         np.testing.assert_allclose(-d["u"][k], hugoniotVelocity(
             self.tmp + "/case", d["p"][k]), rtol=0.005)
@@ -504,16 +506,42 @@ class PlaneWaveInflowUtility(TempDirTestCase):
             self.assertFalse(os.path.exists(
                 self.tmp + "/case/constant/inflowWave"), args)
 
-    def testEndTimeOfTheControlDict(self):
-        previewCase(self.tmp + "/case", 4e-6)
+    def setControl(self, entries):
         path = self.tmp + "/case/system/controlDict"
-        text = foamDict.set_entry(read(path), ["endTime"], "1e-9")
+        text = read(path)
+        for key, value in entries.items():
+            text = foamDict.set_entry(text, [key], value)
         with open(path, "w") as f:
             f.write(text)
-        r = self.run_("-inflow", "2e-6", "-dz", "50e-9")
-        self.assertEqual(r.returncode, 0, r.stderr)
-        t = pw.readInflow(self.tmp + "/case/constant/inflowWave")["t"]
-        self.assertAlmostEqual(t[-1], 1e-9, delta=1e-20)
+
+    def testEndTimeOfTheControlDict(self):
+        # to endTime + maxDeltaT (adjustTimeStep), else + deltaT
+        previewCase(self.tmp + "/case", 4e-6)
+        for entries, last in (({"endTime": "1e-9"}, 1e-9 + 1e-9),
+                              ({"endTime": "1e-9", "maxDeltaT": "5e-10"},
+                               1e-9 + 5e-10),
+                              ({"adjustTimeStep": "no", "deltaT": "1e-11"},
+                               1e-9 + 1e-11)):
+            self.setControl(entries)
+            r = self.run_("-inflow", "2e-6", "-dz", "50e-9")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            path = self.tmp + "/case/constant/inflowWave"
+            t = pw.readInflow(path)["t"]
+            self.assertAlmostEqual(t[-1], last, delta=1e-20, msg=entries)
+            self.assertIn("// to %.17g s: the end time 1e-09 s and the "
+                          "longest step of the scene" % last, read(path))
+
+    def testStepOfTheSceneNeeded(self):
+        previewCase(self.tmp + "/case", 4e-6)
+        self.setControl({"maxDeltaT": "0"})
+        r = self.run_("-inflow", "2e-6", "-dz", "50e-9", "-endTime", "1e-9")
+        self.assertNotEqual(r.returncode, 0)
+        self.assertRegex(r.stderr, r"planeWave: error: .*/system/"
+                         r"controlDict: entry 'maxDeltaT' = 0: must be a "
+                         r"time \[s\], positive and finite \(with "
+                         r"adjustTimeStep")
+        self.assertFalse(os.path.exists(
+            self.tmp + "/case/constant/inflowWave"))
 
 
 if __name__ == "__main__":

@@ -59,7 +59,10 @@ Usage
     -dz         the 1D cell size [m] (default 25e-9: ten times finer
                 than the preview's finest water cell)
     -endTime    [s]; default: the last time of the case's probes (with
-                -inflow: the case's controlDict endTime)
+                -inflow: the case's controlDict endTime; the wave is
+                computed one step of the scene beyond it, maxDeltaT or
+                deltaT of the controlDict: a run's last step may end past
+                its endTime)
     -inflow     the height [m] of the scene's top above the substrate,
                 0 < HEIGHT < Z: write constant/inflowWave for it
     -except     measures not checked, [solid:|fluid:]<measure> (all
@@ -231,30 +234,53 @@ def main():
                                      for c, k in skip) if skip else ""))
 
 
+def _time(path, d, key, hint=""):
+    """The entry key of the dictionary d of file path: a time [s],
+    positive and finite."""
+    v = d.get(key)
+    if isinstance(v, bool) or not isinstance(v, (int, float)) \
+            or not (math.isfinite(v) and v > 0):
+        raise planeWave.PlaneWaveError(
+            "%s: entry '%s' = %s: must be a time [s], positive and finite%s"
+            % (path, key, v, hint))
+    return float(v)
+
+
 def inflow(case, a, table):
     """planeWave -inflow: the column's p and u at the height a.inflow
-    written to <case>/constant/inflowWave"""
+    written to <case>/constant/inflowWave, to the scene's end time and one
+    of its steps beyond: OpenFOAM ends a run with the first step that ends
+    at or after endTime - deltaT/2, and the boundary condition needs the
+    wave at that step's time (in the preview's smoke run, endTime 2.2e-8 s,
+    the last step ended at 2.2003e-8 s). A step is at most maxDeltaT with
+    adjustTimeStep, else deltaT (system/controlDict)."""
+    path = os.path.join(case, "system", "controlDict")
+    try:
+        d = foamDict.read(path)
+    except (OSError, foamDict.DictError) as err:
+        raise planeWave.PlaneWaveError("%s: %s" % (path, err))
     end = a.endTime
     if end is None:
-        path = os.path.join(case, "system", "controlDict")
-        try:
-            end = foamDict.read(path).get("endTime")
-        except (OSError, foamDict.DictError) as err:
-            raise planeWave.PlaneWaveError("%s: %s" % (path, err))
-        if isinstance(end, bool) or not isinstance(end, (int, float)) \
-                or not (math.isfinite(end) and end > 0):
-            raise planeWave.PlaneWaveError(
-                "%s: entry 'endTime' = %s: must be a time [s], positive and "
-                "finite (or give -endTime)" % (path, end))
-    wave = planeWave.column(case, [a.inflow], a.Z, end, dz=a.dz,
+        end = _time(path, d, "endTime", " (or give -endTime)")
+    step = (_time(path, d, "maxDeltaT", " (with adjustTimeStep, the "
+                  "longest step of the scene: the wave is computed that "
+                  "long beyond the end time)")
+            if d.get("adjustTimeStep") is True else _time(path, d, "deltaT"))
+    wave = planeWave.column(case, [a.inflow], a.Z, end + step, dz=a.dz,
                             maxCells=a.maxCells)
     out = os.path.join(case, planeWave.INFLOW_FILE)
-    planeWave.writeInflow(out, wave, a.inflow, table, "Written by: planeWave "
-                          + " ".join(sys.argv[1:]) + " (case %s)" % case)
+    planeWave.writeInflow(
+        out, wave, a.inflow, table,
+        "Written by: planeWave %s (case %s)\nto %.17g s: the end time %g s "
+        "and the longest step of the scene, %g s (%s), past which its last "
+        "step cannot end" % (" ".join(sys.argv[1:]), case, end + step, end,
+                             step, "maxDeltaT" if d.get("adjustTimeStep")
+                             is True else "deltaT"))
     u = wave.velocityAt(a.inflow)
     print("planeWave: %s: p and u at z = %g m of the 1D column (%g m, cells "
-          "%g m) to %g s, %d steps; peak p %.4g MPa, u %.4g to %.4g m/s"
-          % (out, a.inflow, a.Z, a.dz, end, len(wave.t),
+          "%g m) to %g s (end time %g s + one step of the scene at most), "
+          "%d steps; peak p %.4g MPa, u %.4g to %.4g m/s"
+          % (out, a.inflow, a.Z, a.dz, end + step, end, len(wave.t),
              wave.at(a.inflow).max()*1e-6, u.min(), u.max()))
 
 

@@ -461,7 +461,7 @@ _INFLOW_HEADER = """FoamFile
 // full water column (the pulse applied on its top face at columnHeight, the
 // rigid substrate at z = 0; rhoRiemannFoam, neuronFsi.planeWave.column)
 // sampled at the plane z = height, the scene's top.
-// %s
+%s
 
 height          %.17g;  // [m] the plane's height above the substrate (the scene's top)
 columnHeight    %.17g;  // [m] the physical column: the pulse is applied at its top face
@@ -478,8 +478,8 @@ data
 def writeInflow(path, wave, height, pulse, what):
     """Write constant/inflowWave: p and u of the PlaneWave at one of its
     heights [m], with the column's height, the pulse table [(t [s],
-    p [Pa])] and the 1D cell size, 17 significant digits (what: the
-    comment line, e.g. the command that wrote it). The column's probes
+    p [Pa])] and the 1D cell size, 17 significant digits (what: comment
+    lines, e.g. the command that wrote it). The column's probes
     start at its first step; the first row is t = 0 with that step's
     values, the state at rest: the pulse needs (Z - height)/C0 to come
     down, and a uniform state is kept exactly by the scheme. Written to a
@@ -494,7 +494,8 @@ def writeInflow(path, wave, height, pulse, what):
         p = np.concatenate((p[:1], p))
         u = np.concatenate((u[:1], u))
     text = [_INFLOW_HEADER % (
-        " ".join(what.split()), height, wave.Z,
+        "\n".join("// " + " ".join(line.split())
+                  for line in what.split("\n")), height, wave.Z,
         " ".join("(%.17g %.17g)" % (a, b) for a, b in pulse), wave.dz)]
     text += ["    (%.17g %.17g %.17g)\n" % r for r in zip(t, p, u)]
     text.append(");\n")
