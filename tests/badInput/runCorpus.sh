@@ -95,8 +95,20 @@ DICT
     mkdir -p "$c/1/solid"
     echo "previous result" > "$c/1/solid/D"
 }
-for b in Fluid Solid Mesh Fsi H5; do make$b; done
-for b in fluid solid mesh fsi h5
+# blast: the preview's water (0/ from 0.orig, thermo, schemes, controlDict)
+# with its top a planeWaveInflow boundary of the 100 um column: the
+# dictionaries planeWave -inflow reads
+makeBlast() {
+    local c=$bases/blast t=$root/tutorials/blast/axisymmetricPreview
+    mkdir -p "$c/constant" "$c/system"
+    cp -r "$t/0.orig" "$c/0"
+    cp "$t/constant/thermophysicalProperties" "$c/constant/"
+    cp "$t/system"/{fvSchemes,fvSolution,controlDict} "$c/system/"
+    (cd "$c" && /usr/bin/python3 -c "from neuronFsi import planeWave
+planeWave.setInflowBoundary('.', 1e-4)")
+}
+for b in Fluid Solid Mesh Fsi H5 Blast; do make$b; done
+for b in fluid solid mesh fsi h5 blast
 do
     [ -d "$bases/$b" ] || { echo "badInput: base case $b not built"; exit 1; }
 done

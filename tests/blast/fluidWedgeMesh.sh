@@ -4,7 +4,8 @@
 # mesh bit for bit; with -outer 4e-6 blockMesh and checkMesh pass and the
 # ring beside the cell's box goes from about -far at r = 12.4 um to about
 # -outer at r = 50 um, monotonically, at a ratio per cell below 1.2; bad
-# sizes are refused with the option named and a non-zero exit, the
+# sizes (and a column that ends below one cell above the box around the
+# cell) are refused with the option named and a non-zero exit, the
 # blockMeshDict left untouched. Quiet unless it fails.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -53,9 +54,12 @@ print(f"{'ok  ' if ok else 'FAIL'} ring cells {len(d)}: first {d[0]*1e6:.3f}"
 sys.exit(0 if ok else 1)
 PY
 
-# 3. Bad sizes: refused, the existing blockMeshDict untouched
+# 3. Bad sizes: refused, the existing blockMeshDict untouched (-Z 13e-6:
+# the column must reach one -dz cell, 1 um here, above the box around the
+# cell, 12.4 um, as a short scene of Allrun -inflow would)
 cp system/blockMeshDict keep
-for bad in "-outer 0.5e-6" "-outer -1" "-far 0" "-h 0" "-dz 0"
+for bad in "-outer 0.5e-6" "-outer -1" "-far 0" "-h 0" "-dz 0" "-Z 13e-6" \
+    "-Z nan"
 do
     # shellcheck disable=SC2086
     if msg=$(/usr/bin/python3 "$gen" -far 1e-6 $bad -o system/blockMeshDict 2>&1)

@@ -1,13 +1,26 @@
 """neuronFsi.planeWave on synthetic histories with known answers: the
-pulse's shape, the 1-ns running mean, the four measures and their errors
-(the 1D column run itself is tested by tests/blast/planeWave.sh)."""
+pulse's shape, the 1-ns running mean, the four measures and their errors;
+the planeWaveInflow top of a shortened scene (its pulse and column height,
+the top entries of 0/, the constant/inflowWave file written and read back)
+and, on a short real column (rhoRiemannFoam, about a second), the column
+of such a case and planeWave -inflow with its refusals."""
+import math
 import os
+import shutil
+import subprocess
+import sys
 import unittest
 
 import numpy as np
 
 from fixtures import TempDirTestCase
+from neuronFsi import foamDict
 from neuronFsi import planeWave as pw
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+PREVIEW = os.path.join(ROOT, "tutorials", "blast", "axisymmetricPreview")
+UTILITY = os.path.join(ROOT, "applications", "utilities", "planeWave",
+                       "planeWave.py")
 
 TABLE = [(0, 0), (1e-10, 5e7), (5e-9, 5e7), (5.1e-9, 0), (1, 0)]
 
@@ -208,9 +221,6 @@ class Measures(unittest.TestCase):
                         self.z)
 
 
-if __name__ == "__main__":
-    unittest.main()
-
 
 class ColumnRefusesBeforeRunning(TempDirTestCase):
     """column() refuses a column it cannot run in reasonable time, or bad
@@ -232,3 +242,307 @@ class ColumnRefusesBeforeRunning(TempDirTestCase):
         # the limit is an argument
         with self.assertRaisesRegex(pw.PlaneWaveError, "above the limit"):
             pw.column(case, [50e-6], 100e-6, 1e-7, dz=50e-9, maxCells=1000)
+
+
+def read(path):
+    with open(path) as f:
+        return f.read()
+
+
+INFLOW_P = """internalField uniform 0;
+boundaryField
+{
+    top
+    {
+        type            planeWaveInflow;
+        columnHeight    1e-4;
+        pulse           table ( (0 0) (1e-10 5e7) (5e-09 5e7) (5.1e-09 0)
+                                (1 0) );
+        file            "constant/inflowWave";
+        value           uniform 0;
+    }
+    bottom { type zeroGradient; }
+}
+"""
+
+
+class InflowTop(TempDirTestCase):
+    """A scene shortened by a planeWaveInflow top: its pulse and the
+    physical column's height come from 0/p's top entry"""
+
+    def testPulseAndColumnHeight(self):
+        self.write("0/p", INFLOW_P)
+        self.assertEqual(pw.appliedPressure(self.tmp),
+                         [(float(a), float(b)) for a, b in TABLE])
+        self.assertEqual(pw.inflowColumnHeight(self.tmp), 1e-4)
+        pw.checkColumnHeight(self.tmp, 100e-6)
+        with self.assertRaisesRegex(
+                pw.PlaneWaveError, r"-Z 5e-05 m differs .*0/p: "
+                r"boundaryField/top/columnHeight = 0.0001 m"):
+            pw.checkColumnHeight(self.tmp, 5e-5, "-Z")
+
+    def testClassicTopHasNoColumnHeight(self):
+        self.write("0/p", INFLOW_P.replace(
+            "type            planeWaveInflow;\n        columnHeight    1e-4;"
+            "\n        pulse  ",
+            "type            uniformFixedValue;\n        uniformValue"))
+        self.assertEqual(pw.appliedPressure(self.tmp),
+                         [(float(a), float(b)) for a, b in TABLE])
+        self.assertIsNone(pw.inflowColumnHeight(self.tmp))
+        pw.checkColumnHeight(self.tmp, 5e-5)
+
+    def testBadEntriesNamed(self):
+        for old, new, msg in (
+                ("columnHeight    1e-4;", "columnHeight    -1e-4;",
+                 "boundaryField/top/columnHeight = -0.0001: must be"),
+                ("columnHeight    1e-4;", "", "boundaryField/top \\(type "
+                 "planeWaveInflow\\) has no columnHeight"),
+                ("pulse           table", "pulse           tabel",
+                 "boundaryField/top/pulse is tabel, not a table"),
+                ("(5e-09 5e7)", "(5e-09 nan)", "top/pulse: the table is "
+                 "empty or holds a number that is not finite")):
+            self.write("0/p", INFLOW_P.replace(old, new))
+            with self.assertRaisesRegex(pw.PlaneWaveError, msg):
+                pw.inflowColumnHeight(self.tmp)
+                pw.appliedPressure(self.tmp)
+
+
+def wave(n=5):
+    """A PlaneWave at two heights with p, rho and u, times from 1e-13 s"""
+    t = 1e-13 + np.linspace(0, 1e-8, n)/3
+    p = np.column_stack((np.linspace(0, 5e7, n)/7, np.arange(n) + 0.1))
+    u = -p/1.45e6
+    return pw.PlaneWave([2e-5, 3e-5], t, p, 25e-9, 1e-4, 1000 + p/2.2e6, u)
+
+
+class InflowFile(TempDirTestCase):
+    """constant/inflowWave: written with 17 digits, read back bit for bit"""
+
+    def testRoundTrip(self):
+        w = wave()
+        path = self.tmp + "/inflowWave"
+        pw.writeInflow(path, w, 2e-5, TABLE, "Written by: a test")
+        d = pw.readInflow(path)
+        self.assertEqual((d["height"], d["columnHeight"], d["dz"]),
+                         (2e-5, 1e-4, 25e-9))
+        self.assertEqual(d["pulse"], [(float(a), float(b)) for a, b in TABLE])
+        # a first row at t = 0 (the state at rest), then every sample
+        np.testing.assert_array_equal(d["t"], np.concatenate(([0], w.t)))
+        np.testing.assert_array_equal(d["p"], np.concatenate(
+            ([w.at(2e-5)[0]], w.at(2e-5))))
+        np.testing.assert_array_equal(d["u"], np.concatenate(
+            ([w.velocityAt(2e-5)[0]], w.velocityAt(2e-5))))
+        text = read(path)
+        self.assertIn("// Written by: a test", text)
+        self.assertIn("object      inflowWave;", text)
+        # OpenFOAM reads it
+        r = subprocess.run(["foamDictionary", "-entry", "height", "-value",
+                            path], capture_output=True, text=True,
+                           env=dict(os.environ, PWD=os.getcwd()))
+        self.assertEqual(float(r.stdout), 2e-5, r.stderr)
+
+    def testBadFilesNamed(self):
+        path = self.tmp + "/inflowWave"
+        pw.writeInflow(path, wave(), 3e-5, TABLE, "test")
+        good = read(path)
+        rows = good[good.index("data"):]
+        second = rows.split("\n")[3]
+        for old, new, msg in (
+                ("dz ", "dx ", "entry 'dz' = None"),
+                ("height          3", "height          -3", "entry 'height'"),
+                ("pulse           table", "pulse           (0 1)",
+                 r"entry 'pulse' is \[0, 1\], not a table"),
+                (second, second + "\n    (0 1 2)",
+                 "entry 'data': row 3 at time 0 s is not after row 2 at "
+                 "1e-13 s"),
+                (second, "    (1 2)", "entry 'data' is not a list of "
+                 "\\(t p u\\) rows")):
+            self.write("bad", good.replace(old, new, 1))
+            with self.assertRaisesRegex(pw.PlaneWaveError,
+                                        "bad: .*" + msg):
+                pw.readInflow(self.tmp + "/bad")
+
+    def testNeedsVelocities(self):
+        w = wave()
+        w.u = None
+        with self.assertRaisesRegex(pw.PlaneWaveError, "no velocities"):
+            pw.writeInflow(self.tmp + "/x", w, 2e-5, TABLE, "test")
+        self.assertFalse(os.path.exists(self.tmp + "/x"))
+
+
+def previewCase(dest, columnHeight):
+    """The preview's water (0/ from 0.orig, thermo, schemes, controlDict)
+    in dest, its top made a planeWaveInflow boundary of columnHeight [m]"""
+    shutil.copytree(os.path.join(PREVIEW, "0.orig"), dest + "/0")
+    os.makedirs(dest + "/constant")
+    os.makedirs(dest + "/system")
+    shutil.copy(os.path.join(PREVIEW, "constant",
+                             "thermophysicalProperties"), dest + "/constant")
+    for f in ("fvSchemes", "fvSolution", "controlDict"):
+        shutil.copy(os.path.join(PREVIEW, "system", f), dest + "/system")
+    pw.setInflowBoundary(dest, columnHeight)
+
+
+class SetInflowBoundary(TempDirTestCase):
+
+    def testTopEntriesOfTheThreeFields(self):
+        classic = pw.appliedPressure(PREVIEW)
+        previewCase(self.tmp, 1e-4)
+        top = {f: foamDict.read(self.tmp + "/0/" + f)["boundaryField"]
+               ["top"] for f in ("p", "U", "T")}
+        self.assertEqual({f: t["type"] for f, t in top.items()},
+                         dict.fromkeys(("p", "U", "T"), "planeWaveInflow"))
+        self.assertEqual(top["p"]["columnHeight"], 1e-4)
+        self.assertEqual(top["p"]["file"], "constant/inflowWave")
+        self.assertEqual(pw.appliedPressure(self.tmp), classic)
+        self.assertEqual(top["p"]["value"], ["uniform", 0])
+        self.assertEqual(top["U"]["value"], ["uniform", [0, 0, 0]])
+        self.assertEqual(top["T"]["value"], ["uniform", 293.15])
+        self.assertEqual(set(top["U"]), {"type", "value"})
+        # set again (a second Allrun on the same 0/): the same files
+        before = [read(self.tmp + "/0/" + f) for f in "pUT"]
+        pw.setInflowBoundary(self.tmp, 1e-4)
+        self.assertEqual([read(self.tmp + "/0/" + f) for f in "pUT"],
+                         before)
+
+    def testOnlyIn0(self):
+        os.makedirs(self.tmp + "/case")
+        shutil.copytree(os.path.join(PREVIEW, "0.orig"),
+                        self.tmp + "/case/0.orig")
+        with self.assertRaisesRegex(pw.PlaneWaveError, "0/p: no such file"):
+            pw.setInflowBoundary(self.tmp + "/case", 1e-4)
+
+
+def hugoniotVelocity(case, p):
+    """|u| [m/s] behind a shock of p [Pa] into water at rest: p = rho0
+    (C0 + s u) u (the Us-Up line of the case's Mie-Grueneisen law)"""
+    c = foamDict.read(case + "/constant/thermophysicalProperties")[
+        "mieGruneisenCoeffs"]
+    rho0, C0, s = c["rho0"], c["C0"], c["s"]
+    return (-C0 + np.sqrt(C0**2 + 4*s*p/rho0))/(2*s)
+
+
+class InflowColumn(TempDirTestCase):
+    """The 1D column of a planeWaveInflow case, run for real (4 um of
+    water in 50 nm cells to 3 ns: about a second)"""
+
+    def testClassicTopAndVelocity(self):
+        case = self.tmp + "/case"
+        previewCase(case, 4e-6)
+        work = self.tmp + "/column"
+        w = pw.column(case, [2e-6], 4e-6, 3e-9, dz=50e-9, work=work)
+        # the column's top is the classic pulse, not the case's inflow
+        top = {f: foamDict.read(work + "/0/" + f)["boundaryField"]["top"]
+               for f in ("p", "U", "T")}
+        self.assertEqual(top["p"]["type"], "uniformFixedValue")
+        self.assertEqual(pw.appliedPressure(work), pw.appliedPressure(case))
+        self.assertEqual(top["U"], {"type": "zeroGradient"})
+        self.assertEqual(top["T"], {"type": "zeroGradient"})
+        # the incident plateau at 2 um: from its arrival (about 1.4 ns)
+        # to the end, before the echo (back at 2 um after about 3.9 ns)
+        k = (w.t > 1.9e-9) & (w.t < 2.95e-9)
+        p, u = w.at(2e-6)[k], w.velocityAt(2e-6)[k]
+        self.assertAlmostEqual(p.mean()/5e7, 1, delta=0.005)
+        # downwards (u < 0), |u| the simple wave's: at 50 MPa the
+        # Hugoniot's 32.99 m/s, 4.3 % below the acoustic p/(rho0 C0)
+        # = 34.48 m/s (the wave's own nonlinearity)
+        uH = hugoniotVelocity(case, p)
+        np.testing.assert_allclose(-u, uH, rtol=0.005)
+        self.assertGreater(abs(-u.mean()*1000*1450/p.mean() - 1), 0.03)
+        # before the arrival: at rest
+        self.assertLess(np.abs(w.velocityAt(2e-6)[w.t < 1e-9]).max(), 1e-9)
+
+    def testColumnHeightMustBeTheCases(self):
+        previewCase(self.tmp + "/case", 4e-6)
+        with self.assertRaisesRegex(pw.PlaneWaveError, "columnHeight"):
+            pw.column(self.tmp + "/case", [2e-6], 5e-6, 3e-9, dz=50e-9,
+                      work=self.tmp + "/column")
+        self.assertFalse(os.path.exists(self.tmp + "/column"))
+
+
+class PlaneWaveInflowUtility(TempDirTestCase):
+    """planeWave -inflow: writes constant/inflowWave of the column; refuses
+    a height outside (0, Z) and a -Z that is not the case's columnHeight,
+    writing nothing"""
+
+    def run_(self, *args):
+        return subprocess.run([sys.executable, UTILITY, "-case",
+                               self.tmp + "/case"] + list(args),
+                              capture_output=True, text=True)
+
+    def testWritesTheWaveAtTheHeight(self):
+        previewCase(self.tmp + "/case", 4e-6)
+        r = self.run_("-inflow", "2e-6", "-dz", "50e-9", "-endTime", "3e-9")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        d = pw.readInflow(self.tmp + "/case/constant/inflowWave")
+        self.assertEqual((d["height"], d["columnHeight"], d["dz"]),
+                         (2e-6, 4e-6, 50e-9))
+        self.assertEqual(d["pulse"], pw.appliedPressure(self.tmp + "/case"))
+        # to the end time and one step of the scene beyond (the
+        # preview's maxDeltaT 1e-9 s: its last step may end past endTime)
+        self.assertEqual(d["t"][0], 0)
+        self.assertAlmostEqual(d["t"][-1], 4e-9, delta=1e-20)
+        k = (d["t"] > 1.9e-9) & (d["t"] < 2.95e-9)
+        np.testing.assert_allclose(-d["u"][k], hugoniotVelocity(
+            self.tmp + "/case", d["p"][k]), rtol=0.005)
+        self.assertIn("-inflow 2e-6 -dz 50e-9 -endTime 3e-9",
+                      read(self.tmp + "/case/constant/inflowWave"))
+
+    def testRefusals(self):
+        previewCase(self.tmp + "/case", 4e-6)
+        for args, msg in (
+                (["-inflow", "0"], r"-inflow 0 m is outside the valid "
+                 r"range \(0, 4e-06\) m"),
+                (["-inflow", "4e-6"], r"-inflow 4e-06 m is outside"),
+                (["-inflow", "nan"], r"-inflow nan m is outside"),
+                (["-inflow", "-1e-6"], r"-inflow -1e-06 m is outside"),
+                (["-inflow", "2e-6", "-Z", "1e-4"],
+                 r"-Z 0.0001 m differs .*/0/p: boundaryField/top/"
+                 r"columnHeight = 4e-06 m"),
+                (["-inflow", "2e-6", "-check"], "no -check")):
+            r = self.run_(*args, "-dz", "50e-9", "-endTime", "3e-9")
+            self.assertNotEqual(r.returncode, 0, args)
+            self.assertRegex(r.stderr, "planeWave: error: .*" + msg)
+            self.assertFalse(os.path.exists(
+                self.tmp + "/case/constant/inflowWave"), args)
+
+    def setControl(self, entries):
+        path = self.tmp + "/case/system/controlDict"
+        text = read(path)
+        for key, value in entries.items():
+            text = foamDict.set_entry(text, [key], value)
+        with open(path, "w") as f:
+            f.write(text)
+
+    def testEndTimeOfTheControlDict(self):
+        # to endTime + maxDeltaT (adjustTimeStep), else + deltaT
+        previewCase(self.tmp + "/case", 4e-6)
+        for entries, last in (({"endTime": "1e-9"}, 1e-9 + 1e-9),
+                              ({"endTime": "1e-9", "maxDeltaT": "5e-10"},
+                               1e-9 + 5e-10),
+                              ({"adjustTimeStep": "no", "deltaT": "1e-11"},
+                               1e-9 + 1e-11)):
+            self.setControl(entries)
+            r = self.run_("-inflow", "2e-6", "-dz", "50e-9")
+            self.assertEqual(r.returncode, 0, r.stderr)
+            path = self.tmp + "/case/constant/inflowWave"
+            t = pw.readInflow(path)["t"]
+            self.assertAlmostEqual(t[-1], last, delta=1e-20, msg=entries)
+            self.assertIn("// to %.17g s: the end time 1e-09 s and the "
+                          "longest step of the scene" % last, read(path))
+
+    def testStepOfTheSceneNeeded(self):
+        previewCase(self.tmp + "/case", 4e-6)
+        self.setControl({"maxDeltaT": "0"})
+        r = self.run_("-inflow", "2e-6", "-dz", "50e-9", "-endTime", "1e-9")
+        self.assertNotEqual(r.returncode, 0)
+        self.assertRegex(r.stderr, r"planeWave: error: .*/system/"
+                         r"controlDict: entry 'maxDeltaT' = 0: must be a "
+                         r"time \[s\], positive and finite \(with "
+                         r"adjustTimeStep")
+        self.assertFalse(os.path.exists(
+            self.tmp + "/case/constant/inflowWave"))
+
+
+if __name__ == "__main__":
+    unittest.main()

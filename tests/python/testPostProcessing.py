@@ -170,6 +170,21 @@ class ColumnFiles(TempDirTestCase):
         self.write("postProcessing/fsi/0/coupling.dat", HEADER + row(1e-10))
         self.assertEqual(pp.probes(self.tmp, "fsi/coupling.dat"), [])
 
+    def testProbesOfAVectorField(self):
+        # OpenFOAM's probes of U: a vector "(x y z)" per probe and row,
+        # read as its components (planeWave.column takes U's y)
+        self.write("postProcessing/probes/0/U",
+                   "# Probe 0 (0 1e-06 0)\n# Probe 1 (0 2e-06 0)\n"
+                   "#      Probe        0        1\n#       Time\n"
+                   "  1.2e-13   (0 0 0)   (0 0 0)\n"
+                   "  2e-11   (1e-17 -32.5 0)   (0 -1.5e-3 2)\n")
+        d = pp.series(self.tmp, "probes/U", vectors=True)
+        np.testing.assert_array_equal(d, [[1.2e-13, 0, 0, 0, 0, 0, 0],
+                                          [2e-11, 1e-17, -32.5, 0, 0,
+                                           -1.5e-3, 2]])
+        with self.assertRaisesRegex(pp.ColumnFileError, "not a number"):
+            pp.series(self.tmp, "probes/U")
+
     def testMaterialsWithTheirBranches(self):
         p = self.write("materials.dat", "# region  rho0 [kg/m^3]  C10 [Pa]  "
                        "d0 [1/Pa]  then muN [Pa]  tauN [s]\n"

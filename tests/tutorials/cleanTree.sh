@@ -83,6 +83,9 @@ do
 done
 run tutorials/blast/axisymmetricPreview -h 0.25e-6 -far 2e-6 -cell 0.5e-6 \
     -Z 30e-6 -endTime 2e-9
+# shortened (constant/inflowWave, controlDict.allrun), not run
+run tutorials/blast/axisymmetricPreview -h 0.25e-6 -far 2e-6 -cell 0.5e-6 \
+    -Z 30e-6 -endTime 2e-9 -inflow 20e-6 -noRun
 run tutorials/blast/quarter3D -box 30e-6 -h 0.6e-6 -far 2e-6 -growth 5e-6 \
     -cell 1.4e-6 -endTime 2e-9
 # decomposed (system/decomposeParDict.allrun, processor*), not run: 2 ns

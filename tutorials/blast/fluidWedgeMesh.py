@@ -25,6 +25,9 @@ usage: fluidWedgeMesh.py [-h size_m] [-far size_m] [-dz size_m]
           geometrically in r from -far at r = Rb to -outer at r = R. The
           incident plane wave is uniform in r, so the radial size there
           only matters for the waves the cell scatters sideways
+  -Z      the column's height [m] (default 100e-6): at least one cell
+          of -dz above the inner box around the cell (max(H, D/2) + 4 um,
+          12.4 um for the average cell), so 12.65 um with -dz 0.25e-6
   -maxCells  largest cell count [1, 1e9] (default 1e6): the count is
           computed from the sizes before anything is written and a
           larger one refused (issue 19, class 6: -h 1e-9 hung)
@@ -59,6 +62,14 @@ if not 1 <= args.maxCells <= 1e9:
     p.error("-maxCells %g is outside the valid range [1, 1e9]"
             % args.maxCells)
 Rb = Zb = max(a, H) + 4e-6      # inner box around the cell [m]
+# the column above the box: at least one axial cell of -dz (a shorter one
+# would be a thinner cell, setting a smaller time step); a scene shortened
+# by a planeWaveInflow top (Allrun -inflow) ends there at the lowest
+if not (math.isfinite(Z) and Z >= Zb + dz*(1 - 1e-9)):
+    p.error("-Z %g m: the water column must reach one axial cell (-dz %g m) "
+            "above the inner box around the cell, whose top is at %g m "
+            "(max(-H, -D/2) + 4 um): valid range -Z >= %g m"
+            % (Z, dz, Zb, Zb + dz))
 alpha = math.radians(args.wedge)/2
 phiP = math.radians(45.0)
 

@@ -39,15 +39,32 @@ Description
     |strain| 1e-3 and von Mises 10 % of its peak), naming it; -except
     leaves the named measures out of the check (they are still printed).
 
+    With -inflow HEIGHT, for a scene whose water ends at HEIGHT below the
+    physical column (its top patch of type planeWaveInflow): computes the
+    column to -endTime (default: the case's controlDict endTime) and
+    writes <case>/constant/inflowWave, the 1D wave's p and u at HEIGHT
+    that the boundary condition reads (neuronFsi.planeWave.writeInflow);
+    no probes, no measures.
+
 Usage
     planeWave [-case dir] [-Z 100e-6] [-dz 25e-9] [-endTime t]
               [-probes solid,fluid] [-check] [-except m1,m2]
               [-reference file]
+    planeWave -inflow HEIGHT [-case dir] [-Z Z] [-dz 25e-9] [-endTime t]
 
-    -Z          water column height [m] (the case's; default 100e-6)
+    -Z          the physical water column's height [m]: the pulse is
+                applied at its top face (default 100e-6; for a case whose
+                top is planeWaveInflow, its columnHeight in 0/p, and a
+                different -Z is refused)
     -dz         the 1D cell size [m] (default 25e-9: ten times finer
                 than the preview's finest water cell)
-    -endTime    [s]; default: the last time of the case's probes
+    -endTime    [s]; default: the last time of the case's probes (with
+                -inflow: the case's controlDict endTime; the wave is
+                computed one step of the scene beyond it, maxDeltaT or
+                deltaT of the controlDict: a run's last step may end past
+                its endTime)
+    -inflow     the height [m] of the scene's top above the substrate,
+                0 < HEIGHT < Z: write constant/inflowWave for it
     -except     measures not checked, [solid:|fluid:]<measure> (all
                 probes, or the solid's or the water's only); measures:
                 arrival, peak1ns, peakIncident, plateau, impulse,
@@ -63,7 +80,7 @@ import math
 import os
 import sys
 
-from neuronFsi import options, planeWave, postProcessing
+from neuronFsi import foamDict, options, planeWave, postProcessing
 
 BOUNDS = {"arrival": 0.3e-9, "peak1ns": 0.05, "peakIncident": 0.05,
           "plateau": 0.05, "impulse": 0.03}
@@ -77,7 +94,8 @@ SOLID_BOUNDS = {"vonMises1ns": 0.05, "strain1ns": 0.05, "restStrain": 1e-3,
 def main():
     p = argparse.ArgumentParser(prog="planeWave", add_help=True)
     p.add_argument("-case", default=".")
-    p.add_argument("-Z", type=float, default=100e-6)
+    p.add_argument("-Z", type=float, default=None)
+    p.add_argument("-inflow", type=float, default=None)
     p.add_argument("-dz", type=float, default=25e-9)
     p.add_argument("-endTime", type=float, default=None)
     p.add_argument("-maxCells", type=int, default=100000)
@@ -97,17 +115,34 @@ def main():
                     "%s)" % (k if kind is None else kind + ":" + k,
                              ", ".join(list(BOUNDS) + list(SOLID_BOUNDS))))
     for name, v in (("-Z", a.Z), ("-dz", a.dz)):
-        if not (v > 0 and math.isfinite(v)):
+        if v is not None and not (v > 0 and math.isfinite(v)):
             p.error("%s %g m: must be positive and finite" % (name, v))
     if a.endTime is not None and not (a.endTime > 0
                                       and math.isfinite(a.endTime)):
         p.error("-endTime %g s: must be positive and finite" % a.endTime)
+    if a.inflow is not None and (a.check or a.skip or a.reference):
+        p.error("-inflow writes constant/inflowWave only: no -check, "
+                "-except or -reference with it")
+    # the physical column: a planeWaveInflow top states it
+    columnHeight = planeWave.inflowColumnHeight(case)
+    if a.Z is None:
+        a.Z = columnHeight or 100e-6
+    else:
+        planeWave.checkColumnHeight(case, a.Z, "-Z")
+    if a.inflow is not None and not 0 < a.inflow < a.Z:
+        p.error("-inflow %g m is outside the valid range (0, %g) m: the "
+                "scene's top lies inside the column, whose top is at %g m "
+                "(%s)" % (a.inflow, a.Z, a.Z, "-Z" if columnHeight is None
+                          else "columnHeight of the top in 0/p"))
     if a.Z/a.dz > a.maxCells:
         p.error("-Z %g m / -dz %g m = %.3g cells, above -maxCells %d (the "
                 "column's cost grows as the square of its cells)"
                 % (a.Z, a.dz, a.Z/a.dz, a.maxCells))
 
     table = planeWave.appliedPressure(case)
+    if a.inflow is not None:
+        inflow(case, a, table)
+        return
     amp, T = planeWave.pulseShape(table)
     kinds = a.probes.split(",")
     probes = planeWave.caseProbes(case, "solid" in kinds, "fluid" in kinds)
@@ -199,6 +234,56 @@ def main():
                                      for c, k in skip) if skip else ""))
 
 
+def _time(path, d, key, hint=""):
+    """The entry key of the dictionary d of file path: a time [s],
+    positive and finite."""
+    v = d.get(key)
+    if isinstance(v, bool) or not isinstance(v, (int, float)) \
+            or not (math.isfinite(v) and v > 0):
+        raise planeWave.PlaneWaveError(
+            "%s: entry '%s' = %s: must be a time [s], positive and finite%s"
+            % (path, key, v, hint))
+    return float(v)
+
+
+def inflow(case, a, table):
+    """planeWave -inflow: the column's p and u at the height a.inflow
+    written to <case>/constant/inflowWave, to the scene's end time and one
+    of its steps beyond: OpenFOAM ends a run with the first step that ends
+    at or after endTime - deltaT/2, and the boundary condition needs the
+    wave at that step's time (in the preview's smoke run, endTime 2.2e-8 s,
+    the last step ended at 2.2003e-8 s). A step is at most maxDeltaT with
+    adjustTimeStep, else deltaT (system/controlDict)."""
+    path = os.path.join(case, "system", "controlDict")
+    try:
+        d = foamDict.read(path)
+    except (OSError, foamDict.DictError) as err:
+        raise planeWave.PlaneWaveError("%s: %s" % (path, err))
+    end = a.endTime
+    if end is None:
+        end = _time(path, d, "endTime", " (or give -endTime)")
+    step = (_time(path, d, "maxDeltaT", " (with adjustTimeStep, the "
+                  "longest step of the scene: the wave is computed that "
+                  "long beyond the end time)")
+            if d.get("adjustTimeStep") is True else _time(path, d, "deltaT"))
+    wave = planeWave.column(case, [a.inflow], a.Z, end + step, dz=a.dz,
+                            maxCells=a.maxCells)
+    out = os.path.join(case, planeWave.INFLOW_FILE)
+    planeWave.writeInflow(
+        out, wave, a.inflow, table,
+        "Written by: planeWave %s (case %s)\nto %.17g s: the end time %g s "
+        "and the longest step of the scene, %g s (%s), past which its last "
+        "step cannot end" % (" ".join(sys.argv[1:]), case, end + step, end,
+                             step, "maxDeltaT" if d.get("adjustTimeStep")
+                             is True else "deltaT"))
+    u = wave.velocityAt(a.inflow)
+    print("planeWave: %s: p and u at z = %g m of the 1D column (%g m, cells "
+          "%g m) to %g s (end time %g s + one step of the scene at most), "
+          "%d steps; peak p %.4g MPa, u %.4g to %.4g m/s"
+          % (out, a.inflow, a.Z, a.dz, end + step, end, len(wave.t),
+             wave.at(a.inflow).max()*1e-6, u.min(), u.max()))
+
+
 def solidRows(case, wave, skip):
     """The solid probes' von Mises and longitudinal strain against the
     uniaxial-strain answer of the plane wave at their height (text of
@@ -263,4 +348,4 @@ if __name__ == "__main__":
         main()
     except (planeWave.PlaneWaveError,
             postProcessing.ColumnFileError) as err:
-        sys.exit("planeWave: %s" % err)
+        sys.exit("planeWave: error: %s" % err)

@@ -17,6 +17,15 @@ solutions (tests/verification/shockTubes.py, pulseWall.sh);
 converged() reports the change between two sizes, the reference's own
 error bar.
 
+A scene may end its water at a height z_in below the physical column
+(issue 17 item 2): its top patch is then of type planeWaveInflow (0/p
+entries columnHeight, the physical column's height Z, and pulse, the
+table applied on the column's top face), and the boundary condition takes
+the incoming wave from constant/inflowWave, the 1D column's p and u at
+z_in written by writeInflow (planeWave -inflow). column() of such a case
+runs the full column with the classic top (the pulse table on p, U and T
+zeroGradient); setInflowBoundary() writes the top entries of 0/.
+
 measures() gives the numbers issue 17 asks of a probe history p(t):
     arrival    first time p reaches half the applied pressure [s]
                (linear between samples)
@@ -65,33 +74,116 @@ def _fieldFile(case, field):
     raise PlaneWaveError("%s: no 0/%s or 0.orig/%s" % (case, field, field))
 
 
+def _foamEnv():
+    """The environment for an OpenFOAM application: PWD the working
+    directory (ctest's WORKING_DIRECTORY leaves the shell's PWD, and
+    OpenFOAM then prints a warning on stdout, into foamDictionary's
+    value)."""
+    return dict(os.environ, PWD=os.getcwd())
+
+
 def _foamDictionary(path, entry, value=False):
     """An entry of a dictionary file as foamDictionary prints it (with
     value: its value only)."""
     out = subprocess.run(["foamDictionary", "-entry", entry]
                          + (["-value"] if value else []) + [path],
-                         capture_output=True, text=True)
+                         capture_output=True, text=True, env=_foamEnv())
     if out.returncode != 0:
         raise PlaneWaveError("%s: no %s (%s)"
                              % (path, entry, out.stderr.strip()))
     return out.stdout
 
 
-def appliedPressure(case, patch="top"):
-    """The pulse table [(t [s], p [Pa])] of the top face: the uniformValue
-    table of 0/p (0.orig/p), relative to the ambient internal pressure."""
+INFLOW = "planeWaveInflow"     # the top patch type of a shortened scene
+INFLOW_FILE = "constant/inflowWave"
+
+
+def _topP(case, patch):
+    """(path, entry) of boundaryField/<patch> of 0/p (0.orig/p)."""
     path = _fieldFile(case, "p")
-    p = foamDict.read(path)
     try:
-        top = p["boundaryField"][patch]
-        kind, table = top["uniformValue"]
-    except (KeyError, TypeError, ValueError):
-        raise PlaneWaveError("%s: boundaryField/%s has no uniformValue "
-                             "table" % (path, patch))
+        top = foamDict.read(path)["boundaryField"][patch]
+    except (KeyError, TypeError) as err:
+        raise PlaneWaveError("%s: no boundaryField/%s (%s)"
+                             % (path, patch, err))
+    except foamDict.DictError as err:
+        raise PlaneWaveError(str(err))
+    if not isinstance(top, dict):
+        raise PlaneWaveError("%s: boundaryField/%s is not a sub-dictionary"
+                             % (path, patch))
+    return path, top
+
+
+def _table(path, where, value):
+    """The rows [(t [s], p [Pa])] of a 'table ((t p) ...)' value."""
+    try:
+        kind, table = value
+    except (TypeError, ValueError):
+        raise PlaneWaveError("%s: %s is not a table ((t p) ...) [s Pa]"
+                             % (path, where))
     if kind != "table":
-        raise PlaneWaveError("%s: boundaryField/%s/uniformValue is %s, not "
-                             "a table" % (path, patch, kind))
-    return [(float(t), float(v)) for t, v in table]
+        raise PlaneWaveError("%s: %s is %s, not a table" % (path, where, kind))
+    try:
+        rows = [(float(t), float(v)) for t, v in table]
+    except (TypeError, ValueError):
+        raise PlaneWaveError("%s: %s is not a table ((t p) ...) [s Pa]"
+                             % (path, where))
+    if not rows or not all(math.isfinite(t) and math.isfinite(v)
+                           for t, v in rows):
+        raise PlaneWaveError("%s: %s: the table is empty or holds a number "
+                             "that is not finite" % (path, where))
+    return rows
+
+
+def appliedPressure(case, patch="top"):
+    """The pulse table [(t [s], p [Pa])] of the top face of the physical
+    column, relative to the ambient internal pressure: the uniformValue
+    table of 0/p (0.orig/p), or the pulse table of a planeWaveInflow top
+    (applied at the top of its columnHeight)."""
+    path, top = _topP(case, patch)
+    if top.get("type") == INFLOW:
+        if "pulse" not in top:
+            raise PlaneWaveError("%s: boundaryField/%s (type %s) has no "
+                                 "pulse table" % (path, patch, INFLOW))
+        return _table(path, "boundaryField/%s/pulse" % patch, top["pulse"])
+    if "uniformValue" not in top:
+        raise PlaneWaveError("%s: boundaryField/%s has no uniformValue "
+                             "table (nor type %s with a pulse table)"
+                             % (path, patch, INFLOW))
+    return _table(path, "boundaryField/%s/uniformValue" % patch,
+                  top["uniformValue"])
+
+
+def inflowColumnHeight(case, patch="top"):
+    """The physical column's height [m] of a case whose top p is of type
+    planeWaveInflow (its columnHeight entry); None for another top."""
+    path, top = _topP(case, patch)
+    if top.get("type") != INFLOW:
+        return None
+    if "columnHeight" not in top:
+        raise PlaneWaveError("%s: boundaryField/%s (type %s) has no "
+                             "columnHeight, the physical column's height "
+                             "[m]" % (path, patch, INFLOW))
+    Z = top["columnHeight"]
+    if isinstance(Z, bool) or not isinstance(Z, (int, float)) \
+            or not (math.isfinite(Z) and Z > 0):
+        raise PlaneWaveError("%s: boundaryField/%s/columnHeight = %s: must "
+                             "be a height [m], positive and finite"
+                             % (path, patch, Z))
+    return float(Z)
+
+
+def checkColumnHeight(case, Z, what="the column height"):
+    """Refuse a column height Z [m] that differs from the columnHeight of a
+    planeWaveInflow top (relative 1e-9: the same number written another
+    way); nothing for another top."""
+    H = inflowColumnHeight(case)
+    if H is not None and abs(Z - H) > 1e-9*H:
+        raise PlaneWaveError(
+            "%s %g m differs from the case's physical column, %s: "
+            "boundaryField/top/columnHeight = %g m (type %s): the pulse is "
+            "applied at the top of that column" % (
+                what, Z, _fieldFile(case, "p"), H, INFLOW))
 
 
 def pulseShape(table):
@@ -151,7 +243,7 @@ functions
     {{
         type probes; libs ("libsampling.so");
         writeControl timeStep; writeInterval 1;
-        fields (p rho); interpolationScheme cellPoint;
+        fields (p rho U); interpolationScheme cellPoint;
         probeLocations ( {probes} );
     }}
 }}
@@ -159,14 +251,17 @@ functions
 
 
 class PlaneWave:
-    """The 1D answer: times [s], p [Pa] and rho [kg/m^3] (one column per
-    height; rho None for a reference file without densities)."""
+    """The 1D answer: times [s], p [Pa], rho [kg/m^3] and u [m/s] (the
+    velocity along the column, positive upwards, away from the substrate)
+    (one column per height; rho and u None for a reference file without
+    them)."""
 
-    def __init__(self, heights, t, p, dz, Z, rho=None):
+    def __init__(self, heights, t, p, dz, Z, rho=None, u=None):
         self.heights = np.asarray(heights, dtype=float)
         self.t = t
         self.p = p
         self.rho = rho
+        self.u = u
         self.dz = dz
         self.Z = Z
 
@@ -188,6 +283,13 @@ class PlaneWave:
                                  "reference.dat written before they were "
                                  "probed: compute it again)")
         return self.rho[:, self._column(z)]
+
+    def velocityAt(self, z):
+        """u(t) [m/s] at height z [m], positive upwards"""
+        if self.u is None:
+            raise PlaneWaveError("the reference has no velocities (a "
+                                 "reference.dat: compute the column)")
+        return self.u[:, self._column(z)]
 
 
 def uniaxialResponse(t, rho, rho0, mu0, branches=()):
@@ -224,10 +326,14 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
            maxCells=100000):
     """Run the 1D column of <case> (water column of height Z [m]; the
     patches top and bottom) to endTime [s] with cells of dz [m], probes at
-    heights [m]; returns a PlaneWave. work: the folder of the run (kept),
-    else a temporary one. A column of more than maxCells cells is refused
-    before anything is written (its cost grows as the square of the cell
-    count: cells times steps)."""
+    heights [m]; returns a PlaneWave (p, rho and u at each height). The
+    top and bottom conditions are the case's; for a planeWaveInflow top
+    (a scene shorter than the column), the classic top instead: p
+    uniformFixedValue with its pulse table, U and T zeroGradient, and Z
+    must be its columnHeight. work: the folder of the run (kept), else a
+    temporary one. A column of more than maxCells cells is refused before
+    anything is written (its cost grows as the square of the cell count:
+    cells times steps)."""
     if not (math.isfinite(Z) and Z > 0 and math.isfinite(dz) and dz > 0):
         raise PlaneWaveError("column height %g m and cell size %g m must "
                              "be positive and finite" % (Z, dz))
@@ -247,6 +353,9 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
         if not 0 <= z <= Z:
             raise PlaneWaveError("probe height %g m outside the column "
                                  "[0, %g] m" % (z, Z))
+    checkColumnHeight(case, Z)
+    inflow = inflowColumnHeight(case) is not None
+    pulse = appliedPressure(case) if inflow else None
     keep = work is not None
     work = work or tempfile.mkdtemp(prefix="planeWave.")
     try:
@@ -269,25 +378,36 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
         for field, cls in (("p", "volScalarField"), ("T", "volScalarField"),
                            ("U", "volVectorField")):
             path = _fieldFile(case, field)
+            if not inflow:
+                top = _foamDictionary(path, "boundaryField/top")
+            elif field == "p":
+                top = ("    top { type uniformFixedValue; uniformValue "
+                       "table ( %s ); }" % " ".join(
+                           "(%.17g %.17g)" % r for r in pulse))
+            else:
+                top = "    top { type zeroGradient; }"
             with open(os.path.join(work, "0", field), "w") as f:
                 f.write(_FIELD.format(
                     cls=cls, name=field,
                     dims=_foamDictionary(path, "dimensions", True).strip(),
                     internal=_foamDictionary(path, "internalField",
                                              True).strip(),
-                    top=_foamDictionary(path, "boundaryField/top"),
+                    top=top,
                     bottom=_foamDictionary(path, "boundaryField/bottom")))
         for app in ("blockMesh", "rhoRiemannFoam"):
             with open(os.path.join(work, "log." + app), "w") as out:
                 r = subprocess.run([app, "-case", work], stdout=out,
+                                   env=_foamEnv(),
                                    stderr=subprocess.STDOUT)
             if r.returncode != 0:
                 raise PlaneWaveError("%s failed in %s (log.%s)"
                                      % (app, work, app))
         data = postProcessing.series(work, "probes/p")
         rho = postProcessing.series(work, "probes/rho")
+        # the column's axis is y (_BLOCK_MESH): u is U's y component
+        U = postProcessing.series(work, "probes/U", vectors=True)
         return PlaneWave(heights, data[:, 0], data[:, 1:], dz, Z,
-                         rho[:, 1:])
+                         rho[:, 1:], U[:, 2::3])
     finally:
         if not keep:
             shutil.rmtree(work, ignore_errors=True)
@@ -328,6 +448,147 @@ def readReference(path):
                              "[rho_z<height>]" % (path, names))
     return PlaneWave(heights, d[:, 0], d[:, 1:1 + nP], None, None,
                      d[:, 1 + nP:] if rhoHeights else None)
+
+
+_INFLOW_HEADER = """FoamFile
+{
+    version     2.0;
+    format      ascii;
+    class       dictionary;
+    object      inflowWave;
+}
+// The incident wave of a planeWaveInflow boundary: the 1D plane wave of the
+// full water column (the pulse applied on its top face at columnHeight, the
+// rigid substrate at z = 0; rhoRiemannFoam, neuronFsi.planeWave.column)
+// sampled at the plane z = height, the scene's top.
+%s
+
+height          %.17g;  // [m] the plane's height above the substrate (the scene's top)
+columnHeight    %.17g;  // [m] the physical column: the pulse is applied at its top face
+pulse           table ( %s );  // [s Pa] gauge pressure applied there
+dz              %.17g;  // [m] 1D cell size
+
+// time [s], p [Pa, gauge], u [m/s]: velocity along the column axis,
+// positive upwards (away from the substrate), at height
+data
+(
+"""
+
+
+def writeInflow(path, wave, height, pulse, what):
+    """Write constant/inflowWave: p and u of the PlaneWave at one of its
+    heights [m], with the column's height, the pulse table [(t [s],
+    p [Pa])] and the 1D cell size, 17 significant digits (what: comment
+    lines, e.g. the command that wrote it). The column's probes
+    start at its first step; the first row is t = 0 with that step's
+    values, the state at rest: the pulse needs (Z - height)/C0 to come
+    down, and a uniform state is kept exactly by the scheme. Written to a
+    temporary file first: an earlier file is replaced only by a complete
+    one."""
+    if wave.u is None:
+        raise PlaneWaveError("the wave has no velocities: compute the "
+                             "column")
+    t, p, u = wave.t, wave.at(height), wave.velocityAt(height)
+    if t[0] > 0:
+        t = np.concatenate(([0.0], t))
+        p = np.concatenate((p[:1], p))
+        u = np.concatenate((u[:1], u))
+    text = [_INFLOW_HEADER % (
+        "\n".join("// " + " ".join(line.split())
+                  for line in what.split("\n")), height, wave.Z,
+        " ".join("(%.17g %.17g)" % (a, b) for a, b in pulse), wave.dz)]
+    text += ["    (%.17g %.17g %.17g)\n" % r for r in zip(t, p, u)]
+    text.append(");\n")
+    tmp = path + ".writing"
+    with open(tmp, "w") as f:
+        f.write("".join(text))
+    os.replace(tmp, path)
+
+
+def readInflow(path):
+    """The entries of a constant/inflowWave file (writeInflow): a dict
+    with height, columnHeight, dz [m], pulse [(t [s], p [Pa])] and the
+    arrays t [s], p [Pa], u [m/s]; a PlaneWaveError naming the file and
+    the entry when one is missing or wrong."""
+    try:
+        d = foamDict.read(path)
+    except (OSError, foamDict.DictError) as err:
+        raise PlaneWaveError("%s: %s" % (path, err))
+    out = {}
+    for key in ("height", "columnHeight", "dz"):
+        v = d.get(key)
+        if isinstance(v, bool) or not isinstance(v, (int, float)) \
+                or not (math.isfinite(v) and v > 0):
+            raise PlaneWaveError("%s: entry '%s' = %s: must be a length "
+                                 "[m], positive and finite" % (path, key, v))
+        out[key] = float(v)
+    if "pulse" not in d:
+        raise PlaneWaveError("%s: no entry 'pulse'" % path)
+    out["pulse"] = _table(path, "entry 'pulse'", d["pulse"])
+    try:
+        data = np.array(d["data"], dtype=float)
+    except KeyError:
+        raise PlaneWaveError("%s: no entry 'data'" % path)
+    except (TypeError, ValueError):
+        raise PlaneWaveError("%s: entry 'data' is not a list of (t p u) "
+                             "rows of numbers" % path)
+    if data.ndim != 2 or data.shape[1] != 3 or len(data) < 2 \
+            or not np.isfinite(data).all():
+        raise PlaneWaveError("%s: entry 'data' is not a list of two or "
+                             "more (t p u) rows of finite numbers" % path)
+    if not (np.diff(data[:, 0]) > 0).all():
+        k = int(np.argmin(np.diff(data[:, 0]) > 0))
+        raise PlaneWaveError("%s: entry 'data': row %d at time %g s is not "
+                             "after row %d at %g s" % (
+                                 path, k + 2, data[k + 1, 0], k + 1,
+                                 data[k, 0]))
+    out["t"], out["p"], out["u"] = data[:, 0], data[:, 1], data[:, 2]
+    return out
+
+
+def setInflowBoundary(case, columnHeight, inflowFile=INFLOW_FILE):
+    """Make the top of <case>/0/p, U and T a planeWaveInflow boundary: p
+    with columnHeight [m], the pulse table of 0/p's top (its uniformValue
+    table, or the pulse of an inflow top already there) and the file of
+    the incident wave; every field's value the internal field's (uniform).
+    Edits 0/ only (restored from 0.orig by restore0Dir), never 0.orig."""
+    if not (math.isfinite(columnHeight) and columnHeight > 0):
+        raise PlaneWaveError("column height %g m must be positive and "
+                             "finite" % columnHeight)
+    files = {f: os.path.join(case, "0", f) for f in ("p", "U", "T")}
+    for f, path in files.items():
+        if not os.path.isfile(path):
+            raise PlaneWaveError("%s: no such file (the top is set in 0/, "
+                                 "restored from 0.orig first)" % path)
+    pulse = appliedPressure(case)
+    texts = {}
+    for f, path in files.items():
+        with open(path) as src:
+            text = src.read()
+        try:
+            internal = foamDict.parse(text, path)["internalField"]
+        except KeyError:
+            raise PlaneWaveError("%s: no internalField" % path)
+        except foamDict.DictError as err:
+            raise PlaneWaveError(str(err))
+        if not (isinstance(internal, list) and len(internal) == 2
+                and internal[0] == "uniform"):
+            raise PlaneWaveError("%s: internalField is not uniform: the "
+                                 "top's value is the internal field's"
+                                 % path)
+        entries = {"type": INFLOW}
+        if f == "p":
+            entries["columnHeight"] = "%.17g" % columnHeight
+            entries["pulse"] = "table ( %s )" % " ".join(
+                "(%.17g %.17g)" % r for r in pulse)
+            entries["file"] = '"%s"' % inflowFile
+        entries["value"] = "uniform " + foamDict.format_value(internal[1])
+        texts[path] = foamDict.set_subdict(
+            text, ["boundaryField", "top"], entries, path,
+            {"columnHeight": "m", "pulse": "s Pa"})
+    for path, text in texts.items():          # all three read, then written
+        with open(path, "w") as out:
+            out.write(text)
 
 
 def isWedge(case):
@@ -466,7 +727,7 @@ def solidMaterial(case, region):
     case's overrides)."""
     path = os.path.join(case, "constant", "solidProperties")
     out = subprocess.run(["foamDictionary", "-expand", path],
-                         capture_output=True, text=True)
+                         capture_output=True, text=True, env=_foamEnv())
     if out.returncode != 0:
         raise PlaneWaveError("%s: foamDictionary -expand failed (%s)"
                              % (path, out.stderr.strip()))

@@ -127,9 +127,11 @@ def _lines(path):
         raise ColumnFileError("%s: %s" % (path, err.strerror))
 
 
-def readTable(path):
+def readTable(path, vectors=False):
     """Table of one column file; a cut last row (fewer fields than the
-    first row, or no newline at its end) is dropped."""
+    first row, or no newline at its end) is dropped. vectors: the rows hold
+    vectors "(x y z)" (an OpenFOAM probes file of a vector field), read as
+    their components, one column each."""
     lines = _lines(path)
     header, notes, rows, lineNo = [], [], [], []
     last = len(lines) - 1       # "" after a final newline, else a cut line
@@ -137,6 +139,8 @@ def readTable(path):
         if line.startswith("#"):
             (notes if rows else header).append(line[1:].strip())
         elif line.strip() and i < last:
+            if vectors:
+                line = line.replace("(", " ").replace(")", " ")
             rows.append(line.split())
             lineNo.append(i + 1)
     n = len(rows[0]) if rows else 0
@@ -168,13 +172,14 @@ def segments(case, log):
     return sorted(found)
 
 
-def series(case, log):
+def series(case, log, vectors=False):
     """Float rows of log "dir/file" (e.g. "fsi/coupling.dat") over every
     start of the run: each segment's rows before the first row of the next
     segment that has rows, then that segment's rows. The rows delimit the
     segments, not the directory names: these are rounded to the
-    controlDict's timePrecision."""
-    parts = [readTable(p).data() for t0, p in segments(case, log)]
+    controlDict's timePrecision. vectors: see readTable (e.g. "probes/U":
+    time, then x y z of each probe)."""
+    parts = [readTable(p, vectors).data() for t0, p in segments(case, log)]
     parts = [a for a in parts if len(a)]
     if not parts:
         raise ColumnFileError("%s: no rows in %s" % (case, log))
