@@ -107,8 +107,18 @@ makeBlast() {
     (cd "$c" && /usr/bin/python3 -c "from neuronFsi import planeWave
 planeWave.setInflowBoundary('.', 1e-4)")
 }
-for b in Fluid Solid Mesh Fsi H5 Blast; do make$b; done
-for b in fluid solid mesh fsi h5 blast
+# inflow: the 1D column of tests/verification/planeWaveInflow.py ending
+# at 10 um, its top a planeWaveInflow boundary with its constant/inflowWave
+# (rhoRiemannFoam; the run's results removed)
+makeInflow() {
+    local c=$bases/inflow
+    /usr/bin/python3 "$root/tests/verification/planeWaveInflow.py" \
+        --keep "$bases/inflowWork" > "$bases/inflowWork.log" 2>&1
+    cp -r "$bases/inflowWork/short" "$c"
+    (cd "$c" && rm -rf postProcessing log.* && foamListTimes -rm > /dev/null)
+}
+for b in Fluid Solid Mesh Fsi H5 Blast Inflow; do make$b; done
+for b in fluid solid mesh fsi h5 blast inflow
 do
     [ -d "$bases/$b" ] || { echo "badInput: base case $b not built"; exit 1; }
 done

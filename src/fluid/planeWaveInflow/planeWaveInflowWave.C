@@ -5,6 +5,8 @@
 #include "IFstream.H"
 #include "Time.H"
 #include <algorithm>
+#include <cstdio>
+#include <string>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -31,6 +33,20 @@ Foam::List<Foam::Tuple2<Foam::scalar, Foam::scalar>> readTable
     return List<Tuple2<scalar, scalar>>(is);
 }
 
+//- A number for a message (10 significant digits, not the run's 17)
+Foam::word num(const Foam::scalar x)
+{
+    char buf[32];
+    std::snprintf(buf, sizeof(buf), "%.10g", x);
+    return Foam::word(buf, false);
+}
+
+//- A row of a pulse table for a message
+Foam::word row(const Foam::Tuple2<Foam::scalar, Foam::scalar>& r)
+{
+    return Foam::word("(" + num(r.first()) + " " + num(r.second()) + ")", false);
+}
+
 } // End anonymous namespace
 
 
@@ -54,7 +70,7 @@ Foam::planeWaveInflowWave::planeWaveInflowWave
     if (!(columnHeight_ > 0) || !std::isfinite(columnHeight_))
     {
         FatalIOErrorInFunction(entry)
-            << "columnHeight " << columnHeight_ << " m of patch "
+            << "columnHeight " << num(columnHeight_) << " m of patch "
             << patch.name() << " must be positive and finite"
             << exit(FatalIOError);
     }
@@ -127,29 +143,39 @@ void Foam::planeWaveInflowWave::readWave
     if (mag(height - patchHeight) > tol)
     {
         FatalIOErrorInFunction(wave)
-            << "The wave in " << path_ << " is at height " << height
-            << " m, patch " << patch.name() << " at " << patchHeight
-            << " m (tolerance " << tol << " m): compute it for this mesh "
-            << "(planeWave -inflow " << patchHeight << ")"
+            << "The wave in " << path_ << " is at height " << num(height)
+            << " m, patch " << patch.name() << " at " << num(patchHeight)
+            << " m (tolerance " << num(tol) << " m): compute it for this "
+            << "mesh (planeWave -inflow " << num(patchHeight) << ")"
             << exit(FatalIOError);
     }
     const scalar column = wave.get<scalar>("columnHeight");
     if (mag(column - columnHeight_) > 1e-12*columnHeight_)
     {
         FatalIOErrorInFunction(wave)
-            << "The wave in " << path_ << " is for a column of " << column
-            << " m, the p entry of patch " << patch.name() << " has "
-            << "columnHeight " << columnHeight_ << " m"
+            << "The wave in " << path_ << " is for a column of "
+            << num(column) << " m, the p entry of patch " << patch.name()
+            << " has columnHeight " << num(columnHeight_) << " m"
             << exit(FatalIOError);
     }
     const List<Tuple2<scalar, scalar>> pulse(readTable(wave, "pulse"));
     if (pulse != pulse_)
     {
+        label i = 0;
+        while (i < min(pulse.size(), pulse_.size()) && pulse[i] == pulse_[i])
+        {
+            ++i;
+        }
         FatalIOErrorInFunction(wave)
-            << "The wave in " << path_ << " is for the pulse " << pulse
-            << ", the p entry of patch " << patch.name() << " has "
-            << pulse_ << ": compute it again (planeWave -inflow)"
-            << exit(FatalIOError);
+            << "The wave in " << path_ << " is for another pulse than the "
+            << "p entry of patch " << patch.name() << " has: row " << i
+            << " is "
+            << (i < pulse.size() ? row(pulse[i]) : Foam::word("missing"))
+            << " in the file, "
+            << (i < pulse_.size() ? row(pulse_[i]) : Foam::word("missing"))
+            << " in the entry (" << pulse.size() << " and "
+            << pulse_.size() << " rows): compute it again (planeWave "
+            << "-inflow)" << exit(FatalIOError);
     }
 
     const List<vector> data(wave.lookup("data"));
@@ -266,9 +292,10 @@ void Foam::planeWaveInflowWave::waveAt
     if (!(t >= t_.first() && t <= t_.last()))
     {
         FatalErrorInFunction
-            << "Patch " << patch.name() << " (planeWaveInflow): time " << t
-            << " s is outside the wave of " << path_ << " ["
-            << t_.first() << ", " << t_.last() << "] s: compute it to the "
+            << "Patch " << patch.name() << " (planeWaveInflow): time "
+            << num(t) << " s is outside the wave of " << path_ << " ["
+            << num(t_.first()) << ", " << num(t_.last()) << "] s: compute "
+            << "it to the "
             << "run's endTime (planeWave -inflow ... -endTime)"
             << exit(FatalError);
     }

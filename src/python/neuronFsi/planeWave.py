@@ -323,14 +323,17 @@ def uniaxialResponse(t, rho, rho0, mu0, branches=()):
 
 
 def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
-           maxCells=100000):
+           maxCells=100000, scene=False):
     """Run the 1D column of <case> (water column of height Z [m]; the
     patches top and bottom) to endTime [s] with cells of dz [m], probes at
     heights [m]; returns a PlaneWave (p, rho and u at each height). The
     top and bottom conditions are the case's; for a planeWaveInflow top
     (a scene shorter than the column), the classic top instead: p
     uniformFixedValue with its pulse table, U and T zeroGradient, and Z
-    must be its columnHeight. work: the folder of the run (kept), else a
+    must be its columnHeight. scene: keep a planeWaveInflow top as the
+    case has it (with its constant/inflowWave): the 1D version of the
+    scene's own shortened column, Z its inflow height (the boundary
+    condition checks it against the file). work: the folder of the run (kept), else a
     temporary one. A column of more than maxCells cells is refused before
     anything is written (its cost grows as the square of the cell count:
     cells times steps)."""
@@ -353,8 +356,9 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
         if not 0 <= z <= Z:
             raise PlaneWaveError("probe height %g m outside the column "
                                  "[0, %g] m" % (z, Z))
-    checkColumnHeight(case, Z)
-    inflow = inflowColumnHeight(case) is not None
+    inflow = inflowColumnHeight(case) is not None and not scene
+    if not scene:
+        checkColumnHeight(case, Z)
     pulse = appliedPressure(case) if inflow else None
     keep = work is not None
     work = work or tempfile.mkdtemp(prefix="planeWave.")
@@ -369,6 +373,9 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
         for f in ("fvSchemes", "fvSolution"):
             shutil.copy(os.path.join(case, "system", f),
                         os.path.join(work, "system"))
+        if scene and os.path.isfile(os.path.join(case, INFLOW_FILE)):
+            shutil.copy(os.path.join(case, INFLOW_FILE),
+                        os.path.join(work, "constant"))
         with open(os.path.join(work, "system", "blockMeshDict"), "w") as f:
             f.write(_BLOCK_MESH.format(w=dz, Z=Z, n=n))
         probes = " ".join("(%.17g %.17g %.17g)" % (0.5*dz, z, 0.5*dz)
