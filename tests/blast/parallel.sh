@@ -23,6 +23,11 @@
 #      pulse's arrival at the cell top),
 #      simple decomposition (2 1 1) at x = 5 um through the cell: 2 ranks
 #      against serial as in 1.
+#   4. The preview shortened by its characteristic inflow (Allrun -inflow
+#      14e-6 on a 30 um column, to 24 ns: the pulse through the top at
+#      14 um and onto the cell), decomposed at y = 4 um as in 1: the top
+#      patch is on one rank only (the other holds none of its faces);
+#      2 ranks against serial as in 1.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../lib/restartTools.sh"
@@ -133,4 +138,23 @@ decompose "$qpar" "3D quarter"
     || { tail -20 "$q/log.cellBlastFoam"; exit 1; }
 runParallel "$qpar" log.cellBlastFoam
 /usr/bin/python3 "$compare" "$q" "$qpar" --tol 1e-9 --h5 --pulse 1e6
-echo "cellBlastFoam: 2 ranks equal serial (axisymmetric and 3D quarter)"
+# 4. The shortened preview (planeWaveInflow top): serial against 2 ranks
+bash "$here/runPreview.sh" "$work/inflow" -h 0.25e-6 -far 2e-6 -cell 0.5e-6 \
+    -Z 30e-6 -inflow 14e-6 -endTime 2.4e-8 -noPlots -noRun \
+    > "$work/inflow.log" 2>&1 || { cat "$work/inflow.log"; exit 1; }
+inS=$work/inflow/axisymmetricPreview
+for e in writeControl:timeStep writeInterval:25
+do
+    foamDictionary -entry "${e%%:*}" -set "${e#*:}" \
+        "$inS/system/controlDict" > /dev/null
+done
+cp -r "$work/inflow" "$work/inflowPar"
+inP=$work/inflowPar/axisymmetricPreview
+splitAtPlane "$inP" y 4e-6
+decompose "$inP" "inflow preview"
+(cd "$inS" && cellBlastFoam > log.cellBlastFoam 2>&1) \
+    || { tail -20 "$inS/log.cellBlastFoam"; exit 1; }
+runParallel "$inP" log.cellBlastFoam
+/usr/bin/python3 "$compare" "$inS" "$inP" --tol 1e-9 --h5
+echo "cellBlastFoam: 2 ranks equal serial (axisymmetric, 3D quarter, and" \
+    "the preview shortened by planeWaveInflow)"

@@ -118,22 +118,23 @@ void Foam::planeWaveInflowWave::readWave
     }
     const dictionary wave(is);
 
-    // A plane patch: one normal
-    const vectorField nf(patch.nf());
-    if (nf.empty())
+    // A plane patch: one normal (the patch may have no faces on some
+    // processors of a parallel run)
+    const vector sumSf = gSum(patch.Sf());
+    if (!(mag(sumSf) > 0))
     {
         FatalIOErrorInFunction(entry)
             << "Patch " << patch.name() << " has no faces"
             << exit(FatalIOError);
     }
-    n_ = nf[0];
-    const scalar skew = gMax(mag(nf - n_));
+    n_ = sumSf/mag(sumSf);
+    const scalar skew = max(gMax(mag(patch.nf() - n_)), scalar(0));
     if (skew > 1e-6)
     {
         FatalIOErrorInFunction(entry)
             << "Patch " << patch.name() << " is not a plane: its face "
-            << "normals differ by up to " << skew << " (the inflow of a "
-            << "plane wave needs a plane patch)" << exit(FatalIOError);
+            << "normals differ by up to " << num(skew) << " (the inflow of "
+            << "a plane wave needs a plane patch)" << exit(FatalIOError);
     }
 
     const scalar height = wave.get<scalar>("height");
