@@ -22,6 +22,7 @@ arrival time (first p > 25 MPa); then each difference to the finest level.
 
     bench/blast/run.py [--quick] [--out DIR] [--doc FILE]
                     [--factors "1.4 1 0.7"] [--endTime s]
+                    [--allrun "-shearViscosity 0.1"]
 
 Full: factors 1.4 1 0.7, 100 um column to 150 ns, probe peaks over
 t <= 90 ns (the first passage: the Fig. 10 numbers to quote), about
@@ -113,7 +114,8 @@ def runLevel(f, out, size, env):
     """prepare and run one level; its results are in files of the case
     (parseLevel reads them)"""
     c, sizes, fallback, cmd = prepare(os.path.join(out, f"level_{f}"), f,
-                                      size["Z"], size["endTime"], env)
+                                      size["Z"], size["endTime"], env,
+                                      size.get("extra", ()))
     cells, elements = count(c)
     print(f"factor {f}: {cells} fluid cells, {elements} solid elements "
           f"(h {sizes['h']:.3g} m, far {sizes['far']:.3g} m, cell "
@@ -347,7 +349,9 @@ def report(rows, size, mode, start, png, commit, dirty, end,
       f"{DEFAULT['cell']*1e6:g} f um (membrane 0.8 of it), all scaled "
       "together so that the fluid faces at the cell stay 0.625 of the "
       "membrane faces (the default's ratio; with fluid faces as large as the "
-      "solid's the run fails, docs/results/blast.md). Probe: the Fig. 10 "
+      "solid's the run fails, docs/results/blast.md)"
+      + (f"; more Allrun options on every level: `{' '.join(size['extra'])}`"
+         if size.get("extra") else "") + ". Probe: the Fig. 10 "
       "element on the cytoplasm-nucleus interface at 75 % of the nucleus "
       f"height; peaks over t <= {win:.0f} ns (the first passage), arrival = "
       f"first probe pressure above {ARRIVAL/1e6:.0f} MPa. Peak memory: the "
@@ -520,6 +524,9 @@ def main():
     ap.add_argument("--factors", default=None,
                     help="size factors, coarsest first, e.g. '1.4 1 0.7'")
     ap.add_argument("--endTime", type=float, default=None, help="[s]")
+    ap.add_argument("--allrun", default="",
+                    help="more Allrun options for every level, e.g. "
+                    "'-shearViscosity 0.1' or '-inflow none'")
     ap.add_argument("--reportOnly", action="store_true",
                     help="no run: the report from the level cases already "
                     "in --out (e.g. after a report error)")
@@ -531,6 +538,7 @@ def main():
     size = dict(SIZES[mode])
     if args.factors:
         size["factors"] = args.factors.split()
+    size["extra"] = args.allrun.split()
     if args.endTime:
         size["endTime"] = args.endTime
         size["window"] = min(size["window"], args.endTime)
