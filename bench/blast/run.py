@@ -342,7 +342,12 @@ def report(rows, size, mode, start, png, commit, dirty, end,
     w("")
     w(f"Case `tutorials/blast/axisymmetricPreview` as committed: the average"
       f" cell on the rigid substrate, a {size['Z']*1e6:.0f} um water column "
-      f"of radius 50 um, 50 MPa on the top face for {PULSE*1e9:.0f} ns, to "
+      f"of radius 50 um, 50 MPa on the top face for {PULSE*1e9:.0f} ns"
+      + (" (the water computed up to 20 um above the substrate, its top a "
+         "planeWaveInflow boundary that lets in the 1D wave of the whole "
+         "column: Allrun's default -inflow)"
+         if size["Z"] > 30e-6 and "none" not in size.get("extra", ())
+         else "") + ", to "
       f"{endNs:.0f} ns. Level x f: fluid {DEFAULT['h']*1e6:g} f um at the "
       f"cell, {DEFAULT['far']*1e6:g} f um across and "
       f"{DEFAULT['dz']*1e6:g} f um along the column, solid "
