@@ -9,8 +9,8 @@ interface maxima both over the window and over the run.
 One case: <case>/fig10.png (pressure, von Mises, longitudinal strain and
 strain rate at the probe on the cytoplasm-nucleus interface at 75 % of the
 nucleus height), <case>/interfaceMaxima.png, <case>/snapshot65.5ns.png
-(solid pressure and von Mises on the r-z section, mirrored about the axis,
-at the write time nearest 65.5 ns) and <case>/postProcessing/
+(solid pressure, von Mises and temperature rise (Fig. 9) on the r-z
+section, mirrored about the axis, at the write time nearest 65.5 ns) and <case>/postProcessing/
 blastSummary.dat (probe peaks, arrival time, coupling statistics).
 Several cases (pulse or mesh study): the Fig. 10 curves on one figure
 <prefix>fig10.png, the interface maxima against time of every case on
@@ -294,15 +294,21 @@ def snapshot(case, out, time=65.5e-9):
         conn = f.mesh("connectivity")
         p = f.field(k, "pressure")
         vm = f.field(k, "vonMises")
+        # the adiabatic temperature rise (paper Fig. 9, eqs. 7-8; regions
+        # with the Mie-Grueneisen law only: the membrane's quadratic law
+        # has no energy equation, 0 there)
+        dT = f.field(k, "temperatureRise")
         X = f.mesh("coordinates") + f.field(k, "displacement")
     if conn.shape[1] == 8:
         return snapshot3D(tk, X, conn, p, vm, out)
     X = X[:, :2]
     polys = X[conn]*1e6
     mirror = polys*np.array([-1, 1])
-    fig, ax = plt.subplots(1, 2, figsize=(12, 4))
+    fig, ax = plt.subplots(1, 3, figsize=(17, 4))
     for a, v, lab, cmap in ((ax[0], p/1e6, "pressure [MPa]", "viridis"),
-                            (ax[1], vm, "von Mises [Pa]", "magma")):
+                            (ax[1], vm, "von Mises [Pa]", "magma"),
+                            (ax[2], dT, "temperature rise [K] (Fig. 9)",
+                             "inferno")):
         pc = PolyCollection(np.concatenate([polys, mirror]), array=np.r_[v, v],
                             cmap=cmap, edgecolors="face", linewidths=0.2)
         a.add_collection(pc)
