@@ -89,6 +89,27 @@ class ReferenceFile(TempDirTestCase):
         with self.assertRaisesRegex(pw.PlaneWaveError, "are not p_z"):
             pw.readReference(self.tmp + "/bad.dat")
 
+    def testTemperaturesReadBackAndOldFilesHaveNone(self):
+        heights = [1e-6, 2e-6]
+        t = np.array([0.0, 1e-10])
+        p = np.array([[0.0, 1.0], [2.5e7, 3.0]])
+        rho = np.array([[1000.0, 1000.0], [1016.5, 1000.1]])
+        T = np.array([[293.15, 293.15], [293.25, 293.16]])
+        path = self.tmp + "/reference.dat"
+        pw.writeReference(path, pw.PlaneWave(heights, t, p, 25e-9, 1e-4,
+                                             rho, T=T), "test")
+        back = pw.readReference(path)
+        np.testing.assert_array_equal(back.temperatureAt(heights[1]),
+                                      T[:, 1])
+        np.testing.assert_array_equal(back.densityAt(heights[1]), rho[:, 1])
+        pw.writeReference(path, pw.PlaneWave(heights, t, p, 25e-9, 1e-4,
+                                             rho), "without temperatures")
+        self.assertIsNone(pw.readReference(path).temperatureAt(heights[0]))
+        self.write("bad.dat", "# x\n# time  p_z1e-06 rho_z1e-06 T_z2e-06\n"
+                   "0 1 2 3\n")
+        with self.assertRaisesRegex(pw.PlaneWaveError, "are not p_z"):
+            pw.readReference(self.tmp + "/bad.dat")
+
 
 class UniaxialResponse(unittest.TestCase):
     """The exact solid response to a density history: closed forms."""
@@ -451,6 +472,13 @@ class InflowColumn(TempDirTestCase):
         self.assertGreater(abs(-u.mean()*1000*1450/p.mean() - 1), 0.03)
         # before the arrival: at rest
         self.assertLess(np.abs(w.velocityAt(2e-6)[w.t < 1e-9]).max(), 1e-9)
+        # the temperature: the case's 293.15 K before the arrival, a rise
+        # of a few tenths of a kelvin on the 50 MPa plateau (adiabatic
+        # compression by 2 %)
+        T = w.temperatureAt(2e-6)
+        np.testing.assert_allclose(T[w.t < 1e-9], 293.15, rtol=1e-12)
+        rise = T[k] - 293.15
+        self.assertTrue(0.05 < rise.min() and rise.max() < 0.5, rise)
 
     def testColumnHeightMustBeTheCases(self):
         previewCase(self.tmp + "/case", 4e-6)

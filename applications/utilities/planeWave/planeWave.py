@@ -299,11 +299,15 @@ def solidRows(case, wave, skip):
              "region's neo-Hookean + Maxwell law); von Mises [Pa], strain "
              "ln(stretch_z) [-]: the 1-ns peak of the scene and of the "
              "answer and the error [%%]; after %g ns: largest |strain| [-] "
-             "and von Mises [Pa] of the scene (answer: 0)"
+             "and von Mises [Pa] of the scene (answer: 0); the 1-ns peak "
+             "of the temperature rise [K] of the scene (the solid's "
+             "adiabatic energy) and of the water at the probe's height in "
+             "the 1D answer (same law), and the error [%%] ('-' where the "
+             "region or the reference has no temperature)"
              % (case, planeWave.REST*1e9),
              "# probe  region  z[m]  vonMises1ns vonMises1nsRef errVonMises"
              "[%]  strain1ns strain1nsRef errStrain[%]  restStrain "
-             "restVonMises"]
+             "restVonMises  dT1ns[K] dT1nsRef[K] errDT[%]"]
     bad = []
     for i, q in enumerate(postProcessing.probes(case, log)):
         z = q["point"][axis]
@@ -314,15 +318,28 @@ def solidRows(case, wave, skip):
             data[:, 0], data[:, cols.index("vonMises%d" % i)],
             data[:, cols.index("strainZ%d" % i)], wave.t, vmRef, ezRef)
         e = {k: s[k]/r[k] - 1 for k in ("vonMises1ns", "strain1ns")}
+        # the temperature rise: the water's in the 1D answer at this height
+        # (the region has the water's law) against the solid's
+        dT = dTRef = errDT = None
+        TRef = wave.temperatureAt(z)
+        if TRef is not None and "dT%d" % i in cols:
+            scene = data[:, cols.index("dT%d" % i)]
+            if scene.max() > 0:
+                dT = planeWave.runningMean(data[:, 0], scene, 1e-9)[1].max()
+                dTRef = planeWave.runningMean(
+                    wave.t, TRef - TRef[0], 1e-9)[1].max()
+                errDT = dT/dTRef - 1
 
         def f(v, fmt="%.5g"):
             return "-" if v is None else fmt % v
 
-        lines.append("solid_%d %s %.5g  %s %s %s  %s %s %s  %s %s" % (
-            i, q["region"], z, f(s["vonMises1ns"]), f(r["vonMises1ns"]),
-            f(100*e["vonMises1ns"], "%.3g"), f(s["strain1ns"]),
-            f(r["strain1ns"]), f(100*e["strain1ns"], "%.3g"),
-            f(s["restStrain"]), f(s["restVonMises"])))
+        lines.append("solid_%d %s %.5g  %s %s %s  %s %s %s  %s %s  %s %s %s"
+                     % (i, q["region"], z, f(s["vonMises1ns"]),
+                        f(r["vonMises1ns"]), f(100*e["vonMises1ns"], "%.3g"),
+                        f(s["strain1ns"]), f(r["strain1ns"]),
+                        f(100*e["strain1ns"], "%.3g"), f(s["restStrain"]),
+                        f(s["restVonMises"]), f(dT), f(dTRef),
+                        f(None if errDT is None else 100*errDT, "%.3g")))
         checks = [("vonMises1ns", abs(e["vonMises1ns"]), "%.3g %%", 100),
                   ("strain1ns", abs(e["strain1ns"]), "%.3g %%", 100)]
         if s["restStrain"] is not None:

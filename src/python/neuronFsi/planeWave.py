@@ -243,7 +243,7 @@ functions
     {{
         type probes; libs ("libsampling.so");
         writeControl timeStep; writeInterval 1;
-        fields (p rho U); interpolationScheme cellPoint;
+        fields (p rho U T); interpolationScheme cellPoint;
         probeLocations ( {probes} );
     }}
 }}
@@ -256,12 +256,13 @@ class PlaneWave:
     (one column per height; rho and u None for a reference file without
     them)."""
 
-    def __init__(self, heights, t, p, dz, Z, rho=None, u=None):
+    def __init__(self, heights, t, p, dz, Z, rho=None, u=None, T=None):
         self.heights = np.asarray(heights, dtype=float)
         self.t = t
         self.p = p
         self.rho = rho
         self.u = u
+        self.T = T
         self.dz = dz
         self.Z = Z
 
@@ -283,6 +284,11 @@ class PlaneWave:
                                  "reference.dat written before they were "
                                  "probed: compute it again)")
         return self.rho[:, self._column(z)]
+
+    def temperatureAt(self, z):
+        """T(t) [K] at height z [m]; None for a reference without
+        temperatures"""
+        return None if self.T is None else self.T[:, self._column(z)]
 
     def velocityAt(self, z):
         """u(t) [m/s] at height z [m], positive upwards"""
@@ -413,8 +419,9 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
         rho = postProcessing.series(work, "probes/rho")
         # the column's axis is y (_BLOCK_MESH): u is U's y component
         U = postProcessing.series(work, "probes/U", vectors=True)
+        T = postProcessing.series(work, "probes/T")
         return PlaneWave(heights, data[:, 0], data[:, 1:], dz, Z,
-                         rho[:, 1:], U[:, 2::3])
+                         rho[:, 1:], U[:, 2::3], T[:, 1:])
     finally:
         if not keep:
             shutil.rmtree(work, ignore_errors=True)
@@ -423,12 +430,16 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
 def writeReference(path, wave, what):
     """Write a PlaneWave as a column file: time [s], then p_z<height>[Pa]
     per height, then rho_z<height>[kg/m^3] per height when the wave has
-    densities (what: the description line)."""
+    densities, then T_z<height>[K] when it has temperatures as well (what:
+    the description line)."""
     cols = ["p_z%.17g[Pa]" % z for z in wave.heights]
     data = wave.p
     if wave.rho is not None:
         cols += ["rho_z%.17g[kg/m^3]" % z for z in wave.heights]
         data = np.hstack((wave.p, wave.rho))
+        if wave.T is not None:
+            cols += ["T_z%.17g[K]" % z for z in wave.heights]
+            data = np.hstack((data, wave.T))
     with open(path, "w") as f:
         f.write("# %s\n# time [s]  %s\n" % (what, " ".join(cols)))
         for k in range(len(wave.t)):
@@ -437,24 +448,28 @@ def writeReference(path, wave, what):
 
 
 def readReference(path):
-    """The PlaneWave of a file of writeReference (densities if it has
-    them)."""
+    """The PlaneWave of a file of writeReference (densities and
+    temperatures if it has them)."""
     table = postProcessing.readTable(path)
     d = table.data()
     names = table.names[1:]
     nP = sum(1 for n in names if n.startswith("p_z"))
+    nT = sum(1 for n in names if n.startswith("T_z"))
     try:
         heights = [float(n[3:]) for n in names[:nP]]
-        rhoHeights = [float(n[5:]) for n in names[nP:]]
+        rhoHeights = [float(n[5:]) for n in names[nP:2*nP]]
+        THeights = [float(n[3:]) for n in names[2*nP:]]
     except ValueError:
         raise PlaneWaveError("%s: columns %s are not p_z<height> "
-                             "[rho_z<height>]" % (path, names))
+                             "[rho_z<height> [T_z<height>]]" % (path, names))
     if nP == 0 or (rhoHeights and rhoHeights != heights) \
-            or len(names) not in (nP, 2*nP):
+            or (THeights and THeights != heights) \
+            or len(names) not in (nP, 2*nP, 3*nP) or nT != len(THeights):
         raise PlaneWaveError("%s: columns %s are not p_z<height> "
-                             "[rho_z<height>]" % (path, names))
+                             "[rho_z<height> [T_z<height>]]" % (path, names))
     return PlaneWave(heights, d[:, 0], d[:, 1:1 + nP], None, None,
-                     d[:, 1 + nP:] if rhoHeights else None)
+                     d[:, 1 + nP:1 + 2*nP] if rhoHeights else None,
+                     T=d[:, 1 + 2*nP:] if THeights else None)
 
 
 _INFLOW_HEADER = """FoamFile
