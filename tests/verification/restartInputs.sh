@@ -8,8 +8,11 @@
 #    setting, a changed scheme, a changed mesh point, an added file in
 #    constant/: each restart exits non-zero, names the file and changes
 #    nothing in the case;
+#  - the pulse table edited in the restart time's p (a boundary
+#    condition: recorded per field and patch) is refused;
 #  - an edited comment and layout, and a changed end time, are not
-#    changes: the restart runs;
+#    changes: the restart runs (the boundary conditions read from the
+#    written time equal those recorded from 0/);
 #  - every write time records the digests (uniform/inputDigests);
 #  - on 2 ranks each rank records its own mesh, a changed point of one
 #    rank is refused, and the reconstructed run restarts serially.
@@ -56,6 +59,17 @@ refusedAfter "cellBlastFoam, water C0" cellBlastFoam constant/thermophysicalProp
 refusedAfter "cellBlastFoam, a mesh point" cellBlastFoam constant/polyMesh/points \
     's/^(0 -5e-07 -5e-07)$/(1e-9 -5e-07 -5e-07)/'
 refusedAfter "cellBlastFoam, an added file" cellBlastFoam constant/notes ""
+# The pulse table in the restart time's p (adversarial pass of 2026-12-03:
+# the run went on at 90 MPa after 10 ns at 50 MPa, exit 0)
+rm -rf "$work/edit"; cp -r "$case" "$work/edit"; cd "$work/edit"
+sed -i 's/ 50000000)/ 90000000)/g' 1e-08/p
+caseSums > "$work/before"
+status=0; cellBlastFoam > log.restart 2>&1 || status=$?
+caseSums > "$work/after"
+check "cellBlastFoam, the pulse table in 1e-08/p: refused, naming the field and patch, nothing changed" \
+    "[ $status -ne 0 ] && grep -q '    field p, boundaryField/loaded (changed)' log.restart \
+     && cmp -s '$work/before' '$work/after'"
+cd "$case"
 sed -i 's#^\(materials\)#// a comment added before the restart\n\1#; s/rho0        1000;/rho0  1000 ;/' constant/solidProperties
 status=0; cellBlastFoam > log.restart 2>&1 || status=$?
 check "cellBlastFoam: a comment, the layout and the end time are not changes" \
