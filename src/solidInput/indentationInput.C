@@ -356,6 +356,15 @@ std::unique_ptr<solid::IndentationDriver> Foam::indentationInput::driver
     checkRestart(outDir/"restart.h5", inputs);
     solid::IndentationSettings settings(settings_);
     settings.inputDigests = foamTools::inputRecord::format(inputs);
+    // The identity of a new run: its inputs and what decides the steps of
+    // solid.h5 (a run of the same inputs writes the same files, so that a
+    // restart stays bitwise an uninterrupted run's)
+    std::ostringstream runText;
+    runText.precision(17);
+    runText
+        << settings.inputDigests << "fieldWriteInterval "
+        << settings.writeInterval << '\n';
+    settings.runId = foamTools::inputRecord::sha1(runText.str());
     std::unique_ptr<solid::IndentationDriver> driver;
     try
     {

@@ -2,6 +2,7 @@
 #include "solidInput.H"
 #include "keywordCheck.H"
 #include "inputChecks.H"
+#include "inputRecord.H"
 #include "SolidError.H"
 #include "IOobject.H"
 #include "pointField.H"
@@ -179,6 +180,7 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
         }
         IFstream is(stateFile);
         const dictionary d(is);
+        runId_ = d.lookupOrDefault<string>("runId", string());
         const label k = restartStep(runTime_);
         guarded("solid restart", [&]
         {
@@ -230,6 +232,26 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
         Info<< "Solid: restarted from " << h5 << " step " << k
             << " (t = " << model_->time << " s) and " << stateFile << endl;
     }
+    else
+    {
+        // The same inputs give the same identity (restarts compare bitwise
+        // with uninterrupted runs): the files and the water's boundary
+        // conditions (the pulse); the master's record (its rank's mesh)
+        const word region(polyMesh::defaultRegion);
+        runId_ = foamTools::inputRecord::sha1
+        (
+            foamTools::inputRecord::format
+            (
+                runTime_.foundObject<fvMesh>(region)
+              ? foamTools::inputRecord
+                (
+                    runTime_, runTime_.lookupObject<fvMesh>(region)
+                ).digests()
+              : foamTools::inputRecord(runTime_).digests()
+            )
+        );
+        Pstream::scatter(runId_);
+    }
     // Every rank has read the file before the master opens it for writing
     // (a reduction as the barrier)
     label readDone = 1;
@@ -241,7 +263,10 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
         {
             writer_.reset
             (
-                new solid::ResultWriter(dir/"solid", *model_, restart)
+                new solid::ResultWriter
+                (
+                    dir/"solid", *model_, restart, runId_
+                )
             );
         });
     }
@@ -333,6 +358,7 @@ void Foam::solidDomain::writeState(const label k) const
             )));
         };
         os.writeEntry("h5Step", k);
+        os.writeEntry("runId", runId_);
         os.writeEntry("time", model_->time);
         os.writeEntry("dt", st.dt);
         os.writeEntry("stableDt", st.stableDt);
