@@ -4,7 +4,9 @@
 #include "volFields.H"
 #include "IFstream.H"
 #include "Time.H"
+#include "SHA1.H"
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -39,6 +41,14 @@ Foam::word num(const Foam::scalar x)
     char buf[32];
     std::snprintf(buf, sizeof(buf), "%.10g", x);
     return Foam::word(buf, false);
+}
+
+//- x as read back from its %.17g text: magnitudes up to 1e-300
+//  (OpenFOAM's VSMALL: its reader rounds them to zero) and -0.0 ("-0":
+//  the integer 0) are 0 (neuronFsi.planeWave._asRead)
+double asRead(const double x)
+{
+    return std::fabs(x) <= 1e-300 ? 0.0 : x;
 }
 
 //- A row of a pulse table for a message
@@ -204,6 +214,39 @@ void Foam::planeWaveInflowWave::readWave
                 << "data row " << i << " of " << path_ << " " << data[i]
                 << ": numbers must be finite and the times increasing"
                 << exit(FatalIOError);
+        }
+    }
+    // The rows as planeWave -inflow wrote them: its rowsDigest is the SHA-1
+    // of the rows at 17 digits as read (neuronFsi.planeWave.inflowDigest;
+    // asRead: what OpenFOAM's reader rounds to zero is 0). A value
+    // edited in the rows ran silently (issue 19, class 5: only the header
+    // entries were compared); a file without the entry (written before it
+    // existed) is read as it is
+    if (wave.found("rowsDigest"))
+    {
+        const string expected(wave.get<string>("rowsDigest"));
+        SHA1 sha;
+        forAll(t_, i)
+        {
+            char line[96];
+            std::snprintf
+            (
+                line, sizeof(line), "%.17g %.17g %.17g\n", asRead(t_[i]),
+                asRead(p_[i]), asRead(u_[i])
+            );
+            sha.append(line);
+        }
+        const std::string found(sha.digest().str());
+        if (found != expected)
+        {
+            FatalIOErrorInFunction(wave)
+                << "The data rows of " << path_ << " are not those planeWave"
+                << " -inflow wrote: their SHA-1 is " << found.c_str()
+                << ", the file's entry rowsDigest " << expected.c_str()
+                << " (a row edited or the file damaged). The incident wave"
+                << " is an input computed from the full column: compute it"
+                << " again (planeWave -inflow " << num(height) << "), do not"
+                << " edit it" << exit(FatalIOError);
         }
     }
 }
