@@ -329,6 +329,19 @@ Foam::indentationInput::addContact(solid::Model& model) const
     {
         FatalErrorInFunction << err.what() << exit(FatalError);
     }
+    // The contact's points now, not at the first step: a patch without
+    // area (the axis in r-z) named as the entry that chose it
+    try
+    {
+        contact->report(model, model.u, model.time);
+    }
+    catch (const solid::SolidError& err)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "entry 'contactPatch' = '" << contactPatch_.c_str() << "': "
+            << err.what() << ": the contact patch must be a surface of the"
+            << " cell with area (e.g. outerSurface)" << exit(FatalIOError);
+    }
 
     Info<< "Indenter: radius " << sphere.radius << " m, top of the cell z = "
         << zTop << " m, penetration tolerance " << sphere.tolerance << " m"

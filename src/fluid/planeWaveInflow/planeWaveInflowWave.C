@@ -273,15 +273,34 @@ const riemann::isentropeTable& Foam::planeWaveInflowWave::table
         const scalar rhoI = gMax(thermo.rho().primitiveField());
         const scalar dp = gMax(pI) - gMin(pI);
         const scalar dT = gMax(TI) - gMin(TI);
-        if (dp > 1e-9*rhoI*cI*cI || dT > 1e-9*gMax(TI))
+        // A temperature at or below 0 K first (the tolerance of T's
+        // uniformity below is relative to T: a negative T was reported as
+        // not uniform)
+        if (!(gMin(TI) > 0))
         {
             FatalErrorInFunction
                 << "Patch " << patch.name() << " (planeWaveInflow): the "
-                << "cells next to it are not at one state at the start "
-                << "(p from " << gMin(pI) << " to " << gMax(pI) << " Pa, "
-                << "T from " << gMin(TI) << " to " << gMax(TI) << " K); "
-                << "the ambient isentrope is taken from the water at rest "
-                << "there" << exit(FatalError);
+                << "temperature of the cells next to it at the start is "
+                << gMin(TI) << " K, not a temperature (valid range (0, inf)"
+                << " K): the initial field T (" << thermo.T().objectPath()
+                << ") is invalid there; the ambient isentrope is taken "
+                << "from the water at rest next to the patch"
+                << exit(FatalError);
+        }
+        const bool pVaries = dp > 1e-9*rhoI*cI*cI;
+        const bool TVaries = dT > 1e-9*gMax(TI);
+        if (pVaries || TVaries)
+        {
+            FatalErrorInFunction
+                << "Patch " << patch.name() << " (planeWaveInflow): the "
+                << "cells next to it are not at one state at the start: "
+                << (pVaries ? "p" : "") << (pVaries && TVaries ? " and " : "")
+                << (TVaries ? "T" : "") << " not uniform there (p from "
+                << gMin(pI) << " to " << gMax(pI) << " Pa, T from "
+                << gMin(TI) << " to " << gMax(TI) << " K; the initial "
+                << "fields of " << thermo.T().time().timeName() << "/); the "
+                << "ambient isentrope is taken from the water at rest there"
+                << exit(FatalError);
         }
         pAmbient_ = gAverage(pI);
         TAmbient_ = gAverage(TI);

@@ -119,10 +119,32 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
         std::make_shared<solid::NodalLoad>(interfaceNodes_, mesh().dim());
     model_->add(force_);
 
+    // Fractions in [0, 1) (explicitSafety (0, 1)), checked here so that a
+    // bad value is named as the file's entry (the solver's own check names
+    // its settings: 'safety', 'hourglass')
+    const auto fraction = [](const dictionary& d, const word& key,
+                             const bool zero, const scalar deflt)
+    {
+        // Any finite number read, then the range (readInRange's upper
+        // bound is closed)
+        const scalar x = foamTools::readInRangeOrDefault<scalar>
+        (
+            d, key, "", -foamTools::noUpperBound<scalar>(),
+            foamTools::noUpperBound<scalar>(), true, deflt
+        );
+        if ((zero ? x < 0 : x <= 0) || x >= 1)
+        {
+            FatalIOErrorInFunction(d)
+                << "entry '" << key << "' = " << x << " is outside the"
+                << " valid range " << (zero ? "[" : "(") << "0, 1)"
+                << exit(FatalIOError);
+        }
+        return x;
+    };
     solid::ExplicitSettings set;
-    set.safety = dict_.getOrDefault<scalar>("explicitSafety", 0.8);
-    set.hourglass = dict_.getOrDefault<scalar>("hourglassViscosity", 0);
-    set.shearViscosity = dict_.getOrDefault<scalar>("shearViscosity", 0);
+    set.safety = fraction(dict_, "explicitSafety", false, 0.8);
+    set.hourglass = fraction(dict_, "hourglassViscosity", true, 0);
+    set.shearViscosity = fraction(dict_, "shearViscosity", true, 0);
     if (dict_.found("hourglassViscosityRegions"))
     {
         // kappa per region name, overriding hourglassViscosity there
@@ -133,7 +155,8 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
         );
         for (const entry& e : hr)
         {
-            set.hourglassRegions[e.keyword()] = hr.get<scalar>(e.keyword());
+            set.hourglassRegions[e.keyword()] =
+                fraction(hr, e.keyword(), true, 0);
         }
     }
     // Volumetric law on the element dilatation (the Q1/P0 mean-dilatation
