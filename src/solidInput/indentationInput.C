@@ -329,6 +329,19 @@ Foam::indentationInput::addContact(solid::Model& model) const
     {
         FatalErrorInFunction << err.what() << exit(FatalError);
     }
+    // The contact's points now, not at the first step: a patch without
+    // area (the axis in r-z) named as the entry that chose it
+    try
+    {
+        contact->report(model, model.u, model.time);
+    }
+    catch (const solid::SolidError& err)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "entry 'contactPatch' = '" << contactPatch_.c_str() << "': "
+            << err.what() << ": the contact patch must be a surface of the"
+            << " cell with area (e.g. outerSurface)" << exit(FatalIOError);
+    }
 
     Info<< "Indenter: radius " << sphere.radius << " m, top of the cell z = "
         << zTop << " m, penetration tolerance " << sphere.tolerance << " m"
@@ -356,6 +369,15 @@ std::unique_ptr<solid::IndentationDriver> Foam::indentationInput::driver
     checkRestart(outDir/"restart.h5", inputs);
     solid::IndentationSettings settings(settings_);
     settings.inputDigests = foamTools::inputRecord::format(inputs);
+    // The identity of a new run: its inputs and what decides the steps of
+    // solid.h5 (a run of the same inputs writes the same files, so that a
+    // restart stays bitwise an uninterrupted run's)
+    std::ostringstream runText;
+    runText.precision(17);
+    runText
+        << settings.inputDigests << "fieldWriteInterval "
+        << settings.writeInterval << '\n';
+    settings.runId = foamTools::inputRecord::sha1(runText.str());
     std::unique_ptr<solid::IndentationDriver> driver;
     try
     {

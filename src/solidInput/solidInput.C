@@ -264,6 +264,29 @@ std::vector<solid::MaterialParameters> Foam::solidInput::setup
 }
 
 
+void Foam::solidInput::checkHeld(const label comp, const word& axis) const
+{
+    const List<Tuple2<word, label>> fixed
+    (
+        dict_.get<List<Tuple2<word, label>>>("fixed")
+    );
+    for (const auto& f : fixed)
+    {
+        if (f.second() == comp)
+        {
+            return;
+        }
+    }
+    FatalIOErrorInFunction(dict_)
+        << "entry 'fixed' holds " << fixed.size() << " rows and none fixes"
+        << " component " << comp << " (" << axis.c_str() << ", the"
+        << " indentation axis): a static indentation needs the cell held"
+        << " along it, else the sphere pushes it away as a rigid body and"
+        << " no step converges. Give a row (<node set> " << comp << "), e.g."
+        << " (fixedBottom " << comp << ")" << exit(FatalIOError);
+}
+
+
 Foam::foamTools::inputRecord::digestMap Foam::solidInput::digests
 (
     const solid::Mesh& mesh

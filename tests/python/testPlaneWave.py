@@ -356,6 +356,12 @@ class InflowFile(TempDirTestCase):
         text = read(path)
         self.assertIn("// Written by: a test", text)
         self.assertIn("object      inflowWave;", text)
+        # the digest of the rows the boundary compares (-0.0 as 0: OpenFOAM
+        # reads "-0" as the integer 0)
+        self.assertIn('rowsDigest      "%s";' % pw.inflowDigest(
+            zip(d["t"], d["p"], d["u"])), text)
+        self.assertEqual(pw.inflowDigest([(0.0, -0.0, 1e-13)]),
+                         pw.inflowDigest([(0, 0, 1e-13)]))
         # OpenFOAM reads it
         r = subprocess.run(["foamDictionary", "-entry", "height", "-value",
                             path], capture_output=True, text=True,

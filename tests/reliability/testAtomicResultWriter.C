@@ -8,6 +8,7 @@
 // it, never between.
 
 #include "Checkpoint.H"
+#include "Hdf5File.H"
 #include "Loads.H"
 #include "Model.H"
 #include "ResultWriter.H"
@@ -334,4 +335,100 @@ TEST(AtomicResultWriter, NewFileReplacesTheXdmfToo)
     EXPECT_EQ(x.find("/steps/"), std::string::npos)
         << "the .xmf of a new file lists earlier steps:\n" << x.substr(0, 400);
     EXPECT_NE(x.find("CollectionType=\"Temporal\""), std::string::npos);
+}
+
+
+namespace
+{
+
+std::string errorOf(const std::function<void()>& f)
+{
+    try
+    {
+        f();
+    }
+    catch (const SolidError& e)
+    {
+        return e.what();
+    }
+    return "";
+}
+
+//- Zero the 8 bytes of the first stored copy of value in file; false if
+//  the value is not found
+bool zeroValue(const std::string& file, double value)
+{
+    std::string bytes = text(file);
+    const std::string pattern(reinterpret_cast<const char*>(&value), 8);
+    const auto at = bytes.find(pattern);
+    if (at == std::string::npos) return false;
+    bytes.replace(at, 8, std::string(8, '\0'));
+    std::ofstream(file, std::ios::binary) << bytes;
+    return true;
+}
+
+} // namespace
+
+
+// A continued file (a restart) must be undamaged anywhere and of the
+// restart's run (issue 19, classes 1 and 5: a solid.h5 damaged in a step
+// before the one restarted from, or copied from another run, was
+// continued silently: the step read at the restart was intact)
+TEST(AtomicResultWriter, ContinuedFileMustBeUndamagedAndOfItsRun)
+{
+    removeFiles({"own.h5", "own.xmf", "noId.h5", "noId.xmf", "damaged.h5",
+                 "damaged.xmf"});
+    auto model = creepModel();
+    StaticSolver solver(*model);
+    {
+        ResultWriter w("own", *model, false, "runA");
+        ResultWriter n("noId", *model);
+        for (int k = 0; k < 3; ++k)
+        {
+            solver.step(0.02);
+            w.write(*model);
+            n.write(*model);
+        }
+    }
+    const std::string own = text("own.h5");
+    EXPECT_NO_THROW(ResultWriter::checkContinued("own.h5", "runA"));
+    EXPECT_NO_THROW(ResultWriter("own", *model, true, "runA"));
+
+    // Another run's file
+    std::string msg = errorOf([&] { ResultWriter("own", *model, true,
+                                                 "runB"); });
+    EXPECT_NE(msg.find("'own.h5' belongs to another run"), std::string::npos)
+        << msg;
+    EXPECT_NE(msg.find("runA"), std::string::npos) << msg;
+    msg = errorOf([] { ResultWriter::checkContinued("noId.h5", "runA"); });
+    EXPECT_NE(msg.find("carries no run id"), std::string::npos) << msg;
+    EXPECT_EQ(text("own.h5"), own);
+
+    // A value of step 0 zeroed: step 2, restarted from, still reads
+    std::filesystem::copy_file("own.h5", "damaged.h5");
+    const std::vector<double> u0 = Hdf5File("damaged.h5",
+        Hdf5File::Mode::readOnly).read("/steps/0/displacement");
+    const double value = *std::max_element(u0.begin(), u0.end());
+    ASSERT_GT(value, 0);
+    ASSERT_TRUE(zeroValue("damaged.h5", value));
+    auto m = creepModel();
+    EXPECT_NO_THROW(ResultWriter::restart("damaged.h5", 2, *m));
+    const std::string damaged = text("damaged.h5");
+    for
+    (
+        const auto& f : std::vector<std::function<void()>>
+        {
+            [&] { ResultWriter("damaged", *m, true, "runA"); },
+            [] { ResultWriter::checkContinued("damaged.h5", ""); },
+            [] { truncateSteps("damaged.h5", 2); }
+        }
+    )
+    {
+        msg = errorOf(f);
+        EXPECT_NE(msg.find("'damaged.h5'"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("/steps/0/displacement"), std::string::npos)
+            << msg;
+        EXPECT_NE(msg.find("checksum"), std::string::npos) << msg;
+        EXPECT_EQ(text("damaged.h5"), damaged);
+    }
 }

@@ -5,15 +5,19 @@
 // a kill) equals the uninterrupted run bit for bit.
 #include "IndentationDriver.H"
 #include "Checkpoint.H"
+#include "Hdf5File.H"
 #include "SolidError.H"
 #include "SolidTestUtils.H"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <map>
 #include <sstream>
 
 using namespace solid;
@@ -313,4 +317,92 @@ TEST(SolidIndentationDriver, ResumedRunEqualsUninterruptedBitForBit)
                 n, kLoad, kHold);
     resumeAfter(kLoad, kLoad - redone, s, n);
     resumeAfter(kHold, kHold - redone, s, n);
+}
+
+
+// A resume continues only the outputs of the checkpoint's run, undamaged
+// (issue 19, classes 1 and 5: force.dat or solid.h5 copied from another
+// run, or solid.h5 damaged in a step before the checkpoint's, were
+// continued silently); refused naming the file, nothing changed
+TEST(SolidIndentationDriver, ResumeRefusesOutputsOfAnotherRunOrDamaged)
+{
+    ScratchDir own, other;
+    IndentationSettings s = baseSettings();
+    s.writeInterval = 0.5;          // fields [s]
+    s.checkpointInterval = 10;
+    s.runId = "runA";
+    {
+        Indentation a(table, s, own.path);
+        a.driver->start(false);
+        a.driver->run();
+    }
+    EXPECT_EQ(contents(own.path + "/force.dat").substr(0, 11),
+              "# run runA\n");
+    s.runId = "runB";
+    {
+        Indentation b(table, s, other.path);
+        b.driver->start(false);
+        b.driver->run();
+    }
+    const char* outputs[] = {"force.dat", "peaks.dat", "solid.h5",
+                             "restart.h5"};
+    // A resume with damage() done to a copy of the own run's outputs:
+    // its error ("" if it continued), the outputs checked unchanged
+    auto resume = [&](const std::function<void(const std::string&)>& damage)
+    {
+        ScratchDir c;
+        fs::copy(own.path, c.path, fs::copy_options::recursive
+               | fs::copy_options::overwrite_existing);
+        damage(c.path);
+        std::map<std::string, std::string> before;
+        for (const char* f : outputs) before[f] = contents(c.path + "/" + f);
+        Indentation r(table, s, c.path);
+        std::string msg;
+        try
+        {
+            r.driver->start(true);
+        }
+        catch (const SolidError& e)
+        {
+            msg = e.what();
+            for (const char* f : outputs)
+            {
+                EXPECT_EQ(contents(c.path + "/" + f), before[f]) << f;
+            }
+        }
+        return msg;
+    };
+    EXPECT_EQ(resume([](const std::string&) {}), "");
+    for (const char* f : {"force.dat", "peaks.dat", "solid.h5"})
+    {
+        const std::string msg = resume([&](const std::string& dir)
+        {
+            fs::copy_file(other.path + "/" + f, dir + "/" + f,
+                          fs::copy_options::overwrite_existing);
+        });
+        EXPECT_NE(msg.find(f), std::string::npos) << msg;
+        EXPECT_NE(msg.find("belongs to another run"), std::string::npos)
+            << msg;
+        EXPECT_NE(msg.find("runA"), std::string::npos) << msg;
+    }
+
+    // A value of step 0 of solid.h5 zeroed (the checkpoint's steps later)
+    const std::string msg = resume([](const std::string& dir)
+    {
+        const std::string h5 = dir + "/solid.h5";
+        const std::vector<double> u =
+            Hdf5File(h5, Hdf5File::Mode::readOnly).read("/steps/1/velocity");
+        const double v = *std::max_element(u.begin(), u.end());
+        std::string bytes = contents(h5);
+        const auto at = bytes.find
+        (
+            std::string(reinterpret_cast<const char*>(&v), 8)
+        );
+        ASSERT_NE(at, std::string::npos);
+        bytes.replace(at, 8, std::string(8, '\0'));
+        std::ofstream(h5, std::ios::binary) << bytes;
+    });
+    EXPECT_NE(msg.find("solid.h5"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("/steps/1/velocity"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("checksum"), std::string::npos) << msg;
 }

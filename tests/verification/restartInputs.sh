@@ -8,8 +8,14 @@
 #    setting, a changed scheme, a changed mesh point, an added file in
 #    constant/: each restart exits non-zero, names the file and changes
 #    nothing in the case;
+#  - the pulse table edited in the restart time's p (a boundary
+#    condition: recorded per field and patch) is refused;
+#  - solid/solid.h5 of another run (another solid rho0), and solid.h5
+#    with a bit of step 0 flipped (the restart reads step 1): refused,
+#    naming the file (and the dataset), nothing changed;
 #  - an edited comment and layout, and a changed end time, are not
-#    changes: the restart runs;
+#    changes: the restart runs (the boundary conditions read from the
+#    written time equal those recorded from 0/);
 #  - every write time records the digests (uniform/inputDigests);
 #  - on 2 ranks each rank records its own mesh, a changed point of one
 #    rank is refused, and the reconstructed run restarts serially.
@@ -56,6 +62,52 @@ refusedAfter "cellBlastFoam, water C0" cellBlastFoam constant/thermophysicalProp
 refusedAfter "cellBlastFoam, a mesh point" cellBlastFoam constant/polyMesh/points \
     's/^(0 -5e-07 -5e-07)$/(1e-9 -5e-07 -5e-07)/'
 refusedAfter "cellBlastFoam, an added file" cellBlastFoam constant/notes ""
+# The pulse table in the restart time's p (adversarial pass of 2026-12-03:
+# the run went on at 90 MPa after 10 ns at 50 MPa, exit 0)
+rm -rf "$work/edit"; cp -r "$case" "$work/edit"; cd "$work/edit"
+sed -i 's/ 50000000)/ 90000000)/g' 1e-08/p
+caseSums > "$work/before"
+status=0; cellBlastFoam > log.restart 2>&1 || status=$?
+caseSums > "$work/after"
+check "cellBlastFoam, the pulse table in 1e-08/p: refused, naming the field and patch, nothing changed" \
+    "[ $status -ne 0 ] && grep -q '    field p, boundaryField/loaded (changed)' log.restart \
+     && cmp -s '$work/before' '$work/after'"
+# solid/solid.h5 of another run (adversarial pass: continued silently,
+# one file of two runs) and damaged in step 0, before the step restarted
+# from (continued silently, the damage kept): refused naming the file
+cp -r "$case" "$work/other"; cd "$work/other"
+sed -i 's/rho0        1000;/rho0        1100;/' constant/solidProperties
+foamListTimes -rm > /dev/null; rm -rf solid postProcessing
+cellBlastFoam > log.other 2>&1
+rm -rf "$work/edit"; cp -r "$case" "$work/edit"; cd "$work/edit"
+cp "$work/other/solid/solid.h5" solid/solid.h5
+caseSums > "$work/before"
+status=0; cellBlastFoam > log.restart 2>&1 || status=$?
+caseSums > "$work/after"
+check "cellBlastFoam, solid.h5 of another run: refused, naming it, nothing changed" \
+    "[ $status -ne 0 ] && grep -q 'solid/solid.h5.* belongs to another run' log.restart \
+     && cmp -s '$work/before' '$work/after'"
+rm -rf "$work/edit"; cp -r "$case" "$work/edit"; cd "$work/edit"
+# one bit of the largest value (Fletcher-32 cannot tell 16-bit words 0x0000
+# from 0xffff: zeroed or inverted zeros, most of step 0, go unseen)
+/usr/bin/python3 - <<'PY'
+import h5py, numpy as np
+with h5py.File("solid/solid.h5", "r") as f:
+    d = f["steps/0/displacement"]
+    at = d.id.get_chunk_info(0).byte_offset + 8*int(np.argmax(abs(d[:])))
+with open("solid/solid.h5", "r+b") as f:
+    f.seek(at + 3)
+    b = f.read(1)[0]
+    f.seek(at + 3)
+    f.write(bytes([b ^ 0x10]))
+PY
+caseSums > "$work/before"
+status=0; cellBlastFoam > log.restart 2>&1 || status=$?
+caseSums > "$work/after"
+check "cellBlastFoam, solid.h5 damaged in step 0: refused, naming file and dataset, nothing changed" \
+    "[ $status -ne 0 ] && grep -q \"solid/solid.h5'.*/steps/0/displacement.*checksum\" log.restart \
+     && cmp -s '$work/before' '$work/after'"
+cd "$case"
 sed -i 's#^\(materials\)#// a comment added before the restart\n\1#; s/rho0        1000;/rho0  1000 ;/' constant/solidProperties
 status=0; cellBlastFoam > log.restart 2>&1 || status=$?
 check "cellBlastFoam: a comment, the layout and the end time are not changes" \

@@ -84,7 +84,7 @@ int main(int argc, char *argv[])
     (
         args, runTime, {runTime.globalPath()/"solid"/"solid.h5"}
     );
-    const foamTools::inputRecord inputs(runTime);
+    const foamTools::inputRecord inputs(runTime, mesh);
     inputs.checkRestart();
 
     fluidSolidInteraction fsi(mesh, fluid);

@@ -79,6 +79,31 @@ int main(int argc, char *argv[])
     {
         driver->run();
     }
+    catch (const solid::SolidError& err)
+    {
+        // A step that does not converge names no input by itself: the
+        // inputs that decide it (no support along the axis, a material far
+        // too soft, steps far too small were each reported as "line
+        // search failed" alone; issue 19)
+        FatalErrorInFunction
+            << "at t = " << model.time << " s: " << err.what();
+        if (err.kind() == solid::SolidError::Kind::notConverged)
+        {
+            FatalError
+                << nl << "    The static solve of the cell did not converge."
+                << " It depends on these inputs: constant/solidProperties,"
+                << " entries 'materials' (C10, d0 and the Maxwell branches"
+                << " of each region) and 'fixed' (the supports);"
+                << " constant/indenterProperties, entries 'maxDeltaT' = "
+                << indenter.settings().maxDeltaT << " s, 'holdDeltaT0' = "
+                << indenter.settings().holdDeltaT0 << " s, "
+                << "'maxDepthIncrement' = "
+                << indenter.settings().maxDepthIncrement << " m, 'tolerance'"
+                << " and 'penaltyFactor' (the contact), and the rows of"
+                << " 'protocol'";
+        }
+        FatalError << exit(FatalError);
+    }
     catch (const std::exception& err)
     {
         // solid::SolidError, and any standard exception (a std::

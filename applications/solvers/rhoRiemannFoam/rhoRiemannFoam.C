@@ -82,7 +82,7 @@ int main(int argc, char *argv[])
     // the results of an earlier run, a restart if its inputs are not those
     // its results were computed with
     foamTools::resultGuard::check(args, runTime);
-    const foamTools::inputRecord inputs(runTime);
+    const foamTools::inputRecord inputs(runTime, mesh);
     inputs.checkRestart();
 
     Info<< "\nStarting time loop\n" << endl;

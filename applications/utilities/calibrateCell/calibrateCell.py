@@ -538,6 +538,15 @@ def main():
     ap.add_argument("-keep", action="store_true",
                     help="keep the run folders")
     args = ap.parse_args()
+    if args.dict is not None and not os.path.isfile(args.dict):
+        # was "[Errno 21] Is a directory: 'system'", naming no option
+        print("calibrateCell: error: -dict %s: %s; the option's value must "
+              "be a calibration dictionary file (default "
+              "<case>/system/calibrationDict)"
+              % (args.dict, "a directory, not a file"
+                 if os.path.isdir(args.dict) else "no such file"),
+              file=sys.stderr)
+        return 1
     dict_path = args.dict or os.path.join(args.case,
                                           "system/calibrationDict")
     own = args.work is None

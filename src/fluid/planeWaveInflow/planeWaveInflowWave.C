@@ -4,7 +4,9 @@
 #include "volFields.H"
 #include "IFstream.H"
 #include "Time.H"
+#include "SHA1.H"
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -39,6 +41,14 @@ Foam::word num(const Foam::scalar x)
     char buf[32];
     std::snprintf(buf, sizeof(buf), "%.10g", x);
     return Foam::word(buf, false);
+}
+
+//- x as read back from its %.17g text: magnitudes up to 1e-300
+//  (OpenFOAM's VSMALL: its reader rounds them to zero) and -0.0 ("-0":
+//  the integer 0) are 0 (neuronFsi.planeWave._asRead)
+double asRead(const double x)
+{
+    return std::fabs(x) <= 1e-300 ? 0.0 : x;
 }
 
 //- A row of a pulse table for a message
@@ -206,6 +216,39 @@ void Foam::planeWaveInflowWave::readWave
                 << exit(FatalIOError);
         }
     }
+    // The rows as planeWave -inflow wrote them: its rowsDigest is the SHA-1
+    // of the rows at 17 digits as read (neuronFsi.planeWave.inflowDigest;
+    // asRead: what OpenFOAM's reader rounds to zero is 0). A value
+    // edited in the rows ran silently (issue 19, class 5: only the header
+    // entries were compared); a file without the entry (written before it
+    // existed) is read as it is
+    if (wave.found("rowsDigest"))
+    {
+        const string expected(wave.get<string>("rowsDigest"));
+        SHA1 sha;
+        forAll(t_, i)
+        {
+            char line[96];
+            std::snprintf
+            (
+                line, sizeof(line), "%.17g %.17g %.17g\n", asRead(t_[i]),
+                asRead(p_[i]), asRead(u_[i])
+            );
+            sha.append(line);
+        }
+        const std::string found(sha.digest().str());
+        if (found != expected)
+        {
+            FatalIOErrorInFunction(wave)
+                << "The data rows of " << path_ << " are not those planeWave"
+                << " -inflow wrote: their SHA-1 is " << found.c_str()
+                << ", the file's entry rowsDigest " << expected.c_str()
+                << " (a row edited or the file damaged). The incident wave"
+                << " is an input computed from the full column: compute it"
+                << " again (planeWave -inflow " << num(height) << "), do not"
+                << " edit it" << exit(FatalIOError);
+        }
+    }
 }
 
 
@@ -230,15 +273,34 @@ const riemann::isentropeTable& Foam::planeWaveInflowWave::table
         const scalar rhoI = gMax(thermo.rho().primitiveField());
         const scalar dp = gMax(pI) - gMin(pI);
         const scalar dT = gMax(TI) - gMin(TI);
-        if (dp > 1e-9*rhoI*cI*cI || dT > 1e-9*gMax(TI))
+        // A temperature at or below 0 K first (the tolerance of T's
+        // uniformity below is relative to T: a negative T was reported as
+        // not uniform)
+        if (!(gMin(TI) > 0))
         {
             FatalErrorInFunction
                 << "Patch " << patch.name() << " (planeWaveInflow): the "
-                << "cells next to it are not at one state at the start "
-                << "(p from " << gMin(pI) << " to " << gMax(pI) << " Pa, "
-                << "T from " << gMin(TI) << " to " << gMax(TI) << " K); "
-                << "the ambient isentrope is taken from the water at rest "
-                << "there" << exit(FatalError);
+                << "temperature of the cells next to it at the start is "
+                << gMin(TI) << " K, not a temperature (valid range (0, inf)"
+                << " K): the initial field T (" << thermo.T().objectPath()
+                << ") is invalid there; the ambient isentrope is taken "
+                << "from the water at rest next to the patch"
+                << exit(FatalError);
+        }
+        const bool pVaries = dp > 1e-9*rhoI*cI*cI;
+        const bool TVaries = dT > 1e-9*gMax(TI);
+        if (pVaries || TVaries)
+        {
+            FatalErrorInFunction
+                << "Patch " << patch.name() << " (planeWaveInflow): the "
+                << "cells next to it are not at one state at the start: "
+                << (pVaries ? "p" : "") << (pVaries && TVaries ? " and " : "")
+                << (TVaries ? "T" : "") << " not uniform there (p from "
+                << gMin(pI) << " to " << gMax(pI) << " Pa, T from "
+                << gMin(TI) << " to " << gMax(TI) << " K; the initial "
+                << "fields of " << thermo.T().time().timeName() << "/); the "
+                << "ambient isentrope is taken from the water at rest there"
+                << exit(FatalError);
         }
         pAmbient_ = gAverage(pI);
         TAmbient_ = gAverage(TI);

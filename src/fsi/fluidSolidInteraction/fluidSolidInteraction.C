@@ -4,6 +4,7 @@
 #include "clockTime.H"
 #include "wedgeFvPatch.H"
 #include "Checkpoint.H"
+#include "ResultWriter.H"
 #include "SolidError.H"
 #include "inputChecks.H"
 
@@ -116,6 +117,28 @@ void Foam::fluidSolidInteraction::truncateSolidResults(const Time& runTime)
     if (!Pstream::master() || !isFile(stateFile) || !isFile(h5))
     {
         return;
+    }
+
+    // The file must be this run's and undamaged anywhere (issue 19,
+    // classes 1 and 5: a solid.h5 of another run or damaged in an earlier
+    // step was continued), checked before anything is removed
+    {
+        IFstream is(stateFile);
+        const dictionary d(is);
+        const string runId(d.lookupOrDefault<string>("runId", string()));
+        try
+        {
+            solid::ResultWriter::checkContinued(h5, runId);
+        }
+        catch (const solid::SolidError& err)
+        {
+            FatalIOErrorInFunction(d)
+                << "Restart from t = " << runTime.timeName() << " s"
+                << " cannot continue " << h5 << ": " << err.what() << nl
+                << "    Nothing was changed. Restore this run's solid.h5,"
+                << " restart from another time, or start anew (startFrom"
+                << " startTime, -overwrite)" << exit(FatalIOError);
+        }
     }
 
     // h5Step checked against the step's time in the file before any step

@@ -2,6 +2,7 @@
 #include "solidInput.H"
 #include "keywordCheck.H"
 #include "inputChecks.H"
+#include "inputRecord.H"
 #include "SolidError.H"
 #include "IOobject.H"
 #include "pointField.H"
@@ -118,10 +119,32 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
         std::make_shared<solid::NodalLoad>(interfaceNodes_, mesh().dim());
     model_->add(force_);
 
+    // Fractions in [0, 1) (explicitSafety (0, 1)), checked here so that a
+    // bad value is named as the file's entry (the solver's own check names
+    // its settings: 'safety', 'hourglass')
+    const auto fraction = [](const dictionary& d, const word& key,
+                             const bool zero, const scalar deflt)
+    {
+        // Any finite number read, then the range (readInRange's upper
+        // bound is closed)
+        const scalar x = foamTools::readInRangeOrDefault<scalar>
+        (
+            d, key, "", -foamTools::noUpperBound<scalar>(),
+            foamTools::noUpperBound<scalar>(), true, deflt
+        );
+        if ((zero ? x < 0 : x <= 0) || x >= 1)
+        {
+            FatalIOErrorInFunction(d)
+                << "entry '" << key << "' = " << x << " is outside the"
+                << " valid range " << (zero ? "[" : "(") << "0, 1)"
+                << exit(FatalIOError);
+        }
+        return x;
+    };
     solid::ExplicitSettings set;
-    set.safety = dict_.getOrDefault<scalar>("explicitSafety", 0.8);
-    set.hourglass = dict_.getOrDefault<scalar>("hourglassViscosity", 0);
-    set.shearViscosity = dict_.getOrDefault<scalar>("shearViscosity", 0);
+    set.safety = fraction(dict_, "explicitSafety", false, 0.8);
+    set.hourglass = fraction(dict_, "hourglassViscosity", true, 0);
+    set.shearViscosity = fraction(dict_, "shearViscosity", true, 0);
     if (dict_.found("hourglassViscosityRegions"))
     {
         // kappa per region name, overriding hourglassViscosity there
@@ -132,7 +155,8 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
         );
         for (const entry& e : hr)
         {
-            set.hourglassRegions[e.keyword()] = hr.get<scalar>(e.keyword());
+            set.hourglassRegions[e.keyword()] =
+                fraction(hr, e.keyword(), true, 0);
         }
     }
     // Volumetric law on the element dilatation (the Q1/P0 mean-dilatation
@@ -179,6 +203,7 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
         }
         IFstream is(stateFile);
         const dictionary d(is);
+        runId_ = d.lookupOrDefault<string>("runId", string());
         const label k = restartStep(runTime_);
         guarded("solid restart", [&]
         {
@@ -230,6 +255,26 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
         Info<< "Solid: restarted from " << h5 << " step " << k
             << " (t = " << model_->time << " s) and " << stateFile << endl;
     }
+    else
+    {
+        // The same inputs give the same identity (restarts compare bitwise
+        // with uninterrupted runs): the files and the water's boundary
+        // conditions (the pulse); the master's record (its rank's mesh)
+        const word region(polyMesh::defaultRegion);
+        runId_ = foamTools::inputRecord::sha1
+        (
+            foamTools::inputRecord::format
+            (
+                runTime_.foundObject<fvMesh>(region)
+              ? foamTools::inputRecord
+                (
+                    runTime_, runTime_.lookupObject<fvMesh>(region)
+                ).digests()
+              : foamTools::inputRecord(runTime_).digests()
+            )
+        );
+        Pstream::scatter(runId_);
+    }
     // Every rank has read the file before the master opens it for writing
     // (a reduction as the barrier)
     label readDone = 1;
@@ -241,7 +286,10 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
         {
             writer_.reset
             (
-                new solid::ResultWriter(dir/"solid", *model_, restart)
+                new solid::ResultWriter
+                (
+                    dir/"solid", *model_, restart, runId_
+                )
             );
         });
     }
@@ -333,6 +381,7 @@ void Foam::solidDomain::writeState(const label k) const
             )));
         };
         os.writeEntry("h5Step", k);
+        os.writeEntry("runId", runId_);
         os.writeEntry("time", model_->time);
         os.writeEntry("dt", st.dt);
         os.writeEntry("stableDt", st.stableDt);

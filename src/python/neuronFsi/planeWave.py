@@ -48,6 +48,7 @@ integrated over the same times.
 """
 
 import glob
+import hashlib
 import math
 import os
 import re
@@ -489,6 +490,7 @@ height          %.17g;  // [m] the plane's height above the substrate (the scene
 columnHeight    %.17g;  // [m] the physical column: the pulse is applied at its top face
 pulse           table ( %s );  // [s Pa] gauge pressure applied there
 dz              %.17g;  // [m] 1D cell size
+rowsDigest      "%s";  // SHA-1 of the rows below (each "%%.17g %%.17g %%.17g" and a newline): planeWaveInflow refuses rows changed since
 
 // time [s], p [Pa, gauge], u [m/s]: velocity along the column axis,
 // positive upwards (away from the substrate), at height
@@ -515,16 +517,38 @@ def writeInflow(path, wave, height, pulse, what):
         t = np.concatenate(([0.0], t))
         p = np.concatenate((p[:1], p))
         u = np.concatenate((u[:1], u))
+    rows = list(zip(t, p, u))
     text = [_INFLOW_HEADER % (
         "\n".join("// " + " ".join(line.split())
                   for line in what.split("\n")), height, wave.Z,
-        " ".join("(%.17g %.17g)" % (a, b) for a, b in pulse), wave.dz)]
-    text += ["    (%.17g %.17g %.17g)\n" % r for r in zip(t, p, u)]
+        " ".join("(%.17g %.17g)" % (a, b) for a, b in pulse), wave.dz,
+        inflowDigest(rows))]
+    text += ["    (%.17g %.17g %.17g)\n" % r for r in rows]
     text.append(");\n")
     tmp = path + ".writing"
     with open(tmp, "w") as f:
         f.write("".join(text))
     os.replace(tmp, path)
+
+
+def inflowDigest(rows):
+    """The SHA-1 (hex) of the data rows [(t, p, u)] of a
+    constant/inflowWave, each written "%.17g %.17g %.17g\\n" as OpenFOAM
+    reads it (_asRead; C's printf
+    and Python's % give the same digits): the entry rowsDigest, which the
+    planeWaveInflow boundary compares with the rows it reads."""
+    return hashlib.sha1("".join(
+        "%.17g %.17g %.17g\n" % tuple(_asRead(x) for x in r)
+        for r in rows).encode()).hexdigest()
+
+
+def _asRead(x):
+    """x as OpenFOAM reads it back from %.17g: a magnitude up to 1e-300
+    (OpenFOAM's VSMALL: it rounds such numbers to zero, e.g. 7.4e-308 m/s
+    in the rest ahead of a wave) as 0, -0.0 as 0 ("-0" is read as the
+    integer 0)."""
+    x = float(x)
+    return 0.0 if abs(x) <= 1e-300 else x
 
 
 def readInflow(path):

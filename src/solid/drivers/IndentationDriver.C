@@ -55,6 +55,32 @@ void solid::IndentationDriver::checkResume()
     // Everything checked before any output is touched: a checkpoint of
     // another mesh, model or table is refused here
     const Checkpoint& c = *resumeFrom_;
+    // The outputs must be this run's (a checkpoint of an earlier build has
+    // no run id: then only solid.h5's checksums are checked) and solid.h5
+    // undamaged anywhere, not only in the steps a restart reads
+    runId_ = c.hasText("runId") ? c.text("runId") : "";
+    ResultWriter::checkContinued(path("solid.h5"), runId_);
+    if (!runId_.empty())
+    {
+        for (const char* f : {"force.dat", "peaks.dat"})
+        {
+            std::ifstream is(path(f));
+            std::string first;
+            std::getline(is, first);
+            if (first != "# run " + runId_)
+            {
+                throw SolidError
+                (
+                    SolidError::Kind::io, path(f) + " belongs to another "
+                    "run: its first line is '" + first.substr(0, 80)
+                  + "', the checkpoint " + checkpointFile() + " continues"
+                    " run " + runId_ + " (a file copied from another case "
+                    "or run, or replaced since): a restart continues only "
+                    "the files of its own run"
+                );
+            }
+        }
+    }
     c.restoreModel("model/", model_);
     contact_->report(model_, model_.u, model_.time);
     contact_->setMultipliers(c.get("contact/multipliers"));
@@ -122,16 +148,18 @@ void solid::IndentationDriver::openOutputs()
     forceFile_.precision(settings_.precision);
     if (!resume_)
     {
+        if (!runId_.empty()) forceFile_ << "# run " << runId_ << '\n';
         forceFile_
             << "# time [s]  depth [m]  force [N]  contactRadius [m]  "
             << "maxPenetration [m]  stage" << '\n';
     }
-    fields_.reset(new ResultWriter(path("solid"), model_, resume_));
+    fields_.reset(new ResultWriter(path("solid"), model_, resume_, runId_));
     fieldSteps_ = resume_ ? int(resumeFrom_->scalar("fieldSteps")) : 0;
     peakFile_.open(path("peaks.dat"), std::ios::out | mode);
     peakFile_.precision(settings_.precision);
     if (!resume_)
     {
+        if (!runId_.empty()) peakFile_ << "# run " << runId_ << '\n';
         peakFile_ << "# label  time [s]  depth [m]  force [N]" << '\n';
     }
     if (!forceFile_ || !peakFile_)
@@ -185,6 +213,7 @@ void solid::IndentationDriver::start(bool resume)
     else
     {
         std::remove(checkpointFile().c_str());
+        runId_ = settings_.runId;
     }
     openOutputs();
     counters_ = IndentationCounters();
@@ -295,6 +324,7 @@ void solid::IndentationDriver::checkpoint(long row)
     });
     c.set("fieldSteps", double(fieldSteps_));
     c.setText("inputDigests", settings_.inputDigests);
+    if (!runId_.empty()) c.setText("runId", runId_);
     // The lengths the outputs have now (flushed)
     forceFile_.flush();
     peakFile_.flush();

@@ -1,4 +1,6 @@
 #include "StaticSolver.H"
+
+#include <cstdio>
 #include "SolidError.H"
 
 #ifdef SOLID_HAVE_UMFPACK
@@ -451,13 +453,20 @@ solid::StepReport solid::StaticSolver::step(double dt)
             m.u = u0;
             if (++cuts > set_.maxCuts)
             {
+                // %g: a step of 1e-9 s printed as 0.000000 s
+                char times[96];
+                std::snprintf
+                (
+                    times, sizeof(times), "t = %.9g s", m.time
+                );
+                char last[64];
+                std::snprintf(last, sizeof(last), "%.3g s", h);
                 throw SolidError
                 (
                     SolidError::Kind::notConverged,
-                    "static step from t = " + std::to_string(m.time)
-                  + " s failed after " + std::to_string(set_.maxCuts)
-                  + " step cuts (last dt = " + std::to_string(h)
-                  + " s): " + reason
+                    std::string("static step from ") + times
+                  + " failed after " + std::to_string(set_.maxCuts)
+                  + " step cuts (last dt = " + last + "): " + reason
                 );
             }
             if (set_.log)

@@ -162,6 +162,12 @@ int solid::truncateSteps(const std::string& h5, int n)
         }
     }
     if (remove.empty()) return 0;
+    {
+        // Damage anywhere in the file stops the edit: the copy would carry
+        // it on under a new time stamp
+        const Hdf5File f(h5, Hdf5File::Mode::readOnly);
+        f.verify();
+    }
 
     // Edited in a copy that replaces the file (AtomicFile.H): a run killed
     // during the edit leaves the file as it was

@@ -39,6 +39,43 @@ herr_t collectAttribute(hid_t, const char* name, const H5A_info_t*, void* out)
     return 0;
 }
 
+//- Read every attribute of an open object (verifying its checksum);
+//  false if one cannot be read
+bool readAttributes(hid_t obj)
+{
+    std::vector<std::string> names;
+    hsize_t idx = 0;
+    if
+    (
+        H5Aiterate2
+        (
+            obj, H5_INDEX_NAME, H5_ITER_INC, &idx, collectAttribute, &names
+        ) < 0
+    )
+    {
+        return false;
+    }
+    for (const std::string& name : names)
+    {
+        const hid_t a = H5Aopen(obj, name.c_str(), H5P_DEFAULT);
+        const hid_t type = a < 0 ? -1 : H5Aget_type(a);
+        const hid_t space = a < 0 ? -1 : H5Aget_space(a);
+        const hssize_t n = space < 0 ? -1 : H5Sget_simple_extent_npoints(space);
+        const std::size_t size = type < 0 ? 0 : H5Tget_size(type);
+        bool ok = n >= 0 && size > 0 && H5Tis_variable_str(type) == 0;
+        if (ok)
+        {
+            std::vector<char> buffer(std::size_t(n)*size + 1);
+            ok = H5Aread(a, type, buffer.data()) >= 0;
+        }
+        if (space >= 0) H5Sclose(space);
+        if (type >= 0) H5Tclose(type);
+        if (a >= 0) H5Aclose(a);
+        if (!ok) return false;
+    }
+    return true;
+}
+
 } // namespace
 
 
@@ -341,4 +378,44 @@ solid::Hdf5Group::texts() const
         if (isText) result.emplace_back(name, text);
     }
     return result;
+}
+
+
+void solid::Hdf5Group::verify() const
+{
+    check
+    (
+        readAttributes(id_),
+        "read the attributes of " + path_
+      + " (a checksum does not match: the file is damaged)"
+    );
+    for (const std::string& name : members())
+    {
+        const hid_t obj = H5Oopen(id_, name.c_str(), H5P_DEFAULT);
+        const H5I_type_t type = obj < 0 ? H5I_BADID : H5Iget_type(obj);
+        if (obj >= 0) H5Oclose(obj);
+        check
+        (
+            type == H5I_GROUP || type == H5I_DATASET,
+            "open " + where(name)
+          + " (its header's checksum does not match: the file is damaged)"
+        );
+        if (type == H5I_GROUP)
+        {
+            Hdf5Group(*this, name, false).verify();
+        }
+        else
+        {
+            const hid_t d = H5Dopen2(id_, name.c_str(), H5P_DEFAULT);
+            const bool ok = d >= 0 && readAttributes(d);
+            if (d >= 0) H5Dclose(d);
+            check
+            (
+                ok,
+                "read the attributes of dataset " + where(name)
+              + " (a checksum does not match: the file is damaged)"
+            );
+            read(name);
+        }
+    }
 }

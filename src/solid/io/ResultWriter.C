@@ -5,7 +5,9 @@
 #include "SolidError.H"
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
+#include <random>
 
 namespace
 {
@@ -26,13 +28,16 @@ solid::ResultWriter::ResultWriter
 (
     const std::string& base,
     const Model& model,
-    bool append
+    bool append,
+    const std::string& runId
 )
 :
-    base_(base)
+    base_(base),
+    runId_(runId)
 {
     if (append)
     {
+        checkContinued(h5File(), runId_);
         // The .xmf is derived from the .h5: a run killed between the two
         // renames of write() left it one step behind
         steps_ = steps(h5File());
@@ -54,6 +59,7 @@ solid::ResultWriter::ResultWriter
             mesh.write("region", m.region.data(), m.nElements());
             Hdf5Group s(f, "steps", true);
         }
+        if (!runId_.empty()) f.writeText("runId", runId_);
         f.close();
     }
     commitFile(tmp, h5File());
@@ -188,6 +194,49 @@ void solid::ResultWriter::writeXdmf(const Model& model) const
         );
     }
     commitFile(tmp, xdmfFile());
+}
+
+
+std::string solid::ResultWriter::newRunId()
+{
+    std::random_device device;
+    std::string id;
+    for (int i = 0; i < 4; ++i)
+    {
+        char word[9];
+        std::snprintf(word, sizeof(word), "%08x", unsigned(device()));
+        id += word;
+    }
+    return id;
+}
+
+
+void solid::ResultWriter::checkContinued
+(
+    const std::string& h5,
+    const std::string& runId
+)
+{
+    const Hdf5File f(h5, Hdf5File::Mode::readOnly);
+    f.verify();
+    if (runId.empty()) return;
+    std::string found;
+    for (const auto& t : f.texts())
+    {
+        if (t.first == "runId") found = t.second;
+    }
+    if (found != runId)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::io, "'" + h5 + "' belongs to another run: "
+          + (found.empty() ? std::string("it carries no run id")
+             : "its run id is " + found)
+          + ", the restart state's " + runId + " (a file copied from "
+            "another case or run, or replaced since): a restart continues "
+            "only the files of its own run"
+        );
+    }
 }
 
 
