@@ -243,6 +243,26 @@ class ColumnRefusesBeforeRunning(TempDirTestCase):
         with self.assertRaisesRegex(pw.PlaneWaveError, "above the limit"):
             pw.column(case, [50e-6], 100e-6, 1e-7, dz=50e-9, maxCells=1000)
 
+    def testTooManySteps(self):
+        """the steps bounded like the cells (issue 19: planeWave -endTime 1
+        ran about 1e11 steps without output): endTime/(maxCo dz/C0)"""
+        case = self.tmp
+        self.write("constant/thermophysicalProperties",
+                   "FoamFile { version 2.0; format ascii; class dictionary;"
+                   " object thermophysicalProperties; }\n"
+                   "equationOfState mieGruneisen;\nmieGruneisenCoeffs { rho0"
+                   " 1000; C0 1450; s 1.99; Gamma0 0.1; Cv 4184; T0 293.15;"
+                   " }\n")
+        self.assertAlmostEqual(pw.estimatedSteps(case, 1.0, 25e-9)/1.16e11,
+                               1, places=3)
+        with self.assertRaisesRegex(pw.PlaneWaveError,
+                                    r"takes about 1.16e\+11 time steps .*"
+                                    r"c = 1450 m/s.*above the limit of 1e\+06"):
+            pw.column(case, [50e-6], 100e-6, 1.0, dz=25e-9)
+        with self.assertRaisesRegex(pw.PlaneWaveError, r"limit of 1e\+03"):
+            pw.column(case, [50e-6], 100e-6, 1e-7, dz=25e-9, maxSteps=1000)
+        self.assertEqual(os.listdir(case), ["constant"])
+
 
 def read(path):
     with open(path) as f:
