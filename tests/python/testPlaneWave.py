@@ -382,6 +382,28 @@ class InflowFile(TempDirTestCase):
                                         "bad: .*" + msg):
                 pw.readInflow(self.tmp + "/bad")
 
+    def testKeepsADifferingFile(self):
+        """an earlier file whose entries differ is kept unless overwrite
+        (issue 19: an edited wave replaced without a word); one differing
+        in its comments only is replaced"""
+        path = self.tmp + "/inflowWave"
+        pw.writeInflow(path, wave(), 3e-5, TABLE, "first")
+        pw.writeInflow(path, wave(), 3e-5, TABLE, "second, same wave")
+        self.assertIn("// second, same wave", read(path))
+        with open(path, "a") as f:
+            f.write("my edited wave\n")
+        edited = read(path)
+        with self.assertRaisesRegex(pw.PlaneWaveError,
+                                    "inflowWave exists and differs from the "
+                                    "wave computed now .*-overwrite"):
+            pw.writeInflow(path, wave(), 3e-5, TABLE, "third")
+        self.assertEqual(read(path), edited)
+        with self.assertRaisesRegex(pw.PlaneWaveError, "differs"):
+            pw.writeInflow(path, wave(), 2e-5, TABLE, "another height")
+        self.assertEqual(read(path), edited)
+        pw.writeInflow(path, wave(), 2e-5, TABLE, "asked", overwrite=True)
+        self.assertEqual(pw.readInflow(path)["height"], 2e-5)
+
     def testNeedsVelocities(self):
         w = wave()
         w.u = None
@@ -543,7 +565,7 @@ class PlaneWaveInflowUtility(TempDirTestCase):
                               ({"adjustTimeStep": "no", "deltaT": "1e-11"},
                                1e-9 + 1e-11)):
             self.setControl(entries)
-            r = self.run_("-inflow", "2e-6", "-dz", "50e-9")
+            r = self.run_("-inflow", "2e-6", "-dz", "50e-9", "-overwrite")
             self.assertEqual(r.returncode, 0, r.stderr)
             path = self.tmp + "/case/constant/inflowWave"
             t = pw.readInflow(path)["t"]

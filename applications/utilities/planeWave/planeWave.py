@@ -51,7 +51,7 @@ Usage
               [-probes solid,fluid] [-check] [-except m1,m2]
               [-reference file]
     planeWave -inflow HEIGHT [-case dir] [-Z Z] [-dz 25e-9] [-endTime t]
-              [-maxSteps 1e6]
+              [-overwrite] [-maxSteps 1e6]
 
     -Z          the physical water column's height [m]: the pulse is
                 applied at its top face (default 100e-6; for a case whose
@@ -69,7 +69,11 @@ Usage
                 (0.5 dz / c), c the water's sound speed at rest; more is
                 refused (issue 19: -endTime 1 ran without end)
     -inflow     the height [m] of the scene's top above the substrate,
-                0 < HEIGHT < Z: write constant/inflowWave for it
+                0 < HEIGHT < Z: write constant/inflowWave for it. An
+                earlier file whose entries differ from the new ones is
+                kept and the run refused (results may have been computed
+                with it), unless -overwrite; one differing in its comments
+                only is replaced
     -except     measures not checked, [solid:|fluid:]<measure> (all
                 probes, or the solid's or the water's only); measures:
                 arrival, peak1ns, peakIncident, plateau, impulse,
@@ -105,6 +109,7 @@ def main():
     p.add_argument("-endTime", type=float, default=None)
     p.add_argument("-maxCells", type=int, default=100000)
     p.add_argument("-maxSteps", type=float, default=1e6)
+    p.add_argument("-overwrite", action="store_true")
     p.add_argument("-probes", default="solid,fluid")
     p.add_argument("-check", action="store_true")
     p.add_argument("-except", dest="skip", default="")
@@ -129,6 +134,9 @@ def main():
     if a.endTime is not None and not (a.endTime > 0
                                       and math.isfinite(a.endTime)):
         p.error("-endTime %g s: must be positive and finite" % a.endTime)
+    if a.overwrite and a.inflow is None:
+        p.error("-overwrite is an option of -inflow (it replaces a "
+                "differing constant/inflowWave)")
     if a.inflow is not None and (a.check or a.skip or a.reference):
         p.error("-inflow writes constant/inflowWave only: no -check, "
                 "-except or -reference with it")
@@ -279,7 +287,7 @@ def inflow(case, a, table):
                             maxCells=a.maxCells, maxSteps=a.maxSteps)
     out = os.path.join(case, planeWave.INFLOW_FILE)
     planeWave.writeInflow(
-        out, wave, a.inflow, table,
+        out, wave, a.inflow, table, overwrite=a.overwrite, what=
         "Written by: planeWave %s (case %s)\nto %.17g s: the end time %g s "
         "and the longest step of the scene, %g s (%s), past which its last "
         "step cannot end" % (" ".join(sys.argv[1:]), case, end + step, end,

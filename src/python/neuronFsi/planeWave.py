@@ -541,7 +541,14 @@ data
 """
 
 
-def writeInflow(path, wave, height, pulse, what):
+def _dataLines(text):
+    """The lines of a file's text that are not comments (// ...) or blank:
+    what a reader of the file sees (comments record who wrote it)"""
+    return [line.rstrip() for line in text.split("\n")
+            if line.strip() and not line.lstrip().startswith("//")]
+
+
+def writeInflow(path, wave, height, pulse, what, overwrite=False):
     """Write constant/inflowWave: p and u of the PlaneWave at one of its
     heights [m], with the column's height, the pulse table [(t [s],
     p [Pa])] and the 1D cell size, 17 significant digits (what: comment
@@ -550,7 +557,11 @@ def writeInflow(path, wave, height, pulse, what):
     values, the state at rest: the pulse needs (Z - height)/C0 to come
     down, and a uniform state is kept exactly by the scheme. Written to a
     temporary file first: an earlier file is replaced only by a complete
-    one."""
+    one. An earlier file whose entries differ from the new ones (results
+    may have been computed with it, or it holds an edit) is replaced only
+    with overwrite; else a PlaneWaveError naming the first differing line,
+    nothing written (issue 19: replaced without a word). One that differs
+    in its comments only is replaced."""
     if wave.u is None:
         raise PlaneWaveError("the wave has no velocities: compute the "
                              "column")
@@ -565,6 +576,27 @@ def writeInflow(path, wave, height, pulse, what):
         " ".join("(%.17g %.17g)" % (a, b) for a, b in pulse), wave.dz)]
     text += ["    (%.17g %.17g %.17g)\n" % r for r in zip(t, p, u)]
     text.append(");\n")
+    if not overwrite and os.path.exists(path):
+        try:
+            with open(path) as f:
+                old = _dataLines(f.read())
+        except (OSError, UnicodeDecodeError) as err:
+            raise PlaneWaveError("%s exists and cannot be read (%s): "
+                                 "-overwrite replaces it" % (path, err))
+        new = _dataLines("".join(text))
+        if old != new:
+            k = next((i for i, (a, b) in enumerate(zip(old, new)) if a != b),
+                     min(len(old), len(new)))
+            raise PlaneWaveError(
+                "%s exists and differs from the wave computed now (line %d "
+                "of its entries: %s in the file, %s now; %d and %d lines): "
+                "results may have been computed with it, or it holds an "
+                "edit. Give -overwrite to replace it (or remove it); nothing "
+                "was written"
+                % (path, k + 1,
+                   repr(old[k][:80]) if k < len(old) else "the end",
+                   repr(new[k][:80]) if k < len(new) else "the end",
+                   len(old), len(new)))
     tmp = path + ".writing"
     with open(tmp, "w") as f:
         f.write("".join(text))
