@@ -72,8 +72,9 @@ void Foam::rhoEThermoModel<Law>::cFromRhoE
 {
     forAll(rho, i)
     {
+        // isfinite first: a comparison with a NaN traps under sigFpe
         const scalar c2 = law_.c2(rho[i], e[i]);
-        c[i] = c2 > 0 ? std::sqrt(c2) : 0;
+        c[i] = std::isfinite(c2) && c2 > 0 ? std::sqrt(c2) : 0;
     }
 }
 
@@ -128,6 +129,24 @@ Foam::label Foam::rhoEThermoModel<Law>::firstInvalid
         }
     }
     return -1;
+}
+
+
+template<class Law>
+bool Foam::rhoEThermoModel<Law>::valid(const scalar rho, const scalar e) const
+{
+    return law_.check(rho, e) == eos::Status::ok;
+}
+
+
+template<class Law>
+Foam::string Foam::rhoEThermoModel<Law>::reasonPT
+(
+    const scalar p,
+    const scalar T
+) const
+{
+    return eos::statusMessage(eos::checkPT(law_, p, T));
 }
 
 
