@@ -1,6 +1,7 @@
 #include "rhoEThermo.H"
 #include "fvMesh.H"
 #include "Time.H"
+#include "inputChecks.H"
 
 namespace Foam
 {
@@ -65,8 +66,9 @@ Foam::rhoEThermo::rhoEThermo(const fvMesh& mesh)
     pFile_(p_.objectPath()),
     TFile_(T_.objectPath())
 {
-    p_.dimensions().reset(dimPressure);
-    T_.dimensions().reset(dimTemperature);
+    // was: reset to these, whatever the files said (issue 19)
+    foamTools::checkDimensions(p_, dimPressure, "Pa");
+    foamTools::checkDimensions(T_, dimTemperature, "K");
 }
 
 
