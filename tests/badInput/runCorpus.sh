@@ -3,7 +3,7 @@
 # of a good case and runs a real application on it. Each row must
 #   - exit non-zero, without a signal or timeout (exit < 124),
 #   - print no crash trace (segmentation fault, sigFpe/sigSegv, abort,
-#     stack trace, uncaught exception, sanitizer report),
+#     stack trace, uncaught exception, Python traceback, sanitizer report),
 #   - name the file (regex column 'file') and the entry (column 'entry'),
 #   - leave every file that existed before the run unchanged (md5 of each
 #     file of the case, logs excepted: the good results stay good).
@@ -124,7 +124,7 @@ do
 done
 
 # --- the rows -------------------------------------------------------------
-crash='Segmentation|sigFpe|sigSegv|sigAbrt|Aborted|core dumped|printStack|terminate called|AddressSanitizer|runtime error:'
+crash='Segmentation|sigFpe|sigSegv|sigAbrt|Aborted|core dumped|printStack|terminate called|AddressSanitizer|runtime error:|Traceback \(most recent call last\)'
 failures=0
 n=0
 while IFS= read -r row

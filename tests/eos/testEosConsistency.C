@@ -12,6 +12,7 @@ Description
 #include "MieGruneisen.H"
 #include "StiffenedGas.H"
 #include <gtest/gtest.h>
+#include <cfenv>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -188,3 +189,38 @@ TYPED_TEST(eosConsistency, nonFiniteEnergyAndDensityAreReported)
     EXPECT_EQ(law.check(s.rho, NAN), eos::Status::nonFiniteEnergy);
     EXPECT_EQ(law.check(s.rho, INFINITY), eos::Status::nonFiniteEnergy);
 }
+
+
+// The checks run with OpenFOAM's floating-point traps on (FOAM_SIGFPE):
+// they must report a NaN, a zero temperature or a pressure outside the
+// law without raising one (issue 19: sigFpe inside IdealGas::check on
+// the NaN density of p <= 0, and in the sound speed of a tension beyond
+// Mie-Grueneisen's range). A trap kills this test with SIGFPE.
+TYPED_TEST(eosConsistency, checksNeverTrapAndNameTheReason)
+{
+    const auto law = lawCase<TypeParam>::law();
+    const auto s = lawCase<TypeParam>::states().front();
+    const double T = law.T(s.rho, s.e);
+    const double p = law.p(s.rho, s.e);
+    // volatile: values the compiler cannot fold (a folded comparison
+    // with a NaN raises nothing)
+    volatile double nan = NAN, zero = 0, minus5 = -5, tensionP = -1e12;
+    feclearexcept(FE_ALL_EXCEPT);
+    feenableexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW);
+    const eos::Status nanRho = law.check(nan, s.e);
+    const eos::Status zeroT = eos::checkPT(law, p, zero);
+    const eos::Status negT = eos::checkPT(law, p, minus5);
+    const eos::Status nanP = eos::checkPT(law, nan, T);
+    const eos::Status tension = eos::checkPT(law, tensionP, T);
+    const double rhoZeroT = law.rhoFromPT(p, zero);
+    const eos::Status ok = eos::checkPT(law, p, T);
+    fedisableexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW);
+    EXPECT_EQ(nanRho, eos::Status::nonPositiveDensity);
+    EXPECT_EQ(zeroT, eos::Status::nonPositiveTemperature);
+    EXPECT_EQ(negT, eos::Status::nonPositiveTemperature);
+    EXPECT_EQ(nanP, eos::Status::nonFinitePT);
+    EXPECT_EQ(tension, eos::Status::noDensityForPT);
+    EXPECT_TRUE(std::isnan(rhoZeroT));
+    EXPECT_EQ(ok, eos::Status::ok);
+}
+

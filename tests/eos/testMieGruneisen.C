@@ -133,3 +133,17 @@ TEST(mieGruneisen, parameterErrorsNameTheParameter)
     expectError(with(&P::T0, -1), "T0");
     expectError(with(&P::C0, NAN), "C0");
 }
+
+
+TEST(mieGruneisen, stateBelowZeroKelvinIsReported)
+{
+    // T = T0 + e/Cv: a state of positive c^2 at T <= 0 K was valid
+    // (issue 19: 0/T at -5 K ran to the end)
+    const eos::MieGruneisen law(water);
+    const double eCold = -1.01*water.Cv*water.T0;       // T = -0.01 T0
+    EXPECT_GT(law.c2(water.rho0, eCold), 0);
+    EXPECT_EQ(law.check(water.rho0, eCold),
+              eos::Status::nonPositiveTemperature);
+    EXPECT_EQ(law.check(water.rho0, -0.99*water.Cv*water.T0),
+              eos::Status::ok);
+}

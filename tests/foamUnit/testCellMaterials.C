@@ -148,7 +148,8 @@ TEST(cellMaterials, regionAfterTheSetReplacesItsEntries)
     const auto set = readMaterials
     (
         include("table")
-      + "\nnucleus { volumetric mieGruneisen; C0 1450; s 1.99; }"
+      + "\nnucleus { volumetric mieGruneisen; C0 1450; s 1.99;"
+        " Gamma0 0.1; Cv 4184; T0 293.15; }"
     );
     EXPECT_EQ(set.at("nucleus").volumetric, "mieGruneisen");
     EXPECT_EQ(set.at("nucleus").eos.C0, 1450);

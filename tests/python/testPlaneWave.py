@@ -264,6 +264,26 @@ class ColumnRefusesBeforeRunning(TempDirTestCase):
         with self.assertRaisesRegex(pw.PlaneWaveError, "above the limit"):
             pw.column(case, [50e-6], 100e-6, 1e-7, dz=50e-9, maxCells=1000)
 
+    def testTooManySteps(self):
+        """the steps bounded like the cells (issue 19: planeWave -endTime 1
+        ran about 1e11 steps without output): endTime/(maxCo dz/C0)"""
+        case = self.tmp
+        self.write("constant/thermophysicalProperties",
+                   "FoamFile { version 2.0; format ascii; class dictionary;"
+                   " object thermophysicalProperties; }\n"
+                   "equationOfState mieGruneisen;\nmieGruneisenCoeffs { rho0"
+                   " 1000; C0 1450; s 1.99; Gamma0 0.1; Cv 4184; T0 293.15;"
+                   " }\n")
+        self.assertAlmostEqual(pw.estimatedSteps(case, 1.0, 25e-9)/1.16e11,
+                               1, places=3)
+        with self.assertRaisesRegex(pw.PlaneWaveError,
+                                    r"takes about 1.16e\+11 time steps .*"
+                                    r"c = 1450 m/s.*above the limit of 1e\+06"):
+            pw.column(case, [50e-6], 100e-6, 1.0, dz=25e-9)
+        with self.assertRaisesRegex(pw.PlaneWaveError, r"limit of 1e\+03"):
+            pw.column(case, [50e-6], 100e-6, 1e-7, dz=25e-9, maxSteps=1000)
+        self.assertEqual(os.listdir(case), ["constant"])
+
 
 def read(path):
     with open(path) as f:
@@ -388,6 +408,28 @@ class InflowFile(TempDirTestCase):
             with self.assertRaisesRegex(pw.PlaneWaveError,
                                         "bad: .*" + msg):
                 pw.readInflow(self.tmp + "/bad")
+
+    def testKeepsADifferingFile(self):
+        """an earlier file whose entries differ is kept unless overwrite
+        (issue 19: an edited wave replaced without a word); one differing
+        in its comments only is replaced"""
+        path = self.tmp + "/inflowWave"
+        pw.writeInflow(path, wave(), 3e-5, TABLE, "first")
+        pw.writeInflow(path, wave(), 3e-5, TABLE, "second, same wave")
+        self.assertIn("// second, same wave", read(path))
+        with open(path, "a") as f:
+            f.write("my edited wave\n")
+        edited = read(path)
+        with self.assertRaisesRegex(pw.PlaneWaveError,
+                                    "inflowWave exists and differs from the "
+                                    "wave computed now .*-overwrite"):
+            pw.writeInflow(path, wave(), 3e-5, TABLE, "third")
+        self.assertEqual(read(path), edited)
+        with self.assertRaisesRegex(pw.PlaneWaveError, "differs"):
+            pw.writeInflow(path, wave(), 2e-5, TABLE, "another height")
+        self.assertEqual(read(path), edited)
+        pw.writeInflow(path, wave(), 2e-5, TABLE, "asked", overwrite=True)
+        self.assertEqual(pw.readInflow(path)["height"], 2e-5)
 
     def testNeedsVelocities(self):
         w = wave()
@@ -557,7 +599,7 @@ class PlaneWaveInflowUtility(TempDirTestCase):
                               ({"adjustTimeStep": "no", "deltaT": "1e-11"},
                                1e-9 + 1e-11)):
             self.setControl(entries)
-            r = self.run_("-inflow", "2e-6", "-dz", "50e-9")
+            r = self.run_("-inflow", "2e-6", "-dz", "50e-9", "-overwrite")
             self.assertEqual(r.returncode, 0, r.stderr)
             path = self.tmp + "/case/constant/inflowWave"
             t = pw.readInflow(path)["t"]

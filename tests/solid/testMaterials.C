@@ -589,6 +589,21 @@ TEST(SolidMaterial, ParameterEntriesAndValidation)
                        {"s", "-1"}}).find("s = "), std::string::npos);
     EXPECT_NE(errorOf({{"C10", "1"}, {"mu2", "1"}, {"tau2", "1"}})
               .find("without gaps"), std::string::npos);
+    // volumetric mieGruneisen needs all of its coefficients (issue 19:
+    // a missing one was water's default, silently)
+    const std::map<std::string, std::string> mg =
+        {{"C10", "1"}, {"volumetric", "mieGruneisen"}, {"C0", "1450"},
+         {"s", "1.99"}, {"Gamma0", "0.1"}, {"Cv", "4184"}, {"T0", "293.15"}};
+    EXPECT_EQ(errorOf(mg), "");
+    for (const char* key : {"C0", "s", "Gamma0", "Cv", "T0"})
+    {
+        auto e = mg;
+        e.erase(key);
+        EXPECT_NE(errorOf(e).find(std::string("missing: ") + key),
+                  std::string::npos) << key;
+    }
+    EXPECT_NE(errorOf({{"C10", "1"}, {"volumetric", "mieGruneisen"}})
+              .find("missing: C0 s Gamma0 Cv T0"), std::string::npos);
 
     // The former names say what replaced them
     EXPECT_NE(errorOf({{"c0", "1"}}).find("entry 'c0' is now 'C10'"),

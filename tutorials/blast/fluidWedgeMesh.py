@@ -28,12 +28,24 @@ usage: fluidWedgeMesh.py [-h size_m] [-far size_m] [-dz size_m]
   -Z      the column's height [m] (default 100e-6): at least one cell
           of -dz above the inner box around the cell (max(H, D/2) + 4 um,
           12.4 um for the average cell), so 12.65 um with -dz 0.25e-6
+  -R      the column's radius [m] (default 50e-6): at least one radial
+          cell of -far beside the inner box around the cell, so
+          -R >= 12.4 um + -far for the average cell
+  -D -H   the cell's diameter and height [m] (default 16.8e-6, 7.9e-6),
+          positive
+  -wedge  the wedge's angle [deg] (default 5), in (0, 180)
   -maxCells  largest cell count [1, 1e9] (default 1e6): the count is
           computed from the sizes before anything is written and a
           larger one refused (issue 19, class 6: -h 1e-9 hung)
+  -o      the file to write (default system/blockMeshDict), in an
+          existing directory
+Every option is checked before anything is written (issue 19: -wedge 0,
+-R inside the inner box and -o a directory were a zero-volume mesh, a
+blockMesh error naming no option and a traceback).
 """
 import argparse
 import math
+import os
 
 p = argparse.ArgumentParser(add_help=False)
 p.add_argument("-h", dest="h", type=float, default=0.5e-6)
@@ -53,9 +65,18 @@ a, H, R, Z, h = args.D/2, args.H, args.R, args.Z, args.h
 far = 2*h if args.far is None else args.far
 dz = far if args.dz is None else args.dz
 outer = far if args.outer is None else args.outer
-for name, v in (("-h", h), ("-far", far), ("-dz", dz), ("-outer", outer)):
-    if not v > 0:
-        p.error("%s %g m: must be positive" % (name, v))
+for name, v in (("-h", h), ("-far", far), ("-dz", dz), ("-outer", outer),
+                ("-D", args.D), ("-H", H)):
+    if not (v > 0 and math.isfinite(v)):
+        p.error("%s %g m: must be positive and finite" % (name, v))
+if not 0 < args.wedge < 180:
+    p.error("-wedge %g deg is outside the valid range (0, 180) deg"
+            % args.wedge)
+outDir = os.path.dirname(args.o) or "."
+if os.path.isdir(args.o) or not os.path.isdir(outDir):
+    p.error("-o %s: %s" % (args.o, "is a directory: give the file to write"
+            if os.path.isdir(args.o) else "no directory %s to write it in"
+            % outDir))
 if outer < far:
     p.error("-outer %g m: must be at least -far (%g m)" % (outer, far))
 if not 1 <= args.maxCells <= 1e9:
@@ -70,6 +91,13 @@ if not (math.isfinite(Z) and Z >= Zb + dz*(1 - 1e-9)):
             "above the inner box around the cell, whose top is at %g m "
             "(max(-H, -D/2) + 4 um): valid range -Z >= %g m"
             % (Z, dz, Zb, Zb + dz))
+# the ring beside the box: at least one radial cell of -far (was: -R
+# inside the box wrote an inside-out block that blockMesh refused)
+if not (math.isfinite(R) and R >= Rb + far*(1 - 1e-9)):
+    p.error("-R %g m: the water column must reach one radial cell (-far %g "
+            "m) beside the inner box around the cell, whose side is at %g m "
+            "(max(-H, -D/2) + 4 um): valid range -R >= %g m"
+            % (R, far, Rb, Rb + far))
 alpha = math.radians(args.wedge)/2
 phiP = math.radians(45.0)
 
@@ -264,7 +292,10 @@ out.append("""    axis
     }
 );
 """ % (face((3, 0), -1, 1), face((7, 3), -1, 1)))
-with open(args.o, "w") as f:
-    f.write("".join(out))
+try:
+    with open(args.o, "w") as f:
+        f.write("".join(out))
+except OSError as err:
+    p.error("-o %s: cannot write it: %s" % (args.o, err.strerror))
 print("blockMeshDict: %d cells (blocks %s)" % (
     sum(a*b for _, (a, b), _ in blocks), [a*b for _, (a, b), _ in blocks]))

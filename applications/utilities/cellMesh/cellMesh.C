@@ -50,6 +50,13 @@ int main(int argc, char *argv[])
     (
         args.getOrDefault<fileName>("dict", args.path()/"system/cellMeshDict")
     );
+    if (isDir(dictFile))
+    {
+        FatalErrorInFunction
+            << "option -dict " << dictFile << " is a directory: give the"
+            << " cellMeshDict file (default system/cellMeshDict)"
+            << exit(FatalError);
+    }
     const cellGeometry geom(dictFile);
     // Validated before anything is meshed
     std::unique_ptr<fluidBox> fluid;

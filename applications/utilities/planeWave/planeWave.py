@@ -51,6 +51,7 @@ Usage
               [-probes solid,fluid] [-check] [-except m1,m2]
               [-reference file]
     planeWave -inflow HEIGHT [-case dir] [-Z Z] [-dz 25e-9] [-endTime t]
+              [-overwrite] [-maxSteps 1e6]
 
     -Z          the physical water column's height [m]: the pulse is
                 applied at its top face (default 100e-6; for a case whose
@@ -63,8 +64,16 @@ Usage
                 computed one step of the scene beyond it, maxDeltaT or
                 deltaT of the controlDict: a run's last step may end past
                 its endTime)
+    -maxSteps   the most time steps the column may take [1, inf) (default
+                1e6): estimated before anything runs as endTime /
+                (0.5 dz / c), c the water's sound speed at rest; more is
+                refused (issue 19: -endTime 1 ran without end)
     -inflow     the height [m] of the scene's top above the substrate,
-                0 < HEIGHT < Z: write constant/inflowWave for it
+                0 < HEIGHT < Z: write constant/inflowWave for it. An
+                earlier file whose entries differ from the new ones is
+                kept and the run refused (results may have been computed
+                with it), unless -overwrite; one differing in its comments
+                only is replaced
     -except     measures not checked, [solid:|fluid:]<measure> (all
                 probes, or the solid's or the water's only); measures:
                 arrival, peak1ns, peakIncident, plateau, impulse,
@@ -99,6 +108,8 @@ def main():
     p.add_argument("-dz", type=float, default=25e-9)
     p.add_argument("-endTime", type=float, default=None)
     p.add_argument("-maxCells", type=int, default=100000)
+    p.add_argument("-maxSteps", type=float, default=1e6)
+    p.add_argument("-overwrite", action="store_true")
     p.add_argument("-probes", default="solid,fluid")
     p.add_argument("-check", action="store_true")
     p.add_argument("-except", dest="skip", default="")
@@ -117,9 +128,15 @@ def main():
     for name, v in (("-Z", a.Z), ("-dz", a.dz)):
         if v is not None and not (v > 0 and math.isfinite(v)):
             p.error("%s %g m: must be positive and finite" % (name, v))
+    if not 1 <= a.maxSteps < float("inf"):
+        p.error("-maxSteps %g is outside the valid range [1, inf)"
+                % a.maxSteps)
     if a.endTime is not None and not (a.endTime > 0
                                       and math.isfinite(a.endTime)):
         p.error("-endTime %g s: must be positive and finite" % a.endTime)
+    if a.overwrite and a.inflow is None:
+        p.error("-overwrite is an option of -inflow (it replaces a "
+                "differing constant/inflowWave)")
     if a.inflow is not None and (a.check or a.skip or a.reference):
         p.error("-inflow writes constant/inflowWave only: no -check, "
                 "-except or -reference with it")
@@ -163,7 +180,7 @@ def main():
         wave = planeWave.readReference(a.reference)
     else:
         wave = planeWave.column(case, heights, a.Z, end, dz=a.dz,
-                                maxCells=a.maxCells)
+                                maxCells=a.maxCells, maxSteps=a.maxSteps)
         planeWave.writeReference(
             os.path.join(out, "reference.dat"), wave,
             "1D plane wave of %s: column %g m, cells %g m, pulse %g Pa for "
@@ -267,10 +284,10 @@ def inflow(case, a, table):
                   "long beyond the end time)")
             if d.get("adjustTimeStep") is True else _time(path, d, "deltaT"))
     wave = planeWave.column(case, [a.inflow], a.Z, end + step, dz=a.dz,
-                            maxCells=a.maxCells)
+                            maxCells=a.maxCells, maxSteps=a.maxSteps)
     out = os.path.join(case, planeWave.INFLOW_FILE)
     planeWave.writeInflow(
-        out, wave, a.inflow, table,
+        out, wave, a.inflow, table, overwrite=a.overwrite, what=
         "Written by: planeWave %s (case %s)\nto %.17g s: the end time %g s "
         "and the longest step of the scene, %g s (%s), past which its last "
         "step cannot end" % (" ".join(sys.argv[1:]), case, end + step, end,

@@ -93,7 +93,14 @@ class Output:
         self.name, rest = spec.split("=", 1)
         m = re.match(r"^([^:]+):/(.*)/$", rest)
         if m:
-            self.file, self.regex = m.group(1), re.compile(m.group(2))
+            self.file = m.group(1)
+            try:
+                self.regex = re.compile(m.group(2))
+            except re.error as err:
+                # was: a traceback (issue 19)
+                raise SweepError("-output '%s': the regex /%s/ is not a "
+                                 "regular expression: %s"
+                                 % (spec, m.group(2), err))
             if self.regex.groups < 1:
                 raise SweepError("-output '%s': the regex needs a group "
                                  "(...)" % spec)

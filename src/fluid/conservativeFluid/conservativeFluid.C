@@ -2,6 +2,7 @@
 #include "fvc.H"
 #include "wedgePolyPatch.H"
 #include "keywordCheck.H"
+#include "inputChecks.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -24,6 +25,14 @@ const Foam::dictionary& checkedRiemannDict(const Foam::fvMesh& mesh)
     }
     foamTools::checkKeywords(dict, valid);
     return dict;
+}
+
+//- U as read, its dimensions checked before any expression uses it (was:
+//  OpenFOAM's "different dimensions" error in rhoE's, naming no file)
+const Foam::volVectorField& checkedVelocity(const Foam::volVectorField& U)
+{
+    Foam::foamTools::checkDimensions(U, Foam::dimVelocity, "m/s");
+    return U;
 }
 
 } // End anonymous namespace
@@ -57,7 +66,7 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
             IOobject::READ_IF_PRESENT,
             IOobject::AUTO_WRITE
         ),
-        thermo_->rho()*U_
+        thermo_->rho()*checkedVelocity(U_)
     ),
     rhoE_
     (

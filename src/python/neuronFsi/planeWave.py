@@ -329,8 +329,58 @@ def uniaxialResponse(t, rho, rho0, mu0, branches=()):
     return np.log(lam), np.abs(total)
 
 
+def soundSpeedAtRest(case):
+    """The sound speed [m/s] of <case>'s water at rest, from
+    constant/thermophysicalProperties: C0 for mieGruneisen (p = 0 at rho0),
+    sqrt(gamma (gamma - 1) Cv T) for idealGas and stiffenedGas with T the
+    uniform internalField of 0/T."""
+    path = os.path.join(case, "constant", "thermophysicalProperties")
+    try:
+        d = foamDict.read(path)
+    except (OSError, foamDict.DictError) as err:
+        raise PlaneWaveError("%s: %s" % (path, err))
+    law = d.get("equationOfState")
+    coeffs = d.get("%sCoeffs" % law)
+
+    def number(key, where, value):
+        v = value[-1] if isinstance(value, list) and value else value
+        if isinstance(v, bool) or not isinstance(v, (int, float)) \
+                or not (math.isfinite(v) and v > 0):
+            raise PlaneWaveError("%s: entry '%s' = %s: must be positive and "
+                                 "finite" % (where, key, value))
+        return float(v)
+
+    if not isinstance(coeffs, dict):
+        raise PlaneWaveError("%s: no %sCoeffs (equationOfState %s)"
+                             % (path, law, law))
+    if law == "mieGruneisen":
+        return number("C0", path, coeffs.get("C0"))
+    if law in ("idealGas", "stiffenedGas"):
+        Tpath = _fieldFile(case, "T")
+        text = _foamDictionary(Tpath, "internalField", True).split()
+        if len(text) != 2 or text[0] != "uniform":
+            raise PlaneWaveError("%s: the internalField must be uniform "
+                                 "(the column's sound speed at rest)" % Tpath)
+        try:
+            T = float(text[1])
+        except ValueError:
+            T = text[1]
+        g = number("gamma", path, coeffs.get("gamma"))
+        return math.sqrt(g*(g - 1)*number("Cv", path, coeffs.get("Cv"))
+                         * number("internalField", Tpath, T))
+    raise PlaneWaveError("%s: equationOfState %s: not mieGruneisen, "
+                         "stiffenedGas or idealGas" % (path, law))
+
+
+def estimatedSteps(case, endTime, dz, maxCo=0.5):
+    """The time steps of the column of <case> to endTime [s] in cells of dz
+    [m]: endTime/(maxCo dz/c), c the sound speed at rest (a lower bound: a
+    pulse's state is faster)."""
+    return endTime/(maxCo*dz/soundSpeedAtRest(case))
+
+
 def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
-           maxCells=100000, scene=False):
+           maxCells=100000, scene=False, maxSteps=1e6):
     """Run the 1D column of <case> (water column of height Z [m]; the
     patches top and bottom) to endTime [s] with cells of dz [m], probes at
     heights [m]; returns a PlaneWave (p, rho and u at each height). The
@@ -341,9 +391,10 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
     case has it (with its constant/inflowWave): the 1D version of the
     scene's own shortened column, Z its inflow height (the boundary
     condition checks it against the file). work: the folder of the run (kept), else a
-    temporary one. A column of more than maxCells cells is refused before
-    anything is written (its cost grows as the square of the cell count:
-    cells times steps)."""
+    temporary one. A column of more than maxCells cells, or of more than
+    maxSteps time steps (estimatedSteps), is refused before anything is
+    written (its cost is cells times steps; issue 19: -endTime 1 ran for
+    about 6e10 steps, no output)."""
     if not (math.isfinite(Z) and Z > 0 and math.isfinite(dz) and dz > 0):
         raise PlaneWaveError("column height %g m and cell size %g m must "
                              "be positive and finite" % (Z, dz))
@@ -355,6 +406,14 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
             "a column of %g m in cells of %g m has %.3g cells, above the "
             "limit of %d (-maxCells raises it; the run's cost grows as the "
             "square of the cell count)" % (Z, dz, Z/dz, maxCells))
+    steps = estimatedSteps(case, endTime, dz, maxCo)
+    if not steps <= maxSteps:
+        raise PlaneWaveError(
+            "a column to %g s in cells of %g m takes about %.3g time steps "
+            "(end time / (maxCo %g x dz / c), c = %g m/s the sound speed at "
+            "rest), above the limit of %.3g (-maxSteps raises it; a shorter "
+            "-endTime or a coarser -dz takes fewer)"
+            % (endTime, dz, steps, maxCo, soundSpeedAtRest(case), maxSteps))
     n = int(round(Z/dz))
     if n < 1 or abs(n*dz - Z) > 1e-9*Z:
         raise PlaneWaveError("dz %g m does not divide the column height "
@@ -499,7 +558,14 @@ data
 """
 
 
-def writeInflow(path, wave, height, pulse, what):
+def _dataLines(text):
+    """The lines of a file's text that are not comments (// ...) or blank:
+    what a reader of the file sees (comments record who wrote it)"""
+    return [line.rstrip() for line in text.split("\n")
+            if line.strip() and not line.lstrip().startswith("//")]
+
+
+def writeInflow(path, wave, height, pulse, what, overwrite=False):
     """Write constant/inflowWave: p and u of the PlaneWave at one of its
     heights [m], with the column's height, the pulse table [(t [s],
     p [Pa])] and the 1D cell size, 17 significant digits (what: comment
@@ -508,7 +574,11 @@ def writeInflow(path, wave, height, pulse, what):
     values, the state at rest: the pulse needs (Z - height)/C0 to come
     down, and a uniform state is kept exactly by the scheme. Written to a
     temporary file first: an earlier file is replaced only by a complete
-    one."""
+    one. An earlier file whose entries differ from the new ones (results
+    may have been computed with it, or it holds an edit) is replaced only
+    with overwrite; else a PlaneWaveError naming the first differing line,
+    nothing written (issue 19: replaced without a word). One that differs
+    in its comments only is replaced."""
     if wave.u is None:
         raise PlaneWaveError("the wave has no velocities: compute the "
                              "column")
@@ -525,6 +595,27 @@ def writeInflow(path, wave, height, pulse, what):
         inflowDigest(rows))]
     text += ["    (%.17g %.17g %.17g)\n" % r for r in rows]
     text.append(");\n")
+    if not overwrite and os.path.exists(path):
+        try:
+            with open(path) as f:
+                old = _dataLines(f.read())
+        except (OSError, UnicodeDecodeError) as err:
+            raise PlaneWaveError("%s exists and cannot be read (%s): "
+                                 "-overwrite replaces it" % (path, err))
+        new = _dataLines("".join(text))
+        if old != new:
+            k = next((i for i, (a, b) in enumerate(zip(old, new)) if a != b),
+                     min(len(old), len(new)))
+            raise PlaneWaveError(
+                "%s exists and differs from the wave computed now (line %d "
+                "of its entries: %s in the file, %s now; %d and %d lines): "
+                "results may have been computed with it, or it holds an "
+                "edit. Give -overwrite to replace it (or remove it); nothing "
+                "was written"
+                % (path, k + 1,
+                   repr(old[k][:80]) if k < len(old) else "the end",
+                   repr(new[k][:80]) if k < len(new) else "the end",
+                   len(old), len(new)))
     tmp = path + ".writing"
     with open(tmp, "w") as f:
         f.write("".join(text))

@@ -163,6 +163,29 @@ solid::MaterialParameters solid::MaterialParameters::fromEntries
     }
     // Validate now so that errors point at the dictionary
     Material::create(par);
+    // The law's coefficients are required, as the fluid's thermo requires
+    // them (issue 19: a missing one was water's default, silently)
+    if (par.volumetric == "mieGruneisen")
+    {
+        std::string missing;
+        for (const char* key : {"C0", "s", "Gamma0", "Cv", "T0"})
+        {
+            if (!entries.has(key))
+            {
+                missing += std::string(missing.empty() ? "" : " ") + key;
+            }
+        }
+        if (!missing.empty())
+        {
+            throw SolidError
+            (
+                SolidError::Kind::parameter,
+                ctx + ": volumetric mieGruneisen needs every coefficient of "
+                "the law (C0 [m/s] s [-] Gamma0 [-] Cv [J/(kg K)] T0 [K]); "
+                "missing: " + missing
+            );
+        }
+    }
     return par;
 }
 

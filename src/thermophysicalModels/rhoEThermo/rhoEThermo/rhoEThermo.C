@@ -1,6 +1,7 @@
 #include "rhoEThermo.H"
 #include "fvMesh.H"
 #include "Time.H"
+#include "inputChecks.H"
 
 namespace Foam
 {
@@ -61,10 +62,13 @@ Foam::rhoEThermo::rhoEThermo(const fvMesh& mesh)
         fieldIO("c", mesh, IOobject::NO_READ, IOobject::NO_WRITE),
         mesh,
         dimensionedScalar(dimVelocity, Zero)
-    )
+    ),
+    pFile_(p_.objectPath()),
+    TFile_(T_.objectPath())
 {
-    p_.dimensions().reset(dimPressure);
-    T_.dimensions().reset(dimTemperature);
+    // was: reset to these, whatever the files said (issue 19)
+    foamTools::checkDimensions(p_, dimPressure, "Pa");
+    foamTools::checkDimensions(T_, dimTemperature, "K");
 }
 
 
@@ -80,6 +84,59 @@ void Foam::rhoEThermo::correctBoundaryStates()
 
         rhoEFromPT(pp, Tp, rhop, ep);
         cFromRhoE(rhop, ep, cp);
+
+        if (p_.boundaryField()[patchi].coupled())
+        {
+            continue;
+        }
+        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+        forAll(rhop, facei)
+        {
+            if (valid(rhop[facei], ep[facei]))
+            {
+                continue;
+            }
+            const label celli = faceCells[facei];
+            if (!valid(rho_[celli], e_[celli]))
+            {
+                continue;   // the cell's state: checkStates reports it
+            }
+            FatalErrorInFunction
+                << "Invalid thermodynamic state (" << lawName()
+                << ") on patch '" << mesh_.boundary()[patchi].name()
+                << "' (p: " << p_.boundaryField()[patchi].type()
+                << ", T: " << T_.boundaryField()[patchi].type()
+                << "), face " << facei << " at "
+                << mesh_.boundary()[patchi].Cf()[facei] << " m, time "
+                << mesh_.time().timeName() << " s: p = " << pp[facei]
+                << " Pa, T = " << Tp[facei] << " K: " << reasonPT(pp[facei], Tp[facei]).c_str() << nl
+                << "    The boundary values come from the conditions of p"
+                << " and T (files " << pFile_ << " and " << TFile_
+                << ", boundaryField/" << mesh_.boundary()[patchi].name()
+                << ")." << exit(FatalError);
+        }
+    }
+}
+
+
+void Foam::rhoEThermo::checkInternalPT() const
+{
+    const scalarField& p = p_.primitiveField();
+    const scalarField& T = T_.primitiveField();
+    forAll(p, celli)
+    {
+        if (!valid(rho_[celli], e_[celli]))
+        {
+            FatalErrorInFunction
+                << "Invalid thermodynamic state (" << lawName()
+                << ") in cell " << celli << " at " << mesh_.C()[celli]
+                << " m, time " << mesh_.time().timeName() << " s: p = "
+                << p[celli] << " Pa, T = " << T[celli]
+                << " K: " << reasonPT(p[celli], T[celli]).c_str() << nl
+                << "    The state comes from the fields p and T (files "
+                << pFile_ << " and " << TFile_ << ", internalField)."
+                << exit(FatalError);
+        }
     }
 }
 
@@ -104,6 +161,7 @@ void Foam::rhoEThermo::correctFromPT()
         rho_.primitiveFieldRef(),
         e_.primitiveFieldRef()
     );
+    checkInternalPT();
     cFromRhoE(rho_.primitiveField(), e_.primitiveField(), c_.primitiveFieldRef());
     correctBoundaryStates();
 }
