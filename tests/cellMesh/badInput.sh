@@ -167,6 +167,19 @@ expect hexEntryOutsideCoeffs "$hx axialSize 2e-6;/" \
     "entry 'axialSize' belongs in the sub-dictionary hexCoeffs"
 expect hexWithColumn "$hx hexCoeffs { axialSize 2e-6; } columnSize 1e-6; columnRadius 12e-6;/" \
     "columnSize belongs to type tetrahedra"
+# The water's top (height, 3D only): above the inner box of the hexahedral
+# water by more than one axialSize (7.9 + 3.95 + 2 um), above the cell by
+# more than farSize with the tetrahedra (7.9 + 20 um), at most boxSize
+expect hexHeightBelowInnerBox "$hx hexCoeffs { axialSize 2e-6; } height 13e-6;/" \
+    "entry 'height' = 1.3e-05 m is outside the valid range \(1.385e-05, 0.0001\] m: above the top of the inner box \(cellHeight \+ innerMargin\) plus one axialSize"
+expect hexHeightAboveBox "$hx hexCoeffs { axialSize 2e-6; } height 2e-4;/" \
+    "entry 'height' = 0.0002 m is outside the valid range \(1.385e-05, 0.0001\] m: .* at most boxSize"
+expect hexHeightWord "$hx hexCoeffs { axialSize 2e-6; } height tall;/" \
+    "entry 'height' = 'tall' is not a number \[m\]"
+expect tetHeightBelowCell "$q3; s/^growthDistance .*/growthDistance 30e-6; height 20e-6;/" \
+    "entry 'height' = 2e-05 m is outside the valid range \(2.79e-05, 0.0001\] m: above the cell's top \(cellHeight\) plus one farSize"
+expect heightAxisymmetric 's/^growthDistance .*/growthDistance 30e-6; height 20e-6;/' \
+    "entry 'height' is available in the 3D modes \(quarter3D, full3D\) only"
 
 echo "badInput: $((n - failures)) passed, $failures failed"
 [ $failures -eq 0 ]

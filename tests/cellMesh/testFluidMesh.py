@@ -53,8 +53,14 @@ and assert, with the independent reader:
     from the equator to the top edge);
   - gmshToFoam, checkMesh "Mesh OK." with non-orthogonality below 60 deg
     (its max, skewness and aspect ratio are printed).
+The modes quarter3DShort and quarter3DHexShort are the tetrahedral and
+the hexahedral quarter with the water ending at fluid height = 20 um (a
+column shortened for an inflow top): the checks above with that top (the
+top patch and the highest node at z = 20 um, the volume the box of that
+height minus the cell; hexahedra: the sides span z in [0, 20 um], the z
+layers those of the inner box plus ceil((20 um - B)/axialSize) above it).
 Usage: testFluidMesh.py axisymmetric|quarter3D|full3D|quarter3DColumn|
-       quarter3DHex|full3DHex"""
+       quarter3DHex|full3DHex|quarter3DShort|quarter3DHexShort"""
 import os
 import re
 import subprocess
@@ -70,6 +76,7 @@ root = os.path.abspath(os.path.join(os.path.dirname(__file__), "../.."))
 D, H, t = 16.8e-6, 7.9e-6, 200e-9
 a = D/2
 L, near, far, growth, wedgeDeg = 100e-6, 1e-6, 10e-6, 30e-6, 5.0
+SHORT = 20e-6   # [m] the water's top of the shortened quarters (height)
 check = Checks()
 
 
@@ -215,15 +222,18 @@ def hexVolumes(P):
 
 
 def hexWater(mode):
-    """The hexahedral water (fluid type hex)"""
-    quarter = mode == "quarter3DHex"
+    """The hexahedral water (fluid type hex); quarter3DHexShort: the
+    quarter with its water ending at height Z = 20 um"""
+    quarter = mode in ("quarter3DHex", "quarter3DHexShort")
+    Z = SHORT if mode == "quarter3DHexShort" else L
     dz, dl, margin = 2e-6, 1.5e-6, 3e-6
     patches = ["top", "bottom", "sides", "cellInterface"] \
         + (["symmetryX", "symmetryY"] if quarter else [])
     with tempfile.TemporaryDirectory() as case:
         writeCase(case, "quarter3D" if quarter else "full3D",
                   f"type hex; hexCoeffs {{ axialSize {dz}; lateralSize {dl};"
-                  f" innerMargin {margin}; }}")
+                  f" innerMargin {margin}; }}"
+                  + (f" height {Z};" if Z < L else ""))
         X, elems = read2(os.path.join(case, "constant/fluid.msh"))
         check({e[1] for e in elems} == set(patches + ["water"]),
               f"{mode}: groups {sorted({e[1] for e in elems})}")
@@ -238,6 +248,10 @@ def hexWater(mode):
         hexes = np.array([[row[n] for n in e[2]] for e in elems
                           if e[1] == "water"])
         eps = 1e-9*L
+
+        def nodesOf(name):
+            return np.array(sorted({row[n] for e in elems if e[1] == name
+                                    for n in e[2]}))
 
         # Structure: grid lines and the count
         A, B = a + margin, H + margin
@@ -269,6 +283,23 @@ def hexWater(mode):
               f"{mode}: {len(hexes)} hexahedra, {count} from the grid lines"
               f" ({nx} x {nx} x {nz}, inner {nA} x {nA} x {nB}, {nLayers}"
               " O-grid layers)")
+        # The water's top: z = Z, the column above the inner box in
+        # layers of at most axialSize; top and sides span the box's
+        # width, the sides z in [0, Z]
+        nAbove = int(np.ceil((Z - B)/dz*(1 - 1e-12)))
+        zTop = Y[list(top), 2]
+        sides = nodesOf("sides")
+        check(abs(zTop - Z).max() < eps and abs(zs[-1] - Z) < eps
+              and abs(Y[:, 2].max() - Z) < eps
+              and nz == nB + nAbove
+              and abs(Y[sides, 2].min()) < eps
+              and abs(Y[sides, 2].max() - Z) < eps
+              and abs(np.ptp(Y[list(top), 0]) - (L/2 if quarter else L))
+              < eps,
+              f"{mode}: top patch at z = {zTop.min()*1e6:.6g} to"
+              f" {zTop.max()*1e6:.6g} um (Z = {Z*1e6:g} um), sides z"
+              f" {Y[sides, 2].min()*1e6:.3g} to {Y[sides, 2].max()*1e6:.6g}"
+              f" um, {nz} z layers = {nB} in the inner box + {nAbove} above")
 
         # Conformity: faces of one and of two hexahedra
         hexFaces = [(0, 3, 2, 1), (4, 5, 6, 7), (0, 1, 5, 4), (1, 2, 6, 5),
@@ -288,16 +319,13 @@ def hexWater(mode):
         J, V = hexVolumes(Y[hexes])
         q = 0.25 if quarter else 1.0
         Vcell = 2.0/3.0*np.pi*a**2*H
-        e = (V.sum() - q*(L**3 - Vcell))/(q*Vcell)
+        e = (V.sum() - q*(L**2*Z - Vcell))/(q*Vcell)
         check(J.min() > 0 and abs(e) < 0.02,
               f"{mode}: smallest corner Jacobian {J.min():.3e} m^3 (> 0),"
               f" volume {V.sum():.6e} m^3, error {e:.2e} of the cell's"
               " share")
 
         # Interface on the spheroid, planes exact
-        def nodesOf(name):
-            return np.array(sorted({row[n] for e in elems if e[1] == name
-                                    for n in e[2]}))
         c = Y[nodesOf("cellInterface")]
         level = (c[:, 0]**2 + c[:, 1]**2)/a**2 + c[:, 2]**2/H**2 - 1
         check(abs(level).max() < 1e-9, f"{mode}: {len(c)} cellInterface"
@@ -346,24 +374,34 @@ def main(mode):
     if mode == "quarter3DColumn":
         column()
         return
-    if mode in ("quarter3DHex", "full3DHex"):
+    if mode in ("quarter3DHex", "full3DHex", "quarter3DHexShort"):
         hexWater(mode)
         return
+    # quarter3DShort: the tetrahedral quarter with its water ending at
+    # height Z = 20 um
+    Z = SHORT if mode == "quarter3DShort" else L
+    mode = "quarter3D" if mode == "quarter3DShort" else mode
     patches = {"axisymmetric": ["top", "bottom", "sides", "cellInterface",
                                 "front", "back"],
                "quarter3D": ["top", "bottom", "sides", "cellInterface",
                              "symmetryX", "symmetryY"],
                "full3D": ["top", "bottom", "sides", "cellInterface"]}[mode]
     with tempfile.TemporaryDirectory() as case:
-        writeCase(case, mode)
+        writeCase(case, mode, f"height {Z};" if Z < L else "")
         X, elems = read2(os.path.join(case, "constant/fluid.msh"))
         names = {e[1] for e in elems}
         # Axis of the wedge: y (x = r, y = z as the axisymmetric cell.msh)
         up = 1 if mode == "axisymmetric" else 2
         ext = [max(abs(X[n][up]) for e in elems if e[1] == pn for n in e[2])
                for pn in ("bottom", "top")]
-        check(ext[0] < 1e-12*L and abs(ext[1] - L) < 1e-12*L,
-              f"{mode}: bottom at {'yz'[up - 1]} = 0, top at {L:g} m")
+        zTop = [X[n][up] for e in elems if e[1] == "top" for n in e[2]]
+        zAll = [x[up] for x in X.values()]
+        check(ext[0] < 1e-12*L and abs(min(zTop) - Z) < 1e-12*L
+              and abs(max(zTop) - Z) < 1e-12*L
+              and abs(max(zAll) - Z) < 1e-12*L,
+              f"{mode}: bottom at {'yz'[up - 1]} = 0, top at {Z:g} m (the"
+              f" top patch from {min(zTop):.9g} to {max(zTop):.9g} m, the"
+              f" highest node at {max(zAll):.9g} m)")
         check(names == set(patches + ["water"]),
               f"{mode}: groups {sorted(names)}")
         cells = {}
@@ -408,7 +446,7 @@ def main(mode):
             exact, share = s*(L**3/8 - a**2*H/3), s*a**2*H/3
         else:
             q = 0.25 if mode == "quarter3D" else 1.0
-            exact, share = q*(L**3 - Vcell), q*Vcell
+            exact, share = q*(L**2*Z - Vcell), q*Vcell
         e = (V - exact)/share
         check(abs(e) < 0.02, f"{mode}: {ncells} cells, volume {V:.6e} m^3,"
               f" exact {exact:.6e}, error {e:.2e} of the cell's share")

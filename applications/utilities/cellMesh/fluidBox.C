@@ -35,8 +35,9 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
     (
         d,
         {
-            "boxSize", "nearSize", "farSize", "growthDistance", "wedgeAngle",
-            "type", "columnSize", "columnRadius", "hexCoeffs", "maxCells"
+            "boxSize", "height", "nearSize", "farSize", "growthDistance",
+            "wedgeAngle", "type", "columnSize", "columnRadius", "hexCoeffs",
+            "maxCells"
         }
     );
     L_ = foamTools::readInRangeOrDefault<scalar>
@@ -128,12 +129,29 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
             d, "columnRadius", "m", 0, 0.5*L_, false
         );
     }
+    // The top of the water: boxSize, or lower for a column shortened by
+    // an inflow top (3D only; the hexahedral water checks it against its
+    // inner box in readHex)
+    height_ = L_;
+    if (d.found("height") && g_.axisymmetric())
+    {
+        FatalIOErrorInFunction(d)
+            << "entry 'height' is available in the 3D modes (quarter3D, "
+            << "full3D) only: the axisymmetric wedge fills the box"
+            << exit(FatalIOError);
+    }
     if (type == "hex")
     {
         readHex(d.subOrEmptyDict("hexCoeffs"));
     }
     else
     {
+        if (d.found("height"))
+        {
+            // The tetrahedra: at least one farSize of water above the cell
+            height_ = readHeight(g_.H() + farSize_, "the cell's top "
+                "(cellHeight) plus one farSize");
+        }
         // The tetrahedra and the wedge: their cell count estimated from
         // the sizes before gmsh allocates anything (issue 19, class 6)
         const label maxCells = foamTools::readInRangeOrDefault<label>
@@ -194,7 +212,7 @@ Foam::scalar Foam::fluidBox::tetCells() const
     if (columnRadius_ > 0) resolve = min(resolve, columnRadius_);
     const label n = min(label(200), max(label(32),
         label(std::ceil(8*half/resolve))));
-    const scalar dx = half/n, dz = L_/(2*n);
+    const scalar dx = half/n, dz = height_/(2*n);
     scalar sum = 0;
     for (label i = 0; i < n; ++i)
     for (label j = 0; j < n; ++j)
@@ -287,7 +305,8 @@ void Foam::fluidBox::readHex(const dictionary& d)
         d, "lateralSize", "m", 0, farSize_, false, nearSize_
     );
     // The inner box holds the cell with at least one first layer around
-    // it and leaves water between it and the side walls and the top
+    // it and leaves water between it and the side walls and the box's top
+    // (the water's top, height, is checked against the inner box below)
     const scalar gap = min(0.5*L_ - a, L_ - H);
     if (gap <= nearSize_)
     {
@@ -302,6 +321,13 @@ void Foam::fluidBox::readHex(const dictionary& d)
         d, "innerMargin", "m", nearSize_, gap*(1 - 1e-12), true,
         0.5*min(a, H)
     );
+    if (g_.fluidDict().found("height"))
+    {
+        // At least one axialSize of tensor grid above the inner box
+        height_ = readHeight(H + s.margin + s.axialSize, "the top of the "
+            "inner box (cellHeight + innerMargin) plus one axialSize");
+    }
+    s.height = height_;
     const label maxCells = foamTools::readInRangeOrDefault<label>
     (
         d, "maxCells", "", 1, 1000000000, true, 1000000
@@ -309,7 +335,7 @@ void Foam::fluidBox::readHex(const dictionary& d)
     // A lower bound first, the column above the inner box alone: a tiny
     // size must be refused before its grid lines are allocated
     const scalar lower = (s.quarter ? 1 : 4)*sqr((a + s.margin)/s.lateralSize)
-        *(L_ - H - s.margin)/s.axialSize;
+        *(height_ - H - s.margin)/s.axialSize;
     if (lower > maxCells)
     {
         FatalIOErrorInFunction(d)
@@ -328,6 +354,32 @@ void Foam::fluidBox::readHex(const dictionary& d)
             << "axialSize, lateralSize or farSize, or a larger maxCells)"
             << exit(FatalIOError);
     }
+}
+
+
+Foam::scalar Foam::fluidBox::readHeight
+(
+    const scalar lo,
+    const char* lowerBound
+) const
+{
+    const dictionary& d = g_.fluidDict();
+    // One finite number first (a word, a list, nan: readInRange's
+    // message), then the range with its meaning
+    const scalar inf = foamTools::noUpperBound<scalar>();
+    const scalar Z = foamTools::readInRange<scalar>
+    (
+        d, "height", "m", -inf, inf, true
+    );
+    if (!(Z > lo && Z <= L_))
+    {
+        FatalIOErrorInFunction(d)
+            << "entry 'height' = " << Z << " m is outside the valid range ("
+            << lo << ", " << L_ << "] m: above " << lowerBound << " ("
+            << lo << " m), at most boxSize (" << L_ << " m)"
+            << exit(FatalIOError);
+    }
+    return Z;
 }
 
 
@@ -395,7 +447,8 @@ void Foam::fluidBox::box3D()
     namespace occ = gmsh::model::occ;
     const bool quarter = g_.mode() == cellGeometry::meshMode::quarter3D;
     const scalar L = L_/unit_, x0 = quarter ? 0 : -0.5*L;
-    const int box = occ::addBox(x0, x0, 0, 0.5*L - x0, 0.5*L - x0, L);
+    const scalar Z = height_/unit_;
+    const int box = occ::addBox(x0, x0, 0, 0.5*L - x0, 0.5*L - x0, Z);
     const int cell = occ::addSphere(0, 0, 0, 1);
     occ::dilate({{3, cell}}, 0, 0, 0, g_.a()/unit_, g_.a()/unit_, g_.H()/unit_);
     gmsh::vectorpair out;
@@ -426,7 +479,7 @@ void Foam::fluidBox::box3D()
             return std::abs(c - v) < tol;
         };
         const char* name =
-            on(zc, L) ? "top"
+            on(zc, Z) ? "top"
           : on(zc, 0) ? "bottom"
           : on(xc, 0.5*L) || on(yc, 0.5*L) || on(xc, -0.5*L)
          || on(yc, -0.5*L) ? "sides"
@@ -690,7 +743,12 @@ void Foam::fluidBox::generate()
     };
     gmsh::vectorpair groups;
     gmsh::model::getPhysicalGroups(groups);
-    Info<< "Fluid box: side " << L_ << " m, element size " << nearSize_
+    Info<< "Fluid box: side " << L_ << " m";
+    if (height_ < L_)
+    {
+        Info<< ", water to height " << height_ << " m";
+    }
+    Info<< ", element size " << nearSize_
         << " m at the cell to " << farSize_ << " m at " << growth_
         << " m from it";
     if (g_.axisymmetric())

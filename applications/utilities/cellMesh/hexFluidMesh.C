@@ -72,12 +72,15 @@ Foam::hexFluidMesh::hexFluidMesh(const sizes& s)
         i1_ = label(xp.size()) - 1 + nIn;
     }
 
-    // z: uniform at (at most) axialSize below and above z = B
+    // z: uniform at (at most) axialSize below and above z = B, to the
+    // top of the water (height: L, or less for an inflow top)
     z_ = uniform(0, B, label(std::ceil(B/s_.axialSize*(1 - 1e-12))));
     kB_ = label(z_.size()) - 1;
     const std::vector<scalar> zu = uniform
     (
-        B, s_.L, label(std::ceil((s_.L - B)/s_.axialSize*(1 - 1e-12)))
+        B,
+        s_.height,
+        label(std::ceil((s_.height - B)/s_.axialSize*(1 - 1e-12)))
     );
     z_.insert(z_.end(), zu.begin() + 1, zu.end());
 
@@ -461,7 +464,7 @@ void Foam::hexFluidMesh::classifyBoundary(const std::vector<bool>& onCell)
         const scalar h = 0.5*s_.L;
         const char* name =
             all(q, 2, 0) ? "bottom"
-          : all(q, 2, s_.L) ? "top"
+          : all(q, 2, s_.height) ? "top"
           : all(q, 0, h) || all(q, 1, h) || all(q, 0, -h) || all(q, 1, -h)
           ? "sides"
           : s_.quarter && all(q, 0, 0) ? "symmetryX"

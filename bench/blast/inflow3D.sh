@@ -1,0 +1,72 @@
+#!/bin/bash
+# The 3D quarter (tutorials/blast/quarter3D) with its water column
+# shortened by the planeWaveInflow top (Allrun -inflow; issue 17 item 2,
+# issue 18 item 5); not a test. In a scratch copy of the tutorial (inputs
+# only) Allrun -noRun prepares the case (meshes, 0/ with the inflow top,
+# constant/inflowWave from planeWave -inflow; with -np N the decomposed
+# case), then cellBlastFoam runs niced under /usr/bin/time -v, on one rank
+# or on N (mpirun -np N --bind-to none cellBlastFoam -parallel), then, on
+# one rank, planeWave as the tutorial's plots stage runs it (the full
+# column's 1D answer, 50 nm cells) against the probes.
+#
+#   bench/blast/inflow3D.sh DIR NP [Allrun options...]
+#       DIR   scratch folder (created; must not exist): the case is
+#             DIR/quarter3D, kept for inspection
+#       NP    MPI ranks (1: serial)
+#     e.g. bench/blast/inflow3D.sh /tmp/in1 1 -lateral 2e-6 -far 10e-6 \
+#              -inflow 20e-6
+#
+# Prints: water cells (checkMesh), time steps, the time step before the
+# arrival, coupling passes, cellBlastFoam's CPU split of the time loop
+# (rank 0), wall time and peak resident memory of the run (/usr/bin/time
+# -v: the largest of the processes it waited for, i.e. one rank), and on
+# one rank planeWave's measures (postProcessing/planeWave/0/measures.dat,
+# solidMeasures.dat).
+set -euo pipefail
+[ $# -ge 2 ] || { sed -n 2,24p "$0"; exit 1; }
+dir=$1; np=$2; shift 2
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+. "$root/etc/bashrc"
+[ ! -e "$dir" ] || { echo "inflow3D.sh: $dir exists" >&2; exit 1; }
+c=$dir/quarter3D
+mkdir -p "$c"
+cp -r "$root"/tutorials/blast/quarter3D/{0.orig,constant,system,Allrun} "$c/"
+rm -rf "$c/constant/polyMesh" "$c"/constant/*.msh
+cd "$c"
+npOpt=()
+[ "$np" -le 1 ] || npOpt=(-np "$np")
+echo "== $(date -u '+%F %H:%M UTC'), commit $(git -C "$root" rev-parse --short HEAD)$(git -C "$root" diff --quiet HEAD -- src applications tutorials/blast bench/blast || echo ' (with uncommitted changes)'), load $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "== ./Allrun -noRun -noPlots ${npOpt[*]} $*"
+PROJECT_DIR=$root ./Allrun -noRun -noPlots "${npOpt[@]}" "$@" > log.prepare 2>&1 \
+    || { tail -20 log.prepare; exit 1; }
+grep '^Pulse' log.prepare || true
+if [ "$np" -le 1 ]
+then
+    echo "== nice -n 10 /usr/bin/time -v cellBlastFoam"
+    nice -n 10 /usr/bin/time -v -o log.time cellBlastFoam > log.cellBlastFoam 2>&1
+else
+    echo "== nice -n 10 /usr/bin/time -v mpirun -np $np --bind-to none cellBlastFoam -parallel"
+    nice -n 10 /usr/bin/time -v -o log.time mpirun -np "$np" --bind-to none \
+        cellBlastFoam -parallel > log.cellBlastFoam 2>&1
+fi
+echo "water cells: $(awk '/^ *cells:/ {print $2}' log.checkMesh)"
+echo "time steps: $(grep -c '^Time =' log.cellBlastFoam)," \
+    "first steps' deltaT: $(awk '/^deltaT/ {print $3}' log.cellBlastFoam | sed -n 200p) s (step 200)"
+grep -E "^(CPU time of the time loop|FSI interface energy|FSI coupling [A-Za-z]+:)" \
+    log.cellBlastFoam | tail -3
+echo "wall (time -v): $(awk -F': ' '/Elapsed \(wall clock\)/ {print $2}' log.time)," \
+    "peak RSS $(awk -F': ' '/Maximum resident/ {printf "%.0f MB", $2/1024}' log.time)," \
+    "load at the end $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "ExecutionTime/ClockTime: $(grep '^ExecutionTime' log.cellBlastFoam | tail -1)"
+if [ "$np" -le 1 ]
+then
+    Z=$(foamDictionary -entry boundaryField/top/columnHeight -value 0/p 2>/dev/null \
+        || foamDictionary -entry fluid/boxSize -value system/cellMeshDict)
+    echo "== planeWave -Z $Z -dz 50e-9 (the tutorial's plots stage)"
+    /usr/bin/time -v -o log.time.planeWave planeWave -Z "$Z" -dz 50e-9 \
+        > log.planeWave 2>&1 || { tail -5 log.planeWave; exit 1; }
+    cat postProcessing/planeWave/0/measures.dat \
+        postProcessing/planeWave/0/solidMeasures.dat
+fi
+echo "case: $c"
