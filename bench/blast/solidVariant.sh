@@ -10,11 +10,13 @@
 # constant/solidProperties (extra Lagrangian probes, docs/userGuide/fsi.md).
 # SHEAR_VISCOSITY (environment, optional): solidProperties shearViscosity
 # (the deviatoric numerical viscosity beta, solid::ExplicitSolver).
+# SHEAR_VISCOSITY_FILTER (environment, optional): solidProperties
+# shearViscosityFilter (yes: its filtered form).
 # Not a test (issue 17: docs/results/blastPlaneWave.md, "The solid's
 # formulation and the cell's mesh"). Example:
 #   bench/blast/solidVariant.sh /tmp/gp2 gaussPoints 0 -cell 0.25e-6 -h 0.125e-6
 set -u
-[ $# -ge 3 ] || { sed -n 2,12p "$0"; exit 1; }
+[ $# -ge 3 ] || { sed -n 2,14p "$0"; exit 1; }
 dir=$1; integ=$2; kappa=$3; shift 3
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
@@ -28,6 +30,9 @@ foamDictionary constant/solidProperties -entry volumetricIntegration \
 [ -z "${SHEAR_VISCOSITY:-}" ] \
     || foamDictionary constant/solidProperties -entry shearViscosity \
         -set "$SHEAR_VISCOSITY" > /dev/null
+[ -z "${SHEAR_VISCOSITY_FILTER:-}" ] \
+    || foamDictionary constant/solidProperties -entry shearViscosityFilter \
+        -set "$SHEAR_VISCOSITY_FILTER" > /dev/null
 [ -z "${SOLID_PROBES:-}" ] \
     || printf '\nprobes\n{\n%s\n}\n' "$SOLID_PROBES" >> constant/solidProperties
 grep -E "^(hourglassViscosity|volumetricIntegration|shearViscosity)" \

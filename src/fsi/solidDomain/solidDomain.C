@@ -80,6 +80,7 @@ Foam::solidDomain::solidDomain(const Time& runTime)
         {
             "explicitSafety", "hourglassViscosity",
             "hourglassViscosityRegions", "shearViscosity",
+            "shearViscosityFilter",
             "volumetricIntegration", "probes", "interfaceProbe", "interfaces"
         }
     );
@@ -145,6 +146,30 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
     set.safety = fraction(dict_, "explicitSafety", false, 0.8);
     set.hourglass = fraction(dict_, "hourglassViscosity", true, 0);
     set.shearViscosity = fraction(dict_, "shearViscosity", true, 0);
+    {
+        // The filtered (scale-selective) form of that viscosity: yes/no
+        const word filter
+        (
+            dict_.getOrDefault<word>("shearViscosityFilter", "no")
+        );
+        const Switch sw(filter, true);
+        if (!sw.valid())
+        {
+            FatalIOErrorInFunction(dict_)
+                << "entry 'shearViscosityFilter' = '" << filter << "': "
+                << "valid values are yes/no (on/off, true/false)"
+                << exit(FatalIOError);
+        }
+        if (sw && !(set.shearViscosity > 0))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "entry 'shearViscosityFilter' is yes but "
+                << "'shearViscosity' is " << set.shearViscosity << ": the "
+                << "filter shapes that viscosity; give shearViscosity in "
+                << "(0, 1) or leave the filter out" << exit(FatalIOError);
+        }
+        set.shearViscosityFilter = sw;
+    }
     if (dict_.found("hourglassViscosityRegions"))
     {
         // kappa per region name, overriding hourglassViscosity there

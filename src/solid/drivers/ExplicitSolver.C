@@ -127,7 +127,10 @@ void solid::ExplicitSolver::buildShearDamping
     const int nen = mesh.nen(), dim = mesh.dim(), nd = nen*dim;
     const ElementGeometry& geo = m.geometry(e);
     const int* en = mesh.element(e);
-    if (shearDamping_.empty()) shearDamping_.resize(mesh.nElements());
+    if (!set_.shearViscosityFilter && shearDamping_.empty())
+    {
+        shearDamping_.resize(mesh.nElements());
+    }
 
     // Mean strain-rate operators: normal rates (3 x nd; r-z: rr, zz and
     // the hoop rate v_r/R averaged over the ring volume) and tensor shear
@@ -165,7 +168,30 @@ void solid::ExplicitSolver::buildShearDamping
     Eigen::MatrixXd C =
         2*eta*geo.V*(Bn.transpose()*Pdev*Bn + 2*Bs.transpose()*Bs);
     C = 0.5*(C + C.transpose());
-    shearDamping_[e] = C;
+    if (set_.shearViscosityFilter)
+    {
+        // Rate operator in the deviatoric metric: |Bd v|^2 = |dev D|^2,
+        // the shear rows counted twice (tensor components xy and yx)
+        Eigen::MatrixXd Bd(Bn.rows() + Bs.rows(), nd);
+        Bd.topRows(3) = Pdev*Bn;
+        Bd.bottomRows(Bs.rows()) = std::sqrt(2.0)*Bs;
+        if (shearRate_.empty())
+        {
+            shearRate_.resize(mesh.nElements());
+            shearWeight_.assign(mesh.nElements(), 0);
+            shearNodeWeight_.assign(mesh.nNodes(), 0);
+        }
+        shearRate_[e] = Bd;
+        shearWeight_[e] = 2*eta*geo.V;
+        for (int a = 0; a < nen; ++a)
+        {
+            shearNodeWeight_[en[a]] += shearWeight_[e];
+        }
+    }
+    else
+    {
+        shearDamping_[e] = C;
+    }
 
     // Explicit limit of the damper: dt < 2 m / lambda_max(C), m the
     // element's smallest nodal mass
@@ -184,6 +210,67 @@ void solid::ExplicitSolver::buildShearDamping
 }
 
 
+void solid::ExplicitSolver::addFilteredShearForce
+(
+    const Eigen::VectorXd& v,
+    Eigen::VectorXd& f
+) const
+{
+    const Mesh& mesh = model_.mesh();
+    const int nen = mesh.nen(), dim = mesh.dim(), ne = mesh.nElements();
+    const int ns = shearRate_[0].rows();
+    Eigen::VectorXd ve(nen*dim);
+
+    // Element rates d_e and their w-weighted averages at the nodes
+    Eigen::MatrixXd d(ns, ne);
+    Eigen::MatrixXd nodal(Eigen::MatrixXd::Zero(ns, mesh.nNodes()));
+    for (int e = 0; e < ne; ++e)
+    {
+        const int* en = mesh.element(e);
+        for (int a = 0; a < nen; ++a)
+            for (int i = 0; i < dim; ++i) ve(dim*a + i) = v(dim*en[a] + i);
+        d.col(e) = shearRate_[e]*ve;
+        for (int a = 0; a < nen; ++a)
+        {
+            nodal.col(en[a]) += shearWeight_[e]*d.col(e);
+        }
+    }
+    for (int a = 0; a < mesh.nNodes(); ++a)
+    {
+        if (shearNodeWeight_[a] > 0) nodal.col(a) /= shearNodeWeight_[a];
+    }
+
+    // s = W (I - A) d, and the nodal sums of s/(nen W_a) for A^T s
+    Eigen::MatrixXd& s = d;
+    Eigen::MatrixXd back(Eigen::MatrixXd::Zero(ns, mesh.nNodes()));
+    for (int e = 0; e < ne; ++e)
+    {
+        const int* en = mesh.element(e);
+        Eigen::VectorXd mean(Eigen::VectorXd::Zero(ns));
+        for (int a = 0; a < nen; ++a) mean += nodal.col(en[a]);
+        s.col(e) = shearWeight_[e]*(d.col(e) - mean/nen);
+        for (int a = 0; a < nen; ++a)
+        {
+            back.col(en[a]) += s.col(e)/(nen*shearNodeWeight_[en[a]]);
+        }
+    }
+
+    // g = (I - A)^T s, f_e = -Bd_e^T g_e
+    for (int e = 0; e < ne; ++e)
+    {
+        const int* en = mesh.element(e);
+        Eigen::VectorXd g = s.col(e);
+        for (int a = 0; a < nen; ++a)
+        {
+            g -= shearWeight_[e]*back.col(en[a]);
+        }
+        ve = shearRate_[e].transpose()*g;
+        for (int a = 0; a < nen; ++a)
+            for (int i = 0; i < dim; ++i) f(dim*en[a] + i) -= ve(dim*a + i);
+    }
+}
+
+
 Eigen::VectorXd solid::ExplicitSolver::hourglassForce
 (
     const Eigen::VectorXd& v
@@ -191,6 +278,7 @@ Eigen::VectorXd solid::ExplicitSolver::hourglassForce
 {
     Eigen::VectorXd f(Eigen::VectorXd::Zero(v.size()));
     if (hourglassDamping_.empty()) return f;
+    if (!shearRate_.empty()) addFilteredShearForce(v, f);
     const Mesh& mesh = model_.mesh();
     const int nen = mesh.nen(), dim = mesh.dim();
     Eigen::Matrix<double, 8, 3> ve;
