@@ -22,7 +22,7 @@ arrival time (first p > 25 MPa); then each difference to the finest level.
 
     bench/blast/run.py [--quick] [--out DIR] [--doc FILE]
                     [--factors "1.4 1 0.7"] [--endTime s]
-                    [--allrun "-shearViscosity 0.1"]
+                    [--allrun "-shearViscosity 0.1 -shearViscosityFilter no"]
 
 Full: factors 1.4 1 0.7, 100 um column to 150 ns, probe peaks over
 t <= 90 ns (the first passage: the Fig. 10 numbers to quote), about
@@ -531,7 +531,7 @@ def main():
     ap.add_argument("--endTime", type=float, default=None, help="[s]")
     ap.add_argument("--allrun", default="",
                     help="more Allrun options for every level, e.g. "
-                    "'-shearViscosity 0.1' or '-inflow none'")
+                    "'-shearViscosity 0.4' or '-inflow none'")
     ap.add_argument("--reportOnly", action="store_true",
                     help="no run: the report from the level cases already "
                     "in --out (e.g. after a report error)")

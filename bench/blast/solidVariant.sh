@@ -8,15 +8,18 @@
 # Prints cellBlastFoam's CPU time and peak memory and the failed bounds.
 # SOLID_PROBES (environment, optional): a probes { } dictionary appended to
 # constant/solidProperties (extra Lagrangian probes, docs/userGuide/fsi.md).
-# SHEAR_VISCOSITY (environment, optional): solidProperties shearViscosity
+# SHEAR_VISCOSITY (environment, default 0): solidProperties shearViscosity
 # (the deviatoric numerical viscosity beta, solid::ExplicitSolver).
-# SHEAR_VISCOSITY_FILTER (environment, optional): solidProperties
-# shearViscosityFilter (yes: its filtered form).
+# SHEAR_VISCOSITY_FILTER (environment, default no): solidProperties
+# shearViscosityFilter (yes: its filtered form). These defaults are the
+# solid without the viscosity (the tutorial's default before 2026-12-03),
+# so that the commands documented before then reproduce; Allrun options
+# (-shearViscosity, -shearViscosityFilter) override them.
 # Not a test (issue 17: docs/results/blastPlaneWave.md, "The solid's
 # formulation and the cell's mesh"). Example:
 #   bench/blast/solidVariant.sh /tmp/gp2 gaussPoints 0 -cell 0.25e-6 -h 0.125e-6
 set -u
-[ $# -ge 3 ] || { sed -n 2,14p "$0"; exit 1; }
+[ $# -ge 3 ] || { sed -n 2,17p "$0"; exit 1; }
 dir=$1; integ=$2; kappa=$3; shift 3
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
@@ -27,12 +30,10 @@ foamDictionary constant/solidProperties -entry hourglassViscosity \
     -set "$kappa" > /dev/null
 foamDictionary constant/solidProperties -entry volumetricIntegration \
     -set "$integ" > /dev/null
-[ -z "${SHEAR_VISCOSITY:-}" ] \
-    || foamDictionary constant/solidProperties -entry shearViscosity \
-        -set "$SHEAR_VISCOSITY" > /dev/null
-[ -z "${SHEAR_VISCOSITY_FILTER:-}" ] \
-    || foamDictionary constant/solidProperties -entry shearViscosityFilter \
-        -set "$SHEAR_VISCOSITY_FILTER" > /dev/null
+foamDictionary constant/solidProperties -entry shearViscosity \
+    -set "${SHEAR_VISCOSITY:-0}" > /dev/null
+foamDictionary constant/solidProperties -entry shearViscosityFilter \
+    -set "${SHEAR_VISCOSITY_FILTER:-no}" > /dev/null
 [ -z "${SOLID_PROBES:-}" ] \
     || printf '\nprobes\n{\n%s\n}\n' "$SOLID_PROBES" >> constant/solidProperties
 grep -E "^(hourglassViscosity|volumetricIntegration|shearViscosity)" \

@@ -8,7 +8,9 @@ planeWave -check run). Per run: the errors of the 1-ns peaks of von Mises
 and strain at the Fig. 10 point (cytoplasm / nucleus side) and at the bulk
 probes (nucleusBulk / cytoplasmBulk, when present), the solid pressure's
 1-ns peak at the Fig. 10 point, the largest rest strain after 140 ns over
-the solid probes, and cellBlastFoam's CPU time (time.log). Not a test
+the solid probes, the largest von Mises along the membrane-cytoplasm and
+cytoplasm-nucleus interfaces up to 90 ns (postProcessing/solidInterfaces,
+the first passage), and cellBlastFoam's CPU time (time.log). Not a test
 (docs/results/blastPlaneWave.md).
 """
 import os
@@ -27,14 +29,32 @@ def rows(path):
     return out
 
 
+def interfaceMaxima(case, tEnd=90e-9):
+    """'m-c / c-n' von Mises maxima [Pa] up to tEnd, or '-'"""
+    path = os.path.join(case, "postProcessing", "solidInterfaces", "0",
+                        "interfaceMaxima.dat")
+    if not os.path.exists(path):
+        return "-"
+    mc = cn = 0.0
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") or not line.strip():
+                continue
+            w = [float(x) for x in line.split()]
+            if w[0] <= tEnd:
+                mc, cn = max(mc, w[2]), max(cn, w[4])
+    return "%.2f / %.2f" % (mc, cn)
+
+
 def main(args):
     if not args:
         sys.exit(__doc__)
     print("| run | von Mises at the Fig. 10 point, cytoplasm / nucleus [%] "
           "| strain there [%] | von Mises in the bulk, nucleus / cytoplasm "
           "[%] | solid pressure 1-ns peak at the Fig. 10 point [%] "
-          "| largest rest strain [-] | CPU [s] |")
-    print("|---|---|---|---|---|---|---:|")
+          "| largest rest strain [-] | interface von Mises maxima to "
+          "90 ns, m-c / c-n [Pa] | CPU [s] |")
+    print("|---|---|---|---|---|---|---|---:|")
     for arg in args:
         label, _, d = arg.partition("=")
         case = os.path.join(d, "axisymmetricPreview")
@@ -57,9 +77,10 @@ def main(args):
         if os.path.exists(tl):
             g = re.search(r"([0-9.]+) s CPU", open(tl).read())
             cpu = g.group(1) if g else "-"
-        print("| %s | %+.1f / %+.1f | %+.1f / %+.1f | %s | %+.1f | %.2g | %s |"
-              % (label, float(cyto[5]), float(nuc[5]), float(cyto[8]),
-                 float(nuc[8]), vb, float(p[13]), rest, cpu))
+        print("| %s | %+.1f / %+.1f | %+.1f / %+.1f | %s | %+.1f | %.2g | %s "
+              "| %s |" % (label, float(cyto[5]), float(nuc[5]),
+                          float(cyto[8]), float(nuc[8]), vb, float(p[13]),
+                          rest, interfaceMaxima(case), cpu))
 
 
 if __name__ == "__main__":
