@@ -12,7 +12,8 @@
 #    is stale;
 #  - every run that ends (also in a fatal error) removes its lock;
 #  - an empty lock and a directory in place of the lock are refused as
-#    such; a lock naming another case says so; a run records its case.
+#    such; a lock naming another case says so; a run records its case;
+#  - a run through a symbolic link to the case is a run of the same case.
 # The runs over the first run's results start anew with -overwrite.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -112,4 +113,20 @@ kill -STOP "$own"
 check "a run records its case in the lock" "grep -qx 'case $work/case' .runLock"
 kill -CONT "$own"
 wait "$own" || true
+
+# 7. The same case through a symbolic link (issue 19, adversarial pass
+#    cc_twoSolidSymlink: refused as "The lock names another case"): the
+#    lock records the real path, the second run is refused as a run of
+#    this case
+ln -s "$work/case" "$work/link"
+cellBlastFoam -overwrite > log.linkFirst 2>&1 &
+own=$!; pids+=("$own")
+for _ in $(seq 100); do [ -s .runLock ] && break; sleep 0.1; done
+kill -STOP "$own"
+status=0; cellBlastFoam -case "$work/link" > "$work/log.link" 2>&1 || status=$?
+kill -CONT "$own"
+wait "$own" || true
+check "a run through a link to the case is refused as the same case" \
+    "[ $status -ne 0 ] && grep -q 'is in use by cellBlastFoam (process $own' '$work/log.link' \
+     && ! grep -q 'another case' '$work/log.link'"
 exit $fail

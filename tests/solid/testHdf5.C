@@ -187,6 +187,71 @@ TEST(Hdf5, DamagedBytesAreErrorsNotValues)
 }
 
 
+// Fletcher-32 sums 16-bit words modulo 65535: a word 0x0000 turned into
+// 0xffff (and one 0xffff into 0x0000, a swap) leaves it unchanged, and such
+// damage was read as values (a zero displacement became a denormal, or a
+// NaN). The dataset's 64-bit digest (attribute digest64) sees it
+TEST(Hdf5, WordSwapsFletcherMissesAreErrors)
+{
+    // A step at rest: zeros, one marked value before and after them
+    std::vector<double> x(64, 0.0);
+    x.front() = 1.25;
+    x.back() = -2.5;
+    std::vector<int> n(64, 0);
+    n.front() = 123456789;
+    {
+        Hdf5File f("swap.h5", Hdf5File::Mode::create);
+        Hdf5Group g(f, "step", true);
+        g.write("u", x.data(), 32, 2);
+        g.write("n", n.data(), 64);
+    }
+    {
+        // undamaged: read back exactly
+        const Hdf5File f("swap.h5", Hdf5File::Mode::readOnly);
+        EXPECT_EQ(Hdf5Group(f, "step", false).read("u"), x);
+    }
+    std::string bytes;
+    {
+        std::ifstream is("swap.h5", std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(is), {});
+    }
+    const std::string good(bytes);
+    // A word 0x0000 of x[2] (16 bytes after x[0]) becomes 0xffff: it adds
+    // 65535 to Fletcher-32's sums, 0 modulo 65535
+    const std::string first(reinterpret_cast<const char*>(&x[0]), 8);
+    const auto at = bytes.find(first);
+    ASSERT_NE(at, std::string::npos);
+    bytes[at + 16] = bytes[at + 17] = '\xff';
+    std::ofstream("swap.h5", std::ios::binary) << bytes;
+    std::string msg = errorOf([] {
+        const Hdf5File f("swap.h5", Hdf5File::Mode::readOnly);
+        Hdf5Group(f, "step", false).read("u");
+    });
+    EXPECT_NE(msg.find("/step/u"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("digest64"), std::string::npos) << msg;
+    msg = errorOf([] {
+        const Hdf5File f("swap.h5", Hdf5File::Mode::readOnly);
+        Hdf5Group(f, "step", false).verify();
+    });
+    EXPECT_NE(msg.find("damaged"), std::string::npos) << msg;
+
+    // An integer dataset: a zero word of n[1] turned into 0xffff
+    bytes = good;
+    const int marker = n.front();
+    const std::string m(reinterpret_cast<const char*>(&marker), 4);
+    const auto atN = bytes.find(m);
+    ASSERT_NE(atN, std::string::npos);
+    bytes[atN + 4] = bytes[atN + 5] = '\xff';
+    std::ofstream("swap.h5", std::ios::binary) << bytes;
+    msg = errorOf([] {
+        const Hdf5File f("swap.h5", Hdf5File::Mode::readOnly);
+        Hdf5Group(f, "step", false).read("n");
+    });
+    EXPECT_NE(msg.find("/step/n"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("digest64"), std::string::npos) << msg;
+}
+
+
 TEST(Hdf5, TextAttributesReadBackAndDamagedTextIsAnError)
 {
     // The record of a checkpoint's inputs: lines with spaces and quotes

@@ -125,6 +125,13 @@ def main():
             p.error("-except %s: not [solid:|fluid:]<measure> (measures: "
                     "%s)" % (k if kind is None else kind + ":" + k,
                              ", ".join(list(BOUNDS) + list(SOLID_BOUNDS))))
+    # -probes: which probes to compare, a comma-separated list of solid and
+    # fluid (was: any text, then "no solid or fluid probes" naming no
+    # option; issue 19)
+    kinds = a.probes.split(",")
+    if not all(k in ("solid", "fluid") for k in kinds):
+        p.error("-probes %r: not a comma-separated list of solid and fluid "
+                "(e.g. -probes solid,fluid or -probes fluid)" % a.probes)
     for name, v in (("-Z", a.Z), ("-dz", a.dz)):
         if v is not None and not (v > 0 and math.isfinite(v)):
             p.error("%s %g m: must be positive and finite" % (name, v))
@@ -161,7 +168,6 @@ def main():
         inflow(case, a, table)
         return
     amp, T = planeWave.pulseShape(table)
-    kinds = a.probes.split(",")
     probes = planeWave.caseProbes(case, "solid" in kinds, "fluid" in kinds)
     if not probes:
         sys.exit("planeWave: no solid or fluid probes in %s/postProcessing"

@@ -4,6 +4,7 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <type_traits>
 
 static_assert
@@ -74,6 +75,35 @@ bool readAttributes(hid_t obj)
         if (!ok) return false;
     }
     return true;
+}
+
+//- The 64-bit digest of a dataset's values (FNV-1a over the bytes of each
+//  value as a double, in order, then the rows and columns): stored as the
+//  dataset's attribute digestName, compared at every read. Fletcher-32,
+//  HDF5's filter, sums 16-bit words modulo 65535, so a word 0x0000 turned
+//  into 0xffff (or back) passes it (zeros, most of a step at rest); this
+//  digest sees any change of a byte's value or place
+const char* const digestName = "digest64";
+
+template<class T>
+std::uint64_t digest(const T* data, std::size_t n, hsize_t rows, hsize_t cols)
+{
+    std::uint64_t h = 0xcbf29ce484222325ULL;
+    const auto add = [&h](const unsigned char* b, std::size_t size)
+    {
+        for (std::size_t k = 0; k < size; ++k)
+        {
+            h = (h ^ b[k])*0x100000001b3ULL;
+        }
+    };
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const double v = double(data[i]);
+        add(reinterpret_cast<const unsigned char*>(&v), sizeof v);
+    }
+    const std::uint64_t shape[2] = {rows, cols};
+    add(reinterpret_cast<const unsigned char*>(shape), sizeof shape);
+    return h;
 }
 
 } // namespace
@@ -226,9 +256,24 @@ void solid::Hdf5Group::writeData
     H5Pclose(dcpl);
     H5Pclose(lcpl);
     // An empty dataset has nothing to write
-    const bool ok = d >= 0
+    bool ok = d >= 0
      && (rows*cols == 0
       || H5Dwrite(d, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0);
+    // The digest of the values (read() compares it); an empty dataset has
+    // none
+    if (ok && rows*cols > 0)
+    {
+        const std::uint64_t h =
+            digest(data, rows*cols, rows, cols > 1 ? cols : 1);
+        const hid_t as = H5Screate(H5S_SCALAR);
+        const hid_t a = H5Acreate2
+        (
+            d, digestName, H5T_NATIVE_UINT64, as, H5P_DEFAULT, H5P_DEFAULT
+        );
+        ok = a >= 0 && H5Awrite(a, H5T_NATIVE_UINT64, &h) >= 0;
+        if (a >= 0) H5Aclose(a);
+        H5Sclose(as);
+    }
     if (d >= 0) H5Dclose(d);
     H5Sclose(space);
     check(ok, "write dataset " + where(name));
@@ -280,12 +325,37 @@ std::vector<double> solid::Hdf5Group::read
       || H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
                  v.data()) >= 0);
     if (space >= 0) H5Sclose(space);
+    // The digest of the values, if the file has one (files of earlier
+    // builds have none: read unchecked)
+    bool digestOk = true;
+    if (ok && H5Aexists(d, digestName) > 0)
+    {
+        std::uint64_t stored = 0;
+        const hid_t a = H5Aopen(d, digestName, H5P_DEFAULT);
+        const bool read =
+            a >= 0 && H5Aread(a, H5T_NATIVE_UINT64, &stored) >= 0;
+        if (a >= 0) H5Aclose(a);
+        digestOk = read
+         && stored
+         == digest
+            (
+                v.data(), v.size(), rank > 0 ? dims[0] : 1,
+                rank > 1 ? dims[1] : 1
+            );
+    }
     H5Dclose(d);
     check
     (
         ok,
         "read dataset " + where(name)
       + " (its checksum does not match: the file is damaged)"
+    );
+    check
+    (
+        digestOk,
+        "read dataset " + where(name)
+      + " (its values do not match their digest " + digestName
+      + ": the file is damaged)"
     );
     if (rows) *rows = rank > 0 ? dims[0] : 1;
     if (cols) *cols = rank > 1 ? dims[1] : 1;

@@ -3,25 +3,7 @@
 #include "isentropeTable.H"
 #include "keywordCheck.H"
 
-#include <cstdint>
-#include <cstring>
 #include <limits>
-
-namespace
-{
-
-//- x is neither NaN nor infinite, from its bits: no floating-point
-//  operation, so no trap with FOAM_SIGFPE (GCC 12's std::isfinite of a NaN
-//  raises FE_INVALID: GCC bug 66462; the NaN density of a pressure outside
-//  the law trapped inside the checks, issue 19)
-inline bool finiteBits(const double x)
-{
-    std::uint64_t u;
-    std::memcpy(&u, &x, sizeof u);
-    return (u & 0x7ff0000000000000ULL) != 0x7ff0000000000000ULL;
-}
-
-} // End anonymous namespace
 
 template<class Law>
 Law Foam::rhoEThermoModel<Law>::makeLaw(const dictionary& dict)
@@ -94,8 +76,9 @@ void Foam::rhoEThermoModel<Law>::cFromRhoE
     {
         // finiteness first: a comparison with a NaN traps under sigFpe
         const scalar c2 =
-            finiteBits(rho[i]) && finiteBits(e[i]) ? law_.c2(rho[i], e[i]) : 0;
-        c[i] = finiteBits(c2) && c2 > 0 ? std::sqrt(c2) : 0;
+            eos::isFinite(rho[i]) && eos::isFinite(e[i])
+          ? law_.c2(rho[i], e[i]) : 0;
+        c[i] = eos::isFinite(c2) && c2 > 0 ? std::sqrt(c2) : 0;
     }
 }
 
@@ -126,10 +109,10 @@ void Foam::rhoEThermoModel<Law>::rhoEFromPT
 {
     forAll(p, i)
     {
-        if (finiteBits(p[i]) && finiteBits(T[i]))
+        if (eos::isFinite(p[i]) && eos::isFinite(T[i]))
         {
             rho[i] = law_.rhoFromPT(p[i], T[i]);
-            e[i] = finiteBits(rho[i]) ? law_.eFromT(rho[i], T[i]) : rho[i];
+            e[i] = eos::isFinite(rho[i]) ? law_.eFromT(rho[i], T[i]) : rho[i];
         }
         else
         {
@@ -150,8 +133,8 @@ Foam::label Foam::rhoEThermoModel<Law>::firstInvalid
     forAll(rho, i)
     {
         const eos::Status s =
-            !finiteBits(rho[i]) ? eos::Status::nonPositiveDensity
-          : !finiteBits(e[i]) ? eos::Status::nonFiniteEnergy
+            !eos::isFinite(rho[i]) ? eos::Status::nonPositiveDensity
+          : !eos::isFinite(e[i]) ? eos::Status::nonFiniteEnergy
           : law_.check(rho[i], e[i]);
         if (s != eos::Status::ok)
         {
@@ -167,7 +150,7 @@ template<class Law>
 bool Foam::rhoEThermoModel<Law>::valid(const scalar rho, const scalar e) const
 {
     return
-        finiteBits(rho) && finiteBits(e)
+        eos::isFinite(rho) && eos::isFinite(e)
      && law_.check(rho, e) == eos::Status::ok;
 }
 
@@ -179,25 +162,8 @@ Foam::string Foam::rhoEThermoModel<Law>::reasonPT
     const scalar T
 ) const
 {
-    // eos::checkPT's steps, each value's finiteness from its bits
-    eos::Status s = eos::Status::ok;
-    if (!finiteBits(p) || !finiteBits(T))
-    {
-        s = eos::Status::nonFinitePT;
-    }
-    else if (!(T > 0))
-    {
-        s = eos::Status::nonPositiveTemperature;
-    }
-    else
-    {
-        const scalar rho = law_.rhoFromPT(p, T);
-        const scalar e = finiteBits(rho) ? law_.eFromT(rho, T) : rho;
-        s =
-            !finiteBits(rho) ? eos::Status::noDensityForPT
-          : !finiteBits(e) ? eos::Status::nonFiniteEnergy
-          : law_.check(rho, e);
-    }
+    // eos::checkPT: p and T before any arithmetic, finiteness from bits
+    const eos::Status s = eos::checkPT(law_, p, T);
     return eos::statusMessage(s);
 }
 
