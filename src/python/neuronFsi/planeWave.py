@@ -133,6 +133,12 @@ def _table(path, where, value):
                            for t, v in rows):
         raise PlaneWaveError("%s: %s: the table is empty or holds a number "
                              "that is not finite" % (path, where))
+    for i in range(1, len(rows)):
+        if not rows[i][0] > rows[i - 1][0]:
+            raise PlaneWaveError(
+                "%s: %s: row %d at time %g s is not after row %d at %g s: "
+                "the times of a table must increase"
+                % (path, where, i + 1, rows[i][0], i, rows[i - 1][0]))
     return rows
 
 
@@ -473,8 +479,14 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
                                    env=_foamEnv(),
                                    stderr=subprocess.STDOUT)
             if r.returncode != 0:
-                raise PlaneWaveError("%s failed in %s (log.%s)"
-                                     % (app, work, app))
+                # the scratch folder is kept for its log (issue 19, adv28
+                # pa16: the message named a log already removed), and the
+                # log's error quoted
+                keep = True
+                raise PlaneWaveError("%s failed on the 1D column in %s "
+                                     "(kept; its log.%s says: %s)"
+                                     % (app, work, app, _logError(
+                                         os.path.join(work, "log." + app))))
         data = postProcessing.series(work, "probes/p")
         rho = postProcessing.series(work, "probes/rho")
         # the column's axis is y (_BLOCK_MESH): u is U's y component
@@ -485,6 +497,21 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
     finally:
         if not keep:
             shutil.rmtree(work, ignore_errors=True)
+
+
+def _logError(path, lines=6):
+    """The error lines of an application's log (from its first FATAL or
+    error line, at most lines of them; else its last lines), on one line."""
+    try:
+        with open(path, errors="replace") as f:
+            text = [l.strip() for l in f if l.strip()]
+    except OSError as e:
+        return "(not readable: %s)" % e
+    first = next((i for i, l in enumerate(text)
+                  if "FATAL" in l or "rror" in l), None)
+    part = text[first:first + lines] if first is not None \
+        else text[-lines:]
+    return " / ".join(part) if part else "(empty)"
 
 
 def writeReference(path, wave, what):
