@@ -10,6 +10,7 @@ import unittest
 
 from fixtures import TempDirTestCase
 from neuronFsi import allrunOptions as ao
+from neuronFsi import ranges
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 
@@ -95,6 +96,24 @@ class Parse(unittest.TestCase):
                   "-h h number(0,1) m\n-h h number(0,1) m"):
             with self.assertRaises(ValueError):
                 ao.declaration(d)
+
+
+class Interval(unittest.TestCase):
+
+    def testEnds(self):
+        r = ranges.Interval("(0,1]")
+        self.assertEqual(str(r), "(0, 1]")
+        self.assertNotIn(0, r)
+        self.assertIn(1, r)
+        self.assertIn(1e-300, r)
+        r = ranges.Interval("[1, inf)")
+        self.assertIn(1, r)
+        self.assertIn(1e300, r)
+        self.assertNotIn(float("inf"), r)
+        self.assertNotIn(float("nan"), ranges.Interval("(-inf, inf)"))
+        for bad in ("0, 1", "(0; 1)", "(a, 1)", "<0, 1>"):
+            with self.assertRaises(ValueError):
+                ranges.Interval(bad)
 
 
 class Calc(unittest.TestCase):

@@ -49,22 +49,12 @@ import re
 import shlex
 import sys
 
+from . import ranges
+
 NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\Z")
 INTEGER = re.compile(r"[+-]?\d+\Z")
-INTERVAL = re.compile(r"([(\[])\s*([^,]+?)\s*,\s*([^)\]]+?)\s*([)\]])\Z")
-
-
 class OptionError(Exception):
     pass
-
-
-def _bound(text):
-    t = text.strip()
-    if t in ("inf", "+inf"):
-        return math.inf
-    if t == "-inf":
-        return -math.inf
-    return float(t)
 
 
 class Option:
@@ -95,17 +85,16 @@ class Option:
             self.words += kind[len("choice="):].split(",")
         else:
             m = re.match(r"(number|integer)(.*)\Z", kind)
-            iv = INTERVAL.match(m.group(2)) if m else None
-            if not iv:
+            try:
+                self.range = ranges.Interval(m.group(2)) if m else None
+            except ValueError:
+                self.range = None
+            if not self.range:
                 raise ValueError("option %s: kind '%s' is not number(lo,hi),"
                                  " integer[lo,hi], choice=..., flag=..."
                                  % (self.name, kind))
             self.kind = m.group(1)
-            self.lowClosed = iv.group(1) == "["
-            self.low = _bound(iv.group(2))
-            self.high = _bound(iv.group(3))
-            self.highClosed = iv.group(4) == "]"
-            self.interval = "%s%s, %s%s" % iv.groups()
+            self.interval = str(self.range)
 
     def unitText(self):
         return "" if self.unit == "-" else " " + self.unit
@@ -144,9 +133,7 @@ class Option:
                 "option %s = %s is beyond the range of a number (a double "
                 "holds |x| <= 1.79769e+308; valid: %s)"
                 % (self.name, text, self.valid()))
-        inside = (x >= self.low if self.lowClosed else x > self.low) and \
-            (x <= self.high if self.highClosed else x < self.high)
-        if not inside:
+        if x not in self.range:
             raise OptionError(
                 "option %s = %s%s is outside the valid range %s%s"
                 % (self.name, text, self.unitText(), self.interval,
