@@ -82,6 +82,13 @@ class Parse(unittest.TestCase):
         self.assertIn("option -h = '-tet' is not a decimal number",
                       self.error(["-h", "-tet"]))
 
+    def testNoOptionsDeclared(self):
+        self.assertEqual(ao.parse({}, []), {})
+        with self.assertRaises(ao.OptionError) as c:
+            ao.parse({}, ["-endTime", "1e-9"])
+        self.assertEqual(str(c.exception),
+                         "takes no options (given: -endTime 1e-9)")
+
     def testAssignmentsAreQuoted(self):
         o = opts()
         self.assertEqual(ao.assignments(o, {"-h": "1e-6", "-tet": "yes"}),

@@ -167,6 +167,9 @@ def parse(opts, argv):
     while i < len(argv):
         a = argv[i]
         o = opts.get(a)
+        if not opts:
+            raise OptionError("takes no options (given: %s)"
+                              % " ".join(shlex.quote(x) for x in argv))
         if o is None:
             close = difflib.get_close_matches(a, list(opts), 1)
             raise OptionError(
