@@ -13,18 +13,21 @@ from fixtures import TempDirTestCase
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 
 SCRIPT = r"""
-import os, shutil, subprocess, sys
+import concurrent.futures, os, shutil, sys
 from neuronFsi import signals
 work = sys.argv[1]
 os.makedirs(os.path.join(work, "scratch"))
 with signals.stopOn("t"):
     try:
-        p = subprocess.run(["sleep", "60"])
+        # three runs on two threads (one waits), each a shell command
+        # whose sleep is the shell's child (not exec'd)
+        with concurrent.futures.ThreadPoolExecutor(2) as pool:
+            list(pool.map(lambda i: signals.call(
+                "sleep %s; true" % sys.argv[2], shell=True), range(3)))
     finally:
         shutil.rmtree(os.path.join(work, "scratch"))
 print("not reached")
 """
-
 
 def alive(pid):
     try:
@@ -36,33 +39,44 @@ def alive(pid):
 
 class StopOn(TempDirTestCase):
 
-    def stop(self, signum):
+    def stop(self, signum, tag):
+        """Run SCRIPT, send signum once its two shells run their sleep
+        (of tag seconds: found by pgrep); (exit code, stdout, stderr,
+        sleeps left)."""
         p = subprocess.Popen(
-            [sys.executable, "-c", SCRIPT, self.tmp], stdout=subprocess.PIPE,
-            stderr=subprocess.PIPE, text=True,
+            [sys.executable, "-c", SCRIPT, self.tmp, tag],
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
             env=dict(os.environ, PYTHONPATH=os.path.join(ROOT, "src/python")))
-        child = None
-        for _ in range(100):            # the child sleep started
+        sleeps = []
+        for _ in range(100):
             time.sleep(0.1)
-            kids = subprocess.run(["pgrep", "-P", str(p.pid)],
-                                  capture_output=True, text=True).stdout
-            if kids.strip():
-                child = int(kids.split()[0])
+            sleeps = self.sleeps(tag)
+            if len(sleeps) == 2:
                 break
-        self.assertIsNotNone(child, "the script did not start its child")
+        self.assertEqual(len(sleeps), 2, "the two runs did not start")
         p.send_signal(signum)
         out, err = p.communicate(timeout=30)
-        return p.returncode, out, err, child
+        time.sleep(0.2)
+        return p.returncode, out, err, [q for q in sleeps if alive(q)] \
+            + [q for q in self.sleeps(tag) if q not in sleeps]
 
-    def testTermEndsChildAndCleansUp(self):
-        for signum in (signal.SIGTERM, signal.SIGHUP):
-            code, out, err, child = self.stop(signum)
+    @staticmethod
+    def sleeps(tag):
+        r = subprocess.run(["pgrep", "-f", "^sleep %s$" % tag],
+                           capture_output=True, text=True)
+        return [int(x) for x in r.stdout.split()]
+
+    def testSignalEndsEveryRunAndCleansUp(self):
+        for i, signum in enumerate((signal.SIGTERM, signal.SIGHUP,
+                                    signal.SIGINT)):
+            tag = "61.%d%d" % (os.getpid() % 1000, i)
+            code, out, err, left = self.stop(signum, tag)
             self.assertEqual(code, 128 + signum, err)
             self.assertNotIn("Traceback", err)
             self.assertIn("t: stopped by %s" % signal.Signals(signum).name,
                           err)
             self.assertEqual(out, "")
-            self.assertFalse(alive(child), "the child runs on")
+            self.assertEqual(left, [], "runs left running")
             self.assertFalse(os.path.exists(os.path.join(self.tmp,
                                                          "scratch")))
 

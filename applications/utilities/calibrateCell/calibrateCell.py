@@ -77,7 +77,7 @@ import numpy as np
 from scipy import optimize, stats
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-from neuronFsi import foamDict, ranges  # noqa: E402
+from neuronFsi import foamDict, ranges, signals  # noqa: E402
 from forwardModel import ForwardModel, ModelError  # noqa: E402
 from targets import Targets, TargetError  # noqa: E402
 
@@ -593,4 +593,7 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    # SIGTERM, SIGHUP, SIGINT end the runs started (signals.call) and exit
+    # 128 + the signal (adv28 z3: planeWave's run was left running)
+    with signals.stopOn("calibrateCell"):
+        sys.exit(main())

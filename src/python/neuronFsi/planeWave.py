@@ -480,10 +480,10 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
                         bottom=_foamDictionary(path, "boundaryField/bottom")))
             for app in ("blockMesh", "rhoRiemannFoam"):
                 with open(os.path.join(work, "log." + app), "w") as out:
-                    r = subprocess.run([app, "-case", work], stdout=out,
-                                       env=_foamEnv(),
-                                       stderr=subprocess.STDOUT)
-                if r.returncode != 0:
+                    rc = signals.call([app, "-case", work], stdout=out,
+                                      env=_foamEnv(),
+                                      stderr=subprocess.STDOUT)
+                if rc != 0:
                     # the scratch folder is kept for its log (issue 19, adv28
                     # pa16: the message named a log already removed), and the
                     # log's error quoted
