@@ -75,7 +75,7 @@ class Parse(unittest.TestCase):
     def testWordsAndOptions(self):
         self.assertIn("'yess' is not valid (valid: yes or no); did you "
                       "mean 'yes'?", self.error(["-filter", "yess"]))
-        self.assertIn("unknown option '-hh'; did you mean -h?",
+        self.assertIn("unknown option '-hh'; did you mean '-h'?",
                       self.error(["-hh", "1"]))
         self.assertIn("option -h given twice (1 and 2)",
                       self.error(["-h", "1", "-h", "2"]))

@@ -41,7 +41,6 @@ its first step) is replaced. Otherwise the record is written (atomically)
 and the run goes on.
 """
 
-import difflib
 import json
 import math
 import os
@@ -49,10 +48,12 @@ import re
 import shlex
 import sys
 
-from . import ranges
+from . import foamDict, ranges
 
 NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\Z")
 INTEGER = re.compile(r"[+-]?\d+\Z")
+
+
 class OptionError(Exception):
     pass
 
@@ -116,11 +117,10 @@ class Option:
         if text in self.words:
             return text
         if not self.kind:
-            close = difflib.get_close_matches(text, self.words, 1)
             raise OptionError(
                 "option %s = '%s' is not valid (valid: %s)%s"
                 % (self.name, text, self.valid(),
-                   "; did you mean '%s'?" % close[0] if close else ""))
+                   foamDict.did_you_mean(text, self.words)))
         pattern = INTEGER if self.kind == "integer" else NUMBER
         if not pattern.match(text):
             raise OptionError(
@@ -171,11 +171,9 @@ def parse(opts, argv):
             raise OptionError("takes no options (given: %s)"
                               % " ".join(shlex.quote(x) for x in argv))
         if o is None:
-            close = difflib.get_close_matches(a, list(opts), 1)
             raise OptionError(
                 "unknown option '%s'%s (valid: %s; see the header of Allrun)"
-                % (a, "; did you mean %s?" % close[0] if close else "",
-                   " ".join(opts)))
+                % (a, foamDict.did_you_mean(a, list(opts)), " ".join(opts)))
         if o.flag is not None:
             value = o.flag
             i += 1
