@@ -117,8 +117,18 @@ makeInflow() {
     cp -r "$bases/inflowWork/short" "$c"
     (cd "$c" && rm -rf postProcessing log.* && foamListTimes -rm > /dev/null)
 }
-for b in Fluid Solid Mesh Fsi H5 Blast Inflow; do make$b; done
-for b in fluid solid mesh fsi h5 blast inflow
+# preview, quarter: the blast tutorials' cases as committed (their Allrun
+# options; a row's edit may run ./Allrun -noRun first)
+makeTutorial() {
+    local c=$bases/$1 t=$root/tutorials/blast/$2
+    mkdir -p "$c"
+    cp -r "$t"/{0.orig,system,constant,Allrun,Allclean} "$c"/
+    (cd "$c" && ./Allclean > /dev/null)
+}
+makePreview() { makeTutorial preview axisymmetricPreview; }
+makeQuarter() { makeTutorial quarter quarter3D; }
+for b in Fluid Solid Mesh Fsi H5 Blast Inflow Preview Quarter; do make$b; done
+for b in fluid solid mesh fsi h5 blast inflow preview quarter
 do
     [ -d "$bases/$b" ] || { echo "badInput: base case $b not built"; exit 1; }
 done

@@ -47,6 +47,8 @@ import argparse
 import math
 import os
 
+from neuronFsi import options
+
 p = argparse.ArgumentParser(add_help=False)
 p.add_argument("-h", dest="h", type=float, default=0.5e-6)
 p.add_argument("-far", type=float, default=None)
@@ -59,7 +61,7 @@ p.add_argument("-Z", type=float, default=100e-6)
 p.add_argument("-wedge", type=float, default=5.0)
 p.add_argument("-maxCells", type=float, default=1e6)
 p.add_argument("-o", default="system/blockMeshDict")
-args = p.parse_args()
+args = options.parse(p)     # a negative value is a value (-far -1e-6)
 
 a, H, R, Z, h = args.D/2, args.H, args.R, args.Z, args.h
 far = 2*h if args.far is None else args.far

@@ -24,12 +24,15 @@ Usage
     calibrateCell [-case dir] [-dict file] [-nProcs N] [-keep] [-work dir]
 
     system/calibrationDict:
-        nProcs              2;       // parallel forward runs
+        nProcs              2;       // parallel forward runs [1, inf)
         maxIterations       30;      // trust-region function evaluations
-        tolerance           1e-6;    // ftol = xtol of least_squares [-]
+                                     // [1, inf)
+        tolerance           1e-6;    // ftol = xtol of least_squares (0, 1)
         finiteDifferenceStep 0.01;   // Jacobian step in the fitted
                                      // variable (log: 1 % of the value)
+                                     // (0, 1]
         meshSizeFactor      1;       // cellMeshDict sizes scaled by it
+                                     // (0, inf)
         relativeError       0.05;    // default sigma/value of the targets
         covariance          auto;    // auto | scaled | absolute
         // protocol ( ... );         // replaces the case's loading table
@@ -74,7 +77,7 @@ import numpy as np
 from scipy import optimize, stats
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-from neuronFsi import foamDict  # noqa: E402
+from neuronFsi import foamDict, ranges, signals  # noqa: E402
 from forwardModel import ForwardModel, ModelError  # noqa: E402
 from targets import Targets, TargetError  # noqa: E402
 
@@ -150,6 +153,23 @@ class Parameter:
         return self.initial + x*abs(self.initial)
 
 
+def setting(d, key, default, where, interval, integer=False):
+    """The number d[key] (default when absent), checked: a number (a whole
+    one if integer), finite, inside interval ("(0, 1]": brackets as in
+    mathematics, inf for no bound); InputError naming the dictionary, the
+    entry, the value and the range otherwise."""
+    v = d.get(key, default)
+    kind = "a whole number" if integer else "a number"
+    if isinstance(v, bool) or not isinstance(v, (int, float)) \
+            or (integer and not isinstance(v, int)):
+        raise InputError("%s: entry '%s' = '%s' is not %s (valid range %s)"
+                         % (where, key, v, kind, interval))
+    if v not in ranges.Interval(interval):
+        raise InputError("%s: entry '%s' = %s is outside the valid range %s"
+                         % (where, key, v, interval))
+    return v
+
+
 class Calibration:
     def __init__(self, case, dict_path, args):
         self.case = os.path.abspath(case)
@@ -169,15 +189,19 @@ class Calibration:
         except foamDict.DictError as err:
             raise InputError(str(err))
         # -nProcs 0 is an error, not "unset"
-        self.nprocs = int(args.nProcs if args.nProcs is not None
-                          else d.get("nProcs", 2))
+        self.nprocs = args.nProcs if args.nProcs is not None \
+            else setting(d, "nProcs", 2, where, "[1, inf)", integer=True)
         if self.nprocs < 1:
             raise InputError("%s: nProcs (or -nProcs) = %d is outside the "
                              "valid range [1, inf) (parallel forward runs)"
                              % (where, self.nprocs))
-        self.max_iter = int(d.get("maxIterations", 30))
-        self.tol = float(d.get("tolerance", 1e-6))
-        self.h = float(d.get("finiteDifferenceStep", 0.01))
+        # the optimiser's settings, checked before any run (adv28: k10
+        # maxIterations -1 was scipy's traceback, k06 finiteDifferenceStep
+        # 0 and k13 tolerance nan were accepted and the runs started)
+        self.max_iter = setting(d, "maxIterations", 30, where, "[1, inf)",
+                                integer=True)
+        self.tol = setting(d, "tolerance", 1e-6, where, "(0, 1)")
+        self.h = setting(d, "finiteDifferenceStep", 0.01, where, "(0, 1]")
         self.cov_mode = str(d.get("covariance", "auto"))
         if self.cov_mode not in ("auto", "scaled", "absolute"):
             raise InputError("%s: covariance '%s' is not valid (valid: "
@@ -211,7 +235,8 @@ class Calibration:
                              "(stage motion rate amount)" % where)
         print("Forward model: cellIndentationFoam in %s" % args.work)
         self.model = ForwardModel(self.case, args.work,
-                                  float(d.get("meshSizeFactor", 1.0)),
+                                  setting(d, "meshSizeFactor", 1.0, where,
+                                          "(0, inf)"),
                                   protocol, args.keep)
         self._check_names(where)
         self.lock = threading.Lock()
@@ -568,4 +593,7 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    # SIGTERM, SIGHUP, SIGINT end the runs started (signals.call) and exit
+    # 128 + the signal (adv28 z3: planeWave's run was left running)
+    with signals.stopOn("calibrateCell"):
+        sys.exit(main())

@@ -9,7 +9,7 @@ import shutil
 import subprocess
 import time
 
-from neuronFsi import foamDict, postProcessing, scratch
+from neuronFsi import foamDict, postProcessing, scratch, signals
 
 MESH_SIZES = ("nucleusSize", "cytoplasmSize", "membraneSize", "contactSize")
 
@@ -20,7 +20,8 @@ class ModelError(Exception):
 
 def _run(cmd, cwd, log):
     with open(log, "w") as f:
-        return subprocess.call(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT)
+        # ended on SIGTERM, SIGHUP, SIGINT (calibrateCell's stopOn)
+        return signals.call(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT)
 
 
 def protocol_text(rows):

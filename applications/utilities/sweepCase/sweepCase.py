@@ -55,7 +55,7 @@ import subprocess
 import sys
 import time
 
-from neuronFsi import foamDict, options, postProcessing
+from neuronFsi import foamDict, options, postProcessing, signals
 
 
 class SweepError(Exception):
@@ -160,8 +160,9 @@ def run_one(case, copy, f, keys, value, outputs, command):
     open(p, "w").write(text)
     t0 = time.time()
     with open(os.path.join(copy, "log.sweepCase"), "w") as log:
-        rc = subprocess.call(command, shell=True, cwd=copy, stdout=log,
-                             stderr=subprocess.STDOUT)
+        # ended, with what the shell started, on SIGTERM, SIGHUP, SIGINT
+        rc = signals.call(command, shell=True, cwd=copy, stdout=log,
+                          stderr=subprocess.STDOUT)
     wall = time.time() - t0
     if rc:
         raise SweepError("value %s: '%s' failed (exit %d), see %s"
@@ -270,4 +271,7 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    # SIGTERM, SIGHUP, SIGINT end the runs started (signals.call) and exit
+    # 128 + the signal (adv28 z3: planeWave's run was left running)
+    with signals.stopOn("sweepCase"):
+        sys.exit(main())

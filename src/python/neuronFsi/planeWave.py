@@ -60,6 +60,7 @@ import numpy as np
 
 from . import foamDict
 from . import postProcessing
+from . import signals
 
 
 class PlaneWaveError(Exception):
@@ -133,6 +134,12 @@ def _table(path, where, value):
                            for t, v in rows):
         raise PlaneWaveError("%s: %s: the table is empty or holds a number "
                              "that is not finite" % (path, where))
+    for i in range(1, len(rows)):
+        if not rows[i][0] > rows[i - 1][0]:
+            raise PlaneWaveError(
+                "%s: %s: row %d at time %g s is not after row %d at %g s: "
+                "the times of a table must increase"
+                % (path, where, i + 1, rows[i][0], i, rows[i - 1][0]))
     return rows
 
 
@@ -428,63 +435,88 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
     pulse = appliedPressure(case) if inflow else None
     keep = work is not None
     work = work or tempfile.mkdtemp(prefix="planeWave.")
-    try:
-        if os.path.exists(work):
-            shutil.rmtree(work)
-        for d in ("0", "constant", "system"):
-            os.makedirs(os.path.join(work, d))
-        shutil.copy(os.path.join(case, "constant",
-                                 "thermophysicalProperties"),
-                    os.path.join(work, "constant"))
-        for f in ("fvSchemes", "fvSolution"):
-            shutil.copy(os.path.join(case, "system", f),
-                        os.path.join(work, "system"))
-        if scene and os.path.isfile(os.path.join(case, INFLOW_FILE)):
-            shutil.copy(os.path.join(case, INFLOW_FILE),
+    # SIGTERM, SIGHUP: rhoRiemannFoam ended and the scratch folder removed
+    # on the way out (were left running and behind: adv28 z3)
+    with signals.stopOn("planeWave"):
+        try:
+            if os.path.exists(work):
+                shutil.rmtree(work)
+            for d in ("0", "constant", "system"):
+                os.makedirs(os.path.join(work, d))
+            shutil.copy(os.path.join(case, "constant",
+                                     "thermophysicalProperties"),
                         os.path.join(work, "constant"))
-        with open(os.path.join(work, "system", "blockMeshDict"), "w") as f:
-            f.write(_BLOCK_MESH.format(w=dz, Z=Z, n=n))
-        probes = " ".join("(%.17g %.17g %.17g)" % (0.5*dz, z, 0.5*dz)
-                          for z in heights)
-        with open(os.path.join(work, "system", "controlDict"), "w") as f:
-            f.write(_CONTROL.format(end=endTime, co=maxCo, probes=probes))
-        for field, cls in (("p", "volScalarField"), ("T", "volScalarField"),
-                           ("U", "volVectorField")):
-            path = _fieldFile(case, field)
-            if not inflow:
-                top = _foamDictionary(path, "boundaryField/top")
-            elif field == "p":
-                top = ("    top { type uniformFixedValue; uniformValue "
-                       "table ( %s ); }" % " ".join(
-                           "(%.17g %.17g)" % r for r in pulse))
-            else:
-                top = "    top { type zeroGradient; }"
-            with open(os.path.join(work, "0", field), "w") as f:
-                f.write(_FIELD.format(
-                    cls=cls, name=field,
-                    dims=_foamDictionary(path, "dimensions", True).strip(),
-                    internal=_foamDictionary(path, "internalField",
-                                             True).strip(),
-                    top=top,
-                    bottom=_foamDictionary(path, "boundaryField/bottom")))
-        for app in ("blockMesh", "rhoRiemannFoam"):
-            with open(os.path.join(work, "log." + app), "w") as out:
-                r = subprocess.run([app, "-case", work], stdout=out,
-                                   env=_foamEnv(),
-                                   stderr=subprocess.STDOUT)
-            if r.returncode != 0:
-                raise PlaneWaveError("%s failed in %s (log.%s)"
-                                     % (app, work, app))
-        data = postProcessing.series(work, "probes/p")
-        rho = postProcessing.series(work, "probes/rho")
-        # the column's axis is y (_BLOCK_MESH): u is U's y component
-        U = postProcessing.series(work, "probes/U", vectors=True)
-        T = postProcessing.series(work, "probes/T")
-        return PlaneWave(heights, data[:, 0], data[:, 1:], dz, Z,
-                         rho[:, 1:], U[:, 2::3], T[:, 1:])
-    finally:
-        if not keep:
-            shutil.rmtree(work, ignore_errors=True)
+            for f in ("fvSchemes", "fvSolution"):
+                shutil.copy(os.path.join(case, "system", f),
+                            os.path.join(work, "system"))
+            if scene and os.path.isfile(os.path.join(case, INFLOW_FILE)):
+                shutil.copy(os.path.join(case, INFLOW_FILE),
+                            os.path.join(work, "constant"))
+            with open(os.path.join(work, "system", "blockMeshDict"), "w") as f:
+                f.write(_BLOCK_MESH.format(w=dz, Z=Z, n=n))
+            probes = " ".join("(%.17g %.17g %.17g)" % (0.5*dz, z, 0.5*dz)
+                              for z in heights)
+            with open(os.path.join(work, "system", "controlDict"), "w") as f:
+                f.write(_CONTROL.format(end=endTime, co=maxCo, probes=probes))
+            for field, cls in (("p", "volScalarField"),
+                               ("T", "volScalarField"),
+                               ("U", "volVectorField")):
+                path = _fieldFile(case, field)
+                if not inflow:
+                    top = _foamDictionary(path, "boundaryField/top")
+                elif field == "p":
+                    top = ("    top { type uniformFixedValue; uniformValue "
+                           "table ( %s ); }" % " ".join(
+                               "(%.17g %.17g)" % r for r in pulse))
+                else:
+                    top = "    top { type zeroGradient; }"
+                with open(os.path.join(work, "0", field), "w") as f:
+                    f.write(_FIELD.format(
+                        cls=cls, name=field,
+                        dims=_foamDictionary(path, "dimensions", True).strip(),
+                        internal=_foamDictionary(path, "internalField",
+                                                 True).strip(),
+                        top=top,
+                        bottom=_foamDictionary(path, "boundaryField/bottom")))
+            for app in ("blockMesh", "rhoRiemannFoam"):
+                with open(os.path.join(work, "log." + app), "w") as out:
+                    rc = signals.call([app, "-case", work], stdout=out,
+                                      env=_foamEnv(),
+                                      stderr=subprocess.STDOUT)
+                if rc != 0:
+                    # the scratch folder is kept for its log (issue 19, adv28
+                    # pa16: the message named a log already removed), and the
+                    # log's error quoted
+                    keep = True
+                    log = os.path.join(work, "log." + app)
+                    raise PlaneWaveError("%s failed on the 1D column in %s "
+                                         "(kept; its log.%s says: %s)"
+                                         % (app, work, app, _logError(log)))
+            data = postProcessing.series(work, "probes/p")
+            rho = postProcessing.series(work, "probes/rho")
+            # the column's axis is y (_BLOCK_MESH): u is U's y component
+            U = postProcessing.series(work, "probes/U", vectors=True)
+            T = postProcessing.series(work, "probes/T")
+            return PlaneWave(heights, data[:, 0], data[:, 1:], dz, Z,
+                             rho[:, 1:], U[:, 2::3], T[:, 1:])
+        finally:
+            if not keep:
+                shutil.rmtree(work, ignore_errors=True)
+
+
+def _logError(path, lines=6):
+    """The error lines of an application's log (from its first FATAL or
+    error line, at most lines of them; else its last lines), on one line."""
+    try:
+        with open(path, errors="replace") as f:
+            text = [l.strip() for l in f if l.strip()]
+    except OSError as e:
+        return "(not readable: %s)" % e
+    first = next((i for i, l in enumerate(text)
+                  if "FATAL" in l or "rror" in l), None)
+    part = text[first:first + lines] if first is not None \
+        else text[-lines:]
+    return " / ".join(part) if part else "(empty)"
 
 
 def writeReference(path, wave, what):

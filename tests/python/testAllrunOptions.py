@@ -1,0 +1,220 @@
+"""neuronFsi.allrunOptions: the tutorials' Allrun options checked in one
+place (issue 19, adv28: an option without its value looped forever, a
+word or an expression was evaluated as Python code, -np abc prepared a
+serial case, a re-run with other sizes kept the earlier results)."""
+import json
+import os
+import subprocess
+import sys
+import unittest
+
+from fixtures import TempDirTestCase
+from neuronFsi import allrunOptions as ao
+from neuronFsi import ranges
+
+ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
+
+DECL = """
+-pulse  pulse  number(1e-10,0.9]  s
+-h      h      number(0,inf)      m
+-np     np     integer[1,inf)     -
+-filter filter choice=yes,no      -
+-inflow inflow number(0,inf)|none m
+-tet    tet    flag=yes           -
+-noRun  run    flag=no            -  noRecord
+%results log.cellMesh
+"""
+
+
+def opts():
+    return ao.declaration(DECL)[0]
+
+
+class Parse(unittest.TestCase):
+
+    def error(self, argv):
+        with self.assertRaises(ao.OptionError) as c:
+            ao.parse(opts(), argv)
+        return str(c.exception)
+
+    def testValues(self):
+        g = ao.parse(opts(), ["-pulse", "5e-9", "-h", ".5e-6", "-np", "2",
+                              "-filter", "yes", "-inflow", "none", "-tet",
+                              "-noRun"])
+        self.assertEqual(g, {"-pulse": "5e-9", "-h": ".5e-6", "-np": "2",
+                             "-filter": "yes", "-inflow": "none",
+                             "-tet": "yes", "-noRun": "no"})
+
+    def testNoValueLast(self):
+        self.assertEqual(self.error(["-h", "1e-6", "-pulse"]),
+                         "option -pulse needs a value (valid: a number in "
+                         "(1e-10, 0.9] s)")
+
+    def testNotNumbers(self):
+        # words, expressions (once evaluated as Python), nan, inf, Python's
+        # own spellings that other readers do not take
+        for v in ("abc", "30e-6*2", "nan", "inf", "1_0", "0x10", "", " 1",
+                  "__import__('os')"):
+            self.assertIn("option -h = '%s' is not a decimal number" % v,
+                          self.error(["-h", v]))
+
+    def testRanges(self):
+        self.assertEqual(self.error(["-pulse", "0"]), "option -pulse = 0 s "
+                         "is outside the valid range (1e-10, 0.9] s")
+        self.assertIn("outside", self.error(["-pulse", "1e-10"]))
+        self.assertEqual(ao.parse(opts(), ["-pulse", "0.9"])["-pulse"], "0.9")
+        self.assertIn("outside the valid range (0, inf) m",
+                      self.error(["-h", "-1e-6"]))
+        self.assertIn("beyond the range of a number",
+                      self.error(["-h", "1e400"]))
+        self.assertIn("is not a whole number", self.error(["-np", "abc"]))
+        self.assertIn("is not a whole number", self.error(["-np", "2.0"]))
+        self.assertIn("-np = 0 is outside the valid range [1, inf)",
+                      self.error(["-np", "0"]))
+
+    def testWordsAndOptions(self):
+        self.assertIn("'yess' is not valid (valid: yes or no); did you "
+                      "mean 'yes'?", self.error(["-filter", "yess"]))
+        self.assertIn("unknown option '-hh'; did you mean '-h'?",
+                      self.error(["-hh", "1"]))
+        self.assertIn("option -h given twice (1 and 2)",
+                      self.error(["-h", "1", "-h", "2"]))
+        self.assertIn("option -h = '-tet' is not a decimal number",
+                      self.error(["-h", "-tet"]))
+
+    def testNoOptionsDeclared(self):
+        self.assertEqual(ao.parse({}, []), {})
+        with self.assertRaises(ao.OptionError) as c:
+            ao.parse({}, ["-endTime", "1e-9"])
+        self.assertEqual(str(c.exception),
+                         "takes no options (given: -endTime 1e-9)")
+
+    def testAssignmentsAreQuoted(self):
+        o = opts()
+        self.assertEqual(ao.assignments(o, {"-h": "1e-6", "-tet": "yes"}),
+                         "h=1e-6\ntet=yes\n")
+        # a choice word with shell characters could never pass, but the
+        # assignment quotes whatever it prints
+        self.assertEqual(ao.assignments(o, {"-filter": "a b;$(x)"}),
+                         "filter='a b;$(x)'\n")
+
+    def testBadDeclaration(self):
+        for d in ("-h h", "-h 1h number(0,inf) m", "-h h number<0,1> m",
+                  "-h h number(0,1) m\n-h h number(0,1) m"):
+            with self.assertRaises(ValueError):
+                ao.declaration(d)
+
+
+class Interval(unittest.TestCase):
+
+    def testEnds(self):
+        r = ranges.Interval("(0,1]")
+        self.assertEqual(str(r), "(0, 1]")
+        self.assertNotIn(0, r)
+        self.assertIn(1, r)
+        self.assertIn(1e-300, r)
+        r = ranges.Interval("[1, inf)")
+        self.assertIn(1, r)
+        self.assertIn(1e300, r)
+        self.assertNotIn(float("inf"), r)
+        self.assertNotIn(float("nan"), ranges.Interval("(-inf, inf)"))
+        for bad in ("0, 1", "(0; 1)", "(a, 1)", "<0, 1>"):
+            with self.assertRaises(ValueError):
+                ranges.Interval(bad)
+
+
+class Calc(unittest.TestCase):
+
+    def testValuesAreNumbers(self):
+        self.assertAlmostEqual(ao.calc("cell*0.8", ["cell=1e-6"]), 8e-7)
+        self.assertEqual(ao.calc("'20e-6' if Z > 30e-6 else ''",
+                                 ["Z=100e-6"]), "20e-6")
+        for v in ("abc", "30e-6*2", "nan", "1e400"):
+            with self.assertRaises(ao.OptionError):
+                ao.calc("Z*2", ["Z=" + v])
+
+
+class Record(TempDirTestCase):
+
+    def run_(self, argv):
+        o, results = ao.declaration(DECL)
+        cwd = os.getcwd()
+        os.chdir(self.tmp)
+        try:
+            g = ao.parse(o, argv)
+            ao.checkRecord(o, g, ".allrunOptions", results)
+        finally:
+            os.chdir(cwd)
+
+    def testChangedOptionRefused(self):
+        self.run_(["-h", "0.5e-6", "-noRun"])
+        self.write("log.cellMesh", "")
+        # the same options (another spelling of the number, without the
+        # options that do not change the results): goes on
+        self.run_(["-h", "5e-7"])
+        with self.assertRaises(ao.OptionError) as c:
+            self.run_(["-h", "0.4e-6"])
+        self.assertIn("-h 0.5e-6 then, 0.4e-6 now", str(c.exception))
+        self.assertIn("./Allclean", str(c.exception))
+        with self.assertRaises(ao.OptionError) as c:
+            self.run_(["-h", "0.5e-6", "-tet"])
+        self.assertIn("-tet not given (default) then, yes now",
+                      str(c.exception))
+        with open(os.path.join(self.tmp, ".allrunOptions")) as f:
+            self.assertEqual(json.load(f)["options"], {"-h": "0.5e-6"})
+
+    def testResultsWithoutRecordRefused(self):
+        self.write("log.cellMesh", "")
+        with self.assertRaises(ao.OptionError) as c:
+            self.run_([])
+        self.assertIn("log.cellMesh", str(c.exception))
+        self.assertFalse(os.path.exists(
+            os.path.join(self.tmp, ".allrunOptions")))
+
+    def testRecordWithoutResultsReplaced(self):
+        # the earlier run stopped before its first step
+        self.run_(["-h", "0.5e-6"])
+        self.run_(["-h", "0.4e-6"])
+        with open(os.path.join(self.tmp, ".allrunOptions")) as f:
+            self.assertEqual(json.load(f)["options"], {"-h": "0.4e-6"})
+
+    def testUnreadableRecord(self):
+        self.write("log.cellMesh", "")
+        self.write(".allrunOptions", "{not json")
+        with self.assertRaises(ao.OptionError) as c:
+            self.run_([])
+        self.assertIn("not readable", str(c.exception))
+
+
+class Shell(TempDirTestCase):
+    """etc/RunFunctions allrunOptions in a script: the variables set, an
+    error exits 1 before the script's next line."""
+
+    def script(self, args):
+        p = self.write("Allrun", """. "%s/etc/RunFunctions"
+h=default
+allrunOptions "" "$@" <<'OPTIONS'
+-h  h  number(0,inf)  m
+OPTIONS
+echo "h=$h"
+""" % ROOT)
+        return subprocess.run(["bash", p] + args, capture_output=True,
+                              text=True, timeout=30, cwd=self.tmp, env=dict(
+                                  os.environ, PYTHONPATH=os.path.join(
+                                      ROOT, "src/python")))
+
+    def testShell(self):
+        r = self.script(["-h", "1e-6"])
+        self.assertEqual((r.returncode, r.stdout), (0, "h=1e-6\n"))
+        r = self.script([])
+        self.assertEqual((r.returncode, r.stdout), (0, "h=default\n"))
+        r = self.script(["-h"])
+        self.assertEqual((r.returncode, r.stdout), (1, ""))
+        self.assertIn("Allrun: error: option -h needs a value", r.stderr)
+        r = self.script(["-h", "$(touch x)"])
+        self.assertEqual(r.returncode, 1)
+        self.assertFalse(os.path.exists(os.path.join(self.tmp, "x")))
+
+
+if __name__ == "__main__":
+    unittest.main()
