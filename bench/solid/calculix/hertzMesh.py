@@ -72,8 +72,12 @@ def writeGmsh(path, nodes, quads, bottom, left, top):
 
 
 def writeCalculix(path, geo, nodes, quads, bottom, left, top, slope,
-                  nSteps, element="CAX8R"):
+                  nSteps, element="CAX8R", printTimes=None):
     """slope: penalty of the linear pressure-overclosure law [Pa/um].
+
+    printTimes: step times (fractions of geo.depth) at which the increments
+    end exactly and the reaction is printed (*TIME POINTS); None: every
+    increment.
 
     element CAX4 (linear, full integration: locks at K/mu = 1e3, kept to
     show it) or CAX8R (quadratic serendipity, reduced integration, the
@@ -180,12 +184,16 @@ def writeCalculix(path, geo, nodes, quads, bottom, left, top, slope,
     w("BOTTOM, 1, 2, 0.")
     w("AXIS, 1, 1, 0.")
     w("DRIVE, 1, 1, 0.")
+    if printTimes:
+        w("*TIME POINTS, NAME=PRINTED")
+        w(", ".join(f"{t:.15g}" for t in printTimes))
     w("*STEP, NLGEOM, INC=1000")
     w("*STATIC")
     w(f"{1/nSteps:.10g}, 1., 1e-6, {1/nSteps:.10g}")
     w("*BOUNDARY")
     w(f"DRIVE, 2, 2, {-geo.depth:.15g}")
-    w("*NODE PRINT, NSET=DRIVE, TOTALS=ONLY")
+    w("*NODE PRINT, NSET=DRIVE, TOTALS=ONLY"
+      + (", TIME POINTS=PRINTED" if printTimes else ""))
     w("RF")
     w("*END STEP")
     with open(path, "w") as f:

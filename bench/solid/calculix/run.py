@@ -92,7 +92,7 @@ def build(out):
     if not os.path.exists(os.path.join(LIB, "libsolid.so")):
         raise RuntimeError(f"no libsolid.so in {LIB}: run ./Allwmake first")
     subprocess.run(["g++", "-O3", "-DNDEBUG", "-std=c++17",
-                    "-I" + os.path.join(ROOT, "src", "solid"),
+                    "-I" + os.path.join(ROOT, "src", "solid", "lnInclude"),
                     "-I" + os.path.join(ROOT, "src", "eos"),
                     "-I/usr/include/eigen3", src, "-L" + LIB, "-lsolid",
                     "-Wl,-rpath," + LIB, "-o", exe], check=True)
