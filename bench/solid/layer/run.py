@@ -24,7 +24,8 @@ interrupted run continues where it stopped. Cost on the project machine
 (2 cores shared with other jobs, load 6-9 during the runs of
 docs/benchmarks/solidLayerContact.md): about 2 h 30 min wall in all,
 CalculiX at n = 80 alone 48 min (545 s CPU), each FEniCS level-2 run about
-13 min, each level-3 run (0.1 um only) about 10 min, ours at 160 x 64
+13 min, each level-3 run (0.1 um only) about 10 min, level 4 (0.1 um only)
+about 16-18 min, ours at 160 x 64
 exactly incompressible 11 min; --quick (the two coarsest meshes of each
 code, the 0.1 um ladder to level 2) some minutes.
 
@@ -65,7 +66,7 @@ PENALTY = 1e4                   # FEniCS penalty k (and 4k) [Pa/um]
 ASPECT = (5, 2)                 # n : m (radial : vertical cells)
 
 LADDER = {"full": dict(ours=[20, 40, 80, 160], ccx=[20, 40, 80],
-                       fenics=[0, 1, 2], fenicsK=[0, 1], shallow=[3],
+                       fenics=[0, 1, 2], fenicsK=[0, 1], shallow=[3, 4],
                        bulk=[1e2, 1e4], bulkN=80, slopes=[1e4, 3e4]),
           "quick": dict(ours=[20, 40], ccx=[20], fenics=[0, 1],
                         fenicsK=[0, 1], shallow=[2], bulk=[1e2], bulkN=40,
@@ -368,7 +369,9 @@ def report(size, start, ours, bulk, fen, fenK, shallow, ccx, slopes, lad):
       f"(K = inf: exactly incompressible; K = 1e3 mu = {KC:.0f} Pa: the "
       "CalculiX material, NEO HOOKE C10 = mu/2, D1 = 2/K). All meshes are "
       "the graded map of bench/solid/layer/layerMesh.py (cells uniform in "
-      f"r <= {R_FINE} um, the contact edge is at 1.3-7.6 um; cells at the "
+      f"r <= {R_FINE} um, the contact edge is at "
+      f"{fen[-1]['b']['radius'][0]:.1f}-{fen[-1]['b']['radius'][-1]:.1f} um; "
+      "cells at the "
       f"top 3x smaller than at the bottom), n x m cells with n:m = "
       f"{ASPECT[0]}:{ASPECT[1]}; ours and CalculiX on the same corner nodes. "
       "mu = 13.33 Pa as issue 20 states it (the tutorials' nucleus has "
