@@ -21,7 +21,8 @@ Foam::indentationInput::indentationInput
 :
     dict_(indenterProperties),
     contactPatch_(),
-    continueRun_(false)
+    continueRun_(false),
+    endTime_(-1)
 {
     using foamTools::readInRange;
     using foamTools::readInRangeOrDefault;
@@ -64,7 +65,56 @@ Foam::indentationInput::indentationInput
         d, "forceTargetTolerance", "", 0, 1, false, 0.01
     );
 
+    // The penetration the contact accepts must be small against the depth
+    // change of a step: tolerance 1e3 m (or 0.5 m, inside (0, 1]) let the
+    // sphere sink into the cell without a contact force, silently (the
+    // forces a fraction of the real ones; issue 19)
+    {
+        const scalar hi = 0.1*settings_.maxDepthIncrement;
+        if (sphere_.tolerance > hi)
+        {
+            FatalIOErrorInFunction(d)
+                << "entry 'tolerance' = " << sphere_.tolerance << " m is "
+                << "outside the valid range (0, " << hi << "] m: at most a "
+                << "tenth of maxDepthIncrement (" << settings_.maxDepthIncrement
+                << " m); a larger penetration lets the sphere sink into the "
+                << "cell without its contact force" << exit(FatalIOError);
+        }
+    }
+
     protocol_ = std::make_shared<solid::IndentationProtocol>(readProtocol());
+
+    // The table starts at 0 s: a startTime other than 0 in controlDict was
+    // taken by OpenFOAM's Time and ignored by the table (issue 19). A
+    // restart continues from restart.h5 (startFrom latestTime), not from
+    // startTime
+    if (controlDict.found("startTime"))
+    {
+        const scalar t0 = readInRange<scalar>
+        (
+            controlDict, "startTime", "s", -GREAT, GREAT, true
+        );
+        if (t0 != 0)
+        {
+            FatalIOErrorInFunction(controlDict)
+                << "entry 'startTime' = " << t0 << " s is outside the valid "
+                << "range [0, 0] s: cellIndentationFoam starts the loading "
+                << "table (constant/indenterProperties, entry 'protocol') "
+                << "at 0 s; a run continues from its checkpoint with "
+                << "startFrom latestTime, not from a startTime"
+                << exit(FatalIOError);
+        }
+    }
+    // endTime: the table decides the end of the run (its last row); an
+    // endTime of controlDict is only OpenFOAM's Time's, printed with the
+    // table (addContact) when it differs
+    if (controlDict.found("endTime"))
+    {
+        endTime_ = readInRange<scalar>
+        (
+            controlDict, "endTime", "s", 0, GREAT, true
+        );
+    }
 
     settings_.writeInterval = readInRange<scalar>
     (
@@ -309,6 +359,46 @@ Foam::indentationInput::addContact(solid::Model& model) const
             }
         }
     }
+    // The sphere must be resolved by the contact patch's faces: at the
+    // deepest depth of the table the contact radius reaches past the faces
+    // at the top (a radius of 1e-12 m touched one node, silently; issue 19)
+    {
+        const label top = mesh.dim() - 1;
+        scalar h = 0;
+        for (const auto& f : mesh.faceSet(contactPatch_))
+        {
+            bool atTop = false;
+            for (int n : f) atTop = atTop || mesh.X[n](top) == zTop;
+            if (!atTop) continue;
+            for (std::size_t i = 0; i < f.size(); ++i)
+            {
+                const solid::Vec3 e =
+                    mesh.X[f[(i + 1) % f.size()]] - mesh.X[f[i]];
+                h = max(h, scalar(e.norm()));
+            }
+        }
+        scalar depth = 0;
+        for (std::size_t i = 0; i < protocol_->rows().size(); ++i)
+        {
+            depth = max(depth, protocol_->depth(protocol_->rowEnd(i)));
+        }
+        const scalar R = sphere_.radius;
+        const scalar a = depth >= R ? R : std::sqrt(depth*(2*R - depth));
+        if (depth > 0 && a < h)
+        {
+            // the smallest radius whose contact reaches h at this depth
+            const scalar rMin = 0.5*(h*h/depth + depth);
+            FatalIOErrorInFunction(dict_)
+                << "entry 'radius' = " << R << " m is outside the valid "
+                << "range [" << rMin << ", 1] m for this mesh and table: at "
+                << "the table's deepest depth, " << depth << " m, the "
+                << "contact radius would be " << a << " m, smaller than the "
+                << "faces of the contact patch '" << contactPatch_ << "' at "
+                << "its top (" << h << " m): the contact would be one node."
+                << " Use a larger sphere, or a finer mesh under the contact"
+                << " (cellMesh: contactSize)" << exit(FatalIOError);
+        }
+    }
     solid::RigidSphereSettings sphere(sphere_);
     sphere.centre0 = mesh.axisymmetric()
         ? solid::Vec3(0, zTop + sphere.radius, 0)
@@ -352,7 +442,21 @@ Foam::indentationInput::addContact(solid::Model& model) const
         Info<< " (stage " << protocol_->rows()[0].stage << " ends at "
             << settings_.forceTarget << " N)";
     }
-    Info<< nl << endl;
+    Info<< nl;
+    if (endTime_ >= 0 && endTime_ != protocol_->endTime())
+    {
+        // The table decides; endTime is only OpenFOAM's Time's
+        Info<< "Note: the run ends with the loading table at "
+            << protocol_->endTime() << " s";
+        if (settings_.forceTarget > 0)
+        {
+            Info<< " (at most: the first row ends at its force)";
+        }
+        Info<< ", not at system/controlDict's endTime " << endTime_
+            << " s (not used by cellIndentationFoam: shorten or lengthen"
+            << " the table, entry 'protocol', to change the run)" << nl;
+    }
+    Info<< endl;
     return contact;
 }
 

@@ -457,7 +457,13 @@ TEST(couplingScheme, badDictionariesNameTheEntry)
         },
         {
             "scheme aitken; tolerance -1e-6;",
-            {"entry 'tolerance' = -1e-06", "(0, inf)"}
+            {"entry 'tolerance' = -1e-06", "(0, 0.1]"}
+        },
+        {
+            // a relative residual: 1e3 made every first pass converge
+            // (issue 19)
+            "scheme IQNILS; tolerance 1e3;",
+            {"entry 'tolerance' = 1000", "(0, 0.1]"}
         },
         {
             "scheme robin; velocityScale 0;",

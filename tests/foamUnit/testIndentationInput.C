@@ -185,7 +185,8 @@ TEST(indentationInput, defaultsAndEveryDigit)
 TEST(indentationInput, sphereAboveTheContactSet)
 {
     foamUnit::testCase tc("indentationInput");
-    const indentationInput in(indenterProperties(tc), controlDict(tc));
+    const dictionary ip(indenterProperties(tc));
+    const indentationInput in(ip, controlDict(tc));
     std::unique_ptr<solid::Model> model = block();
     const auto contact = in.addContact(*model);
 
@@ -216,6 +217,10 @@ TEST(indentationInput, badEntries)
         {"holdGrowht 2;", {"unknown entry 'holdGrowht' in the top level;"
             " did you mean 'holdGrowth'?"}},
         {"tolerance 2;", {"entry 'tolerance' = 2 m", "(0, 1] m"}},
+        // a penetration larger than a tenth of the depth step (issue 19:
+        // accepted up to 1 m)
+        {"tolerance 2e-8;", {"entry 'tolerance' = 2e-08 m", "(0, 1e-08] m",
+            "maxDepthIncrement"}},
         {"penaltyFactor 0;", {"entry 'penaltyFactor' = 0 is", "range (0, "}},
         {"maxDepthIncrement 0;", {"'maxDepthIncrement' = 0 m", "(0, 1] m"}},
         {"holdDeltaT0 -1;", {"'holdDeltaT0' = -1 s is", "range (0, "}},
@@ -300,7 +305,14 @@ TEST(indentationInput, badControlDict)
         {"fieldWriteInterval 0; checkpointInterval 2.5;",
             "'checkpointInterval' = '2.5' is not an integer"},
         {"fieldWriteInterval 0; checkpointInterval often;",
-            "'checkpointInterval' = 'often' is not an integer"}
+            "'checkpointInterval' = 'often' is not an integer"},
+        // the table starts at 0 s (issue 19: startTime 5 was accepted)
+        {"fieldWriteInterval 0; startTime 5;",
+            "entry 'startTime' = 5 s is outside the valid range [0, 0] s"},
+        {"fieldWriteInterval 0; startTime -1e-3;",
+            "entry 'startTime' = -0.001 s is outside the valid range [0, 0]"},
+        {"fieldWriteInterval 0; endTime -1;",
+            "entry 'endTime' = -1 s is outside the valid range"}
     };
     for (const auto& c : cases)
     {
@@ -324,13 +336,47 @@ TEST(indentationInput, badControlDict)
 TEST(indentationInput, unknownContactSet)
 {
     foamUnit::testCase tc("indentationInput");
-    const indentationInput in
+    const dictionary ip
     (
-        indenterProperties(tc, "contactPatch outerSurfaces;"),
-        controlDict(tc)
+        indenterProperties(tc, "contactPatch outerSurfaces;")
     );
+    const indentationInput in(ip, controlDict(tc));
     std::unique_ptr<solid::Model> model = block();
     const std::string msg = ioError([&]() { in.addContact(*model); });
     EXPECT_NE(msg.find("entry 'contactPatch'"), std::string::npos) << msg;
     EXPECT_NE(msg.find("outerSurfaces"), std::string::npos) << msg;
+}
+
+
+TEST(indentationInput, sphereTooSmallForTheMesh)
+{
+    // The block's top faces are 10/6 um wide; the Usage example's table
+    // reaches 3.41 um: a radius of 1e-12 m (contact radius 2.6e-9 m) was
+    // accepted (issue 19), 22.5 um (11.9 um) is resolved
+    for (const char* radius : {"radius 1e-12;", "radius 0.3e-6;"})
+    {
+        foamUnit::testCase tc("indentationInput");
+        // the reader keeps a reference to its dictionary: kept alive here
+        const dictionary ip(indenterProperties(tc, radius));
+        const indentationInput in(ip, controlDict(tc));
+        std::unique_ptr<solid::Model> model = block();
+        fileName file;
+        const std::string msg =
+            ioError([&]() { in.addContact(*model); }, &file);
+        EXPECT_NE(msg.find("entry 'radius' = "), std::string::npos)
+            << radius << ": " << msg;
+        EXPECT_NE
+        (
+            msg.find("outside the valid range [2.112"),
+            std::string::npos
+        )   << radius << ": " << msg;
+        EXPECT_NE(msg.find("contact patch 'outerSurface'"), std::string::npos)
+            << radius << ": " << msg;
+        EXPECT_NE(file.find("indenterProperties"), std::string::npos) << file;
+    }
+    foamUnit::testCase tc("indentationInput");
+    const dictionary ip(indenterProperties(tc));
+    const indentationInput in(ip, controlDict(tc));
+    std::unique_ptr<solid::Model> model = block();
+    EXPECT_TRUE(ioError([&]() { in.addContact(*model); }).empty());
 }

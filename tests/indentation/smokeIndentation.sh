@@ -21,6 +21,12 @@ export MESH_SIZE=1.6 CONTACT_SIZE=0.8 MEMBRANE_N=24
 if grep -l "FOAM FATAL" log.* 2>/dev/null; then
     echo "smokeIndentation: FOAM error in the logs above"; exit 1
 fi
+# The loading table decides the end of the run; controlDict's endTime
+# (273.1 s) differs from the smoke table's end and is reported as not used
+# (issue 19: it was ignored without a word)
+grep -q "Note: the run ends with the loading table at 2.1 s.*, not at system/controlDict's endTime 273.1 s" \
+    log.cellIndentationFoam \
+    || { echo "smokeIndentation: no note on endTime in log.cellIndentationFoam"; exit 1; }
 ls indentation.png results.md fields_C1_i.png VTK/solid > /dev/null
 /usr/bin/python3 - <<'PY'
 from neuronFsi.postProcessing import readTable

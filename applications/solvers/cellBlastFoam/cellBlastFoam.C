@@ -58,10 +58,12 @@ int main(int argc, char *argv[])
     // tokenizer: every file of the case the run reads is scanned first,
     // naming the file, the line and the entry
     foamTools::checkNumbers(args);
+    // constant/polyMesh/boundary adding up to the faces of the mesh
+    foamTools::checkBoundaryFile(args);
     // controlDict: OpenFOAM's keywords and ours, each given once
     foamTools::checkControlDict
     (
-        args, {"adjustTimeStep", "maxCo", "maxDeltaT"}
+        args, {"adjustTimeStep", "maxCo", "maxDeltaT", "maxSteps"}
     );
     foamTools::writeGuard::discardIncompleteTimes(args);
     #include "createTime.H"
@@ -76,6 +78,28 @@ int main(int argc, char *argv[])
     dynamicFvMesh& mesh = meshPtr();
 
     #include "createFields.H"
+    // Probes and other function objects: types, keywords, fields
+    foamTools::checkFunctionObjects(runTime, mesh);
+    // The number of steps, at least: the steps are at most maxDeltaT with
+    // adjustTimeStep, else deltaT (a lower bound: the Courant and the
+    // solid's limits are known only once the coupling exists, which
+    // writes solid.h5; not estimated)
+    {
+        const dictionary& cd = runTime.controlDict();
+        const bool adjust = cd.getOrDefault<bool>("adjustTimeStep", false);
+        const scalar maxDeltaT = cd.getOrDefault<scalar>("maxDeltaT", GREAT);
+        if (adjust)
+        {
+            foamTools::checkStepCount(runTime, maxDeltaT, "maxDeltaT");
+        }
+        else
+        {
+            foamTools::checkStepCount
+            (
+                runTime, runTime.deltaTValue(), "deltaT"
+            );
+        }
+    }
 
     // A new start stops here, before the coupling writes, if it would
     // replace the results of an earlier run; a restart if its inputs are

@@ -69,6 +69,8 @@ int main(int argc, char *argv[])
     );
     const foamTools::caseLock lock(args);    // one run per case
     #include "createTime.H"
+    // No function objects run here: one in controlDict is an error
+    foamTools::checkFunctionObjects(runTime, runTime, true);
     #include "createFields.H"
 
     // Wall and CPU time: on a shared machine the CPU time of this process

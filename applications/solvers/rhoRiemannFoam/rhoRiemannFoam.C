@@ -60,10 +60,12 @@ int main(int argc, char *argv[])
     // tokenizer: every file of the case the run reads is scanned first,
     // naming the file, the line and the entry
     foamTools::checkNumbers(args);
+    // constant/polyMesh/boundary adding up to the faces of the mesh
+    foamTools::checkBoundaryFile(args);
     // controlDict: OpenFOAM's keywords and ours, each given once
     foamTools::checkControlDict
     (
-        args, {"adjustTimeStep", "maxCo", "maxDeltaT"}
+        args, {"adjustTimeStep", "maxCo", "maxDeltaT", "maxSteps"}
     );
     foamTools::writeGuard::discardIncompleteTimes(args);
     #include "createTime.H"
@@ -77,6 +79,25 @@ int main(int argc, char *argv[])
 
     #include "createTimeControls.H"
     foamTools::checkTimeControls(runTime, adjustTimeStep, maxCo, maxDeltaT);
+    // Probes and other function objects: types, keywords, fields
+    foamTools::checkFunctionObjects(runTime, mesh);
+    // The number of steps, estimated: deltaT, or with adjustTimeStep the
+    // Courant limit of the start state within maxDeltaT
+    if (adjustTimeStep)
+    {
+        fluid.fluxes();
+        const scalar Co = fluid.courantNumber(runTime.deltaTValue());
+        const scalar dtCo = maxCo*runTime.deltaTValue()/max(Co, SMALL);
+        OStringStream how;
+        how << "the smaller of maxDeltaT = " << maxDeltaT << " s and the "
+            << "Courant limit maxCo = " << maxCo << " of the start state, "
+            << dtCo << " s";
+        foamTools::checkStepCount(runTime, min(maxDeltaT, dtCo), how.str());
+    }
+    else
+    {
+        foamTools::checkStepCount(runTime, runTime.deltaTValue(), "deltaT");
+    }
 
     // Inputs read and checked; a new start stops here if it would replace
     // the results of an earlier run, a restart if its inputs are not those

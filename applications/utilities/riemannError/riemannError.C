@@ -68,6 +68,8 @@ int main(int argc, char *argv[])
     #include "setRootCase.H"
     foamTools::checkCasePath(args);    // a path OpenFOAM can hold
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
+    // no directory 'nan' or '1e999' for the Time to take for a time
+    foamTools::checkTimeDirectoryNames(args);
     // A number beyond a double's range is a sigFpe inside OpenFOAM's
     // tokenizer: refused first, naming the file and the entry
     foamTools::checkNumbers

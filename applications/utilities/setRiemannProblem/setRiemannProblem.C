@@ -30,6 +30,8 @@ int main(int argc, char *argv[])
     // tokenizer: every file of the case the run reads is scanned first,
     // naming the file, the line and the entry
     foamTools::checkNumbers(args);
+    // constant/polyMesh/boundary adding up to the faces of the mesh
+    foamTools::checkBoundaryFile(args);
 
     const riemannProblem problem(args.path());
 

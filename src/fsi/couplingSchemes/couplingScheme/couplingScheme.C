@@ -20,10 +20,12 @@ Foam::couplingScheme::couplingScheme(const dictionary& dict)
     ),
     tolerance_
     (
+        // A relative residual: 0.1 already lets a pass with a tenth of
+        // the interface velocity wrong count as converged; 1e3 made every
+        // first pass converge, silently (issue 19)
         foamTools::readInRangeOrDefault<scalar>
         (
-            dict, "tolerance", "", 0, foamTools::noUpperBound<scalar>(),
-            false, 1e-6
+            dict, "tolerance", "", 0, 0.1, false, 1e-6
         )
     ),
     velocityScale_
