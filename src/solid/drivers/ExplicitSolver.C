@@ -220,6 +220,9 @@ void solid::ExplicitSolver::addFilteredShearForce
     const int nen = mesh.nen(), dim = mesh.dim(), ne = mesh.nElements();
     const int ns = shearRate_[0].rows();
     Eigen::VectorXd ve(nen*dim);
+    // Per-element rate vectors (ns <= 6): on the stack, not allocated in
+    // the element loops of every step
+    using Rate = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
 
     // Element rates d_e and their w-weighted averages at the nodes
     Eigen::MatrixXd d(ns, ne);
@@ -246,7 +249,7 @@ void solid::ExplicitSolver::addFilteredShearForce
     for (int e = 0; e < ne; ++e)
     {
         const int* en = mesh.element(e);
-        Eigen::VectorXd mean(Eigen::VectorXd::Zero(ns));
+        Rate mean(Rate::Zero(ns));
         for (int a = 0; a < nen; ++a) mean += nodal.col(en[a]);
         s.col(e) = shearWeight_[e]*(d.col(e) - mean/nen);
         for (int a = 0; a < nen; ++a)
@@ -259,7 +262,7 @@ void solid::ExplicitSolver::addFilteredShearForce
     for (int e = 0; e < ne; ++e)
     {
         const int* en = mesh.element(e);
-        Eigen::VectorXd g = s.col(e);
+        Rate g = s.col(e);
         for (int a = 0; a < nen; ++a)
         {
             g -= shearWeight_[e]*back.col(en[a]);
