@@ -79,6 +79,28 @@ class FoamField(TempDirTestCase):
             f.write(binary)
         np.testing.assert_array_equal(foamField.points(path), x)
 
+    def testBinaryFields(self):
+        x = [[0.25, -1e-6, 3.0], [1e-6, 2.5e-6, -3e-6], [7, 8, 9]]
+        head = (HEAD % ("binary", "volVectorField", "C")
+                + "dimensions [0 1 0 0 0 0 0];\n\ninternalField   "
+                  "nonuniform List<vector> 3(").encode()
+        body = struct.pack("<9d", *[v for q in x for v in q])
+        path = self.write("C", "")
+        with open(path, "wb") as f:
+            f.write(head + body + b");\nboundaryField { }\n")
+        np.testing.assert_array_equal(foamField.internalField(path), x)
+        with open(path, "wb") as f:
+            f.write(head + body[:40])
+        with self.assertRaisesRegex(foamField.FieldError,
+                                    r"/C: internalField cut short"):
+            foamField.internalField(path)
+        scalar = (HEAD % ("binary", "volScalarField", "V")
+                  + "internalField nonuniform List<scalar> 2\n(").encode()
+        with open(path, "wb") as f:
+            f.write(scalar + struct.pack("<2d", 1.5, -2) + b");\n")
+        np.testing.assert_array_equal(foamField.internalField(path),
+                                      [1.5, -2])
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -5,6 +5,7 @@
 #include "MeshObject.H"
 #include "pointMesh.H"
 #include "lduMesh.H"
+#include "processorPolyPatch.H"
 #include "volFields.H"
 #include "surfaceFields.H"
 
@@ -284,8 +285,10 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
         else
         {
             const label patchi = pbm.whichPatch(facei);
-            if (!wbf[patchi].size())
+            if (!wbf[patchi].size() || pbm[patchi].coupled())
             {
+                // A processor patch's factors need the other side's
+                // geometry: updateProcessorFactors, after the exchange
                 continue;
             }
             const label i = facei - pbm[patchi].start();
@@ -301,11 +304,87 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
 }
 
 
+void Foam::bandMeshMotion::updateProcessorFactors()
+{
+    // surfaceInterpolation::makeWeights, makeDeltaCoeffs,
+    // makeNonOrthDeltaCoeffs and makeNonOrthCorrectionVectors on the
+    // processor patches, with the neighbour geometry just exchanged
+    surfaceScalarField& w = const_cast<surfaceScalarField&>(mesh_.weights());
+    surfaceScalarField& dc =
+        const_cast<surfaceScalarField&>(mesh_.deltaCoeffs());
+    surfaceScalarField& nodc =
+        const_cast<surfaceScalarField&>(mesh_.nonOrthDeltaCoeffs());
+    surfaceVectorField& corr =
+        const_cast<surfaceVectorField&>(mesh_.nonOrthCorrectionVectors());
+    const surfaceVectorField& Sf = mesh_.Sf();
+    const surfaceScalarField& magSf = mesh_.magSf();
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    if (!Pstream::parRun())
+    {
+        return;
+    }
+
+    // fvMesh's sliced geometric fields keep copies, not slices, on
+    // processor patches (SlicedGeometricField's preserveCouples): Sf and
+    // Cf hold the patch's face areas and centres as they were made, C the
+    // other side's cell centres (evaluated when it is made)
+    surfaceVectorField& Sf0 = const_cast<surfaceVectorField&>(mesh_.Sf());
+    surfaceVectorField& Cf0 = const_cast<surfaceVectorField&>(mesh_.Cf());
+    for (const label patchi : processorPatches_)
+    {
+        Sf0.boundaryFieldRef()[patchi] =
+            pbm[patchi].patchSlice(mesh_.faceAreas());
+        Cf0.boundaryFieldRef()[patchi] =
+            pbm[patchi].patchSlice(mesh_.faceCentres());
+    }
+    const_cast<volVectorField&>(mesh_.C()).correctBoundaryConditions();
+
+    for (const label patchi : processorPatches_)
+    {
+        const fvPatch& p = mesh_.boundary()[patchi];
+        {
+            // processorFvPatch::makeWeights (protected), the same
+            // operations: the face normals point the other way on the
+            // other side
+            const processorPolyPatch& pp =
+                refCast<const processorPolyPatch>(pbm[patchi]);
+            const scalarField neighbFaceCentresCn
+            (
+                (
+                    pp.neighbFaceAreas()
+                   /(mag(pp.neighbFaceAreas()) + VSMALL)
+                )
+              & (pp.neighbFaceCentres() - pp.neighbFaceCellCentres())
+            );
+            w.boundaryFieldRef()[patchi] =
+                neighbFaceCentresCn
+               /((p.nf() & (p.Cf() - p.Cn())) + neighbFaceCentresCn);
+        }
+        const vectorField patchDeltas(p.delta());
+        scalarField& dcp = dc.boundaryFieldRef()[patchi];
+        scalarField& nodcp = nodc.boundaryFieldRef()[patchi];
+        vectorField& corrp = corr.boundaryFieldRef()[patchi];
+        forAll(p, i)
+        {
+            const vector& delta = patchDeltas[i];
+            dcp[i] = 1.0/mag(delta);
+            const vector unitArea =
+                Sf.boundaryField()[patchi][i]/magSf.boundaryField()[patchi][i];
+            nodcp[i] = 1.0/max(unitArea & delta, 0.05*mag(delta));
+            corrp[i] = unitArea - delta*nodcp[i];
+        }
+    }
+}
+
+
 void Foam::bandMeshMotion::notify()
 {
-    // As polyMesh::movePoints after the geometry
+    // As polyMesh::movePoints after the geometry (on a processor patch:
+    // the exchange of face centres, areas and cell centres with the
+    // other side)
     const pointField& points = mesh_.points();
     const_cast<polyBoundaryMesh&>(mesh_.boundaryMesh()).movePoints(points);
+    updateProcessorFactors();
     const_cast<pointZoneMesh&>(mesh_.pointZones()).movePoints(points);
     const_cast<faceZoneMesh&>(mesh_.faceZones()).movePoints(points);
     const_cast<cellZoneMesh&>(mesh_.cellZones()).movePoints(points);
@@ -379,15 +458,30 @@ Foam::bandMeshMotion::bandMeshMotion
     }
     interpFaces_ = cellsFaces.toc();
 
-    // A coupled patch's geometry is exchanged with its other side: those
-    // touching the band's cells take the whole update
+    // Processor patches: their interpolation factors use the other side's
+    // cell centres, which the band of either side may move, so all of
+    // them are updated after each exchange (updateProcessorFactors; a few
+    // thousand faces). Other coupled patches (cyclic, AMI: transforms and
+    // weights of their own) touching the band's cells take the whole
+    // update.
     const polyBoundaryMesh& pbm = mesh.boundaryMesh();
+    forAll(pbm, patchi)
+    {
+        if (isA<processorPolyPatch>(pbm[patchi]))
+        {
+            processorPatches_.append(patchi);
+        }
+    }
     for (const label facei : interpFaces_)
     {
         if (facei >= mesh.nInternalFaces())
         {
             const label patchi = pbm.whichPatch(facei);
-            if (pbm[patchi].coupled())
+            if
+            (
+                pbm[patchi].coupled()
+             && !isA<processorPolyPatch>(pbm[patchi])
+            )
             {
                 whole_ = true;
             }

@@ -13,10 +13,28 @@ class FieldError(Exception):
 
 
 def internalField(path):
-    """The internal field of an ascii volField file: an array of n values
-    (scalar) or n x 3 (vector)."""
-    with open(path) as f:
-        s = f.read()
+    """The internal field of a volField file, ascii or binary: an array
+    of n values (scalar) or n x 3 (vector)."""
+    with open(path, "rb") as f:
+        raw = f.read()
+    head = raw[:raw.index(b"}") + 1].decode(errors="replace")
+    if re.search(r"format\s+binary", head):
+        m = re.search(rb"internalField\s+nonuniform\s+List<(\w+)>\s*"
+                      rb"(\d+)\s*\(", raw)
+        if m is None:
+            raise FieldError(f"{path}: no nonuniform internalField")
+        kind, n = m.group(1).decode(), int(m.group(2))
+        width = {"scalar": 1, "vector": 3}.get(kind)
+        if width is None:
+            raise FieldError(f"{path}: internalField of {kind}: scalar or "
+                             "vector wanted")
+        data = raw[m.end():m.end() + 8*width*n]
+        if len(data) != 8*width*n:
+            raise FieldError(f"{path}: internalField cut short ({len(data)} "
+                             f"of {8*width*n} bytes)")
+        v = np.frombuffer(data, dtype="<f8")
+        return v.copy() if width == 1 else v.reshape(n, 3).copy()
+    s = raw.decode()
     m = re.search(r"internalField\s+nonuniform\s+List<(\w+)>\s*\n?(\d+)\s*"
                   r"\n?\(\n(.*?)\n\)", s, re.S)
     if m is None:

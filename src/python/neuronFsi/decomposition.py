@@ -1,0 +1,111 @@
+"""Domain decomposition of the blast scenes into sectors about the cell's
+axis (decomposePar method manual).
+
+The work of a coupled step is not the fluid cells alone: the band of
+cells that moves with the interface (interfaceMotion, bandMeshMotion), the
+interface faces and the probes all lie around the cell, and OpenFOAM's
+simple or scotch methods split by cell count only. In the 3D quarter,
+simple (2 1 1) put the cell and nearly all of the band (6,005 of 6,407
+moving points) on rank 0. Equal angular sectors about the axis through
+the cell split the cell, its band and the water alike; for two ranks in
+the quarter (x, y >= 0) the two halves x > y and x < y are mirror images
+of each other when the mesh is (cellMesh's even O-grid and tensor grid
+are).
+
+The cell centres come from OpenFOAM (postProcess -func writeCellCentres,
+0/C); the labels go to constant/cellDecomposition, the dataFile of
+decomposePar's manual method."""
+
+import math
+import os
+
+import numpy as np
+
+from neuronFsi import foamField
+
+
+class DecompositionError(Exception):
+    """Inputs that cannot be decomposed; the message names them."""
+
+
+def sectors(centres, n, origin=(0.0, 0.0, 0.0), axis=(0.0, 0.0, 1.0)):
+    """Processor of each cell: n sectors of equal angle about the axis
+    through origin along axis, over the range of angles the cells span
+    (the quarter: 90 degrees; a whole box: 360). Cells on the axis go to
+    sector 0. centres: m x 3 [m]; returns m labels in [0, n)."""
+    if int(n) != n or n < 1:
+        raise DecompositionError(f"number of sectors {n}: an integer >= 1 "
+                                 "wanted")
+    c = np.asarray(centres, float)
+    if c.ndim != 2 or c.shape[1] != 3 or len(c) == 0:
+        raise DecompositionError("cell centres: a non-empty m x 3 array "
+                                 "wanted")
+    if not np.all(np.isfinite(c)):
+        raise DecompositionError("cell centres: not all finite")
+    a = np.asarray(axis, float)
+    if not (np.linalg.norm(a) > 0):
+        raise DecompositionError(f"axis {tuple(axis)}: a non-zero vector "
+                                 "wanted")
+    a = a/np.linalg.norm(a)
+    # An orthonormal frame (e1, e2, a); e1 along the coordinate axis least
+    # aligned with a
+    k = int(np.argmin(np.abs(a)))
+    e1 = np.zeros(3)
+    e1[k] = 1.0
+    e1 -= (e1 @ a)*a
+    e1 /= np.linalg.norm(e1)
+    e2 = np.cross(a, e1)
+    r = c - np.asarray(origin, float)
+    theta = np.arctan2(r @ e2, r @ e1)
+    if n == 1:
+        return np.zeros(len(c), int)
+    lo, hi = theta.min(), theta.max()
+    # A whole turn: start the sectors at -pi so that the cut is the plane
+    # through the axis and -e1 (no sector wraps around)
+    if hi - lo > 1.5*math.pi:
+        lo, hi = -math.pi, math.pi
+    span = hi - lo
+    if not (span > 0):
+        return np.zeros(len(c), int)
+    return np.minimum(((theta - lo)/span*n).astype(int), n - 1)
+
+
+def writeManual(case, labels, name="cellDecomposition"):
+    """constant/<name>: the labelList decomposePar's manual method reads
+    (dataFile "<name>";)."""
+    labels = np.asarray(labels, int)
+    path = os.path.join(case, "constant", name)
+    lines = [
+        "FoamFile",
+        "{",
+        "    version     2.0;",
+        "    format      ascii;",
+        "    class       labelList;",
+        "    location    \"constant\";",
+        f"    object      {name};",
+        "}",
+        "",
+        str(len(labels)),
+        "(",
+    ]
+    lines += [str(int(v)) for v in labels]
+    lines += [")", ""]
+    tmp = path + ".tmp"
+    with open(tmp, "w") as f:
+        f.write("\n".join(lines))
+    os.replace(tmp, path)
+    return path
+
+
+def sectorDecomposition(case, n, origin=(0.0, 0.0, 0.0),
+                        axis=(0.0, 0.0, 1.0), centres="0/C"):
+    """Read the cell centres (<case>/<centres>, ascii, from postProcess
+    -func writeCellCentres), write constant/cellDecomposition with n
+    sectors; returns the cells per processor."""
+    c = foamField.internalField(os.path.join(case, centres))
+    if c.ndim != 2:
+        raise DecompositionError(f"{os.path.join(case, centres)}: cell "
+                                 "centres (a vector field) wanted")
+    labels = sectors(c, n, origin, axis)
+    writeManual(case, labels)
+    return np.bincount(labels, minlength=n)

@@ -1,0 +1,69 @@
+"""neuronFsi.decomposition: sectors about the cell's axis for decomposePar's
+manual method."""
+import os
+import unittest
+
+import numpy as np
+
+from fixtures import TempDirTestCase
+from neuronFsi import decomposition
+
+
+class Sectors(unittest.TestCase):
+
+    def testQuarterHalvesAreMirrorImages(self):
+        # A quarter grid symmetric about x = y: the halves x > y and x < y
+        # go to different ranks and have the same number of cells
+        g = np.linspace(0.5, 9.5, 10)
+        x, y, z = np.meshgrid(g, g, [1.0, 2.0], indexing="ij")
+        c = np.column_stack([x.ravel(), y.ravel(), z.ravel()])
+        labels = decomposition.sectors(c, 2)
+        off = c[:, 0] != c[:, 1]
+        np.testing.assert_array_equal(labels[off],
+                                      (c[off, 1] > c[off, 0]).astype(int))
+        self.assertEqual(np.sum(labels == 1), np.sum(labels == 0) + 20)
+        # the diagonal's cells (20) sit at the sector boundary
+        self.assertTrue(np.all(labels[~off] == 1))
+
+    def testWholeTurnAndAxis(self):
+        t = np.linspace(-np.pi + 0.1, np.pi - 0.1, 8)
+        c = np.column_stack([np.cos(t), np.sin(t), np.zeros(8)])
+        labels = decomposition.sectors(c, 4)
+        np.testing.assert_array_equal(labels, [0, 0, 1, 1, 2, 2, 3, 3])
+        # another axis: x; the angle in the (y, z) plane
+        labels = decomposition.sectors(c[:, [2, 0, 1]], 4, axis=(1, 0, 0))
+        self.assertEqual(sorted(np.bincount(labels)), [2, 2, 2, 2])
+        # one sector; a cell on the axis
+        np.testing.assert_array_equal(decomposition.sectors(c, 1), 0)
+        self.assertEqual(decomposition.sectors([[0, 0, 1], [1, 1, 0]],
+                                               2)[0], 0)
+
+    def testBadInput(self):
+        for n in (0, 1.5, -2):
+            with self.assertRaisesRegex(decomposition.DecompositionError,
+                                        "number of sectors"):
+                decomposition.sectors([[1, 0, 0]], n)
+        with self.assertRaisesRegex(decomposition.DecompositionError,
+                                    "axis"):
+            decomposition.sectors([[1, 0, 0]], 2, axis=(0, 0, 0))
+        with self.assertRaisesRegex(decomposition.DecompositionError,
+                                    "not all finite"):
+            decomposition.sectors([[np.nan, 0, 0]], 2)
+        with self.assertRaisesRegex(decomposition.DecompositionError,
+                                    "m x 3"):
+            decomposition.sectors(np.zeros((0, 3)), 2)
+
+
+class WriteManual(TempDirTestCase):
+
+    def testLabelList(self):
+        os.makedirs(os.path.join(self.tmp, "constant"))
+        path = decomposition.writeManual(self.tmp, [0, 1, 1])
+        with open(path) as f:
+            text = f.read()
+        self.assertIn("class       labelList;", text)
+        self.assertTrue(text.endswith("3\n(\n0\n1\n1\n)\n"))
+
+
+if __name__ == "__main__":
+    unittest.main()
