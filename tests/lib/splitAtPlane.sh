@@ -18,13 +18,10 @@ splitAtPlane()
             > /dev/null
         /usr/bin/python3 - "0/C$2" "$3" <<'PY'
 import sys
+from neuronFsi.decomposition import writeManual
 from neuronFsi.foamField import internalField
 c = internalField(sys.argv[1])
-with open("constant/cellDecomposition", "w") as f:
-    f.write("FoamFile { version 2.0; format ascii; class labelList; "
-            "object cellDecomposition; }\n%d\n(\n" % len(c))
-    f.write("\n".join("1" if v > float(sys.argv[2]) else "0" for v in c))
-    f.write("\n)\n")
+writeManual(".", (c > float(sys.argv[2])).astype(int))
 PY
         rm -f 0/C 0/Cx 0/Cy 0/Cz 0/V
         cat > system/decomposeParDict <<'DICT'

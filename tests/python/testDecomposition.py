@@ -21,9 +21,15 @@ class Sectors(unittest.TestCase):
         off = c[:, 0] != c[:, 1]
         np.testing.assert_array_equal(labels[off],
                                       (c[off, 1] > c[off, 0]).astype(int))
-        self.assertEqual(np.sum(labels == 1), np.sum(labels == 0) + 20)
-        # the diagonal's cells (20) sit at the sector boundary
-        self.assertTrue(np.all(labels[~off] == 1))
+        # the diagonal's 20 cells (at the sector boundary) split evenly
+        self.assertEqual(np.sum(labels == 1), np.sum(labels == 0))
+        # three ranks: equal counts (200 = 67 + 67 + 66), in angular order
+        labels = decomposition.sectors(c, 3)
+        self.assertEqual(sorted(np.bincount(labels)), [66, 67, 67])
+        theta = np.arctan2(c[:, 1], c[:, 0])
+        for k in range(2):
+            self.assertLessEqual(theta[labels == k].max(),
+                                 theta[labels == k + 1].min())
 
     def testWholeTurnAndAxis(self):
         t = np.linspace(-np.pi + 0.1, np.pi - 0.1, 8)
@@ -35,8 +41,8 @@ class Sectors(unittest.TestCase):
         self.assertEqual(sorted(np.bincount(labels)), [2, 2, 2, 2])
         # one sector; a cell on the axis
         np.testing.assert_array_equal(decomposition.sectors(c, 1), 0)
-        self.assertEqual(decomposition.sectors([[0, 0, 1], [1, 1, 0]],
-                                               2)[0], 0)
+        np.testing.assert_array_equal(
+            decomposition.sectors([[1, 1, 0], [0, 0, 1]], 2), [1, 0])
 
     def testBadInput(self):
         for n in (0, 1.5, -2):

@@ -16,7 +16,6 @@ The cell centres come from OpenFOAM (postProcess -func writeCellCentres,
 0/C); the labels go to constant/cellDecomposition, the dataFile of
 decomposePar's manual method."""
 
-import math
 import os
 
 import numpy as np
@@ -29,10 +28,10 @@ class DecompositionError(Exception):
 
 
 def sectors(centres, n, origin=(0.0, 0.0, 0.0), axis=(0.0, 0.0, 1.0)):
-    """Processor of each cell: n sectors of equal angle about the axis
-    through origin along axis, over the range of angles the cells span
-    (the quarter: 90 degrees; a whole box: 360). Cells on the axis go to
-    sector 0. centres: m x 3 [m]; returns m labels in [0, n)."""
+    """Processor of each cell: n sectors about the axis through origin
+    along axis, each with m/n of the m cells (to one), in the order of
+    the angle about the axis (the quarter: 0 to 90 degrees; a whole box:
+    -180 to 180). centres: m x 3 [m]; returns m labels in [0, n)."""
     if int(n) != n or n < 1:
         raise DecompositionError(f"number of sectors {n}: an integer >= 1 "
                                  "wanted")
@@ -57,17 +56,14 @@ def sectors(centres, n, origin=(0.0, 0.0, 0.0), axis=(0.0, 0.0, 1.0)):
     e2 = np.cross(a, e1)
     r = c - np.asarray(origin, float)
     theta = np.arctan2(r @ e2, r @ e1)
-    if n == 1:
-        return np.zeros(len(c), int)
-    lo, hi = theta.min(), theta.max()
-    # A whole turn: start the sectors at -pi so that the cut is the plane
-    # through the axis and -e1 (no sector wraps around)
-    if hi - lo > 1.5*math.pi:
-        lo, hi = -math.pi, math.pi
-    span = hi - lo
-    if not (span > 0):
-        return np.zeros(len(c), int)
-    return np.minimum(((theta - lo)/span*n).astype(int), n - 1)
+    # In angular order (ties, e.g. the cells on the quarter's diagonal, by
+    # cell index), n runs of equal cell count: equal sectors where the
+    # mesh is symmetric, and the same number of cells per rank where it
+    # is not quite (the angle -pi..pi: a whole turn is cut at -e1)
+    order = np.lexsort((np.arange(len(c)), theta))
+    labels = np.empty(len(c), int)
+    labels[order] = np.arange(len(c))*n//len(c)
+    return labels
 
 
 def writeManual(case, labels, name="cellDecomposition"):
