@@ -45,6 +45,7 @@ import os
 import shlex
 import shutil
 import sys
+import textwrap
 import time
 
 import numpy as np
@@ -55,7 +56,7 @@ from neuronFsi import (caseRuns, damageIndicators as di, logs, options,
 OUT = "postProcessing/pulseStudy"
 LABELS = {"pressure": "peak pressure", "vonMises": "peak von Mises stress",
           "strain": "peak largest principal Green-Lagrange strain",
-          "strainRate": "peak strain rate (window average)",
+          "strainRate": "peak strain rate",
           "temperatureRise": "peak temperature rise"}
 SCALE = {"Pa": (1e-6, "MPa"), "-": (1, "-"), "1/s": (1, "1/s"),
          "K": (1, "K")}
@@ -112,6 +113,7 @@ def rowOf(s, record):
     row = {"overpressure [Pa]": record["overpressure"],
            "duration [s]": record["duration"]}
     above = {}
+    atEnd = {}
     for target, d in ser["targets"].items():
         step = ser["interfaces"].get(target)
         for ind in di.INDICATORS:
@@ -120,7 +122,12 @@ def rowOf(s, record):
             if step is not None and ind in ("pressure", "vonMises"):
                 tt = np.array(step[0])
                 y = np.array(step[1 if ind == "pressure" else 2])
-            row["%s:%s [%s]" % (target, ind, di.UNITS[ind])] = di.peak(y)
+            col = "%s:%s [%s]" % (target, ind, di.UNITS[ind])
+            row[col] = di.peak(y)
+            # a peak that is the last value: still rising when the run ends
+            atEnd[col] = bool(np.isfinite(y[-1]) and y[-1] >= row[col]
+                              and np.nanmax(y[:-1], initial=-np.inf)
+                              < row[col])
             for th in s["thresholds"]:
                 if th["indicator"] == ind:
                     above["%s:timeAbove:%s [s]" % (target, th["name"])] = \
@@ -129,7 +136,7 @@ def rowOf(s, record):
     row.update(above)
     row["wall [s]"] = record["wall"]
     row["solver CPU [s]"] = record["cpu"]
-    return row
+    return row, atEnd
 
 
 def writeTable(s, out, rows):
@@ -164,54 +171,77 @@ def writeTable(s, out, rows):
     os.replace(tmp, os.path.join(out, "table.h5"))
 
 
-def _panel(ax, A, T, Z, title, unit, levels=()):
+def _panel(ax, A, T, Z, title, unit, levels=(), atEnd=None):
     """One map: Z [len(A), len(T)] over overpressure A [Pa] x duration T
-    [s]; threshold contours (value, name)."""
+    [s]; threshold contours (value, name, style) where the map crosses
+    them; atEnd [len(A), len(T)]: the points whose peak is the run's last
+    write, marked '*'."""
     import matplotlib.colors as mcolors
     x, y = np.array(A)/1e6, np.array(T)*1e9
     finite = Z[np.isfinite(Z)]
-    if finite.size == 0:
-        ax.text(0.5, 0.5, "none (no such field)", ha="center",
-                va="center", transform=ax.transAxes)
-        ax.set_title(title, fontsize=9)
-        return
-    norm = mcolors.Normalize(finite.min(), finite.max()) \
-        if finite.max() > finite.min() else None
-    if len(x) > 1 and len(y) > 1:
-        cs = ax.contourf(x, y, Z.T, 20, cmap="viridis", norm=norm)
-        for value, name, style in levels:
-            if finite.min() < value < finite.max():
-                c = ax.contour(x, y, Z.T, [value], colors="w",
-                               linestyles=style, linewidths=1.5)
-                ax.clabel(c, fmt={value: name}, fontsize=6)
-        ax.figure.colorbar(cs, ax=ax, label=unit)
-    pts = ax.scatter(np.repeat(x, len(y)), np.tile(y, len(x)),
-                     c=Z.ravel(), cmap="viridis", norm=norm,
-                     edgecolors="k", s=30)
-    if not (len(x) > 1 and len(y) > 1):
-        ax.figure.colorbar(pts, ax=ax, label=unit)
-    for i, a in enumerate(x):
-        for j, b in enumerate(y):
-            ax.annotate("%.3g" % Z[i, j], (a, b), fontsize=6,
-                        xytext=(3, 3), textcoords="offset points",
-                        color="k")
     ax.set_title(title, fontsize=9)
     ax.set_xlabel("overpressure [MPa]")
     ax.set_ylabel("positive-phase duration [ns]")
+    if finite.size == 0:
+        ax.text(0.5, 0.5, "none (no such field)", ha="center",
+                va="center", transform=ax.transAxes)
+        return
+    lo, hi = finite.min(), finite.max()
+    norm = mcolors.Normalize(lo, hi if hi > lo else lo + 1)
+    if len(x) > 1 and len(y) > 1:
+        ax.contourf(x, y, Z.T, 20, cmap="viridis", norm=norm)
+        for value, name, style in levels:
+            if lo < value < hi:
+                c = ax.contour(x, y, Z.T, [value], colors="w",
+                               linestyles=style, linewidths=1.5)
+                ax.clabel(c, fmt={value: name}, fontsize=6)
+    pts = ax.scatter(np.repeat(x, len(y)), np.tile(y, len(x)),
+                     c=Z.ravel(), cmap="viridis", norm=norm,
+                     edgecolors="k", s=30, clip_on=False, zorder=3)
+    ax.figure.colorbar(pts, ax=ax, label=unit)
+    for i, a in enumerate(x):
+        for j, b in enumerate(y):
+            mark = "*" if atEnd is not None and atEnd[i, j] else ""
+            right = i == len(x) - 1 and len(x) > 1
+            ax.annotate("%.3g%s" % (Z[i, j], mark), (a, b), fontsize=7,
+                        xytext=(-4 if right else 4, 4),
+                        ha="right" if right else "left",
+                        textcoords="offset points",
+                        color="k", zorder=4,
+                        bbox=dict(boxstyle="round,pad=0.1", fc="w",
+                                  alpha=0.7, lw=0))
+    # room around the grid for the points and their values
+    for lim, v in ((ax.set_xlim, x), (ax.set_ylim, y)):
+        pad = 0.08*(v.max() - v.min()) or 0.1*abs(v.max())
+        lim(v.min() - pad, v.max() + 0.5*pad if lim == ax.set_xlim
+            else v.max() + 1.5*pad)
 
 
-def writeMaps(s, out, rows, targets):
+def _figure(n):
+    import matplotlib.pyplot as plt
+    cols = min(n, 3)
+    rows = (n + cols - 1)//cols
+    fig, axs = plt.subplots(rows, cols, figsize=(4.6*cols, 3.9*rows),
+                            squeeze=False)
+    for ax in axs.flat[n:]:
+        ax.set_visible(False)
+    return fig, axs.flat
+
+
+def writeMaps(s, out, rows, targets, atEnd):
+    """map_<indicator>.png and timeAbove_<threshold>.png; atEnd: {column:
+    {label: whether its peak is the last write}}"""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     A, T = s["overpressure"], s["duration"]
     styles = ["-", "--", ":", "-."]
 
-    def grid(col):
+    def grid(col, values=None):
         Z = np.full((len(A), len(T)), math.nan)
         for r in rows:
-            Z[A.index(r["overpressure [Pa]"]),
-              T.index(r["duration [s]"])] = r[col]
+            i, j = A.index(r["overpressure [Pa]"]), T.index(r["duration [s]"])
+            Z[i, j] = r[col] if values is None else values.get(r["label"], 0)
         return Z
 
     written = []
@@ -219,27 +249,43 @@ def writeMaps(s, out, rows, targets):
     for ind in di.INDICATORS:
         unit = di.UNITS[ind]
         k, shown = SCALE[unit]
-        fig, axs = plt.subplots(1, n, figsize=(4.2*n, 3.6), squeeze=False)
+        fig, axs = _figure(n)
+        ths = [t for t in s["thresholds"] if t["indicator"] == ind]
         levels = [(th["value"]*k, th["name"], styles[i % 4])
-                  for i, th in enumerate(t for t in s["thresholds"]
-                                         if t["indicator"] == ind)]
-        for ax, target in zip(axs[0], targets):
-            _panel(ax, A, T, grid("%s:%s [%s]" % (target, ind, unit))*k,
-                   target, "[%s]" % shown, levels)
-        extra = "" if ind != "strainRate" else \
-            " over %g ns" % (s["window"]*1e9)
-        note = "; contours: " + ", ".join(n for _, n, _ in levels) \
-            if levels else ""
-        fig.suptitle("%s%s [%s]%s" % (LABELS[ind], extra, shown, note),
-                     fontsize=10)
+                  for i, th in enumerate(ths)]
+        marked = False
+        for ax, target in zip(axs, targets):
+            col = "%s:%s [%s]" % (target, ind, unit)
+            ends = grid(col, atEnd.get(col, {}))
+            marked |= bool(np.nansum(ends))
+            _panel(ax, A, T, grid(col)*k, target, "[%s]" % shown, levels,
+                   ends)
+        lines = ["%s%s [%s]" % (LABELS[ind], "" if ind != "strainRate"
+                                else " over a %g ns window"
+                                % (s["window"]*1e9), shown)]
+        if ths:
+            top = max(r["%s:%s [%s]" % (t, ind, unit)] for r in rows
+                      for t in targets
+                      if np.isfinite(r["%s:%s [%s]" % (t, ind, unit)]))
+            lines += textwrap.wrap("thresholds (white contours where the map "
+                                   "crosses them): " + ", ".join(
+                "%s %g [%s]%s" % (th["name"], th["value"], th["unit"],
+                                  " (not reached: the largest value here "
+                                  "is %.3g of it)" % (top/th["value"])
+                                  if th["value"] > top else "")
+                for th in ths), 110)
+        if marked:
+            lines.append("*: the peak is the run's last write (still "
+                         "rising at the end)")
+        fig.suptitle("\n".join(lines), fontsize=10)
         fig.tight_layout()
         p = os.path.join(out, "map_%s.png" % ind)
         fig.savefig(p, dpi=110)
         plt.close(fig)
         written.append(p)
     for th in s["thresholds"]:
-        fig, axs = plt.subplots(1, n, figsize=(4.2*n, 3.6), squeeze=False)
-        for ax, target in zip(axs[0], targets):
+        fig, axs = _figure(n)
+        for ax, target in zip(axs, targets):
             _panel(ax, A, T, grid("%s:timeAbove:%s [s]"
                                   % (target, th["name"]))*1e9,
                    target, "[ns]")
@@ -328,10 +374,23 @@ def main():
                 "finished points are kept, a new run runs the failed ones "
                 "again" % (len(failed), len(todo), "; ".join(
                     "%s: %s" % f for f in failed)))
-        rows = [rowOf(s, records[p["label"]]) for p in pts]
+        rows, atEnd = [], {}
+        for p in pts:
+            row, ends = rowOf(s, records[p["label"]])
+            rows.append(row)
+            for col, e in ends.items():
+                if e:
+                    atEnd.setdefault(col, {})[p["label"]] = True
         targets = list(records[pts[0]["label"]]["series"]["targets"])
         writeTable(s, out, rows)
-        maps = writeMaps(s, out, rows, targets)
+        for r, p in zip(rows, pts):
+            r["label"] = p["label"]
+        maps = writeMaps(s, out, rows, targets, atEnd)
+        if atEnd:
+            print("Peaks at the run's last write (still rising at its end: "
+                  "a later end time gives larger ones): " + "; ".join(
+                      "%s %s" % (c, " ".join(sorted(v)))
+                      for c, v in atEnd.items()))
         print("Written %s/table.{csv,h5} and %d maps (%s)" % (
             OUT, len(maps), " ".join(os.path.basename(m) for m in maps)))
         return 0
