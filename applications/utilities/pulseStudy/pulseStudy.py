@@ -217,6 +217,11 @@ def _panel(ax, A, T, Z, title, unit, levels=(), atEnd=None):
             else v.max() + 1.5*pad)
 
 
+def _percent(x):
+    """x as a percentage with 2 decimals, 0.00 for a rounding error"""
+    return ("%.2f" % (100*x)).replace("-0.00", "0.00")
+
+
 def _figure(n):
     import matplotlib.pyplot as plt
     cols = min(n, 3)
@@ -386,6 +391,23 @@ def main():
         for r, p in zip(rows, pts):
             r["label"] = p["label"]
         maps = writeMaps(s, out, rows, targets, atEnd)
+        # what the writes miss: the interfaces' peaks over the writes
+        # against those of every step
+        miss = {"pressure": [], "vonMises": []}
+        for p in pts:
+            ser = records[p["label"]]["series"]
+            for name, step in ser["interfaces"].items():
+                for k, ind in ((1, "pressure"), (2, "vonMises")):
+                    w = di.peak(np.array(ser["targets"][name][ind], float))
+                    miss[ind].append((1 - w/max(step[k]), p["label"], name))
+        if miss["pressure"]:
+            print("Sampling every %g s: the interface peaks over the writes "
+                  "are below those of every step by %s" % (
+                      s["sampleInterval"], ", ".join(
+                          "%s to %s %% (%s; largest: %s %s)" % (
+                              _percent(min(m)[0]), _percent(max(m)[0]), ind,
+                              max(m)[1], max(m)[2])
+                          for ind, m in miss.items())))
         if atEnd:
             print("Peaks at the run's last write (still rising at its end: "
                   "a later end time gives larger ones): " + "; ".join(
