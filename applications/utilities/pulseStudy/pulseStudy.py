@@ -360,6 +360,8 @@ def main():
                 r = runPoint(s, staging, p, p["inputs"], p["folder"], a.keep)
             except (caseRuns.RunError, di.IndicatorError, OSError,
                     postProcessing.ColumnFileError) as err:
+                if signals.stopped():       # ended by the stop, not failed
+                    return None
                 failed.append((p["label"], str(err)))
                 print("    %s: FAILED after %.1f s: %s" % (
                     p["label"], time.time() - t0, err), flush=True)
