@@ -229,8 +229,14 @@ def read(case):
             try:
                 decl[opt].check(_text(v))
             except allrunOptions.OptionError as err:
-                raise StudyError("%s: entry '%s': %g: %s"
-                                 % (path, key, v, err))
+                why = "" if opt != "-amplitude" else (
+                    " (a pulse outside it the scene cannot carry: tension "
+                    "(no cavitation; the water's Mie-Grueneisen law has no"
+                    " state below -rho0 C0^2/(4 s)), or a reflection at "
+                    "the substrate beyond the membrane's volumetric law: "
+                    "the header of %s/Allrun)" % base)
+                raise StudyError("%s: entry '%s': %g: %s%s"
+                                 % (path, key, v, err, why))
     return s
 
 
