@@ -127,8 +127,18 @@ makeTutorial() {
 }
 makePreview() { makeTutorial preview axisymmetricPreview; }
 makeQuarter() { makeTutorial quarter quarter3D; }
-for b in Fluid Solid Mesh Fsi H5 Blast Inflow Preview Quarter; do make$b; done
-for b in fluid solid mesh fsi h5 blast inflow preview quarter
+# study: tutorials/blast/pulseStudy as committed (its Allrun runs
+# pulseStudy on system/pulseStudyDict)
+makeStudy() {
+    local c=$bases/study t=$root/tutorials/blast/pulseStudy
+    mkdir -p "$c"
+    cp -r "$t"/{system,Allrun,Allclean} "$c"/
+}
+for b in Fluid Solid Mesh Fsi H5 Blast Inflow Preview Quarter Study
+do
+    make$b
+done
+for b in fluid solid mesh fsi h5 blast inflow preview quarter study
 do
     [ -d "$bases/$b" ] || { echo "badInput: base case $b not built"; exit 1; }
 done

@@ -17,13 +17,17 @@ import concurrent.futures, os, shutil, sys
 from neuronFsi import signals
 work = sys.argv[1]
 os.makedirs(os.path.join(work, "scratch"))
+def run(i):
+    rc = signals.call("sleep %s; true" % sys.argv[2], shell=True)
+    # the thread tells the stop from a failure of its run
+    sys.stderr.write("run ended: exit %d, stopped by %s\n"
+                     % (rc, signals.stopped()))
 with signals.stopOn("t"):
     try:
         # three runs on two threads (one waits), each a shell command
         # whose sleep is the shell's child (not exec'd)
         with concurrent.futures.ThreadPoolExecutor(2) as pool:
-            list(pool.map(lambda i: signals.call(
-                "sleep %s; true" % sys.argv[2], shell=True), range(3)))
+            list(pool.map(run, range(3)))
     finally:
         shutil.rmtree(os.path.join(work, "scratch"))
 print("not reached")
@@ -75,6 +79,7 @@ class StopOn(TempDirTestCase):
             self.assertNotIn("Traceback", err)
             self.assertIn("t: stopped by %s" % signal.Signals(signum).name,
                           err)
+            self.assertIn("run ended: exit -9, stopped by %d" % signum, err)
             self.assertEqual(out, "")
             self.assertEqual(left, [], "runs left running")
             self.assertFalse(os.path.exists(os.path.join(self.tmp,

@@ -47,15 +47,12 @@ Usage
 """
 
 import argparse
-import concurrent.futures
 import os
 import re
 import shutil
-import subprocess
 import sys
-import time
 
-from neuronFsi import foamDict, options, postProcessing, signals
+from neuronFsi import caseRuns, foamDict, options, postProcessing, signals
 
 
 class SweepError(Exception):
@@ -158,16 +155,10 @@ def run_one(case, copy, f, keys, value, outputs, command):
     p = os.path.join(copy, f)
     text = foamDict.set_entry(open(p).read(), keys, value, p)
     open(p, "w").write(text)
-    t0 = time.time()
-    with open(os.path.join(copy, "log.sweepCase"), "w") as log:
-        # ended, with what the shell started, on SIGTERM, SIGHUP, SIGINT
-        rc = signals.call(command, shell=True, cwd=copy, stdout=log,
-                          stderr=subprocess.STDOUT)
-    wall = time.time() - t0
-    if rc:
-        raise SweepError("value %s: '%s' failed (exit %d), see %s"
-                         % (value, command, rc,
-                            os.path.join(copy, "log.sweepCase")))
+    try:
+        wall = caseRuns.runIn(copy, command, "log.sweepCase")
+    except caseRuns.RunError as err:
+        raise SweepError("value %s: %s" % (value, err))
     return [o.value(copy) for o in outputs], wall
 
 
@@ -247,8 +238,7 @@ def main():
                 res[1]), flush=True)
             return res
 
-        with concurrent.futures.ThreadPoolExecutor(a.nProcs) as pool:
-            results = list(pool.map(job, range(len(values))))
+        results = caseRuns.inParallel(a.nProcs, job, range(len(values)))
         if not a.keep:
             for c in copies:
                 shutil.rmtree(c, ignore_errors=True)

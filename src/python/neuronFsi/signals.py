@@ -41,6 +41,12 @@ class Stopped(SystemExit):
         self.signum = signum
 
 
+def stopped():
+    """The number of the signal that came, or None: a thread whose run
+    call() ended can tell a stop from a failure."""
+    return _stopped[0] if _stopped else None
+
+
 def _kill(p):
     try:
         os.killpg(p.pid, signal.SIGKILL)

@@ -1,0 +1,329 @@
+"""The pulse study's dictionary, points and records (applications/utilities/
+pulseStudy; docs/userGuide/pulseStudy.md).
+
+system/pulseStudyDict:
+
+    baseCase        "$FOAM_TUTORIALS/blast/axisymmetricPreview";
+    baseOptions     (-h 0.25e-6);       // Allrun options of every point
+    overpressure    (10e6 30e6 100e6);  // [Pa]  Allrun -amplitude
+    duration        (2e-9 5e-9 10e-9);  // [s]   Allrun -pulse
+    sampleInterval  0.5e-9;             // [s]   Allrun -writeInterval
+    strainRateWindow 1e-9;              // [s]   a multiple of it
+    nProcs          2;                  // points run at a time
+    thresholds
+    {
+        <name>
+        {
+            indicator   strain;         // damageIndicators.INDICATORS
+            value       0.21 [-];       // its unit, that of the indicator
+            source      "authors, year, journal: what, where";
+        }
+    }
+
+read() checks every entry when it is read: unknown or duplicated keywords,
+an empty grid, a value twice, a threshold without its unit or source, and
+each point's Allrun command line against the base case's own option
+declaration (neuronFsi.allrunOptions: a pulse the water's law cannot carry
+is refused with the Allrun's range); StudyError names the file and the
+entry.
+
+A point's record (points/<label>/result.json) holds the digest of its
+inputs (the base case's files after its Allclean, one digest a file, and
+the Allrun command line) and the indicators' series; a point with a
+record whose inputs match is not run again.
+"""
+
+import hashlib
+import json
+import math
+import os
+import re
+
+from . import allrunOptions, damageIndicators, foamDict
+
+DICT = "system/pulseStudyDict"
+KEYWORDS = ("baseCase", "baseOptions", "overpressure", "duration",
+            "sampleInterval", "strainRateWindow", "nProcs", "thresholds")
+THRESHOLD_KEYWORDS = ("indicator", "value", "source")
+# the options the study sets per point (not in baseOptions)
+STUDY_OPTIONS = ("-amplitude", "-pulse", "-writeInterval", "-noPlots",
+                 "-noVTK", "-noRun")
+_UNIT = re.compile(r"\[(.*)\]\Z")
+
+
+class StudyError(Exception):
+    pass
+
+
+def _number(d, key, where, positive=True):
+    v = d[key]
+    if isinstance(v, bool) or not isinstance(v, (int, float)) \
+            or not math.isfinite(v) or (positive and not v > 0):
+        raise StudyError("%s: entry '%s' = %s is not a %snumber"
+                         % (where, key, foamDict.format_value(v),
+                            "positive " if positive else ""))
+    return float(v)
+
+
+def _grid(d, key, where, unit):
+    v = d[key]
+    if not isinstance(v, list):
+        v = [v]
+    if not v:
+        raise StudyError("%s: entry '%s' is empty: give one value at least "
+                         "[%s]" % (where, key, unit))
+    out = []
+    for x in v:
+        if isinstance(x, bool) or not isinstance(x, (int, float)) \
+                or not math.isfinite(x):
+            raise StudyError("%s: entry '%s': '%s' is not a number [%s]"
+                             % (where, key, foamDict.format_value(x), unit))
+        if float(x) in out:
+            raise StudyError("%s: entry '%s': the value %g %s is given twice"
+                             % (where, key, x, unit))
+        out.append(float(x))
+    return out
+
+
+def _threshold(name, t, where):
+    w = "%s: thresholds/%s" % (where, name)
+    if not isinstance(t, dict):
+        raise StudyError("%s: not a sub-dictionary { indicator ...; value "
+                         "<number> [<unit>]; source \"...\"; }" % w)
+    try:
+        foamDict.check_keywords(t, THRESHOLD_KEYWORDS, w)
+    except foamDict.DictError as err:
+        raise StudyError(str(err))
+    for k in THRESHOLD_KEYWORDS:
+        if k not in t:
+            raise StudyError("%s: no entry '%s'%s" % (w, k, (
+                " (no threshold without its citation: authors, year, "
+                "journal, the quantity and the test's conditions)"
+                if k == "source" else "")))
+    ind = t["indicator"]
+    if ind not in damageIndicators.INDICATORS:
+        raise StudyError("%s: indicator '%s' unknown%s (valid: %s)" % (
+            w, ind, foamDict.did_you_mean(str(ind),
+                                          damageIndicators.INDICATORS),
+            " ".join(damageIndicators.INDICATORS)))
+    unit = damageIndicators.UNITS[ind]
+    v = t["value"]
+    form = "value <number> [%s]" % unit
+    if not isinstance(v, list) or len(v) != 2 \
+            or not isinstance(v[1], str) or not _UNIT.match(v[1]):
+        raise StudyError("%s: value %s has no unit: give it as '%s' (the "
+                         "unit of indicator %s)"
+                         % (w, foamDict.format_value(v), form, ind))
+    x, u = v
+    if isinstance(x, bool) or not isinstance(x, (int, float)) \
+            or not math.isfinite(x):
+        raise StudyError("%s: value %s is not a number: '%s'"
+                         % (w, foamDict.format_value(x), form))
+    if _UNIT.match(u).group(1) != unit:
+        raise StudyError("%s: value %g %s: the unit of indicator %s is [%s] "
+                         "(SI)" % (w, x, u, ind, unit))
+    if not isinstance(t["source"], str) or len(t["source"].split()) < 3:
+        raise StudyError("%s: source '%s' is not a citation (authors, year,"
+                         " journal, the quantity, the test's conditions)"
+                         % (w, t["source"]))
+    return {"name": name, "indicator": ind, "value": float(x), "unit": unit,
+            "source": t["source"]}
+
+
+def allrunDeclaration(base):
+    """The option declaration of the base case's Allrun (the text between
+    'allrunOptions ... <<'OPTIONS'' and 'OPTIONS')."""
+    path = os.path.join(base, "Allrun")
+    try:
+        with open(path) as f:
+            text = f.read()
+    except OSError as err:
+        raise StudyError("%s: cannot read (%s)" % (path, err.strerror))
+    m = re.search(r"allrunOptions [^\n]*<<'OPTIONS'\n(.*?)\nOPTIONS\n", text,
+                  re.S)
+    if not m:
+        raise StudyError("%s: no option declaration (allrunOptions ... "
+                         "<<'OPTIONS')" % path)
+    opts, _ = allrunOptions.declaration(m.group(1))
+    return opts
+
+
+def _text(x):
+    """The option text of a value: exact (repr), without a trailing .0"""
+    if isinstance(x, str):
+        return x
+    t = repr(float(x))
+    return t[:-2] if t.endswith(".0") else t
+
+
+def read(case):
+    """The study's settings of <case>/system/pulseStudyDict, checked."""
+    path = os.path.join(case, DICT)
+    if not os.path.isfile(path):
+        raise StudyError("%s: no such file" % path)
+    try:
+        d = foamDict.read(path)
+        foamDict.check_keywords(d, KEYWORDS, path)
+    except foamDict.DictError as err:
+        raise StudyError(str(err))
+    for k in KEYWORDS:
+        if k not in d:
+            raise StudyError("%s: no entry '%s'" % (path, k))
+    base = d["baseCase"]
+    if not isinstance(base, str):
+        raise StudyError("%s: entry 'baseCase' is not a folder name" % path)
+    base = os.path.expandvars(base)
+    if "$" in base:
+        raise StudyError("%s: entry 'baseCase' = \"%s\": a variable is not "
+                         "set" % (path, d["baseCase"]))
+    base = os.path.normpath(os.path.join(case, base))
+    if not os.path.isfile(os.path.join(base, "Allrun")):
+        raise StudyError("%s: entry 'baseCase': %s has no Allrun"
+                         % (path, base))
+    s = {"case": case, "dict": path, "base": base}
+    s["overpressure"] = _grid(d, "overpressure", path, "Pa")
+    s["duration"] = _grid(d, "duration", path, "s")
+    s["sampleInterval"] = _number(d, "sampleInterval", path)
+    s["window"] = _number(d, "strainRateWindow", path)
+    m = s["window"]/s["sampleInterval"]
+    if abs(m - round(m)) > 1e-9*m or round(m) < 1:
+        raise StudyError("%s: entry 'strainRateWindow' = %g s is not a whole"
+                         " number of sampleInterval = %g s" % (
+                             path, s["window"], s["sampleInterval"]))
+    n = d["nProcs"]
+    if isinstance(n, bool) or not isinstance(n, int) or n < 1:
+        raise StudyError("%s: entry 'nProcs' = %s is outside the valid range"
+                         " [1, inf) (points run at a time)"
+                         % (path, foamDict.format_value(n)))
+    s["nProcs"] = n
+    th = d["thresholds"]
+    if not isinstance(th, dict):
+        raise StudyError("%s: entry 'thresholds' is not a sub-dictionary"
+                         % path)
+    s["thresholds"] = [_threshold(k, v, path) for k, v in th.items()]
+    opts = d["baseOptions"]
+    if not isinstance(opts, list):
+        opts = [opts]
+    s["baseOptions"] = [_text(x) for x in opts]
+    for o in s["baseOptions"]:
+        if o in STUDY_OPTIONS:
+            raise StudyError("%s: entry 'baseOptions': %s is set by the "
+                             "study per point (overpressure, duration, "
+                             "sampleInterval; -noPlots and -noVTK always)"
+                             % (path, o))
+    decl = allrunDeclaration(base)
+    for k in ("-amplitude", "-pulse", "-writeInterval", "-noVTK"):
+        if k not in decl:
+            raise StudyError("%s: entry 'baseCase': %s/Allrun has no option"
+                             " %s" % (path, base, k))
+    # every point's command line, checked as the Allrun will: the entry
+    # named with the Allrun's message
+    try:
+        allrunOptions.parse(decl, s["baseOptions"])
+    except allrunOptions.OptionError as err:
+        raise StudyError("%s: entry 'baseOptions': %s" % (path, err))
+    for key, opt in (("overpressure", "-amplitude"), ("duration", "-pulse"),
+                     ("sampleInterval", "-writeInterval")):
+        values = s[key] if isinstance(s[key], list) else [s[key]]
+        for v in values:
+            try:
+                decl[opt].check(_text(v))
+            except allrunOptions.OptionError as err:
+                why = "" if opt != "-amplitude" else (
+                    " (a pulse outside it the scene cannot carry: tension "
+                    "(no cavitation; the water's Mie-Grueneisen law has no"
+                    " state below -rho0 C0^2/(4 s)), or a reflection at "
+                    "the substrate beyond the membrane's volumetric law: "
+                    "the header of %s/Allrun)" % base)
+                raise StudyError("%s: entry '%s': %g: %s%s"
+                                 % (path, key, v, err, why))
+    return s
+
+
+def points(s):
+    """The grid's points: dicts of overpressure [Pa], duration [s], label,
+    and the Allrun options."""
+    out = []
+    for A in s["overpressure"]:
+        for T in s["duration"]:
+            opts = s["baseOptions"] + [
+                "-amplitude", _text(A), "-pulse", _text(T),
+                "-writeInterval", _text(s["sampleInterval"]),
+                "-noPlots", "-noVTK"]
+            out.append({"overpressure": A, "duration": T,
+                        "label": "p%.6g_T%.6g" % (A, T),
+                        "options": opts})
+    return out
+
+
+def fileDigests(folder):
+    """{relative path: sha256} of every file under folder."""
+    out = {}
+    for root, dirs, files in os.walk(folder):
+        dirs.sort()
+        for f in sorted(files):
+            p = os.path.join(root, f)
+            with open(p, "rb") as h:
+                out[os.path.relpath(p, folder)] = \
+                    hashlib.sha256(h.read()).hexdigest()
+    return out
+
+
+def inputs(baseDigests, point):
+    """What a point's results depend on: the base case's files and the
+    Allrun command line."""
+    return {"baseFiles": baseDigests, "options": point["options"]}
+
+
+def differences(before, now):
+    """The entries of the dictionary whose change makes a record's inputs
+    differ from now's, with what differs; [] for the same inputs."""
+    out = []
+    fb, fn = before.get("baseFiles", {}), now["baseFiles"]
+    files = sorted(f for f in set(fb) | set(fn) if fb.get(f) != fn.get(f))
+    if files:
+        out.append(("baseCase", "its files differ from those the point ran "
+                    "with: %s" % ", ".join(files[:5])
+                    + (" ..." if len(files) > 5 else "")))
+    ob, on = before.get("options", []), now["options"]
+    if ob != on:
+        key = "sampleInterval" if _option(ob, "-writeInterval") != \
+            _option(on, "-writeInterval") else "baseOptions"
+        out.append((key, "the Allrun options were '%s', now '%s'"
+                    % (" ".join(ob), " ".join(on))))
+    return out
+
+
+def _option(opts, name):
+    return opts[opts.index(name) + 1] if name in opts[:-1] else None
+
+
+def writeRecord(path, record):
+    """record as JSON (NaN as null), atomically."""
+    def clean(x):
+        if isinstance(x, float) and not math.isfinite(x):
+            return None
+        if isinstance(x, dict):
+            return {k: clean(v) for k, v in x.items()}
+        if isinstance(x, (list, tuple)):
+            return [clean(v) for v in x]
+        return x
+    tmp = path + ".tmp%d" % os.getpid()
+    with open(tmp, "w") as f:
+        json.dump(clean(record), f)
+        f.write("\n")
+    os.replace(tmp, path)
+
+
+def readRecord(path):
+    """A point's record, or None if it has none or it is not readable
+    (an interrupted write: the point runs again)."""
+    try:
+        with open(path) as f:
+            r = json.load(f)
+        if not isinstance(r, dict) or "inputs" not in r \
+                or "series" not in r:
+            return None
+        return r
+    except (OSError, ValueError):
+        return None

@@ -1,0 +1,184 @@
+"""neuronFsi.pulseStudy: the dictionary checked when read (each bad entry
+named), the grid's points and their Allrun options, the digests of a
+point's inputs and what differs, the records."""
+import math
+import os
+import unittest
+
+from fixtures import TempDirTestCase
+from neuronFsi import pulseStudy as ps
+
+ALLRUN = """#!/bin/bash
+allrunOptions .allrunOptions "$@" <<'OPTIONS'
+-pulse    pulse     number(1e-10,0.9]       s
+-amplitude  amplitude  number(0,1e9]        Pa
+-h        h         number(0,inf)           m
+-writeInterval  writeInterval  number(0,inf)  s
+-noPlots  plots     flag=no                 -  noRecord
+-noVTK    vtk       flag=no                 -  noRecord
+%results log.x
+OPTIONS
+"""
+
+GOOD = {
+    "baseCase": '"base"',
+    "baseOptions": "(-h 0.25e-6)",
+    "overpressure": "(10e6 30e6)",
+    "duration": "(2e-9 5e-9 10e-9)",
+    "sampleInterval": "0.5e-9",
+    "strainRateWindow": "1e-9",
+    "nProcs": "2",
+    "thresholds": """{
+        axon { indicator strain; value 0.21 [-];
+               source "Bain and Meaney 2000, J Biomech Eng"; }
+    }""",
+}
+
+
+class Dictionary(TempDirTestCase):
+
+    def setUp(self):
+        super().setUp()
+        self.case = os.path.join(self.tmp, "study")
+        self.write("study/base/Allrun", ALLRUN)
+
+    def study(self, **changes):
+        entries = dict(GOOD)
+        entries.update(changes)
+        self.write("study/system/pulseStudyDict", "".join(
+            "%s %s;\n" % (k, v) if not v.startswith("{") else
+            "%s %s\n" % (k, v) for k, v in entries.items()
+            if v is not None))
+        return ps.read(self.case)
+
+    def refused(self, regex, extra="", **changes):
+        with self.assertRaisesRegex(ps.StudyError,
+                                    "pulseStudyDict.*" + regex):
+            if extra:
+                self.write("study/system/pulseStudyDict", extra)
+                ps.read(self.case)
+            else:
+                self.study(**changes)
+
+    def testGood(self):
+        s = self.study()
+        self.assertEqual(s["overpressure"], [1e7, 3e7])
+        self.assertEqual(s["duration"], [2e-9, 5e-9, 1e-8])
+        self.assertEqual(s["thresholds"][0]["value"], 0.21)
+        self.assertEqual(s["thresholds"][0]["unit"], "-")
+        pts = ps.points(s)
+        self.assertEqual(len(pts), 6)
+        self.assertEqual(pts[0]["label"], "p1e+07_T2e-09")
+        self.assertEqual(pts[0]["options"][:2], ["-h", "2.5e-07"])
+        self.assertIn("-amplitude", pts[0]["options"])
+        self.assertEqual(pts[0]["options"][pts[0]["options"].index(
+            "-amplitude") + 1], "10000000")
+
+    def testEmptyGrid(self):
+        self.refused("entry 'overpressure' is empty", overpressure="()")
+
+    def testValueTwice(self):
+        self.refused("entry 'duration': the value 5e-09 s is given twice",
+                     duration="(5e-9 2e-9 5e-9)")
+
+    def testPulseTheLawCannotCarry(self):
+        self.refused(r"entry 'overpressure': -1e\+07: option -amplitude = "
+                     r".* is outside the valid range \(0, 1e9\] Pa",
+                     overpressure="(-10e6 30e6)")
+        self.refused(r"entry 'overpressure': 2e\+09: option -amplitude",
+                     overpressure="(2e9)")
+
+    def testThresholdWithoutUnit(self):
+        self.refused(r"thresholds/axon: value 0.21 has no unit: give it as "
+                     r"'value <number> \[-\]'",
+                     thresholds='{ axon { indicator strain; value 0.21; '
+                                'source "Bain and Meaney 2000, J"; } }')
+
+    def testThresholdWrongUnit(self):
+        self.refused(r"thresholds/p: value 1e\+06 \[MPa\]: the unit of "
+                     r"indicator pressure is \[Pa\]",
+                     thresholds='{ p { indicator pressure; value 1e6 [MPa];'
+                                ' source "someone 2000, a journal"; } }')
+
+    def testThresholdWithoutSource(self):
+        self.refused(r"thresholds/axon: no entry 'source' \(no threshold "
+                     "without its citation",
+                     thresholds='{ axon { indicator strain; value 0.2 [-];'
+                                ' } }')
+
+    def testUnknownIndicator(self):
+        self.refused(r"thresholds/x: indicator 'stran' unknown; did you "
+                     r"mean 'strain'\?",
+                     thresholds='{ x { indicator stran; value 0.2 [-];'
+                                ' source "a b c"; } }')
+
+    def testUnknownKeyword(self):
+        self.refused(r"unknown entry 'durations'; did you mean 'duration'",
+                     durations="(1e-9)")
+
+    def testDuplicatedKeyword(self):
+        self.refused("entry 'nProcs' is given twice",
+                     extra="".join("%s %s;\n" % (k, v) if not
+                                   v.startswith("{") else "%s %s\n" % (k, v)
+                                   for k, v in GOOD.items())
+                     + "nProcs 1;\n")
+
+    def testMissingEntry(self):
+        self.refused("no entry 'nProcs'", nProcs=None)
+
+    def testStudyOptionInBase(self):
+        self.refused(r"entry 'baseOptions': -pulse is set by the study",
+                     baseOptions="(-pulse 1e-9)")
+
+    def testBadBaseOption(self):
+        self.refused(r"entry 'baseOptions': unknown option '-hh'",
+                     baseOptions="(-hh 1)")
+
+    def testWindow(self):
+        self.refused(r"entry 'strainRateWindow' = 7.5e-10 s is not a whole"
+                     " number of sampleInterval",
+                     strainRateWindow="0.75e-9")
+
+    def testNProcs(self):
+        self.refused(r"entry 'nProcs' = 0 is outside the valid range",
+                     nProcs="0")
+
+    def testNoBase(self):
+        self.refused(r"entry 'baseCase': .*absent has no Allrun",
+                     baseCase='"absent"')
+
+
+class Records(TempDirTestCase):
+
+    def testDigestsAndDifferences(self):
+        self.write("base/a", "1")
+        self.write("base/sub/b", "2")
+        d = ps.fileDigests(os.path.join(self.tmp, "base"))
+        self.assertEqual(sorted(d), ["a", "sub/b"])
+        p = {"options": ["-h", "1", "-writeInterval", "5e-10"]}
+        now = ps.inputs(d, p)
+        self.assertEqual(ps.differences(now, now), [])
+        self.write("base/sub/b", "3")
+        d2 = ps.fileDigests(os.path.join(self.tmp, "base"))
+        diff = ps.differences(now, ps.inputs(d2, p))
+        self.assertEqual(diff[0][0], "baseCase")
+        self.assertIn("sub/b", diff[0][1])
+        q = {"options": ["-h", "2", "-writeInterval", "5e-10"]}
+        self.assertEqual(ps.differences(now, ps.inputs(d, q))[0][0],
+                         "baseOptions")
+        q = {"options": ["-h", "1", "-writeInterval", "1e-9"]}
+        self.assertEqual(ps.differences(now, ps.inputs(d, q))[0][0],
+                         "sampleInterval")
+
+    def testRecord(self):
+        path = os.path.join(self.tmp, "result.json")
+        self.assertIsNone(ps.readRecord(path))
+        ps.writeRecord(path, {"inputs": {}, "series": {"x": [1.0,
+                                                             math.nan]}})
+        self.assertEqual(ps.readRecord(path)["series"]["x"], [1.0, None])
+        self.write("result.json", '{"inputs": {}, "seri')  # cut short
+        self.assertIsNone(ps.readRecord(path))
+
+
+if __name__ == "__main__":
+    unittest.main()
