@@ -70,6 +70,27 @@ static void faceCentreAndArea
     }
 }
 
+//- The mesh's interpolation factors, writable (surfaceInterpolation hands
+//  them out const)
+struct interpolationFactors
+{
+    surfaceScalarField& w;
+    surfaceScalarField& dc;
+    surfaceScalarField& nodc;
+    surfaceVectorField& corr;
+
+    explicit interpolationFactors(const fvMesh& mesh)
+    :
+        w(const_cast<surfaceScalarField&>(mesh.weights())),
+        dc(const_cast<surfaceScalarField&>(mesh.deltaCoeffs())),
+        nodc(const_cast<surfaceScalarField&>(mesh.nonOrthDeltaCoeffs())),
+        corr
+        (
+            const_cast<surfaceVectorField&>(mesh.nonOrthCorrectionVectors())
+        )
+    {}
+};
+
 } // End namespace Foam
 
 
@@ -249,13 +270,8 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
     // (surfaceInterpolation::make*, fvPatch::delta and makeWeights)
     const vectorField& C = mesh_.cellCentres();
     const surfaceScalarField& magSf = mesh_.magSf();
-    surfaceScalarField& w = const_cast<surfaceScalarField&>(mesh_.weights());
-    surfaceScalarField& dc =
-        const_cast<surfaceScalarField&>(mesh_.deltaCoeffs());
-    surfaceScalarField& nodc =
-        const_cast<surfaceScalarField&>(mesh_.nonOrthDeltaCoeffs());
-    surfaceVectorField& corr =
-        const_cast<surfaceVectorField&>(mesh_.nonOrthCorrectionVectors());
+    interpolationFactors factors(mesh_);
+    auto& [w, dc, nodc, corr] = factors;
     scalarField& wi = w.primitiveFieldRef();
     scalarField& dci = dc.primitiveFieldRef();
     scalarField& nodci = nodc.primitiveFieldRef();
@@ -309,13 +325,8 @@ void Foam::bandMeshMotion::updateProcessorFactors()
     // surfaceInterpolation::makeWeights, makeDeltaCoeffs,
     // makeNonOrthDeltaCoeffs and makeNonOrthCorrectionVectors on the
     // processor patches, with the neighbour geometry just exchanged
-    surfaceScalarField& w = const_cast<surfaceScalarField&>(mesh_.weights());
-    surfaceScalarField& dc =
-        const_cast<surfaceScalarField&>(mesh_.deltaCoeffs());
-    surfaceScalarField& nodc =
-        const_cast<surfaceScalarField&>(mesh_.nonOrthDeltaCoeffs());
-    surfaceVectorField& corr =
-        const_cast<surfaceVectorField&>(mesh_.nonOrthCorrectionVectors());
+    interpolationFactors factors(mesh_);
+    auto& [w, dc, nodc, corr] = factors;
     const surfaceVectorField& Sf = mesh_.Sf();
     const surfaceScalarField& magSf = mesh_.magSf();
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
