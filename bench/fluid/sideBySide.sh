@@ -24,13 +24,22 @@ done
 [ "$#" -ge 3 ] || { sed -n 3,11p "$0" >&2; exit 1; }
 old=$(cd "$1" && pwd); new=$(cd "$2" && pwd); shift 2
 
-# CPU time per step [ms] of one run of the solver of checkout $1 in case $2
+# CPU time per step [ms] of one run of the solver of checkout $1 on case
+# $2, in a fresh copy of the case's 0, constant and system (the end time is
+# always written: a second run in the case itself would compute nothing)
 perStep() {
     (
         . "$1/etc/bashrc"
-        cd "$2"
-        "$app" 2>&1 | awk '/^ExecutionTime/ { t[n++] = $3 }
-            END { printf "%.3f\n", 1e3*(t[n-1] - t[0])/(n - 1) }'
+        run=$(mktemp -d)
+        trap 'rm -rf "$run"' EXIT
+        cp -r "$2/0" "$2/constant" "$2/system" "$run"
+        cd "$run"
+        "$app" > log 2>&1 || { tail -20 log >&2; exit 1; }
+        awk '/^ExecutionTime/ { t[n++] = $3 }
+            END {
+                if (n < 2) { print "fewer than 2 steps timed" > "/dev/stderr"; exit 1 }
+                printf "%.3f\n", 1e3*(t[n-1] - t[0])/(n - 1)
+            }' log
     )
 }
 

@@ -9,11 +9,17 @@ Description
       wall patch (the force on the fluid-structure interface per coupling
       pass);
     - signalSpeeds(): amaxSf of every internal and boundary face (the
-      Courant number of the next step).
+      Courant number of the next step);
+    - the internal faces taken in blocks of riemannFlux::blockSize (face
+      states of one block kept) against one loop over all faces with all
+      face states at once (HLLC, fixed and moving mesh), fluxes and
+      signalSpeeds.
 
 \*---------------------------------------------------------------------------*/
 
 #include "riemannFlux.H"
+#include "HLLC.H"
+#include "MUSCLReconstruction.H"
 #include "rhoEThermo.H"
 #include "zeroGradientFvPatchFields.H"
 #include "foamTestCase.H"
@@ -196,5 +202,136 @@ TEST(fluxParts, wallFluxesAndSignalSpeedsEqualTheFullEvaluationBitwise)
                 0
             ) << mesh.boundary()[patchi].name();
         }
+    }
+}
+
+
+TEST(fluxParts, internalFacesInBlocksEqualOneLoopOverAllFacesBitwise)
+{
+    // More internal faces than riemannFlux::blockSize (4,612 against
+    // 1,024: four full blocks and a partial one); the reference is one
+    // loop over all faces as the solver had it: every face state
+    // reconstructed at once, the law on them, HLLC face by face, in the
+    // frame of the moving faces
+    foamUnit::testCase tc("fluxParts");
+    tc.writeReconstruction("MUSCL", "MUSCLV");
+    tc.writeThermophysicalProperties("mieGruneisen");
+    tc.writeUniformField("p", dimPressure, 1e5, "zeroGradient");
+    tc.writeUniformField("T", dimTemperature, 300, "zeroGradient");
+    autoPtr<fvMesh> meshPtr = tc.blockMesh
+    (
+        {14, 12, 10},
+        [](const vector& s)
+        {
+            return 1e-6*vector
+            (
+                8*s.x() + 1.5*s.y()*s.y(), 5*s.y() + 0.8*s.x()*s.z(), 3*s.z()
+            );
+        },
+        {"wall", "outlet", "outlet", "outlet", "front", "back"},
+        {"wall", "patch", "patch", "patch", "patch", "patch"}
+    );
+    fvMesh& mesh = meshPtr();
+    ASSERT_GT(mesh.nInternalFaces(), 4*riemannFlux::blockSize);
+    ASSERT_LT(mesh.nInternalFaces(), 5*riemannFlux::blockSize);
+    autoPtr<rhoEThermo> thermo = rhoEThermo::New(mesh);
+
+    volVectorField U
+    (
+        fluxFields::io(mesh, "U"), mesh, dimensionedVector(dimVelocity, Zero),
+        zeroGradientFvPatchVectorField::typeName
+    );
+    forAll(mesh.C(), celli)
+    {
+        const vector x = mesh.C()[celli]/1e-6;
+        thermo->rho()[celli] = 1000 + 40*std::sin(1.9*x.x() + 0.4*x.y());
+        thermo->e()[celli] = 1e4*(1 + 0.5*std::cos(1.7*x.y()));
+        U[celli] = vector(30*std::sin(3*x.x()), 10*std::cos(x.z()), 5*x.y());
+    }
+    thermo->rho().correctBoundaryConditions();
+    thermo->e().correctBoundaryConditions();
+    thermo->correct();
+    U.correctBoundaryConditions();
+
+    dictionary dict;
+    dict.add("riemannSolver", "HLLC");
+    autoPtr<riemannFlux> flux = riemannFlux::New(mesh, dict);
+
+    for (const bool moving : {false, true})
+    {
+        SCOPED_TRACE(moving ? "moving mesh" : "fixed mesh");
+        if (moving)
+        {
+            ++tc.time();
+            const scalar dt = mesh.time().deltaTValue();
+            pointField newPoints(mesh.points());
+            forAll(newPoints, pointi)
+            {
+                const point& x = mesh.points()[pointi];
+                newPoints[pointi] +=
+                    20*dt*vector(std::sin(2e5*x.y()), std::cos(3e5*x.x()), 0);
+            }
+            mesh.movePoints(newPoints);
+            ASSERT_TRUE(mesh.moving());
+        }
+
+        // One loop over all internal faces
+        MUSCLReconstruction reconstruction(mesh);
+        riemannFlux::faceStates L, R;
+        reconstruction.reconstruct(thermo->rho(), U, thermo->p(), L, R);
+        L.complete(thermo());
+        R.complete(thermo());
+        const label nFaces = mesh.nInternalFaces();
+        ASSERT_EQ(L.rho.size(), nFaces);
+        scalarField w(nFaces, Zero);
+        if (moving)
+        {
+            w = mesh.phi().primitiveField()/mesh.magSf().primitiveField();
+        }
+        scalarField mass(nFaces);
+        vectorField momentum(nFaces);
+        scalarField energy(nFaces);
+        scalarField amaxSf(nFaces);
+        forAll(mass, facei)
+        {
+            const scalar A = mesh.magSf()[facei];
+            const vector n = mesh.Sf()[facei]/A;
+            if (moving)
+            {
+                L.U[facei] -= w[facei]*n;
+                R.U[facei] -= w[facei]*n;
+            }
+            riemannFlux::pointFlux f;
+            riemannFluxes::HLLC::flux
+            (
+                riemannFlux::pointState(L, facei, n),
+                riemannFlux::pointState(R, facei, n),
+                n,
+                f
+            );
+            mass[facei] = A*f.mass;
+            momentum[facei] = A*f.momentum;
+            energy[facei] = A*f.energy;
+            amaxSf[facei] = A*f.amax;
+            if (moving)
+            {
+                const scalar wi = w[facei];
+                energy[facei] +=
+                    wi*(n & momentum[facei]) + 0.5*wi*wi*mass[facei];
+                momentum[facei] += wi*mass[facei]*n;
+            }
+        }
+
+        fluxFields F(mesh);
+        flux->fluxes(thermo(), U, F.mass, F.momentum, F.energy, F.amaxSf);
+        EXPECT_GT(gMax(mag(F.momentum.primitiveField())), 0);
+        EXPECT_EQ(nDiffering(F.mass.primitiveField(), mass), 0);
+        EXPECT_EQ(nDiffering(F.momentum.primitiveField(), momentum), 0);
+        EXPECT_EQ(nDiffering(F.energy.primitiveField(), energy), 0);
+        EXPECT_EQ(nDiffering(F.amaxSf.primitiveField(), amaxSf), 0);
+
+        fluxFields speeds(mesh);
+        flux->signalSpeeds(thermo(), U, speeds.amaxSf);
+        EXPECT_EQ(nDiffering(speeds.amaxSf.primitiveField(), amaxSf), 0);
     }
 }

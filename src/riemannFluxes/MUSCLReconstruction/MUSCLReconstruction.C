@@ -392,13 +392,11 @@ Foam::MUSCLReconstruction::MUSCLReconstruction(const fvMesh& mesh)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
-void Foam::MUSCLReconstruction::reconstruct
+void Foam::MUSCLReconstruction::cellGradients
 (
     const volScalarField& rho,
     const volVectorField& U,
-    const volScalarField& p,
-    states& L,
-    states& R
+    const volScalarField& p
 )
 {
     if (rhoLimiter_ != limiterType::upwind)
@@ -413,13 +411,33 @@ void Foam::MUSCLReconstruction::reconstruct
     {
         gaussGrad(p, gradP_);
     }
+}
 
-    const label nFaces = mesh_.nInternalFaces();
+
+void Foam::MUSCLReconstruction::reconstruct
+(
+    const label start,
+    const label size,
+    const volScalarField& rho,
+    const volVectorField& U,
+    const volScalarField& p,
+    states& L,
+    states& R
+) const
+{
+    if (start < 0 || size < 0 || start + size > mesh_.nInternalFaces())
+    {
+        FatalErrorInFunction
+            << "Faces " << start << " to " << start + size - 1
+            << " are not internal faces (0 to "
+            << mesh_.nInternalFaces() - 1 << ')' << exit(FatalError);
+    }
+
     for (states* s : {&L, &R})
     {
-        s->rho.setSize(nFaces);
-        s->U.setSize(nFaces);
-        s->p.setSize(nFaces);
+        s->rho.setSize(size);
+        s->U.setSize(size);
+        s->p.setSize(size);
     }
 
     const labelUList& owner = mesh_.owner();
@@ -437,8 +455,9 @@ void Foam::MUSCLReconstruction::reconstruct
     const limiterFunctions<NVDTVD>& sLim = scalarLimiters();
     const limiterFunctions<NVDVTVDV>& vLim = vectorLimiters();
 
-    for (label facei = 0; facei < nFaces; ++facei)
+    for (label i = 0; i < size; ++i)
     {
+        const label facei = start + i;
         const label own = owner[facei];
         const label nei = neighbour[facei];
         const scalar wf = w[facei];
@@ -447,19 +466,33 @@ void Foam::MUSCLReconstruction::reconstruct
         internalFaceValues
         (
             sLim, rhoLimiter_, wf, rhoc[own], rhoc[nei], gradRho[own],
-            gradRho[nei], d, L.rho[facei], R.rho[facei]
+            gradRho[nei], d, L.rho[i], R.rho[i]
         );
         internalFaceValues
         (
             vLim, ULimiter_, wf, Uc[own], Uc[nei], gradU[own], gradU[nei],
-            d, L.U[facei], R.U[facei]
+            d, L.U[i], R.U[i]
         );
         internalFaceValues
         (
             sLim, pLimiter_, wf, pc[own], pc[nei], gradP[own], gradP[nei],
-            d, L.p[facei], R.p[facei]
+            d, L.p[i], R.p[i]
         );
     }
+}
+
+
+void Foam::MUSCLReconstruction::reconstruct
+(
+    const volScalarField& rho,
+    const volVectorField& U,
+    const volScalarField& p,
+    states& L,
+    states& R
+)
+{
+    cellGradients(rho, U, p);
+    reconstruct(0, mesh_.nInternalFaces(), rho, U, p, L, R);
 }
 
 

@@ -58,9 +58,9 @@ void Foam::riemannFlux::toFaceFrame
 (
     faceStates& L,
     faceStates& R,
-    const vectorField& Sf,
-    const scalarField& magSf,
-    const scalarField& w
+    const UList<vector>& Sf,
+    const UList<scalar>& magSf,
+    const UList<scalar>& w
 )
 {
     const vectorField n(Sf/magSf);
@@ -73,9 +73,9 @@ void Foam::riemannFlux::solveMoving
 (
     faceStates& L,
     faceStates& R,
-    const vectorField& Sf,
-    const scalarField& magSf,
-    const scalarField* wPtr,
+    const UList<vector>& Sf,
+    const UList<scalar>& magSf,
+    const UList<scalar>* wPtr,
     faceFluxes& F
 ) const
 {
@@ -88,7 +88,7 @@ void Foam::riemannFlux::solveMoving
     // Riemann problem in the frame of the moving face, then back:
     // F_mom = F'_mom + w n F_mass,
     // F_E   = F'_E + w n.F'_mom + w^2/2 F_mass
-    const scalarField& w = *wPtr;
+    const UList<scalar>& w = *wPtr;
     toFaceFrame(L, R, Sf, magSf, w);
     solve(L, R, Sf, magSf, F);
     forAll(w, facei)
@@ -191,25 +191,43 @@ void Foam::riemannFlux::fluxes
     // Normal speed of moving faces [m/s]
     const tmp<surfaceScalarField> tw(faceSpeeds());
 
-    // Internal faces
+    // Internal faces, a block at a time: the cell gradients once, then
+    // per block the face states, the law on them and the Riemann solver
+    reconstruction_.cellGradients(thermo.rho(), U, thermo.p());
+    const label nFaces = mesh_.nInternalFaces();
+    for (label start = 0; start < nFaces; start += blockSize)
     {
-        reconstruction_.reconstruct(thermo.rho(), U, thermo.p(), L_, R_);
+        const label size = min(blockSize, nFaces - start);
+        reconstruction_.reconstruct
+        (
+            start, size, thermo.rho(), U, thermo.p(), L_, R_
+        );
         L_.complete(thermo);
         R_.complete(thermo);
 
-        faceFluxes F
-        {
-            massFlux.primitiveFieldRef(),
-            momentumFlux.primitiveFieldRef(),
-            energyFlux.primitiveFieldRef(),
-            amaxSf.primitiveFieldRef()
-        };
-        solveMoving
+        SubList<scalar> mass(massFlux.primitiveFieldRef(), size, start);
+        SubList<vector> momentum
         (
-            L_, R_, mesh_.Sf(), mesh_.magSf(),
-            tw.valid() ? &tw().primitiveField() : nullptr,
-            F
+            momentumFlux.primitiveFieldRef(), size, start
         );
+        SubList<scalar> energy(energyFlux.primitiveFieldRef(), size, start);
+        SubList<scalar> amax(amaxSf.primitiveFieldRef(), size, start);
+        faceFluxes F{mass, momentum, energy, amax};
+
+        const SubList<vector> Sf(mesh_.Sf().primitiveField(), size, start);
+        const SubList<scalar> magSf
+        (
+            mesh_.magSf().primitiveField(), size, start
+        );
+        if (tw.valid())
+        {
+            const SubList<scalar> w(tw().primitiveField(), size, start);
+            solveMoving(L_, R_, Sf, magSf, &w, F);
+        }
+        else
+        {
+            solveMoving(L_, R_, Sf, magSf, nullptr, F);
+        }
     }
 
     // Boundary faces
@@ -270,14 +288,35 @@ void Foam::riemannFlux::signalSpeeds
 {
     const tmp<surfaceScalarField> tw(faceSpeeds());
 
-    reconstruction_.reconstruct(thermo.rho(), U, thermo.p(), L_, R_);
-    L_.complete(thermo);
-    R_.complete(thermo);
-    if (tw.valid())
+    // Internal faces, a block at a time (as fluxes)
+    reconstruction_.cellGradients(thermo.rho(), U, thermo.p());
+    const label nFaces = mesh_.nInternalFaces();
+    for (label start = 0; start < nFaces; start += blockSize)
     {
-        toFaceFrame(L_, R_, mesh_.Sf(), mesh_.magSf(), tw().primitiveField());
+        const label size = min(blockSize, nFaces - start);
+        reconstruction_.reconstruct
+        (
+            start, size, thermo.rho(), U, thermo.p(), L_, R_
+        );
+        L_.complete(thermo);
+        R_.complete(thermo);
+
+        const SubList<vector> Sf(mesh_.Sf().primitiveField(), size, start);
+        const SubList<scalar> magSf
+        (
+            mesh_.magSf().primitiveField(), size, start
+        );
+        if (tw.valid())
+        {
+            toFaceFrame
+            (
+                L_, R_, Sf, magSf,
+                SubList<scalar>(tw().primitiveField(), size, start)
+            );
+        }
+        SubList<scalar> amax(amaxSf.primitiveFieldRef(), size, start);
+        speeds(L_, R_, Sf, magSf, amax);
     }
-    speeds(L_, R_, mesh_.Sf(), mesh_.magSf(), amaxSf.primitiveFieldRef());
 
     forAll(mesh_.boundary(), patchi)
     {
