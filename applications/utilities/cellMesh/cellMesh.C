@@ -42,8 +42,8 @@ int main(int argc, char *argv[])
     argList::noParallel();
     argList::addOption("dict", "file", "Alternative cellMeshDict");
 
-    #include "setRootCase.H"
-    foamTools::checkCasePath(args);    // a path OpenFOAM can hold
+    // setRootCase.H with checkCasePath before OpenFOAM checks the case
+    #include "setRootCaseChecked.H"
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
 
     const fileName dictFile

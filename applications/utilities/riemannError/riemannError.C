@@ -65,8 +65,8 @@ int main(int argc, char *argv[])
     argList::noParallel();
     timeSelector::addOptions(false, true);
 
-    #include "setRootCase.H"
-    foamTools::checkCasePath(args);    // a path OpenFOAM can hold
+    // setRootCase.H with checkCasePath before OpenFOAM checks the case
+    #include "setRootCaseChecked.H"
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
     // no directory 'nan' or '1e999' for the Time to take for a time
     foamTools::checkTimeDirectoryNames(args);
