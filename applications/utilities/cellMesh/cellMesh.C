@@ -57,6 +57,20 @@ int main(int argc, char *argv[])
             << " cellMeshDict file (default system/cellMeshDict)"
             << exit(FatalError);
     }
+    // The meshes go to constant/: a file of that name (adv28 m17: "gmsh
+    // failed (nothing written)") is said as such, before anything is meshed
+    const fileName constantDir(args.path()/"constant");
+    const std::string kind(foamTools::notARegularFile(constantDir));
+    if (exists(constantDir) && kind != "a directory")
+    {
+        FatalErrorInFunction
+            << constantDir << " is "
+            << (kind.empty() ? "a file" : kind.c_str()) << ", not a"
+            << " directory: cellMesh writes constant/cell.msh (and"
+            << " constant/fluid.msh) into the directory constant of the"
+            << " case. Move it aside. Nothing was meshed or written"
+            << exit(FatalError);
+    }
     const cellGeometry geom(dictFile);
     // Validated before anything is meshed
     std::unique_ptr<fluidBox> fluid;
