@@ -48,5 +48,40 @@ class NegativeValues(unittest.TestCase):
         self.assertIn("-dz -2.5e-08 m: must be positive and finite", r.stderr)
 
 
+class FileKind(unittest.TestCase):
+    """options.notARegularFile: what a path is, looked at without opening
+    it (a FIFO given as a file blocked the open: issue 19, adv28 m16, ir06);
+    foamDict.read refuses such a path instead of blocking"""
+
+    def setUp(self):
+        import tempfile
+        self.tmp = tempfile.mkdtemp(prefix="fileKind.")
+
+    def tearDown(self):
+        import shutil
+        shutil.rmtree(self.tmp, ignore_errors=True)
+
+    def testKinds(self):
+        f = os.path.join(self.tmp, "file")
+        with open(f, "w") as out:
+            out.write("FoamFile { version 2.0; } a 1;\n")
+        fifo = os.path.join(self.tmp, "fifo")
+        os.mkfifo(fifo)
+        self.assertEqual(options.notARegularFile(f), "")
+        self.assertEqual(options.notARegularFile(self.tmp + "/none"), "")
+        self.assertEqual(options.notARegularFile(self.tmp), "a directory")
+        self.assertEqual(options.notARegularFile(fifo), "a FIFO (named pipe)")
+        self.assertEqual(options.notARegularFile("/dev/null"), "a device")
+
+    def testFoamDictRefusesAFifo(self):
+        from neuronFsi import foamDict
+        fifo = os.path.join(self.tmp, "fifo")
+        os.mkfifo(fifo)
+        with self.assertRaisesRegex(foamDict.DictError,
+                                    "fifo is a FIFO \\(named pipe\\), not "
+                                    "a file"):
+            foamDict.read(fifo)
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -358,7 +358,10 @@ def wave(n=5):
     t = 1e-13 + np.linspace(0, 1e-8, n)/3
     p = np.column_stack((np.linspace(0, 5e7, n)/7, np.arange(n) + 0.1))
     u = -p/1.45e6
-    return pw.PlaneWave([2e-5, 3e-5], t, p, 25e-9, 1e-4, 1000 + p/2.2e6, u)
+    w = pw.PlaneWave([2e-5, 3e-5], t, p, 25e-9, 1e-4, 1000 + p/2.2e6, u,
+                     293.15 + p/1e9)
+    w.thermoDigest = "0123456789abcdef0123456789abcdef01234567"
+    return w
 
 
 class InflowFile(TempDirTestCase):
@@ -378,6 +381,12 @@ class InflowFile(TempDirTestCase):
             ([w.at(2e-5)[0]], w.at(2e-5))))
         np.testing.assert_array_equal(d["u"], np.concatenate(
             ([w.velocityAt(2e-5)[0]], w.velocityAt(2e-5))))
+        # the water it was computed with: the first sample at the height
+        # and the digest of the column's thermophysicalProperties
+        self.assertEqual((d["ambientPressure"], d["ambientTemperature"],
+                          d["thermoDigest"]),
+                         (w.at(2e-5)[0], w.temperatureAt(2e-5)[0],
+                          w.thermoDigest))
         text = read(path)
         self.assertIn("// Written by: a test", text)
         self.assertIn("object      inflowWave;", text)
@@ -442,6 +451,17 @@ class InflowFile(TempDirTestCase):
         with self.assertRaisesRegex(pw.PlaneWaveError, "no velocities"):
             pw.writeInflow(self.tmp + "/x", w, 2e-5, TABLE, "test")
         self.assertFalse(os.path.exists(self.tmp + "/x"))
+
+    def testNeedsTheWater(self):
+        """a wave without the record of its water (temperatures, the digest
+        of the thermo) is not written (issue 19, adv28 p27-p29)"""
+        for attr in ("T", "thermoDigest"):
+            w = wave()
+            setattr(w, attr, None)
+            with self.assertRaisesRegex(pw.PlaneWaveError,
+                                        "no record of the water"):
+                pw.writeInflow(self.tmp + "/x", w, 2e-5, TABLE, "test")
+            self.assertFalse(os.path.exists(self.tmp + "/x"))
 
 
 def previewCase(dest, columnHeight):
@@ -532,6 +552,9 @@ class InflowColumn(TempDirTestCase):
         np.testing.assert_allclose(T[w.t < 1e-9], 293.15, rtol=1e-12)
         rise = T[k] - 293.15
         self.assertTrue(0.05 < rise.min() and rise.max() < 0.5, rise)
+        # the law it ran with, as rhoRiemannFoam recorded it (what
+        # planeWave -inflow writes into constant/inflowWave)
+        self.assertRegex(w.thermoDigest or "", "^[0-9a-f]{40}$")
 
     def testColumnHeightMustBeTheCases(self):
         previewCase(self.tmp + "/case", 4e-6)

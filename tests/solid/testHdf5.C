@@ -3,6 +3,8 @@
 // datasets listed, removal, and failures that name the file and object;
 // damaged bytes in a dataset or an attribute are errors, not values; text
 // attributes (a checkpoint's input record) read back and are checksummed.
+#include <sys/stat.h>
+#include <unistd.h>
 #include "Hdf5File.H"
 #include "SolidError.H"
 
@@ -105,6 +107,25 @@ TEST(Hdf5, FailuresNameTheFileAndObject)
     std::ofstream("text.h5") << "not hdf5\n";
     msg = errorOf([] { Hdf5File("text.h5", Hdf5File::Mode::readOnly); });
     EXPECT_NE(msg.find("'text.h5'"), std::string::npos) << msg;
+
+    // A FIFO is refused before HDF5 opens it (the open blocked without end:
+    // issue 19, adv28 ir06); so is a directory, for reading and writing
+    ::unlink("fifo.h5");
+    ASSERT_EQ(::mkfifo("fifo.h5", 0600), 0);
+    for (const auto mode :
+         {Hdf5File::Mode::readOnly, Hdf5File::Mode::readWrite,
+          Hdf5File::Mode::create})
+    {
+        msg = errorOf([mode] { Hdf5File("fifo.h5", mode); });
+        EXPECT_NE(msg.find("'fifo.h5': it is a FIFO (named pipe), not a file"),
+                  std::string::npos) << msg;
+    }
+    ::unlink("fifo.h5");
+    ::mkdir("dir.h5", 0700);
+    msg = errorOf([] { Hdf5File("dir.h5", Hdf5File::Mode::readOnly); });
+    EXPECT_NE(msg.find("'dir.h5': it is a directory, not a file"),
+              std::string::npos) << msg;
+    ::rmdir("dir.h5");
 
     const double one = 1;
     {

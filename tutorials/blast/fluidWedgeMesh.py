@@ -75,6 +75,10 @@ if not 0 < args.wedge < 180:
     p.error("-wedge %g deg is outside the valid range (0, 180) deg"
             % args.wedge)
 outDir = os.path.dirname(args.o) or "."
+kind = options.notARegularFile(args.o)
+if kind and kind != "a directory":
+    # writing into a FIFO blocks until a reader comes
+    p.error("-o %s is %s, not a file: give the file to write" % (args.o, kind))
 if os.path.isdir(args.o) or not os.path.isdir(outDir):
     p.error("-o %s: %s" % (args.o, "is a directory: give the file to write"
             if os.path.isdir(args.o) else "no directory %s to write it in"

@@ -50,8 +50,10 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     foamTools::resultGuard::addOption();
-    #include "setRootCaseLists.H"
-    foamTools::checkCasePath(args);    // a path OpenFOAM can hold
+    #include "setRootCaseListOptions.H"
+    // setRootCase.H with checkCasePath before OpenFOAM checks the case
+    #include "setRootCaseChecked.H"
+    #include "setRootCaseListOutput.H"
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
     const foamTools::caseLock lock(args);    // one run per case
     // A number beyond a double's range is a sigFpe inside OpenFOAM's
@@ -71,16 +73,9 @@ int main(int argc, char *argv[])
     // increasing, or an error naming file and patch
     foamTools::checkTables(runTime.timePath());
 
-    autoPtr<dynamicFvMesh> meshPtr
-    (
-        fluidSolidInteraction::newMesh(args, runTime)
-    );
-    dynamicFvMesh& mesh = meshPtr();
-
-    #include "createFields.H"
-    // Probes and other function objects: types, keywords, fields
-    foamTools::checkFunctionObjects(runTime, mesh);
-    // The number of steps, at least: the steps are at most maxDeltaT with
+    // The number of steps, at least (before the mesh and the start
+    // time's state are read: a start after endTime is named as such, was
+    // OpenFOAM's "Istream not OK" for its uniform/time, adv28 v05): the steps are at most maxDeltaT with
     // adjustTimeStep, else deltaT (a lower bound: the Courant and the
     // solid's limits are known only once the coupling exists, which
     // writes solid.h5; not estimated)
@@ -101,6 +96,15 @@ int main(int argc, char *argv[])
         }
     }
 
+    autoPtr<dynamicFvMesh> meshPtr
+    (
+        fluidSolidInteraction::newMesh(args, runTime)
+    );
+    dynamicFvMesh& mesh = meshPtr();
+
+    #include "createFields.H"
+    // Probes and other function objects: types, keywords, fields
+    foamTools::checkFunctionObjects(runTime, mesh);
     // A new start stops here, before the coupling writes, if it would
     // replace the results of an earlier run; a restart if its inputs are
     // not those its results were computed with

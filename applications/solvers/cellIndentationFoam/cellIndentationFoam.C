@@ -55,8 +55,8 @@ int main(int argc, char *argv[])
     );
     argList::noParallel();
     foamTools::resultGuard::addOption();
-    #include "setRootCase.H"
-    foamTools::checkCasePath(args);    // a path OpenFOAM can hold
+    // setRootCase.H with checkCasePath before OpenFOAM checks the case
+    #include "setRootCaseChecked.H"
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
     // A number beyond a double's range is a sigFpe inside OpenFOAM's
     // tokenizer: every file of the case the run reads is scanned first,

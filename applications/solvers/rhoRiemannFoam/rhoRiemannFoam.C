@@ -52,8 +52,10 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     foamTools::resultGuard::addOption();
-    #include "setRootCaseLists.H"
-    foamTools::checkCasePath(args);    // a path OpenFOAM can hold
+    #include "setRootCaseListOptions.H"
+    // setRootCase.H with checkCasePath before OpenFOAM checks the case
+    #include "setRootCaseChecked.H"
+    #include "setRootCaseListOutput.H"
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
     const foamTools::caseLock lock(args);    // one run per case
     // A number beyond a double's range is a sigFpe inside OpenFOAM's

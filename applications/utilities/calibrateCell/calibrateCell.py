@@ -77,7 +77,7 @@ import numpy as np
 from scipy import optimize, stats
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-from neuronFsi import foamDict, ranges, signals  # noqa: E402
+from neuronFsi import foamDict, options, ranges, signals  # noqa: E402
 from forwardModel import ForwardModel, ModelError  # noqa: E402
 from targets import Targets, TargetError  # noqa: E402
 
@@ -564,12 +564,14 @@ def main():
                     help="keep the run folders")
     args = ap.parse_args()
     if args.dict is not None and not os.path.isfile(args.dict):
-        # was "[Errno 21] Is a directory: 'system'", naming no option
+        # was "[Errno 21] Is a directory: 'system'", naming no option; a
+        # FIFO blocked the open (options.notARegularFile)
+        kind = options.notARegularFile(args.dict)
         print("calibrateCell: error: -dict %s: %s; the option's value must "
               "be a calibration dictionary file (default "
               "<case>/system/calibrationDict)"
-              % (args.dict, "a directory, not a file"
-                 if os.path.isdir(args.dict) else "no such file"),
+              % (args.dict, kind + ", not a file" if kind
+                 else "no such file"),
               file=sys.stderr)
         return 1
     dict_path = args.dict or os.path.join(args.case,

@@ -151,6 +151,10 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
             << nucleusSize_ << " m, cytoplasmSize " << cytoplasmSize_
             << " m, membraneSize " << membraneSize_ << " m, membraneLayers "
             << layers_;
+        if (!axisymmetric())
+        {
+            FatalIOError << ", azimuthSize " << azimuthSize_ << " m";
+        }
         if (contactRadius_ > 0)
         {
             FatalIOError
@@ -347,9 +351,29 @@ Foam::scalar Foam::cellGeometry::minimumElements() const
     const scalar V =
         quarter*2.0/3.0*constant::mathematical::pi*sqr(a_)*H_;
     const scalar S = quarter*constant::mathematical::pi*sqr(a_);
+    // The azimuth (structuredCell): every ring of the section revolved in
+    // nSq elements per quarter turn, nSq = 2 ceil(pi/4 (r_c + a)/2 /
+    // azimuthSize), r_c = an/2 the column's radius, and the column's
+    // butterfly disc of nSq x nSq elements (a full turn; a quarter of it
+    // in the quarter) on every level of it (at least the membrane's layers,
+    // the cytoplasm and the nucleus). Counted from the membrane alone
+    // (its layers along the outer curve outside the column): a lower
+    // bound. azimuthSize was not counted (issue 19, adv28 m13, q09:
+    // azimuthSize 1e-9 m allocated GBs without output)
+    const scalar rc = 0.5*an();
+    const scalar nSq =
+        2*std::ceil(0.25*constant::mathematical::pi*0.5*(rc + a_)/azimuthSize_);
+    const scalar membraneRows = std::ceil
+    (
+        arcLength(asin(min(scalar(1), rc/a_)), 0.5*constant::mathematical::pi,
+                  false)/membraneSize_
+    );
+    const scalar azimuthal =
+        (mode_ == meshMode::quarter3D ? 1 : 4)*nSq*membraneRows*layers_
+      + (mode_ == meshMode::quarter3D ? 0.25 : 1)*sqr(nSq)*(layers_ + 2);
     return max
     (
-        contact,
+        max(contact, azimuthal),
         f_*V/pow3(nucleusSize_) + (1 - f_)*V/pow3(cytoplasmSize_)
       + S/sqr(membraneSize_)*layers_
     );

@@ -42,8 +42,8 @@ int main(int argc, char *argv[])
     argList::noParallel();
     argList::addOption("dict", "file", "Alternative cellMeshDict");
 
-    #include "setRootCase.H"
-    foamTools::checkCasePath(args);    // a path OpenFOAM can hold
+    // setRootCase.H with checkCasePath before OpenFOAM checks the case
+    #include "setRootCaseChecked.H"
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
 
     const fileName dictFile
@@ -55,6 +55,20 @@ int main(int argc, char *argv[])
         FatalErrorInFunction
             << "option -dict " << dictFile << " is a directory: give the"
             << " cellMeshDict file (default system/cellMeshDict)"
+            << exit(FatalError);
+    }
+    // The meshes go to constant/: a file of that name (adv28 m17: "gmsh
+    // failed (nothing written)") is said as such, before anything is meshed
+    const fileName constantDir(args.path()/"constant");
+    const std::string kind(foamTools::notARegularFile(constantDir));
+    if (exists(constantDir) && kind != "a directory")
+    {
+        FatalErrorInFunction
+            << constantDir << " is "
+            << (kind.empty() ? "a file" : kind.c_str()) << ", not a"
+            << " directory: cellMesh writes constant/cell.msh (and"
+            << " constant/fluid.msh) into the directory constant of the"
+            << " case. Move it aside. Nothing was meshed or written"
             << exit(FatalError);
     }
     const cellGeometry geom(dictFile);

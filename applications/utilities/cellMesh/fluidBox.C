@@ -304,6 +304,25 @@ void Foam::fluidBox::readHex(const dictionary& d)
     (
         d, "lateralSize", "m", 0, farSize_, false, nearSize_
     );
+    // The first layer at the cell (nearSize thick) against the grid along
+    // the cell (lateralSize, axialSize): at most maxAspectRatio times
+    // thinner. A thinner one is a layer of needles whose time step is that
+    // much shorter (issue 19, adv28 m12: nearSize 1e-15 m meshed with an
+    // aspect ratio of 1.2e9, exit 0)
+    const scalar maxAspectRatio = 1000;
+    const scalar nearMin = min(s.lateralSize, s.axialSize)/maxAspectRatio;
+    if (!(nearSize_ >= nearMin))
+    {
+        FatalIOErrorInFunction(g_.fluidDict())
+            << "entry 'nearSize' = " << nearSize_ << " m is outside the"
+            << " valid range [" << nearMin << ", " << H << "] m with type"
+            << " hex: the first layer at the cell would be "
+            << min(s.lateralSize, s.axialSize)/nearSize_ << " times thinner"
+            << " than the grid along the cell (lateralSize "
+            << s.lateralSize << " m, axialSize " << s.axialSize << " m; at"
+            << " most " << maxAspectRatio << "), and the fluid's time step"
+            << " as much shorter" << exit(FatalIOError);
+    }
     // The inner box holds the cell with at least one first layer around
     // it and leaves water between it and the side walls and the box's top
     // (the water's top, height, is checked against the inner box below)

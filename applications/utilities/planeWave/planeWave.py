@@ -183,6 +183,11 @@ def main():
     out = os.path.join(case, "postProcessing", "planeWave", "0")
     os.makedirs(out, exist_ok=True)
     if a.reference:
+        kind = options.notARegularFile(a.reference)
+        if kind:
+            raise planeWave.PlaneWaveError(
+                "-reference %s is %s, not a file (a reference.dat of an "
+                "earlier run)" % (a.reference, kind))
         wave = planeWave.readReference(a.reference)
     else:
         wave = planeWave.column(case, heights, a.Z, end, dz=a.dz,

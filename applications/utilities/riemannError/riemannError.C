@@ -19,6 +19,7 @@ Description
 
 #include "fvCFD.H"
 #include "inputChecks.H"
+#include "inputRecord.H"
 #include "OFstream.H"
 #include "rhoEThermoModel.H"
 #include "riemannProblem.H"
@@ -65,8 +66,8 @@ int main(int argc, char *argv[])
     argList::noParallel();
     timeSelector::addOptions(false, true);
 
-    #include "setRootCase.H"
-    foamTools::checkCasePath(args);    // a path OpenFOAM can hold
+    // setRootCase.H with checkCasePath before OpenFOAM checks the case
+    #include "setRootCaseChecked.H"
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
     // no directory 'nan' or '1e999' for the Time to take for a time
     foamTools::checkTimeDirectoryNames(args);
@@ -92,6 +93,62 @@ int main(int argc, char *argv[])
     // initial fields (issue 19)
     foamTools::requireExistingTimes(args, runTime);
     problem.requireRecordMatches(runTime);
+
+    // The law the results were computed with: each time rhoRiemannFoam
+    // wrote records the digest of constant/thermophysicalProperties
+    // (<time>/uniform/inputDigests, foamTools::inputRecord); compared with
+    // the law now in the case, which the exact solution is computed from
+    // (issue 19, adv28 f30: an edited C0 gave errors against another law,
+    // exit 0). Checked for every selected time before anything is written
+    {
+        const fileName thermoFile
+        (
+            runTime.globalPath()/"constant"/"thermophysicalProperties"
+        );
+        const std::string key("constant/thermophysicalProperties");
+        const std::string now
+        (
+            foamTools::inputRecord::digest(thermoFile, true)
+        );
+        for (const instant& t : timeDirs)
+        {
+            if (!(t.value() > 0))
+            {
+                continue;
+            }
+            const fileName record
+            (
+                runTime.path()/t.name()/"uniform"
+               /foamTools::inputRecord::fileName()
+            );
+            const foamTools::inputRecord::digestMap was
+            (
+                foamTools::inputRecord::read(record)
+            );
+            const auto it = was.find(key);
+            if (it == was.end())
+            {
+                WarningInFunction
+                    << "no record of the law the results of t = "
+                    << t.name() << " s were computed with (" << record
+                    << ", written by rhoRiemannFoam since issue 19): "
+                    << thermoFile << " is taken as it is, not compared"
+                    << nl << endl;
+            }
+            else if (it->second != now)
+            {
+                FatalErrorInFunction
+                    << thermoFile << " differs from the one the results of"
+                    << " t = " << t.name() << " s were computed with (the"
+                    << " digest of its entries is " << now.c_str() << ", "
+                    << record << " recorded " << it->second.c_str() << "):"
+                    << " the errors would measure the change of law, not"
+                    << " the solution. Restore the file, or run the solver"
+                    << " again with this law (setRiemannProblem, then the"
+                    << " solver). Nothing was written" << exit(FatalError);
+            }
+        }
+    }
 
     #include "createMesh.H"
     problem.checkDiaphragm(mesh);

@@ -8,12 +8,22 @@ Description
     through the equation of state of constant/thermophysicalProperties. The
     boundary conditions in 0/ are kept.
 
+    The fields are written into the case's start time (controlDict's
+    startTime, else the earliest time directory), whatever startFrom says:
+    never into a result time (issue 19, adv28 f33: with startFrom
+    latestTime, the tutorial's, a finished case had p, T and U of its last
+    result time replaced by the initial state). A case holding time
+    directories after the start time (results of a run from the former
+    initial fields) is refused, nothing written, unless -overwrite, which
+    removes them first (the option of the solvers, foamTools::resultGuard).
+
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
 #include "inputChecks.H"
 #include "rhoEThermo.H"
 #include "riemannProblem.H"
+#include "resultGuard.H"
 
 int main(int argc, char *argv[])
 {
@@ -22,9 +32,10 @@ int main(int argc, char *argv[])
         "Set p, U, T of a shock tube from system/riemannProblemDict"
     );
     argList::noParallel();
+    foamTools::resultGuard::addOption();
 
-    #include "setRootCase.H"
-    foamTools::checkCasePath(args);    // a path OpenFOAM can hold
+    // setRootCase.H with checkCasePath before OpenFOAM checks the case
+    #include "setRootCaseChecked.H"
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
     // A number beyond a double's range is a sigFpe inside OpenFOAM's
     // tokenizer: every file of the case the run reads is scanned first,
@@ -36,6 +47,48 @@ int main(int argc, char *argv[])
     const riemannProblem problem(args.path());
 
     #include "createTime.H"
+    // The initial fields go to the start time, not to the time startFrom
+    // selects (latestTime: a result time)
+    {
+        const scalar t0 = foamTools::resultGuard::caseStartTime(runTime);
+        runTime.setTime(t0, 0);
+        DynamicList<fileName> later;
+        for (const instant& t : runTime.times())
+        {
+            if (t.name() != "constant" && t.value() > t0)
+            {
+                later.append(t.name());
+            }
+        }
+        if (later.size() && !args.found("overwrite"))
+        {
+            FatalErrorInFunction
+                << "The case " << runTime.path() << " holds results of a"
+                << " run: " << later.size() << " time director"
+                << (later.size() == 1 ? "y" : "ies") << " after the start"
+                << " time " << runTime.timeName() << " s ("
+                << later.first().c_str()
+                << (later.size() > 1 ? " ... " + later.last() : word())
+                       .c_str()
+                << " s). setRiemannProblem writes the initial fields into "
+                << runTime.timeName() << "/; under those results they would"
+                << " be the start of another problem." << nl
+                << "    Nothing was written. Run it with -overwrite to"
+                << " remove the later time directories first, or on a copy"
+                << " of the case." << exit(FatalError);
+        }
+        for (const fileName& dir : later)
+        {
+            rmDir(runTime.path()/dir);
+        }
+        if (later.size())
+        {
+            Info<< "-overwrite: removed " << later.size() << " time"
+                << " director" << (later.size() == 1 ? "y" : "ies")
+                << " after the start time " << runTime.timeName() << " s"
+                << nl << endl;
+        }
+    }
     #include "createMesh.H"
     problem.checkDiaphragm(mesh);
 

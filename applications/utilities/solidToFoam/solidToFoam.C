@@ -140,7 +140,8 @@ int main(int argc, char *argv[])
         "wedgeAngle", "deg", "axisymmetric revolution angle (default: 5)"
     );
 
-    #include "setRootCase.H"
+    // setRootCase.H with checkCasePath before OpenFOAM checks the case
+    #include "setRootCaseChecked.H"
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
     #include "createTime.H"
 

@@ -64,6 +64,10 @@ def split_entry(case, entry):
     parts = entry.strip("/").split("/")
     for n in range(len(parts) - 1, 0, -1):
         f = os.path.join(*parts[:n])
+        kind = options.notARegularFile(os.path.join(case, f))
+        if kind and kind != "a directory":
+            raise SweepError("-entry %s: %s is %s, not a file" % (
+                entry, os.path.join(case, f), kind))
         if os.path.isfile(os.path.join(case, f)):
             keys = parts[n:]
             d = foamDict.read(os.path.join(case, f))

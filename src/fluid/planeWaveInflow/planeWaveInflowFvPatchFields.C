@@ -1,13 +1,17 @@
 #include "planeWaveInflowFvPatchFields.H"
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
+#include "keywordCheck.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
 namespace
 {
 
-//- The entries a T or U entry of the type may have
+//- The entries a T or U entry of the type may have: p's parameters are a
+//  message of their own; any other unknown or duplicated keyword is the
+//  project's keyword check's error (closest valid keyword suggested;
+//  issue 19, adv28 p62: an unknown entry was ignored)
 void checkNoParameters
 (
     const Foam::dictionary& dict,
@@ -16,10 +20,10 @@ void checkNoParameters
 )
 {
     using namespace Foam;
-    for (const entry& e : dict)
+    for (const char* k : {"columnHeight", "pulse", "file",
+                          "ambientPressure", "ambientTemperature"})
     {
-        const word& k = e.keyword();
-        if (k != "type" && k != "value" && k != "patchType")
+        if (dict.found(k, keyType::LITERAL))
         {
             FatalIOErrorInFunction(dict)
                 << "Entry " << k << " in the planeWaveInflow condition of "
@@ -28,6 +32,7 @@ void checkNoParameters
                 << field << " takes type and value" << exit(FatalIOError);
         }
     }
+    foamTools::checkKeywords(dict, {"type", "patchType", "value"});
 }
 
 } // End anonymous namespace
@@ -57,7 +62,14 @@ Foam::planeWaveInflowFvPatchScalarField::planeWaveInflowFvPatchScalarField
     const word& name = iF.name();
     if (name == "p")
     {
-        wave_.reset(new planeWaveInflowWave(dict, p));
+        // With the initial p next to the patch (read before the boundary):
+        // the ambient pressure of a new start, not the cells after the
+        // first stage, which a 'value' entry other than the water's has
+        // already changed
+        wave_.reset
+        (
+            new planeWaveInflowWave(dict, p, p.patchInternalField(iF))
+        );
     }
     else if (name == "T")
     {

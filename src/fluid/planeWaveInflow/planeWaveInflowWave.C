@@ -5,6 +5,9 @@
 #include "IFstream.H"
 #include "Time.H"
 #include "SHA1.H"
+#include "keywordCheck.H"
+#include "inputRecord.H"
+#include "fileKind.H"
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -57,6 +60,24 @@ Foam::word row(const Foam::Tuple2<Foam::scalar, Foam::scalar>& r)
     return Foam::word("(" + num(r.first()) + " " + num(r.second()) + ")", false);
 }
 
+//- The p entry of the type, its keywords checked first (before any entry
+//  is read: a misspelt 'file' is named as such, not as 'file' missing):
+//  unknown and duplicated keywords are the project's one keyword check's
+//  errors, with the closest valid keyword (issue 19, adv28 p08: a keyword
+//  given twice, p62: an unknown one, were taken without a word)
+const Foam::dictionary& checked(const Foam::dictionary& entry)
+{
+    Foam::foamTools::checkKeywords
+    (
+        entry,
+        {
+            "type", "patchType", "value", "columnHeight", "pulse", "file",
+            "ambientPressure", "ambientTemperature"
+        }
+    );
+    return entry;
+}
+
 } // End anonymous namespace
 
 
@@ -65,17 +86,22 @@ Foam::word row(const Foam::Tuple2<Foam::scalar, Foam::scalar>& r)
 Foam::planeWaveInflowWave::planeWaveInflowWave
 (
     const dictionary& entry,
-    const fvPatch& patch
+    const fvPatch& patch,
+    const scalarField& pInitial
 )
 :
-    columnHeight_(entry.get<scalar>("columnHeight")),
+    columnHeight_(checked(entry).get<scalar>("columnHeight")),
     pulse_(readTable(entry, "pulse")),
     file_(entry.get<fileName>("file")),
     path_(file_),
     n_(Zero),
     haveAmbient_(false),
+    ambientFromEntry_(false),
     pAmbient_(0),
-    TAmbient_(0)
+    TAmbient_(0),
+    pInitial_(pInitial),
+    wavePAmbient_(0),
+    waveTAmbient_(0)
 {
     if (!(columnHeight_ > 0) || !std::isfinite(columnHeight_))
     {
@@ -98,6 +124,7 @@ Foam::planeWaveInflowWave::planeWaveInflowWave
                 << exit(FatalIOError);
         }
         haveAmbient_ = true;
+        ambientFromEntry_ = true;
     }
     readWave(entry, patch);
 }
@@ -117,6 +144,18 @@ void Foam::planeWaveInflowWave::readWave
     if (!path_.isAbsolute())
     {
         path_ = runTime.globalPath()/path_;
+    }
+    // A directory or a FIFO named by 'file' (adv28 p14: "Attempt to put
+    // back onto bad stream"; a FIFO blocks the open): said as such
+    const std::string kind(foamTools::notARegularFile(path_));
+    if (!kind.empty())
+    {
+        FatalIOErrorInFunction(entry)
+            << "Patch " << patch.name() << ": entry 'file' " << file_
+            << " names " << path_ << ", which is " << kind.c_str()
+            << ", not the wave file (written by `planeWave -inflow "
+            << "<height>`, default constant/inflowWave)"
+            << exit(FatalIOError);
     }
     IFstream is(path_);
     if (!is.good())
@@ -187,6 +226,53 @@ void Foam::planeWaveInflowWave::readWave
             << " in the entry (" << pulse.size() << " and "
             << pulse_.size() << " rows): compute it again (planeWave "
             << "-inflow)" << exit(FatalIOError);
+    }
+
+    // The water the wave was computed with (issue 19, adv28 p27-p30b,
+    // pk10: a changed law or ambient state ran with the old wave): the
+    // column's state at rest (ambientPressure, ambientTemperature) and the
+    // digest of its constant/thermophysicalProperties as rhoRiemannFoam
+    // recorded it (foamTools::inputRecord, parsed entries), written by
+    // planeWave -inflow. The law is compared here, the state once the
+    // ambient state of this run is known (table())
+    const char* record[] =
+        {"ambientPressure", "ambientTemperature", "thermoDigest"};
+    for (const char* key : record)
+    {
+        if (!wave.found(key, keyType::LITERAL))
+        {
+            FatalIOErrorInFunction(wave)
+                << "The wave in " << path_ << " has no entry '" << key
+                << "': it does not record the water it was computed with"
+                << " (ambient p, T and the law of thermophysicalProperties;"
+                << " written by planeWave -inflow since issue 19), so it"
+                << " cannot be checked against this case's. Compute it"
+                << " again: planeWave -inflow " << num(height)
+                << " -overwrite" << exit(FatalIOError);
+        }
+    }
+    wavePAmbient_ = wave.get<scalar>("ambientPressure");
+    waveTAmbient_ = wave.get<scalar>("ambientTemperature");
+    const fileName thermoFile
+    (
+        runTime.globalPath()/"constant"/"thermophysicalProperties"
+    );
+    const std::string thermoNow
+    (
+        foamTools::inputRecord::digest(thermoFile, true)
+    );
+    const string thermoThen(wave.get<string>("thermoDigest"));
+    if (thermoNow != thermoThen)
+    {
+        FatalIOErrorInFunction(wave)
+            << "The wave in " << path_ << " was computed with another "
+            << "water law than this case's " << thermoFile << ": the "
+            << "digest of its entries is " << thermoNow.c_str()
+            << ", the wave's entry thermoDigest " << thermoThen.c_str()
+            << " (the thermophysicalProperties of the 1D column). The "
+            << "incident wave depends on the law: compute it again with "
+            << "this one (planeWave -inflow " << num(height)
+            << " -overwrite), or restore the law" << exit(FatalIOError);
     }
 
     const List<vector> data(wave.lookup("data"));
@@ -265,8 +351,14 @@ const riemann::isentropeTable& Foam::planeWaveInflowWave::table
     if (!haveAmbient_)
     {
         // The water at rest next to the patch (a fresh run)
-        const scalarField pI(thermo.p().boundaryField()[patch.index()]
-            .patchInternalField());
+        // p as read (the cells' now may differ: this first evaluation
+        // comes after the first stage, whose flux used the entry's value)
+        const scalarField pI
+        (
+            pInitial_.size() == patch.size() ? pInitial_
+          : scalarField(thermo.p().boundaryField()[patch.index()]
+                .patchInternalField())
+        );
         const scalarField TI(thermo.T().boundaryField()[patch.index()]
             .patchInternalField());
         const scalar cI = gMax(thermo.c().primitiveField());
@@ -305,6 +397,39 @@ const riemann::isentropeTable& Foam::planeWaveInflowWave::table
         pAmbient_ = gAverage(pI);
         TAmbient_ = gAverage(TI);
         haveAmbient_ = true;
+    }
+    // The ambient state of this run (the water next to the patch at a new
+    // start, the entries ambientPressure/ambientTemperature of the p entry
+    // when given: a restart's) is the water the wave was computed with
+    const scalar tolP =
+        1e-9*max(mag(pAmbient_), mag(wavePAmbient_)) + 1e-3;
+    const scalar tolT = 1e-9*max(mag(TAmbient_), mag(waveTAmbient_));
+    if
+    (
+        !(mag(pAmbient_ - wavePAmbient_) <= tolP)
+     || !(mag(TAmbient_ - waveTAmbient_) <= tolT)
+    )
+    {
+        FatalErrorInFunction
+            << "Patch " << patch.name() << " (planeWaveInflow): the water "
+            << "of this run is at " << num(pAmbient_) << " Pa, "
+            << num(TAmbient_) << " K ("
+            << (
+                   ambientFromEntry_
+                 ? "the entries ambientPressure and ambientTemperature of "
+                   "the patch's p entry"
+                 : "the cells next to the patch at the start, the initial "
+                   "fields p and T"
+               )
+            << "), the wave in " << path_ << " was computed for water at "
+            << num(wavePAmbient_) << " Pa, " << num(waveTAmbient_)
+            << " K (its "
+            << "entries ambientPressure, ambientTemperature). The incident "
+            << "wave depends on the state it travels into: compute it "
+            << "again for this water (planeWave -inflow ... -overwrite), or"
+            << " restore "
+            << (ambientFromEntry_ ? "the entries" : "the initial fields")
+            << exit(FatalError);
     }
     scalarField rhoA(1), eA(1), cA(1);
     thermo.rhoEFromPT

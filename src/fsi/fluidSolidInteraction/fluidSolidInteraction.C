@@ -95,7 +95,28 @@ Foam::autoPtr<Foam::dynamicFvMesh> Foam::fluidSolidInteraction::newMesh
         // The exact start time: OpenFOAM takes it from the directory name
         // (1.2e-08), the run it continues was at the accumulated value that
         // uniform/time keeps in full ("value")
-        IFstream is(runTime.timePath()/"uniform"/"time");
+        const fileName timeFile(runTime.timePath()/"uniform"/"time");
+        if (!isFile(timeFile))
+        {
+            // A time directory without the state OpenFOAM writes with it
+            // (was OpenFOAM's "Istream not OK for reading dictionary";
+            // issue 19, adv28 qk05: uniform/ removed from a restart time)
+            FatalErrorInFunction
+                << "The run starts at t = " << runTime.timeName() << " s"
+                << " (system/controlDict: startFrom "
+                << runTime.controlDict().getOrDefault<word>
+                   (
+                       "startFrom", "startTime"
+                   )
+                << "), but that time directory has no "
+                << "uniform/time: " << timeFile << " is missing (OpenFOAM"
+                << " writes it with every time, with the solid's"
+                << " uniform/solidState; a restart needs both). Restore the"
+                << " time's uniform/ directory, or start from the initial"
+                << " fields (startFrom startTime, startTime 0, -overwrite)"
+                << exit(FatalError);
+        }
+        IFstream is(timeFile);
         const dictionary timeDict(is);
         runTime.setTime(timeDict.get<scalar>("value"), startIndex);
     }

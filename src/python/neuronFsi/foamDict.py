@@ -22,6 +22,7 @@ src/foamTools/closestKeyword.H, the same distance and threshold).
 import math
 import os
 import re
+from . import options
 
 _TOKEN = re.compile(r'''
     (?P<ws>\s+)
@@ -237,7 +238,14 @@ def parse(text, name="<text>", base=None):
 
 
 def read(path):
-    """Nested dict of a dictionary file (see parse), includes merged."""
+    """Nested dict of a dictionary file (see parse), includes merged. A path
+    that is not a regular file (a FIFO would block the open) is a
+    DictError naming what it is."""
+    kind = options.notARegularFile(path)
+    if kind:
+        raise DictError("%s is %s, not a file%s" % (
+            path, kind, "" if kind == "a directory" else
+            ": reading it would wait without end for a writer"))
     with open(path) as f:
         return parse(f.read(), path, os.path.dirname(path) or ".")
 

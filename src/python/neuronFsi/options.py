@@ -6,7 +6,34 @@ negative number misses exponents); parse() joins such a pair into
 "-dz=-25e-9" first, so that the application's range check says what is
 wrong with the value (issue 19)."""
 
+import os
+import stat
 import sys
+
+
+def notARegularFile(path):
+    """What path is if it is there and not a regular file: "a directory",
+    "a FIFO (named pipe)", "a socket", "a device" ("" if it is a regular
+    file or is not there). Looked at with os.stat, without opening it:
+    opening a FIFO blocks until a writer comes (issue 19, adv28 m16, ir06:
+    a FIFO given as a file hung the application). The Python side of
+    src/foamTools/fileKind.H; every file path a user gives to our Python
+    applications, and every file foamDict.read reads, goes through it."""
+    try:
+        m = os.stat(path).st_mode
+    except (OSError, ValueError):
+        return ""
+    if stat.S_ISREG(m):
+        return ""
+    if stat.S_ISDIR(m):
+        return "a directory"
+    if stat.S_ISFIFO(m):
+        return "a FIFO (named pipe)"
+    if stat.S_ISSOCK(m):
+        return "a socket"
+    if stat.S_ISCHR(m) or stat.S_ISBLK(m):
+        return "a device"
+    return "not a regular file"
 
 
 def _numbers(s):

@@ -273,6 +273,9 @@ class PlaneWave:
         self.T = T
         self.dz = dz
         self.Z = Z
+        # the digest of the column's constant/thermophysicalProperties as
+        # rhoRiemannFoam recorded it (column(); None for a reference file)
+        self.thermoDigest = None
 
     def _column(self, z):
         k = int(np.argmin(abs(self.heights - z)))
@@ -497,11 +500,39 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
             # the column's axis is y (_BLOCK_MESH): u is U's y component
             U = postProcessing.series(work, "probes/U", vectors=True)
             T = postProcessing.series(work, "probes/T")
-            return PlaneWave(heights, data[:, 0], data[:, 1:], dz, Z,
+            wave = PlaneWave(heights, data[:, 0], data[:, 1:], dz, Z,
                              rho[:, 1:], U[:, 2::3], T[:, 1:])
+            wave.thermoDigest = _recordedThermo(work)
+            return wave
         finally:
             if not keep:
                 shutil.rmtree(work, ignore_errors=True)
+
+
+THERMO = "constant/thermophysicalProperties"
+
+
+def _recordedThermo(work):
+    """The digest of constant/thermophysicalProperties that rhoRiemannFoam
+    recorded in the last time it wrote in work (<time>/uniform/
+    inputDigests, "<sha1>  <path>" lines: foamTools::inputRecord, the one
+    digest of the project's input records; planeWaveInflow compares the
+    case's with it). None if there is none."""
+    times = []
+    for name in os.listdir(work):
+        try:
+            times.append((float(name), name))
+        except ValueError:
+            pass
+    for _, name in sorted(times, reverse=True):
+        path = os.path.join(work, name, "uniform", "inputDigests")
+        if os.path.isfile(path):
+            with open(path) as f:
+                for line in f:
+                    digest, _, item = line.rstrip("\n").partition("  ")
+                    if item == THERMO:
+                        return digest
+    return None
 
 
 def _logError(path, lines=6):
@@ -581,6 +612,13 @@ height          %.17g;  // [m] the plane's height above the substrate (the scene
 columnHeight    %.17g;  // [m] the physical column: the pulse is applied at its top face
 pulse           table ( %s );  // [s Pa] gauge pressure applied there
 dz              %.17g;  // [m] 1D cell size
+// The water the wave was computed with: the column at rest at height, and
+// the digest of its constant/thermophysicalProperties as rhoRiemannFoam
+// recorded it (uniform/inputDigests). planeWaveInflow refuses a case
+// whose water differs (its ambient state or its thermophysicalProperties)
+ambientPressure %.17g;  // [Pa]
+ambientTemperature %.17g;  // [K]
+thermoDigest    "%s";
 rowsDigest      "%s";  // SHA-1 of the rows below (each "%%.17g %%.17g %%.17g" and a newline): planeWaveInflow refuses rows changed since
 
 // time [s], p [Pa, gauge], u [m/s]: velocity along the column axis,
@@ -614,7 +652,15 @@ def writeInflow(path, wave, height, pulse, what, overwrite=False):
     if wave.u is None:
         raise PlaneWaveError("the wave has no velocities: compute the "
                              "column")
+    if wave.T is None or not getattr(wave, "thermoDigest", None):
+        raise PlaneWaveError("the wave has no record of the water it was "
+                             "computed with (temperatures and the digest "
+                             "of its thermophysicalProperties): compute the "
+                             "column")
     t, p, u = wave.t, wave.at(height), wave.velocityAt(height)
+    # the column at rest at height: its first sample (the pulse has not
+    # come down yet; a uniform state is kept exactly by the scheme)
+    ambient = (float(p[0]), float(wave.temperatureAt(height)[0]))
     if t[0] > 0:
         t = np.concatenate(([0.0], t))
         p = np.concatenate((p[:1], p))
@@ -624,7 +670,7 @@ def writeInflow(path, wave, height, pulse, what, overwrite=False):
         "\n".join("// " + " ".join(line.split())
                   for line in what.split("\n")), height, wave.Z,
         " ".join("(%.17g %.17g)" % (a, b) for a, b in pulse), wave.dz,
-        inflowDigest(rows))]
+        ambient[0], ambient[1], wave.thermoDigest, inflowDigest(rows))]
     text += ["    (%.17g %.17g %.17g)\n" % r for r in rows]
     text.append(");\n")
     if not overwrite and os.path.exists(path):
@@ -712,6 +758,10 @@ def readInflow(path):
                                  path, k + 2, data[k + 1, 0], k + 1,
                                  data[k, 0]))
     out["t"], out["p"], out["u"] = data[:, 0], data[:, 1], data[:, 2]
+    # the water it was computed with (files written since issue 19)
+    for key in ("ambientPressure", "ambientTemperature", "thermoDigest"):
+        if key in d:
+            out[key] = d[key]
     return out
 
 

@@ -1,4 +1,5 @@
 #include "GmshReader.H"
+#include "FileKind.H"
 #include "SolidError.H"
 
 #include <algorithm>
@@ -488,6 +489,17 @@ public:
 
 solid::Mesh solid::readGmsh(const std::string& fileName, double scale)
 {
+    // A FIFO (or socket, device) would block the open; a directory opens
+    // and reads as nothing: said as such (FileKind.H)
+    const std::string fileKind(notARegularFile(fileName));
+    if (!fileKind.empty())
+    {
+        throw SolidError
+        (
+            SolidError::Kind::io, "cannot open gmsh file '" + fileName
+          + "': it is " + fileKind + ", not a file"
+        );
+    }
     MshParser parser(fileName);
     if (!parser.good())
     {

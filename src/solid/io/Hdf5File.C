@@ -1,7 +1,10 @@
 #include "Hdf5File.H"
 #include "SolidError.H"
 
+#include "FileKind.H"
+
 #include <hdf5.h>
+#include <string>
 
 namespace
 {
@@ -9,6 +12,22 @@ namespace
 hid_t openFile(const std::string& name, solid::Hdf5File::Mode mode)
 {
     using Mode = solid::Hdf5File::Mode;
+    // A FIFO, socket or device blocks the open without end (issue 19,
+    // adv28 ir06: solidToFoam given a FIFO as its results file waited
+    // without output): looked at first (FileKind.H)
+    const std::string kind(solid::notARegularFile(name));
+    if (!kind.empty())
+    {
+        throw solid::SolidError
+        (
+            solid::SolidError::Kind::io, "cannot "
+          + std::string(mode == Mode::create ? "create" : "open")
+          + " HDF5 file '" + name + "': it is " + kind + ", not a file"
+          + (kind == "a directory" ? std::string()
+             : std::string(" (opening it would wait without end for the"
+                           " other side)"))
+        );
+    }
     // Failures are reported as SolidErrors naming the file, not as the
     // library's error stack on stderr
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
