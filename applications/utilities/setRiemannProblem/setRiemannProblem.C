@@ -49,10 +49,10 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     // The initial fields go to the start time, not to the time startFrom
     // selects (latestTime: a result time)
+    DynamicList<fileName> later;
     {
         const scalar t0 = foamTools::resultGuard::caseStartTime(runTime);
         runTime.setTime(t0, 0);
-        DynamicList<fileName> later;
         for (const instant& t : runTime.times())
         {
             if (t.name() != "constant" && t.value() > t0)
@@ -76,17 +76,6 @@ int main(int argc, char *argv[])
                 << "    Nothing was written. Run it with -overwrite to"
                 << " remove the later time directories first, or on a copy"
                 << " of the case." << exit(FatalError);
-        }
-        for (const fileName& dir : later)
-        {
-            rmDir(runTime.path()/dir);
-        }
-        if (later.size())
-        {
-            Info<< "-overwrite: removed " << later.size() << " time"
-                << " director" << (later.size() == 1 ? "y" : "ies")
-                << " after the start time " << runTime.timeName() << " s"
-                << nl << endl;
         }
     }
     #include "createMesh.H"
@@ -128,6 +117,23 @@ int main(int argc, char *argv[])
                 << " Pa) is outside the domain of the equation of state: "
                 << reason << exit(FatalError);
         }
+    }
+
+    // -overwrite: the later time directories go only now, once the mesh,
+    // the diaphragm, the law and both states have been read and checked
+    // (adv29 f02c, f02d, f21, f22: a diaphragm outside the tube, a
+    // direction across it, no thermophysicalProperties or no mesh removed
+    // the results and then refused)
+    for (const fileName& dir : later)
+    {
+        rmDir(runTime.path()/dir);
+    }
+    if (later.size())
+    {
+        Info<< "-overwrite: removed " << later.size() << " time"
+            << " director" << (later.size() == 1 ? "y" : "ies")
+            << " after the start time " << runTime.timeName() << " s"
+            << nl << endl;
     }
 
     scalarField& rho = thermo.rho().primitiveFieldRef();
