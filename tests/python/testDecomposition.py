@@ -56,6 +56,10 @@ class Sectors(unittest.TestCase):
                                     "not all finite"):
             decomposition.sectors([[np.nan, 0, 0]], 2)
         with self.assertRaisesRegex(decomposition.DecompositionError,
+                                    r"3 sectors for 2 cells: at most one "
+                                    r"rank per cell \(valid range \[1, 2\]\)"):
+            decomposition.sectors([[1, 0, 0], [0, 1, 0]], 3)
+        with self.assertRaisesRegex(decomposition.DecompositionError,
                                     "m x 3"):
             decomposition.sectors(np.zeros((0, 3)), 2)
 

@@ -46,6 +46,10 @@ def sectors(centres, n, origin=(0.0, 0.0, 0.0), axis=(0.0, 0.0, 1.0)):
         raise DecompositionError(f"axis {tuple(axis)}: a non-zero vector "
                                  "wanted")
     a = a/np.linalg.norm(a)
+    if n > len(c):
+        raise DecompositionError(f"{n} sectors for {len(c)} cells: at most "
+                                 "one rank per cell (valid range [1, "
+                                 f"{len(c)}])")
     # An orthonormal frame (e1, e2, a); e1 along the coordinate axis least
     # aligned with a
     k = int(np.argmin(np.abs(a)))
