@@ -51,9 +51,10 @@ import time
 import numpy as np
 
 from neuronFsi import (caseRuns, damageIndicators as di, logs, options,
-                       postProcessing, pulseStudy as ps, signals)
+                       postProcessing, pulseStudy as ps, signals,
+                       uncertainty as unc)
 
-OUT = "postProcessing/pulseStudy"
+OUT = "postProcessing/pulseStudy"     # for system/pulseStudyDict
 LABELS = {"pressure": "peak pressure", "vonMises": "peak von Mises stress",
           "strain": "peak largest principal Green-Lagrange strain",
           "strainRate": "peak strain rate",
@@ -84,11 +85,18 @@ def runPoint(s, staging, point, inputs, folder, keep):
     os.makedirs(folder)
     case = os.path.join(folder, "case")
     shutil.copytree(staging, case, symlinks=True)
+    # a variant or a finite-difference run of the uncertainty: its material
+    # change included at the end of constant/solidProperties
+    change = point.get("change")
+    unc.includeChange(case, change, point["label"])
     command = "./Allrun " + " ".join(shlex.quote(o) for o in point["options"])
     wall = caseRuns.runIn(case, command, "log.pulseStudy")
+    log = os.path.join(case, "log.cellBlastFoam")
+    if change:
+        unc.checkReached(log, change, point["label"])
     t, series = di.series(case, s["window"])
     interfaces = di.interfaceMaxima(case)
-    cpu = logs.executionTime(os.path.join(case, "log.cellBlastFoam"))[0]
+    cpu = logs.executionTime(log)[0]
     record = {
         "inputs": inputs, "overpressure": point["overpressure"],
         "duration": point["duration"], "wall": wall, "cpu": cpu,
@@ -96,11 +104,24 @@ def runPoint(s, staging, point, inputs, folder, keep):
                    "targets": {k: {i: v.tolist() for i, v in d.items()}
                                for k, d in series.items()},
                    "interfaces": {k: [x.tolist() for x in v]
-                                  for k, v in interfaces.items()}}}
+                                  for k, v in interfaces.items()},
+                   "probe": probeSeries(case)}}
     ps.writeRecord(os.path.join(folder, "result.json"), record)
     if not keep:
         shutil.rmtree(case)
     return record
+
+
+def probeSeries(case):
+    """Probe 0 of the solid (the paper's Fig. 10 point): {name: list}
+    of time [s], pressure [Pa], vonMises [Pa], strainZ [-], strainRateZ
+    [1/s] (postProcessing/solidProbes)."""
+    d = postProcessing.series(case, "solidProbes/solidProbes.dat")
+    nProbe = (d.shape[1] - 1)//7
+    zBase = 1 + 5*nProbe
+    return {"t": d[:, 0].tolist(), "pressure": d[:, 1].tolist(),
+            "vonMises": d[:, 2].tolist(), "strainZ": d[:, zBase].tolist(),
+            "strainRateZ": d[:, zBase + 1].tolist()}
 
 
 def rowOf(s, record):
@@ -171,11 +192,12 @@ def writeTable(s, out, rows):
     os.replace(tmp, os.path.join(out, "table.h5"))
 
 
-def _panel(ax, A, T, Z, title, unit, levels=(), atEnd=None):
+def _panel(ax, A, T, Z, title, unit, levels=(), atEnd=None, errors=None):
     """One map: Z [len(A), len(T)] over overpressure A [Pa] x duration T
     [s]; threshold contours (value, name, style) where the map crosses
     them; atEnd [len(A), len(T)]: the points whose peak is the run's last
-    write, marked '*'."""
+    write, marked '*'; errors [len(A), len(T)]: a 95 % half-width, shown
+    '+-' where it is not NaN."""
     import matplotlib.colors as mcolors
     x, y = np.array(A)/1e6, np.array(T)*1e9
     finite = Z[np.isfinite(Z)]
@@ -202,6 +224,8 @@ def _panel(ax, A, T, Z, title, unit, levels=(), atEnd=None):
     for i, a in enumerate(x):
         for j, b in enumerate(y):
             mark = "*" if atEnd is not None and atEnd[i, j] else ""
+            if errors is not None and np.isfinite(errors[i, j]):
+                mark += "\n+-%.2g" % errors[i, j]
             right = i == len(x) - 1 and len(x) > 1
             ax.annotate("%.3g%s" % (Z[i, j], mark), (a, b), fontsize=7,
                         xytext=(-4 if right else 4, 4),
@@ -233,20 +257,23 @@ def _figure(n):
     return fig, axs.flat
 
 
-def writeMaps(s, out, rows, targets, atEnd):
+def writeMaps(s, out, rows, targets, atEnd, errors=None):
     """map_<indicator>.png and timeAbove_<threshold>.png; atEnd: {column:
-    {label: whether its peak is the last write}}"""
+    {label: whether its peak is the last write}}; errors: {column: {label:
+    the 95 % half-width of the value}} (the uncertainty's points)"""
+    errors = errors or {}
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     A, T = s["overpressure"], s["duration"]
     styles = ["-", "--", ":", "-."]
 
-    def grid(col, values=None):
+    def grid(col, values=None, default=0):
         Z = np.full((len(A), len(T)), math.nan)
         for r in rows:
             i, j = A.index(r["overpressure [Pa]"]), T.index(r["duration [s]"])
-            Z[i, j] = r[col] if values is None else values.get(r["label"], 0)
+            Z[i, j] = r[col] if values is None else values.get(r["label"],
+                                                               default)
         return Z
 
     written = []
@@ -264,7 +291,7 @@ def writeMaps(s, out, rows, targets, atEnd):
             ends = grid(col, atEnd.get(col, {}))
             marked |= bool(np.nansum(ends))
             _panel(ax, A, T, grid(col)*k, target, "[%s]" % shown, levels,
-                   ends)
+                   ends, grid(col, errors.get(col, {}), math.nan)*k)
         lines = ["%s%s [%s]" % (LABELS[ind], "" if ind != "strainRate"
                                 else " over a %g ns window"
                                 % (s["window"]*1e9), shown)]
@@ -282,6 +309,9 @@ def writeMaps(s, out, rows, targets, atEnd):
         if marked:
             lines.append("*: the peak is the run's last write (still "
                          "rising at the end)")
+        if any(errors.get("%s:%s [%s]" % (t, ind, unit)) for t in targets):
+            lines.append("+-: the 95 % interval from the material "
+                         "parameters' (uncertainty.csv)")
         fig.suptitle("\n".join(lines), fontsize=10)
         fig.tight_layout()
         p = os.path.join(out, "map_%s.png" % ind)
@@ -305,22 +335,216 @@ def writeMaps(s, out, rows, targets, atEnd):
     return written
 
 
+PROBE = (("pressure", 1e-6, "pressure [MPa]"),
+         ("vonMises", 1, "von Mises [Pa]"),
+         ("strainZ", 1, "longitudinal strain ln(stretch_z) [-]"),
+         ("strainRateZ", 1, "longitudinal strain rate [1/s]"))
+
+
+def writeUncertainty(s, out, pts, records, targets):
+    """The uncertainty of the indicators at the pulses of the
+    'uncertainty' sub-dictionary: uncertainty.csv (one row per pulse,
+    target and indicator: the grid's run, each variant, the linearised
+    95 % interval about 'about' at both steps with each parameter's
+    share), uncertainty_<pulse>.png (the indicators per target, the
+    variants and the interval) and fig10_<pulse>.png (probe 0 against time
+    with the band); printed as a table. Returns ({column: {grid label:
+    half-width}}, the files written)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    u = s["uncertainty"]
+    params = u["parameters"]
+    variants = list(u["variants"])
+    errors, written, lines = {}, [], []
+    header = ["overpressure [Pa]", "duration [s]", "target", "indicator",
+              "unit", "base"] + variants
+    if params:
+        header += ["about", "halfWidth95", "halfWidth95 checkStep"] + [
+            "share:%s" % p["name"] for p in params] + [
+            "derivative:%s" % p["name"] for p in params] + [
+            "derivative checkStep:%s" % p["name"] for p in params]
+    csv = [",".join('"%s"' % h for h in header)]
+    for A, T in u["pulses"]:
+        g = next(p for p in pts if p["overpressure"] == A
+                 and p["duration"] == T)
+        rows = {"base": rowOf(s, records[g["label"]])[0]}
+        for name, _ in unc.runs(u):
+            rows[name] = rowOf(s, records["%s_%s" % (g["label"], name)])[0]
+        result = {}
+        for target in targets:
+            for ind in di.INDICATORS:
+                col = "%s:%s [%s]" % (target, ind, di.UNITS[ind])
+                r = [A, T, target, ind, di.UNITS[ind], rows["base"][col]] + [
+                    rows[v][col] for v in variants]
+                if params:
+                    lin = unc.propagate(u, lambda n: rows[n][col])
+                    result[col] = lin
+                    H = float(lin["halfWidth"])
+                    errors.setdefault(col, {})[g["label"]] = H
+                    # each parameter's share of H^2 (with the correlation:
+                    # c_i (R c)_i / H^2, summing to 1)
+                    c = lin["contributions"]
+                    share = c*(u["correlation"] @ c)/H**2 if H > 0 \
+                        else np.full(len(params), math.nan)
+                    r += [u["about"], H, float(lin["halfWidthCheck"])] + \
+                        list(share) + list(lin["derivatives"]) + \
+                        list(lin["derivativesCheck"])
+                csv.append(",".join(
+                    '"%s"' % x if isinstance(x, str) else repr(float(x))
+                    for x in r))
+        written.append(_uncertaintyFigure(
+            plt, s, out, g, rows, result, targets, variants))
+        if params:
+            band = _fig10Band(plt, s, out, g, records)
+            if band:
+                written.append(band)
+        # the terminal's table
+        k = {}
+        lines.append("Uncertainty at %g Pa, %g s (%s): the base case's "
+                     "value%s, then each variant's" % (
+                         A, T, g["label"], "; the linearised 95 %% interval"
+                         " about '%s' (its value +- the half-width at step "
+                         "%g, and at checkStep %g)" % (
+                             u["about"], u["step"], u["checkStep"])
+                         if params else ""))
+        for col in [c for c in rows["base"] if ":" in c and "timeAbove"
+                    not in c]:
+            unit = col.rsplit("[", 1)[1][:-1]
+            k, shown = SCALE[unit]
+            text = "    %-34s base %.4g" % (col.replace(
+                "[%s]" % unit, "[%s]" % shown), rows["base"][col]*k)
+            if col in result:
+                lin = result[col]
+                text += "; %s %.4g +- %.2g (%.2g)" % (
+                    u["about"], lin["about"]*k, lin["halfWidth"]*k,
+                    lin["halfWidthCheck"]*k)
+            text += "; " + ", ".join("%s %.4g" % (v, rows[v][col]*k)
+                                     for v in variants)
+            lines.append(text)
+    tmp = os.path.join(out, "uncertainty.csv.tmp")
+    with open(tmp, "w") as f:
+        f.write("\n".join(csv) + "\n")
+    os.replace(tmp, os.path.join(out, "uncertainty.csv"))
+    written.insert(0, os.path.join(out, "uncertainty.csv"))
+    print("\n".join(lines))
+    return errors, written
+
+
+def _uncertaintyFigure(plt, s, out, g, rows, result, targets, variants):
+    """uncertainty_<label>.png: one panel per indicator, its value per
+    target for the base case, each variant, and the linearised interval
+    about 'about' as an error bar."""
+    u = s["uncertainty"]
+    fig, axs = _figure(len(di.INDICATORS))
+    x = np.arange(len(targets))
+    names = ["base"] + variants
+    markers = "os^vDPX*<>"
+    width = 0.8/len(names)
+    for ax, ind in zip(axs, di.INDICATORS):
+        unit = di.UNITS[ind]
+        k, shown = SCALE[unit]
+        for n, name in enumerate(names):
+            y = np.array([rows[name]["%s:%s [%s]" % (t, ind, unit)]
+                          for t in targets])*k
+            xx = x - 0.4 + width*(n + 0.5)
+            err = None
+            if name == u.get("about") or (name == "base" and
+                                          u.get("about") == "base"):
+                err = np.array([result["%s:%s [%s]" % (t, ind, unit)]
+                                ["halfWidth"] for t in targets])*k \
+                    if result else None
+            ax.errorbar(xx, y, yerr=err, fmt=markers[n % len(markers)],
+                        capsize=4, label=name + (
+                            " (95 %% interval, linearised)" if err is not None
+                            else ""))
+        ax.set_xticks(x)
+        ax.set_xticklabels(targets, rotation=20, fontsize=7)
+        ax.set_ylabel("[%s]" % shown)
+        ax.set_title(LABELS[ind], fontsize=9)
+        ax.grid(alpha=0.3)
+    axs[0].legend(fontsize=6)
+    fig.suptitle("%g MPa, %g ns: the indicators per target for the base case"
+                 " and each material variant; the calibration's 95 %% "
+                 "intervals carried by linearisation about '%s'" % (
+                     g["overpressure"]*1e-6, g["duration"]*1e9,
+                     u.get("about")), fontsize=9)
+    fig.tight_layout()
+    path = os.path.join(out, "uncertainty_%s.png" % g["label"])
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def _fig10Band(plt, s, out, g, records):
+    """fig10_<label>.png: probe 0 (cytoplasm-nucleus interface, 75 % of the
+    nucleus height: paper Fig. 10) against time for the base case and each
+    variant, the linearised 95 % band about 'about' (every run
+    interpolated on the times of 'about')."""
+    u = s["uncertainty"]
+
+    def probe(name):
+        label = g["label"] if name == "base" else "%s_%s" % (g["label"], name)
+        return records[label]["series"].get("probe")
+
+    ref = probe(u["about"])
+    if ref is None:
+        return None
+    t = np.array(ref["t"])
+    fig, axs = plt.subplots(2, 2, figsize=(10, 7), sharex=True)
+    for ax, (key, k, ylabel) in zip(axs.flat, PROBE):
+        def value(name):
+            p = probe(name)
+            return np.interp(t, p["t"], p[key])
+        lin = unc.propagate(u, value)
+        for name in ["base"] + list(u["variants"]):
+            p = probe(name)
+            if name == u["about"]:
+                continue
+            ax.plot(np.array(p["t"])*1e9, np.array(p[key])*k, lw=0.8,
+                    label=name)
+        ax.plot(t*1e9, lin["about"]*k, "k", lw=1.0, label=u["about"])
+        ax.fill_between(t*1e9, (lin["about"] - lin["halfWidth"])*k,
+                        (lin["about"] + lin["halfWidth"])*k, color="k",
+                        alpha=0.25, lw=0,
+                        label="%s: 95 %% band (linearised)" % u["about"])
+        ax.set_ylabel(ylabel)
+        ax.grid(alpha=0.3)
+    for ax in axs[1]:
+        ax.set_xlabel("time [ns]")
+    axs[0, 0].legend(fontsize=7)
+    fig.suptitle("Cytoplasm-nucleus interface, 75 %% of the nucleus height "
+                 "(paper Fig. 10), %g MPa, %g ns: material variants and the "
+                 "calibration's 95 %% band" % (g["overpressure"]*1e-6,
+                                               g["duration"]*1e9),
+                 fontsize=9)
+    fig.tight_layout()
+    path = os.path.join(out, "fig10_%s.png" % g["label"])
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
 def main():
     ap = argparse.ArgumentParser(prog="pulseStudy", description="Run the "
                                  "blast scene over a grid of pulses and map "
                                  "the damage indicators")
     ap.add_argument("-case", default=".")
     ap.add_argument("-keep", action="store_true")
+    ap.add_argument("-dict", default=ps.DICT)
     a = options.parse(ap)
+    global OUT
     try:
         case = os.path.abspath(a.case)
-        s = ps.read(case)
+        s = ps.read(case, a.dict)
+        OUT = ps.output(a.dict)
         out = os.path.join(case, OUT)
         os.makedirs(os.path.join(out, "points"), exist_ok=True)
         staging, digests = prepareBase(s, out)
         pts = ps.points(s)
+        upts = ps.uncertaintyPoints(s)
         todo, records = [], {}
-        for p in pts:
+        for p in pts + upts:
             folder = os.path.join(out, "points", p["label"])
             p["folder"] = folder
             p["inputs"] = ps.inputs(digests, p)
@@ -342,12 +566,16 @@ def main():
                     % (s["dict"], diff[0][0], p["label"], diff[0][1],
                        os.path.join(out, "points")))
             records[p["label"]] = r
-        print("pulseStudy: %d points (%d overpressures x %d durations), %d "
-              "finished earlier, %d to run, %d at a time; base case %s"
+        print("pulseStudy: %d points (%d overpressures x %d durations)%s, "
+              "%d finished earlier, %d to run, %d at a time; base case %s"
               % (len(pts), len(s["overpressure"]), len(s["duration"]),
+                 " and %d runs of the uncertainty (%d per pulse at %d "
+                 "pulses)" % (len(upts), len(upts)//len(
+                     s["uncertainty"]["pulses"]), len(
+                         s["uncertainty"]["pulses"])) if upts else "",
                  len(records), len(todo), s["nProcs"], s["base"]),
               flush=True)
-        for p in pts:
+        for p in pts + upts:
             if p["label"] in records:
                 print("    %s: finished earlier (%s), not run"
                       % (p["label"], os.path.relpath(os.path.join(
@@ -359,17 +587,19 @@ def main():
             try:
                 r = runPoint(s, staging, p, p["inputs"], p["folder"], a.keep)
             except (caseRuns.RunError, di.IndicatorError, OSError,
-                    postProcessing.ColumnFileError) as err:
+                    postProcessing.ColumnFileError,
+                    unc.UncertaintyError) as err:
                 if signals.stopped():       # ended by the stop, not failed
                     return None
                 failed.append((p["label"], str(err)))
                 print("    %s: FAILED after %.1f s: %s" % (
                     p["label"], time.time() - t0, err), flush=True)
                 return None
-            print("    %s: overpressure %g Pa, duration %g s: done (wall "
+            print("    %s: overpressure %g Pa, duration %g s%s: done (wall "
                   "%.1f s, solver CPU %.1f s)" % (
                       p["label"], p["overpressure"], p["duration"],
-                      r["wall"], r["cpu"]), flush=True)
+                      ", uncertainty run %s" % p["run"] if "run" in p
+                      else "", r["wall"], r["cpu"]), flush=True)
             return r
 
         for p, r in zip(todo, caseRuns.inParallel(s["nProcs"], job, todo)):
@@ -392,7 +622,11 @@ def main():
         writeTable(s, out, rows)
         for r, p in zip(rows, pts):
             r["label"] = p["label"]
-        maps = writeMaps(s, out, rows, targets, atEnd)
+        errors = {}
+        if upts:
+            errors, written = writeUncertainty(s, out, pts, records,
+                                               targets)
+        maps = writeMaps(s, out, rows, targets, atEnd, errors)
         # what the writes miss: the interfaces' peaks over the writes
         # against those of every step
         miss = {"pressure": [], "vonMises": []}
@@ -417,6 +651,9 @@ def main():
                       for c, v in atEnd.items()))
         print("Written %s/table.{csv,h5} and %d maps (%s)" % (
             OUT, len(maps), " ".join(os.path.basename(m) for m in maps)))
+        if upts:
+            print("Written %s/%s" % (OUT, " ".join(
+                os.path.basename(w) for w in written)))
         return 0
     except (ps.StudyError, caseRuns.RunError, OSError) as err:
         print("pulseStudy: error: %s" % err, file=sys.stderr)

@@ -39,11 +39,13 @@ import math
 import os
 import re
 
-from . import allrunOptions, damageIndicators, foamDict
+from . import allrunOptions, damageIndicators, foamDict, uncertainty
 
 DICT = "system/pulseStudyDict"
 KEYWORDS = ("baseCase", "baseOptions", "overpressure", "duration",
-            "sampleInterval", "strainRateWindow", "nProcs", "thresholds")
+            "sampleInterval", "strainRateWindow", "nProcs", "thresholds",
+            "uncertainty")
+OPTIONAL = ("uncertainty",)
 THRESHOLD_KEYWORDS = ("indicator", "value", "source")
 # the options the study sets per point (not in baseOptions)
 STUDY_OPTIONS = ("-amplitude", "-pulse", "-writeInterval", "-noPlots",
@@ -156,9 +158,21 @@ def _text(x):
     return t[:-2] if t.endswith(".0") else t
 
 
-def read(case):
-    """The study's settings of <case>/system/pulseStudyDict, checked."""
-    path = os.path.join(case, DICT)
+def output(dictionary):
+    """The study's output folder (relative to the case) for its
+    dictionary: postProcessing/pulseStudy for system/pulseStudyDict,
+    postProcessing/pulseStudy.<suffix> for pulseStudyDict.<suffix>, else
+    postProcessing/<the dictionary's name>."""
+    name = os.path.basename(dictionary)
+    if name.startswith("pulseStudyDict"):
+        name = "pulseStudy" + name[len("pulseStudyDict"):]
+    return "postProcessing/" + name
+
+
+def read(case, dictionary=DICT):
+    """The study's settings of <case>/<dictionary> (system/pulseStudyDict),
+    checked."""
+    path = os.path.join(case, dictionary)
     if not os.path.isfile(path):
         raise StudyError("%s: no such file" % path)
     try:
@@ -167,7 +181,7 @@ def read(case):
     except foamDict.DictError as err:
         raise StudyError(str(err))
     for k in KEYWORDS:
-        if k not in d:
+        if k not in d and k not in OPTIONAL:
             raise StudyError("%s: no entry '%s'" % (path, k))
     base = d["baseCase"]
     if not isinstance(base, str):
@@ -237,7 +251,20 @@ def read(case):
                     "the header of %s/Allrun)" % base)
                 raise StudyError("%s: entry '%s': %g: %s%s"
                                  % (path, key, v, err, why))
+    s["uncertainty"] = None
+    if "uncertainty" in d:
+        try:
+            s["uncertainty"] = uncertainty.read(
+                d["uncertainty"], path, base, s, projectDir())
+        except uncertainty.UncertaintyError as err:
+            raise StudyError(str(err))
     return s
+
+
+def projectDir():
+    """The project's folder: $PROJECT_DIR, else the one of this package."""
+    return os.environ.get("PROJECT_DIR") or os.path.normpath(os.path.join(
+        os.path.dirname(os.path.abspath(__file__)), "..", "..", ".."))
 
 
 def points(s):
@@ -253,6 +280,24 @@ def points(s):
             out.append({"overpressure": A, "duration": T,
                         "label": "p%.6g_T%.6g" % (A, T),
                         "options": opts})
+    return out
+
+
+def uncertaintyPoints(s):
+    """The runs the 'uncertainty' sub-dictionary adds: at each of its
+    pulses, each variant and each finite-difference run, a point with the
+    grid point's options and a material change; label
+    <grid point's label>_<run> (uncertainty.runs)."""
+    u = s.get("uncertainty")
+    if not u:
+        return []
+    grid = {(p["overpressure"], p["duration"]): p for p in points(s)}
+    out = []
+    for A, T in u["pulses"]:
+        g = grid[(A, T)]
+        for name, change in uncertainty.runs(u):
+            out.append(dict(g, label="%s_%s" % (g["label"], name),
+                            run=name, pulse=g["label"], change=change))
     return out
 
 
@@ -272,7 +317,10 @@ def fileDigests(folder):
 def inputs(baseDigests, point):
     """What a point's results depend on: the base case's files and the
     Allrun command line."""
-    return {"baseFiles": baseDigests, "options": point["options"]}
+    out = {"baseFiles": baseDigests, "options": point["options"]}
+    if point.get("change"):
+        out["materials"] = point["change"]
+    return out
 
 
 def differences(before, now):
@@ -291,6 +339,10 @@ def differences(before, now):
             _option(on, "-writeInterval") else "baseOptions"
         out.append((key, "the Allrun options were '%s', now '%s'"
                     % (" ".join(ob), " ".join(on))))
+    if before.get("materials", {}) != now.get("materials", {}):
+        out.append(("uncertainty", "the material change was %s, now %s"
+                    % (before.get("materials", {}),
+                       now.get("materials", {}))))
     return out
 
 
