@@ -488,8 +488,9 @@ def _fig10Band(plt, s, out, g, records):
         return records[label]["series"].get("probe")
 
     ref = probe(u["about"])
-    if ref is None:
-        return None
+    runs = ["base"] + list(u["variants"]) + [n for n, _ in unc.runs(u)]
+    if any(probe(n) is None for n in runs):
+        return None             # records of before the probe's series
     t = np.array(ref["t"])
     fig, axs = plt.subplots(2, 2, figsize=(10, 7), sharex=True)
     for ax, (key, k, ylabel) in zip(axs.flat, PROBE):
