@@ -30,9 +30,18 @@ Description
     timeAbove_<threshold>.png (overpressure x duration, one panel per
     region and interface, the thresholds drawn as contours).
 
-Usage
-    pulseStudy [-case dir] [-keep]
+    With a sub-dictionary 'uncertainty' (src/python/neuronFsi/
+    uncertainty.py): at its pulses, material variants and the finite-
+    difference runs of the calibrated parameters' intervals, run as points
+    of their own; uncertainty.csv, uncertainty_<label>.png and
+    fig10_<label>.png (the linearised 95 % interval of every indicator and
+    the band of probe 0's series), the half-widths on the maps.
 
+Usage
+    pulseStudy [-case dir] [-dict file] [-keep]
+
+    -dict    the dictionary (default system/pulseStudyDict); the outputs of
+             pulseStudyDict.<suffix> go to postProcessing/pulseStudy.<suffix>
     -keep    keep each point's case (postProcessing/pulseStudy/points/
              <label>/case; default: removed once its result is recorded)
 
