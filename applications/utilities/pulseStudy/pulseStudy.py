@@ -72,6 +72,13 @@ SCALE = {"Pa": (1e-6, "MPa"), "-": (1, "-"), "1/s": (1, "1/s"),
          "K": (1, "K")}
 
 
+def _shown(ind):
+    """(factor, unit) an indicator is shown in by the uncertainty's
+    outputs: pressure in MPa, the others in their SI unit (von Mises
+    stresses are tens of Pa)."""
+    return (1e-6, "MPa") if ind == "pressure" else (1, di.UNITS[ind])
+
+
 def prepareBase(s, out):
     """A copy of the base case after its Allclean (out/base), from which
     every point's case is copied; {file: digest} of its files."""
@@ -319,8 +326,9 @@ def writeMaps(s, out, rows, targets, atEnd, errors=None):
             lines.append("*: the peak is the run's last write (still "
                          "rising at the end)")
         if any(errors.get("%s:%s [%s]" % (t, ind, unit)) for t in targets):
-            lines.append("+-: the 95 % interval from the material "
-                         "parameters' (uncertainty.csv)")
+            lines.append("+-: the 95 % half-width from the material "
+                         "parameters' intervals, linearised about '%s' "
+                         "(uncertainty.csv)" % s["uncertainty"]["about"])
         fig.suptitle("\n".join(lines), fontsize=10)
         fig.tight_layout()
         p = os.path.join(out, "map_%s.png" % ind)
@@ -420,7 +428,7 @@ def writeUncertainty(s, out, pts, records, targets):
         for col in [c for c in rows["base"] if ":" in c and "timeAbove"
                     not in c]:
             unit = col.rsplit("[", 1)[1][:-1]
-            k, shown = SCALE[unit]
+            k, shown = _shown(col.split(":")[1].split(" ")[0])
             text = "    %-34s base %.4g" % (col.replace(
                 "[%s]" % unit, "[%s]" % shown), rows["base"][col]*k)
             if col in result:
@@ -452,7 +460,7 @@ def _uncertaintyFigure(plt, s, out, g, rows, result, targets, variants):
     width = 0.8/len(names)
     for ax, ind in zip(axs, di.INDICATORS):
         unit = di.UNITS[ind]
-        k, shown = SCALE[unit]
+        k, shown = _shown(ind)
         for n, name in enumerate(names):
             y = np.array([rows[name]["%s:%s [%s]" % (t, ind, unit)]
                           for t in targets])*k
@@ -465,8 +473,15 @@ def _uncertaintyFigure(plt, s, out, g, rows, result, targets, variants):
                     if result else None
             ax.errorbar(xx, y, yerr=err, fmt=markers[n % len(markers)],
                         capsize=4, label=name + (
-                            " (95 %% interval, linearised)" if err is not None
-                            else ""))
+                            " +- its 95 % half-width (linearised)"
+                            if err is not None else ""))
+            if err is not None:
+                # the half-width written: most are far below the marker
+                for a, b, e in zip(xx, y, err):
+                    if np.isfinite(e):
+                        ax.annotate("+-%.2g" % e, (a, b), fontsize=6,
+                                    xytext=(3, -9),
+                                    textcoords="offset points")
         ax.set_xticks(x)
         ax.set_xticklabels(targets, rotation=20, fontsize=7)
         ax.set_ylabel("[%s]" % shown)
@@ -518,6 +533,13 @@ def _fig10Band(plt, s, out, g, records):
                         (lin["about"] + lin["halfWidth"])*k, color="k",
                         alpha=0.25, lw=0,
                         label="%s: 95 %% band (linearised)" % u["about"])
+        H = lin["halfWidth"]*k
+        top = np.nanmax(np.abs(lin["about"]*k))
+        i = int(np.nanargmax(H))
+        ax.text(0.02, 0.03, "band: half-width at most %.2g (%.2g %% of the "
+                "largest |value|), at %.1f ns" % (H[i], 100*H[i]/top,
+                                                  t[i]*1e9),
+                transform=ax.transAxes, fontsize=7)
         ax.set_ylabel(ylabel)
         ax.grid(alpha=0.3)
     for ax in axs[1]:
