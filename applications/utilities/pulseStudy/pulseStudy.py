@@ -326,7 +326,7 @@ def writeMaps(s, out, rows, targets, atEnd, errors=None):
             lines.append("*: the peak is the run's last write (still "
                          "rising at the end)")
         if any(errors.get("%s:%s [%s]" % (t, ind, unit)) for t in targets):
-            lines.append("+-: the 95 % half-width from the material "
+            lines.append("+-: the 95 %% half-width from the material "
                          "parameters' intervals, linearised about '%s' "
                          "(uncertainty.csv)" % s["uncertainty"]["about"])
         fig.suptitle("\n".join(lines), fontsize=10)
