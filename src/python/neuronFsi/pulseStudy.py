@@ -339,10 +339,17 @@ def differences(before, now):
             _option(on, "-writeInterval") else "baseOptions"
         out.append((key, "the Allrun options were '%s', now '%s'"
                     % (" ".join(ob), " ".join(on))))
-    if before.get("materials", {}) != now.get("materials", {}):
-        out.append(("uncertainty", "the material change was %s, now %s"
-                    % (before.get("materials", {}),
-                       now.get("materials", {}))))
+    mb, mn = before.get("materials", {}), now.get("materials", {})
+    if mb != mn:
+        keys = sorted({(r, e) for m in (mb, mn) for r in m for e in m[r]})
+        what = ["%s.%s was %s, now %s" % (r, e, mb.get(r, {}).get(e, "not"
+                                                              " changed"),
+                                           mn.get(r, {}).get(e, "not "
+                                                             "changed"))
+                for r, e in keys
+                if mb.get(r, {}).get(e) != mn.get(r, {}).get(e)]
+        out.append(("uncertainty", "its material change differs: %s"
+                    % "; ".join(what)))
     return out
 
 
