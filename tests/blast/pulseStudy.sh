@@ -14,6 +14,8 @@
 #  - a changed base option is refused naming baseOptions, nothing run;
 #  - a point whose result is gone (an interrupted point) is the only one
 #    run again, with the same table.
+#  - the 'uncertainty' sub-dictionary: a material variant and a forward
+#    linearisation give the answers known in closed form (below).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -71,3 +73,64 @@ diff <(cut -d, -f1-$(( $(head -1 "$work/table1.csv" | tr ',' '\n' | wc -l) - 2 )
 [ ! -d "$study/postProcessing/pulseStudy/points/p5e+07_T3e-09/case" ] \
     || fail "the rerun point's case was kept without -keep"
 echo "ok   interrupted point run again alone, same indicators"
+
+# the 'uncertainty' sub-dictionary (unc20): at 50 MPa a variant (Table 2's
+# nucleus: C10 13.33 Pa, mu1 862.22 Pa against textFactor4's 6.67 and
+# 431.12 Pa) and a forward linearisation of nucleus.C10 about the base
+# case (steps 0.2 and 0.1 in ln C10): 3 more runs. In nanoseconds the
+# Maxwell branch does not relax, and the nucleus' peak von Mises stress is
+# proportional to its instantaneous shear modulus mu1 + 2 C10
+# (docs/results/uncertainty.md: to 6 digits on the default preview), so
+#  - the variant's peak is the base case's times (862.22 + 2 x 13.33)/
+#    (431.12 + 2 x 6.67);
+#  - the forward difference at step h is I 2 C10 (e^h - 1)/(h (mu1 +
+#    2 C10)), and the half-width that times w = ln(13.34/3.335)/2;
+#  - the pressure does not move (bulk response): its half-width is 0 to
+#    1e-6 relative.
+cat >> "$dict" <<'EOF'
+uncertainty
+{
+    pulses      ((50e6 3e-9));
+    variants    { table { materials table; } }
+    about       base;
+    parameters  { nucleus.C10 { interval (3.335 13.34) [Pa]; log yes; } }
+    difference  forward;
+    step        0.2;
+    checkStep   0.1;
+}
+EOF
+run > "$work/run5.log" 2>&1 || { cat "$work/run5.log"; fail "uncertainty run"; }
+grep -q "2 finished earlier, 3 to run" "$work/run5.log" \
+    || { cat "$work/run5.log"; fail "uncertainty: not the 3 runs"; }
+/usr/bin/python3 - "$study/postProcessing/pulseStudy/uncertainty.csv" <<'PY' \
+    || fail "uncertainty: the propagation does not give the known answer"
+import csv, math, sys
+rows = {(r["target"], r["indicator"]): r for r in csv.DictReader(open(sys.argv[1]))}
+r = rows[("nucleus", "vonMises")]
+I, G = float(r["base"]), 431.12 + 2*6.67
+bad = []
+def check(what, got, want, tol):
+    ok = abs(got - want) <= tol*abs(want)
+    print("%s   uncertainty: %s %.8g, expected %.8g (tolerance %g relative)"
+          % ("ok" if ok else "FAIL", what, got, want, tol))
+    if not ok:
+        bad.append(what)
+check("table/base nucleus von Mises", float(r["table"])/I,
+      (862.22 + 2*13.33)/G, 1e-4)
+for key, h in (("derivative", 0.2), ("derivative checkStep", 0.1)):
+    check("%s dI/dlnC10 [Pa]" % key, float(r[key + ":nucleus.C10"]),
+          I*2*6.67*(math.exp(h) - 1)/(h*G), 1e-4)
+check("half-width [Pa]", float(r["halfWidth95"]),
+      abs(float(r["derivative:nucleus.C10"]))*math.log(4)/2, 1e-12)
+p = rows[("nucleus", "pressure")]
+check("pressure half-width/peak + 1 [-]",
+      1 + float(p["halfWidth95"])/float(p["base"]), 1, 1e-6)
+sys.exit(1 if bad else 0)
+PY
+for f in uncertainty_p5e+07_T3e-09.png fig10_p5e+07_T3e-09.png
+do
+    [ -s "$study/postProcessing/pulseStudy/$f" ] || fail "uncertainty: no $f"
+done
+grep -q "p5e+07_T3e-09_table: overpressure 5e+07 Pa, duration 3e-09 s, uncertainty run table: done" "$work/run5.log" \
+    || fail "uncertainty: the variant did not run"
+echo "ok   uncertainty: a variant and a forward linearisation"
