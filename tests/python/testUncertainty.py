@@ -120,6 +120,27 @@ class Dictionary(Study):
         self.assertEqual(u["parameters"][0]["value"], 1.67)
         self.assertEqual(len(unc.runs(u)), 2 + 2*2)
 
+    def testVariantsOnly(self):
+        text = """{ pulses ((30e6 2e-9) (10e6 5e-9));
+                    variants { text { materials text; } } }"""
+        u = self.study(text=text)["uncertainty"]
+        self.assertEqual(u["parameters"], [])
+        self.assertEqual([n for n, _ in unc.runs(u)], ["text"])
+        self.assertEqual(len(ps.uncertaintyPoints(self.study(text=text))),
+                         2)
+        self.refused(r"entry 'step' without 'parameters'",
+                     text=text.replace("} } }", "} } step 0.1; }"))
+        self.refused(r"neither 'variants' nor 'parameters'",
+                     text="{ pulses ((30e6 2e-9)); }")
+
+    def testStepNames(self):
+        # two steps that %g would print alike get every digit
+        u = self.study(("checkStep   0.1", "checkStep 0.2000001"))[
+            "uncertainty"]
+        names = [n for n, _ in unc.runs(u)]
+        self.assertEqual(len(set(names)), len(names))
+        self.assertIn("calibrated_nucleus.C10-0.2000001", names)
+
     def testUnknownParameter(self):
         self.refused(r"parameters/cytoplasm.C11: 'cytoplasm.C11': region "
                      r"cytoplasm has no parameter 'C11'; did you mean 'C10'"

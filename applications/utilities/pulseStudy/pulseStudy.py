@@ -489,10 +489,11 @@ def _uncertaintyFigure(plt, s, out, g, rows, result, targets, variants):
         ax.grid(alpha=0.3)
     axs[0].legend(fontsize=6)
     fig.suptitle("%g MPa, %g ns: the indicators per target for the base case"
-                 " and each material variant; the calibration's 95 %% "
-                 "intervals carried by linearisation about '%s'" % (
+                 " and each material variant%s" % (
                      g["overpressure"]*1e-6, g["duration"]*1e9,
-                     u.get("about")), fontsize=9)
+                     "; the calibration's 95 %% intervals carried by "
+                     "linearisation about '%s'" % u["about"]
+                     if u["parameters"] else ""), fontsize=9)
     fig.tight_layout()
     path = os.path.join(out, "uncertainty_%s.png" % g["label"])
     fig.savefig(path, dpi=110)

@@ -381,7 +381,9 @@ def materialsOf(base, change):
 
 
 def _tag(x):
-    return ("%g" % x)
+    """A step in a run's name: %g, unless two steps would then read the
+    same (then every digit)."""
+    return "%g" % x if float("%g" % x) == x else repr(float(x))
 
 
 def runs(u):
