@@ -131,7 +131,11 @@ def runPoint(s, staging, point, inputs, folder, keep):
 def probeSeries(case):
     """Probe 0 of the solid (the paper's Fig. 10 point): {name: list}
     of time [s], pressure [Pa], vonMises [Pa], strainZ [-], strainRateZ
-    [1/s] (postProcessing/solidProbes)."""
+    [1/s] (postProcessing/solidProbes); None for a case without solid
+    probes."""
+    if not os.path.isdir(os.path.join(case, "postProcessing",
+                                      "solidProbes")):
+        return None
     d = postProcessing.series(case, "solidProbes/solidProbes.dat")
     nProbe = (d.shape[1] - 1)//7
     zBase = 1 + 5*nProbe
