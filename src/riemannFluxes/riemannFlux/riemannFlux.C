@@ -109,14 +109,15 @@ void Foam::riemannFlux::patchStates
     const label patchi,
     const scalarField* wPtr,
     faceStates& L,
-    faceStates& R
+    faceStates& R,
+    const bool firstOrder
 ) const
 {
     const fvPatch& patch = mesh_.boundary()[patchi];
     const volScalarField& rho = thermo.rho();
     const volScalarField& p = thermo.p();
 
-    if (patch.coupled())
+    if (patch.coupled() && !firstOrder)
     {
         reconstruction_.reconstructCoupled(patchi, rho, U, p, L, R);
     }
@@ -288,36 +289,29 @@ void Foam::riemannFlux::signalSpeeds
 {
     const tmp<surfaceScalarField> tw(faceSpeeds());
 
-    // Internal faces, a block at a time (as fluxes)
-    reconstruction_.cellGradients(thermo.rho(), U, thermo.p());
-    const label nFaces = mesh_.nInternalFaces();
-    for (label start = 0; start < nFaces; start += blockSize)
+    // Internal faces: the faster of the two cells (w |Sf| = the mesh flux)
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    const vectorField& Sf = mesh_.Sf().primitiveField();
+    const scalarField& magSf = mesh_.magSf().primitiveField();
+    const vectorField& Uc = U.primitiveField();
+    const scalarField& c = thermo.c().primitiveField();
+    const scalarField* phiMesh =
+        tw.valid() ? &mesh_.phi().primitiveField() : nullptr;
+    scalarField& amax = amaxSf.primitiveFieldRef();
+    forAll(nei, facei)
     {
-        const label size = min(blockSize, nFaces - start);
-        reconstruction_.reconstruct
+        const label o = own[facei], n = nei[facei];
+        const scalar wA = phiMesh ? (*phiMesh)[facei] : 0;
+        const scalar A = magSf[facei];
+        amax[facei] = max
         (
-            start, size, thermo.rho(), U, thermo.p(), L_, R_
+            mag((Uc[o] & Sf[facei]) - wA) + c[o]*A,
+            mag((Uc[n] & Sf[facei]) - wA) + c[n]*A
         );
-        L_.complete(thermo);
-        R_.complete(thermo);
-
-        const SubList<vector> Sf(mesh_.Sf().primitiveField(), size, start);
-        const SubList<scalar> magSf
-        (
-            mesh_.magSf().primitiveField(), size, start
-        );
-        if (tw.valid())
-        {
-            toFaceFrame
-            (
-                L_, R_, Sf, magSf,
-                SubList<scalar>(tw().primitiveField(), size, start)
-            );
-        }
-        SubList<scalar> amax(amaxSf.primitiveFieldRef(), size, start);
-        speeds(L_, R_, Sf, magSf, amax);
     }
 
+    // Boundary faces: the patch states, first order on coupled patches too
     forAll(mesh_.boundary(), patchi)
     {
         const fvPatch& patch = mesh_.boundary()[patchi];
@@ -329,7 +323,7 @@ void Foam::riemannFlux::signalSpeeds
             tw.valid() ? &tw().boundaryField()[patchi] : nullptr;
 
         faceStates L, R;
-        patchStates(thermo, U, patchi, wPtr, L, R);
+        patchStates(thermo, U, patchi, wPtr, L, R, true);
         if (wPtr)
         {
             toFaceFrame(L, R, patch.Sf(), patch.magSf(), *wPtr);
