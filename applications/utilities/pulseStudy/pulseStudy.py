@@ -314,6 +314,12 @@ def main():
     a = options.parse(ap)
     try:
         case = os.path.abspath(a.case)
+        # the case path once, before anything runs: every point runs in a
+        # folder under it (adv29 z5: each point failed with an unrelated
+        # error of its Allrun)
+        problem = options.casePathProblem(case)
+        if problem:
+            raise ps.StudyError(problem)
         s = ps.read(case)
         out = os.path.join(case, OUT)
         os.makedirs(os.path.join(out, "points"), exist_ok=True)
