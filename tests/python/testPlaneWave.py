@@ -423,6 +423,34 @@ class InflowFile(TempDirTestCase):
                                         "bad: .*" + msg):
                 pw.readInflow(self.tmp + "/bad")
 
+    def testRowsDigestRequiredAndChecked(self):
+        """the rows' digest is required like the boundary requires it, and
+        verified (adv29 w09c, w09e: without it a row edit ran); a keyword
+        given twice or unknown is refused (w04)"""
+        path = self.tmp + "/inflowWave"
+        pw.writeInflow(path, wave(), 3e-5, TABLE, "test")
+        good = read(path)
+        line = next(x for x in good.split("\n")
+                    if x.startswith("rowsDigest"))
+        rows = good[good.index("data"):]
+        second = rows.split("\n")[3]
+        edited = second.replace("(", "(1", 1)
+        for text, msg in (
+                (good.replace(line + "\n", ""),
+                 "no entry 'rowsDigest': its data rows cannot be checked.*"
+                 "planeWave -inflow 3e-05 -overwrite"),
+                (good.replace(second, edited, 1).replace(rows.split("\n")[2],
+                                                          "    (0 0 0)", 1),
+                 "entry 'data': the rows are not those planeWave -inflow "
+                 "wrote"),
+                (good.replace(line, line + "\n" + line),
+                 "entry 'rowsDigest' is given twice"),
+                (good.replace(line, line + "\ncolour red;"),
+                 "unknown entry 'colour'")):
+            self.write("bad", text)
+            with self.assertRaisesRegex(pw.PlaneWaveError, "bad: .*" + msg):
+                pw.readInflow(self.tmp + "/bad")
+
     def testKeepsADifferingFile(self):
         """an earlier file whose entries differ is kept unless overwrite
         (issue 19: an edited wave replaced without a word); one differing

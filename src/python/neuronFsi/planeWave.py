@@ -98,6 +98,10 @@ def _foamDictionary(path, entry, value=False):
 
 INFLOW = "planeWaveInflow"     # the top patch type of a shortened scene
 INFLOW_FILE = "constant/inflowWave"
+# the keywords of a constant/inflowWave (writeInflow; the C++ reader,
+# planeWaveInflowWave, checks the same)
+INFLOW_KEYWORDS = ("height", "columnHeight", "pulse", "dz", "ambientPressure",
+                   "ambientTemperature", "thermoDigest", "rowsDigest", "data")
 
 
 def _topP(case, patch):
@@ -762,6 +766,24 @@ def readInflow(path):
     for key in ("ambientPressure", "ambientTemperature", "thermoDigest"):
         if key in d:
             out[key] = d[key]
+    # the rows as written: their digest is required, as by the boundary
+    # (adv29 w09c, w09e: a wave without it ran unchecked)
+    if "rowsDigest" not in d:
+        raise PlaneWaveError("%s: no entry 'rowsDigest': its data rows "
+                             "cannot be checked against what planeWave "
+                             "-inflow wrote. Compute it again: planeWave "
+                             "-inflow %g -overwrite" % (path, out["height"]))
+    if inflowDigest(data) != d["rowsDigest"]:
+        raise PlaneWaveError("%s: entry 'data': the rows are not those "
+                             "planeWave -inflow wrote (their SHA-1 is %s, "
+                             "the entry rowsDigest %s): compute it again "
+                             "(planeWave -inflow %g -overwrite), do not edit "
+                             "it" % (path, inflowDigest(data),
+                                     d["rowsDigest"], out["height"]))
+    try:
+        foamDict.check_keywords(d, INFLOW_KEYWORDS, path)
+    except foamDict.DictError as err:
+        raise PlaneWaveError(str(err))
     return out
 
 
