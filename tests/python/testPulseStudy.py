@@ -140,8 +140,14 @@ class Dictionary(TempDirTestCase):
                      strainRateWindow="0.75e-9")
 
     def testNProcs(self):
-        self.refused(r"entry 'nProcs' = 0 is outside the valid range",
-                     nProcs="0")
+        """a whole number in [1, the grid's points] (adv29 s15, s16: 1.5
+        and 1e12 were said to be outside [1, inf), which holds both)"""
+        for n in ("0", "1.5", "1e12", "7", "-1", "two"):
+            self.refused(r"entry 'nProcs' = \S+ is not valid: a whole number"
+                         r" in \[1, 6\] \(the points run at a time; the "
+                         r"grid has 6 points\)", nProcs=n)
+        self.assertEqual(self.study(nProcs="6")["nProcs"], 6)
+        self.assertEqual(self.study(nProcs="2.0")["nProcs"], 2)
 
     def testNoBase(self):
         self.refused(r"entry 'baseCase': .*absent has no Allrun",

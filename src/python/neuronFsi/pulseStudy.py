@@ -192,12 +192,17 @@ def read(case):
         raise StudyError("%s: entry 'strainRateWindow' = %g s is not a whole"
                          " number of sampleInterval = %g s" % (
                              path, s["window"], s["sampleInterval"]))
+    # at most every point of the grid at a time (adv29 s15, s16: 1.5 and
+    # 1e12 were said to be outside [1, inf), which holds both)
     n = d["nProcs"]
-    if isinstance(n, bool) or not isinstance(n, int) or n < 1:
-        raise StudyError("%s: entry 'nProcs' = %s is outside the valid range"
-                         " [1, inf) (points run at a time)"
-                         % (path, foamDict.format_value(n)))
-    s["nProcs"] = n
+    most = len(s["overpressure"])*len(s["duration"])
+    if isinstance(n, bool) or not isinstance(n, (int, float)) \
+            or not (math.isfinite(n) and n == int(n) and 1 <= n <= most):
+        raise StudyError("%s: entry 'nProcs' = %s is not valid: a whole "
+                         "number in [1, %d] (the points run at a time; the "
+                         "grid has %d points)"
+                         % (path, foamDict.format_value(n), most, most))
+    s["nProcs"] = int(n)
     th = d["thresholds"]
     if not isinstance(th, dict):
         raise StudyError("%s: entry 'thresholds' is not a sub-dictionary"
