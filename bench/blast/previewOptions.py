@@ -111,8 +111,8 @@ def runOption(option, out, env, pulse, keep=False):
     if keep and finished(option, out):
         print(f"{option}: finished in {out}, kept", flush=True)
         return
-    c, _, _, cmd = B.prepare(os.path.join(out, name), "1", SIZE["Z"],
-                             SIZE["endTime"], env, extra, pulse)
+    c, _, cmd = B.prepare(os.path.join(out, name), "1", SIZE["Z"],
+                          SIZE["endTime"], env, extra, pulse)
     for (f, e), v in entries.items():
         # -set: sets or adds (-add leaves an existing entry as it is)
         subprocess.run(["foamDictionary", "-entry", e, "-set", v, f], cwd=c,

@@ -78,7 +78,7 @@ def prepare(case, f, Z, endTime, env, extra=(), pulse=PULSE):
     res = bench.runLogged(cmd, c, env, "log.Allrun")
     if res.returncode != 0:
         bench.fail(res, f"Allrun -noRun failed in {c}")
-    return c, sizes, "gmsh fallback" in res.stdout, " ".join(cmd)
+    return c, sizes, " ".join(cmd)
 
 
 def timeV(path):
@@ -113,9 +113,9 @@ def count(c):
 def runLevel(f, out, size, env):
     """prepare and run one level; its results are in files of the case
     (parseLevel reads them)"""
-    c, sizes, fallback, cmd = prepare(os.path.join(out, f"level_{f}"), f,
-                                      size["Z"], size["endTime"], env,
-                                      size.get("extra", ()))
+    c, sizes, cmd = prepare(os.path.join(out, f"level_{f}"), f,
+                            size["Z"], size["endTime"], env,
+                            size.get("extra", ()))
     cells, elements = count(c)
     print(f"factor {f}: {cells} fluid cells, {elements} solid elements "
           f"(h {sizes['h']:.3g} m, far {sizes['far']:.3g} m, cell "
@@ -131,8 +131,6 @@ def parseLevel(f, out, size, name=None):
     c = os.path.join(out, name or f"level_{f}", "axisymmetricPreview")
     x = float(f)
     sizes = {k: v*x for k, v in DEFAULT.items()}
-    allrun = open(os.path.join(c, "log.Allrun")).read()
-    fallback = "gmsh fallback" in allrun
     cmd = ("./Allrun -noRun -noPlots -pulse " f"{PULSE:g} -h "
            f"{sizes['h']:.6g} -far {sizes['far']:.6g} -dz "
            f"{sizes['dz']:.6g} -cell "
@@ -146,7 +144,7 @@ def parseLevel(f, out, size, name=None):
     (cpu, wall), atWindow, tLast, split = logTimes(
         os.path.join(c, "log.cellBlastFoam"), window)
     r = dict(factor=f, sizes=sizes, cells=cells, elements=elements,
-             fallback=fallback, cmd=cmd, case=c, rc=rc,
+             cmd=cmd, case=c, rc=rc,
              tLast=tLast, rss=rss, cpuTimeV=cpuTimeV, wallTimeV=wallTimeV,
              cpu=cpu, wall=wall, atWindow=atWindow, split=split,
              load=bench.loadAverage(c))
@@ -373,7 +371,7 @@ def report(rows, size, mode, start, png, commit, dirty, end,
         end_ = "" if r["rc"] == 0 else f" (FAILED at {r['tLast']*1e9:.2f} ns)"
         cw = f"{r['atWindow'][0]:.1f}" if r["atWindow"] else "-"
         w(f"| x{r['factor']} | {s['h']*1e6:.3g} / {s['far']*1e6:.3g}, "
-          f"{s['cell']*1e6:.3g}{' (gmsh fallback)' if r['fallback'] else ''}"
+          f"{s['cell']*1e6:.3g}"
           f" | {r['cells']} | {r['elements']} | {r['steps']} | "
           f"{r['dtMin']:.3g}-{r['dtMax']:.3g} | {r['itMean']:.2f} / "
           f"{r['itMax']} | {r['notConverged']} | {cw} | {r['cpu']:.1f}{end_}"

@@ -55,7 +55,7 @@ makeSolid() {
     rm -f "$c/constant/cell.msh"
     gmsh -2 -setnumber D 16.8 -setnumber H 7.9 -setnumber h 1.6 \
         -setnumber hc 0.8 -setnumber nm 24 \
-        "$root/tutorials/indentation/cellFallback.geo" \
+        "$root/tests/lib/cellFallback.geo" \
         -o "$c/constant/cell.msh" > /dev/null 2>&1
     mkdir -p "$c/postProcessing/indentation"
     for f in force.dat peaks.dat solid.h5 solid.xmf

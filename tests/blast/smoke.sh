@@ -1,6 +1,6 @@
 #!/bin/bash
 # Smoke run of tutorials/blast/axisymmetricPreview (coarse meshes, a 30 um
-# water column, 22 ns): the whole Allrun chain (cellMesh or its fallback,
+# water column, 22 ns): the whole Allrun chain (cellMesh,
 # blockMesh wedge, cellBlastFoam with robin coupling, foamToVTK, solidToFoam
 # + foamToVTK -region solid). Asserts:
 #  - the FSI force map is conservative (solid nodal forces = fluid ring

@@ -13,7 +13,7 @@ mkdir "$work/base"; cd "$work/base"
 cp -r "$root/tutorials/indentation/averageCell"/{system,constant} .
 gmsh -2 -setnumber D 16.8 -setnumber H 7.9 -setnumber h 1.6 \
     -setnumber hc 0.8 -setnumber nm 24 \
-    "$root/tutorials/indentation/cellFallback.geo" \
+    "$root/tests/lib/cellFallback.geo" \
     -o constant/cell.msh > log.gmsh 2>&1
 /usr/bin/python3 "$root/tests/lib/setProtocol.py" constant/indenterProperties \
     --smoke

@@ -25,7 +25,7 @@ mesh()
 {
     gmsh -2 -setnumber D 16.8 -setnumber H 7.9 -setnumber h "$1" \
         -setnumber hc 0.8 -setnumber nm 24 \
-        "$root/tutorials/indentation/cellFallback.geo" \
+        "$root/tests/lib/cellFallback.geo" \
         -o constant/cell.msh > log.gmsh 2>&1
 }
 

@@ -1,6 +1,6 @@
 #!/bin/bash
-# Smoke run of an indentation tutorial in a scratch copy: coarse fallback
-# mesh sizes, a short loading table (load 0.3 um, hold 1 s, one +-0.5 um
+# Smoke run of an indentation tutorial in a scratch copy: its cellMesh
+# mesh, a short loading table (load 0.3 um, hold 1 s, one +-0.5 um
 # cycle at 10 um/s), then its Allrun and plot. Fails on any error, a FOAM
 # error in a log, missing outputs, or forces that do not behave: positive
 # and growing while loading, peak above the hold, relaxation in the hold.
@@ -15,7 +15,6 @@ case=$work/$(basename "$src")
 cd "$case"
 /usr/bin/python3 "$root/tests/lib/setProtocol.py" constant/indenterProperties \
     --smoke
-export MESH_SIZE=1.6 CONTACT_SIZE=0.8 MEMBRANE_N=24
 ./Allclean > /dev/null 2>&1 || true
 ./Allrun
 if grep -l "FOAM FATAL" log.* 2>/dev/null; then

@@ -190,8 +190,12 @@ class Shell(TempDirTestCase):
     """etc/RunFunctions allrunOptions in a script: the variables set, an
     error exits 1 before the script's next line."""
 
-    def script(self, args):
-        p = self.write("Allrun", """. "%s/etc/RunFunctions"
+    def script(self, args, folder=None):
+        folder = folder or self.tmp
+        os.makedirs(folder, exist_ok=True)
+        p = os.path.join(folder, "Allrun")
+        with open(p, "w") as f:
+            f.write(""". "%s/etc/RunFunctions"
 h=default
 allrunOptions "" "$@" <<'OPTIONS'
 -h  h  number(0,inf)  m
@@ -199,9 +203,22 @@ OPTIONS
 echo "h=$h"
 """ % ROOT)
         return subprocess.run(["bash", p] + args, capture_output=True,
-                              text=True, timeout=30, cwd=self.tmp, env=dict(
+                              text=True, timeout=30, cwd=folder, env=dict(
                                   os.environ, PYTHONPATH=os.path.join(
                                       ROOT, "src/python")))
+
+    def testCasePathWithSpace(self):
+        """the case checked once, up front, in every Allrun (adv29 z4:
+        foamDictionary's "stripInvalid", then "membrane = '' is not a
+        finite decimal number")"""
+        for name, what in (("sp ace", "a space"), ("quo'te", "'''")):
+            r = self.script(["-h", "1e-6"], os.path.join(self.tmp, name))
+            self.assertEqual((r.returncode, r.stdout), (1, ""))
+            self.assertIn('Allrun: error: the case directory "%s" (the '
+                          "Allrun's folder) holds %s, which OpenFOAM's file "
+                          "names cannot hold" % (os.path.realpath(
+                              os.path.join(self.tmp, name)), what),
+                          r.stderr)
 
     def testShell(self):
         r = self.script(["-h", "1e-6"])

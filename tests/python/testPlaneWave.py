@@ -6,6 +6,7 @@ and, on a short real column (rhoRiemannFoam, about a second), the column
 of such a case and planeWave -inflow with its refusals."""
 import math
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -51,6 +52,40 @@ class PulseShape(TempDirTestCase):
                                     "boundaryField/bottom has no "
                                     "uniformValue table"):
             pw.appliedPressure(self.tmp, "bottom")
+
+
+class WaterBound(TempDirTestCase):
+    """the water states taken as input (adv29 f19: p 5e70 Pa was set)"""
+
+    def testSameNumbersAsTheLaw(self):
+        """WATER_P_MAX, WATER_T_MAX are src/eos/MieGruneisen.H's"""
+        text = read(os.path.join(ROOT, "src", "eos", "MieGruneisen.H"))
+        for name, value in (("inputPMax", pw.WATER_P_MAX),
+                            ("inputTMax", pw.WATER_T_MAX)):
+            m = re.search(r"static constexpr double %s = ([0-9.e+]+);"
+                          % name, text)
+            self.assertIsNotNone(m, name)
+            self.assertEqual(float(m.group(1)), value, name)
+
+    def testPulseBeyondTheBound(self):
+        shutil.copytree(os.path.join(PREVIEW, "constant"),
+                        os.path.join(self.tmp, "constant"))
+        for A, ok in (("1e10", True), ("1.1e10", False), ("5e70", False),
+                      ("-2e10", False)):
+            self.write("0.orig/p",
+                       "internalField uniform 0;\nboundaryField\n{\n"
+                       "    top { type uniformFixedValue; uniformValue "
+                       "table ((0 0) (1e-10 %s) (1 0)); }\n}\n" % A)
+            if ok:
+                self.assertEqual(pw.appliedPressure(self.tmp)[1][1],
+                                 float(A))
+                continue
+            with self.assertRaisesRegex(
+                    pw.PlaneWaveError, r"0.orig/p: boundaryField/top/"
+                    r"uniformValue: the pressure %s Pa at 1e-10 s is outside "
+                    r"the water states the mieGruneisen law is used for: "
+                    r"\|p\| <= 1e\+10 Pa" % re.escape("%g" % float(A))):
+                pw.appliedPressure(self.tmp)
 
 
 class ReferenceFile(TempDirTestCase):
@@ -421,6 +456,34 @@ class InflowFile(TempDirTestCase):
             self.write("bad", good.replace(old, new, 1))
             with self.assertRaisesRegex(pw.PlaneWaveError,
                                         "bad: .*" + msg):
+                pw.readInflow(self.tmp + "/bad")
+
+    def testRowsDigestRequiredAndChecked(self):
+        """the rows' digest is required like the boundary requires it, and
+        verified (adv29 w09c, w09e: without it a row edit ran); a keyword
+        given twice or unknown is refused (w04)"""
+        path = self.tmp + "/inflowWave"
+        pw.writeInflow(path, wave(), 3e-5, TABLE, "test")
+        good = read(path)
+        line = next(x for x in good.split("\n")
+                    if x.startswith("rowsDigest"))
+        rows = good[good.index("data"):]
+        second = rows.split("\n")[3]
+        edited = second.replace("(", "(1", 1)
+        for text, msg in (
+                (good.replace(line + "\n", ""),
+                 "no entry 'rowsDigest': its data rows cannot be checked.*"
+                 "planeWave -inflow 3e-05 -overwrite"),
+                (good.replace(second, edited, 1).replace(rows.split("\n")[2],
+                                                          "    (0 0 0)", 1),
+                 "entry 'data': the rows are not those planeWave -inflow "
+                 "wrote"),
+                (good.replace(line, line + "\n" + line),
+                 "entry 'rowsDigest' is given twice"),
+                (good.replace(line, line + "\ncolour red;"),
+                 "unknown entry 'colour'")):
+            self.write("bad", text)
+            with self.assertRaisesRegex(pw.PlaneWaveError, "bad: .*" + msg):
                 pw.readInflow(self.tmp + "/bad")
 
     def testKeepsADifferingFile(self):

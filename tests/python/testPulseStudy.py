@@ -140,8 +140,14 @@ class Dictionary(TempDirTestCase):
                      strainRateWindow="0.75e-9")
 
     def testNProcs(self):
-        self.refused(r"entry 'nProcs' = 0 is outside the valid range",
-                     nProcs="0")
+        """a whole number in [1, the grid's points] (adv29 s15, s16: 1.5
+        and 1e12 were said to be outside [1, inf), which holds both)"""
+        for n in ("0", "1.5", "1e12", "7", "-1", "two"):
+            self.refused(r"entry 'nProcs' = \S+ is not valid: a whole number"
+                         r" in \[1, 6\] \(the points run at a time; the "
+                         r"grid has 6 points\)", nProcs=n)
+        self.assertEqual(self.study(nProcs="6")["nProcs"], 6)
+        self.assertEqual(self.study(nProcs="2.0")["nProcs"], 2)
 
     def testNoBase(self):
         self.refused(r"entry 'baseCase': .*absent has no Allrun",
@@ -149,6 +155,10 @@ class Dictionary(TempDirTestCase):
 
 
 class Records(TempDirTestCase):
+
+    def read(self, name):
+        with open(os.path.join(self.tmp, name)) as f:
+            return f.read()
 
     def testDigestsAndDifferences(self):
         self.write("base/a", "1")
@@ -176,8 +186,62 @@ class Records(TempDirTestCase):
         ps.writeRecord(path, {"inputs": {}, "series": {"x": [1.0,
                                                              math.nan]}})
         self.assertEqual(ps.readRecord(path)["series"]["x"], [1.0, None])
-        self.write("result.json", '{"inputs": {}, "seri')  # cut short
-        self.assertIsNone(ps.readRecord(path))
+        # written atomically: a cut record is damaged, refused, kept
+        self.write("result.json", '{"inputs": {}, "seri')
+        with self.assertRaisesRegex(ps.StudyError, "result.json: the "
+                                    "point's record is damaged \\(not JSON"):
+            ps.readRecord(path)
+        self.assertEqual(self.read("result.json"), '{"inputs": {}, "seri')
+
+    def point(self, A=3e7, T=2e-9):
+        return {"label": "p%.6g_T%.6g" % (A, T), "overpressure": A,
+                "duration": T}
+
+    def record(self, point):
+        return dict(point, inputs={"options": ["-amplitude", repr(
+            point["overpressure"])]}, wall=4.15, cpu=3.0,
+            series={"t": [0.0, 5e-10], "targets": {"nucleus": {
+                "pressure": [0.0, 9.34e-07]}}})
+
+    def testRecordValuesVerified(self):
+        """the record carries the digest of its values, verified on every
+        read (adv29 sr05: the wall time 4.15 -> 9.15 s; sr05c: a series
+        x1000, valid JSON both, were used as they were)"""
+        path = os.path.join(self.tmp, "result.json")
+        p = self.point()
+        ps.writeRecord(path, self.record(p))
+        self.assertEqual(ps.readRecord(path, p)["wall"], 4.15)
+        good = self.read("result.json")
+        for old, new in (("4.15", "9.15"), ("9.34e-07", "0.000934"),
+                         ('"cpu": 3.0', '"cpu": 3.0, "extra": 1')):
+            self.assertIn(old, good)
+            self.write("result.json", good.replace(old, new, 1))
+            with self.assertRaisesRegex(
+                    ps.StudyError, "result.json: the point's record is "
+                    "damaged \\(the digest of its values is [0-9a-f]{64}, "
+                    "the one it carries [0-9a-f]{64}: a value was changed"
+                    ".*Nothing was run: move the file away"):
+                ps.readRecord(path, p)
+        # a record written before the digest: not verifiable, refused
+        import json
+        r = json.loads(good)
+        del r["digest"]
+        self.write("result.json", json.dumps(r))
+        with self.assertRaisesRegex(ps.StudyError, "damaged \\(no entry "
+                                    "digest; a record written before"):
+            ps.readRecord(path, p)
+
+    def testAnotherPointsRecord(self):
+        """a record copied over another point's is said to be that
+        point's (adv29 sr07: said to be a changed 'baseOptions')"""
+        path = os.path.join(self.tmp, "result.json")
+        ps.writeRecord(path, self.record(self.point(1e7)))
+        with self.assertRaisesRegex(
+                ps.StudyError, "result.json is the record of another point "
+                "\\(p1e\\+07_T2e-09: overpressure 10000000.0 Pa, duration "
+                "2e-09 s\\), not of p3e\\+07_T2e-09 \\(overpressure 3e\\+07 "
+                "Pa, duration 2e-09 s\\)"):
+            ps.readRecord(path, self.point())
 
 
 if __name__ == "__main__":

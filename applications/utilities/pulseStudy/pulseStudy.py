@@ -20,6 +20,9 @@ Description
     its inputs (the base case's files after its Allclean, its Allrun
     options, the strain-rate window) and is not run again; a point
     interrupted (a folder without a result) is run again from the start.
+    The record carries the digest of its own values and its point,
+    verified on every read: a damaged record, or another point's, is
+    refused naming the file (nothing runs; it is left for the user).
     A dictionary whose inputs differ from those of the finished points
     (another base case or options) is refused with the entry named:
     nothing is run (move postProcessing/pulseStudy/points away to start
@@ -114,7 +117,8 @@ def runPoint(s, staging, point, inputs, folder, keep):
     interfaces = di.interfaceMaxima(case)
     cpu = logs.executionTime(log)[0]
     record = {
-        "inputs": inputs, "overpressure": point["overpressure"],
+        "inputs": inputs, "label": point["label"],
+        "overpressure": point["overpressure"],
         "duration": point["duration"], "wall": wall, "cpu": cpu,
         "series": {"t": t.tolist(),
                    "targets": {k: {i: v.tolist() for i, v in d.items()}
@@ -573,6 +577,12 @@ def main():
     global OUT
     try:
         case = os.path.abspath(a.case)
+        # the case path once, before anything runs: every point runs in a
+        # folder under it (adv29 z5: each point failed with an unrelated
+        # error of its Allrun)
+        problem = options.casePathProblem(case)
+        if problem:
+            raise ps.StudyError(problem)
         s = ps.read(case, a.dict)
         OUT = ps.output(a.dict)
         out = os.path.join(case, OUT)
@@ -586,7 +596,7 @@ def main():
             p["folder"] = folder
             p["inputs"] = ps.inputs(digests, p)
             p["inputs"]["strainRateWindow"] = s["window"]
-            r = ps.readRecord(os.path.join(folder, "result.json"))
+            r = ps.readRecord(os.path.join(folder, "result.json"), p)
             if r is None:
                 todo.append(p)
                 continue

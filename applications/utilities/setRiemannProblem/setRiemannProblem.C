@@ -16,6 +16,10 @@ Description
     directories after the start time (results of a run from the former
     initial fields) is refused, nothing written, unless -overwrite, which
     removes them first (the option of the solvers, foamTools::resultGuard).
+    Each state must lie in the law's domain and, for water (mieGruneisen),
+    within the water states the project takes as input: |p| <= 1e10 Pa,
+    0 < T <= 1000 K (eos::MieGruneisen::inputPMax, inputTMax, with their
+    reasons); checked before anything is removed or written.
 
 \*---------------------------------------------------------------------------*/
 
@@ -24,6 +28,8 @@ Description
 #include "rhoEThermo.H"
 #include "riemannProblem.H"
 #include "resultGuard.H"
+#include "MieGruneisen.H"
+#include <cstdio>
 
 int main(int argc, char *argv[])
 {
@@ -116,6 +122,36 @@ int main(int argc, char *argv[])
                 << side << "' (rho = " << s.rho << " kg/m^3, p = " << s.p
                 << " Pa) is outside the domain of the equation of state: "
                 << reason << exit(FatalError);
+        }
+        // Water: the states the law is used for (eos::MieGruneisen::
+        // inputPMax, inputTMax; adv29 f19: p 5e70 Pa set T 1.2e65 K)
+        if (thermo.lawName() == eos::MieGruneisen::typeName)
+        {
+            scalarField TS(1);
+            thermo.TFromRhoE(rhoS, eS, TS);
+            const scalar pMax = eos::MieGruneisen::inputPMax;
+            const scalar TMax = eos::MieGruneisen::inputTMax;
+            if (!(mag(s.p) <= pMax) || !(TS[0] > 0 && TS[0] <= TMax))
+            {
+                const auto g = [](const scalar x)
+                {
+                    char buf[32];
+                    std::snprintf(buf, sizeof(buf), "%g", x);
+                    return std::string(buf);
+                };
+                FatalErrorInFunction
+                    << args.path()/"system/riemannProblemDict" << ": state"
+                    << " '" << side << "' (rho = " << s.rho << " kg/m^3, p"
+                    << " = " << g(s.p).c_str() << " Pa: T = "
+                    << g(TS[0]).c_str() << " K) is outside the water"
+                    << " states the mieGruneisen law is used for: |p| <= "
+                    << g(pMax).c_str() << " Pa and T in (0, "
+                    << g(TMax).c_str() << "] K (a fit for liquid water:"
+                    << " its linear Us-Up Hugoniot and the liquid's"
+                    << " constant Cv; the"
+                    << " reasons in src/eos/MieGruneisen.H, inputPMax)."
+                    << nl << "    Nothing was written." << exit(FatalError);
+            }
         }
     }
 

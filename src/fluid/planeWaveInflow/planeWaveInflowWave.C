@@ -157,6 +157,18 @@ void Foam::planeWaveInflowWave::readWave
             << "<height>`, default constant/inflowWave)"
             << exit(FatalIOError);
     }
+    // A file that is not text (adv29 w15: a file of zeros was
+    // "Found ERROR but expected EOF" at line 1, the entry not named)
+    const std::string binary(foamTools::binaryContent(path_));
+    if (!binary.empty())
+    {
+        FatalIOErrorInFunction(entry)
+            << "Patch " << patch.name() << ": entry 'file' " << file_
+            << " names " << path_ << ", which holds binary data ("
+            << binary.c_str() << "), not a text dictionary: give the wave"
+            << " file written by `planeWave -inflow <height>` (default "
+            << "constant/inflowWave)" << exit(FatalIOError);
+    }
     IFstream is(path_);
     if (!is.good())
     {
@@ -166,6 +178,17 @@ void Foam::planeWaveInflowWave::readWave
             << exit(FatalIOError);
     }
     const dictionary wave(is);
+    // The file's keywords: the project's one keyword check (adv29 w04: a
+    // keyword given twice was taken without a word, OpenFOAM keeping the
+    // last; an unknown one is a misspelt or foreign entry)
+    foamTools::checkKeywords
+    (
+        wave,
+        {
+            "height", "columnHeight", "pulse", "dz", "ambientPressure",
+            "ambientTemperature", "thermoDigest", "rowsDigest", "data"
+        }
+    );
 
     // A plane patch: one normal (the patch may have no faces on some
     // processors of a parallel run)
@@ -306,9 +329,19 @@ void Foam::planeWaveInflowWave::readWave
     // of the rows at 17 digits as read (neuronFsi.planeWave.inflowDigest;
     // asRead: what OpenFOAM's reader rounds to zero is 0). A value
     // edited in the rows ran silently (issue 19, class 5: only the header
-    // entries were compared); a file without the entry (written before it
-    // existed) is read as it is
-    if (wave.found("rowsDigest"))
+    // entries were compared). The entry is required like thermoDigest:
+    // without it, an edited or damaged row ran unchecked (adv29 w09c,
+    // w09e: the line removed, then a row edited, exit 0)
+    if (!wave.found("rowsDigest", keyType::LITERAL))
+    {
+        FatalIOErrorInFunction(wave)
+            << "The wave in " << path_ << " has no entry 'rowsDigest': its"
+            << " data rows cannot be checked against what planeWave -inflow"
+            << " wrote (an edited or damaged row would run unchecked; the"
+            << " entry is written by planeWave -inflow since issue 19)."
+            << " Compute it again: planeWave -inflow " << num(height)
+            << " -overwrite" << exit(FatalIOError);
+    }
     {
         const string expected(wave.get<string>("rowsDigest"));
         SHA1 sha;

@@ -29,6 +29,11 @@ value and the valid range. The values are printed as shell assignments
 (shell-quoted), for the Allrun to eval; no option's text is ever
 evaluated, neither by the shell nor by Python.
 
+main() first checks the case, the Allrun's folder (its working
+directory): a path holding a character OpenFOAM's file names drop (a
+space, a quote) is refused with the project's message
+(options.casePathProblem), before any step runs.
+
 The record (a file of the case, e.g. .allrunOptions): a re-run of the
 Allrun over a case that holds an earlier run's results must not silently
 keep results computed with other options (runApplication skips every step
@@ -48,7 +53,7 @@ import re
 import shlex
 import sys
 
-from . import foamDict, ranges
+from . import foamDict, options, ranges
 
 NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\Z")
 INTEGER = re.compile(r"[+-]?\d+\Z")
@@ -286,6 +291,13 @@ def main(argv):
             return 0
         prog, record = argv[0], argv[1]
         args = argv[3:] if argv[2:3] == ["--"] else argv[2:]
+        # the case (the Allrun's folder, its working directory) once, up
+        # front: OpenFOAM cannot run in a path holding a space (adv29 z4:
+        # foamDictionary's "stripInvalid", then an unrelated error)
+        problem = options.casePathProblem(os.getcwd(),
+                                          " (the Allrun's folder)")
+        if problem:
+            raise OptionError(problem)
         try:
             opts, results = declaration(sys.stdin.read())
         except ValueError as e:

@@ -1,6 +1,6 @@
 """Reader of the ASCII gmsh files our tools write and read (cellMesh's
-cell.msh in format 4.1, its fluid.msh in format 2.2, the gmsh fallback's
-cell.msh), independent of gmsh.
+cell.msh in format 4.1, its fluid.msh in format 2.2, the tests' gmsh
+cell.msh of tests/lib/cellFallback.geo), independent of gmsh.
 
 read(path) -> (X, groups)
     X       {node tag: array of the 3 coordinates}

@@ -36,6 +36,42 @@ def notARegularFile(path):
     return "not a regular file"
 
 
+def _invalidCharacters(path):
+    """The characters of path that OpenFOAM's file names drop (fileName::
+    valid: white space, a quote), each once, named ("a space, '\"'");
+    "" if there are none."""
+    names = []
+    for c in path:
+        if c in " \t\n\r\v\f\"'":
+            name = {" ": "a space", "\t": "a tab", "\n": "a newline"}.get(
+                c, "'%s'" % c if c in "\"'" else repr(c))
+            if name not in names:
+                names.append(name)
+    return ", ".join(names)
+
+
+def casePathProblem(path, how=""):
+    """The project's message for a case directory holding a character
+    OpenFOAM's file names drop (a space, a quote, a tab, a newline), ""
+    if it holds none: the Python side of foamTools::checkCasePath
+    (src/foamTools/inputChecks.H, the same words). path is taken
+    absolute and physical (os.path.realpath, as OpenFOAM's cwd()); how
+    says how it was given (e.g. " (the working directory)"). Used by
+    every Allrun (etc/RunFunctions allrunOptions) and pulseStudy before
+    anything runs: OpenFOAM's applications in such a case end in
+    "fileName::stripInvalid() called for invalid fileName", or run in
+    another directory (issue 19, adv29 z4, z5)."""
+    full = os.path.realpath(path)
+    named = _invalidCharacters(full)
+    if not named:
+        return ""
+    kept = "".join(c for c in full if not _invalidCharacters(c))
+    return ("the case directory \"%s\"%s holds %s, which OpenFOAM's file "
+            "names cannot hold (it would run in \"%s\").\n    Nothing was "
+            "read or written: rename the directory (or one above it) "
+            "without such characters." % (full, how, named, kept))
+
+
 def _numbers(s):
     """Whether s is one or more numbers (sweepCase -values "-1 -2")."""
     try:

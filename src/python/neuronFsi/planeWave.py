@@ -98,6 +98,16 @@ def _foamDictionary(path, entry, value=False):
 
 INFLOW = "planeWaveInflow"     # the top patch type of a shortened scene
 INFLOW_FILE = "constant/inflowWave"
+# The water states the project takes as input (a pulse, an initial state)
+# with the mieGruneisen law: |p| <= WATER_P_MAX [Pa], 0 < T <= WATER_T_MAX
+# [K]; the reasons and the same numbers in src/eos/MieGruneisen.H
+# (inputPMax, inputTMax; tests/python/testPlaneWave.py compares them)
+WATER_P_MAX = 1e10
+WATER_T_MAX = 1000.0
+# the keywords of a constant/inflowWave (writeInflow; the C++ reader,
+# planeWaveInflowWave, checks the same)
+INFLOW_KEYWORDS = ("height", "columnHeight", "pulse", "dz", "ambientPressure",
+                   "ambientTemperature", "thermoDigest", "rowsDigest", "data")
 
 
 def _topP(case, patch):
@@ -153,13 +163,36 @@ def appliedPressure(case, patch="top"):
         if "pulse" not in top:
             raise PlaneWaveError("%s: boundaryField/%s (type %s) has no "
                                  "pulse table" % (path, patch, INFLOW))
-        return _table(path, "boundaryField/%s/pulse" % patch, top["pulse"])
-    if "uniformValue" not in top:
-        raise PlaneWaveError("%s: boundaryField/%s has no uniformValue "
-                             "table (nor type %s with a pulse table)"
-                             % (path, patch, INFLOW))
-    return _table(path, "boundaryField/%s/uniformValue" % patch,
-                  top["uniformValue"])
+        where = "boundaryField/%s/pulse" % patch
+        rows = _table(path, where, top["pulse"])
+    else:
+        if "uniformValue" not in top:
+            raise PlaneWaveError("%s: boundaryField/%s has no uniformValue "
+                                 "table (nor type %s with a pulse table)"
+                                 % (path, patch, INFLOW))
+        where = "boundaryField/%s/uniformValue" % patch
+        rows = _table(path, where, top["uniformValue"])
+    if _law(case) == "mieGruneisen":
+        for t, v in rows:
+            if not abs(v) <= WATER_P_MAX:
+                raise PlaneWaveError(
+                    "%s: %s: the pressure %g Pa at %g s is outside the "
+                    "water states the mieGruneisen law is used for: |p| <= "
+                    "%g Pa (a fit for liquid water; the reasons in "
+                    "src/eos/MieGruneisen.H, inputPMax)"
+                    % (path, where, v, t, WATER_P_MAX))
+    return rows
+
+
+def _law(case):
+    """The equationOfState of <case>'s constant/thermophysicalProperties
+    (None if it cannot be read: its reader says why later)."""
+    try:
+        return foamDict.read(os.path.join(
+            case, "constant", "thermophysicalProperties")).get(
+                "equationOfState")
+    except (OSError, foamDict.DictError):
+        return None
 
 
 def inflowColumnHeight(case, patch="top"):
@@ -762,6 +795,24 @@ def readInflow(path):
     for key in ("ambientPressure", "ambientTemperature", "thermoDigest"):
         if key in d:
             out[key] = d[key]
+    # the rows as written: their digest is required, as by the boundary
+    # (adv29 w09c, w09e: a wave without it ran unchecked)
+    if "rowsDigest" not in d:
+        raise PlaneWaveError("%s: no entry 'rowsDigest': its data rows "
+                             "cannot be checked against what planeWave "
+                             "-inflow wrote. Compute it again: planeWave "
+                             "-inflow %g -overwrite" % (path, out["height"]))
+    if inflowDigest(data) != d["rowsDigest"]:
+        raise PlaneWaveError("%s: entry 'data': the rows are not those "
+                             "planeWave -inflow wrote (their SHA-1 is %s, "
+                             "the entry rowsDigest %s): compute it again "
+                             "(planeWave -inflow %g -overwrite), do not edit "
+                             "it" % (path, inflowDigest(data),
+                                     d["rowsDigest"], out["height"]))
+    try:
+        foamDict.check_keywords(d, INFLOW_KEYWORDS, path)
+    except foamDict.DictError as err:
+        raise PlaneWaveError(str(err))
     return out
 
 

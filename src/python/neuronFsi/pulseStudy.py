@@ -29,8 +29,10 @@ entry.
 
 A point's record (points/<label>/result.json) holds the digest of its
 inputs (the base case's files after its Allclean, one digest a file, and
-the Allrun command line) and the indicators' series; a point with a
-record whose inputs match is not run again.
+the Allrun command line), its point (label, overpressure, duration), the
+indicators' series and the digest of all these (recordDigest), verified
+on every read; a point with a record whose inputs match is not run
+again. A damaged record or another point's is refused, naming the file.
 """
 
 import hashlib
@@ -204,12 +206,17 @@ def read(case, dictionary=DICT):
         raise StudyError("%s: entry 'strainRateWindow' = %g s is not a whole"
                          " number of sampleInterval = %g s" % (
                              path, s["window"], s["sampleInterval"]))
+    # at most every point of the grid at a time (adv29 s15, s16: 1.5 and
+    # 1e12 were said to be outside [1, inf), which holds both)
     n = d["nProcs"]
-    if isinstance(n, bool) or not isinstance(n, int) or n < 1:
-        raise StudyError("%s: entry 'nProcs' = %s is outside the valid range"
-                         " [1, inf) (points run at a time)"
-                         % (path, foamDict.format_value(n)))
-    s["nProcs"] = n
+    most = len(s["overpressure"])*len(s["duration"])
+    if isinstance(n, bool) or not isinstance(n, (int, float)) \
+            or not (math.isfinite(n) and n == int(n) and 1 <= n <= most):
+        raise StudyError("%s: entry 'nProcs' = %s is not valid: a whole "
+                         "number in [1, %d] (the points run at a time; the "
+                         "grid has %d points)"
+                         % (path, foamDict.format_value(n), most, most))
+    s["nProcs"] = int(n)
     th = d["thresholds"]
     if not isinstance(th, dict):
         raise StudyError("%s: entry 'thresholds' is not a sub-dictionary"
@@ -357,8 +364,19 @@ def _option(opts, name):
     return opts[opts.index(name) + 1] if name in opts[:-1] else None
 
 
+def recordDigest(record):
+    """The SHA-256 of a point's record without its own 'digest' entry, as
+    JSON with sorted keys: what its 'digest' entry must be (the values
+    read back from JSON are the doubles written, so the digest is the same
+    on every read)."""
+    return hashlib.sha256(json.dumps(
+        {k: v for k, v in record.items() if k != "digest"}, sort_keys=True,
+        separators=(",", ":"), allow_nan=False).encode()).hexdigest()
+
+
 def writeRecord(path, record):
-    """record as JSON (NaN as null), atomically."""
+    """record as JSON (NaN as null) with the digest of its values
+    (recordDigest), atomically."""
     def clean(x):
         if isinstance(x, float) and not math.isfinite(x):
             return None
@@ -367,22 +385,64 @@ def writeRecord(path, record):
         if isinstance(x, (list, tuple)):
             return [clean(v) for v in x]
         return x
+    record = clean(record)
+    record["digest"] = recordDigest(record)
     tmp = path + ".tmp%d" % os.getpid()
     with open(tmp, "w") as f:
-        json.dump(clean(record), f)
+        json.dump(record, f)
         f.write("\n")
     os.replace(tmp, path)
 
 
-def readRecord(path):
-    """A point's record, or None if it has none or it is not readable
-    (an interrupted write: the point runs again)."""
+def readRecord(path, point=None):
+    """A point's record, verified; None if it has none. A record that is
+    not one (not JSON, entries missing), whose values are not those its
+    digest was made of (edited or damaged: adv29 sr05, sr05c) or, with
+    point, that is another point's (its label, overpressure or duration:
+    a record copied or moved, sr07) is a StudyError naming the file:
+    nothing runs, and the record is left as it is (the user moves it away
+    to run the point again). Records are written atomically: a cut one is
+    damaged, not an interrupted write."""
+    if not os.path.lexists(path):
+        return None
+    rerun = ("Nothing was run: move the file away (or remove it) to run "
+             "the point again")
+
+    def damaged(why):
+        return StudyError("%s: the point's record is damaged (%s): its "
+                          "values cannot be used. %s" % (path, why, rerun))
     try:
         with open(path) as f:
             r = json.load(f)
-        if not isinstance(r, dict) or "inputs" not in r \
-                or "series" not in r:
-            return None
-        return r
-    except (OSError, ValueError):
-        return None
+    except (OSError, UnicodeDecodeError) as err:
+        raise damaged("cannot be read: %s" % err)
+    except ValueError as err:
+        raise damaged("not JSON: %s" % err)
+    if not isinstance(r, dict):
+        raise damaged("not a JSON object")
+    missing = [k for k in ("inputs", "series", "digest") if k not in r]
+    if missing:
+        raise damaged("no entry %s%s" % (", ".join(missing), "; a record "
+                      "written before the records carried the digest of "
+                      "their values" if missing == ["digest"] else ""))
+    try:
+        now = recordDigest(r)
+    except (TypeError, ValueError) as err:
+        raise damaged(str(err))
+    if now != r["digest"]:
+        raise damaged("the digest of its values is %s, the one it carries "
+                      "%s: a value was changed since it was written"
+                      % (now, r["digest"]))
+    if point is not None:
+        theirs = (r.get("label"), r.get("overpressure"), r.get("duration"))
+        ours = (point["label"], point["overpressure"], point["duration"])
+        if theirs != ours:
+            raise StudyError(
+                "%s is the record of another point (%s: overpressure %s Pa, "
+                "duration %s s), not of %s (overpressure %g Pa, duration %g "
+                "s): copied or moved there. Its values are not this point's."
+                " Nothing was run: put it back in its own folder, or move it"
+                " away to run %s again" % (
+                    path, theirs[0], theirs[1], theirs[2], ours[0], ours[1],
+                    ours[2], ours[0]))
+    return r

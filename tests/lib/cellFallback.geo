@@ -1,5 +1,6 @@
-// Fallback cell mesh (used by the Allrun scripts only while the cellMesh
-// utility is unavailable): axisymmetric r-z section of the semi-spheroid
+// A fast cell mesh of the tests (tests/badInput/runCorpus.sh,
+// tests/indentation/restartInputs.sh, outputLost.sh; no tutorial uses it:
+// a tutorial's cell is cellMesh's or none): axisymmetric r-z section of the semi-spheroid
 // cell (semi-axes a = D/2, H) with a spheroidal nucleus of volume fraction f
 // and the same D/H ratio centred at z = H/2, and a membrane layer between
 // the outer ellipse and the ellipse of semi-axes (a - t, H - t) (thickness
