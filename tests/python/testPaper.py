@@ -295,6 +295,7 @@ class Command(TempDirTestCase):
         p, vm = PULSE_P[T]*shape, PULSE_VM[T]*shape
         ez = -0.01*shape*(T/5e-9)
         rate = np.gradient(ez, t)
+        heat = 0.1*np.clip((t - 60e-9)/5e-9, 0, 1)   # 0.1 K in 5 ns
         pt = (2*um, Z_PROBE, 0) if not threeD else (2*um, 0, Z_PROBE)
         pp = os.path.join(d, "postProcessing")
         write(os.path.join(pp, "solidProbes", "0", "solidProbes.dat"),
@@ -302,8 +303,8 @@ class Command(TempDirTestCase):
               "strainRate0[1/s] dT0[K]  strainZ0[-] strainRateZ0[1/s]\n"
               "# probe 0 interfaceProbe at (%.10g %.10g %.10g) m in "
               "cytoplasm: element 4, patch of 6 elements\n" % pt
-              + "".join("%.10g %.10g %.10g 0 0 0 %.10g %.10g\n" % r
-                        for r in zip(t, p, vm, ez, rate)))
+              + "".join("%.10g %.10g %.10g 0 0 %.10g %.10g %.10g\n" % r
+                        for r in zip(t, p, vm, heat, ez, rate)))
         write(os.path.join(pp, "solidInterfaces", "0",
                            "interfaceMaxima.dat"),
               "# time [s]  pMax:membrane-cytoplasm[Pa] "
@@ -386,6 +387,9 @@ class Command(TempDirTestCase):
             self.assertAlmostEqual(
                 b["jumps"]["membrane-cytoplasm"]["maxAbs"], 0.5e6)
             self.assertAlmostEqual(b["probePressurePeakTime"], 70e-9)
+            self.assertAlmostEqual(b["probeTemperatureRise"], 0.1)
+            self.assertAlmostEqual(b["probeTemperatureRiseTime"], 4e-9)
+            self.assertAlmostEqual(b["writeInterval"], 65.5e-9)
         # Fig. 10: the probe's peaks and the plane wave's
         f10 = res["fig10"]
         for k, T in enumerate(paper.FIG10_DURATIONS):
