@@ -418,6 +418,22 @@ class Command(TempDirTestCase):
         self.assertIn("averageCell: no current results (-noRun)", r.stderr)
         self.assertFalse(os.path.exists(os.path.join(self.tmp, "out")))
 
+    def testFailureLeavesTheOutput(self):
+        out = os.path.join(self.tmp, "out")
+        write(os.path.join(out, "README.md"), "earlier\n")
+        probes = os.path.join(self.results, "blast", "quarter3D",
+                              "postProcessing", "solidProbes", "0",
+                              "solidProbes.dat")
+        write(probes, read(probes).replace("\n0 ", "\nzero ", 1))
+        r = self.paperFigures("-output", out)
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("solidProbes.dat: not a number", r.stderr)
+        self.assertEqual(os.listdir(self.tmp).count("out"), 1)
+        self.assertEqual(os.listdir(out), ["README.md"])
+        self.assertEqual(read(os.path.join(out, "README.md")), "earlier\n")
+        self.assertFalse([n for n in os.listdir(self.tmp)
+                          if n.startswith(".paperFigures")])
+
     def testOtherOptionsAreNotUsed(self):
         run = paperCases.read(self.case, self.project)["cases"]["quarter3D"]
         folder = os.path.join(self.results, "blast", "quarter3D")

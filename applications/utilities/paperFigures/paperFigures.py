@@ -37,7 +37,9 @@ Usage
 import argparse
 import json
 import os
+import shutil
 import sys
+import tempfile
 
 import numpy as np
 import matplotlib
@@ -947,6 +949,8 @@ def main():
     results = os.path.abspath(a.results or tutorials)
     out = os.path.abspath(a.output or os.path.join(case, "postProcessing",
                                                    "paper"))
+    if os.path.lexists(out) and not os.path.isdir(out):
+        sys.exit("paperFigures: -output %s exists and is not a folder" % out)
     try:
         s = paperCases.read(case, tutorials)
     except paperCases.PaperError as err:
@@ -971,22 +975,55 @@ def main():
         cases[name] = folder
         used[name] = {"folder": folder, "tutorial": run["relative"],
                       "options": run["options"]}
-    os.makedirs(out, exist_ok=True)
+    # everything is made in a staging folder beside the output and moved
+    # into it at the end: a failure leaves the output as it was
+    os.makedirs(os.path.dirname(out), exist_ok=True)
+    final = out
+    out = tempfile.mkdtemp(prefix=".paperFigures.", dir=os.path.dirname(out))
+    try:
+        make(cases, used, s, out, tutorials, results)
+    except BaseException:
+        shutil.rmtree(out)
+        raise
+    os.makedirs(final, exist_ok=True)
+    names = sorted(os.listdir(out))
+    for n in names:
+        os.replace(os.path.join(out, n), os.path.join(final, n))
+    os.rmdir(out)
+    with open(os.path.join(final, "results.json")) as f:
+        res = json.load(f)
+    n = sum(1 for c, ok in res.get("checks", []) if ok)
+    say("Written %s: %s; %d of %d comparisons hold" % (
+        final, " ".join(names), n, len(res.get("checks", []))))
+
+
+def make(cases, used, s, out, tutorials, results):
+    """The figures, README.md and results.json into out."""
     res = {"runs": used}
     md = ["# The paper's figures and tables beside ours", "",
-          "Made by `tutorials/paper/Allrun` (`paperFigures -case "
-          "tutorials/paper -output docs/results/paper` for this copy); the "
-          "paper's numbers: src/python/neuronFsi/paper.py, every number "
+          "Made by `tutorials/paper/Allrun` after the main job "
+          "(`tutorials/Allrun`); this copy by `cd tutorials/paper && "
+          "./Allrun -output ../../docs/results/paper`. The runs the main "
+          "job does not make (the 10 and 15 ns pulses) or whose results "
+          "are not current, it makes in tutorials/paper/postProcessing/"
+          "runs. The paper's numbers: src/python/neuronFsi/paper.py, every "
+          "number "
           "compared: results.json. A number the paper prints with \"~\" or "
           "as digits is drawn with the interval of its digits (\"~300 Pa\":"
           " 250-350 Pa). Runs used:", "",
           "| run | tutorial and options | results |", "|---|---|---|"]
+    project = os.path.dirname(tutorials)
     for name, u in used.items():
+        f = u["folder"]
+        if f.startswith(results + os.sep):
+            where = "the main job's, tutorials/%s" % os.path.relpath(
+                f, results)
+        elif f.startswith(project + os.sep):
+            where = os.path.relpath(f, project)
+        else:
+            where = f
         md.append("| %s | %s %s | %s |" % (
-            name, u["tutorial"], " ".join(u["options"]),
-            os.path.relpath(u["folder"], os.path.dirname(tutorials))
-            if u["folder"].startswith(os.path.dirname(tutorials))
-            else u["folder"]))
+            name, u["tutorial"], " ".join(u["options"]), where))
     md.append("")
     listing(md)
     try:
@@ -1020,11 +1057,6 @@ def main():
     with open(os.path.join(out, "results.json"), "w") as f:
         json.dump(clean(res), f, indent=1)
         f.write("\n")
-    n = sum(1 for c, ok in res.get("checks", []) if ok)
-    say("Written %s: README.md, results.json and %d figures; %d of %d "
-        "comparisons hold" % (out, len([x for x in os.listdir(out)
-                                        if x.endswith(".png")]),
-                              n, len(res.get("checks", []))))
 
 
 if __name__ == "__main__":
