@@ -22,6 +22,10 @@ Description
 Usage
     paperFigures [-case dir] [-output dir] [-results dir] [-noRun]
 
+    A run stopped (SIGTERM, SIGINT, a failure) leaves its folder
+    unfinished: the next paperFigures makes it again; the runs that
+    finished are reused.
+
     -output     the folder written (made if missing; its earlier PNGs,
                 README.md and results.json are replaced)
     -results    the tutorials folder in which the main job's results are
@@ -48,7 +52,8 @@ import matplotlib.pyplot as plt
 from matplotlib.collections import PolyCollection
 
 from neuronFsi import (blastPlots as bp, foamField, indentationPlots as ip,
-                       msh, paper, paperCases, planeWave, postProcessing)
+                       msh, paper, paperCases, planeWave, postProcessing,
+                       signals)
 from neuronFsi.solidResults import SolidResults
 
 DPI = 90
@@ -943,18 +948,18 @@ def main():
     a = ap.parse_args()
     case = os.path.abspath(a.case)
     if not os.environ.get("FOAM_TUTORIALS"):
-        sys.exit("paperFigures: FOAM_TUTORIALS is not set (source "
+        sys.exit("paperFigures: error: FOAM_TUTORIALS is not set (source "
                  "<project>/etc/bashrc)")
     tutorials = os.path.abspath(os.environ["FOAM_TUTORIALS"])
     results = os.path.abspath(a.results or tutorials)
     out = os.path.abspath(a.output or os.path.join(case, "postProcessing",
                                                    "paper"))
     if os.path.lexists(out) and not os.path.isdir(out):
-        sys.exit("paperFigures: -output %s exists and is not a folder" % out)
+        sys.exit("paperFigures: error: -output %s exists and is not a folder" % out)
     try:
         s = paperCases.read(case, tutorials)
     except paperCases.PaperError as err:
-        sys.exit("paperFigures: %s" % err)
+        sys.exit("paperFigures: error: %s" % err)
     cases, used = {}, {}
     for name, run in s["cases"].items():
         folder, notes = paperCases.locate(run, case, results)
@@ -962,7 +967,7 @@ def main():
             say("%s: not current: %s" % (name, n))
         if folder is None:
             if a.noRun:
-                sys.exit("paperFigures: %s: no current results (-noRun)"
+                sys.exit("paperFigures: error: %s: no current results (-noRun)"
                          % name)
             say("%s: running %s %s in %s" % (
                 name, run["relative"], " ".join(run["options"]),
@@ -970,7 +975,7 @@ def main():
             try:
                 folder = paperCases.make(run, case)
             except paperCases.PaperError as err:
-                sys.exit("paperFigures: %s" % err)
+                sys.exit("paperFigures: error: %s" % err)
         say("%s: results of %s" % (name, folder))
         cases[name] = folder
         used[name] = {"folder": folder, "tutorial": run["relative"],
@@ -1038,7 +1043,7 @@ def make(cases, used, s, out, tutorials, results):
     except (ip.IndentationPlotError, bp.BlastPlotError,
             postProcessing.ColumnFileError, planeWave.PlaneWaveError,
             msh.MshError, OSError, KeyError) as err:
-        sys.exit("paperFigures: %s" % err)
+        sys.exit("paperFigures: error: %s" % err)
     with open(os.path.join(out, "README.md"), "w") as f:
         f.write("\n".join(md) + "\n")
 
@@ -1060,4 +1065,8 @@ def make(cases, used, s, out, tutorials, results):
 
 
 if __name__ == "__main__":
-    main()
+    # SIGTERM, SIGHUP, SIGINT end a run started (signals.call) and exit
+    # 128 + the signal; the run's folder, unfinished, is made again next
+    # time, and the staging folder is removed
+    with signals.stopOn("paperFigures"):
+        main()
