@@ -236,7 +236,9 @@ def figures4to6(cases, out, res, md):
         ax[3].plot([tk], [Fk*1e9], "o", color="C0")
         ours[lab] = Fk*1e-0
     ax[3].set_xlabel("time [s]")
-    ax[3].set_ylabel("force [nN]")
+    ax[3].set_ylabel("force [nN] (log; contact lost below 0.05)")
+    ax[3].set_yscale("log")
+    ax[3].set_ylim(0.05, None)
     ax[3].grid(True)
     ax[3].legend(fontsize=7)
     fig.suptitle("Average cell (paper Figs. 4-6: force against depth per "
@@ -301,6 +303,9 @@ def table3(cases, out, res, md):
     ax.set_xticklabels(paper.TABLE3_LABELS)
     ax.set_ylabel("maximum force [nN]")
     ax.set_yscale("log")
+    ax.set_ylim(2, 16)
+    ax.set_yticks([2, 3, 4, 5, 6, 8, 10, 12, 15])
+    ax.set_yticklabels(["2", "3", "4", "5", "6", "8", "10", "12", "15"])
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8)
     ax.set_title("Table 3: validation cell (14.2 x 7.6 um), nine cycle "
