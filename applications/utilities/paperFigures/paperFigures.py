@@ -56,11 +56,11 @@ from neuronFsi import (blastPlots as bp, foamField, indentationPlots as ip,
                        signals)
 from neuronFsi.solidResults import SolidResults
 
-DPI = 90
-DPI_3D = 60
+DPI = 90            # the PNGs' resolution [dots per inch]
+DPI_3D = 60         # the 3D pictures': PNGs below 300 kB
 FIG10_FROM = 55e-9  # Fig. 10 drawn from this time [s] (before: at rest)
 CONTINUOUS = 0.1    # relative jump (paper.relativeJumps) of a pressure
-                    # continuous across an interface, at most         # the 3D pictures: PNGs below 300 kB
+                    # continuous across an interface, at most
 
 
 def say(*a):
@@ -199,7 +199,8 @@ def tables12(cases, out, res, md):
            "text (sec. 3.1-3.2), eta1 = mu1 tau1. Our default is the "
            "reading `textFactor4` (docs/results/indentation.md).",
            "",
-           "| region | entry | Table 2 | text | ours |", "|---|---|---|---|---|"]
+           "| region | entry | Table 2 | text | ours |",
+           "|---|---|---|---|---|"]
     for reg in ("membrane", "cytoplasm", "nucleus"):
         m = mats.get(reg, {})
         for e in ("C10", "mu1", "tau1", "eta1"):
@@ -590,9 +591,9 @@ def figures789Blast(cases, out, res, md, window):
            "pressure is continuous across the interfaces in the blast "
            "(discontinuous in the indentation; the relative jump: median "
            "|jump| across the interface over the median |pressure| of its "
-           "elements, continuous below 10 %%); the von Mises maxima (~10-100 Pa, at the "
-           "interfaces in the blast); the temperature rise (~0.1 K, bar "
-           "0.05-0.15 K); maximum compression at 70 ns (bar 65-75 ns; ours: "
+           "elements, continuous below 10 %%); the von Mises maxima "
+           "(~10-100 Pa, at the interfaces in the blast); the temperature "
+           "rise (~0.1 K, bar 0.05-0.15 K); maximum compression at 70 ns (bar 65-75 ns; ours: "
            "the peak pressure and the most negative longitudinal strain at "
            "the Fig. 10 probe, over t <= %g ns). Shown in the pictures, not "
            "measured: the pressure following the wave along the horizontal "
@@ -980,7 +981,8 @@ def main():
     out = os.path.abspath(a.output or os.path.join(case, "postProcessing",
                                                    "paper"))
     if os.path.lexists(out) and not os.path.isdir(out):
-        sys.exit("paperFigures: error: -output %s exists and is not a folder" % out)
+        sys.exit("paperFigures: error: -output %s exists and is not a "
+                 "folder" % out)
     try:
         s = paperCases.read(case, tutorials)
     except paperCases.PaperError as err:

@@ -108,7 +108,8 @@ def fields(case, time, h5=None, tolerance=1e-6):
             if tolerance is not None and \
                     abs(f.t - time) > tolerance*max(1, abs(time)):
                 raise IndentationPlotError(
-                    "%s: no write at t = %g s (nearest %g s)" % (h5, time, f.t))
+                    "%s: no write at t = %g s (nearest %g s)"
+                    % (h5, time, f.t))
             f.X = r.mesh("coordinates")
             f.conn = r.mesh("connectivity")
             f.region = r.mesh("region")
