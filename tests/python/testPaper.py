@@ -256,7 +256,8 @@ class Command(TempDirTestCase):
         rows, t, z = [], 0.0, 0.0
         for st, load, rate in paper.TABLE1:
             for k in range(3):
-                rows.append("%.10g %.10g 1e-9 0 0 %s\n" % (t, z, st))
+                rows.append("%.10g %.10g 1e-9 %.10g 0 %s\n" % (t, z, t*1e-7,
+                                                              st))
                 t += 1.0
                 z += rate*1e-6*(1 if k < 2 else -1)
         write(os.path.join(pp, "force.dat"),
@@ -374,6 +375,9 @@ class Command(TempDirTestCase):
             self.assertAlmostEqual(j["cytoplasm-nucleus"]["underIndenter"],
                                    30)
             self.assertAlmostEqual(ind[key]["vonMisesMaxValue"], 80)
+            # force.dat's row nearest the peak (a row a second, 0-20 s)
+            self.assertAlmostEqual(ind[key]["contactRadius"],
+                                   min(round(ind[key]["time"]), 20)*1e-7)
             self.assertEqual(ind[key]["vonMisesMax"]["region"], "membrane")
             c = ind[key]["vonMisesMaxCytoplasmNucleus"]
             self.assertEqual((c["region"], c["value"]), ("nucleus", 50))

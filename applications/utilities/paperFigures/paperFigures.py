@@ -396,6 +396,14 @@ def locate(f, values):
     return f.names[f.region[e]], float(r), float(c[axial]), bool(inter[e])
 
 
+def contactRadius(case, t):
+    """The contact radius [m] of force.dat's row at time t [s]."""
+    table = postProcessing.readTable(os.path.join(
+        case, "postProcessing", "indentation", "force.dat"))
+    time = table.column("time")
+    return float(table.column("contactRadius")[np.argmin(abs(time - t))])
+
+
 def figures78Indentation(cases, out, res, md):
     rows, peaks = ip.read(cases["averageCell"])
     # the paper's time, and our reading of it: "the first indentation
@@ -422,6 +430,7 @@ def figures78Indentation(cases, out, res, md):
                                  "underIndenterAt": list(xa[:2])}
         d["pressureMax"] = dict(zip(("region", "r", "z", "interface"),
                                     locate(f, f.p)))
+        d["contactRadius"] = contactRadius(cases["averageCell"], f.t)
         d["vonMisesMax"] = dict(zip(("region", "r", "z", "interface"),
                                     locate(f, f.vm)))
         d["vonMisesMaxValue"] = float(f.vm.max())
@@ -683,6 +692,13 @@ def figures789Blast(cases, out, res, md, window):
         checks.append(("indentation at %s: largest von Mises %.1f Pa "
                        "within 10-100 Pa" % (ind[key]["label"], v),
                        inBar(v, lo, hi)))
+        pm = ind[key]["pressureMax"]
+        checks.append(("indentation at %s: largest pressure in the %s at r "
+                       "= %.2f um, under the contact (radius %.2f um)" % (
+                           ind[key]["label"], pm["region"], pm["r"]*1e6,
+                           ind[key]["contactRadius"]*1e6),
+                       pm["region"] in ("cytoplasm", "nucleus") and
+                       pm["r"] <= ind[key]["contactRadius"]))
         checks.append(("indentation at %s: largest von Mises of nucleus and "
                        "cytoplasm in the nucleus" % ind[key]["label"],
                        ind[key]["vonMisesMaxCytoplasmNucleus"]["region"] ==
