@@ -343,9 +343,9 @@ class Command(TempDirTestCase):
             self.assertLess(os.path.getsize(p), 300e3, name)
         res = json.loads(read(os.path.join(out, "results.json")))
         # where each run came from
-        self.assertEqual(res["runs"]["blast5ns"]["folder"], os.path.join(
-            self.results, "blast", "axisymmetricPreview"))
-        self.assertEqual(res["runs"]["blast10ns"]["folder"], os.path.join(
+        self.assertEqual(res["runs"]["blast5ns"]["results"],
+                         "the main job's, tutorials/blast/axisymmetricPreview")
+        self.assertEqual(res["runs"]["blast10ns"]["results"], os.path.join(
             self.case, "postProcessing", "runs", "blast10ns"))
         # Table 3: the validation cell's peaks, 0.5 x (index + 1) nN
         np.testing.assert_allclose(res["table3"]["ours"],

@@ -900,7 +900,10 @@ def figure10(cases, out, res, md, window):
            "10 to 15 ns our peak pressure changes by %+.2f %%, von Mises by "
            "%+.2f %%, the strain by %+.2f %% (the plane wave: %s). The "
            "paper's growth with the duration is not what the plane wave of "
-           "its own scene gives past %.1f ns." % (
+           "its own scene gives past %.1f ns; its probe sits higher (a "
+           "centred nucleus), but in a cell %.1f um high the echo is back "
+           "within 2 H / c0 = %.1f ns: from 10 to 15 ns only points above "
+           "c0 x 10 ns / 2 = %.2f um could still gain in the plane wave." % (
                z*1e6, echo*1e9, c0,
                100*(peaks[2]["pressure"]/peaks[1]["pressure"] - 1),
                100*(peaks[2]["vonMises"]/peaks[1]["vonMises"] - 1),
@@ -908,7 +911,9 @@ def figure10(cases, out, res, md, window):
                "%+.2f %% pressure" % (100*(refs[2]["pressure"] /
                                           refs[1]["pressure"] - 1))
                if "pressure" in refs[1] and "pressure" in refs[2] else "-",
-               echo*1e9), ""]
+               echo*1e9, paper.GEOMETRY["cell height"]*1e6,
+               2*paper.GEOMETRY["cell height"]/c0*1e9,
+               c0*paper.FIG10_DURATIONS[1]/2*1e6), ""]
     addChecks(res, md, checks)
     md += ["![Fig. 10](%s)" % name, "", "![Fig. 10 ratios](%s)" % rname,
            ""]
@@ -1071,6 +1076,10 @@ def make(cases, used, s, out, tutorials, results):
             where = os.path.relpath(f, project)
         else:
             where = f
+        # results.json: the folder as README.md names it (no path of the
+        # machine it was made on where the project's or the main job's)
+        u["results"] = where
+        del u["folder"]
         md.append("| %s | %s %s | %s |" % (
             name, u["tutorial"], " ".join(u["options"]), where))
     md.append("")
