@@ -134,11 +134,18 @@ makeStudy() {
     mkdir -p "$c"
     cp -r "$t"/{system,Allrun,Allclean} "$c"/
 }
-for b in Fluid Solid Mesh Fsi H5 Blast Inflow Preview Quarter Study
+# paper: tutorials/paper as committed (its Allrun runs paperFigures on
+# system/paperDict)
+makePaper() {
+    local c=$bases/paper t=$root/tutorials/paper
+    mkdir -p "$c"
+    cp -r "$t"/{system,Allrun,Allclean} "$c"/
+}
+for b in Fluid Solid Mesh Fsi H5 Blast Inflow Preview Quarter Study Paper
 do
     make$b
 done
-for b in fluid solid mesh fsi h5 blast inflow preview quarter study
+for b in fluid solid mesh fsi h5 blast inflow preview quarter study paper
 do
     [ -d "$bases/$b" ] || { echo "badInput: base case $b not built"; exit 1; }
 done

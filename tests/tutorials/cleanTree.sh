@@ -17,7 +17,11 @@ repo=$work/repo
 mkdir -p "$repo"
 cp -r "$root/tutorials" "$root/.gitignore" "$repo/"
 cd "$repo"
-for c in tutorials/*/*/
+# every tutorial: a folder with an Allrun, one or two levels down
+# (tutorials/paper, tutorials/<scene>/<case>)
+cases=$(for a in tutorials/*/Allrun tutorials/*/*/Allrun
+        do [ -f "$a" ] && echo "${a%Allrun}"; done)
+for c in $cases
 do
     [ -x "$c/Allclean" ] && (cd "$c" && ./Allclean > /dev/null 2>&1)
 done
@@ -58,8 +62,9 @@ run()       # case [Allrun options]
 }
 
 # Without the project environment every Allrun and Allclean stops at once
-# with the message, touching nothing
-for c in tutorials/*/*/
+# with the message, touching nothing (tutorials/paper only so: its runs
+# are the other tutorials')
+for c in $cases
 do
     for script in Allrun Allclean
     do

@@ -12,50 +12,9 @@ on the E plateau next to the paper's 0.3 nN and 1.67 nN).
 import os
 import sys
 
-import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-
-from neuronFsi import postProcessing
-
-# Jerusalem & Dao 2012, Table 3 (validation cell 14.2 x 7.6 um) [nN]
-PAPER_EXP = [11.5, 10.8, 10.3, 5.0, 4.9, 4.8, 3.0, 3.0, 3.0]
-PAPER_SIM = [11.5, 11.0, 10.2, 5.3, 4.6, 4.3, 2.5, 2.5, 2.5]
-PAPER_FB, PAPER_FE = 0.3, 1.67   # average cell, sec. 3.1 [nN]
-RATES = {"C1": "10 um/s", "C2": "1 um/s", "C3": "0.1 um/s"}
-
-
-def read(case):
-    d = os.path.join(case, "postProcessing", "indentation")
-    f = postProcessing.readTable(os.path.join(d, "force.dat"))
-    rows = list(zip(f.column("time"), f.column("depth"), f.column("force"),
-                    f.column("stage")))
-    p = postProcessing.readTable(os.path.join(d, "peaks.dat"))
-    peaks = {label: (t, z, F) for label, t, z, F in zip(
-        p.column("label"), p.column("time"), p.column("depth"),
-        p.column("force"))}
-    return rows, peaks
-
-
-def plot(case, rows, peaks):
-    fig, ax = plt.subplots(1, 4, figsize=(17, 4))
-    for k, stage in enumerate(["C1", "C2", "C3"]):
-        # the cycles of a rate start from the preceding hold's depth
-        z = [r[1]*1e6 for r in rows if r[3] == stage]
-        F = [r[2]*1e9 for r in rows if r[3] == stage]
-        ax[k].plot(z, F, "-")
-        ax[k].set_title(f"{stage}: {RATES[stage]}")
-        ax[k].set_xlabel("indenter depth [um]")
-        ax[k].set_ylabel("force [nN]")
-        ax[k].grid(True)
-    ax[3].plot([r[0] for r in rows], [r[2]*1e9 for r in rows], "-")
-    ax[3].set_xlabel("time [s]")
-    ax[3].set_ylabel("force [nN]")
-    ax[3].set_xscale("symlog", linthresh=30)
-    ax[3].grid(True)
-    fig.suptitle(os.path.basename(os.path.abspath(case)))
-    fig.tight_layout()
-    fig.savefig(os.path.join(case, "indentation.png"), dpi=110)
+from neuronFsi import indentationPlots as ip
+from neuronFsi.paper import TABLE3_EXP as PAPER_EXP, TABLE3_SIM as PAPER_SIM
+from neuronFsi.paper import F_B as PAPER_FB, F_E as PAPER_FE
 
 
 def table(case, peaks):
@@ -79,6 +38,9 @@ def table(case, peaks):
 
 
 for case in sys.argv[1:] or ["."]:
-    rows, peaks = read(case)
-    plot(case, rows, peaks)
+    try:
+        rows, peaks = ip.read(case)
+    except ip.IndentationPlotError as err:
+        sys.exit("plotIndentation.py: %s" % err)
+    ip.forceDepth(case, rows, os.path.join(case, "indentation.png"))
     table(case, peaks)

@@ -206,10 +206,31 @@ def _same(o, a, b):
     return False
 
 
+def recorded(opts, given):
+    """The options of given that change the results (those a record
+    keeps)."""
+    return {k: v for k, v in given.items() if opts[k].record}
+
+
+def changedOptions(opts, before, now):
+    """["<option> <value> then, <value> now"] for the recorded options
+    that differ between two {option: value text} (numbers compared as
+    numbers); [] for the same options."""
+    changed = []
+    for k in sorted(set(before) | set(now), key=lambda k: (
+            list(opts).index(k) if k in opts else len(opts), k)):
+        b, n = before.get(k), now.get(k)
+        if not _same(opts.get(k), b, n):
+            changed.append("%s %s then, %s now" % (
+                k, b if b is not None else "not given (default)",
+                n if n is not None else "not given (default)"))
+    return changed
+
+
 def checkRecord(opts, given, record, results, prog="Allrun"):
     """Refuse a re-run over an earlier run's results with other options;
     else write the record (the options that change the results)."""
-    now = {k: v for k, v in given.items() if opts[k].record}
+    now = recorded(opts, given)
     start = ("start over with ./Allclean (it removes the earlier results) "
              "or in a fresh copy of the case, or re-run with the earlier "
              "options")
@@ -224,14 +245,7 @@ def checkRecord(opts, given, record, results, prog="Allrun"):
             raise OptionError(
                 "%s: the record of the earlier run's options is not "
                 "readable (%s): %s" % (record, e, start))
-        changed = []
-        for k in sorted(set(before) | set(now), key=lambda k: (
-                list(opts).index(k) if k in opts else len(opts), k)):
-            b, n = before.get(k), now.get(k)
-            if not _same(opts.get(k), b, n):
-                changed.append("%s %s then, %s now" % (
-                    k, b if b is not None else "not given (default)",
-                    n if n is not None else "not given (default)"))
+        changed = changedOptions(opts, before, now)
         if changed:
             raise OptionError(
                 "this case holds the results of an earlier ./%s with "

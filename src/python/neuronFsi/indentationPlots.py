@@ -1,0 +1,173 @@
+"""The indentation scene's plots and numbers (paper Figs. 4-8, Table 3):
+what tutorials/indentation/plotIndentation.py, plotFields.py and the
+paper comparison (applications/utilities/paperFigures) share.
+
+    rows, peaks = read(case)      postProcessing/indentation/force.dat
+                                  (time, depth, force, stage rows) and
+                                  peaks.dat ({label: (time, depth, force)})
+    forceDepth(case, rows, out)   force against depth per rate (C1, C2, C3:
+                                  the paper's Figs. 4-6) and against time
+    f = fields(case, time)        the solid of postProcessing/indentation/
+                                  solid.h5 at a write (Fields)
+    fieldsFigure(f, out, title)   its r-z section (deformed) coloured by
+                                  the element pressure and von Mises stress
+
+SI units in and out (the plots in um, nN, Pa).
+"""
+import os
+
+import numpy as np
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+from matplotlib.collections import PolyCollection
+
+from . import msh, postProcessing
+from .solidResults import SolidResults
+
+RATES = {"C1": "10 um/s", "C2": "1 um/s", "C3": "0.1 um/s"}
+
+
+class IndentationPlotError(Exception):
+    """A result that cannot be read or lacks what is asked; the message
+    names the file."""
+
+
+def read(case):
+    """(rows, peaks) of an indentation case: rows [(time [s], depth [m],
+    force [N], stage)] of force.dat, peaks {label: (time [s], depth [m],
+    force [N])} of peaks.dat."""
+    d = os.path.join(case, "postProcessing", "indentation")
+    try:
+        f = postProcessing.readTable(os.path.join(d, "force.dat"))
+        rows = list(zip(f.column("time"), f.column("depth"),
+                        f.column("force"), f.column("stage")))
+        p = postProcessing.readTable(os.path.join(d, "peaks.dat"))
+        peaks = {label: (t, z, F) for label, t, z, F in zip(
+            p.column("label"), p.column("time"), p.column("depth"),
+            p.column("force"))}
+    except postProcessing.ColumnFileError as err:
+        raise IndentationPlotError(str(err))
+    return rows, peaks
+
+
+def forceDepthAxes(ax, rows, stage, **kw):
+    """Force [nN] against depth [um] of one stage's rows on ax (the
+    cycles of a rate start from the preceding hold's depth)."""
+    z = [r[1]*1e6 for r in rows if r[3] == stage]
+    F = [r[2]*1e9 for r in rows if r[3] == stage]
+    ax.plot(z, F, "-", **kw)
+    ax.set_title(f"{stage}: {RATES[stage]}")
+    ax.set_xlabel("indenter depth [um]")
+    ax.set_ylabel("force [nN]")
+    ax.grid(True)
+
+
+def forceDepth(case, rows, out):
+    """force-depth per rate (Figs. 4-6) and force-time to out (PNG)."""
+    fig, ax = plt.subplots(1, 4, figsize=(17, 4))
+    for k, stage in enumerate(["C1", "C2", "C3"]):
+        forceDepthAxes(ax[k], rows, stage)
+    ax[3].plot([r[0] for r in rows], [r[2]*1e9 for r in rows], "-")
+    ax[3].set_xlabel("time [s]")
+    ax[3].set_ylabel("force [nN]")
+    ax[3].set_xscale("symlog", linthresh=30)
+    ax[3].grid(True)
+    fig.suptitle(os.path.basename(os.path.abspath(case)))
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+
+
+class Fields:
+    """The solid at one write: X reference coordinates [m], u displacement
+    [m], conn, region (index per element), names (region index -> name),
+    p pressure [Pa], vm von Mises [Pa], dT temperature rise [K], t [s]."""
+
+
+def regionNames(case, dim):
+    """Region index -> name: the physical groups of dimension dim of
+    <case>/constant/cell.msh (the mesh the solver read)."""
+    try:
+        return msh.physicalNames(os.path.join(case, "constant", "cell.msh"),
+                                 dim)
+    except msh.MshError as err:
+        raise IndentationPlotError(str(err))
+
+
+def fields(case, time, h5=None, tolerance=1e-6):
+    """Fields at the write of solid.h5 (default postProcessing/indentation/
+    solid.h5) at time [s]; an error when no write lies within
+    tolerance*max(1, time) of it (tolerance None: the nearest write)."""
+    h5 = h5 or os.path.join(case, "postProcessing", "indentation", "solid.h5")
+    f = Fields()
+    try:
+        with SolidResults(h5) as r:
+            k = r.nearest(time)
+            f.t = float(r.time(k))
+            if tolerance is not None and \
+                    abs(f.t - time) > tolerance*max(1, abs(time)):
+                raise IndentationPlotError(
+                    "%s: no write at t = %g s (nearest %g s)"
+                    % (h5, time, f.t))
+            f.X = r.mesh("coordinates")
+            f.conn = r.mesh("connectivity")
+            f.region = r.mesh("region")
+            f.u = r.field(k, "displacement")
+            f.p = r.field(k, "pressure")
+            f.vm = r.field(k, "vonMises")
+            f.dT = r.field(k, "temperatureRise")
+    except (OSError, KeyError) as err:
+        raise IndentationPlotError("%s: %s" % (h5, err))
+    f.names = regionNames(case, 2 if f.conn.shape[1] == 4 else 3)
+    return f
+
+
+def regionOutlines(conn, region):
+    """{region: [(a, b)]} the edges of a quad mesh used by one element of
+    the region only (its outline)."""
+    out = {}
+    for r in np.unique(region):
+        edges = {}
+        for c in conn[region == r]:
+            for a, b in zip(c, np.roll(c, -1)):
+                e = (min(a, b), max(a, b))
+                edges[e] = edges.get(e, 0) + 1
+        out[r] = [e for e, n in edges.items() if n == 1]
+    return out
+
+
+def fieldsFigure(f, out, title, dpi=130):
+    """The r-z section (deformed) coloured by pressure and von Mises [Pa],
+    region outlines in white, to out (PNG); like the paper's Figs. 7-8."""
+    x = (f.X + f.u)[:, :2]*1e6
+    polys = [x[c] for c in f.conn]
+    outlines = regionOutlines(f.conn, f.region)
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for ax, v, name in zip(axes, (f.p, f.vm),
+                           ("pressure [Pa]", "von Mises [Pa]")):
+        pc = PolyCollection(polys, array=v, cmap="viridis",
+                            edgecolors="none")
+        ax.add_collection(pc)
+        for edges in outlines.values():
+            for a, b in edges:
+                ax.plot(x[[a, b], 0], x[[a, b], 1], "w-", lw=0.4)
+        ax.set_aspect("equal")
+        ax.autoscale_view()
+        ax.set_xlabel("r [um]")
+        ax.set_ylabel("z [um]")
+        ax.set_title("%s %s" % (name, title))
+        fig.colorbar(pc, ax=ax, shrink=0.8)
+    fig.tight_layout()
+    fig.savefig(out, dpi=dpi)
+    plt.close(fig)
+
+
+def regionExtremes(f):
+    """[(name, p min, p max, von Mises max)] per region [Pa]."""
+    out = []
+    for r in np.unique(f.region):
+        m = f.region == r
+        n = f.names[r] if r < len(f.names) else "region %d" % r
+        out.append((n, f.p[m].min(), f.p[m].max(), f.vm[m].max()))
+    return out

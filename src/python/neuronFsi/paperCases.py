@@ -1,0 +1,256 @@
+"""The runs the paper comparison needs (applications/utilities/paperFigures):
+its dictionary (system/paperDict), where each run's results are found,
+whether they are current, and running a missing one.
+
+A run is a tutorial (a folder of the project's tutorials with an Allrun)
+with Allrun options. Its results are looked for first in the tutorial's
+own folder under the tutorials folder given (the main job's results,
+tutorials/Allrun), then in the comparison's own copy <case>/
+postProcessing/runs/<name>. Results are current when
+
+  - the run finished: the solver's log ends with End and has no FATAL,
+    and the result files of its kind are there;
+  - it ran with the options asked: the Allrun's record (.allrunOptions)
+    holds the same options (numbers compared as numbers); a tutorial whose
+    Allrun takes no options has no record and must be asked none;
+  - its inputs are the tutorial's now: every file git tracks in the
+    project's tutorial folder is in the results folder with the same
+    content, and none was modified after the solver's log (an input edited
+    after the run).
+
+Otherwise the run is made in the comparison's copy: the tracked files of
+the tutorial copied into a fresh folder and ./Allrun <options> run there
+(log.Allrun).
+"""
+
+import json
+import os
+import re
+import shlex
+import shutil
+import subprocess
+
+from . import allrunOptions, caseRuns, foamDict, logs
+
+DICT = os.path.join("system", "paperDict")
+RUNS = os.path.join("postProcessing", "runs")
+
+# name: (kind, what the comparison uses it for)
+CASES = {
+    "averageCell": ("indentation", "Figs. 2, 4-8, Tables 1-2"),
+    "validationCell": ("indentation", "Table 3"),
+    "blast5ns": ("blast", "Figs. 7-10 (2D)"),
+    "blast10ns": ("blast", "Fig. 10"),
+    "blast15ns": ("blast", "Fig. 10"),
+    "quarter3D": ("blast", "Figs. 7-9 (3D)"),
+}
+KEYWORDS = ("cases", "peakWindow")
+CASE_KEYWORDS = ("tutorial", "options")
+SOLVER = {"indentation": "cellIndentationFoam", "blast": "cellBlastFoam"}
+RESULTS = {
+    "indentation": ("postProcessing/indentation/peaks.dat",
+                    "postProcessing/indentation/force.dat",
+                    "postProcessing/indentation/solid.h5",
+                    "postProcessing/indentation/materials.dat",
+                    "constant/cell.msh"),
+    "blast": ("solid/solid.h5", "constant/cell.msh",
+              "postProcessing/solidProbes", "postProcessing/solidInterfaces",
+              "postProcessing/planeWave/0/reference.dat"),
+}
+
+
+class PaperError(Exception):
+    """A dictionary entry, a run or a result that is not usable; the
+    message names the file and the entry."""
+
+
+def _text(x):
+    if isinstance(x, str):
+        return x
+    t = repr(x) if isinstance(x, int) else repr(float(x))
+    return t[:-2] if t.endswith(".0") else t
+
+
+def declaration(tutorial):
+    """The option declaration of the tutorial's Allrun ({} for an Allrun
+    that takes no options: 'allrunOptions "" "$@" < /dev/null')."""
+    path = os.path.join(tutorial, "Allrun")
+    try:
+        with open(path) as f:
+            text = f.read()
+    except OSError as err:
+        raise PaperError("%s: cannot read (%s)" % (path, err.strerror))
+    m = re.search(r"allrunOptions [^\n]*<<'OPTIONS'\n(.*?)\nOPTIONS\n", text,
+                  re.S)
+    if m:
+        return allrunOptions.declaration(m.group(1))[0]
+    if re.search(r"allrunOptions [^\n]*< */dev/null", text):
+        return {}
+    raise PaperError("%s: no option declaration (allrunOptions ...)" % path)
+
+
+def read(case, tutorials):
+    """The settings of <case>/system/paperDict, checked: {"cases": {name:
+    {"tutorial": folder, "options": [...], "given": {option: value},
+    "decl": declaration, "kind": ...}}, "peakWindow": [s]}. tutorials: the
+    project's tutorials folder the entries 'tutorial' are relative to."""
+    path = os.path.join(case, DICT)
+    if not os.path.isfile(path):
+        raise PaperError("%s: no such file" % path)
+    try:
+        d = foamDict.read(path)
+        foamDict.check_keywords(d, KEYWORDS, path)
+    except foamDict.DictError as err:
+        raise PaperError(str(err))
+    for k in KEYWORDS:
+        if k not in d:
+            raise PaperError("%s: no entry '%s'" % (path, k))
+    w = d["peakWindow"]
+    if isinstance(w, bool) or not isinstance(w, (int, float)) or \
+            not 0 < w <= 1:
+        raise PaperError("%s: entry 'peakWindow' = %s is outside the valid "
+                         "range (0, 1] s (the Fig. 10 peaks are taken over "
+                         "t <= peakWindow)" % (path, foamDict.format_value(w)))
+    cases = d["cases"]
+    if not isinstance(cases, dict):
+        raise PaperError("%s: entry 'cases' is not a sub-dictionary" % path)
+    try:
+        foamDict.check_keywords(cases, list(CASES), path + ": cases")
+    except foamDict.DictError as err:
+        raise PaperError(str(err))
+    out = {}
+    for name, (kind, use) in CASES.items():
+        where = "%s: entry 'cases/%s'" % (path, name)
+        if name not in cases:
+            raise PaperError("%s: no entry 'cases/%s' (the run of %s)"
+                             % (path, name, use))
+        c = cases[name]
+        if not isinstance(c, dict):
+            raise PaperError("%s is not a sub-dictionary" % where)
+        try:
+            foamDict.check_keywords(c, CASE_KEYWORDS, where)
+        except foamDict.DictError as err:
+            raise PaperError(str(err))
+        for k in CASE_KEYWORDS:
+            if k not in c:
+                raise PaperError("%s: no entry '%s'" % (where, k))
+        if not isinstance(c["tutorial"], str):
+            raise PaperError("%s: entry 'cases/%s/tutorial' is not a folder "
+                             "name" % (path, name))
+        tut = os.path.normpath(os.path.join(tutorials, c["tutorial"]))
+        if not os.path.isfile(os.path.join(tut, "Allrun")):
+            raise PaperError("%s: entry 'cases/%s/tutorial': %s has no "
+                             "Allrun" % (path, name, tut))
+        opts = c["options"]
+        opts = opts if isinstance(opts, list) else [opts]
+        opts = [_text(x) for x in opts]
+        decl = declaration(tut)
+        try:
+            given = allrunOptions.parse(decl, opts) if opts else {}
+        except allrunOptions.OptionError as err:
+            raise PaperError("%s: entry 'cases/%s/options': %s"
+                             % (path, name, err))
+        out[name] = {"name": name, "kind": kind, "use": use,
+                     "tutorial": tut, "relative": c["tutorial"],
+                     "options": opts, "given": given, "decl": decl}
+    return {"cases": out, "peakWindow": float(w), "dict": path}
+
+
+def trackedFiles(tutorial):
+    """The files git tracks in the tutorial folder (relative paths)."""
+    out = subprocess.run(["git", "-C", tutorial, "ls-files", "-z", "."],
+                         capture_output=True, text=True)
+    if out.returncode != 0:
+        raise PaperError("%s: git ls-files failed (%s): the tutorials must "
+                         "be in the project's git working tree"
+                         % (tutorial, out.stderr.strip()))
+    files = [f for f in out.stdout.split("\0") if f]
+    if "Allrun" not in files:
+        raise PaperError("%s: git tracks no Allrun there" % tutorial)
+    return files
+
+
+def _same(a, b):
+    with open(a, "rb") as f, open(b, "rb") as g:
+        return f.read() == g.read()
+
+
+def why(run, folder):
+    """Why the results in folder are not current for run ({name, kind,
+    tutorial, given, decl}), or None when they are."""
+    if not os.path.isdir(folder):
+        return "no folder"
+    log = os.path.join(folder, "log." + SOLVER[run["kind"]])
+    if not os.path.isfile(log):
+        return "no %s" % os.path.basename(log)
+    if not logs.completed(log):
+        return "%s did not finish (no End, or a FATAL)" % log
+    for r in RESULTS[run["kind"]]:
+        if not os.path.exists(os.path.join(folder, r)):
+            return "no %s" % r
+    if run["kind"] == "indentation":
+        peaks = os.path.join(folder, RESULTS["indentation"][0])
+        with open(peaks) as f:
+            if not re.search(r"^endE ", f.read(), re.M):
+                return "%s has no endE (the protocol did not finish)" % peaks
+    record = os.path.join(folder, ".allrunOptions")
+    now = allrunOptions.recorded(run["decl"], run["given"])
+    if os.path.isfile(record):
+        try:
+            with open(record) as f:
+                before = json.load(f)["options"]
+        except (OSError, ValueError, KeyError, TypeError) as err:
+            return "%s is not readable (%s)" % (record, err)
+        changed = allrunOptions.changedOptions(run["decl"], before, now)
+        if changed:
+            return "other options: " + "; ".join(changed)
+    elif now:
+        return "no record of its options (.allrunOptions)"
+    stamp = os.path.getmtime(log)
+    for f in trackedFiles(run["tutorial"]):
+        p = os.path.join(folder, f)
+        if not os.path.isfile(p):
+            return "no %s (a file of the tutorial)" % f
+        if not _same(p, os.path.join(run["tutorial"], f)):
+            return "%s differs from the tutorial's" % f
+        if os.path.getmtime(p) > stamp:
+            return "%s was modified after the run" % f
+    return None
+
+
+def locate(run, case, results):
+    """(folder, notes): the first current results of the run (its folder
+    under results, the main job's tutorials folder, then the comparison's
+    copy), or (None, notes) with why each was not."""
+    notes = []
+    for folder in (os.path.join(results, run["relative"]),
+                   os.path.join(case, RUNS, run["name"])):
+        w = why(run, folder)
+        if w is None:
+            return folder, notes
+        notes.append("%s: %s" % (folder, w))
+    return None, notes
+
+
+def make(run, case):
+    """Run the tutorial with its options in a fresh copy <case>/
+    postProcessing/runs/<name>; the folder. PaperError if it fails or its
+    results are then not current."""
+    folder = os.path.join(case, RUNS, run["name"])
+    if os.path.lexists(folder):
+        shutil.rmtree(folder)
+    os.makedirs(folder)
+    for f in trackedFiles(run["tutorial"]):
+        dst = os.path.join(folder, f)
+        os.makedirs(os.path.dirname(dst), exist_ok=True)
+        shutil.copy2(os.path.join(run["tutorial"], f), dst)
+    command = "./Allrun " + " ".join(shlex.quote(o) for o in run["options"])
+    try:
+        caseRuns.runIn(folder, command, "log.Allrun")
+    except caseRuns.RunError as err:
+        raise PaperError("%s: %s" % (run["name"], err))
+    w = why(run, folder)
+    if w is not None:
+        raise PaperError("%s: after ./Allrun in %s: %s"
+                         % (run["name"], folder, w))
+    return folder

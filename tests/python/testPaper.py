@@ -1,0 +1,465 @@
+"""The paper comparison (issue 20 item 4): the paper's numbers and the
+comparisons (neuronFsi.paper), where runs are found and when they are
+current (neuronFsi.paperCases), and the command (applications/utilities/
+paperFigures) run on small synthetic results of the six runs: its outputs
+exist and the numbers it compares are those of the files."""
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+import h5py
+import numpy as np
+
+from fixtures import TempDirTestCase
+from neuronFsi import paper, paperCases
+
+ROOT = os.path.normpath(os.path.join(os.path.dirname(__file__), "..", ".."))
+COMMAND = os.path.join(ROOT, "applications", "utilities", "paperFigures",
+                       "paperFigures.py")
+um = 1e-6
+
+
+class QuotedBar(TempDirTestCase):
+
+    def testDigitsPrinted(self):
+        for text, lo, hi in (("300", 250, 350), ("30", 25, 35),
+                             ("0.1", 0.05, 0.15), ("11.5", 11.45, 11.55),
+                             ("5", 4.5, 5.5), ("70", 65, 75),
+                             ("1.67", 1.665, 1.675)):
+            a, b = paper.quotedBar(text)
+            self.assertAlmostEqual(a, lo, places=12, msg=text)
+            self.assertAlmostEqual(b, hi, places=12, msg=text)
+
+    def testQuotedInSI(self):
+        v, lo, hi = paper.quoted("maximum compression")
+        self.assertAlmostEqual(v, 70e-9)
+        self.assertAlmostEqual(lo, 65e-9)
+        self.assertAlmostEqual(hi, 75e-9)
+
+
+# ------------------------------------------------------------ synthetic cell
+# r-z quads on the grid r, z in (0, 1, 2, 2.1) um: the element (i, j) (i
+# along r, j along z) is membrane when i or j is 2, nucleus at (0, 0),
+# cytoplasm else. Cell: diameter 4.2, height 2.1, nucleus 2 x 1, membrane
+# 0.1 um.
+NAMES = ["nucleus", "cytoplasm", "membrane"]
+GRID = np.array([0, 1, 2, 2.1])*um
+
+
+def cell2D():
+    X = np.array([(r, z, 0) for z in GRID for r in GRID])
+    n = len(GRID)
+    conn, region = [], []
+    for j in range(3):
+        for i in range(3):
+            a = j*n + i
+            conn.append((a, a + 1, a + n + 1, a + n))
+            region.append(2 if 2 in (i, j) else 0 if (i, j) == (0, 0) else 1)
+    return X, np.array(conn), np.array(region)
+
+
+def cell3D():
+    n = len(GRID)
+    X = np.array([(x, y, z) for z in GRID for y in GRID for x in GRID])
+    conn, region = [], []
+
+    def node(i, j, k):
+        return (k*n + j)*n + i
+    for k in range(3):
+        for j in range(3):
+            for i in range(3):
+                conn.append([node(i + a, j + b, k + c) for a, b, c in
+                             ((0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0),
+                              (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1))])
+                region.append(2 if 2 in (i, j, k) else
+                              0 if (i, j, k) == (0, 0, 0) else 1)
+    return X, np.array(conn), np.array(region)
+
+
+# pressure and von Mises per region: the jumps are the paper's 300, 30 Pa
+P = np.array([10.0, 40.0, -260.0])
+VM = np.array([50.0, 20.0, 80.0])
+
+
+class Comparisons(TempDirTestCase):
+
+    def testJumpsOuterMinusInner(self):
+        X, conn, region = cell2D()
+        j = paper.interfaceJumps(X, conn, region, P[region], NAMES)
+        self.assertEqual(sorted(j), ["cytoplasm-nucleus",
+                                     "membrane-cytoplasm"])
+        np.testing.assert_allclose(j["membrane-cytoplasm"][0], -300)
+        np.testing.assert_allclose(j["cytoplasm-nucleus"][0], 30)
+        self.assertEqual(len(j["cytoplasm-nucleus"][0]), 2)   # two edges
+        self.assertEqual(len(j["membrane-cytoplasm"][0]), 4)
+        # the midpoints lie on the interface
+        x = j["cytoplasm-nucleus"][1]
+        self.assertTrue(np.all((np.isclose(x[:, 0], um)) |
+                               np.isclose(x[:, 1], um)))
+        r = paper.relativeJumps(conn, region, P[region], NAMES)
+        # cytoplasm-nucleus: |jump| 30 over the median |p| of (10, 40, 40)
+        self.assertAlmostEqual(r["cytoplasm-nucleus"], 30/40)
+        # a field without jumps
+        r = paper.relativeJumps(conn, region, np.full(len(conn), 5.0),
+                                NAMES)
+        self.assertEqual(max(r.values()), 0)
+
+    def testJumps3D(self):
+        X, conn, region = cell3D()
+        j = paper.interfaceJumps(X, conn, region, P[region], NAMES)
+        np.testing.assert_allclose(j["membrane-cytoplasm"][0], -300)
+        self.assertEqual(len(j["cytoplasm-nucleus"][0]), 3)    # three faces
+
+    def testGeometryAndInterfaceElements(self):
+        X, conn, region = cell2D()
+        g = paper.geometry(X, conn, region, NAMES)
+        for k, v in (("cell diameter", 4.2), ("cell height", 2.1),
+                     ("nucleus diameter", 2), ("nucleus height", 1),
+                     ("membrane thickness", 0.1)):
+            self.assertAlmostEqual(g[k], v*um, places=15, msg=k)
+        m = paper.interfaceElements(conn, region)
+        self.assertTrue(m.all())        # every element touches another here
+
+    def testStageRates(self):
+        rows = [(0, 0, 0, "A"), (1, 0.3e-6, 0, "A"), (2, 0.6e-6, 0, "A"),
+                (3, 0.6e-6, 0, "B"), (4, 0.6e-6, 0, "B"),
+                (4.1, 1.6e-6, 0, "C1"), (4.2, 0.6e-6, 0, "C1")]
+        r = paper.stageRates(rows)
+        self.assertAlmostEqual(r["A"], 0.3e-6)
+        self.assertEqual(r["B"], 0)
+        self.assertAlmostEqual(r["C1"], 10e-6)
+
+
+# ------------------------------------------------------------- the command
+
+def writeH5(path, X, conn, region, steps):
+    """solid.h5 as the solid library writes it: steps [(t, {field})]"""
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with h5py.File(path, "w") as f:
+        f["mesh/coordinates"] = X
+        f["mesh/connectivity"] = conn
+        f["mesh/region"] = region
+        for k, (t, fields) in enumerate(steps):
+            g = f.create_group("steps/%d" % k)
+            g.attrs["time"] = t
+            g["displacement"] = np.zeros_like(X)
+            for name, v in fields.items():
+                g[name] = v
+
+
+def writeMsh(path, dim):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n4\n"
+                "%d 9 \"axis\"\n%d 1 \"nucleus\"\n%d 2 \"cytoplasm\"\n"
+                "%d 3 \"membrane\"\n$EndPhysicalNames\n"
+                % (dim - 1, dim, dim, dim))
+
+
+def read(path):
+    with open(path) as f:
+        return f.read()
+
+
+def write(path, text):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as f:
+        f.write(text)
+
+
+ALLRUN = {
+    "indentation": "#!/bin/bash\nallrunOptions \"\" \"$@\" < /dev/null\n",
+    "preview": "#!/bin/bash\nallrunOptions \"\" \"$@\" <<'OPTIONS'\n"
+               "-pulse  pulse  number(0,1e-6]  s\nOPTIONS\n",
+    "quarter": "#!/bin/bash\nallrunOptions \"\" \"$@\" <<'OPTIONS'\n"
+               "-np  np  integer[1,4096]  -\n"
+               "-lateral  lateral  number(0,1)  m\n"
+               "-far  far  number(0,1)  m\nOPTIONS\n",
+}
+TUTORIALS = {"indentation/averageCell": "indentation",
+             "indentation/validationCell": "indentation",
+             "blast/axisymmetricPreview": "preview",
+             "blast/quarter3D": "quarter"}
+PEAKS = ["endB"] + paper.TABLE3_LABELS + ["endE"]
+PULSE_P = {5e-9: 70e6, 10e-9: 100e6, 15e-9: 101e6}      # probe peaks [Pa]
+PULSE_VM = {5e-9: 7.0, 10e-9: 14.0, 15e-9: 21.0}        # [Pa]
+Z_PROBE = 1.5*um
+
+
+def pulseFile(T):
+    return ("FoamFile { version 2.0; format ascii; class volScalarField; "
+            "object p; }\ndimensions [1 -1 -2 0 0 0 0];\n"
+            "internalField uniform 1e5;\nboundaryField\n{\n    top\n    {\n"
+            "        type uniformFixedValue;\n        uniformValue table\n"
+            "        ( (0 0) (1e-10 5e7) (%.10g 5e7) (%.10g 0) (1 0) );\n"
+            "    }\n}\n" % (T, T + 1e-10))
+
+
+class Command(TempDirTestCase):
+    """The command on synthetic results of the six runs."""
+
+    def setUp(self):
+        super().setUp()
+        self.project = os.path.join(self.tmp, "project", "tutorials")
+        self.results = os.path.join(self.tmp, "results")
+        self.case = os.path.join(self.tmp, "paper")
+        thermo = read(os.path.join(ROOT, "tutorials", "blast",
+                                   "axisymmetricPreview", "constant",
+                                   "thermophysicalProperties"))
+        for rel, kind in TUTORIALS.items():
+            d = os.path.join(self.project, rel)
+            write(os.path.join(d, "Allrun"), ALLRUN[kind])
+            write(os.path.join(d, "system", "controlDict"), "// %s\n" % rel)
+            if kind != "indentation":
+                write(os.path.join(d, "constant",
+                                   "thermophysicalProperties"), thermo)
+                write(os.path.join(d, "0.orig", "p"), pulseFile(5e-9))
+        git = ["git", "-C", self.project, "-c", "user.name=t",
+               "-c", "user.email=t@t"]
+        for cmd in (["init", "-q"], ["add", "."], ["commit", "-q", "-m", "t"]):
+            subprocess.run(git + cmd, check=True, capture_output=True)
+        shutil.copytree(self.project, self.results,
+                        ignore=shutil.ignore_patterns(".git"))
+        self.indentation(os.path.join(self.results, "indentation",
+                                      "averageCell"), 1.0)
+        self.indentation(os.path.join(self.results, "indentation",
+                                      "validationCell"), 0.5)
+        self.blast(os.path.join(self.results, "blast",
+                                "axisymmetricPreview"), 5e-9, {})
+        self.blast(os.path.join(self.results, "blast", "quarter3D"), 5e-9,
+                   {"-np": "2", "-lateral": "2e-6", "-far": "10e-6"}, True)
+        for T in (10e-9, 15e-9):
+            d = os.path.join(self.case, "postProcessing", "runs",
+                             "blast%dns" % round(T*1e9))
+            shutil.copytree(os.path.join(self.project, "blast",
+                                         "axisymmetricPreview"), d)
+            self.blast(d, T, {"-pulse": "%g" % T})
+        write(os.path.join(self.case, "system", "paperDict"), read(
+            os.path.join(ROOT, "tutorials", "paper", "system", "paperDict")))
+
+    def log(self, d, solver):
+        write(os.path.join(d, "log." + solver),
+              "ExecutionTime = 1.5 s  ClockTime = 2 s\n\nEnd\n")
+
+    def indentation(self, d, scale):
+        """peaks [nN] = scale x (index + 1); pressures P, von Mises VM"""
+        pp = os.path.join(d, "postProcessing", "indentation")
+        times = {l: 10.0 + k for k, l in enumerate(PEAKS)}
+        times["C2,ii"] = 26.9
+        write(os.path.join(pp, "peaks.dat"),
+              "# label  time [s]  depth [m]  force [N]\n" + "".join(
+                  "%s %.10g 3.41e-06 %.10g\n" % (l, times[l],
+                                                 scale*(k + 1)*1e-9)
+                  for k, l in enumerate(PEAKS)))
+        rows, t, z = [], 0.0, 0.0
+        for st, load, rate in paper.TABLE1:
+            for k in range(3):
+                rows.append("%.10g %.10g 1e-9 %.10g 0 %s\n" % (t, z, t*1e-7,
+                                                              st))
+                t += 1.0
+                z += rate*1e-6*(1 if k < 2 else -1)
+        write(os.path.join(pp, "force.dat"),
+              "# time [s]  depth [m]  force [N]  contactRadius [m]  "
+              "maxPenetration [m]  stage\n" + "".join(rows))
+        write(os.path.join(pp, "materials.dat"),
+              "# region  rho0 [kg/m^3]  C10 [Pa]  d0 [1/Pa]  muN [Pa]  tauN"
+              " [s]\nnucleus 1000 6.67 0 431.12 0.5\n"
+              "cytoplasm 1000 1.67 0 107.78 0.01\n"
+              "membrane 1000 166.67 0 13.89 3000\n")
+        X, conn, region = cell2D()
+        writeH5(os.path.join(pp, "solid.h5"), X, conn, region, [
+            (times[l], {"pressure": P[region], "vonMises": VM[region],
+                        "temperatureRise": np.zeros(len(conn))})
+            for l in PEAKS])
+        writeMsh(os.path.join(d, "constant", "cell.msh"), 2)
+        self.log(d, "cellIndentationFoam")
+
+    def blast(self, d, T, options, threeD=False):
+        X, conn, region = cell3D() if threeD else cell2D()
+        dT = np.linspace(0, 0.12, len(conn))
+        writeH5(os.path.join(d, "solid", "solid.h5"), X, conn, region, [
+            (0.0, {"pressure": np.zeros(len(conn)),
+                   "vonMises": np.zeros(len(conn)),
+                   "temperatureRise": np.zeros(len(conn))}),
+            (65.5e-9, {"pressure": 50e6 + region*0.5e6,
+                       "vonMises": VM[region]*0.5,
+                       "temperatureRise": dT})])
+        writeMsh(os.path.join(d, "constant", "cell.msh"), 3 if threeD else 2)
+        if not threeD:
+            write(os.path.join(d, "constant", "polyMesh", "boundary"),
+                  "front { type wedge; }\n")
+        write(os.path.join(d, "0", "p"), pulseFile(T))   # the Allrun's
+        t = np.linspace(0, 100e-9, 201)
+        shape = np.clip(1 - np.abs(t - 70e-9)/5e-9, 0, None)
+        p, vm = PULSE_P[T]*shape, PULSE_VM[T]*shape
+        ez = -0.01*shape*(T/5e-9)
+        rate = np.gradient(ez, t)
+        heat = 0.1*np.clip((t - 60e-9)/5e-9, 0, 1)   # 0.1 K in 5 ns
+        pt = (2*um, Z_PROBE, 0) if not threeD else (2*um, 0, Z_PROBE)
+        pp = os.path.join(d, "postProcessing")
+        write(os.path.join(pp, "solidProbes", "0", "solidProbes.dat"),
+              "# solid probes\n# time [s]  p0[Pa] vonMises0[Pa] strain0[-] "
+              "strainRate0[1/s] dT0[K]  strainZ0[-] strainRateZ0[1/s]\n"
+              "# probe 0 interfaceProbe at (%.10g %.10g %.10g) m in "
+              "cytoplasm: element 4, patch of 6 elements\n" % pt
+              + "".join("%.10g %.10g %.10g 0 0 %.10g %.10g %.10g\n" % r
+                        for r in zip(t, p, vm, heat, ez, rate)))
+        write(os.path.join(pp, "solidInterfaces", "0",
+                           "interfaceMaxima.dat"),
+              "# time [s]  pMax:membrane-cytoplasm[Pa] "
+              "vonMisesMax:membrane-cytoplasm[Pa]\n0 0 0\n")
+        write(os.path.join(pp, "fsi", "0", "coupling.dat"),
+              "# time [s]  dt [s]  iterations  residual [-]  converged\n"
+              + "".join("%.10g 1e-12 2 1e-5 1\n" % x for x in t))
+        write(os.path.join(pp, "planeWave", "0", "reference.dat"),
+              "# 1D plane wave\n# time [s]  p_z%.17g[Pa]\n" % Z_PROBE
+              + "".join("%.10g %.10g\n" % (a, 0.9*b) for a, b in zip(t, p)))
+        write(os.path.join(d, ".allrunOptions"), json.dumps(
+            {"program": "Allrun", "options": options}))
+        self.log(d, "cellBlastFoam")
+
+    def paperFigures(self, *args):
+        env = dict(os.environ, FOAM_TUTORIALS=self.project,
+                   PYTHONPATH=os.path.join(ROOT, "src", "python"))
+        return subprocess.run(
+            [sys.executable, COMMAND, "-case", self.case, "-results",
+             self.results, "-noRun"] + list(args), env=env,
+            capture_output=True, text=True, timeout=300)
+
+    def testOutputsAndNumbers(self):
+        out = os.path.join(self.tmp, "out")
+        r = self.paperFigures("-output", out)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        for name in ("README.md", "results.json", "fig2_mesh.png",
+                     "fig4-6_forceDepth.png", "table3_validation.png",
+                     "fig7-8_indentation_C2ii.png",
+                     "fig7-8_indentation_C1i.png", "fig7-9_blast_2D.png",
+                     "fig7-9_blast_3D.png", "fig7-9_printedNumbers.png",
+                     "fig10_pulses.png", "fig10_ratios.png"):
+            p = os.path.join(out, name)
+            self.assertTrue(os.path.isfile(p), name)
+            self.assertLess(os.path.getsize(p), 300e3, name)
+        res = json.loads(read(os.path.join(out, "results.json")))
+        # where each run came from
+        self.assertEqual(res["runs"]["blast5ns"]["results"],
+                         "the main job's, tutorials/blast/axisymmetricPreview")
+        self.assertEqual(res["runs"]["blast10ns"]["results"], os.path.join(
+            self.case, "postProcessing", "runs", "blast10ns"))
+        # Table 3: the validation cell's peaks, 0.5 x (index + 1) nN
+        np.testing.assert_allclose(res["table3"]["ours"],
+                                   [0.5e-9*(k + 2) for k in range(9)])
+        np.testing.assert_allclose(res["table3"]["paperExp"],
+                                   np.array(paper.TABLE3_EXP)*1e-9)
+        # F_B, F_E of the average cell: the first and last peaks
+        self.assertAlmostEqual(res["fig4-6"]["F_B"]["ours"], 1e-9)
+        self.assertAlmostEqual(res["fig4-6"]["F_E"]["ours"], 11e-9)
+        # Table 1: the rates the synthetic force.dat moves at
+        for st, load, rate in paper.TABLE1:
+            self.assertAlmostEqual(res["table1"][st]["ours"], rate*1e-6,
+                                   msg=st)
+        # Fig. 2 from the synthetic mesh
+        self.assertAlmostEqual(res["fig2"]["cell diameter"]["ours"], 4.2*um)
+        self.assertAlmostEqual(res["fig2"]["membrane thickness"]["ours"],
+                               0.1*um)
+        # the indentation at 26.88 s (the write at 26.9 s) and C1,i
+        ind = res["fig7-8indentation"]
+        self.assertEqual(ind["stated"]["label"], "C2,ii")
+        self.assertAlmostEqual(ind["stated"]["time"], 26.9)
+        self.assertEqual(ind["reading"]["label"], "C1,i")
+        for key in ("stated", "reading"):
+            j = ind[key]["jumps"]
+            self.assertAlmostEqual(j["membrane-cytoplasm"]["underIndenter"],
+                                   -300)
+            self.assertAlmostEqual(j["cytoplasm-nucleus"]["underIndenter"],
+                                   30)
+            self.assertAlmostEqual(ind[key]["vonMisesMaxValue"], 80)
+            # force.dat's row nearest the peak (a row a second, 0-20 s)
+            self.assertAlmostEqual(ind[key]["contactRadius"],
+                                   min(round(ind[key]["time"]), 20)*1e-7)
+            self.assertEqual(ind[key]["vonMisesMax"]["region"], "membrane")
+            c = ind[key]["vonMisesMaxCytoplasmNucleus"]
+            self.assertEqual((c["region"], c["value"]), ("nucleus", 50))
+        # the blast at 65.5 ns
+        for key in ("blast5ns", "quarter3D"):
+            b = res["fig7-9blast"][key]
+            self.assertAlmostEqual(b["time"], 65.5e-9)
+            self.assertAlmostEqual(b["temperatureRiseMax"], 0.12)
+            self.assertAlmostEqual(b["vonMisesMaxValue"], 40)
+            self.assertAlmostEqual(b["pressureMax"], 51e6)
+            self.assertAlmostEqual(
+                b["jumps"]["membrane-cytoplasm"]["maxAbs"], 0.5e6)
+            self.assertAlmostEqual(b["probePressurePeakTime"], 70e-9)
+            self.assertAlmostEqual(b["probeTemperatureRise"], 0.1)
+            self.assertAlmostEqual(b["probeTemperatureRiseTime"], 4e-9)
+            self.assertAlmostEqual(b["writeInterval"], 65.5e-9)
+        # Fig. 10: the probe's peaks and the plane wave's
+        f10 = res["fig10"]
+        for k, T in enumerate(paper.FIG10_DURATIONS):
+            self.assertAlmostEqual(f10["ours"][k]["pressure"], PULSE_P[T])
+            self.assertAlmostEqual(f10["ours"][k]["vonMises"], PULSE_VM[T])
+            self.assertAlmostEqual(f10["ours"][k]["strain"], 0.01*T/5e-9)
+            self.assertAlmostEqual(f10["planeWave"][k]["pressure"],
+                                   0.9*PULSE_P[T])
+        self.assertAlmostEqual(f10["probeHeight"], Z_PROBE)
+        self.assertAlmostEqual(f10["echoTime"], 2*Z_PROBE/1450)
+        checks = dict(res["checks"])
+        self.assertTrue(checks["Fig. 10: von Mises doubles and triples "
+                               "(ours x2.00, x3.00; within 25 %)"])
+        text = read(os.path.join(out, "README.md"))
+        self.assertIn("| C2,ii (26.90 s) | membrane-cytoplasm | ~300 | "
+                      "-300.0 |", text)
+
+    def testStaleAndChangedRunsAreNotUsed(self):
+        # an input of the tutorial edited after the run
+        d = os.path.join(self.results, "indentation", "averageCell")
+        write(os.path.join(d, "system", "controlDict"), "// changed\n")
+        r = self.paperFigures("-output", os.path.join(self.tmp, "out"))
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("system/controlDict differs from the tutorial's",
+                      r.stdout)
+        self.assertIn("averageCell: no current results (-noRun)", r.stderr)
+        self.assertFalse(os.path.exists(os.path.join(self.tmp, "out")))
+
+    def testFailureLeavesTheOutput(self):
+        out = os.path.join(self.tmp, "out")
+        write(os.path.join(out, "README.md"), "earlier\n")
+        probes = os.path.join(self.results, "blast", "quarter3D",
+                              "postProcessing", "solidProbes", "0",
+                              "solidProbes.dat")
+        write(probes, read(probes).replace("\n0 ", "\nzero ", 1))
+        r = self.paperFigures("-output", out)
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("solidProbes.dat: not a number", r.stderr)
+        self.assertEqual(os.listdir(self.tmp).count("out"), 1)
+        self.assertEqual(os.listdir(out), ["README.md"])
+        self.assertEqual(read(os.path.join(out, "README.md")), "earlier\n")
+        self.assertFalse([n for n in os.listdir(self.tmp)
+                          if n.startswith(".paperFigures")])
+
+    def testOtherOptionsAreNotUsed(self):
+        run = paperCases.read(self.case, self.project)["cases"]["quarter3D"]
+        folder = os.path.join(self.results, "blast", "quarter3D")
+        self.assertIsNone(paperCases.why(run, folder))
+        write(os.path.join(folder, ".allrunOptions"), json.dumps(
+            {"program": "Allrun", "options": {"-np": "2", "-lateral": "2e-6",
+                                              "-far": "5e-6"}}))
+        self.assertIn("-far 5e-6 then, 1e-05 now",
+                      paperCases.why(run, folder))
+
+    def testBadDictionary(self):
+        path = os.path.join(self.case, "system", "paperDict")
+        good = read(path)
+        for old, new, msg in (
+                ("peakWindow      9e-8;", "peakWindow -1;",
+                 "entry 'peakWindow' = -1 is outside the valid range"),
+                ("options (-pulse 10e-9);", "options (-pulse 10e-3);",
+                 "entry 'cases/blast10ns/options': option -pulse"),
+                ("blast15ns", "blast51ns", "blast51ns")):
+            write(path, good.replace(old, new))
+            r = self.paperFigures()
+            self.assertNotEqual(r.returncode, 0, old)
+            self.assertIn(msg, r.stderr)
+            self.assertIn("paperDict", r.stderr)
+        write(path, good)
