@@ -512,23 +512,17 @@ def figures78Indentation(cases, out, res, md):
 # ------------------------------------------------------------------ blast
 
 def blastFields(case, time):
-    f = ip.Fields()
-    with SolidResults(os.path.join(case, "solid", "solid.h5")) as r:
-        k = r.nearest(time)
-        f.t = float(r.time(k))
-        f.X = r.mesh("coordinates")
-        f.conn = r.mesh("connectivity")
-        f.region = r.mesh("region")
-        f.u = r.field(k, "displacement")
-        f.p = r.field(k, "pressure")
-        f.vm = r.field(k, "vonMises")
-        f.dT = r.field(k, "temperatureRise")
+    """The blast's solid fields at the write nearest time (solid/solid.h5,
+    through indentationPlots.fields), with the median write interval, and
+    the largest temperature rise over all writes [K]."""
+    h5 = os.path.join(case, "solid", "solid.h5")
+    f = ip.fields(case, time, h5=h5, tolerance=None)
+    with SolidResults(h5) as r:
         dTall = max(float(r.field(s, "temperatureRise").max())
                     for s in r.steps())
         times = np.array(r.times())
     f.writeInterval = float(np.median(np.diff(times))) if len(times) > 1 \
         else float("nan")
-    f.names = ip.regionNames(case, 2 if f.conn.shape[1] == 4 else 3)
     return f, dTall
 
 
