@@ -15,15 +15,18 @@
 #       NP    MPI ranks (1: serial)
 #     e.g. bench/blast/inflow3D.sh /tmp/in1 1 -lateral 2e-6 -far 10e-6 \
 #              -inflow 20e-6
+#   MAXCO=X in the environment: system/controlDict's maxCo of the copy
+#   set to X (the tutorial's default 0.9; 0.5 before 2026-12-03)
 #
 # Prints: water cells (checkMesh), time steps, the time step before the
 # arrival, coupling passes, cellBlastFoam's CPU split of the time loop
-# (rank 0), wall time and peak resident memory of the run (/usr/bin/time
-# -v: the largest of the processes it waited for, i.e. one rank), and on
+# (rank 0; on N ranks also the largest of each part over the ranks),
+# wall time and peak resident memory of the run (/usr/bin/time -v: the
+# largest of the processes it waited for, i.e. one rank), and on
 # one rank planeWave's measures (postProcessing/planeWave/0/measures.dat,
 # solidMeasures.dat).
 set -euo pipefail
-[ $# -ge 2 ] || { sed -n 2,24p "$0"; exit 1; }
+[ $# -ge 2 ] || { sed -n 2,27p "$0"; exit 1; }
 dir=$1; np=$2; shift 2
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -34,6 +37,11 @@ mkdir -p "$c"
 cp -r "$root"/tutorials/blast/quarter3D/{0.orig,constant,system,Allrun} "$c/"
 rm -rf "$c/constant/polyMesh" "$c"/constant/*.msh
 cd "$c"
+if [ -n "${MAXCO:-}" ]
+then
+    foamDictionary -entry maxCo -set "$MAXCO" system/controlDict > /dev/null
+    echo "== maxCo $(foamDictionary -entry maxCo -value system/controlDict)"
+fi
 npOpt=()
 [ "$np" -le 1 ] || npOpt=(-np "$np")
 echo "== $(date -u '+%F %H:%M UTC'), commit $(git -C "$root" rev-parse --short HEAD)$(git -C "$root" diff --quiet HEAD -- src applications tutorials/blast bench/blast || echo ' (with uncommitted changes)'), load $(cut -d' ' -f1-3 /proc/loadavg)"
@@ -53,8 +61,8 @@ fi
 echo "water cells: $(awk '/^ *cells:/ {print $2}' log.checkMesh)"
 echo "time steps: $(grep -c '^Time =' log.cellBlastFoam)," \
     "first steps' deltaT: $(awk '/^deltaT/ {print $3}' log.cellBlastFoam | sed -n 200p) s (step 200)"
-grep -E "^(CPU time of the time loop|FSI interface energy|FSI coupling [A-Za-z]+:)" \
-    log.cellBlastFoam | tail -3
+grep -E "^(CPU time of the time loop|    largest over|FSI interface energy|FSI coupling [A-Za-z]+:)" \
+    log.cellBlastFoam | tail -4
 echo "wall (time -v): $(awk -F': ' '/Elapsed \(wall clock\)/ {print $2}' log.time)," \
     "peak RSS $(awk -F': ' '/Maximum resident/ {printf "%.0f MB", $2/1024}' log.time)," \
     "load at the end $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -727,6 +727,21 @@ void Foam::fluidSolidInteraction::report()
         << cpuMotion_ << " s, fluid " << cpuFluid_ << " s, solid "
         << cpuSolid_ << " s, other (coupling, restore, output) "
         << total - cpuMotion_ - cpuFluid_ - cpuSolid_ << " s" << endl;
+    if (Pstream::parRun())
+    {
+        // The slowest rank of each part: a rank's waiting for the others
+        // shows in its "other" (the coupling's gathers)
+        const auto largest = [](const scalar x)
+        {
+            return returnReduce(x, maxOp<scalar>());
+        };
+        Info<< "    largest over the " << Pstream::nProcs() << " ranks:"
+            << " time loop " << largest(total) << " s, mesh motion "
+            << largest(cpuMotion_) << " s, fluid " << largest(cpuFluid_)
+            << " s, solid " << largest(cpuSolid_) << " s, other "
+            << largest(total - cpuMotion_ - cpuFluid_ - cpuSolid_) << " s"
+            << endl;
+    }
 
     if (couplingLog_.valid())
     {
