@@ -224,7 +224,8 @@ Foam::List<Foam::interfaceMap::stencil> Foam::interfaceMap::projectAll
     const vectorField& xs,
     const pointField& pts,
     const scalar tol,
-    const word& what
+    const word& what,
+    const UList<scalar>& hFluid
 ) const
 {
     List<stencil> st(xs.size());
@@ -247,6 +248,10 @@ Foam::List<Foam::interfaceMap::stencil> Foam::interfaceMap::projectAll
                 );
             }
         }
+        if (hFluid.size())
+        {
+            h = max(h, hFluid[i]);
+        }
         if (st[i].distance > tol*h)
         {
             ++nOut;
@@ -264,12 +269,34 @@ Foam::List<Foam::interfaceMap::stencil> Foam::interfaceMap::projectAll
             << " fluid " << what << " lie off the solid interface (no"
             << " overlap of the two sides); worst " << worstPoint
             << " at " << worst << " m (mapTolerance " << tol
-            << " x solid face size). Check the fluid patch, the solid face"
+            << " x solid face size"
+            << (hFluid.size() ? word(", or fluid face size if larger") : word())
+            << "). Check the fluid patch, the solid face"
             << " set and the units of both meshes (constant/fsiProperties"
             << " interface: fluidPatch, solidFaceSet, mapTolerance;"
             << " constant/solidProperties: mesh)." << exit(FatalError);
     }
     return st;
+}
+
+
+Foam::scalarField Foam::interfaceMap::faceSizes
+(
+    const globalInterfacePatch& fluidPatch
+)
+{
+    const pointField& lp = fluidPatch.localPoints();
+    const faceList& lf = fluidPatch.localFaces();
+    scalarField h(lf.size(), Zero);
+    forAll(lf, facei)
+    {
+        const face& f = lf[facei];
+        forAll(f, k)
+        {
+            h[facei] = max(h[facei], mag(lp[f[k]] - lp[f[f.fcIndex(k)]]));
+        }
+    }
+    return h;
 }
 
 
@@ -529,14 +556,11 @@ void Foam::interfaceMap::projectionWeights
     DynamicList<scalar> qA;         // their areas
     DynamicList<label> qFace, qK;   // face, its triangle k
     DynamicList<scalar> qS, qT;     // weights of p_k and p_k+1
+    const scalarField hFace(faceSizes(fluidPatch));
     forAll(lf, facei)
     {
         const face& f = lf[facei];
-        scalar hf = 0;
-        forAll(f, k)
-        {
-            hf = max(hf, mag(lp[f[k]] - lp[f[f.fcIndex(k)]]));
-        }
+        const scalar hf = hFace[facei];
         // Solid face size near the face: the longest edge of the stencils
         // of its points
         scalar hs = GREAT;
@@ -587,7 +611,14 @@ void Foam::interfaceMap::projectionWeights
     }
     const pointField pts(qx);
     const vectorField xs(pts);
-    const List<stencil> qStencil(projectAll(xs, pts, tol, "projection points"));
+    const List<stencil> qStencil
+    (
+        projectAll
+        (
+            xs, pts, tol, "projection points",
+            scalarField(UIndirectList<scalar>(hFace, qFace))
+        )
+    );
 
     // Per patch point: sum_q phi_p(x_q) A_q N_a(x_q), then normalised
     List<std::map<label, scalar>> rows(nPts);
@@ -882,7 +913,7 @@ Foam::interfaceMap::interfaceMap
         vectorField xs(lp.size());
         pointRadial_.setSize(lp.size());
         forAll(lp, i) xs[i] = toSolidFrame(lp[i], pointRadial_[i]);
-        pointStencil_ = projectAll(xs, lp, tol, "points");
+        pointStencil_ = projectAll(xs, lp, tol, "points", scalarField());
     }
     // One map per dimension: r-z faces, 3D projection (the 3D faces and
     // points maps, not dual or loading the solid at the fluid points only,
@@ -917,7 +948,11 @@ Foam::interfaceMap::interfaceMap
         {
             quadrature3D(fluidPatch, xs, pts);
         }
-        quadStencil_ = projectAll(xs, pts, tol, "face points");
+        quadStencil_ = projectAll
+        (
+            xs, pts, tol, "face points",
+            scalarField(UIndirectList<scalar>(faceSizes(fluidPatch), quadFace_))
+        );
     }
 
     load_ = dict.getOrDefault<word>("load", "mappedForces");
