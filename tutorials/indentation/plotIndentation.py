@@ -79,6 +79,10 @@ def table(case, peaks):
 
 
 for case in sys.argv[1:] or ["."]:
-    rows, peaks = read(case)
+    try:
+        rows, peaks = read(case)
+    except postProcessing.ColumnFileError as err:
+        # the file and line named, no traceback (adv30 pp02, pp05)
+        sys.exit(f"plotIndentation.py: {err}")
     plot(case, rows, peaks)
     table(case, peaks)
