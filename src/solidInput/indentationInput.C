@@ -65,6 +65,18 @@ Foam::indentationInput::indentationInput
         d, "forceTargetTolerance", "", 0, 1, false, 0.01
     );
 
+    // The first step of a hold is at most the largest step: holdDeltaT0
+    // 10 s with maxDeltaT 1 s ran every hold step at 1 s, silently
+    // (adv30 n17)
+    if (settings_.holdDeltaT0 > settings_.maxDeltaT)
+    {
+        FatalIOErrorInFunction(d)
+            << "entry 'holdDeltaT0' = " << settings_.holdDeltaT0 << " s is "
+            << "outside the valid range (0, " << settings_.maxDeltaT
+            << "] s: at most maxDeltaT (" << settings_.maxDeltaT << " s), "
+            << "the largest step" << exit(FatalIOError);
+    }
+
     // The penetration the contact accepts must be small against the depth
     // change of a step: tolerance 1e3 m (or 0.5 m, inside (0, 1]) let the
     // sphere sink into the cell without a contact force, silently (the
@@ -439,8 +451,10 @@ Foam::indentationInput::addContact(solid::Model& model) const
         << protocol_->endTime() << " s";
     if (settings_.forceTarget > 0)
     {
-        Info<< " (stage " << protocol_->rows()[0].stage << " ends at "
-            << settings_.forceTarget << " N)";
+        Info<< " (stage " << protocol_->rows()[0].stage << " ends when the "
+            << "force reaches " << settings_.forceTarget << " N, at the "
+            << "latest at depth " << protocol_->rows()[0].amount
+            << " m: else an error)";
     }
     Info<< nl;
     if (endTime_ >= 0 && endTime_ != protocol_->endTime())

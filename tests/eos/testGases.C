@@ -73,6 +73,9 @@ TEST(stiffenedGas, parameterErrorsNameTheParameter)
     expectParameterError<eos::StiffenedGas>({1.0, 6e8, 4184}, "gamma");
     expectParameterError<eos::StiffenedGas>({4.4, -1, 4184}, "pInf");
     expectParameterError<eos::StiffenedGas>({4.4, 6e8, 0}, "Cv");
+    // finite but beyond the physical bounds (physicalBounds.H)
+    expectParameterError<eos::StiffenedGas>({4.4, 1e300, 4184}, "pInf");
+    expectParameterError<eos::StiffenedGas>({4.4, 6e8, 1e300}, "Cv");
     // pInf = 0 is allowed (ideal gas)
     EXPECT_NO_THROW(eos::StiffenedGas({1.4, 0, 717.5}));
 }

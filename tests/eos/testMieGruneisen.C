@@ -123,6 +123,15 @@ TEST(mieGruneisen, parameterErrorsNameTheParameter)
     expectError(with(&P::rho0, -1000), "rho0");
     expectError(with(&P::C0, -1450), "C0");
     expectError(with(&P::C0, 0), "C0");
+    // finite but beyond the physical bounds (physicalBounds.H): rho0 C0^2
+    // overflowed, a floating-point exception (issue 19, adv30 hg11, hg15)
+    expectError(with(&P::C0, 1e200), "C0");
+    expectError(with(&P::C0, 1e5), "C0");
+    expectError(with(&P::rho0, 1e300), "rho0");
+    expectError(with(&P::rho0, 1e-300), "rho0");
+    expectError(with(&P::Cv, 1e300), "Cv");
+    expectError(with(&P::T0, 1e300), "T0");
+    EXPECT_NO_THROW(eos::MieGruneisen(with(&P::C0, 0.99e5)));
     expectError(with(&P::s, 0), "s");
     expectError(with(&P::s, -1), "s");
     expectError(with(&P::Gamma0, 0), "Gamma0");

@@ -31,6 +31,19 @@ class NegativeValues(unittest.TestCase):
         self.assertEqual(a.dz, -0.5)
         self.assertTrue(a.check)
 
+    def testHelpIsArgparsesHelp(self):
+        # -help (OpenFOAM's spelling) prints the usage, exit 0 (adv30 sw01,
+        # kh01: "ignored explicit argument 'elp'", exit 2)
+        r = subprocess.run([sys.executable, "-c",
+                            "import argparse; from neuronFsi import options;"
+                            "p = argparse.ArgumentParser(prog='t');"
+                            "p.add_argument('-dz');"
+                            "options.parse(p, ['-help'])"],
+                           capture_output=True, text=True,
+                           env=dict(os.environ))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("usage: t", r.stdout)
+
     def testOptionsStayOptions(self):
         # a flag before a negative positional, an option's word value
         a = options.parse(parser(), ["-check", "-values", "abc"])

@@ -99,6 +99,23 @@ class ColumnFiles(TempDirTestCase):
         with self.assertRaisesRegex(pp.ColumnFileError, r"c.dat, line 4"):
             pp.readTable(p)
 
+    def testEmptyFileNamesTheMissingHeader(self):
+        # adv30 pp02: an empty peaks.dat; the message says there is no
+        # header, not only that the column is missing
+        p = self.write("peaks.dat", "")
+        with self.assertRaisesRegex(pp.ColumnFileError,
+                                    r"peaks.dat: no column 'label': the "
+                                    r"file has no header line"):
+            pp.readTable(p).column("label")
+
+    def testZeroBytesNamed(self):
+        # adv30 pp05: zero bytes inside a row
+        p = self.write("c.dat", HEADER + row(1e-10) + "2e-10 1\x00\x00 1\n"
+                       + row(3e-10))
+        with self.assertRaisesRegex(pp.ColumnFileError,
+                                    r"c.dat, line 4: .*zero bytes"):
+            pp.readTable(p)
+
     def testMissingFile(self):
         with self.assertRaisesRegex(pp.ColumnFileError, "no .*coupling"):
             pp.series(self.tmp, "fsi/coupling.dat")

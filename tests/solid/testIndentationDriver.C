@@ -178,6 +178,31 @@ TEST(SolidIndentationDriver, ForceControlledFirstRowReachesItsTarget)
 }
 
 
+// A force target above the force at the first row's full amount: refused
+// at the row's end, naming forceTarget (adv30 n21: the run went on with
+// the table's depth, no word that the target was not reached)
+TEST(SolidIndentationDriver, ForceTargetNotReachedIsAnError)
+{
+    ScratchDir dir;
+    IndentationSettings s = baseSettings();
+    s.forceTarget = 1e-3;           // [N], far above the force at 1 um
+    Indentation a(table, s, dir.path);
+    a.driver->start(false);
+    try
+    {
+        a.driver->run();
+        FAIL() << "a force target not reached was accepted";
+    }
+    catch (const SolidError& e)
+    {
+        const std::string m = e.what();
+        EXPECT_NE(m.find("'forceTarget' = 0.001 N was not reached"),
+                  std::string::npos) << m;
+        EXPECT_NE(m.find("full amount 1e-06 m"), std::string::npos) << m;
+    }
+}
+
+
 TEST(SolidIndentationDriver, HoldStepsGrowAndTheForceRelaxes)
 {
     ScratchDir dir;

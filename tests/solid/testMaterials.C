@@ -571,6 +571,26 @@ TEST(SolidMaterial, ParameterEntriesAndValidation)
               .find("'tau1'"), std::string::npos);
     EXPECT_NE(errorOf({{"C10", "1"}, {"d0", "-1e-3"}}).find("'d0'"),
               std::string::npos);
+    // finite but beyond the physical bounds (physicalBounds.H; issue 19,
+    // adv30 sp18b, hg01, hg02: a floating-point exception in the run)
+    EXPECT_NE(errorOf({{"C10", "1e300"}}).find("'C10' = 1e+300 Pa is "
+              "outside the valid range [0, 1e+13)"), std::string::npos);
+    EXPECT_NE(errorOf({{"C10", "1"}, {"d0", "1e300"}})
+              .find("'d0' = 1e+300"), std::string::npos);
+    EXPECT_NE(errorOf({{"C10", "1"}, {"d0", "1e-300"}})
+              .find("'d0' = 1e-300"), std::string::npos);
+    EXPECT_NE(errorOf({{"C10", "1"}, {"mu1", "1e300"}, {"tau1", "1"}})
+              .find("'mu1' = 1e+300"), std::string::npos);
+    EXPECT_NE(errorOf({{"C10", "1"}, {"mu1", "1"}, {"tau1", "1e300"}})
+              .find("'tau1' = 1e+300"), std::string::npos);
+    EXPECT_NE(errorOf({{"C10", "1"}, {"mu1", "1"}, {"eta1", "1e300"}})
+              .find("'eta1' = 1e+300"), std::string::npos);
+    EXPECT_NE(errorOf({{"C10", "1"}, {"rho0", "1e300"}})
+              .find("'rho0' = 1e+300"), std::string::npos);
+    EXPECT_NE(errorOf({{"C10", "1"}, {"volumetric", "mieGruneisen"},
+                       {"C0", "1e200"}, {"s", "1.99"}, {"Gamma0", "0.1"},
+                       {"Cv", "4184"}, {"T0", "293.15"}})
+              .find("C0 = 1e+200"), std::string::npos);
     EXPECT_NE(errorOf({{"cO", "1"}}).find("unknown entry 'cO'"),
               std::string::npos);
     // the closest valid name (issue 19), a branch's with its number

@@ -97,7 +97,28 @@ TEST(SolidProtocol, BadRowsNameTheRow)
     r = rows;
     r[2].rate = 6e-301;                             // duration overflows
     r[2].amount = 4e25;                             // (found by fuzzProtocol)
-    expectMessage(r, "row 3 (stage 'C1', load): the protocol's duration is"
-                  " not finite");
+    expectMessage(r, "row 3 (stage 'C1', load): entry 'amount' = 4e+25 m is"
+                  " outside the valid range (0, 1)");
+    // Finite values beyond the physical bounds (physicalBounds.H; issue
+    // 19, adv30 hg07: a hold of 1e300 s was a floating-point exception;
+    // n26: a rate of 1e300 m/s a row shorter than the time resolution)
+    r = rows;
+    r[1].amount = 1e300;
+    expectMessage(r, "row 2 (stage 'B', hold): entry 'amount' = 1e+300 s is"
+                  " outside the valid range (0, 1e+06)");
+    r = rows;
+    r[2].rate = 1e300;
+    expectMessage(r, "row 3 (stage 'C1', load): entry 'rate' = 1e+300 m/s");
+    r = rows;
+    r[2].rate = 6e-301;                             // 1.7e294 s
+    expectMessage(r, "row 3 (stage 'C1', load): the protocol ends at");
+    r = rows;
+    r[1].amount = 999999;                           // the sum beyond 1e6 s
+    expectMessage(r, "the table must end before 1e+06 s");
+    r = rows;
+    r[2].rate = 1e4;
+    r[2].amount = 1e-14;                            // 1e-18 s at t ~ 20 s
+    expectMessage(r, "row 3 (stage 'C1', load): the row lasts amount/rate ="
+                  " 1e-18 s, below the time resolution at its start");
     expectMessage({}, "no rows");
 }

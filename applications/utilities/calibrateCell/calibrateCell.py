@@ -113,8 +113,18 @@ class Parameter:
         except foamDict.DictError as err:
             raise InputError(str(err))
         self.name = name
-        self.fit = bool(e.get("fit", True))
-        self.log = bool(e.get("log", False))
+
+        def switch(key, default):
+            # a word other than a switch was taken as yes (adv30 k26:
+            # 'fit maybe;' then refused as "'min' must be a number")
+            v = e.get(key, default)
+            if not isinstance(v, bool):
+                raise InputError("%s: '%s' must be a switch (yes, no, true,"
+                                 " false, on, off), not '%s'" % (at, key, v))
+            return v
+
+        self.fit = switch("fit", True)
+        self.log = switch("log", False)
 
         def number(key, default=None):
             v = e.get(key, default)
@@ -266,6 +276,13 @@ class Calibration:
                         "(regions: %s)" % (where, p.name,
                                            ", ".join(regions)))
                 a, b = parts[0], parts[1][:1].lower() + parts[1][1:]
+                if a == b:
+                    # was: accepted, a.C10 = value*a.C10 (adv30 k25)
+                    raise InputError(
+                        "%s: parameter '%s' is the ratio of region '%s' to "
+                        "itself; a ratio <a>To<B> needs two regions "
+                        "(regions: %s)" % (where, p.name, a,
+                                          ", ".join(regions)))
                 self.ratios[p.name] = (a, b)
             for t in targets:
                 region, _, entry = t.partition(".")
@@ -287,6 +304,26 @@ class Calibration:
             if a + ".C10" in direct:
                 raise InputError("%s: %s and %s.C10 both set %s.C10"
                                  % (where, name, a, a))
+        # Each material entry is set by one parameter, once: a scale of the
+        # fitted entry itself, or listed twice, applied its factor twice
+        # (adv30 k18, k19)
+        setters = {}
+        for p in self.params:
+            if "." in p.name:
+                setters.setdefault(p.name, []).append(
+                    "parameter '%s'" % p.name)
+            for t in p.scales:
+                setters.setdefault(t, []).append(
+                    "'scales' of parameter '%s'" % p.name)
+        for name, (a, b) in self.ratios.items():
+            setters.setdefault(a + ".C10", []).append(
+                "parameter '%s'" % name)
+        for entry, by in setters.items():
+            if len(by) > 1:
+                raise InputError("%s: the entry %s is set %d times (by %s);"
+                                 " each material entry can be set by one "
+                                 "parameter, once"
+                                 % (where, entry, len(by), ", ".join(by)))
 
     # -- parameters -> model inputs ----------------------------------------
     def values(self, x):
@@ -562,7 +599,7 @@ def main():
                     "temporary one)")
     ap.add_argument("-keep", action="store_true",
                     help="keep the run folders")
-    args = ap.parse_args()
+    args = options.parse(ap)
     if args.dict is not None and not os.path.isfile(args.dict):
         # was "[Errno 21] Is a directory: 'system'", naming no option; a
         # FIFO blocked the open (options.notARegularFile)

@@ -9,7 +9,7 @@ import shutil
 import subprocess
 import time
 
-from neuronFsi import foamDict, postProcessing, scratch, signals
+from neuronFsi import foamDict, logs, postProcessing, scratch, signals
 
 MESH_SIZES = ("nucleusSize", "cytoplasmSize", "membraneSize", "contactSize")
 
@@ -174,9 +174,16 @@ class ForwardModel:
         wall = time.time() - t0
         text = open(log).read()
         if rc or "FOAM FATAL" in text:
+            # the error's message, not only the last lines (they held
+            # "file: ... From function ... FOAM exiting" without the error
+            # line; adv30 k23, k36)
+            fatal = logs.fatalErrors(log)
             raise ModelError("cellIndentationFoam failed (exit %d) in %s; "
-                             "last lines:\n%s" % (rc, log, "\n".join(
-                                 text.splitlines()[-8:])))
+                             "%s:\n%s" % (rc, log,
+                                          "its error" if fatal else
+                                          "last lines", "\n".join(
+                                              fatal[-1:] if fatal else
+                                              text.splitlines()[-8:])))
         pp = os.path.join(d, "postProcessing/indentation")
         p = postProcessing.readTable(os.path.join(pp, "peaks.dat"))
         peaks = dict(zip(p.column("label"), p.column("force").tolist()))

@@ -32,6 +32,16 @@ def read_curve(path):
         raise TargetError("%s: empty file (expected a header row with the "
                           "columns 'time [s]' and 'force [N]')" % path)
     names = [_header_name(c) for c in rows[0]]
+    for want in ("time", "force"):
+        if names.count(want) > 1:
+            # was: the first one used, without a word (adv30 k15)
+            raise TargetError("%s: column '%s' is given %d times (header "
+                              "row: %s, columns %s); give it once"
+                              % (path, want, names.count(want),
+                                 ", ".join(rows[0]),
+                                 " and ".join(str(k + 1) for k, n in
+                                              enumerate(names)
+                                              if n == want)))
     cols = {}
     for want in ("time", "force"):
         if want not in names:

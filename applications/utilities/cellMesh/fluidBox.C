@@ -56,6 +56,15 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
     (
         d, "growthDistance", "m", 0, L_, false
     );
+    // The wedge's angle is the axisymmetric mode's: in 3D it was accepted
+    // and ignored without a word (adv30 cm09)
+    if (d.found("wedgeAngle") && !g_.axisymmetric())
+    {
+        FatalIOErrorInFunction(d)
+            << "entry 'wedgeAngle' is available in the axisymmetric mode "
+            << "only: the 3D modes (quarter3D, full3D) mesh no wedge"
+            << exit(FatalIOError);
+    }
     wedge_ = foamTools::readInRangeOrDefault<scalar>
     (
         d, "wedgeAngle", "deg", 0, 10, false, 5

@@ -132,8 +132,16 @@ class Output:
         if not rows:
             raise SweepError("output '%s': no data rows in %s"
                              % (self.name, path))
+        n = len(rows[0])
         if self.column.lstrip("-").isdigit():
             col = int(self.column)
+            # was: a traceback, IndexError (adv30 sw21)
+            if not -n <= col < n:
+                raise SweepError("output '%s': column %d is outside the "
+                                 "valid range [%d, %d] of %s (%d columns;"
+                                 " header: %s)"
+                                 % (self.name, col, -n, n - 1, path, n,
+                                    ", ".join(header)))
         elif self.column in header:
             col = header.index(self.column)
         else:
@@ -144,7 +152,13 @@ class Output:
             pick = max if self.row == "max" else min
             return pick(rows, key=lambda r: float(r[col]))[col]
         if self.row.lstrip("-").isdigit():
-            return rows[int(self.row)][col]
+            i = int(self.row)
+            if not -len(rows) <= i < len(rows):
+                raise SweepError("output '%s': row %d is outside the valid "
+                                 "range [%d, %d] of %s (%d data rows)"
+                                 % (self.name, i, -len(rows), len(rows) - 1,
+                                    path, len(rows)))
+            return rows[i][col]
         for r in rows:
             if r[0] == self.row:
                 return r[col]
@@ -188,6 +202,13 @@ def main():
             raise SweepError("-case %s: no such directory" % case)
         f, keys = split_entry(case, a.entry)
         outputs = [Output(s) for s in a.output]
+        # one column per name (was: two columns named p; adv30 sw09b)
+        names = [o.name for o in outputs]
+        for o in outputs:
+            if names.count(o.name) > 1:
+                raise SweepError("-output: the name '%s' is given %d times;"
+                                 " each output names one column of the "
+                                 "table" % (o.name, names.count(o.name)))
         values = a.values.split()
         if not values:
             raise SweepError("-values: empty")

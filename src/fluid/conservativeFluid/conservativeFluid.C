@@ -3,6 +3,9 @@
 #include "wedgePolyPatch.H"
 #include "keywordCheck.H"
 #include "inputChecks.H"
+#include "physicalBounds.H"
+
+#include <cmath>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -31,7 +34,54 @@ const Foam::dictionary& checkedRiemannDict(const Foam::fvMesh& mesh)
 //  OpenFOAM's "different dimensions" error in rhoE's, naming no file)
 const Foam::volVectorField& checkedVelocity(const Foam::volVectorField& U)
 {
-    Foam::foamTools::checkDimensions(U, Foam::dimVelocity, "m/s");
+    using namespace Foam;
+    foamTools::checkDimensions(U, dimVelocity, "m/s");
+    // Each component finite and below physicalBounds::velocityMax before
+    // any expression squares it: 1e300 m/s in 0/U ended in a
+    // floating-point exception in magSqr(U) (issue 19, adv30 hg14)
+    const scalar uMax = physicalBounds::velocityMax;
+    auto bad = [uMax](const vector& u)
+    {
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            if (!std::isfinite(u[d]) || !(std::abs(u[d]) < uMax))
+            {
+                return true;
+            }
+        }
+        return false;
+    };
+    auto refuse = [&](const word& where, const vector& u)
+    {
+        FatalIOError
+        (
+            FUNCTION_NAME, __FILE__, __LINE__, U.objectPath(), -1
+        )   << "field U: " << where << " has U = " << u << " m/s; each "
+            << "component must be finite with magnitude below " << uMax
+            << " m/s" << exit(FatalIOError);
+    };
+    forAll(U.primitiveField(), celli)
+    {
+        if (bad(U.primitiveField()[celli]))
+        {
+            refuse("cell " + Foam::name(celli), U.primitiveField()[celli]);
+        }
+    }
+    forAll(U.boundaryField(), patchi)
+    {
+        const fvPatchVectorField& pf = U.boundaryField()[patchi];
+        forAll(pf, facei)
+        {
+            if (bad(pf[facei]))
+            {
+                refuse
+                (
+                    "boundaryField " + pf.patch().name() + ", face "
+                  + Foam::name(facei), pf[facei]
+                );
+            }
+        }
+    }
     return U;
 }
 

@@ -105,5 +105,11 @@ def joinNegativeValues(parser, argv):
 def parse(parser, argv=None):
     """parser.parse_args of argv (default: the command line) with negative
     values taken as values."""
-    return parser.parse_args(joinNegativeValues(
-        parser, sys.argv[1:] if argv is None else argv))
+    argv = sys.argv[1:] if argv is None else argv
+    # -help, the OpenFOAM applications' spelling, is argparse's --help (was:
+    # "argument -h/--help: ignored explicit argument 'elp'", exit 2; adv30
+    # sw01, kh01)
+    if "--help" in parser._option_string_actions \
+            and "-help" not in parser._option_string_actions:
+        argv = ["--help" if a == "-help" else a for a in argv]
+    return parser.parse_args(joinNegativeValues(parser, argv))

@@ -106,6 +106,10 @@ class Table:
     def column(self, name):
         """One column by its header name: floats, or strings for a column
         of words (e.g. the stage of force.dat)."""
+        if not self.names:
+            raise ColumnFileError("%s: no column '%s': the file has no "
+                                  "header line ('# name ...'; an empty "
+                                  "or cut file?)" % (self.path, name))
         if name not in self.names:
             raise ColumnFileError("%s: no column '%s' (columns: %s)"
                                   % (self.path, name, " ".join(self.names)))
@@ -149,8 +153,10 @@ def readTable(path, vectors=False):
         lineNo.pop()
     for r, i in zip(rows, lineNo):
         if len(r) != n:
+            damaged = "; it holds zero bytes (a damaged file)" \
+                if "\x00" in lines[i - 1] else ""
             raise ColumnFileError("%s, line %d: %d columns, the first row "
-                                  "has %d" % (path, i, len(r), n))
+                                  "has %d%s" % (path, i, len(r), n, damaged))
     table = Table(path, header, rows)
     table.notes = notes
     return table

@@ -1,4 +1,5 @@
 #include "IndentationDriver.H"
+#include <sstream>
 #include "Checkpoint.H"
 #include "SolidError.H"
 
@@ -454,6 +455,20 @@ void solid::IndentationDriver::run()
             {
                 checkpoint(i);
             }
+        }
+        // A force target not reached by the row's full amount: the run
+        // went on with the table's depth, the log saying the stage ends at
+        // the target (adv30 n21); refused
+        if (untilForce && delta0Found_ < 0)
+        {
+            std::ostringstream os;
+            os  << "entry 'forceTarget' = " << s.forceTarget << " N was not "
+                << "reached in protocol row 1 (stage '" << row.stage
+                << "', load): the force at the row's full amount "
+                << row.amount << " m (its largest depth) is " << last_.force
+                << " N; give a larger amount for row 1 or a smaller "
+                << "forceTarget";
+            throw SolidError(SolidError::Kind::parameter, os.str());
         }
         // Peaks and stage ends
         const bool peak = !hold && i + 1 < nRows && row.motion == "load"

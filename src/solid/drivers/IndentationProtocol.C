@@ -1,8 +1,23 @@
 #include "IndentationProtocol.H"
 #include "SolidError.H"
+#include "physicalBounds.H"
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+
+namespace
+{
+
+//- A number as the messages print it (1e-306, not 0.000000)
+std::string num(double x)
+{
+    std::ostringstream os;
+    os << x;
+    return os.str();
+}
+
+} // namespace
 
 solid::IndentationProtocol::IndentationProtocol(std::vector<ProtocolRow> rows)
 :
@@ -25,14 +40,27 @@ solid::IndentationProtocol::IndentationProtocol(std::vector<ProtocolRow> rows)
         double dt = 0, dd = 0;
         if (r.motion == "load" || r.motion == "unload")
         {
-            checkParameter(ctx, "rate", r.rate, 0, HUGE_VAL, "m/s");
-            checkParameter(ctx, "amount", r.amount, 0, HUGE_VAL, "m");
+            // Finite bounds (physicalBounds.H): a rate of 1e300 m/s gave a
+            // row shorter than the time resolution, a duration of 1e300 s
+            // a floating-point exception (issue 19)
+            checkParameter
+            (
+                ctx, "rate", r.rate, 0, physicalBounds::velocityMax, "m/s"
+            );
+            checkParameter
+            (
+                ctx, "amount", r.amount, 0, physicalBounds::depthMax, "m",
+                false
+            );
             dt = r.amount/r.rate;
             dd = r.motion == "load" ? r.amount : -r.amount;
         }
         else if (r.motion == "hold")
         {
-            checkParameter(ctx, "amount", r.amount, 0, HUGE_VAL, "s");
+            checkParameter
+            (
+                ctx, "amount", r.amount, 0, physicalBounds::timeMax, "s"
+            );
             if (r.rate != 0)
             {
                 throw SolidError
@@ -62,14 +90,26 @@ solid::IndentationProtocol::IndentationProtocol(std::vector<ProtocolRow> rows)
               + " m, above the undeformed surface (depth must stay >= 0)"
             );
         }
-        if (!std::isfinite(t + dt))
+        if (!std::isfinite(t + dt) || !(t + dt < physicalBounds::timeMax))
         {
             throw SolidError
             (
                 SolidError::Kind::parameter,
-                ctx + ": the protocol's duration is not finite (amount/rate"
-                " = " + std::to_string(dt) + " s); a row must end at a"
-                " finite time"
+                ctx + ": the protocol ends at " + num(t + dt)
+              + " s (this row lasts amount/rate = " + num(dt)
+              + " s); the table must end before "
+              + num(physicalBounds::timeMax) + " s"
+            );
+        }
+        if (!(t + dt > t*(1 + 1e-9)))
+        {
+            throw SolidError
+            (
+                SolidError::Kind::parameter,
+                ctx + ": the row lasts amount/rate = " + num(dt)
+              + " s, below the time resolution at its start t = "
+              + num(t) + " s (1e-9 t); give a smaller rate"
+                " (m/s) or a larger amount"
             );
         }
         t0_.push_back(t);

@@ -3,6 +3,7 @@
 #include "QuadraticVolumetric.H"
 #include "MieGruneisenVolumetric.H"
 #include "SolidError.H"
+#include "physicalBounds.H"
 #include "closestKeyword.H"
 
 #include <cstdlib>
@@ -149,13 +150,12 @@ solid::MaterialParameters solid::MaterialParameters::fromEntries
         {
             checkParameter
             (
-                ctx, "eta" + sn, eta[n], 0,
-                std::numeric_limits<double>::infinity(), "Pa s"
+                ctx, "eta" + sn, eta[n], 0, physicalBounds::viscosityMax,
+                "Pa s"
             );
             checkParameter
             (
-                ctx, "mu" + sn, b.mu, 0,
-                std::numeric_limits<double>::infinity(), "Pa"
+                ctx, "mu" + sn, b.mu, 0, physicalBounds::modulusMax, "Pa"
             );
             b.tau = eta[n]/b.mu;
         }
@@ -205,8 +205,8 @@ solid::Material::Material
 {
     checkParameter
     (
-        "material '" + name + "'", "rho0", rho0, 0,
-        std::numeric_limits<double>::infinity(), "kg/m^3"
+        "material '" + name + "'", "rho0", rho0, physicalBounds::rhoMin,
+        physicalBounds::rhoMax, "kg/m^3", true
     );
 }
 
@@ -217,8 +217,11 @@ std::unique_ptr<solid::Material> solid::Material::create
 )
 {
     const std::string ctx = "material '" + par.name + "'";
-    const double inf = std::numeric_limits<double>::infinity();
-    checkParameter(ctx, "rho0", par.rho0, 0, inf, "kg/m^3");
+    checkParameter
+    (
+        ctx, "rho0", par.rho0, physicalBounds::rhoMin, physicalBounds::rhoMax,
+        "kg/m^3", true
+    );
 
     std::unique_ptr<IsochoricModel> iso(new NeoHookean(par.C10, ctx));
     if (!par.branches.empty())
@@ -229,7 +232,10 @@ std::unique_ptr<solid::Material> solid::Material::create
     std::unique_ptr<VolumetricLaw> vol;
     if (par.volumetric == "quadratic")
     {
-        checkParameter(ctx, "d0", par.d0, 0, inf, "1/Pa", true);
+        checkParameter
+        (
+            ctx, "d0", par.d0, 0, physicalBounds::d0Max, "1/Pa", true
+        );
         if (par.d0 == 0)
         {
             vol.reset(new IncompressibleVolumetric);

@@ -1,5 +1,6 @@
 #include "NeoHookean.H"
 #include "SolidError.H"
+#include "physicalBounds.H"
 
 #include <cmath>
 #include <limits>
@@ -10,8 +11,7 @@ solid::NeoHookean::NeoHookean(double C10, const std::string& context)
 {
     checkParameter
     (
-        context, "C10", C10, 0, std::numeric_limits<double>::infinity(), "Pa",
-        true
+        context, "C10", C10, 0, physicalBounds::modulusMax, "Pa", true
     );
 }
 

@@ -1,5 +1,6 @@
 #include "QuadraticVolumetric.H"
 #include "SolidError.H"
+#include "physicalBounds.H"
 
 #include <limits>
 
@@ -13,9 +14,18 @@ solid::QuadraticVolumetric::QuadraticVolumetric
     d0_(d0),
     rho0_(rho0)
 {
-    const double inf = std::numeric_limits<double>::infinity();
-    checkParameter(context, "d0", d0, 0, inf, "1/Pa");
-    checkParameter(context, "rho0", rho0, 0, inf, "kg/m^3");
+    // The bulk modulus 2/d0 within [bulkModulusMin, modulusMax]
+    // (physicalBounds.H; d0 = 0 is IncompressibleVolumetric)
+    checkParameter
+    (
+        context, "d0", d0, physicalBounds::d0Min, physicalBounds::d0Max,
+        "1/Pa", true
+    );
+    checkParameter
+    (
+        context, "rho0", rho0, physicalBounds::rhoMin, physicalBounds::rhoMax,
+        "kg/m^3", true
+    );
 }
 
 

@@ -1,5 +1,6 @@
 #include "Viscoelastic.H"
 #include "SolidError.H"
+#include "physicalBounds.H"
 
 #include <cmath>
 #include <limits>
@@ -14,7 +15,6 @@ solid::Viscoelastic::Viscoelastic
     base_(std::move(base)),
     branches_(branches)
 {
-    const double inf = std::numeric_limits<double>::infinity();
     const double mu0 = base_->shearModulus();
     if (!branches_.empty() && !(mu0 > 0))
     {
@@ -28,8 +28,16 @@ solid::Viscoelastic::Viscoelastic
     for (std::size_t a = 0; a < branches_.size(); ++a)
     {
         const std::string n = std::to_string(a + 1);
-        checkParameter(context, "mu" + n, branches_[a].mu, 0, inf, "Pa");
-        checkParameter(context, "tau" + n, branches_[a].tau, 0, inf, "s");
+        checkParameter
+        (
+            context, "mu" + n, branches_[a].mu, 0, physicalBounds::modulusMax,
+            "Pa"
+        );
+        checkParameter
+        (
+            context, "tau" + n, branches_[a].tau, 0, physicalBounds::timeMax,
+            "s"
+        );
         beta_.push_back(branches_[a].mu/mu0);
     }
 }
