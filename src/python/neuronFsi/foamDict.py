@@ -250,6 +250,24 @@ def read(path):
         return parse(f.read(), path, os.path.dirname(path) or ".")
 
 
+def read_checked(path, valid, required, error):
+    """read(path) with its keywords checked (check_keywords) and the
+    required ones present; any fault raises error(message), the message
+    naming the file (a missing file, an unknown keyword with the closest
+    valid one, a missing entry)."""
+    if not os.path.isfile(path):
+        raise error("%s: no such file" % path)
+    try:
+        d = read(path)
+        check_keywords(d, valid, path)
+    except DictError as err:
+        raise error(str(err))
+    for k in required:
+        if k not in d:
+            raise error("%s: no entry '%s'" % (path, k))
+    return d
+
+
 def set_entry(text, path, value, name="<text>"):
     """Text with entry `path` (keys from the top, e.g. ['nucleus', 'C10'])
     set to `value` (the text between the keyword and ';'). An existing entry

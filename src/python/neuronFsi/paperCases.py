@@ -95,16 +95,7 @@ def read(case, tutorials):
     "decl": declaration, "kind": ...}}, "peakWindow": [s]}. tutorials: the
     project's tutorials folder the entries 'tutorial' are relative to."""
     path = os.path.join(case, DICT)
-    if not os.path.isfile(path):
-        raise PaperError("%s: no such file" % path)
-    try:
-        d = foamDict.read(path)
-        foamDict.check_keywords(d, KEYWORDS, path)
-    except foamDict.DictError as err:
-        raise PaperError(str(err))
-    for k in KEYWORDS:
-        if k not in d:
-            raise PaperError("%s: no entry '%s'" % (path, k))
+    d = foamDict.read_checked(path, KEYWORDS, KEYWORDS, PaperError)
     w = d["peakWindow"]
     if isinstance(w, bool) or not isinstance(w, (int, float)) or \
             not 0 < w <= 1:

@@ -175,16 +175,9 @@ def read(case, dictionary=DICT):
     """The study's settings of <case>/<dictionary> (system/pulseStudyDict),
     checked."""
     path = os.path.join(case, dictionary)
-    if not os.path.isfile(path):
-        raise StudyError("%s: no such file" % path)
-    try:
-        d = foamDict.read(path)
-        foamDict.check_keywords(d, KEYWORDS, path)
-    except foamDict.DictError as err:
-        raise StudyError(str(err))
-    for k in KEYWORDS:
-        if k not in d and k not in OPTIONAL:
-            raise StudyError("%s: no entry '%s'" % (path, k))
+    d = foamDict.read_checked(
+        path, KEYWORDS, [k for k in KEYWORDS if k not in OPTIONAL],
+        StudyError)
     base = d["baseCase"]
     if not isinstance(base, str):
         raise StudyError("%s: entry 'baseCase' is not a folder name" % path)
