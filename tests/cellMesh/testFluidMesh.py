@@ -119,6 +119,8 @@ def cellEdges(X, elems):
 
 def writeCase(case, mode, column="", growth=growth):
     os.makedirs(os.path.join(case, "system"))
+    # the wedge's angle in its mode only (refused in 3D)
+    wedge = f"wedgeAngle {wedgeDeg};" if mode == "axisymmetric" else ""
     with open(os.path.join(case, "system/cellMeshDict"), "w") as d:
         d.write(f"""FoamFile {{ version 2.0; format ascii;
     class dictionary; object cellMeshDict; }}
@@ -126,7 +128,7 @@ mode {mode}; cellDiameter {D}; cellHeight {H}; membraneThickness {t};
 membraneLayers 1; nucleusSize 0.8e-6; cytoplasmSize 0.8e-6;
 membraneSize 0.6e-6; contactRadius 0;
 fluid {{ boxSize {L}; nearSize {near}; farSize {far};
-    growthDistance {growth}; wedgeAngle {wedgeDeg}; {column} }}
+    growthDistance {growth}; {wedge} {column} }}
 """)
     for name, text in (
         ("controlDict", "application none; startFrom startTime;"

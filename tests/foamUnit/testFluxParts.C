@@ -46,6 +46,43 @@ label nDiffering(const UList<Type>& a, const UList<Type>& b)
     return n;
 }
 
+//- The signal speeds riemannFlux::signalSpeeds gives on the internal
+//  faces: max(|U.n - w| + c) of the face's two cells, times |Sf|
+scalarField cellSpeeds
+(
+    const fvMesh& mesh,
+    const rhoEThermo& thermo,
+    const volVectorField& U
+)
+{
+    scalarField s(mesh.nInternalFaces());
+    const scalarField& c = thermo.c().primitiveField();
+    forAll(s, facei)
+    {
+        const vector& S = mesh.Sf()[facei];
+        const scalar A = mesh.magSf()[facei];
+        const scalar wA = mesh.moving() ? mesh.phi()[facei] : 0;
+        const label o = mesh.owner()[facei], n = mesh.neighbour()[facei];
+        s[facei] = max
+        (
+            mag((U[o] & S) - wA) + c[o]*A,
+            mag((U[n] & S) - wA) + c[n]*A
+        );
+    }
+    return s;
+}
+
+//- Largest relative difference of a to b
+scalar largestRelative(const UList<scalar>& a, const UList<scalar>& b)
+{
+    scalar r = 0;
+    forAll(a, i)
+    {
+        r = max(r, mag(a[i] - b[i])/max(mag(b[i]), VSMALL));
+    }
+    return r;
+}
+
 struct fluxFields
 {
     surfaceScalarField mass;
@@ -73,7 +110,7 @@ struct fluxFields
 } // End anonymous namespace
 
 
-TEST(fluxParts, wallFluxesAndSignalSpeedsEqualTheFullEvaluationBitwise)
+TEST(fluxParts, wallFluxesEqualTheFullEvaluationBitwiseSignalSpeedsTheCells)
 {
     foamUnit::testCase tc("fluxParts");
     tc.writeReconstruction("MUSCL", "MUSCLV");
@@ -180,16 +217,45 @@ TEST(fluxParts, wallFluxesAndSignalSpeedsEqualTheFullEvaluationBitwise)
             0
         );
 
+        // Signal speeds: the cells' values on internal faces (no
+        // reconstruction), close to the Riemann solvers' own on these
+        // smooth fields; the non-coupled patches' exactly the full
+        // evaluation's (the same patch states)
         fluxFields speeds(mesh);
         flux->signalSpeeds(thermo(), U, speeds.amaxSf);
         EXPECT_EQ
         (
             nDiffering
             (
-                speeds.amaxSf.primitiveField(), full.amaxSf.primitiveField()
+                speeds.amaxSf.primitiveField(), cellSpeeds(mesh, thermo(), U)
             ),
             0
         ) << "internal faces";
+        const scalar rel = largestRelative
+        (
+            speeds.amaxSf.primitiveField(), full.amaxSf.primitiveField()
+        );
+        // Where the cells' speed is below the solver's (the MUSCL states
+        // can lie outside the cells' values: the limiter's psi up to 2
+        // extrapolates on uneven weights, c comes from the face's rho and
+        // p), by how much: the Courant number by the solver's speeds is
+        // at most maxCo (1 + shortfall) there. Measured here: below on 14
+        // of 82 faces by at most 1.36 %, above elsewhere by up to 6.8 %
+        label nBelow = 0;
+        scalar shortfall = 0;
+        forAll(full.amaxSf.primitiveField(), facei)
+        {
+            const scalar d =
+                (full.amaxSf[facei] - speeds.amaxSf[facei])
+               /full.amaxSf[facei];
+            nBelow += d > 1e-12 ? 1 : 0;
+            shortfall = max(shortfall, d);
+        }
+        EXPECT_LT(shortfall, 0.05)
+            << nBelow << " of " << mesh.nInternalFaces() << " faces below"
+            << " the solver's speed (largest relative difference " << rel
+            << ")";
+        EXPECT_GT(rel, 0);
         forAll(mesh.boundary(), patchi)
         {
             EXPECT_EQ
@@ -332,6 +398,13 @@ TEST(fluxParts, internalFacesInBlocksEqualOneLoopOverAllFacesBitwise)
 
         fluxFields speeds(mesh);
         flux->signalSpeeds(thermo(), U, speeds.amaxSf);
-        EXPECT_EQ(nDiffering(speeds.amaxSf.primitiveField(), amaxSf), 0);
+        EXPECT_EQ
+        (
+            nDiffering
+            (
+                speeds.amaxSf.primitiveField(), cellSpeeds(mesh, thermo(), U)
+            ),
+            0
+        );
     }
 }

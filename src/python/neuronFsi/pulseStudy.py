@@ -199,17 +199,6 @@ def read(case, dictionary=DICT):
         raise StudyError("%s: entry 'strainRateWindow' = %g s is not a whole"
                          " number of sampleInterval = %g s" % (
                              path, s["window"], s["sampleInterval"]))
-    # at most every point of the grid at a time (adv29 s15, s16: 1.5 and
-    # 1e12 were said to be outside [1, inf), which holds both)
-    n = d["nProcs"]
-    most = len(s["overpressure"])*len(s["duration"])
-    if isinstance(n, bool) or not isinstance(n, (int, float)) \
-            or not (math.isfinite(n) and n == int(n) and 1 <= n <= most):
-        raise StudyError("%s: entry 'nProcs' = %s is not valid: a whole "
-                         "number in [1, %d] (the points run at a time; the "
-                         "grid has %d points)"
-                         % (path, foamDict.format_value(n), most, most))
-    s["nProcs"] = int(n)
     th = d["thresholds"]
     if not isinstance(th, dict):
         raise StudyError("%s: entry 'thresholds' is not a sub-dictionary"
@@ -258,6 +247,23 @@ def read(case, dictionary=DICT):
                 d["uncertainty"], path, base, s, projectDir())
         except uncertainty.UncertaintyError as err:
             raise StudyError(str(err))
+    # at most every run of the study at a time: the grid's points and the
+    # uncertainty's runs at its pulses (adv29 s15, s16: 1.5 and 1e12 were
+    # said to be outside [1, inf), which holds both)
+    n = d["nProcs"]
+    grid = len(s["overpressure"])*len(s["duration"])
+    extra = len(s["uncertainty"]["pulses"])*len(uncertainty.runs(
+        s["uncertainty"])) if s["uncertainty"] else 0
+    most = grid + extra
+    if isinstance(n, bool) or not isinstance(n, (int, float)) \
+            or not (math.isfinite(n) and n == int(n) and 1 <= n <= most):
+        raise StudyError("%s: entry 'nProcs' = %s is not valid: a whole "
+                         "number in [1, %d] (the points run at a time; the "
+                         "grid has %d points%s)"
+                         % (path, foamDict.format_value(n), most, grid,
+                            ", the uncertainty %d runs" % extra
+                            if extra else ""))
+    s["nProcs"] = int(n)
     return s
 
 
