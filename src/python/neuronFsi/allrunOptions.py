@@ -164,6 +164,28 @@ def declaration(text):
     return opts, results
 
 
+
+def allrunDeclaration(folder):
+    """The option declaration of <folder>/Allrun: the options of the text
+    between 'allrunOptions ... <<'OPTIONS'' and 'OPTIONS'; {} for an
+    Allrun that takes no options ('allrunOptions "" "$@" < /dev/null').
+    An unreadable Allrun or one without either form: OptionError naming
+    the file."""
+    path = os.path.join(folder, "Allrun")
+    try:
+        with open(path) as f:
+            text = f.read()
+    except OSError as err:
+        raise OptionError("%s: cannot read (%s)" % (path, err.strerror))
+    m = re.search(r"allrunOptions [^\n]*<<'OPTIONS'\n(.*?)\nOPTIONS\n", text,
+                  re.S)
+    if m:
+        return declaration(m.group(1))[0]
+    if re.search(r"allrunOptions [^\n]*< */dev/null", text):
+        return {}
+    raise OptionError("%s: no option declaration (allrunOptions ... "
+                      "<<'OPTIONS')" % path)
+
 def parse(opts, argv):
     """{option: value text} of the command line argv (flags: their
     VALUE)."""

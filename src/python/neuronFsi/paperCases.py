@@ -72,22 +72,12 @@ def _text(x):
 
 
 def declaration(tutorial):
-    """The option declaration of the tutorial's Allrun ({} for an Allrun
-    that takes no options: 'allrunOptions "" "$@" < /dev/null')."""
-    path = os.path.join(tutorial, "Allrun")
+    """The option declaration of the tutorial's Allrun
+    (allrunOptions.allrunDeclaration; {} for one without options)."""
     try:
-        with open(path) as f:
-            text = f.read()
-    except OSError as err:
-        raise PaperError("%s: cannot read (%s)" % (path, err.strerror))
-    m = re.search(r"allrunOptions [^\n]*<<'OPTIONS'\n(.*?)\nOPTIONS\n", text,
-                  re.S)
-    if m:
-        return allrunOptions.declaration(m.group(1))[0]
-    if re.search(r"allrunOptions [^\n]*< */dev/null", text):
-        return {}
-    raise PaperError("%s: no option declaration (allrunOptions ...)" % path)
-
+        return allrunOptions.allrunDeclaration(tutorial)
+    except allrunOptions.OptionError as err:
+        raise PaperError(str(err))
 
 def read(case, tutorials):
     """The settings of <case>/system/paperDict, checked: {"cases": {name:

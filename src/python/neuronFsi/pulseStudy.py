@@ -135,20 +135,15 @@ def _threshold(name, t, where):
 
 
 def allrunDeclaration(base):
-    """The option declaration of the base case's Allrun (the text between
-    'allrunOptions ... <<'OPTIONS'' and 'OPTIONS')."""
-    path = os.path.join(base, "Allrun")
+    """The option declaration of the base case's Allrun
+    (allrunOptions.allrunDeclaration), which must take options."""
     try:
-        with open(path) as f:
-            text = f.read()
-    except OSError as err:
-        raise StudyError("%s: cannot read (%s)" % (path, err.strerror))
-    m = re.search(r"allrunOptions [^\n]*<<'OPTIONS'\n(.*?)\nOPTIONS\n", text,
-                  re.S)
-    if not m:
+        opts = allrunOptions.allrunDeclaration(base)
+    except allrunOptions.OptionError as err:
+        raise StudyError(str(err))
+    if not opts:
         raise StudyError("%s: no option declaration (allrunOptions ... "
-                         "<<'OPTIONS')" % path)
-    opts, _ = allrunOptions.declaration(m.group(1))
+                         "<<'OPTIONS')" % os.path.join(base, "Allrun"))
     return opts
 
 
