@@ -65,15 +65,31 @@ runParallel()
 bash "$here/shortColumn.sh" "$work/serial" writeControl timeStep \
     writeInterval 25
 serial=$work/serial/axisymmetricPreview
+# A water probe beside the cell next to the processor plane y = 4 um
+# (its tetrahedron's points on the plane: movingMeshProbes' cellPoint
+# from the ranks' sums there, localCellPoint::coupledValues), and the
+# one 2.1 um above the cell
+foamDictionary -entry functions/fluidProbes/probeLocations \
+    -set "((12e-6 4.05e-6 0) (1e-7 10e-6 0))" \
+    "$serial/system/controlDict" > /dev/null
 cp -r "$work/serial" "$work/parallel"
 par=$work/parallel/axisymmetricPreview
 splitAtPlane "$par" y 4e-6
 decompose "$par" axisymmetric
+# Every cellPoint sample of the 2-rank run compared with OpenFOAM's
+# whole-field interpolation to the last bit (a difference stops the run)
+printf 'DebugSwitches\n{\n    movingMeshProbes 1;\n}\n' \
+    >> "$par/system/controlDict"
 cp -r "$work/parallel" "$work/killed"
 killed=$work/killed/axisymmetricPreview
 (cd "$serial" && cellBlastFoam > log.cellBlastFoam 2>&1) \
     || { tail -20 "$serial/log.cellBlastFoam"; exit 1; }
 runParallel "$par" log.cellBlastFoam
+n=$(grep -c "processor points: yes), the same bits" "$par/log.cellBlastFoam" \
+    || true)
+[ "$n" -gt 0 ] || { echo "FAIL: no probe sampled at processor points"; exit 1; }
+echo "movingMeshProbes on 2 ranks: $n samples with processor points," \
+    "the same bits as the whole-field interpolation"
 /usr/bin/python3 "$compare" "$serial" "$par" --tol 1e-9 --h5
 
 # 2. The 2-rank run killed and continued

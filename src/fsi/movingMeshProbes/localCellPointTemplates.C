@@ -1,56 +1,37 @@
 #include "localCellPoint.H"
 #include "volFields.H"
+#include "pointConstraints.H"
+#include "globalMeshData.H"
+#include "mapDistribute.H"
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class Type>
-Type Foam::localCellPoint::pointValue
+Type Foam::localCellPoint::weightedSum
 (
     const GeometricField<Type, fvPatchField, volMesh>& vf,
-    const label pointi
+    const label pointi,
+    const labelUList& faces,
+    const scalarList& w,
+    const scalar W
 ) const
 {
-    const point& x = mesh_.points()[pointi];
-    const label nInternalFaces = mesh_.nInternalFaces();
-    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
-    const labelList& pFaces = mesh_.pointFaces()[pointi];
-
-    // The point's faces that weight it (in volPointInterpolation's order:
-    // the boundary patch's pointFaces, ascending as polyMesh's)
-    DynamicList<label, 16> faces;
-    for (const label facei : pFaces)
-    {
-        if (facei >= nInternalFaces && weighted_[pbm.whichPatch(facei)])
-        {
-            faces.append(facei);
-        }
-    }
-
+    // makeWeights' normalisation (pw[i] /= sumWeights), then
+    // interpolateInternalField or interpolateBoundaryField
+    // (flatBoundaryField: zero on a coupled patch of the field)
     Type value(Zero);
-
     if (faces.empty())
     {
-        // makeInternalWeights, makeWeights' normalisation,
-        // interpolateInternalField
         const labelList& pCells = mesh_.pointCells()[pointi];
-        const scalarList w
-        (
-            inverseDistanceWeights(x, mesh_.cellCentres(), pCells)
-        );
         forAll(pCells, i)
         {
-            value += w[i]*vf[pCells[i]];
+            const scalar wi = w[i]/W;
+            value += wi*vf[pCells[i]];
         }
     }
     else
     {
-        // makeBoundaryWeights, makeWeights' normalisation,
-        // interpolateBoundaryField (flatBoundaryField: zero on a coupled
-        // patch of the field)
-        const scalarList w
-        (
-            inverseDistanceWeights(x, mesh_.faceCentres(), faces)
-        );
+        const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
         forAll(faces, j)
         {
             const label patchi = pbm.whichPatch(faces[j]);
@@ -60,11 +41,54 @@ Type Foam::localCellPoint::pointValue
                 pf.coupled()
               ? Type(Zero) : pf[faces[j] - pbm[patchi].start()]
             );
-            value += w[j]*boundaryValue;
+            const scalar wj = w[j]/W;
+            value += wj*boundaryValue;
         }
     }
-
     return value;
+}
+
+
+template<class Type>
+Type Foam::localCellPoint::pointValue
+(
+    const GeometricField<Type, fvPatchField, volMesh>& vf,
+    const label pointi
+) const
+{
+    const DynamicList<label, 16> faces(weightingFaces(pointi));
+    scalar W = 0;
+    const scalarList w(inverseDistances(pointi, faces, W));
+    return weightedSum(vf, pointi, faces, w, W);
+}
+
+
+template<class Type>
+void Foam::localCellPoint::pushUntransformed(List<Type>& pointData) const
+{
+    // volPointInterpolation::pushUntransformedData
+    const globalMeshData& gmd = mesh_.globalData();
+    const labelList& meshPoints = gmd.coupledPatch().meshPoints();
+    const mapDistribute& slavesMap = gmd.globalCoPointSlavesMap();
+    const labelListList& slaves = gmd.globalCoPointSlaves();
+
+    List<Type> elems(slavesMap.constructSize());
+    forAll(meshPoints, i)
+    {
+        elems[i] = pointData[meshPoints[i]];
+    }
+    forAll(slaves, i)
+    {
+        for (const label slavei : slaves[i])
+        {
+            elems[slavei] = elems[i];
+        }
+    }
+    slavesMap.reverseDistribute(elems.size(), elems, false);
+    forAll(meshPoints, i)
+    {
+        pointData[meshPoints[i]] = elems[i];
+    }
 }
 
 
@@ -86,20 +110,89 @@ bool Foam::localCellPoint::exact(const cellPointWeight& cpw) const
 
 
 template<class Type>
+Foam::tmp<Foam::Field<Type>> Foam::localCellPoint::coupledValues
+(
+    const GeometricField<Type, fvPatchField, volMesh>& vf
+) const
+{
+    // makeWeights and interpolate{Internal,Boundary}Field at the points
+    // of the processor patches: the sums of the weights over the ranks
+    // (syncUntransformedData, pushUntransformedData), the weighted values
+    // with them, their sum over the ranks (the same two)
+    const label nPoints = mesh_.nPoints();
+    const labelList& meshPoints = mesh_.globalData().coupledPatch().meshPoints();
+
+    List<DynamicList<label, 16>> faces(meshPoints.size());
+    List<scalarList> w(meshPoints.size());
+    scalarField sumW(nPoints, Zero);
+    forAll(meshPoints, i)
+    {
+        const label pointi = meshPoints[i];
+        if (onProcessorPatch(pointi))
+        {
+            faces[i] = weightingFaces(pointi);
+            w[i] = inverseDistances(pointi, faces[i], sumW[pointi]);
+        }
+    }
+    pointConstraints::syncUntransformedData
+    (
+        mesh_, sumW, plusEqOp<scalar>()
+    );
+    pushUntransformed(sumW);
+
+    tmp<Field<Type>> tvalues(new Field<Type>(nPoints, Zero));
+    Field<Type>& values = tvalues.ref();
+    forAll(meshPoints, i)
+    {
+        const label pointi = meshPoints[i];
+        if (onProcessorPatch(pointi))
+        {
+            values[pointi] =
+                weightedSum(vf, pointi, faces[i], w[i], sumW[pointi]);
+        }
+    }
+    pointConstraints::syncUntransformedData
+    (
+        mesh_, values, plusEqOp<Type>()
+    );
+    pushUntransformed(values);
+
+    return tvalues;
+}
+
+
+template<class Type>
 Type Foam::localCellPoint::interpolate
 (
     const GeometricField<Type, fvPatchField, volMesh>& vf,
-    const cellPointWeight& cpw
+    const cellPointWeight& cpw,
+    const UList<Type>& atCoupled
 ) const
 {
     // interpolationCellPoint::interpolate(const cellPointWeight&)
     const barycentric& weights = cpw.weights();
     const triFace& faceVertices = cpw.faceVertices();
 
+    const auto value = [&](const label pointi)
+    {
+        if (onProcessorPatch(pointi))
+        {
+            if (atCoupled.size() != mesh_.nPoints())
+            {
+                FatalErrorInFunction
+                    << "point " << pointi << " is on a processor patch:"
+                    << " its value needs coupledValues()"
+                    << abort(FatalError);
+            }
+            return atCoupled[pointi];
+        }
+        return pointValue(vf, pointi);
+    };
+
     Type t = vf[cpw.cell()]*weights[0];
-    t += pointValue(vf, faceVertices[0])*weights[1];
-    t += pointValue(vf, faceVertices[1])*weights[2];
-    t += pointValue(vf, faceVertices[2])*weights[3];
+    t += value(faceVertices[0])*weights[1];
+    t += value(faceVertices[1])*weights[2];
+    t += value(faceVertices[2])*weights[3];
 
     return t;
 }

@@ -1,5 +1,6 @@
 #include "movingMeshProbes.H"
 #include "localCellPoint.H"
+#include <cstring>
 #include "volFields.H"
 #include "surfaceFields.H"
 #include "IOmanip.H"
@@ -75,6 +76,7 @@ Foam::tmp<Foam::Field<Type>> Foam::movingMeshProbes::sampleCellPoint
     const localCellPoint interpolator(mesh_);
     PtrList<cellPointWeight> tets(size());
     bool local = true;
+    bool coupled = false;
     forAll(*this, probei)
     {
         const label celli = elementList_[probei];
@@ -85,6 +87,7 @@ Foam::tmp<Foam::Field<Type>> Foam::movingMeshProbes::sampleCellPoint
                 probei, new cellPointWeight(mesh_, operator[](probei), celli)
             );
             local = local && interpolator.exact<Type>(tets[probei]);
+            coupled = coupled || interpolator.coupled(tets[probei]);
         }
     }
 
@@ -94,6 +97,15 @@ Foam::tmp<Foam::Field<Type>> Foam::movingMeshProbes::sampleCellPoint
         return sample(vField);
     }
 
+    // The values at the processor patches' points (all ranks) if a
+    // probe's tetrahedron has one
+    tmp<Field<Type>> tatCoupled(new Field<Type>());
+    coupled = returnReduce(coupled, orOp<bool>());
+    if (coupled)
+    {
+        tatCoupled = interpolator.coupledValues(vField);
+    }
+
     const Type unset(-VGREAT*pTraits<Type>::one);
     tmp<Field<Type>> tvalues(new Field<Type>(size(), unset));
     Field<Type>& values = tvalues.ref();
@@ -101,11 +113,39 @@ Foam::tmp<Foam::Field<Type>> Foam::movingMeshProbes::sampleCellPoint
     {
         if (tets.set(probei))
         {
-            values[probei] = interpolator.interpolate(vField, tets[probei]);
+            values[probei] =
+                interpolator.interpolate(vField, tets[probei], tatCoupled());
         }
     }
     Pstream::listCombineGather(values, movingMeshProbesFoundOp<Type>());
     Pstream::listCombineScatter(values);
+
+    // Debug: the whole-field interpolation's values, which these must
+    // equal to the last bit
+    if (debug)
+    {
+        const Field<Type> whole(sample(vField));
+        forAll(values, probei)
+        {
+            if
+            (
+                processor_[probei] != -1
+             && std::memcmp(&values[probei], &whole[probei], sizeof(Type))
+            )
+            {
+                FatalErrorInFunction
+                    << "field " << vField.name() << ", probe " << probei
+                    << " at " << operator[](probei) << ": localCellPoint "
+                    << values[probei] << ", the whole-field interpolation "
+                    << whole[probei] << " (not the same bits)"
+                    << exit(FatalError);
+            }
+        }
+        Info<< type() << ' ' << name() << ": field " << vField.name()
+            << ": localCellPoint (processor points: "
+            << (coupled ? "yes" : "no") << "), the same bits as the"
+            << " whole-field interpolation" << endl;
+    }
     return tvalues;
 }
 
