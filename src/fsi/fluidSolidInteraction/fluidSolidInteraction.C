@@ -367,6 +367,9 @@ Foam::fluidSolidInteraction::fluidSolidInteraction
     cpuMotion_(0),
     cpuFluid_(0),
     cpuSolid_(0),
+    cpuCoupling_(0),
+    cpuRestore_(0),
+    cpuOutput_(0),
     cpuStart_(0)
 {
     const Time& runTime = mesh_.time();
@@ -484,8 +487,10 @@ void Foam::fluidSolidInteraction::step()
     solidDomain& solid = solid_();
 
     // Start of the step on both sides
+    cpuTimer_.cpuTimeIncrement();
     fluid_.storeOldState();
     solid.save();
+    cpuRestore_ += cpuTimer_.cpuTimeIncrement();
 
     const scalarField v0(map.interfaceDofs(solid.velocity()));
 
@@ -505,14 +510,15 @@ void Foam::fluidSolidInteraction::step()
     bool done = false;
     while (!done)
     {
+        cpuCoupling_ += cpuTimer_.cpuTimeIncrement();
         if (coupling_->iterations() > 0)
         {
             fluid_.restoreOldState();
             solid.restore();
         }
+        cpuRestore_ += cpuTimer_.cpuTimeIncrement();
 
         // Fluid wall to d_n + dt x, mesh motion
-        cpuTimer_.cpuTimeIncrement();
         moveWall(fluidInterfaceDisplacement_ + dt*x);
         cpuMotion_ += cpuTimer_.cpuTimeIncrement();
 
@@ -572,6 +578,7 @@ void Foam::fluidSolidInteraction::step()
         Info<< "FSI iteration " << coupling_->iterations() << ": residual "
             << coupling_->residual() << endl;
     }
+    cpuCoupling_ += cpuTimer_.cpuTimeIncrement();
     coupling_->endStep(runTime.value());
     fluidInterfaceDisplacement_ += dt*x;
 
@@ -581,7 +588,7 @@ void Foam::fluidSolidInteraction::step()
         0.5*sum((solid.startForces() + solid.interfaceForces())*dt*x);
 
     // Signal speeds of the final state for the next step's Courant number
-    cpuTimer_.cpuTimeIncrement();
+    cpuCoupling_ += cpuTimer_.cpuTimeIncrement();
     fluid_.signalSpeeds();
     cpuFluid_ += cpuTimer_.cpuTimeIncrement();
 
@@ -597,6 +604,7 @@ void Foam::fluidSolidInteraction::step()
         // Complete rows up to the last step after a FatalError stop too
         couplingLog_().flush();
     }
+    cpuOutput_ += cpuTimer_.cpuTimeIncrement();
 }
 
 
@@ -679,6 +687,15 @@ void Foam::fluidSolidInteraction::setDeltaT()
 
 void Foam::fluidSolidInteraction::write(const scalar stepDeltaT)
 {
+    cpuTimer_.cpuTimeIncrement();
+    // Charged to output however write() returns
+    struct charge
+    {
+        cpuTime& timer;
+        scalar& sum;
+        ~charge() { sum += timer.cpuTimeIncrement(); }
+    } chargeOutput{cpuTimer_, cpuOutput_};
+
     solid_->write(stepDeltaT);
 
     const Time& runTime = mesh_.time();
@@ -722,15 +739,22 @@ void Foam::fluidSolidInteraction::report()
         << wallWork_ << " J, external work of the solid " << solidWork
         << " J, relative difference " << balance << " [-]" << endl;
 
+    // The parts of the time loop; "other": the time-step control, the
+    // state checks and the function objects (probes)
     const scalar total = mesh_.time().elapsedCpuTime() - cpuStart_;
+    const scalar other = total - cpuMotion_ - cpuFluid_ - cpuSolid_;
     Info<< "CPU time of the time loop " << total << " s: mesh motion "
         << cpuMotion_ << " s, fluid " << cpuFluid_ << " s, solid "
-        << cpuSolid_ << " s, other (coupling, restore, output) "
-        << total - cpuMotion_ - cpuFluid_ - cpuSolid_ << " s" << endl;
+        << cpuSolid_ << " s, other " << other << " s (coupling "
+        << cpuCoupling_ << " s, restore " << cpuRestore_ << " s, output "
+        << cpuOutput_ << " s, time-step control, checks and function"
+        << " objects " << other - cpuCoupling_ - cpuRestore_ - cpuOutput_
+        << " s)" << endl;
     if (Pstream::parRun())
     {
         // The slowest rank of each part: a rank's waiting for the others
-        // shows in its "other" (the coupling's gathers)
+        // shows in the part holding the next exchange (the coupling's
+        // gathers, the fluid's processor patches)
         const auto largest = [](const scalar x)
         {
             return returnReduce(x, maxOp<scalar>());
