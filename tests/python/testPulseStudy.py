@@ -14,6 +14,7 @@ allrunOptions .allrunOptions "$@" <<'OPTIONS'
 -amplitude  amplitude  number(0,1e9]        Pa
 -h        h         number(0,inf)           m
 -writeInterval  writeInterval  number(0,inf)  s
+-endTime  endTime   number(0,inf)           s
 -noPlots  plots     flag=no                 -  noRecord
 -noVTK    vtk       flag=no                 -  noRecord
 %results log.x
@@ -41,6 +42,7 @@ class Dictionary(TempDirTestCase):
         super().setUp()
         self.case = os.path.join(self.tmp, "study")
         self.write("study/base/Allrun", ALLRUN)
+        self.write("study/base/system/controlDict", "endTime 1.5e-7;\n")
 
     def study(self, **changes):
         entries = dict(GOOD)
@@ -133,6 +135,27 @@ class Dictionary(TempDirTestCase):
     def testBadBaseOption(self):
         self.refused(r"entry 'baseOptions': unknown option '-hh'",
                      baseOptions="(-hh 1)")
+
+    def testSamplesBoundedByTheRun(self):
+        # a point's writes at most the solvers' maxWrites (adv pass ps09:
+        # sampleInterval 1e-15 s wrote without end); tiny or huge numbers
+        # named, not a ZeroDivisionError or OverflowError (ps04, pu04)
+        self.refused(r"entry 'sampleInterval' = 1e-15 s is outside the "
+                     r"valid range \[1.5e-11, 1.5e-07\] s: a point's run to "
+                     r"endTime 1.5e-07 s would write 1.5e\+08 times",
+                     sampleInterval="1e-15")
+        self.refused(r"entry 'sampleInterval' = 5e-324 is below the "
+                     r"smallest magnitude OpenFOAM reads",
+                     sampleInterval="5e-324")
+        self.refused(r"entry 'strainRateWindow' = 1e\+300 s is outside the "
+                     r"valid range \[5e-10, 1.5e-07\] s",
+                     strainRateWindow="1e300")
+        self.refused(r"entry 'sampleInterval' = 1e-06 s is outside",
+                     sampleInterval="1e-6")
+        self.refused(r"entry 'sampleInterval' = 2e-08 s is outside the valid"
+                     r" range \[1e-12, 1e-08\] s",
+                     baseOptions="(-endTime 1e-8)", sampleInterval="2e-8",
+                     strainRateWindow="2e-8")
 
     def testWindow(self):
         self.refused(r"entry 'strainRateWindow' = 7.5e-10 s is not a whole"

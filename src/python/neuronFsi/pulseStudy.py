@@ -41,7 +41,8 @@ import math
 import os
 import re
 
-from . import allrunOptions, damageIndicators, foamDict, uncertainty
+from . import (allrunOptions, damageIndicators, foamDict, options,
+               uncertainty)
 
 DICT = "system/pulseStudyDict"
 KEYWORDS = ("baseCase", "baseOptions", "overpressure", "duration",
@@ -53,6 +54,11 @@ THRESHOLD_KEYWORDS = ("indicator", "value", "source")
 STUDY_OPTIONS = ("-amplitude", "-pulse", "-writeInterval", "-noPlots",
                  "-noVTK", "-noRun")
 _UNIT = re.compile(r"\[(.*)\]\Z")
+
+
+# The most writes of a point's run: the solvers' default maxWrites
+# (src/foamTools/inputChecks.H checkStepCount)
+MAX_WRITES = 10000
 
 
 class StudyError(Exception):
@@ -189,11 +195,6 @@ def read(case, dictionary=DICT):
     s["duration"] = _grid(d, "duration", path, "s")
     s["sampleInterval"] = _number(d, "sampleInterval", path)
     s["window"] = _number(d, "strainRateWindow", path)
-    m = s["window"]/s["sampleInterval"]
-    if abs(m - round(m)) > 1e-9*m or round(m) < 1:
-        raise StudyError("%s: entry 'strainRateWindow' = %g s is not a whole"
-                         " number of sampleInterval = %g s" % (
-                             path, s["window"], s["sampleInterval"]))
     th = d["thresholds"]
     if not isinstance(th, dict):
         raise StudyError("%s: entry 'thresholds' is not a sub-dictionary"
@@ -235,6 +236,32 @@ def read(case, dictionary=DICT):
                     "the header of %s/Allrun)" % base)
                 raise StudyError("%s: entry '%s': %g: %s%s"
                                  % (path, key, v, err, why))
+    # the writes of a point's run: its endTime over sampleInterval, at most
+    # the solvers' maxWrites (adv pass ps09: sampleInterval 1e-15 s wrote
+    # without end); the window a whole number of samples within the run
+    # (ps04, pu04: 5e-324 s was a ZeroDivisionError or an OverflowError)
+    given = allrunOptions.parse(decl, s["baseOptions"])
+    end = float(given["-endTime"]) if "-endTime" in given \
+        else _baseEndTime(base, path)
+    sample = s["sampleInterval"]
+    if not end/MAX_WRITES <= sample <= end:
+        raise StudyError(
+            "%s: entry 'sampleInterval' = %g s is outside the valid range "
+            "[%g, %g] s: a point's run to endTime %g s would write %s times"
+            " (at most %d: the solvers' maxWrites, each write a time "
+            "directory of the point's case)"
+            % (path, sample, end/MAX_WRITES, end, end, "%.3g" % (end/sample)
+               if sample < end else "no", MAX_WRITES))
+    if not sample <= s["window"] <= end:
+        raise StudyError(
+            "%s: entry 'strainRateWindow' = %g s is outside the valid range"
+            " [%g, %g] s (from sampleInterval to the run's endTime)"
+            % (path, s["window"], sample, end))
+    m = s["window"]/sample
+    if abs(m - round(m)) > 1e-9*m:
+        raise StudyError("%s: entry 'strainRateWindow' = %g s is not a whole"
+                         " number of sampleInterval = %g s" % (
+                             path, s["window"], sample))
     s["uncertainty"] = None
     if "uncertainty" in d:
         try:
@@ -260,6 +287,21 @@ def read(case, dictionary=DICT):
                             if extra else ""))
     s["nProcs"] = int(n)
     return s
+
+
+def _baseEndTime(base, where):
+    """endTime [s] of the base case's system/controlDict (its Allrun's
+    default run length)."""
+    path = os.path.join(base, "system", "controlDict")
+    try:
+        end = foamDict.read(path).get("endTime")
+    except (foamDict.DictError, OSError) as err:
+        raise StudyError("%s: entry 'baseCase': %s" % (where, err))
+    if isinstance(end, bool) or not isinstance(end, (int, float)) \
+            or not end > 0:
+        raise StudyError("%s: entry 'baseCase': %s has no positive endTime "
+                         "(%s)" % (where, path, foamDict.format_value(end)))
+    return float(end)
 
 
 def projectDir():
@@ -405,6 +447,11 @@ def readRecord(path, point=None):
     def damaged(why):
         return StudyError("%s: the point's record is damaged (%s): its "
                           "values cannot be used. %s" % (path, why, rerun))
+    # a FIFO blocked the study at the open (adv pass ps25): looked at first
+    kind = options.notARegularFile(path)
+    if kind:
+        raise StudyError("%s is %s, not a point's record (a file written by "
+                         "pulseStudy). %s" % (path, kind, rerun))
     try:
         with open(path) as f:
             r = json.load(f)
