@@ -43,6 +43,8 @@ class Dictionary(TempDirTestCase):
         self.case = os.path.join(self.tmp, "study")
         self.write("study/base/Allrun", ALLRUN)
         self.write("study/base/system/controlDict", "endTime 1.5e-7;\n")
+        self.write("study/base/constant/thermophysicalProperties", "")
+        self.write("study/base/0.orig/p", "")
 
     def study(self, **changes):
         entries = dict(GOOD)
@@ -156,6 +158,14 @@ class Dictionary(TempDirTestCase):
                      r" range \[1e-12, 1e-08\] s",
                      baseOptions="(-endTime 1e-8)", sampleInterval="2e-8",
                      strainRateWindow="2e-8")
+
+    def testBaseWithoutInitialFields(self):
+        # adv pass ps30: every point's Allrun failed
+        os.remove(os.path.join(self.case, "base", "0.orig", "p"))
+        os.rmdir(os.path.join(self.case, "base", "0.orig"))
+        self.refused(r"entry 'baseCase': .*base has no folder 0.orig \(the "
+                     r"initial fields its Allrun copies to 0\): not a blast "
+                     r"case")
 
     def testWindow(self):
         self.refused(r"entry 'strainRateWindow' = 7.5e-10 s is not a whole"

@@ -190,6 +190,14 @@ def read(case, dictionary=DICT):
     if not os.path.isfile(os.path.join(base, "Allrun")):
         raise StudyError("%s: entry 'baseCase': %s has no Allrun"
                          % (path, base))
+    # a blast case's folders, looked at before any point runs (adv pass
+    # ps30: a base without 0.orig failed in every point's Allrun)
+    for sub, what in (("0.orig", "the initial fields its Allrun copies to "
+                       "0"), ("constant", "its dictionaries"),
+                      ("system", "its dictionaries")):
+        if not os.path.isdir(os.path.join(base, sub)):
+            raise StudyError("%s: entry 'baseCase': %s has no folder %s (%s)"
+                             ": not a blast case" % (path, base, sub, what))
     s = {"case": case, "dict": path, "base": base}
     s["overpressure"] = _grid(d, "overpressure", path, "Pa")
     s["duration"] = _grid(d, "duration", path, "s")
