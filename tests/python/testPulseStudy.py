@@ -104,6 +104,21 @@ class Dictionary(TempDirTestCase):
                      thresholds='{ p { indicator pressure; value 1e6 [MPa];'
                                 ' source "someone 2000, a journal"; } }')
 
+    def testThresholdOutsideItsIndicator(self):
+        # a value reached from the start or never (adv pass st36, st42)
+        self.refused(r"thresholds/axon: value -0.21 \[-\] is outside the "
+                     r"valid range \(0, 10\] \[-\] of indicator strain",
+                     thresholds='{ axon { indicator strain; value -0.21 [-];'
+                                ' source "Bain and Meaney 2000, J"; } }')
+        self.refused(r"thresholds/p: value 0 \[Pa\] is outside the valid "
+                     r"range \[-1e13, 1e13\] \[Pa\] of indicator pressure "
+                     r"\(not 0\)",
+                     thresholds='{ p { indicator pressure; value 0 [Pa];'
+                                ' source "someone 2000, a journal"; } }')
+        self.refused(r"value 1e\+06 \[K\] is outside the valid range",
+                     thresholds='{ t { indicator temperatureRise; value 1e6 '
+                                '[K]; source "someone 2000, a journal"; } }')
+
     def testThresholdWithoutSource(self):
         self.refused(r"thresholds/axon: no entry 'source' \(no threshold "
                      "without its citation",

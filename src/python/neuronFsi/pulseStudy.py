@@ -41,7 +41,7 @@ import math
 import os
 import re
 
-from . import (allrunOptions, damageIndicators, foamDict, options,
+from . import (allrunOptions, damageIndicators, foamDict, options, ranges,
                uncertainty)
 
 DICT = "system/pulseStudyDict"
@@ -59,6 +59,16 @@ _UNIT = re.compile(r"\[(.*)\]\Z")
 # The most writes of a point's run: the solvers' default maxWrites
 # (src/foamTools/inputChecks.H checkStepCount)
 MAX_WRITES = 10000
+
+
+# The valid range of a threshold of each indicator (its unit): above 0
+# for those that are 0 at rest (von Mises, stretch, rate, heating), either
+# sign but not 0 for the pressure (compression +, tension -); the upper
+# bounds those of the inputs (src/eos/physicalBounds.H: a modulus below
+# 1e13 Pa, temperatures below 1e5 K), a strain of 10 (a stretch of 4.6)
+THRESHOLD_RANGES = {"pressure": "[-1e13, 1e13]", "vonMises": "(0, 1e13)",
+                    "strain": "(0, 10]", "strainRate": "(0, 1e13]",
+                    "temperatureRise": "(0, 1e5)"}
 
 
 class StudyError(Exception):
@@ -132,6 +142,14 @@ def _threshold(name, t, where):
     if _UNIT.match(u).group(1) != unit:
         raise StudyError("%s: value %g %s: the unit of indicator %s is [%s] "
                          "(SI)" % (w, x, u, ind, unit))
+    # a value the indicator reaches from the start (0 or below for the
+    # positive ones: its time above was the whole run) or never (adv pass
+    # st36, st42: accepted silently)
+    if x not in ranges.Interval(THRESHOLD_RANGES[ind]) or x == 0:
+        raise StudyError("%s: value %g %s is outside the valid range %s %s "
+                         "of indicator %s%s" % (
+                             w, x, u, THRESHOLD_RANGES[ind], u, ind,
+                             " (not 0)" if ind == "pressure" else ""))
     if not isinstance(t["source"], str) or len(t["source"].split()) < 3:
         raise StudyError("%s: source '%s' is not a citation (authors, year,"
                          " journal, the quantity, the test's conditions)"
