@@ -47,6 +47,7 @@ Usage
 """
 
 import argparse
+import math
 import os
 import re
 import shutil
@@ -92,7 +93,22 @@ class Output:
             raise SweepError("-output '%s': expected <name>=<file>:<row>:"
                              "<column> or <name>=<file>:/<regex>/" % spec)
         self.name, rest = spec.split("=", 1)
-        m = re.match(r"^([^:]+):/(.*)/$", rest)
+        # the name heads a column of the .md and .csv tables: a newline, a
+        # '|', ',' or '"' broke them (adv pass sw25)
+        odd = [c for c in self.name if c in '|,"' or not c.isprintable()]
+        if not self.name.strip() or odd:
+            raise SweepError("-output %r: the name %r is not a column name "
+                             "(not empty; no newline or other control "
+                             "character, no '|', ',' or '\"': it heads a "
+                             "column of the .md and .csv tables)"
+                             % (spec, self.name))
+        if any(not c.isprintable() for c in rest.split(":/", 1)[0]):
+            raise SweepError("-output %r: the file name holds a control "
+                             "character (a newline?)" % spec)
+        # the whole rest, newlines included (was: '$' matched before a
+        # trailing newline and '.' stopped at one: a regex with a newline
+        # was taken as <row>:<column>)
+        m = re.match(r"([^:]+):/(.*)/\Z", rest, re.S)
         if m:
             self.file = m.group(1)
             try:
@@ -105,6 +121,14 @@ class Output:
             if self.regex.groups < 1:
                 raise SweepError("-output '%s': the regex needs a group "
                                  "(...)" % spec)
+            # a regex that matches nothing at all matches everywhere: its
+            # group was tabulated empty (adv pass sw25)
+            if self.regex.search("") is not None:
+                raise SweepError("-output %r: the regex /%s/ matches an "
+                                 "empty text: it would match where the file"
+                                 " has no number (give its group one "
+                                 "character at least, e.g. (\\S+))"
+                                 % (spec, self.regex.pattern))
             return
         self.regex = None
         try:
@@ -112,6 +136,20 @@ class Output:
         except ValueError:
             raise SweepError("-output '%s': expected <name>=<file>:<row>:"
                              "<column>" % spec)
+
+    def number(self, text, what, path):
+        """text if it is a finite number: an output is a number of the run
+        (was: an empty match of a regex, or a word, tabulated silently;
+        adv pass sw25)."""
+        try:
+            ok = math.isfinite(float(text))
+        except ValueError:
+            ok = False
+        if not ok:
+            raise SweepError("output '%s': %s in %s is %r, not a number (an "
+                             "output is a number of the run)"
+                             % (self.name, what, path, text))
+        return text
 
     def value(self, case):
         path = os.path.join(case, self.file)
@@ -123,7 +161,9 @@ class Output:
                 raise SweepError("output '%s': no match of /%s/ in %s"
                                  % (self.name, self.regex.pattern, path))
             last = found[-1]
-            return last[0] if isinstance(last, tuple) else last
+            return self.number(last[0] if isinstance(last, tuple) else last,
+                               "the first group of the last match of /%s/"
+                               % self.regex.pattern, path)
         try:
             table = postProcessing.readTable(path)
         except postProcessing.ColumnFileError as err:
@@ -148,9 +188,11 @@ class Output:
             raise SweepError("output '%s': no column '%s' in %s (header: "
                              "%s)" % (self.name, self.column, path,
                                       ", ".join(header)))
+        what = "column %s" % self.column
         if self.row in ("max", "min"):
-            pick = max if self.row == "max" else min
-            return pick(rows, key=lambda r: float(r[col]))[col]
+            values = [self.number(r[col], what, path) for r in rows]
+            return (max if self.row == "max" else min)(
+                values, key=float)
         if self.row.lstrip("-").isdigit():
             i = int(self.row)
             if not -len(rows) <= i < len(rows):
@@ -158,10 +200,11 @@ class Output:
                                  "range [%d, %d] of %s (%d data rows)"
                                  % (self.name, i, -len(rows), len(rows) - 1,
                                     path, len(rows)))
-            return rows[i][col]
+            return self.number(rows[i][col], "row %d, %s" % (i, what), path)
         for r in rows:
             if r[0] == self.row:
-                return r[col]
+                return self.number(r[col], "row %s, %s" % (self.row, what),
+                                   path)
         raise SweepError("output '%s': no row '%s' in %s (first column: %s)"
                          % (self.name, self.row, path,
                             ", ".join(r[0] for r in rows[:20])))

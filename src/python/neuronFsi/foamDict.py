@@ -22,7 +22,7 @@ src/foamTools/closestKeyword.H, the same distance and threshold).
 import math
 import os
 import re
-from . import options
+from . import options, ranges
 
 _TOKEN = re.compile(r'''
     (?P<ws>\s+)
@@ -140,14 +140,21 @@ def parse(text, name="<text>", base=None):
         pos = toks[k][1] if k < len(toks) else len(text)
         raise DictError("%s, line %d: %s" % (name, _line(text, pos), msg))
 
+    entry = [None]      # the entry being read, for the messages
+
     def value(k):
         t = toks[k][0]
         v = _value(t)
-        if isinstance(v, float) and not math.isfinite(v):
-            if t.lower().lstrip("+-") in ("nan", "inf", "infinity"):
-                return t            # a word, as OpenFOAM reads it
-            err("'%s' is beyond the range of a double (|x| < 1.8e308)" % t,
-                k)
+        if isinstance(v, float) and not math.isfinite(v) \
+                and t.lower().lstrip("+-") in ("nan", "inf", "infinity"):
+            return t            # a word, as OpenFOAM reads it
+        why = ranges.readerRangeProblem(t, v) if not t.startswith('"') \
+            else ""
+        if why:
+            what = "a value of the list" if entry[0] is None \
+                else "entry '%s'" % entry[0]
+            err("%s = %s %s: give 0 or a value with 1e-300 < |x| <= 1e+300"
+                " in the entry's valid range" % (what, t, why), k)
         return v
 
     def parse_list():
@@ -214,6 +221,7 @@ def parse(text, name="<text>", base=None):
                 _merge(d, {key: parse_dict(True, scope + [key])})
                 continue
             vals = []
+            entry[0] = "/".join(scope + [str(key)])
             while True:
                 if i[0] >= len(toks):
                     err("entry '%s' has no closing ';'" % key, i[0] - 1)
@@ -228,6 +236,7 @@ def parse(text, name="<text>", base=None):
                 else:
                     vals.append(value(i[0] - 1))
             d[key] = vals[0] if len(vals) == 1 else vals
+            entry[0] = None
         if closing:
             err("unclosed '{'", len(toks))
         return d
