@@ -200,11 +200,14 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
         const dictionary& riemannDict =
             mesh.solutionDict().subDict("riemann");
         mu_.read(riemannDict);
-        if (mu_.value() < 0)
+        // finite, the viscosity bound of every reader (physicalBounds.H:
+        // a modulus times a time; was [0, inf), adv pass rk40)
+        const scalar muMax = physicalBounds::viscosityMax;
+        if (!(mu_.value() >= 0 && mu_.value() < muMax))
         {
             FatalIOErrorInFunction(riemannDict)
                 << "mu = " << mu_.value() << " Pa s is outside the valid"
-                << " range [0, inf)" << exit(FatalIOError);
+                << " range [0, " << muMax << ") Pa s" << exit(FatalIOError);
         }
         Info<< "Newtonian viscous stress with mu = " << mu_.value()
             << " Pa s" << nl << endl;
