@@ -65,7 +65,8 @@ int main(int argc, char *argv[])
     // controlDict: OpenFOAM's keywords and ours, each given once
     foamTools::checkControlDict
     (
-        args, {"adjustTimeStep", "maxCo", "maxDeltaT", "maxSteps"}
+        args,
+        {"adjustTimeStep", "maxCo", "maxDeltaT", "maxSteps", "maxWrites"}
     );
     foamTools::writeGuard::discardIncompleteTimes(args);
     #include "createTime.H"

@@ -52,9 +52,10 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
     (
         d, "farSize", "m", nearSize_, 0.25*L_, true
     );
+    // At least one near cell (1e-250 m was accepted; adv pass cm18)
     growth_ = foamTools::readInRange<scalar>
     (
-        d, "growthDistance", "m", 0, L_, false
+        d, "growthDistance", "m", nearSize_, L_, true
     );
     // The wedge's angle is the axisymmetric mode's: in 3D it was accepted
     // and ignored without a word (adv30 cm09)
@@ -65,9 +66,11 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
             << "only: the 3D modes (quarter3D, full3D) mesh no wedge"
             << exit(FatalIOError);
     }
+    // [0.01, 10] deg: 1e-250 deg was accepted, a wedge of cells of no
+    // volume (adv pass cm18); OpenFOAM's wedge is meant for a few degrees
     wedge_ = foamTools::readInRangeOrDefault<scalar>
     (
-        d, "wedgeAngle", "deg", 0, 10, false, 5
+        d, "wedgeAngle", "deg", 0.01, 10, true, 5
     )*pi/180;
 
     // Cell type (3D): tetrahedra (the default) or hex, whose entries are

@@ -22,6 +22,26 @@ const Foam::dictionary& checkedRiemannDict(const Foam::fvMesh& mesh)
     foamTools::checkDuplicates(solution, {"riemann"});
     const dictionary& dict = solution.subDict("riemann");
     wordList valid{"riemannSolver", "timeScheme", "viscous"};
+    // A switch: OpenFOAM took any number for one (viscous 2 or 0.5 was
+    // "yes" without a word; adv pass rk40)
+    if (dict.found("viscous", keyType::LITERAL))
+    {
+        const ITstream& is = dict.lookup("viscous");
+        const bool ok =
+            is.size() == 1
+         && (
+                (is[0].isWord() && Switch(is[0].wordToken(), true).valid())
+             || (is[0].isLabel() && (is[0].labelToken() == 0
+                                  || is[0].labelToken() == 1))
+            );
+        if (!ok)
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'viscous' is not a switch: valid values are yes,"
+                << " no, true, false, on, off (or 1, 0)"
+                << exit(FatalIOError);
+        }
+    }
     if (dict.getOrDefault<Switch>("viscous", false))
     {
         valid.append("mu");
@@ -200,11 +220,14 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
         const dictionary& riemannDict =
             mesh.solutionDict().subDict("riemann");
         mu_.read(riemannDict);
-        if (mu_.value() < 0)
+        // finite, the viscosity bound of every reader (physicalBounds.H:
+        // a modulus times a time; was [0, inf), adv pass rk40)
+        const scalar muMax = physicalBounds::viscosityMax;
+        if (!(mu_.value() >= 0 && mu_.value() < muMax))
         {
             FatalIOErrorInFunction(riemannDict)
                 << "mu = " << mu_.value() << " Pa s is outside the valid"
-                << " range [0, inf)" << exit(FatalIOError);
+                << " range [0, " << muMax << ") Pa s" << exit(FatalIOError);
         }
         Info<< "Newtonian viscous stress with mu = " << mu_.value()
             << " Pa s" << nl << endl;

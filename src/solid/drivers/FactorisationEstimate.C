@@ -30,11 +30,10 @@ solid::FactorisationEstimate solid::estimateFactorisation
     if (n == 0) return est;
 
     // Symmetric pattern and its AMD ordering: perm(k) is the old index of
-    // the k-th unknown eliminated
-    Eigen::SparseMatrix<double> B = A;
-    for (int k = 0; k < B.nonZeros(); ++k) B.valuePtr()[k] = 1;
+    // the k-th unknown eliminated. Eigen's sparse sum keeps every entry of
+    // both patterns, whatever the values (no copy of A's pattern needed)
     const Eigen::SparseMatrix<double> S =
-        Eigen::SparseMatrix<double>(B.transpose()) + B;
+        Eigen::SparseMatrix<double>(A.transpose()) + A;
     Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> perm;
     Eigen::AMDOrdering<int> amd;
     amd(S, perm);
