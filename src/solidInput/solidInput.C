@@ -45,6 +45,14 @@ solid::Mesh Foam::solidInput::mesh() const
     {
         foamTools::checkKeywords(dict, {"type", "file", "scale"});
     }
+    // The elements checked here, where a failure names this dictionary
+    // (solid::Model checks them again and threw past the solvers, adv32
+    // f15: std::terminate)
+    const auto checked = [](solid::Mesh mesh)
+    {
+        mesh.check();
+        return mesh;
+    };
     try
     {
         if (type == "box")
@@ -52,11 +60,14 @@ solid::Mesh Foam::solidInput::mesh() const
             const labelVector n(dict.get<labelVector>("cells"));
             const vector lo(dict.get<vector>("min"));
             const vector hi(dict.get<vector>("max"));
-            return solid::Mesh::box
+            return checked
             (
-                n.x(), n.y(), n.z(),
-                solid::Vec3(lo.x(), lo.y(), lo.z()),
-                solid::Vec3(hi.x(), hi.y(), hi.z())
+                solid::Mesh::box
+                (
+                    n.x(), n.y(), n.z(),
+                    solid::Vec3(lo.x(), lo.y(), lo.z()),
+                    solid::Vec3(hi.x(), hi.y(), hi.z())
+                )
             );
         }
         if (type == "rectangle")
@@ -64,9 +75,12 @@ solid::Mesh Foam::solidInput::mesh() const
             const Vector2D<label> n(dict.get<Vector2D<label>>("cells"));
             const vector2D lo(dict.get<vector2D>("min"));
             const vector2D hi(dict.get<vector2D>("max"));
-            return solid::Mesh::rectangle
+            return checked
             (
-                n.x(), n.y(), lo.x(), hi.x(), lo.y(), hi.y()
+                solid::Mesh::rectangle
+                (
+                    n.x(), n.y(), lo.x(), hi.x(), lo.y(), hi.y()
+                )
             );
         }
         if (type == "gmsh")
@@ -85,7 +99,7 @@ solid::Mesh Foam::solidInput::mesh() const
                 dict, "scale", "", 0, foamTools::noUpperBound<scalar>(),
                 false, 1
             );
-            solid::Mesh mesh(solid::readGmsh(file, scale));
+            solid::Mesh mesh(checked(solid::readGmsh(file, scale)));
             // A cell: its size in metres after scaling lies in cellMesh's
             // range of cellDiameter, (1e-7, 1e-3] m (a mesh in micrometres
             // or scaled by 1e6 failed later in the solver, naming no

@@ -297,12 +297,7 @@ Foam::scalar Foam::conservativeFluid::courantNumber(const scalar deltaT) const
     tmp<surfaceScalarField> tspeedSf(amaxSf_);
     if (viscous_)
     {
-        // (8/3) nu/d: the explicit diffusion limit of longitudinal waves
-        // (diffusivity 4/3 nu) as a speed, d the distance of the centres
-        tspeedSf =
-            amaxSf_
-          + (8.0/3.0)*mu_/fvc::interpolate(thermo_->rho())
-           *mesh_.magSf()*mesh_.deltaCoeffs();
+        tspeedSf = amaxSf_ + viscousSpeedSf();
     }
     const scalarField sumSpeedSf
     (
@@ -313,6 +308,32 @@ Foam::scalar Foam::conservativeFluid::courantNumber(const scalar deltaT) const
     Info<< "Courant number max: " << CoNum << endl;
 
     return CoNum;
+}
+
+
+Foam::tmp<Foam::surfaceScalarField>
+Foam::conservativeFluid::viscousSpeedSf() const
+{
+    // (8/3) nu/d: the explicit diffusion limit of longitudinal waves
+    // (diffusivity 4/3 nu) as a speed, d the distance of the centres
+    return
+        (8.0/3.0)*mu_/fvc::interpolate(thermo_->rho())
+       *mesh_.magSf()*mesh_.deltaCoeffs();
+}
+
+
+Foam::scalar Foam::conservativeFluid::viscousDeltaT(const scalar maxCo) const
+{
+    if (!viscous_)
+    {
+        return GREAT;
+    }
+    const scalar rate = 0.5*gMax
+    (
+        fvc::surfaceSum(viscousSpeedSf())().primitiveField()
+       /mesh_.V().field()
+    );
+    return rate > 0 ? maxCo/rate : GREAT;
 }
 
 
