@@ -12,6 +12,7 @@
 #include "SolidError.H"
 #include "keywordCheck.H"
 #include "inputChecks.H"
+#include "subDict.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
 
@@ -28,6 +29,11 @@ Foam::solidInput::solidInput
     wordList valid{"mesh", "fixed", "materials"};
     valid.append(solverEntries);
     foamTools::checkKeywords(dict_, valid);
+    foamTools::requireValue
+    (
+        dict_, "fixed", "a list of (node set, component) pairs, e.g."
+        " ((xmax 0) (ymin 1))"
+    );
 }
 
 
@@ -35,7 +41,7 @@ Foam::solidInput::solidInput
 
 solid::Mesh Foam::solidInput::mesh() const
 {
-    const dictionary& dict = dict_.subDict("mesh");
+    const dictionary& dict = foamTools::subDict(dict_, "mesh");
     const word type(dict.get<word>("type"));
     if (type == "box" || type == "rectangle")
     {
@@ -144,7 +150,7 @@ std::vector<solid::MaterialParameters> Foam::solidInput::materials
     const solid::Mesh& mesh
 ) const
 {
-    const dictionary& mats = dict_.subDict("materials");
+    const dictionary& mats = foamTools::subDict(dict_, "materials");
     const wordList regions(mesh.regionNames.begin(), mesh.regionNames.end());
 
     // The paper's parameter sets are data files now: a case of an earlier
@@ -187,7 +193,7 @@ std::vector<solid::MaterialParameters> Foam::solidInput::materials
         }
         if (unnamed.size() && named.size())
         {
-            const dictionary& meshDict = dict_.subDict("mesh");
+            const dictionary& meshDict = foamTools::subDict(dict_, "mesh");
             FatalIOErrorInFunction(mats)
                 << "the solid mesh";
             if (meshDict.found("file"))
@@ -222,7 +228,7 @@ std::vector<solid::MaterialParameters> Foam::solidInput::materials
                 << "#include \"$PROJECT_DIR/etc/caseDicts/cellMaterials/"
                 << "<set>\")" << exit(FatalIOError);
         }
-        const dictionary& d = mats.subDict(region);
+        const dictionary& d = foamTools::subDict(mats, region);
         // The entries themselves: solid::MaterialParameters::fromEntries
         foamTools::checkDuplicates(d);
         solid::MaterialParameters p;
@@ -309,7 +315,7 @@ Foam::foamTools::inputRecord::digestMap Foam::solidInput::digests
     using foamTools::inputRecord;
     const std::string file("constant/solidProperties, entry ");
     inputRecord::digestMap record;
-    const dictionary& meshDict = dict_.subDict("mesh");
+    const dictionary& meshDict = foamTools::subDict(dict_, "mesh");
     record[file + "'mesh'"] = inputRecord::digest(meshDict);
     if (meshDict.get<word>("type") == "gmsh")
     {
@@ -321,11 +327,11 @@ Foam::foamTools::inputRecord::digestMap Foam::solidInput::digests
     dictionary fixed;
     fixed.add(dict_.lookupEntry("fixed", keyType::LITERAL));
     record[file + "'fixed'"] = inputRecord::digest(fixed);
-    const dictionary& mats = dict_.subDict("materials");
+    const dictionary& mats = foamTools::subDict(dict_, "materials");
     for (const std::string& region : mesh.regionNames)
     {
         record[file + "'materials', region '" + region + "'"] =
-            inputRecord::digest(mats.subDict(region));
+            inputRecord::digest(foamTools::subDict(mats, region));
     }
     return record;
 }

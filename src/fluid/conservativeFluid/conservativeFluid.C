@@ -3,6 +3,7 @@
 #include "wedgePolyPatch.H"
 #include "keywordCheck.H"
 #include "inputChecks.H"
+#include "subDict.H"
 #include "physicalBounds.H"
 
 #include <cmath>
@@ -20,7 +21,7 @@ const Foam::dictionary& checkedRiemannDict(const Foam::fvMesh& mesh)
 
     const dictionary& solution = mesh.solutionDict();
     foamTools::checkDuplicates(solution, {"riemann"});
-    const dictionary& dict = solution.subDict("riemann");
+    const dictionary& dict = foamTools::subDict(solution, "riemann");
     wordList valid{"riemannSolver", "timeScheme", "viscous"};
     if (dict.getOrDefault<Switch>("viscous", false))
     {
@@ -131,10 +132,10 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
         thermo_->rho()*(thermo_->e() + 0.5*magSqr(U_))
     ),
     flux_(riemannFlux::New(mesh, checkedRiemannDict(mesh))),
-    rk_(mesh.solutionDict().subDict("riemann")),
+    rk_(foamTools::subDict(mesh.solutionDict(), "riemann")),
     viscous_
     (
-        mesh.solutionDict().subDict("riemann")
+        foamTools::subDict(mesh.solutionDict(), "riemann")
        .lookupOrDefault<Switch>("viscous", false)
     ),
     mu_("mu", dimDynamicViscosity, Zero),
@@ -198,7 +199,7 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
     if (viscous_)
     {
         const dictionary& riemannDict =
-            mesh.solutionDict().subDict("riemann");
+            foamTools::subDict(mesh.solutionDict(), "riemann");
         mu_.read(riemannDict);
         if (mu_.value() < 0)
         {
