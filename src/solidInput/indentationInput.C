@@ -242,6 +242,11 @@ std::vector<solid::ProtocolRow> Foam::indentationInput::readProtocol() const
         row.amount = a.number();
         rows.push_back(row);
     }
+    foamTools::checkEntryEnd
+    (
+        dict_, "protocol", is,
+        "one list of (stage load|unload|hold rate[m/s] amount[m or s]) rows"
+    );
     try
     {
         solid::IndentationProtocol check(rows);

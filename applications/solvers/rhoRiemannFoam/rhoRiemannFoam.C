@@ -72,6 +72,8 @@ int main(int argc, char *argv[])
     );
     foamTools::writeGuard::discardIncompleteTimes(args);
     #include "createTime.H"
+    // The start time's name and the time its state was written at
+    foamTools::checkTimeName(runTime);
     // The boundary conditions' tables (a pulse): not empty, times
     // increasing, or an error naming file and patch
     foamTools::checkTables(runTime.timePath());

@@ -2,6 +2,7 @@
 #include "IFstream.H"
 #include "mathematicalConstants.H"
 #include "inputChecks.H"
+#include "subDict.H"
 #include "keywordCheck.H"
 
 using Foam::constant::mathematical::pi;
@@ -53,9 +54,11 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     (
         "nucleusShape", dict, nucleusShape::centredSpheroid
     );
-    if (dict.isDict("fluid"))
+    // `fluid 5;` is an error, not "no fluid" (adv32 y01: no fluid.msh,
+    // an older one left beside the new cell.msh)
+    if (const dictionary* fluid = foamTools::findSubDict(dict, "fluid"))
     {
-        fluidDict_ = dict.subDict("fluid");
+        fluidDict_ = *fluid;
     }
 
     // Upper bound 1 mm: a larger cell is a length given in um, not m

@@ -4,6 +4,7 @@
 #include "meshQuality.H"
 #include "mathematicalConstants.H"
 #include "OSspecific.H"
+#include "mshFile.H"
 #include "vector.H"
 #include <gmsh.h>
 #include <cmath>
@@ -828,20 +829,11 @@ void Foam::fluidBox::generate()
 }
 
 
-void Foam::fluidBox::write(const fileName& file) const
+Foam::fileName Foam::fluidBox::writeTemporary(const fileName& file) const
 {
-    mkDir(file.path());
-    const fileName tmp(file.path()/"." + file.nameLessExt() + "-tmp.msh");
     gmsh::option::setNumber("Mesh.MshFileVersion", 2.2);
     gmsh::option::setNumber("Mesh.Binary", 0);
     gmsh::option::setNumber("Mesh.SaveAll", 0);
     gmsh::option::setNumber("Mesh.ScalingFactor", unit_);
-    gmsh::write(tmp);
-    if (!Foam::mv(tmp, file))
-    {
-        FatalErrorInFunction
-            << "Cannot move " << tmp << " to " << file << exit(FatalError);
-    }
-    Info<< "Written " << file << " (gmsh 2.2 for gmshToFoam, coordinates in m)"
-        << endl;
+    return mshFile::writeTemporary(file);
 }

@@ -83,6 +83,21 @@ def split_entry(case, entry):
                                  % (os.path.join(case, f), "/".join(keys),
                                     foamDict.did_you_mean(keys[-1], values),
                                     ", ".join(d)))
+            # An entry that comes from an included file cannot be set in
+            # this one: said before anything is copied (adv32 w02: "no
+            # sub-dictionary" from the first run's copy, run folders left)
+            own, included = foamDict.own_entry(os.path.join(case, f), keys)
+            if not own:
+                raise SweepError(
+                    "-entry %s: the entry '%s' is not written in %s itself:"
+                    " it comes from a file it includes (%s). sweepCase sets"
+                    " an entry in the text of the file named; write the "
+                    "entry into %s (after the include, which it then "
+                    "overrides), or sweep a copy of the included file. "
+                    "Nothing was run" % (
+                        entry, "/".join(keys), os.path.join(case, f),
+                        ", ".join(included) or "an include directive",
+                        os.path.join(case, f)))
             return f, keys
     raise SweepError("-entry %s: no file of case %s in it" % (entry, case))
 
@@ -210,17 +225,44 @@ class Output:
                             ", ".join(r[0] for r in rows[:20])))
 
 
+def _stamp(path):
+    """(modification time in ns, size) of a file, or None if absent."""
+    try:
+        st = os.stat(path)
+    except OSError:
+        return None
+    return st.st_mtime_ns, st.st_size
+
+
 def run_one(case, copy, f, keys, value, outputs, command):
     # copy does not exist (checked in main): copytree never replaces
     shutil.copytree(case, copy, symlinks=True)
     p = os.path.join(copy, f)
     text = foamDict.set_entry(open(p).read(), keys, value, p)
     open(p, "w").write(text)
+    # The output files the copy holds before the run: the case's earlier
+    # results (copytree keeps their times)
+    before = {o.file: _stamp(os.path.join(copy, o.file)) for o in outputs}
     try:
         wall = caseRuns.runIn(copy, command, "log.sweepCase")
     except caseRuns.RunError as err:
         raise SweepError("value %s: %s" % (value, err))
-    return [o.value(copy) for o in outputs], wall
+    values = [o.value(copy) for o in outputs]
+    # An output the run did not write is the case's earlier result, the
+    # same for every value (adv32 w01: ./Allrun skipped every step of a
+    # case run before, its logs being there, and the old peaks.dat was
+    # reported for each radius)
+    for o in outputs:
+        stamp = before[o.file]
+        if stamp is not None and _stamp(os.path.join(copy, o.file)) == stamp:
+            raise SweepError(
+                "value %s: output '%s': %s was not written by the run ('%s'"
+                "): it is the file of the case as copied (an earlier run's"
+                " result; an Allrun skips the steps whose logs are there), "
+                "the same for every value. Clean the case first (./Allclean"
+                ") so that each run computes its own" % (
+                    value, o.name, os.path.join(case, o.file), command))
+    return values, wall
 
 
 def main():

@@ -3,6 +3,7 @@
 #include "wedgePolyPatch.H"
 #include "keywordCheck.H"
 #include "inputChecks.H"
+#include "subDict.H"
 #include "physicalBounds.H"
 
 #include <cmath>
@@ -20,7 +21,7 @@ const Foam::dictionary& checkedRiemannDict(const Foam::fvMesh& mesh)
 
     const dictionary& solution = mesh.solutionDict();
     foamTools::checkDuplicates(solution, {"riemann"});
-    const dictionary& dict = solution.subDict("riemann");
+    const dictionary& dict = foamTools::subDict(solution, "riemann");
     wordList valid{"riemannSolver", "timeScheme", "viscous"};
     // A switch: OpenFOAM took any number for one (viscous 2 or 0.5 was
     // "yes" without a word; adv pass rk40)
@@ -151,10 +152,10 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
         thermo_->rho()*(thermo_->e() + 0.5*magSqr(U_))
     ),
     flux_(riemannFlux::New(mesh, checkedRiemannDict(mesh))),
-    rk_(mesh.solutionDict().subDict("riemann")),
+    rk_(foamTools::subDict(mesh.solutionDict(), "riemann")),
     viscous_
     (
-        mesh.solutionDict().subDict("riemann")
+        foamTools::subDict(mesh.solutionDict(), "riemann")
        .lookupOrDefault<Switch>("viscous", false)
     ),
     mu_("mu", dimDynamicViscosity, Zero),
@@ -218,7 +219,7 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
     if (viscous_)
     {
         const dictionary& riemannDict =
-            mesh.solutionDict().subDict("riemann");
+            foamTools::subDict(mesh.solutionDict(), "riemann");
         mu_.read(riemannDict);
         // finite, the viscosity bound of every reader (physicalBounds.H:
         // a modulus times a time; was [0, inf), adv pass rk40)
@@ -320,12 +321,7 @@ Foam::scalar Foam::conservativeFluid::courantNumber(const scalar deltaT) const
     tmp<surfaceScalarField> tspeedSf(amaxSf_);
     if (viscous_)
     {
-        // (8/3) nu/d: the explicit diffusion limit of longitudinal waves
-        // (diffusivity 4/3 nu) as a speed, d the distance of the centres
-        tspeedSf =
-            amaxSf_
-          + (8.0/3.0)*mu_/fvc::interpolate(thermo_->rho())
-           *mesh_.magSf()*mesh_.deltaCoeffs();
+        tspeedSf = amaxSf_ + viscousSpeedSf();
     }
     const scalarField sumSpeedSf
     (
@@ -336,6 +332,32 @@ Foam::scalar Foam::conservativeFluid::courantNumber(const scalar deltaT) const
     Info<< "Courant number max: " << CoNum << endl;
 
     return CoNum;
+}
+
+
+Foam::tmp<Foam::surfaceScalarField>
+Foam::conservativeFluid::viscousSpeedSf() const
+{
+    // (8/3) nu/d: the explicit diffusion limit of longitudinal waves
+    // (diffusivity 4/3 nu) as a speed, d the distance of the centres
+    return
+        (8.0/3.0)*mu_/fvc::interpolate(thermo_->rho())
+       *mesh_.magSf()*mesh_.deltaCoeffs();
+}
+
+
+Foam::scalar Foam::conservativeFluid::viscousDeltaT(const scalar maxCo) const
+{
+    if (!viscous_)
+    {
+        return GREAT;
+    }
+    const scalar rate = 0.5*gMax
+    (
+        fvc::surfaceSum(viscousSpeedSf())().primitiveField()
+       /mesh_.V().field()
+    );
+    return rate > 0 ? maxCo/rate : GREAT;
 }
 
 

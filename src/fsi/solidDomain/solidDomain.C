@@ -2,6 +2,7 @@
 #include "solidInput.H"
 #include "keywordCheck.H"
 #include "inputChecks.H"
+#include "subDict.H"
 #include "inputRecord.H"
 #include "SolidError.H"
 #include "IOobject.H"
@@ -173,7 +174,8 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
     if (dict_.found("hourglassViscosityRegions"))
     {
         // kappa per region name, overriding hourglassViscosity there
-        const dictionary& hr = dict_.subDict("hourglassViscosityRegions");
+        const dictionary& hr =
+            foamTools::subDict(dict_, "hourglassViscosityRegions");
         foamTools::checkKeywords
         (
             hr, wordList(mesh().regionNames.begin(), mesh().regionNames.end())
@@ -606,6 +608,7 @@ void Foam::solidDomain::addProbe
 
 void Foam::solidDomain::setupProbes()
 {
+    // A dictionary of named probes or a list of points
     if (dict_.isDict("probes"))
     {
         const dictionary& pd = dict_.subDict("probes");
@@ -645,7 +648,7 @@ void Foam::solidDomain::setupProbes()
     }
     if (dict_.found("interfaceProbe"))
     {
-        const dictionary& ip = dict_.subDict("interfaceProbe");
+        const dictionary& ip = foamTools::subDict(dict_, "interfaceProbe");
         foamTools::checkKeywords(ip, {"regions", "heightFraction", "side"});
         const Pair<word> regions(ip.get<Pair<word>>("regions"));
         const scalar f = ip.get<scalar>("heightFraction");

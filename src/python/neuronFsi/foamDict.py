@@ -128,11 +128,13 @@ def _merge(d, new):
             d[k] = v
 
 
-def parse(text, name="<text>", base=None):
+def parse(text, name="<text>", base=None, included=None):
     """Nested dict of the file. An entry of one token is that value (int,
     float, bool for yes/no/true/false/on/off, or str); of several tokens or
     a list, a Python list; the FoamFile header is dropped. Include
-    directives name files relative to the directory base."""
+    directives name files relative to the directory base. With a list
+    `included`, include directives are not followed: the text's own
+    entries only, the directives' file names appended to the list."""
     toks = tokens(text, name)
     i = [0]
 
@@ -179,6 +181,10 @@ def parse(text, name="<text>", base=None):
                 "#includeIfPresent)" % key, i[0] - 1)
         if i[0] >= len(toks) or not toks[i[0]][0].startswith('"'):
             err("%s needs a quoted file name" % key, i[0] - 1)
+        if included is not None:
+            included.append('%s %s' % (key, toks[i[0]][0]))
+            i[0] += 1
+            return {}
         if base is None:
             err("%s in a text that is not a file" % key, i[0] - 1)
         path = os.path.join(base, os.path.expandvars(toks[i[0]][0][1:-1]))
@@ -257,6 +263,21 @@ def read(path):
             ": reading it would wait without end for a writer"))
     with open(path) as f:
         return parse(f.read(), path, os.path.dirname(path) or ".")
+
+
+def own_entry(path, keys):
+    """Whether the file at path writes entry keys (e.g. ['materials',
+    'nucleus', 'C10']) in its own text, not through an include directive:
+    (True, []) if it does, else (False, the file's include directives).
+    Only an entry of the file's own text can be set in it (set_entry)."""
+    included = []
+    with open(path) as f:
+        d = parse(f.read(), path, included=included)
+    for k in keys:
+        if not isinstance(d, dict) or k not in d:
+            return False, included
+        d = d[k]
+    return True, []
 
 
 def read_checked(path, valid, required, error):
