@@ -29,7 +29,7 @@ import sys
 
 import numpy as np
 
-from neuronFsi import planeWave
+from neuronFsi import bench, planeWave
 from neuronFsi.solidResults import SolidResults
 
 FIG10 = np.array([3.8461e-6, 4.108e-6])
@@ -54,7 +54,7 @@ def main():
     ap.add_argument("--time", type=float, default=65.5e-9)
     ap.add_argument("--band", type=float, default=0.3e-6)
     ap.add_argument("--out")
-    a = ap.parse_args()
+    a = bench.parse(ap)
     case = a.case
     with SolidResults(os.path.join(case, "solid", "solid.h5")) as s:
         k = s.nearest(a.time)
@@ -124,4 +124,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    bench.main(main)

@@ -221,7 +221,7 @@ def main():
     ap.add_argument("--keep", action="store_true",
                     help="do not run again the options whose case in --out "
                     "ran to its end (a study continued)")
-    args = ap.parse_args()
+    args = bench.parse(ap)
     options = args.options.split()
     if "default" not in options:
         options.insert(0, "default")
@@ -246,4 +246,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    bench.main(main)

@@ -125,7 +125,7 @@ def main():
     ap.add_argument("--commit", default=None,
                     help="with --reportOnly: the commit the levels ran with "
                     "(default: their bench.commit files)")
-    args = ap.parse_args()
+    args = bench.parse(ap)
     mode = "quick" if args.quick else "full"
     size = dict(SIZES[mode])
     if args.factors:
@@ -264,4 +264,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    bench.main(main)

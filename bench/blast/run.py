@@ -536,7 +536,7 @@ def main():
     ap.add_argument("--commit", default=None,
                     help="with --reportOnly: the commit the levels ran "
                     "with (default: from their bench.commit files)")
-    args = ap.parse_args()
+    args = bench.parse(ap)
     mode = "quick" if args.quick else "full"
     size = dict(SIZES[mode])
     if args.factors:
@@ -580,4 +580,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    bench.main(main)

@@ -19,6 +19,7 @@ import os
 
 import numpy as np
 
+from neuronFsi import bench
 from neuronFsi.solidResults import SolidResults
 
 FIG10 = np.array([3.8461e-6, 4.108e-6])
@@ -28,7 +29,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("case")
     ap.add_argument("--near", type=float, default=0)
-    a = ap.parse_args()
+    a = bench.parse(ap)
     with SolidResults(os.path.join(a.case, "solid", "solid.h5")) as s:
         X = s.mesh("coordinates")[:, :2]
         C = s.mesh("connectivity")
@@ -61,4 +62,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    bench.main(main)

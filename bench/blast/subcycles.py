@@ -30,7 +30,7 @@ import sys
 
 import numpy as np
 
-from neuronFsi import logs, postProcessing
+from neuronFsi import bench, logs, postProcessing
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
@@ -78,7 +78,7 @@ def main():
     ap.add_argument("--endTime", type=float, default=3e-8)
     ap.add_argument("--reportOnly", action="store_true",
                     help="measure the runs already in --out")
-    a = ap.parse_args()
+    a = bench.parse(ap)
     ns = [int(n) for n in a.subcycles.split()]
     cases = [os.path.join(a.out, f"N{n}", "axisymmetricPreview")
              if a.reportOnly else run(a.out, n, a.cell, a.endTime)
@@ -109,4 +109,4 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(bench.main(main))

@@ -21,6 +21,8 @@ import argparse
 
 import numpy as np
 
+from neuronFsi import bench
+
 # item: (bytes per cell, per internal face, per boundary face, per point),
 # where it lives
 ITEMS = [
@@ -63,7 +65,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--sizes", default="40 60 80 100",
                     help="cells per edge of the boxes")
-    sizes = [int(s) for s in ap.parse_args().sizes.split()]
+    sizes = [int(s) for s in bench.parse(ap).sizes.split()]
     print("| item | where | before [B/cell] | now [B/cell] |")
     print("|---|---|---:|---:|")
     before = now = 0.0
@@ -80,4 +82,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    bench.main(main)

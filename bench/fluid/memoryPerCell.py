@@ -22,6 +22,8 @@ import shutil
 
 import numpy as np
 
+from neuronFsi import bench
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 spec = importlib.util.spec_from_file_location(
     "fluidBench", os.path.join(HERE, "run.py"))
@@ -35,7 +37,7 @@ def main():
     ap.add_argument("--sizes", default="40 60 80 100",
                     help="cells per edge of the boxes")
     ap.add_argument("--steps", type=int, default=3)
-    args = ap.parse_args()
+    args = bench.parse(ap)
     sizes = [int(s) for s in args.sizes.split()]
     if len(sizes) < 2 or min(sizes) < 2 or args.steps < 1:
         ap.error("--sizes: at least two boxes of 2 or more cells per edge; "
@@ -60,4 +62,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    bench.main(main)

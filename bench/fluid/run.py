@@ -466,7 +466,10 @@ def main():
     ap.add_argument("--doc", help="markdown file to write")
     ap.add_argument("--parts", default="123",
                     help="which measurements, e.g. 13")
-    args = ap.parse_args()
+    args = bench.parse(ap)
+    if not args.parts or any(c not in "123" for c in args.parts):
+        ap.error("--parts '%s': not a selection of the measurements 1, 2, 3"
+                 " (e.g. 13)" % args.parts)
     size = SIZES["quick" if args.quick else "full"]
     doc = bench.reportPath(args.doc, args.quick, args.out, ROOT, "fluid.md")
     docDir = os.path.dirname(os.path.abspath(doc))
@@ -588,4 +591,4 @@ resident memory of each rank (/usr/bin/time)."""
 
 
 if __name__ == "__main__":
-    main()
+    bench.main(main)

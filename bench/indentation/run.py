@@ -136,7 +136,7 @@ def main():
     ap = bench.arguments(__doc__, os.path.join(HERE, "output"),
                          "two coarse meshes, output in --out")
     ap.add_argument("--case", default="averageCell")
-    args = ap.parse_args()
+    args = bench.parse(ap)
     size = "quick" if args.quick else "full"
     out = os.path.abspath(args.out)
     doc = bench.reportPath(args.doc, args.quick, out, ROOT,
@@ -153,4 +153,4 @@ def main():
 
 
 if __name__ == "__main__":
-    main()
+    bench.main(main)

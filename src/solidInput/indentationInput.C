@@ -33,7 +33,8 @@ Foam::indentationInput::indentationInput
         {
             "radius", "tolerance", "penaltyFactor", "contactPatch",
             "maxDepthIncrement", "holdDeltaT0", "maxDeltaT", "holdGrowth",
-            "forceTarget", "forceTargetTolerance", "protocol", "logNewton"
+            "forceTarget", "forceTargetTolerance", "protocol", "logNewton",
+            "maxFactorMemory", "maxFactorFlops"
         }
     );
     // Our entries of system/controlDict (OpenFOAM's are the Time's)
@@ -94,7 +95,48 @@ Foam::indentationInput::indentationInput
         }
     }
 
+    // The largest sparse factorisation the run may start (addContact
+    // estimates it; a 3D mesh sat for many minutes in the first one)
+    maxFactorMemory_ = readInRangeOrDefault<scalar>
+    (
+        d, "maxFactorMemory", "B", 0, 1e15, false, 1e9
+    );
+    maxFactorFlops_ = readInRangeOrDefault<scalar>
+    (
+        d, "maxFactorFlops", "flop", 0, 1e18, false, 1e11
+    );
+
     protocol_ = std::make_shared<solid::IndentationProtocol>(readProtocol());
+
+    // A step at most the table's rows: maxDepthIncrement above every load
+    // and unload amount, or holdDeltaT0 above every hold, made each such
+    // row one step (a force curve of its end points), silently (issue 19)
+    {
+        scalar depthMax = 0, holdMax = 0;
+        for (const solid::ProtocolRow& row : protocol_->rows())
+        {
+            scalar& m = row.motion == "hold" ? holdMax : depthMax;
+            m = max(m, scalar(row.amount));
+        }
+        if (depthMax > 0 && settings_.maxDepthIncrement > depthMax)
+        {
+            FatalIOErrorInFunction(d)
+                << "entry 'maxDepthIncrement' = "
+                << settings_.maxDepthIncrement << " m is longer than the "
+                << "longest load or unload row of entry 'protocol' ("
+                << depthMax << " m): each row would be one step; valid "
+                << "range (0, " << depthMax << "] m" << exit(FatalIOError);
+        }
+        if (holdMax > 0 && settings_.holdDeltaT0 > holdMax)
+        {
+            FatalIOErrorInFunction(d)
+                << "entry 'holdDeltaT0' = " << settings_.holdDeltaT0
+                << " s is longer than the longest hold row of entry "
+                << "'protocol' (" << holdMax << " s): each hold would be "
+                << "one step; valid range (0, " << holdMax << "] s"
+                << exit(FatalIOError);
+        }
+    }
 
     // The table starts at 0 s: a startTime other than 0 in controlDict was
     // taken by OpenFOAM's Time and ignored by the table (issue 19). A
@@ -200,6 +242,11 @@ std::vector<solid::ProtocolRow> Foam::indentationInput::readProtocol() const
         row.amount = a.number();
         rows.push_back(row);
     }
+    foamTools::checkEntryEnd
+    (
+        dict_, "protocol", is,
+        "one list of (stage load|unload|hold rate[m/s] amount[m or s]) rows"
+    );
     try
     {
         solid::IndentationProtocol check(rows);
@@ -210,6 +257,48 @@ std::vector<solid::ProtocolRow> Foam::indentationInput::readProtocol() const
             << "entry 'protocol': " << err.what() << exit(FatalIOError);
     }
     return rows;
+}
+
+
+void Foam::indentationInput::checkFactorisation(solid::Model& model) const
+{
+    const solid::FactorisationEstimate e = solid::estimateFactorisation
+    (
+        model.tangentPattern(), maxFactorMemory_, maxFactorFlops_
+    );
+    const bool memory = e.memory > maxFactorMemory_;
+    const bool flops = e.operations > maxFactorFlops_;
+    const solid::Mesh& mesh = model.mesh();
+    Info<< "Newton's linear systems: " << e.n << " unknowns, a sparse "
+        << "factorisation of " << (e.complete ? "about " : "at least ")
+        << e.memory << " B and " << e.operations << " flop (estimate; "
+        << "limits maxFactorMemory " << maxFactorMemory_ << " B, "
+        << "maxFactorFlops " << maxFactorFlops_ << " flop)" << nl << endl;
+    if (!memory && !flops)
+    {
+        return;
+    }
+    const word entry(memory ? "maxFactorMemory" : "maxFactorFlops");
+    const scalar limit(memory ? maxFactorMemory_ : maxFactorFlops_);
+    const scalar hi(memory ? 1e15 : 1e18);
+    const char* unit(memory ? "B" : "flop");
+    FatalIOErrorInFunction(dict_)
+        << "the cell mesh (" << mesh.nElements() << " elements, "
+        << mesh.nNodes() << " nodes, "
+        << (mesh.axisymmetric() ? "axisymmetric" : "3D") << ": " << e.n
+        << " unknowns) needs a sparse factorisation of the Newton matrix "
+        << (e.complete ? "of about " : "of at least ")
+        << (memory ? e.memory : e.operations) << ' ' << unit
+        << (memory ? " of memory" : " per Newton iteration")
+        << " (estimate from its sparsity pattern: minimum-degree ordering, "
+        << "the factor's non-zeros), more than entry '" << entry << "' = "
+        << limit << ' ' << unit << " (default "
+        << (memory ? "1e+09" : "1e+11") << ' ' << unit << "): the run would"
+        << " sit for a long time in its first factorisation. Use a coarser "
+        << "mesh (the axisymmetric cell costs a small fraction), or raise '"
+        << entry << "' in constant/indenterProperties (valid range (0, "
+        << hi << "] " << unit << ") if the machine has the memory and the "
+        << "time" << exit(FatalIOError);
 }
 
 
@@ -431,6 +520,7 @@ Foam::indentationInput::addContact(solid::Model& model) const
     {
         FatalErrorInFunction << err.what() << exit(FatalError);
     }
+    checkFactorisation(model);
     // The contact's points now, not at the first step: a patch without
     // area (the axis in r-z) named as the entry that chose it
     try

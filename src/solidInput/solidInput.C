@@ -12,6 +12,7 @@
 #include "SolidError.H"
 #include "keywordCheck.H"
 #include "inputChecks.H"
+#include "subDict.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
 
@@ -28,6 +29,11 @@ Foam::solidInput::solidInput
     wordList valid{"mesh", "fixed", "materials"};
     valid.append(solverEntries);
     foamTools::checkKeywords(dict_, valid);
+    foamTools::requireValue
+    (
+        dict_, "fixed", "a list of (node set, component) pairs, e.g."
+        " ((xmax 0) (ymin 1))"
+    );
 }
 
 
@@ -35,7 +41,7 @@ Foam::solidInput::solidInput
 
 solid::Mesh Foam::solidInput::mesh() const
 {
-    const dictionary& dict = dict_.subDict("mesh");
+    const dictionary& dict = foamTools::subDict(dict_, "mesh");
     const word type(dict.get<word>("type"));
     if (type == "box" || type == "rectangle")
     {
@@ -45,6 +51,14 @@ solid::Mesh Foam::solidInput::mesh() const
     {
         foamTools::checkKeywords(dict, {"type", "file", "scale"});
     }
+    // The elements checked here, where a failure names this dictionary
+    // (solid::Model checks them again and threw past the solvers, adv32
+    // f15: std::terminate)
+    const auto checked = [](solid::Mesh mesh)
+    {
+        mesh.check();
+        return mesh;
+    };
     try
     {
         if (type == "box")
@@ -52,11 +66,14 @@ solid::Mesh Foam::solidInput::mesh() const
             const labelVector n(dict.get<labelVector>("cells"));
             const vector lo(dict.get<vector>("min"));
             const vector hi(dict.get<vector>("max"));
-            return solid::Mesh::box
+            return checked
             (
-                n.x(), n.y(), n.z(),
-                solid::Vec3(lo.x(), lo.y(), lo.z()),
-                solid::Vec3(hi.x(), hi.y(), hi.z())
+                solid::Mesh::box
+                (
+                    n.x(), n.y(), n.z(),
+                    solid::Vec3(lo.x(), lo.y(), lo.z()),
+                    solid::Vec3(hi.x(), hi.y(), hi.z())
+                )
             );
         }
         if (type == "rectangle")
@@ -64,9 +81,12 @@ solid::Mesh Foam::solidInput::mesh() const
             const Vector2D<label> n(dict.get<Vector2D<label>>("cells"));
             const vector2D lo(dict.get<vector2D>("min"));
             const vector2D hi(dict.get<vector2D>("max"));
-            return solid::Mesh::rectangle
+            return checked
             (
-                n.x(), n.y(), lo.x(), hi.x(), lo.y(), hi.y()
+                solid::Mesh::rectangle
+                (
+                    n.x(), n.y(), lo.x(), hi.x(), lo.y(), hi.y()
+                )
             );
         }
         if (type == "gmsh")
@@ -85,7 +105,7 @@ solid::Mesh Foam::solidInput::mesh() const
                 dict, "scale", "", 0, foamTools::noUpperBound<scalar>(),
                 false, 1
             );
-            solid::Mesh mesh(solid::readGmsh(file, scale));
+            solid::Mesh mesh(checked(solid::readGmsh(file, scale)));
             // A cell: its size in metres after scaling lies in cellMesh's
             // range of cellDiameter, (1e-7, 1e-3] m (a mesh in micrometres
             // or scaled by 1e6 failed later in the solver, naming no
@@ -130,7 +150,7 @@ std::vector<solid::MaterialParameters> Foam::solidInput::materials
     const solid::Mesh& mesh
 ) const
 {
-    const dictionary& mats = dict_.subDict("materials");
+    const dictionary& mats = foamTools::subDict(dict_, "materials");
     const wordList regions(mesh.regionNames.begin(), mesh.regionNames.end());
 
     // The paper's parameter sets are data files now: a case of an earlier
@@ -173,7 +193,7 @@ std::vector<solid::MaterialParameters> Foam::solidInput::materials
         }
         if (unnamed.size() && named.size())
         {
-            const dictionary& meshDict = dict_.subDict("mesh");
+            const dictionary& meshDict = foamTools::subDict(dict_, "mesh");
             FatalIOErrorInFunction(mats)
                 << "the solid mesh";
             if (meshDict.found("file"))
@@ -208,7 +228,7 @@ std::vector<solid::MaterialParameters> Foam::solidInput::materials
                 << "#include \"$PROJECT_DIR/etc/caseDicts/cellMaterials/"
                 << "<set>\")" << exit(FatalIOError);
         }
-        const dictionary& d = mats.subDict(region);
+        const dictionary& d = foamTools::subDict(mats, region);
         // The entries themselves: solid::MaterialParameters::fromEntries
         foamTools::checkDuplicates(d);
         solid::MaterialParameters p;
@@ -295,7 +315,7 @@ Foam::foamTools::inputRecord::digestMap Foam::solidInput::digests
     using foamTools::inputRecord;
     const std::string file("constant/solidProperties, entry ");
     inputRecord::digestMap record;
-    const dictionary& meshDict = dict_.subDict("mesh");
+    const dictionary& meshDict = foamTools::subDict(dict_, "mesh");
     record[file + "'mesh'"] = inputRecord::digest(meshDict);
     if (meshDict.get<word>("type") == "gmsh")
     {
@@ -307,11 +327,11 @@ Foam::foamTools::inputRecord::digestMap Foam::solidInput::digests
     dictionary fixed;
     fixed.add(dict_.lookupEntry("fixed", keyType::LITERAL));
     record[file + "'fixed'"] = inputRecord::digest(fixed);
-    const dictionary& mats = dict_.subDict("materials");
+    const dictionary& mats = foamTools::subDict(dict_, "materials");
     for (const std::string& region : mesh.regionNames)
     {
         record[file + "'materials', region '" + region + "'"] =
-            inputRecord::digest(mats.subDict(region));
+            inputRecord::digest(foamTools::subDict(mats, region));
     }
     return record;
 }

@@ -168,7 +168,10 @@ do
         failures=$((failures + 1)); continue
     fi
     cp -r "$bases/$base" "$c"
-    if ! (cd "$c" && eval "$edit") > "$work/edit.log" 2>&1
+    # stdin from /dev/null: the rows are read from the loop's stdin, and a
+    # program that reads it (mpirun forwards it to rank 0) took the rows
+    # after it, which then never ran
+    if ! (cd "$c" && eval "$edit") < /dev/null > "$work/edit.log" 2>&1
     then
         echo "FAIL $name: the edit failed: $(head -3 "$work/edit.log")"
         failures=$((failures + 1)); continue
@@ -176,7 +179,7 @@ do
     (cd "$c" && find . -type f ! -name 'log*' -print0 | sort -z \
         | xargs -0 md5sum) > "$work/before"
     start=$(date +%s.%N)
-    (cd "$c" && eval "timeout -k 5 120 $app") > "$work/out" 2>&1
+    (cd "$c" && eval "timeout -k 5 120 $app") < /dev/null > "$work/out" 2>&1
     code=$?
     secs=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN{printf "%.1f", b-a}')
     # the message: from the first error line on (the banner echoes the

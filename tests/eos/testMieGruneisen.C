@@ -8,6 +8,8 @@ Description
 
 #include "MieGruneisen.H"
 #include <gtest/gtest.h>
+
+#include <sstream>
 #include <cmath>
 #include <string>
 
@@ -136,8 +138,26 @@ TEST(mieGruneisen, parameterErrorsNameTheParameter)
     expectError(with(&P::s, -1), "s");
     expectError(with(&P::Gamma0, 0), "Gamma0");
     expectError(with(&P::Gamma0, -0.1), "Gamma0");
-    // Gamma0 >= 2 s: the cold curve is not monotone, rho(p, e) not unique
-    expectError(with(&P::Gamma0, 4.0), "Gamma0");
+    // Gamma0 >= 2 s: the cold curve is not monotone, rho(p, e) not unique;
+    // both parameters named, with the bound of each (adv32 s15: s = 1e-12
+    // was reported as Gamma0 outside (0, 2e-12) without naming s)
+    for (const P& par : {with(&P::Gamma0, 4.0), with(&P::s, 1e-12)})
+    {
+        try
+        {
+            eos::MieGruneisen law(par);
+            ADD_FAILURE() << "no ParameterError for Gamma0 >= 2 s";
+        }
+        catch (const eos::ParameterError& err)
+        {
+            const std::string msg(err.what());
+            std::ostringstream both;
+            both << "parameters Gamma0 = " << par.Gamma0 << " - and s = "
+                 << par.s << " -: Gamma0 must be below 2 s = " << 2*par.s;
+            EXPECT_NE(msg.find(both.str()), std::string::npos) << msg;
+            EXPECT_NE(msg.find("that of s is ("), std::string::npos) << msg;
+        }
+    }
     expectError(with(&P::Cv, 0), "Cv");
     expectError(with(&P::T0, -1), "T0");
     expectError(with(&P::C0, NAN), "C0");

@@ -242,7 +242,19 @@ TEST(indentationInput, badEntries)
         {"protocol ((A load -1e-6 1e-6));",
             {"entry 'protocol'", "row 1", "'rate' = -1e-06 m/s"}},
         {"protocol ((A load 1e-6 1e-6) (B unload 1e-6 2e-6));",
-            {"entry 'protocol'", "row 2", "unloads to depth"}}
+            {"entry 'protocol'", "row 2", "unloads to depth"}},
+        // a step longer than every row of its kind: each row one step
+        // (issue 19, fix19i)
+        {"maxDepthIncrement 3e-6;", {"entry 'maxDepthIncrement' = 3",
+            " m is longer than the longest load or unload row of entry "
+            "'protocol' (1.99", "valid range (0, 1.99"}},
+        {"protocol ((A load 1e-6 1e-6) (B hold 0 0.001));",
+            {"entry 'holdDeltaT0' = 0.01 s is longer than the longest hold"
+            " row", "(0, 0.001] s"}},
+        {"maxFactorMemory 0;", {"'maxFactorMemory' = 0 B is outside the "
+            "valid range (0, "}},
+        {"maxFactorFlops 1e19;", {"'maxFactorFlops' = ", " flop is outside "
+            "the valid range (0, "}}
     };
     for (const auto& c : cases)
     {
@@ -345,6 +357,38 @@ TEST(indentationInput, unknownContactSet)
     const std::string msg = ioError([&]() { in.addContact(*model); });
     EXPECT_NE(msg.find("entry 'contactPatch'"), std::string::npos) << msg;
     EXPECT_NE(msg.find("outerSurfaces"), std::string::npos) << msg;
+}
+
+
+TEST(indentationInput, factorisationAboveItsLimits)
+{
+    // The block's Newton matrix needs about 1e5 flop and 1e4 B (issue 19
+    // sp08: a 3D mesh sat for many minutes in its first factorisation)
+    for
+    (
+        const auto& c
+      : std::vector<std::pair<std::string, std::string>>
+        {
+            {"maxFactorFlops 100;", "more than entry 'maxFactorFlops' = 100"
+             " flop"},
+            {"maxFactorMemory 100;", "more than entry 'maxFactorMemory' = 100"
+             " B"}
+        }
+    )
+    {
+        foamUnit::testCase tc("indentationInput");
+        const dictionary ip(indenterProperties(tc, c.first));
+        const indentationInput in(ip, controlDict(tc));
+        std::unique_ptr<solid::Model> model = block();
+        fileName file;
+        const std::string msg =
+            ioError([&]() { in.addContact(*model); }, &file);
+        EXPECT_NE(msg.find(c.second), std::string::npos) << msg;
+        EXPECT_NE(msg.find("the cell mesh (24 elements, 35 nodes"),
+            std::string::npos) << msg;
+        EXPECT_NE(msg.find("valid range (0, "), std::string::npos) << msg;
+        EXPECT_NE(file.find("indenterProperties"), std::string::npos) << file;
+    }
 }
 
 

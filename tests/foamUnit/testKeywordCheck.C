@@ -243,8 +243,8 @@ TEST(keywordCheck, numbersBeyondDouble)
     tc.writeFile
     (
         "constant/good",
-        "/* 1e999 */ a 1e308; b \"1e999\"; c (1 -1.7e308); d 1e-999;\n"
-        "e [0 1 -1 0 0 0 0] 1450; f inf; g 0x1p3;\n"
+        "/* 1e999 */ a 1e300; b \"1e999\"; c (1 -1e300); d 0e-999;\n"
+        "e [0 1 -1 0 0 0 0] 1450; f inf; g 0x1p3; h 2e-300; i -0.0e-400;\n"
     );
     tc.writeFile
     (
@@ -264,8 +264,9 @@ TEST(keywordCheck, numbersBeyondDouble)
     (
         const std::string part
       : {
-            "entry 'mu1' = -1e400 is beyond the range of a number (a double"
-            " holds |x| <= 1.797", "constant/set"
+            "entry 'mu1' = -1e400 is beyond the range of a number (OpenFOAM"
+            " reads |x| <= 1e+300; a double holds |x| <= 1.797",
+            "constant/set"
         }
     )
     {
@@ -279,6 +280,32 @@ TEST(keywordCheck, numbersBeyondDouble)
     );
     EXPECT_NE(top.find("entry 'radius' = 1e999"), std::string::npos) << top;
     EXPECT_NE(top.find("constant/solidProperties"), std::string::npos) << top;
+
+    // OpenFOAM's reader: above 1e300 an error ("ill defined
+    // primitiveEntry", adv30 sp18, fr36), a non-zero magnitude up to 1e-300
+    // read as 0 without a word (issue 19, fix19i)
+    for
+    (
+        const auto& c
+      : std::vector<std::pair<std::string, std::string>>
+        {
+            {"a 1e308;", "entry 'a' = 1e308 is beyond the range of a number"},
+            {"b (1 -1.7e308);", "entry 'b' = -1.7e308 is beyond the range"},
+            {"c 1e-320;", "entry 'c' = 1e-320 is below the smallest "
+             "magnitude OpenFOAM reads (1e-300): it would be read as 0"},
+            {"d 1e-300;", "entry 'd' = 1e-300 is below the smallest"},
+            {"e 1e-999;", "entry 'e' = 1e-999 is below the smallest"}
+        }
+    )
+    {
+        tc.writeFile("constant/reader", c.first + "\n");
+        const std::string msg = errorOf
+        (
+            [&]{ foamTools::checkNumbers(tc.dir()/"constant/reader"); }
+        );
+        EXPECT_NE(msg.find(c.second), std::string::npos)
+            << c.first << ": " << msg;
+    }
 }
 
 

@@ -434,7 +434,9 @@ TEST(rhoEThermo, badCoefficientsNameTheEntry)
     const std::vector<badCase> cases
     {
         {"mieGruneisen", "C0", "-1450", {"C0", "outside the valid range"}},
-        {"mieGruneisen", "Gamma0", "5", {"Gamma0", "outside the valid range"}},
+        {"mieGruneisen", "Gamma0", "5", {"Gamma0", "must be below 2 s"}},
+        // a second token after the value (adv32 s02: 1450 was taken)
+        {"mieGruneisen", "C0", "1450 1500", {"C0", "token(s) after its value"}},
         {"mieGruneisen", "C0", "[0 2 -1 0 0 0 0] 1450", {"C0 has dimensions"}},
         {"stiffenedGas", "pInf", "[1 -1 -2 0 0 0 0] -1e9", {"pInf"}},
         {"idealGas", "gamma", "1", {"gamma", "outside the valid range"}},

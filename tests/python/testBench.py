@@ -6,8 +6,9 @@ import io
 import math
 import os
 import subprocess
+import sys
 import unittest
-from contextlib import redirect_stdout
+from contextlib import redirect_stderr, redirect_stdout
 
 from fixtures import TempDirTestCase
 from neuronFsi import bench, logs
@@ -39,6 +40,52 @@ class Bench(TempDirTestCase):
         args = ap.parse_args(["--quick", "--doc", "/d/y.md"])
         self.assertEqual(bench.reportPath(args.doc, args.quick, args.out,
                                           "/r", "x.md"), "/d/y.md")
+
+    def parseError(self, ap, argv):
+        err = io.StringIO()
+        with redirect_stderr(err), self.assertRaises(SystemExit) as cm:
+            bench.parse(ap, argv)
+        self.assertEqual(cm.exception.code, 2)
+        return err.getvalue()
+
+    def testParseChecksTheOptions(self):
+        # a bad option of a benchmark was a traceback after minutes of
+        # runs, or unnoticed (issue 19, bk06, bk07)
+        ap = bench.arguments("B.", os.path.join(self.tmp, "o"))
+        ap.add_argument("--factors", default=None)
+        ap.add_argument("--sizes", default="40 60")
+        ap.add_argument("--endTime", type=float, default=None)
+        ap.add_argument("--near", type=float, default=0)
+        a = bench.parse(ap, ["--factors", "1.4 1", "--near", "0"])
+        self.assertEqual((a.factors, a.near), ("1.4 1", 0))
+        file = os.path.join(self.tmp, "f")
+        with open(file, "w") as f:
+            f.write("x\n")
+        for argv, msg in (
+                (["--factors", "1 abc"], "--factors '1 abc': 'abc' is not a "
+                 "positive number"),
+                (["--sizes", "40 2.5"], "'2.5' is not a positive whole"),
+                (["--endTime", "nan"], "--endTime nan: not a finite number "
+                 "in the valid range (0, inf)"),
+                (["--endTime", "-1"], "valid range (0, inf)"),
+                (["--near", "-1"], "--near -1.0: not a finite number in the "
+                 "valid range [0, inf)"),
+                (["--out", os.path.join(file, "o")], "is a file, not a "
+                 "folder"),
+                (["--doc", self.tmp], "a folder; the option names a report"),
+                (["--quick", "--quick"], "option --quick is given 2 times"),
+                (["--endTime", "5e-324"], "below the smallest magnitude")):
+            self.assertIn(msg, self.parseError(ap, argv), argv)
+
+    def testMainNamesTheProjectsErrors(self):
+        r = subprocess.run(
+            [sys.executable, "-c", "from neuronFsi import bench, logs\n"
+             "def m():\n    raise logs.LogError('/x/log.checkMesh: gone')\n"
+             "bench.main(m)"], capture_output=True, text=True,
+            env=dict(os.environ))
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("error: /x/log.checkMesh: gone", r.stderr)
+        self.assertNotIn("Traceback", r.stderr)
 
     def testFoamEnvSourcesTheBashrc(self):
         self.write("etc/bashrc", "export NEURONFSI_TEST='a=b c'\n"

@@ -64,6 +64,41 @@ class Sectors(unittest.TestCase):
             decomposition.sectors(np.zeros((0, 3)), 2)
 
 
+class SectorDecomposition(TempDirTestCase):
+
+    def writeCentres(self, n):
+        os.makedirs(os.path.join(self.tmp, "0"), exist_ok=True)
+        t = np.linspace(0.1, 1.4, n)
+        with open(os.path.join(self.tmp, "0", "C"), "w") as f:
+            f.write("FoamFile { version 2.0; format ascii; class "
+                    "volVectorField; object C; }\ndimensions [0 1 0 0 0 0 "
+                    "0];\ninternalField nonuniform List<vector> %d\n(\n%s)"
+                    ";\nboundaryField { }\n" % (n, "".join(
+                        "(%g %g 0)\n" % (np.cos(a), np.sin(a)) for a in t)))
+
+    def testAtLeastAHundredCellsPerRank(self):
+        # adv pass q34: -np 4096 was accepted for any mesh
+        os.makedirs(os.path.join(self.tmp, "constant"))
+        self.writeCentres(250)
+        self.assertEqual(list(decomposition.sectorDecomposition(self.tmp,
+                                                                2)),
+                         [125, 125])
+        with self.assertRaisesRegex(decomposition.DecompositionError,
+                                    r"3 ranks for 250 cells: fewer than 100 "
+                                    r"cells per rank \(valid range \[1, 2\] "
+                                    r"ranks for this mesh\)"):
+            decomposition.sectorDecomposition(self.tmp, 3)
+
+    def testNoCentres(self):
+        # adv pass q46: the quarter's Allrun re-run over a decomposed case
+        # (0/C removed, its step skipped): a traceback
+        with self.assertRaisesRegex(decomposition.DecompositionError,
+                                    r"the cell centres .*0/C cannot be read "
+                                    r"\(No such file or directory\): write "
+                                    r"them with postProcess"):
+            decomposition.sectorDecomposition(self.tmp, 2)
+
+
 class WriteManual(TempDirTestCase):
 
     def testLabelList(self):

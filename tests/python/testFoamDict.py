@@ -112,10 +112,27 @@ class FoamDict(TempDirTestCase):
 
     def testNumberBeyondDoubleRange(self):
         with self.assertRaisesRegex(foamDict.DictError,
-                                    "x, line 2: '1e999' is beyond the range"):
+                                    "x, line 2: entry 'C10' = 1e999 is "
+                                    "beyond the range"):
             foamDict.parse("a 1;\nC10 1e999;", "x")
-        with self.assertRaisesRegex(foamDict.DictError, "'-1e400'"):
+        with self.assertRaisesRegex(foamDict.DictError, "= -1e400"):
             foamDict.parse("t (1 -1e400);", "x")
+
+    def testNumbersOutsideOpenFoamsReader(self):
+        # OpenFOAM's reader: |x| > 1e300 an error, a non-zero |x| <= 1e-300
+        # read as 0 without a word (issue 19, ps04, pu04, k33, k34: 5e-324
+        # gave ZeroDivisionError, 1e308 an overflow, in the scripts)
+        for text, what in (("b { c 1e308; }", "entry 'b/c' = 1e308 is "
+                            "beyond the range of a number \\(OpenFOAM reads"),
+                           ("a 5e-324;", "entry 'a' = 5e-324 is below the "
+                            "smallest magnitude OpenFOAM reads \\(1e-300\\):"
+                            " it would be read as 0"),
+                           ("a (1 -1e-400);", "entry 'a' = -1e-400 is below"),
+                           ("a 1e-300;", "entry 'a' = 1e-300 is below")):
+            with self.assertRaisesRegex(foamDict.DictError, what):
+                foamDict.parse(text, "x")
+        self.assertEqual(foamDict.parse("a 1e300; b 2e-300; c 0e-400;"),
+                         {"a": 1e300, "b": 2e-300, "c": 0.0})
         # nan and inf are words, as OpenFOAM reads them
         self.assertEqual(foamDict.parse("a nan; b inf;"),
                          {"a": "nan", "b": "inf"})

@@ -61,6 +61,77 @@ class NegativeValues(unittest.TestCase):
         self.assertIn("-dz -2.5e-08 m: must be positive and finite", r.stderr)
 
 
+class RepeatedOptions(unittest.TestCase):
+    """An option given twice is a usage error naming it (argparse took the
+    last silently: issue 19, pw42, op01, op02, pa20, op04)."""
+
+    def refused(self, argv):
+        r = subprocess.run([sys.executable, "-c",
+                            "import argparse, sys; from neuronFsi import "
+                            "options;"
+                            "p = argparse.ArgumentParser(prog='t');"
+                            "p.add_argument('-dz', type=float);"
+                            "p.add_argument('-check', action='store_true');"
+                            "p.add_argument('-output', action='append');"
+                            "options.parse(p, sys.argv[1:])"] + argv,
+                           capture_output=True, text=True,
+                           env=dict(os.environ))
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertNotIn("Traceback", r.stderr)
+        return r.stderr
+
+    def testValueTwice(self):
+        err = self.refused(["-dz", "1", "-dz", "-2e-9"])
+        self.assertIn("option -dz is given 2 times (values '1', '-2e-9'): "
+                      "give it once", err)
+        self.assertIn("option -dz is given 2 times",
+                      self.refused(["-dz=1", "-check", "-dz", "2"]))
+
+    def testSwitchTwice(self):
+        self.assertIn("option -check is given 2 times",
+                      self.refused(["-check", "-check"]))
+
+    def testAppendedOptionsAndOnceAreValid(self):
+        a = options.parse(parser(), ["-dz", "1", "-check", "-values", "dz"])
+        self.assertEqual((a.dz, a.values), (1.0, "dz"))
+        p = argparse.ArgumentParser(prog="t")
+        p.add_argument("-output", action="append")
+        self.assertEqual(options.parse(p, ["-output", "a", "-output", "b"])
+                         .output, ["a", "b"])
+        self.assertEqual(options.repeatedOptions(parser(), ["-dz", "1"]), [])
+
+
+class NumbersOutsideTheReader(unittest.TestCase):
+    """An option's number outside what OpenFOAM's reader takes (5e-324,
+    1e308) is a usage error naming the option (issue 19, pv02: planeWave
+    -dz 5e-324 was an OverflowError traceback), as checkOptions does for
+    the C++ applications."""
+
+    def testNamed(self):
+        self.assertEqual(options.numbersOutsideReader(
+            parser(), ["-dz", "5e-324", "-values", "1 2e308"]),
+            [("-dz", "5e-324", "is below the smallest magnitude OpenFOAM "
+              "reads (1e-300): it would be read as 0"),
+             ("-values", "1 2e308", "is beyond the range of a number "
+              "(OpenFOAM reads |x| <= 1e+300; a double holds |x| <= "
+              "1.79769e+308)")])
+        self.assertEqual(options.numbersOutsideReader(
+            parser(), ["-dz=-1e-300", "-check", "1e-320"]),
+            [("-dz", "-1e-300", "is below the smallest magnitude OpenFOAM "
+              "reads (1e-300): it would be read as 0")])
+        self.assertEqual(options.numbersOutsideReader(
+            parser(), ["-dz", "2e-300", "-values", "0 1e300 abc"]), [])
+
+    def testPlaneWaveDzDenormal(self):
+        r = subprocess.run([sys.executable, os.path.join(
+            ROOT, "applications/utilities/planeWave/planeWave.py"),
+            "-dz", "5e-324"], capture_output=True, text=True,
+            env=dict(os.environ, PYTHONPATH=os.path.join(ROOT, "src/python")))
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertIn("option -dz '5e-324': is below the smallest magnitude",
+                      r.stderr)
+
+
 class FileKind(unittest.TestCase):
     """options.notARegularFile: what a path is, looked at without opening
     it (a FIFO given as a file blocked the open: issue 19, adv28 m16, ir06);

@@ -211,7 +211,9 @@ class Command(TempDirTestCase):
         for rel, kind in TUTORIALS.items():
             d = os.path.join(self.project, rel)
             write(os.path.join(d, "Allrun"), ALLRUN[kind])
-            write(os.path.join(d, "system", "controlDict"), "// %s\n" % rel)
+            write(os.path.join(d, "system", "controlDict"), "// %s\n%s"
+                  % (rel, "endTime 1e-7;\n" if kind != "indentation"
+                     else ""))
             if kind != "indentation":
                 write(os.path.join(d, "constant",
                                    "thermophysicalProperties"), thermo)
@@ -425,13 +427,16 @@ class Command(TempDirTestCase):
     def testFailureLeavesTheOutput(self):
         out = os.path.join(self.tmp, "out")
         write(os.path.join(out, "README.md"), "earlier\n")
-        probes = os.path.join(self.results, "blast", "quarter3D",
-                              "postProcessing", "solidProbes", "0",
-                              "solidProbes.dat")
-        write(probes, read(probes).replace("\n0 ", "\nzero ", 1))
+        # a file the figures read that decides nothing of whether the run
+        # is current (paperCases.why reads the probes since fix19i)
+        reference = os.path.join(self.results, "blast",
+                                 "axisymmetricPreview", "postProcessing",
+                                 "planeWave", "0", "reference.dat")
+        write(reference, read(reference).replace("\n0 ", "\nzero ", 1))
         r = self.paperFigures("-output", out)
         self.assertNotEqual(r.returncode, 0)
-        self.assertIn("solidProbes.dat: not a number", r.stderr)
+        self.assertIn("reference.dat", r.stderr)
+        self.assertNotIn("Traceback", r.stderr)
         self.assertEqual(os.listdir(self.tmp).count("out"), 1)
         self.assertEqual(os.listdir(out), ["README.md"])
         self.assertEqual(read(os.path.join(out, "README.md")), "earlier\n")
@@ -447,6 +452,48 @@ class Command(TempDirTestCase):
                                               "-far": "5e-6"}}))
         self.assertIn("-far 5e-6 then, 1e-05 now",
                       paperCases.why(run, folder))
+
+    def testRunOfAnotherPulseOrCut(self):
+        # a 15 ns run under the name blast10ns (adv pass pa19), in the
+        # dictionary and in the results; a cut probe file (pa09); the
+        # comparison's run folder a link or a file (pa25, pa26)
+        path = os.path.join(self.case, "system", "paperDict")
+        good = read(path)
+        write(path, good.replace("options (-pulse 10e-9);",
+                                 "options (-pulse 15e-9);"))
+        r = self.paperFigures()
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertIn("entry 'cases/blast10ns/options': -pulse 1.5e-08 s is "
+                      "not the pulse of blast10ns, 1e-08 s", r.stderr)
+        write(path, good)
+        cases = paperCases.read(self.case, self.project)["cases"]
+        d10 = os.path.join(self.case, "postProcessing", "runs", "blast10ns")
+        self.assertIsNone(paperCases.why(cases["blast10ns"], d10))
+        write(os.path.join(d10, "0", "p"), pulseFile(15e-9))
+        self.assertIn("its pulse lasts 1.5e-08 s (0/p), not the 1e-08 s of "
+                      "blast10ns", paperCases.why(cases["blast10ns"], d10))
+        probes = os.path.join(self.results, "blast", "axisymmetricPreview",
+                              "postProcessing", "solidProbes", "0",
+                              "solidProbes.dat")
+        lines = read(probes).splitlines(True)
+        write(probes, "".join(lines[:120]))
+        self.assertIn("postProcessing/solidProbes/0/solidProbes.dat ends at "
+                      "5.8e-08 s, before the run's "
+                      "endTime 1e-07 s (system/controlDict): a cut or "
+                      "truncated file", paperCases.why(
+                          cases["blast5ns"], os.path.join(
+                              self.results, "blast", "axisymmetricPreview")))
+        shutil.rmtree(d10)
+        os.symlink(self.results, d10)
+        with self.assertRaisesRegex(paperCases.PaperError,
+                                    "is a symbolic link .*move it away"):
+            paperCases.make(cases["blast10ns"], self.case)
+        self.assertTrue(os.path.isdir(self.results))
+        os.remove(d10)
+        write(d10, "a file\n")
+        with self.assertRaisesRegex(paperCases.PaperError,
+                                    "blast10ns is a file, not a folder"):
+            paperCases.make(cases["blast10ns"], self.case)
 
     def testBadDictionary(self):
         path = os.path.join(self.case, "system", "paperDict")

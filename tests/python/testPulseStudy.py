@@ -14,6 +14,7 @@ allrunOptions .allrunOptions "$@" <<'OPTIONS'
 -amplitude  amplitude  number(0,1e9]        Pa
 -h        h         number(0,inf)           m
 -writeInterval  writeInterval  number(0,inf)  s
+-endTime  endTime   number(0,inf)           s
 -noPlots  plots     flag=no                 -  noRecord
 -noVTK    vtk       flag=no                 -  noRecord
 %results log.x
@@ -41,6 +42,9 @@ class Dictionary(TempDirTestCase):
         super().setUp()
         self.case = os.path.join(self.tmp, "study")
         self.write("study/base/Allrun", ALLRUN)
+        self.write("study/base/system/controlDict", "endTime 1.5e-7;\n")
+        self.write("study/base/constant/thermophysicalProperties", "")
+        self.write("study/base/0.orig/p", "")
 
     def study(self, **changes):
         entries = dict(GOOD)
@@ -100,6 +104,21 @@ class Dictionary(TempDirTestCase):
                      thresholds='{ p { indicator pressure; value 1e6 [MPa];'
                                 ' source "someone 2000, a journal"; } }')
 
+    def testThresholdOutsideItsIndicator(self):
+        # a value reached from the start or never (adv pass st36, st42)
+        self.refused(r"thresholds/axon: value -0.21 \[-\] is outside the "
+                     r"valid range \(0, 10\] \[-\] of indicator strain",
+                     thresholds='{ axon { indicator strain; value -0.21 [-];'
+                                ' source "Bain and Meaney 2000, J"; } }')
+        self.refused(r"thresholds/p: value 0 \[Pa\] is outside the valid "
+                     r"range \[-1e13, 1e13\] \[Pa\] of indicator pressure "
+                     r"\(not 0\)",
+                     thresholds='{ p { indicator pressure; value 0 [Pa];'
+                                ' source "someone 2000, a journal"; } }')
+        self.refused(r"value 1e\+06 \[K\] is outside the valid range",
+                     thresholds='{ t { indicator temperatureRise; value 1e6 '
+                                '[K]; source "someone 2000, a journal"; } }')
+
     def testThresholdWithoutSource(self):
         self.refused(r"thresholds/axon: no entry 'source' \(no threshold "
                      "without its citation",
@@ -133,6 +152,35 @@ class Dictionary(TempDirTestCase):
     def testBadBaseOption(self):
         self.refused(r"entry 'baseOptions': unknown option '-hh'",
                      baseOptions="(-hh 1)")
+
+    def testSamplesBoundedByTheRun(self):
+        # a point's writes at most the solvers' maxWrites (adv pass ps09:
+        # sampleInterval 1e-15 s wrote without end); tiny or huge numbers
+        # named, not a ZeroDivisionError or OverflowError (ps04, pu04)
+        self.refused(r"entry 'sampleInterval' = 1e-15 s is outside the "
+                     r"valid range \[1.5e-11, 1.5e-07\] s: a point's run to "
+                     r"endTime 1.5e-07 s would write 1.5e\+08 times",
+                     sampleInterval="1e-15")
+        self.refused(r"entry 'sampleInterval' = 5e-324 is below the "
+                     r"smallest magnitude OpenFOAM reads",
+                     sampleInterval="5e-324")
+        self.refused(r"entry 'strainRateWindow' = 1e\+300 s is outside the "
+                     r"valid range \[5e-10, 1.5e-07\] s",
+                     strainRateWindow="1e300")
+        self.refused(r"entry 'sampleInterval' = 1e-06 s is outside",
+                     sampleInterval="1e-6")
+        self.refused(r"entry 'sampleInterval' = 2e-08 s is outside the valid"
+                     r" range \[1e-12, 1e-08\] s",
+                     baseOptions="(-endTime 1e-8)", sampleInterval="2e-8",
+                     strainRateWindow="2e-8")
+
+    def testBaseWithoutInitialFields(self):
+        # adv pass ps30: every point's Allrun failed
+        os.remove(os.path.join(self.case, "base", "0.orig", "p"))
+        os.rmdir(os.path.join(self.case, "base", "0.orig"))
+        self.refused(r"entry 'baseCase': .*base has no folder 0.orig \(the "
+                     r"initial fields its Allrun copies to 0\): not a blast "
+                     r"case")
 
     def testWindow(self):
         self.refused(r"entry 'strainRateWindow' = 7.5e-10 s is not a whole"

@@ -56,6 +56,9 @@ class Study(TempDirTestCase):
         self.case = os.path.join(self.tmp, "study")
         self.write("study/base/Allrun", ALLRUN)
         self.write("study/base/constant/solidProperties", SOLID)
+        # a blast case's folders and run length (pulseStudy.read)
+        self.write("study/base/system/controlDict", "endTime 1.5e-7;\n")
+        self.write("study/base/0.orig/p", "")
 
     def study(self, *replace, text=None):
         u = UNCERTAINTY if text is None else text

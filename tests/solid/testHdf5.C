@@ -2,9 +2,15 @@
 // back exactly with their shape, nested names, attributes, members and
 // datasets listed, removal, and failures that name the file and object;
 // damaged bytes in a dataset or an attribute are errors, not values; text
-// attributes (a checkpoint's input record) read back and are checksummed.
+// attributes (a checkpoint's input record) read back and are checksummed;
+// a write or close that fails (a full disk) is an error and the process
+// then exits without a crash.
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include "Hdf5File.H"
 #include "SolidError.H"
 
@@ -314,4 +320,37 @@ TEST(Hdf5, TextAttributesReadBackAndDamagedTextIsAnError)
         f.texts();
     });
     EXPECT_NE(msg.find("texts.h5"), std::string::npos) << msg;
+}
+
+
+// A file whose write fails at its close (a full disk: here the file size
+// limit, which holds for root too) is a SolidError naming the file, and
+// the process then ends normally. HDF5's clean-up at exit closed the failed
+// file a second time and crashed (adv32 d02, d04: sigSegv in H5F__close_cb
+// after "cannot close", exit 139)
+//- Write a file beyond the file size limit, print the error, exit 3
+void writePastTheLimit()
+{
+    std::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{4096, 4096};
+    setrlimit(RLIMIT_FSIZE, &limit);
+    const std::string msg = errorOf([] {
+        Hdf5File f("full.h5", Hdf5File::Mode::create);
+        const std::vector<double> x(10000, 1.5);
+        f.write("x", x.data(), x.size());
+        f.close();
+    });
+    std::fprintf(stderr, "error: %s\n", msg.c_str());
+    std::exit(msg.empty() ? 2 : 3);
+}
+
+TEST(Hdf5DeathTest, FailedCloseIsAnErrorAndExitDoesNotCrash)
+{
+    ::testing::FLAGS_gtest_death_test_style = "threadsafe";
+    EXPECT_EXIT
+    (
+        writePastTheLimit(),
+        ::testing::ExitedWithCode(3),
+        "error: HDF5 file 'full.h5': cannot (write|close)"
+    );
 }

@@ -65,10 +65,13 @@ int main(int argc, char *argv[])
     // controlDict: OpenFOAM's keywords and ours, each given once
     foamTools::checkControlDict
     (
-        args, {"adjustTimeStep", "maxCo", "maxDeltaT", "maxSteps"}
+        args,
+        {"adjustTimeStep", "maxCo", "maxDeltaT", "maxSteps", "maxWrites"}
     );
     foamTools::writeGuard::discardIncompleteTimes(args);
     #include "createTime.H"
+    // The start time's name and the time its state was written at
+    foamTools::checkTimeName(runTime);
     // The boundary conditions' tables (a pulse): not empty, times
     // increasing, or an error naming file and patch
     foamTools::checkTables(runTime.timePath());
@@ -103,6 +106,24 @@ int main(int argc, char *argv[])
     dynamicFvMesh& mesh = meshPtr();
 
     #include "createFields.H"
+    // The viscous stress's step limit (a property of the start state and
+    // the mesh, unlike the waves' Courant limit): mu 1e6 Pa s gave steps
+    // of 7.8e-18 s, 1e10 steps to endTime, run without end (adv32 f30)
+    {
+        const dictionary& cd = runTime.controlDict();
+        const scalar maxDeltaT = cd.getOrDefault<scalar>("maxDeltaT", GREAT);
+        const scalar dtViscous =
+            fluid.viscousDeltaT(cd.getOrDefault<scalar>("maxCo", 1.0));
+        if (cd.getOrDefault<bool>("adjustTimeStep", false)
+         && dtViscous < maxDeltaT)
+        {
+            OStringStream how;
+            how << "the viscous limit of maxCo with entry 'mu' = "
+                << fluid.mu().value() << " Pa s of system/fvSolution "
+                << "riemann, below maxDeltaT = " << maxDeltaT << " s";
+            foamTools::checkStepCount(runTime, dtViscous, how.str());
+        }
+    }
     // Probes and other function objects: types, keywords, fields
     foamTools::checkFunctionObjects(runTime, mesh);
     // A new start stops here, before the coupling writes, if it would

@@ -67,10 +67,13 @@ int main(int argc, char *argv[])
     // controlDict: OpenFOAM's keywords and ours, each given once
     foamTools::checkControlDict
     (
-        args, {"adjustTimeStep", "maxCo", "maxDeltaT", "maxSteps"}
+        args,
+        {"adjustTimeStep", "maxCo", "maxDeltaT", "maxSteps", "maxWrites"}
     );
     foamTools::writeGuard::discardIncompleteTimes(args);
     #include "createTime.H"
+    // The start time's name and the time its state was written at
+    foamTools::checkTimeName(runTime);
     // The boundary conditions' tables (a pulse): not empty, times
     // increasing, or an error naming file and patch
     foamTools::checkTables(runTime.timePath());

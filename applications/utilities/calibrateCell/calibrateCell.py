@@ -89,6 +89,11 @@ class InputError(Exception):
     pass
 
 
+# the largest span of a parameter's bounds in its fitted variable: ln(max/
+# min) of a log parameter (1e30: 69), (max - min)/|value| of a linear one
+MAX_SPAN = {True: math.log(1e30), False: 1e6}
+
+
 def unit(name):
     if name == "delta0":
         return "m"
@@ -151,6 +156,19 @@ class Parameter:
         if not self.log and self.initial == 0:
             raise InputError("%s: a linear parameter needs a non-zero "
                              "initial value (its scale)" % at)
+        # the fitted variable's bounds finite and of a size the optimiser
+        # steps through: (max - min)/|value| of 1e599 (value 1e-299) was an
+        # overflow in the fit (adv pass k36)
+        span = (math.log(self.hi/self.lo) if self.log
+                else (self.hi - self.lo)/abs(self.initial))
+        if not span <= MAX_SPAN[self.log]:
+            raise InputError("%s: (min, max) = (%g, %g) %s spans %s, more "
+                             "than %g (%s): narrow the bounds%s"
+                             % (at, self.lo, self.hi, unit(name),
+                                "%.3g" % span, MAX_SPAN[self.log],
+                                "ln(max/min)" if self.log else
+                                "(max - min)/|value|",
+                                "" if self.log else " or use 'log yes'"))
 
     def to_x(self, p):
         if self.log:

@@ -109,11 +109,15 @@ class ForwardModel:
 
     def _probe(self):
         """Region materials as the solver built them (the included paper
-        set merged with the case's sub-dictionaries), every digit: the materials.dat of a run
-        of one 10 nm load step."""
+        set merged with the case's sub-dictionaries), every digit: the
+        materials.dat of a run of one load step of the case's
+        maxDepthIncrement (a row shorter than it is refused since fix19i:
+        each row would be one step)."""
         d = os.path.join(self.work, "probe")
+        step = self.ip.get("maxDepthIncrement", 1e-8)
         self._make_run_dir(d, self.sp_text, foamDict.set_entry(
-            self.ip_text, ["protocol"], "((A load 0.3e-6 1e-8))", self.ip_path))
+            self.ip_text, ["protocol"], "((A load 0.3e-6 %s))"
+            % foamDict.format_value(step), self.ip_path))
         log = os.path.join(d, "log.cellIndentationFoam")
         if _run(["cellIndentationFoam", "-case", d], d, log):
             raise ModelError("the case's own parameters do not run (see %s)"

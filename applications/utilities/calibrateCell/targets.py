@@ -8,7 +8,7 @@ import re
 
 import numpy as np
 
-from neuronFsi import foamDict
+from neuronFsi import foamDict, ranges
 
 
 class TargetError(Exception):
@@ -61,6 +61,12 @@ def read_curve(path):
             except ValueError:
                 raise TargetError("%s, row %d, column '%s': '%s' is not a "
                                   "number" % (path, n, want, r[c].strip()))
+            # as a dictionary's numbers (5e-324 became a division by
+            # zero: adv pass k33)
+            why = ranges.readerRangeProblem(r[c].strip(), vals[want])
+            if why:
+                raise TargetError("%s, row %d, column '%s': %s %s"
+                                  % (path, n, want, r[c].strip(), why))
             if not np.isfinite(vals[want]):
                 raise TargetError("%s, row %d, column '%s': %s is not "
                                   "finite" % (path, n, want, r[c].strip()))
@@ -77,6 +83,21 @@ def read_curve(path):
     if not t:
         raise TargetError("%s: no data rows below the header" % path)
     return np.array(t), np.array(F)
+
+
+# a target force [N]: a cell's contact force is pN to nN; 1 mN would
+# crush it
+FORCE_RANGE = "[1e-15, 1e-3]"
+
+
+def _sigmaAgainst(at, sigma, force):
+    """sigma [N] at least 1e-6 of the target's force: a smaller one makes
+    the residual's scale 1e6/force or more (adv pass k34: the fit
+    overflowed)."""
+    if sigma < 1e-6*force:
+        raise TargetError("%s: sigma = %g N is outside the valid range "
+                          "[%g, 1] N (at least 1e-6 of the target's force, "
+                          "%g N)" % (at, sigma, 1e-6*force, force))
 
 
 class Targets:
@@ -129,7 +150,7 @@ class Targets:
         except foamDict.DictError as err:
             raise TargetError(str(err))
 
-        def positive(key, default=None):
+        def positive(key, default=None, interval="(0, inf)", unit=""):
             v = e.get(key, default)
             if v is None:
                 return None
@@ -138,15 +159,19 @@ class Targets:
                                   % (at, key, v))
             if not np.isfinite(v):
                 raise TargetError("%s: '%s' = %s is not finite (valid "
-                                  "range (0, inf))" % (at, key, v))
-            if not v > 0:
-                raise TargetError("%s: '%s' = %g must be > 0"
-                                  % (at, key, v))
+                                  "range %s%s)" % (at, key, v, interval,
+                                                   unit))
+            if v not in ranges.Interval(interval):
+                raise TargetError("%s: '%s' = %g%s is outside the valid "
+                                  "range %s%s" % (at, key, v, unit,
+                                                  interval, unit))
             return float(v)
 
-        weight = positive("weight", 1.0)
-        sigma = positive("sigma")
-        rel = positive("relativeError", relative_error)
+        # finite ranges: a residual weight/sigma (F - F_target) of 1e-300
+        # or 1e300 overflowed in the fit (adv pass k33, k34, k36)
+        weight = positive("weight", 1.0, "[1e-6, 1e6]")
+        sigma = positive("sigma", None, "(0, 1]", " N")
+        rel = positive("relativeError", relative_error, "[1e-6, 10]")
         if "file" in e:
             if "peak" in e or "value" in e:
                 raise TargetError("%s: give either 'file' (a curve) or "
@@ -161,6 +186,7 @@ class Targets:
                 if sigma <= 0:
                     raise TargetError("%s: all forces in %s are zero; give "
                                       "'sigma' [N]" % (at, path))
+            _sigmaAgainst(at, sigma, float(np.max(F)))
             return dict(name=name, kind="curve", file=path, time=t,
                         value=F, sigma=np.full(len(t), sigma),
                         weight=weight)
@@ -178,11 +204,16 @@ class Targets:
             raise TargetError("%s: 'value' = %g N: a target force must be "
                               "positive (compressive contact force)"
                               % (at, v))
+        if v not in ranges.Interval(FORCE_RANGE):
+            raise TargetError("%s: 'value' = %g N is outside the valid range"
+                              " %s N (a cell's contact force: pN to nN)"
+                              % (at, v, FORCE_RANGE))
         if sigma is None:
             if rel is None:
                 raise TargetError("%s: give 'sigma' [N] or "
                                   "'relativeError'" % at)
             sigma = rel*v
+        _sigmaAgainst(at, sigma, v)
         return dict(name=name, kind="peak", peak=str(e["peak"]),
                     value=np.array([float(v)]), sigma=np.array([sigma]),
                     weight=weight)

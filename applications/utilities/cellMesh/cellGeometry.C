@@ -2,6 +2,7 @@
 #include "IFstream.H"
 #include "mathematicalConstants.H"
 #include "inputChecks.H"
+#include "subDict.H"
 #include "keywordCheck.H"
 
 using Foam::constant::mathematical::pi;
@@ -53,9 +54,11 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     (
         "nucleusShape", dict, nucleusShape::centredSpheroid
     );
-    if (dict.isDict("fluid"))
+    // `fluid 5;` is an error, not "no fluid" (adv32 y01: no fluid.msh,
+    // an older one left beside the new cell.msh)
+    if (const dictionary* fluid = foamTools::findSubDict(dict, "fluid"))
     {
-        fluidDict_ = dict.subDict("fluid");
+        fluidDict_ = *fluid;
     }
 
     // Upper bound 1 mm: a larger cell is a length given in um, not m
@@ -68,9 +71,11 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     (
         dict, "cellHeight", "m", 0, maxLength, false
     );
+    // Lower bound 1e-3: a nucleus a tenth of the cell across at least
+    // (1e-250 was gmsh's failure, "nothing written"; adv pass cm18)
     f_ = foamTools::readInRangeOrDefault<scalar>
     (
-        dict, "nucleusVolumeFraction", "(-)", 0, 1 - SMALL, false, 1.0/3.0
+        dict, "nucleusVolumeFraction", "(-)", 1e-3, 1 - SMALL, true, 1.0/3.0
     );
 
     // The inner parallel surface exists below the smallest radius of
@@ -105,6 +110,23 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     (
         dict, "membraneSize", "m", 0, H_, false
     );
+    // The membrane's elements at most maxAspectRatio times thinner than
+    // long (as the hex water's first layer): membraneThickness 1e-12 m
+    // meshed needles, exit 0 (adv pass cm18)
+    {
+        const scalar maxAspectRatio = 1000;
+        const scalar tMin = layers_*membraneSize_/maxAspectRatio;
+        if (t_ < tMin)
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'membraneThickness' = " << t_ << " m is outside "
+                << "the valid range [" << tMin << ", " << rhoMin << ") m: "
+                << "its " << layers_ << " layers of elements would be "
+                << layers_*membraneSize_/t_ << " times thinner than long "
+                << "(membraneSize " << membraneSize_ << " m; at most "
+                << maxAspectRatio << ")" << exit(FatalIOError);
+        }
+    }
     azimuthSize_ = min(cytoplasmSize_, membraneSize_);
     if (dict.found("azimuthSize"))
     {
@@ -136,6 +158,30 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
         (
             dict, "contactDepth", "m", 0, H_, false
         );
+        // The refined zone at least one of its elements wide and deep
+        // (1e-250 m was gmsh's failure or a zone of nothing, exit 0; adv
+        // pass cm18)
+        for
+        (
+            const auto& e
+          : {
+                std::make_pair("contactRadius", contactRadius_),
+                std::make_pair("contactDepth", contactDepth_)
+            }
+        )
+        {
+            if (e.second < contactSize_)
+            {
+                FatalIOErrorInFunction(dict)
+                    << "entry '" << e.first << "' = " << e.second << " m is"
+                    << " outside the valid range [" << contactSize_ << ", "
+                    << (e.first[7] == 'R' ? a_ : H_) << "] m (0 for no "
+                    << "refined zone): the zone under the contact is at "
+                    << "least one of its elements (contactSize "
+                    << contactSize_ << " m) wide and deep"
+                    << exit(FatalIOError);
+            }
+        }
     }
 
     const label maxElements = foamTools::readInRangeOrDefault<label>

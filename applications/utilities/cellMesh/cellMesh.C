@@ -26,6 +26,8 @@ Usage
 #include "cellGeometry.H"
 #include "cellMesher.H"
 #include "fluidBox.H"
+#include "mshFile.H"
+#include "Pair.H"
 #include <memory>
 #include "sigFpe.H"
 #include <gmsh.h>
@@ -99,11 +101,28 @@ int main(int argc, char *argv[])
             fluid->generate();
             gmsh::model::setCurrent("cell");
         }
-        mesher.write(args.path()/"constant/cell.msh");
+        // Both written and checked before either replaces its file
+        const fileName cellFile(args.path()/"constant/cell.msh");
+        const fileName fluidFile(args.path()/"constant/fluid.msh");
+        List<Pair<fileName>> files
+        (
+            1, Pair<fileName>(mesher.writeTemporary(cellFile), cellFile)
+        );
         if (fluid)
         {
             gmsh::model::setCurrent("fluid");
-            fluid->write(args.path()/"constant/fluid.msh");
+            files.append
+            (
+                Pair<fileName>(fluid->writeTemporary(fluidFile), fluidFile)
+            );
+        }
+        mshFile::commit(files);
+        Info<< "Written " << cellFile << " (gmsh 4.1, coordinates in m)"
+            << endl;
+        if (fluid)
+        {
+            Info<< "Written " << fluidFile << " (gmsh 2.2 for gmshToFoam,"
+                << " coordinates in m)" << endl;
         }
     }
     catch (const std::exception& e)

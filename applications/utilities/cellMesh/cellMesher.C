@@ -3,6 +3,7 @@
 #include "structuredCell.H"
 #include "mathematicalConstants.H"
 #include "OSspecific.H"
+#include "mshFile.H"
 #include <gmsh.h>
 #include <algorithm>
 #include <set>
@@ -488,7 +489,7 @@ void Foam::cellMesher::generate()
 }
 
 
-void Foam::cellMesher::write(const fileName& file) const
+Foam::fileName Foam::cellMesher::writeTemporary(const fileName& file) const
 {
     // gmsh can end without error but without elements for some sizes:
     // never write (or replace a good mesh with) an empty one
@@ -508,17 +509,9 @@ void Foam::cellMesher::write(const fileName& file) const
             << exit(FatalError);
     }
 
-    mkDir(file.path());
-    const fileName tmp(file.path()/"." + file.nameLessExt() + "-tmp.msh");
     gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
     gmsh::option::setNumber("Mesh.Binary", 0);
     gmsh::option::setNumber("Mesh.SaveAll", 0);
     gmsh::option::setNumber("Mesh.ScalingFactor", L_);
-    gmsh::write(tmp);
-    if (!Foam::mv(tmp, file))
-    {
-        FatalErrorInFunction
-            << "Cannot move " << tmp << " to " << file << exit(FatalError);
-    }
-    Info<< "Written " << file << " (gmsh 4.1, coordinates in m)" << endl;
+    return mshFile::writeTemporary(file);
 }

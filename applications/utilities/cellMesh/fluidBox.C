@@ -4,6 +4,7 @@
 #include "meshQuality.H"
 #include "mathematicalConstants.H"
 #include "OSspecific.H"
+#include "mshFile.H"
 #include "vector.H"
 #include <gmsh.h>
 #include <cmath>
@@ -52,9 +53,10 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
     (
         d, "farSize", "m", nearSize_, 0.25*L_, true
     );
+    // At least one near cell (1e-250 m was accepted; adv pass cm18)
     growth_ = foamTools::readInRange<scalar>
     (
-        d, "growthDistance", "m", 0, L_, false
+        d, "growthDistance", "m", nearSize_, L_, true
     );
     // The wedge's angle is the axisymmetric mode's: in 3D it was accepted
     // and ignored without a word (adv30 cm09)
@@ -65,9 +67,11 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
             << "only: the 3D modes (quarter3D, full3D) mesh no wedge"
             << exit(FatalIOError);
     }
+    // [0.01, 10] deg: 1e-250 deg was accepted, a wedge of cells of no
+    // volume (adv pass cm18); OpenFOAM's wedge is meant for a few degrees
     wedge_ = foamTools::readInRangeOrDefault<scalar>
     (
-        d, "wedgeAngle", "deg", 0, 10, false, 5
+        d, "wedgeAngle", "deg", 0.01, 10, true, 5
     )*pi/180;
 
     // Cell type (3D): tetrahedra (the default) or hex, whose entries are
@@ -825,20 +829,11 @@ void Foam::fluidBox::generate()
 }
 
 
-void Foam::fluidBox::write(const fileName& file) const
+Foam::fileName Foam::fluidBox::writeTemporary(const fileName& file) const
 {
-    mkDir(file.path());
-    const fileName tmp(file.path()/"." + file.nameLessExt() + "-tmp.msh");
     gmsh::option::setNumber("Mesh.MshFileVersion", 2.2);
     gmsh::option::setNumber("Mesh.Binary", 0);
     gmsh::option::setNumber("Mesh.SaveAll", 0);
     gmsh::option::setNumber("Mesh.ScalingFactor", unit_);
-    gmsh::write(tmp);
-    if (!Foam::mv(tmp, file))
-    {
-        FatalErrorInFunction
-            << "Cannot move " << tmp << " to " << file << exit(FatalError);
-    }
-    Info<< "Written " << file << " (gmsh 2.2 for gmshToFoam, coordinates in m)"
-        << endl;
+    return mshFile::writeTemporary(file);
 }

@@ -52,8 +52,8 @@ import matplotlib.pyplot as plt
 from matplotlib.collections import PolyCollection
 
 from neuronFsi import (blastPlots as bp, foamField, indentationPlots as ip,
-                       msh, paper, paperCases, planeWave, postProcessing,
-                       signals)
+                       msh, options, paper, paperCases, planeWave,
+                       postProcessing, signals)
 from neuronFsi.solidResults import SolidResults
 
 DPI = 90            # the PNGs' resolution [dots per inch]
@@ -987,7 +987,7 @@ def main():
     ap.add_argument("-output")
     ap.add_argument("-results")
     ap.add_argument("-noRun", action="store_true")
-    a = ap.parse_args()
+    a = options.parse(ap)
     case = os.path.abspath(a.case)
     if not os.environ.get("FOAM_TUTORIALS"):
         sys.exit("paperFigures: error: FOAM_TUTORIALS is not set (source "
@@ -996,9 +996,20 @@ def main():
     results = os.path.abspath(a.results or tutorials)
     out = os.path.abspath(a.output or os.path.join(case, "postProcessing",
                                                    "paper"))
-    if os.path.lexists(out) and not os.path.isdir(out):
-        sys.exit("paperFigures: error: -output %s exists and is not a "
-                 "folder" % out)
+    # the output and its parents folders, the case and -results too: a
+    # file there was os.makedirs' traceback (adv pass pa03, pa04)
+    for opt, path in (("-output", out), ("-case", case),
+                      ("-results", results)):
+        p = path
+        while p != os.path.dirname(p) and not os.path.lexists(p):
+            p = os.path.dirname(p)
+        if os.path.lexists(p) and not os.path.isdir(p):
+            sys.exit("paperFigures: error: %s %s: %s is %s, not a folder"
+                     % (opt, path, p, options.notARegularFile(p)
+                        or "a file"))
+        if opt != "-output" and not os.path.isdir(path):
+            sys.exit("paperFigures: error: %s %s: no such folder"
+                     % (opt, path))
     try:
         s = paperCases.read(case, tutorials)
     except paperCases.PaperError as err:

@@ -28,6 +28,7 @@ Description
 #include "rhoEThermo.H"
 #include "riemannProblem.H"
 #include "resultGuard.H"
+#include "writeGuard.H"
 #include "MieGruneisen.H"
 #include <cstdio>
 
@@ -198,9 +199,9 @@ int main(int argc, char *argv[])
     thermo.T().correctBoundaryConditions();
     U.correctBoundaryConditions();
 
-    thermo.p().write();
-    thermo.T().write();
-    U.write();
+    // Each field checked whole on disk, or the earlier fields kept (a full
+    // disk cut them, exit 0)
+    foamTools::writeChecked({&thermo.p(), &thermo.T(), &U});
     // What set the fields: riemannError compares the dictionary with it
     // (an edited dictionary was compared silently with the fields of the
     // former one; issue 19)

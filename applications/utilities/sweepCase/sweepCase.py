@@ -47,6 +47,7 @@ Usage
 """
 
 import argparse
+import math
 import os
 import re
 import shutil
@@ -82,6 +83,21 @@ def split_entry(case, entry):
                                  % (os.path.join(case, f), "/".join(keys),
                                     foamDict.did_you_mean(keys[-1], values),
                                     ", ".join(d)))
+            # An entry that comes from an included file cannot be set in
+            # this one: said before anything is copied (adv32 w02: "no
+            # sub-dictionary" from the first run's copy, run folders left)
+            own, included = foamDict.own_entry(os.path.join(case, f), keys)
+            if not own:
+                raise SweepError(
+                    "-entry %s: the entry '%s' is not written in %s itself:"
+                    " it comes from a file it includes (%s). sweepCase sets"
+                    " an entry in the text of the file named; write the "
+                    "entry into %s (after the include, which it then "
+                    "overrides), or sweep a copy of the included file. "
+                    "Nothing was run" % (
+                        entry, "/".join(keys), os.path.join(case, f),
+                        ", ".join(included) or "an include directive",
+                        os.path.join(case, f)))
             return f, keys
     raise SweepError("-entry %s: no file of case %s in it" % (entry, case))
 
@@ -92,7 +108,22 @@ class Output:
             raise SweepError("-output '%s': expected <name>=<file>:<row>:"
                              "<column> or <name>=<file>:/<regex>/" % spec)
         self.name, rest = spec.split("=", 1)
-        m = re.match(r"^([^:]+):/(.*)/$", rest)
+        # the name heads a column of the .md and .csv tables: a newline, a
+        # '|', ',' or '"' broke them (adv pass sw25)
+        odd = [c for c in self.name if c in '|,"' or not c.isprintable()]
+        if not self.name.strip() or odd:
+            raise SweepError("-output %r: the name %r is not a column name "
+                             "(not empty; no newline or other control "
+                             "character, no '|', ',' or '\"': it heads a "
+                             "column of the .md and .csv tables)"
+                             % (spec, self.name))
+        if any(not c.isprintable() for c in rest.split(":/", 1)[0]):
+            raise SweepError("-output %r: the file name holds a control "
+                             "character (a newline?)" % spec)
+        # the whole rest, newlines included (was: '$' matched before a
+        # trailing newline and '.' stopped at one: a regex with a newline
+        # was taken as <row>:<column>)
+        m = re.match(r"([^:]+):/(.*)/\Z", rest, re.S)
         if m:
             self.file = m.group(1)
             try:
@@ -105,6 +136,14 @@ class Output:
             if self.regex.groups < 1:
                 raise SweepError("-output '%s': the regex needs a group "
                                  "(...)" % spec)
+            # a regex that matches nothing at all matches everywhere: its
+            # group was tabulated empty (adv pass sw25)
+            if self.regex.search("") is not None:
+                raise SweepError("-output %r: the regex /%s/ matches an "
+                                 "empty text: it would match where the file"
+                                 " has no number (give its group one "
+                                 "character at least, e.g. (\\S+))"
+                                 % (spec, self.regex.pattern))
             return
         self.regex = None
         try:
@@ -112,6 +151,20 @@ class Output:
         except ValueError:
             raise SweepError("-output '%s': expected <name>=<file>:<row>:"
                              "<column>" % spec)
+
+    def number(self, text, what, path):
+        """text if it is a finite number: an output is a number of the run
+        (was: an empty match of a regex, or a word, tabulated silently;
+        adv pass sw25)."""
+        try:
+            ok = math.isfinite(float(text))
+        except ValueError:
+            ok = False
+        if not ok:
+            raise SweepError("output '%s': %s in %s is %r, not a number (an "
+                             "output is a number of the run)"
+                             % (self.name, what, path, text))
+        return text
 
     def value(self, case):
         path = os.path.join(case, self.file)
@@ -123,7 +176,9 @@ class Output:
                 raise SweepError("output '%s': no match of /%s/ in %s"
                                  % (self.name, self.regex.pattern, path))
             last = found[-1]
-            return last[0] if isinstance(last, tuple) else last
+            return self.number(last[0] if isinstance(last, tuple) else last,
+                               "the first group of the last match of /%s/"
+                               % self.regex.pattern, path)
         try:
             table = postProcessing.readTable(path)
         except postProcessing.ColumnFileError as err:
@@ -148,9 +203,11 @@ class Output:
             raise SweepError("output '%s': no column '%s' in %s (header: "
                              "%s)" % (self.name, self.column, path,
                                       ", ".join(header)))
+        what = "column %s" % self.column
         if self.row in ("max", "min"):
-            pick = max if self.row == "max" else min
-            return pick(rows, key=lambda r: float(r[col]))[col]
+            values = [self.number(r[col], what, path) for r in rows]
+            return (max if self.row == "max" else min)(
+                values, key=float)
         if self.row.lstrip("-").isdigit():
             i = int(self.row)
             if not -len(rows) <= i < len(rows):
@@ -158,13 +215,23 @@ class Output:
                                  "range [%d, %d] of %s (%d data rows)"
                                  % (self.name, i, -len(rows), len(rows) - 1,
                                     path, len(rows)))
-            return rows[i][col]
+            return self.number(rows[i][col], "row %d, %s" % (i, what), path)
         for r in rows:
             if r[0] == self.row:
-                return r[col]
+                return self.number(r[col], "row %s, %s" % (self.row, what),
+                                   path)
         raise SweepError("output '%s': no row '%s' in %s (first column: %s)"
                          % (self.name, self.row, path,
                             ", ".join(r[0] for r in rows[:20])))
+
+
+def _stamp(path):
+    """(modification time in ns, size) of a file, or None if absent."""
+    try:
+        st = os.stat(path)
+    except OSError:
+        return None
+    return st.st_mtime_ns, st.st_size
 
 
 def run_one(case, copy, f, keys, value, outputs, command):
@@ -173,11 +240,29 @@ def run_one(case, copy, f, keys, value, outputs, command):
     p = os.path.join(copy, f)
     text = foamDict.set_entry(open(p).read(), keys, value, p)
     open(p, "w").write(text)
+    # The output files the copy holds before the run: the case's earlier
+    # results (copytree keeps their times)
+    before = {o.file: _stamp(os.path.join(copy, o.file)) for o in outputs}
     try:
         wall = caseRuns.runIn(copy, command, "log.sweepCase")
     except caseRuns.RunError as err:
         raise SweepError("value %s: %s" % (value, err))
-    return [o.value(copy) for o in outputs], wall
+    values = [o.value(copy) for o in outputs]
+    # An output the run did not write is the case's earlier result, the
+    # same for every value (adv32 w01: ./Allrun skipped every step of a
+    # case run before, its logs being there, and the old peaks.dat was
+    # reported for each radius)
+    for o in outputs:
+        stamp = before[o.file]
+        if stamp is not None and _stamp(os.path.join(copy, o.file)) == stamp:
+            raise SweepError(
+                "value %s: output '%s': %s was not written by the run ('%s'"
+                "): it is the file of the case as copied (an earlier run's"
+                " result; an Allrun skips the steps whose logs are there), "
+                "the same for every value. Clean the case first (./Allclean"
+                ") so that each run computes its own" % (
+                    value, o.name, os.path.join(case, o.file), command))
+    return values, wall
 
 
 def main():

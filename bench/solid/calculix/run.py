@@ -168,7 +168,7 @@ def timeToError(rows, key, ref, target):
 def main():
     ap = bench.arguments(__doc__, os.path.join(HERE, "output"),
                          "meshes up to 24 x 24, one run, output in --out")
-    args = ap.parse_args()
+    args = bench.parse(ap)
     size = "quick" if args.quick else "full"
     meshes = MESHES[size]
     repeats = 1 if args.quick else REPEATS
@@ -358,4 +358,4 @@ def report(rows, cax4, ref, FH, F0, slope, size, repeats, start):
 
 
 if __name__ == "__main__":
-    main()
+    bench.main(main)

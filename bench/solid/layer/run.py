@@ -264,7 +264,7 @@ def main():
                     default="all", help="run only this code's cases (to "
                     "run the codes side by side into one --out); the "
                     "report needs all")
-    args = ap.parse_args()
+    args = bench.parse(ap)
     size = "quick" if args.quick else "full"
     lad = LADDER[size]
     out = os.path.abspath(args.out)
@@ -642,4 +642,4 @@ def verdict(w, ours, bulk, fen, fenK, ccx, slopes, lad, ref, refK, comp,
 
 
 if __name__ == "__main__":
-    main()
+    bench.main(main)

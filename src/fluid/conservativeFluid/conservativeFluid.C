@@ -3,6 +3,7 @@
 #include "wedgePolyPatch.H"
 #include "keywordCheck.H"
 #include "inputChecks.H"
+#include "subDict.H"
 #include "physicalBounds.H"
 
 #include <cmath>
@@ -20,8 +21,28 @@ const Foam::dictionary& checkedRiemannDict(const Foam::fvMesh& mesh)
 
     const dictionary& solution = mesh.solutionDict();
     foamTools::checkDuplicates(solution, {"riemann"});
-    const dictionary& dict = solution.subDict("riemann");
+    const dictionary& dict = foamTools::subDict(solution, "riemann");
     wordList valid{"riemannSolver", "timeScheme", "viscous"};
+    // A switch: OpenFOAM took any number for one (viscous 2 or 0.5 was
+    // "yes" without a word; adv pass rk40)
+    if (dict.found("viscous", keyType::LITERAL))
+    {
+        const ITstream& is = dict.lookup("viscous");
+        const bool ok =
+            is.size() == 1
+         && (
+                (is[0].isWord() && Switch(is[0].wordToken(), true).valid())
+             || (is[0].isLabel() && (is[0].labelToken() == 0
+                                  || is[0].labelToken() == 1))
+            );
+        if (!ok)
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'viscous' is not a switch: valid values are yes,"
+                << " no, true, false, on, off (or 1, 0)"
+                << exit(FatalIOError);
+        }
+    }
     if (dict.getOrDefault<Switch>("viscous", false))
     {
         valid.append("mu");
@@ -131,10 +152,10 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
         thermo_->rho()*(thermo_->e() + 0.5*magSqr(U_))
     ),
     flux_(riemannFlux::New(mesh, checkedRiemannDict(mesh))),
-    rk_(mesh.solutionDict().subDict("riemann")),
+    rk_(foamTools::subDict(mesh.solutionDict(), "riemann")),
     viscous_
     (
-        mesh.solutionDict().subDict("riemann")
+        foamTools::subDict(mesh.solutionDict(), "riemann")
        .lookupOrDefault<Switch>("viscous", false)
     ),
     mu_("mu", dimDynamicViscosity, Zero),
@@ -198,13 +219,16 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
     if (viscous_)
     {
         const dictionary& riemannDict =
-            mesh.solutionDict().subDict("riemann");
+            foamTools::subDict(mesh.solutionDict(), "riemann");
         mu_.read(riemannDict);
-        if (mu_.value() < 0)
+        // finite, the viscosity bound of every reader (physicalBounds.H:
+        // a modulus times a time; was [0, inf), adv pass rk40)
+        const scalar muMax = physicalBounds::viscosityMax;
+        if (!(mu_.value() >= 0 && mu_.value() < muMax))
         {
             FatalIOErrorInFunction(riemannDict)
                 << "mu = " << mu_.value() << " Pa s is outside the valid"
-                << " range [0, inf)" << exit(FatalIOError);
+                << " range [0, " << muMax << ") Pa s" << exit(FatalIOError);
         }
         Info<< "Newtonian viscous stress with mu = " << mu_.value()
             << " Pa s" << nl << endl;
@@ -297,12 +321,7 @@ Foam::scalar Foam::conservativeFluid::courantNumber(const scalar deltaT) const
     tmp<surfaceScalarField> tspeedSf(amaxSf_);
     if (viscous_)
     {
-        // (8/3) nu/d: the explicit diffusion limit of longitudinal waves
-        // (diffusivity 4/3 nu) as a speed, d the distance of the centres
-        tspeedSf =
-            amaxSf_
-          + (8.0/3.0)*mu_/fvc::interpolate(thermo_->rho())
-           *mesh_.magSf()*mesh_.deltaCoeffs();
+        tspeedSf = amaxSf_ + viscousSpeedSf();
     }
     const scalarField sumSpeedSf
     (
@@ -313,6 +332,32 @@ Foam::scalar Foam::conservativeFluid::courantNumber(const scalar deltaT) const
     Info<< "Courant number max: " << CoNum << endl;
 
     return CoNum;
+}
+
+
+Foam::tmp<Foam::surfaceScalarField>
+Foam::conservativeFluid::viscousSpeedSf() const
+{
+    // (8/3) nu/d: the explicit diffusion limit of longitudinal waves
+    // (diffusivity 4/3 nu) as a speed, d the distance of the centres
+    return
+        (8.0/3.0)*mu_/fvc::interpolate(thermo_->rho())
+       *mesh_.magSf()*mesh_.deltaCoeffs();
+}
+
+
+Foam::scalar Foam::conservativeFluid::viscousDeltaT(const scalar maxCo) const
+{
+    if (!viscous_)
+    {
+        return GREAT;
+    }
+    const scalar rate = 0.5*gMax
+    (
+        fvc::surfaceSum(viscousSpeedSf())().primitiveField()
+       /mesh_.V().field()
+    );
+    return rate > 0 ? maxCo/rate : GREAT;
 }
 
 

@@ -5,6 +5,7 @@
 #include "IFstream.H"
 #include "Time.H"
 #include "SHA1.H"
+#include "inputChecks.H"
 #include "keywordCheck.H"
 #include "inputRecord.H"
 #include "fileKind.H"
@@ -35,7 +36,12 @@ Foam::List<Foam::Tuple2<Foam::scalar, Foam::scalar>> readTable
             << "`table ((t0 p0) (t1 p1) ...)` [s Pa]"
             << exit(FatalIOError);
     }
-    return List<Tuple2<scalar, scalar>>(is);
+    List<Tuple2<scalar, scalar>> table(is);
+    foamTools::checkEntryEnd
+    (
+        dict, key, is, "`table ((t0 p0) (t1 p1) ...)` [s Pa]"
+    );
+    return table;
 }
 
 //- A number for a message (10 significant digits, not the run's 17)

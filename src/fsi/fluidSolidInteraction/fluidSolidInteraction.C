@@ -7,6 +7,7 @@
 #include "ResultWriter.H"
 #include "SolidError.H"
 #include "inputChecks.H"
+#include "subDict.H"
 
 #include <cmath>
 #include "keywordCheck.H"
@@ -26,7 +27,8 @@ const Foam::dictionary& checkedInterfaceDict
     using namespace Foam;
 
     foamTools::checkKeywords(fsiProperties, {"interface", "coupling"});
-    const dictionary& interfaceDict = fsiProperties.subDict("interface");
+    const dictionary& interfaceDict =
+        foamTools::subDict(fsiProperties, "interface");
     foamTools::checkKeywords
     (
         interfaceDict,
@@ -359,8 +361,8 @@ Foam::fluidSolidInteraction::fluidSolidInteraction
     (
         foamTools::readInRangeOrDefault<label>
         (
-            fsiProperties_.subDict("coupling"), "solidSubcycles", "", 1,
-            1000, true, 1
+            foamTools::subDict(fsiProperties_, "coupling"),
+            "solidSubcycles", "", 1, 1000, true, 1
         )
     ),
     wallWork_(0),
@@ -373,7 +375,8 @@ Foam::fluidSolidInteraction::fluidSolidInteraction
     cpuStart_(0)
 {
     const Time& runTime = mesh_.time();
-    const dictionary& interfaceDict = fsiProperties_.subDict("interface");
+    const dictionary& interfaceDict =
+        foamTools::subDict(fsiProperties_, "interface");
 
     if (runTime.value() > 0)
     {
@@ -457,7 +460,8 @@ Foam::fluidSolidInteraction::fluidSolidInteraction
             << solidSubcycles_*solid_->timeStep() << " s now)" << endl;
     }
 
-    coupling_ = couplingScheme::New(fsiProperties_.subDict("coupling"));
+    coupling_ =
+        couplingScheme::New(foamTools::subDict(fsiProperties_, "coupling"));
 
     createMotion(interfaceDict);
 

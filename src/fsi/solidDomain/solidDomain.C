@@ -2,6 +2,7 @@
 #include "solidInput.H"
 #include "keywordCheck.H"
 #include "inputChecks.H"
+#include "subDict.H"
 #include "inputRecord.H"
 #include "SolidError.H"
 #include "IOobject.H"
@@ -173,7 +174,8 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
     if (dict_.found("hourglassViscosityRegions"))
     {
         // kappa per region name, overriding hourglassViscosity there
-        const dictionary& hr = dict_.subDict("hourglassViscosityRegions");
+        const dictionary& hr =
+            foamTools::subDict(dict_, "hourglassViscosityRegions");
         foamTools::checkKeywords
         (
             hr, wordList(mesh().regionNames.begin(), mesh().regionNames.end())
@@ -205,6 +207,17 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
         model_->initialise();
         solver_.reset(new solid::ExplicitSolver(*model_, set));
     });
+    // The solid's steps counted as the fluid's, before anything is written:
+    // every coupled step takes at least its solid steps (adv pass fo13:
+    // explicitSafety 1e-12 made the stable step tiny and the run crawl)
+    {
+        OStringStream how;
+        how << "the solid's stable time step x explicitSafety (entry "
+            << "'explicitSafety' = " << set.safety << " of "
+            << runTime_.constant()/"solidProperties"
+            << "; the cell's materials and mesh decide its stable step)";
+        foamTools::checkStepCount(runTime_, solver_->timeStep(), how.str());
+    }
 
     setupOutput();
 
@@ -595,6 +608,7 @@ void Foam::solidDomain::addProbe
 
 void Foam::solidDomain::setupProbes()
 {
+    // A dictionary of named probes or a list of points
     if (dict_.isDict("probes"))
     {
         const dictionary& pd = dict_.subDict("probes");
@@ -634,7 +648,7 @@ void Foam::solidDomain::setupProbes()
     }
     if (dict_.found("interfaceProbe"))
     {
-        const dictionary& ip = dict_.subDict("interfaceProbe");
+        const dictionary& ip = foamTools::subDict(dict_, "interfaceProbe");
         foamTools::checkKeywords(ip, {"regions", "heightFraction", "side"});
         const Pair<word> regions(ip.get<Pair<word>>("regions"));
         const scalar f = ip.get<scalar>("heightFraction");
@@ -723,6 +737,34 @@ void Foam::solidDomain::setupOutput()
     (
         dict_.getOrDefault<List<Pair<word>>>("interfaces", {})
     );
+    // Each pair two regions, each interface once: a region paired with
+    // itself (all its elements, as if an interface) and a pair given twice
+    // (columns twice, in either order) were accepted silently (adv pass
+    // y07, y08)
+    forAll(pairs, i)
+    {
+        if (pairs[i].first() == pairs[i].second())
+        {
+            FatalIOErrorInFunction(dict_)
+                << "entry 'interfaces', pair " << i + 1 << " ("
+                << pairs[i].first() << ' ' << pairs[i].second() << "): a "
+                << "region paired with itself; an interface is a pair of "
+                << "two different regions that share nodes"
+                << exit(FatalIOError);
+        }
+        for (label j = 0; j < i; ++j)
+        {
+            if (Pair<word>::compare(pairs[i], pairs[j]) != 0)
+            {
+                FatalIOErrorInFunction(dict_)
+                    << "entry 'interfaces', pair " << i + 1 << " ("
+                    << pairs[i].first() << ' ' << pairs[i].second()
+                    << ") is the interface of pair " << j + 1 << " ("
+                    << pairs[j].first() << ' ' << pairs[j].second()
+                    << "): give each interface once" << exit(FatalIOError);
+            }
+        }
+    }
     interfaceElements_.setSize(pairs.size());
     forAll(pairs, i)
     {

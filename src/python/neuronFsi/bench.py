@@ -18,7 +18,7 @@ import sys
 
 import numpy as np
 
-from . import postProcessing
+from . import options, postProcessing
 
 COMMIT_FILE = "bench.commit"
 LOAD_FILE = "log.load"
@@ -33,6 +33,80 @@ def arguments(doc, out, quick=None):
     ap.add_argument("--out", default=out)
     ap.add_argument("--doc", default=None)
     return ap
+
+
+class BenchError(RuntimeError):
+    """A benchmark that cannot run or report: a command that failed, runs
+    that are missing (--reportOnly); the message says which."""
+
+
+# the options whose value is a list of words (each a positive number, or a
+# positive whole number)
+_LISTS = {"factors": float, "sizes": int, "subcycles": int}
+
+
+def parse(ap, argv=None):
+    """The options of a benchmark's parser ap, checked before anything
+    runs (issue 19, bk06, bk07: a bad option was a Python traceback
+    after minutes, or went unnoticed): options.parse (a negative number
+    as a value, an option given twice, numbers outside OpenFOAM's reader),
+    then each number finite, positive (at least 0 where the default is 0),
+    each word of --factors (a positive number), --sizes and --subcycles (a
+    positive whole number), --out not a file, --doc not a folder. A usage
+    error naming the option and what is valid (exit 2)."""
+    a = options.parse(ap, argv)
+    for act in ap._actions:
+        if not act.option_strings or act.dest not in vars(a):
+            continue
+        name, v = act.option_strings[-1], getattr(a, act.dest)
+        if act.type in (int, float) and v is not None:
+            low = 0 if act.default == 0 else None
+            if not (math.isfinite(v) and (v >= 0 if low == 0 else v > 0)):
+                ap.error("%s %s: not a finite number in the valid range %s"
+                         % (name, v, "[0, inf)" if low == 0 else "(0, inf)"))
+        if act.dest in _LISTS and isinstance(v, str):
+            kind = _LISTS[act.dest]
+            for w in v.split():
+                try:
+                    x = kind(w)
+                except ValueError:
+                    x = None
+                if x is None or not (math.isfinite(x) and x > 0):
+                    ap.error("%s '%s': '%s' is not a positive %s"
+                             % (name, v, w, "number" if kind is float
+                                else "whole number"))
+            if not v.split():
+                ap.error("%s '%s': no value" % (name, v))
+    for dest, isDir in (("out", True), ("doc", False)):
+        v = getattr(a, dest, None)
+        if v is None:
+            continue
+        full = os.path.abspath(v)
+        if not isDir and os.path.isdir(full):
+            ap.error("--doc %s: a folder; the option names a report file"
+                     % v)
+        # the first existing path up from the folder must be a folder
+        p = full if isDir else os.path.dirname(full)
+        while not os.path.lexists(p) and p != os.path.dirname(p):
+            p = os.path.dirname(p)
+        if os.path.lexists(p) and not os.path.isdir(p):
+            ap.error("--%s %s: %s is %s, not a folder" % (
+                dest, v, p, options.notARegularFile(p) or "a file"))
+    return a
+
+
+def main(fn):
+    """Run a benchmark's main function fn; the project's errors (a failed
+    command, a missing or unreadable run or log: BenchError and the
+    readers' errors) end it with "<script>: error: <message>", exit 1,
+    instead of a traceback."""
+    from . import foamDict, logs, planeWave, postProcessing
+    errors = (BenchError, logs.LogError, postProcessing.ColumnFileError,
+              planeWave.PlaneWaveError, foamDict.DictError)
+    try:
+        return fn()
+    except errors as err:
+        sys.exit("%s: error: %s" % (os.path.basename(sys.argv[0]), err))
 
 
 def reportPath(doc, quick, out, root, name):
@@ -65,7 +139,7 @@ def runLogged(command, cwd, env, log=None):
 def fail(res, message):
     """Show the end of a failed command's output and raise message."""
     sys.stdout.write(res.stdout[-3000:])
-    raise RuntimeError(message)
+    raise BenchError(message)
 
 
 def runTimed(case, command, env, log):

@@ -97,15 +97,37 @@ def writeManual(case, labels, name="cellDecomposition"):
     return path
 
 
+# the fewest cells a rank of a decomposition holds
+MIN_CELLS_PER_RANK = 100
+
+
 def sectorDecomposition(case, n, origin=(0.0, 0.0, 0.0),
                         axis=(0.0, 0.0, 1.0), centres="0/C"):
     """Read the cell centres (<case>/<centres>, ascii, from postProcess
     -func writeCellCentres), write constant/cellDecomposition with n
     sectors; returns the cells per processor."""
-    c = foamField.internalField(os.path.join(case, centres))
+    path = os.path.join(case, centres)
+    try:
+        c = foamField.internalField(path)
+    except (OSError, ValueError, foamField.FieldError) as err:
+        # a re-run of an Allrun whose writeCellCentres step was skipped
+        # (its log there) after 0/C was removed: a traceback (adv pass q46)
+        raise DecompositionError(
+            "the cell centres %s cannot be read (%s): write them with "
+            "postProcess -func writeCellCentres -time 0 (remove its log "
+            "log.postProcess to have an Allrun run it again)"
+            % (path, err.strerror if isinstance(err, OSError) else err))
     if c.ndim != 2:
         raise DecompositionError(f"{os.path.join(case, centres)}: cell "
                                  "centres (a vector field) wanted")
+    # a rank's share must outweigh its exchange with the others: n ranks
+    # for a few cells each were accepted (adv pass q34: -np 4096)
+    if len(c) < MIN_CELLS_PER_RANK*n:
+        raise DecompositionError(
+            "%d ranks for %d cells: fewer than %d cells per rank (valid "
+            "range [1, %d] ranks for this mesh)" % (
+                n, len(c), MIN_CELLS_PER_RANK,
+                max(1, len(c)//MIN_CELLS_PER_RANK)))
     labels = sectors(c, n, origin, axis)
     writeManual(case, labels)
     return np.bincount(labels, minlength=n)

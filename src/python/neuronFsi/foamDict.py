@@ -22,7 +22,7 @@ src/foamTools/closestKeyword.H, the same distance and threshold).
 import math
 import os
 import re
-from . import options
+from . import options, ranges
 
 _TOKEN = re.compile(r'''
     (?P<ws>\s+)
@@ -128,11 +128,13 @@ def _merge(d, new):
             d[k] = v
 
 
-def parse(text, name="<text>", base=None):
+def parse(text, name="<text>", base=None, included=None):
     """Nested dict of the file. An entry of one token is that value (int,
     float, bool for yes/no/true/false/on/off, or str); of several tokens or
     a list, a Python list; the FoamFile header is dropped. Include
-    directives name files relative to the directory base."""
+    directives name files relative to the directory base. With a list
+    `included`, include directives are not followed: the text's own
+    entries only, the directives' file names appended to the list."""
     toks = tokens(text, name)
     i = [0]
 
@@ -140,14 +142,21 @@ def parse(text, name="<text>", base=None):
         pos = toks[k][1] if k < len(toks) else len(text)
         raise DictError("%s, line %d: %s" % (name, _line(text, pos), msg))
 
+    entry = [None]      # the entry being read, for the messages
+
     def value(k):
         t = toks[k][0]
         v = _value(t)
-        if isinstance(v, float) and not math.isfinite(v):
-            if t.lower().lstrip("+-") in ("nan", "inf", "infinity"):
-                return t            # a word, as OpenFOAM reads it
-            err("'%s' is beyond the range of a double (|x| < 1.8e308)" % t,
-                k)
+        if isinstance(v, float) and not math.isfinite(v) \
+                and t.lower().lstrip("+-") in ("nan", "inf", "infinity"):
+            return t            # a word, as OpenFOAM reads it
+        why = ranges.readerRangeProblem(t, v) if not t.startswith('"') \
+            else ""
+        if why:
+            what = "a value of the list" if entry[0] is None \
+                else "entry '%s'" % entry[0]
+            err("%s = %s %s: give 0 or a value with 1e-300 < |x| <= 1e+300"
+                " in the entry's valid range" % (what, t, why), k)
         return v
 
     def parse_list():
@@ -172,6 +181,10 @@ def parse(text, name="<text>", base=None):
                 "#includeIfPresent)" % key, i[0] - 1)
         if i[0] >= len(toks) or not toks[i[0]][0].startswith('"'):
             err("%s needs a quoted file name" % key, i[0] - 1)
+        if included is not None:
+            included.append('%s %s' % (key, toks[i[0]][0]))
+            i[0] += 1
+            return {}
         if base is None:
             err("%s in a text that is not a file" % key, i[0] - 1)
         path = os.path.join(base, os.path.expandvars(toks[i[0]][0][1:-1]))
@@ -214,6 +227,7 @@ def parse(text, name="<text>", base=None):
                 _merge(d, {key: parse_dict(True, scope + [key])})
                 continue
             vals = []
+            entry[0] = "/".join(scope + [str(key)])
             while True:
                 if i[0] >= len(toks):
                     err("entry '%s' has no closing ';'" % key, i[0] - 1)
@@ -228,6 +242,7 @@ def parse(text, name="<text>", base=None):
                 else:
                     vals.append(value(i[0] - 1))
             d[key] = vals[0] if len(vals) == 1 else vals
+            entry[0] = None
         if closing:
             err("unclosed '{'", len(toks))
         return d
@@ -248,6 +263,21 @@ def read(path):
             ": reading it would wait without end for a writer"))
     with open(path) as f:
         return parse(f.read(), path, os.path.dirname(path) or ".")
+
+
+def own_entry(path, keys):
+    """Whether the file at path writes entry keys (e.g. ['materials',
+    'nucleus', 'C10']) in its own text, not through an include directive:
+    (True, []) if it does, else (False, the file's include directives).
+    Only an entry of the file's own text can be set in it (set_entry)."""
+    included = []
+    with open(path) as f:
+        d = parse(f.read(), path, included=included)
+    for k in keys:
+        if not isinstance(d, dict) or k not in d:
+            return False, included
+        d = d[k]
+    return True, []
 
 
 def read_checked(path, valid, required, error):

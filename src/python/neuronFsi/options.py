@@ -6,9 +6,13 @@ negative number misses exponents); parse() joins such a pair into
 "-dz=-25e-9" first, so that the application's range check says what is
 wrong with the value (issue 19)."""
 
+import argparse
 import os
+import re
 import stat
 import sys
+
+from . import ranges
 
 
 def notARegularFile(path):
@@ -102,9 +106,77 @@ def joinNegativeValues(parser, argv):
     return out
 
 
+def repeatedOptions(parser, argv):
+    """The options of argv given more than once that take one value or are
+    switches (argparse keeps the last silently: "-np 2 -np 4" ran with 4;
+    issue 19, pw42, op01, op02): [(option, [values])], by their first
+    spelling; an option whose action appends or counts may repeat. argv
+    as joinNegativeValues leaves it (-opt=value, -opt value)."""
+    single = (argparse._StoreAction, argparse._StoreConstAction,
+              argparse._StoreTrueAction, argparse._StoreFalseAction)
+    seen = {}
+    order = []
+    i = 0
+    while i < len(argv):
+        a = argv[i]
+        i += 1
+        if a == "--":
+            break
+        if not a.startswith("-") or _numbers(a):
+            continue
+        name, eq, value = a.partition("=")
+        action = parser._option_string_actions.get(name)
+        if action is None or not isinstance(action, single):
+            continue
+        if not eq and action.nargs is None \
+                and isinstance(action, argparse._StoreAction) \
+                and i < len(argv):
+            value = argv[i]
+            i += 1
+        if action not in seen:
+            seen[action] = (name, [])
+            order.append(action)
+        seen[action][1].append(value)
+    return [seen[a] for a in order if len(seen[a][1]) > 1]
+
+
+def numbersOutsideReader(parser, argv):
+    """[(option, value, why)] for each option value of argv holding a
+    number outside what OpenFOAM's reader takes (ranges.
+    readerRangeProblem: 5e-324 or 1e308; issue 19, pv02: planeWave
+    -dz 5e-324 was an OverflowError), as the C++ applications'
+    checkOptions. Each whitespace, comma or colon separated word of the
+    value is looked at."""
+    out = []
+    i = 0
+    while i < len(argv):
+        a = argv[i]
+        i += 1
+        name, eq, value = a.partition("=")
+        action = parser._option_string_actions.get(name)
+        if action is None or action.nargs == 0:
+            continue
+        if not eq:
+            if i >= len(argv):
+                continue
+            value = argv[i]
+            i += 1
+        for word in re.split(r"[\s,:;()\[\]]+", value):
+            try:
+                v = float(word)
+            except ValueError:
+                continue
+            why = ranges.readerRangeProblem(word, v)
+            if why:
+                out.append((name, value, why))
+                break
+    return out
+
+
 def parse(parser, argv=None):
     """parser.parse_args of argv (default: the command line) with negative
-    values taken as values."""
+    values taken as values, each option given at most once (a usage error
+    naming a repeated one: repeatedOptions)."""
     argv = sys.argv[1:] if argv is None else argv
     # -help, the OpenFOAM applications' spelling, is argparse's --help (was:
     # "argument -h/--help: ignored explicit argument 'elp'", exit 2; adv30
@@ -112,4 +184,15 @@ def parse(parser, argv=None):
     if "--help" in parser._option_string_actions \
             and "-help" not in parser._option_string_actions:
         argv = ["--help" if a == "-help" else a for a in argv]
-    return parser.parse_args(joinNegativeValues(parser, argv))
+    argv = joinNegativeValues(parser, argv)
+    for name, value, why in numbersOutsideReader(parser, argv):
+        parser.error("option %s '%s': %s: give 0 or a value with 1e-300 < "
+                     "|x| <= 1e+300 in the option's valid range"
+                     % (name, value, why))
+    for name, values in repeatedOptions(parser, argv):
+        given = ", ".join("'%s'" % v for v in values if v)
+        parser.error("option %s is given %d times%s: give it once (it "
+                     "would take the last silently)"
+                     % (name, len(values),
+                        " (values %s)" % given if given else ""))
+    return parser.parse_args(argv)

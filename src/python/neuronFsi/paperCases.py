@@ -30,7 +30,8 @@ import shlex
 import shutil
 import subprocess
 
-from . import allrunOptions, caseRuns, foamDict, logs
+from . import (allrunOptions, caseRuns, foamDict, logs, options, planeWave,
+               postProcessing)
 
 DICT = os.path.join("system", "paperDict")
 RUNS = os.path.join("postProcessing", "runs")
@@ -44,6 +45,12 @@ CASES = {
     "blast15ns": ("blast", "Fig. 10"),
     "quarter3D": ("blast", "Figs. 7-9 (3D)"),
 }
+# The pulse of each blast run [s]: the duration its name says (the paper's
+# Fig. 10 pulses; the 3D quarter at the paper's 5 ns). A run of another
+# pulse under the name was used silently (issue 19, pa19: a 15 ns run as
+# blast10ns): refused in the dictionary's options and in the results
+PULSE = {"blast5ns": 5e-9, "blast10ns": 10e-9, "blast15ns": 15e-9,
+         "quarter3D": 5e-9}
 KEYWORDS = ("cases", "peakWindow")
 CASE_KEYWORDS = ("tutorial", "options")
 SOLVER = {"indentation": "cellIndentationFoam", "blast": "cellBlastFoam"}
@@ -131,10 +138,57 @@ def read(case, tutorials):
         except allrunOptions.OptionError as err:
             raise PaperError("%s: entry 'cases/%s/options': %s"
                              % (path, name, err))
+        if name in PULSE and "-pulse" in given \
+                and not _samePulse(float(given["-pulse"]), PULSE[name]):
+            raise PaperError("%s: entry 'cases/%s/options': -pulse %s s is "
+                             "not the pulse of %s, %g s (the duration its "
+                             "name says)" % (path, name, given["-pulse"],
+                                              name, PULSE[name]))
         out[name] = {"name": name, "kind": kind, "use": use,
                      "tutorial": tut, "relative": c["tutorial"],
                      "options": opts, "given": given, "decl": decl}
     return {"cases": out, "peakWindow": float(w), "dict": path}
+
+
+def _samePulse(a, b):
+    """Two pulse durations [s] equal to the resolution of a pulse table's
+    half-amplitude crossings (1e-3 relative)."""
+    return abs(a - b) <= 1e-3*b
+
+
+def _blastResults(run, folder):
+    """Why the blast results in folder are not those of run, or None: the
+    pulse of the results (0/p's table, planeWave.pulseShape) must be the
+    one the run's name says (pa19), and the solid probes must reach the
+    run's endTime (system/controlDict; a cut or truncated probe file was
+    used as current, pa09)."""
+    try:
+        amp, T = planeWave.pulseShape(planeWave.appliedPressure(folder))
+    except (planeWave.PlaneWaveError, foamDict.DictError, OSError,
+            ValueError, IndexError) as err:
+        return "its pulse cannot be read (%s)" % err
+    want = PULSE.get(run["name"])
+    if want is not None and not _samePulse(T, want):
+        return ("its pulse lasts %g s (0/p), not the %g s of %s (the "
+                "duration its name says)" % (T, want, run["name"]))
+    control = os.path.join(folder, "system", "controlDict")
+    try:
+        end = foamDict.read(control).get("endTime")
+    except (foamDict.DictError, OSError) as err:
+        return "%s cannot be read (%s)" % (control, err)
+    if isinstance(end, bool) or not isinstance(end, (int, float)):
+        return None     # no endTime to compare with
+    log = "solidProbes/solidProbes.dat"
+    try:
+        last = postProcessing.series(folder, log)[-1, 0]
+        path = postProcessing.segments(folder, log)[-1][1]
+    except postProcessing.ColumnFileError as err:
+        return str(err)
+    if last < end*(1 - 1e-3):
+        return ("%s ends at %g s, before the run's endTime %g s (system/"
+                "controlDict): a cut or truncated file"
+                % (os.path.relpath(path, folder), last, end))
+    return None
 
 
 def trackedFiles(tutorial):
@@ -169,6 +223,10 @@ def why(run, folder):
     for r in RESULTS[run["kind"]]:
         if not os.path.exists(os.path.join(folder, r)):
             return "no %s" % r
+    if run["kind"] == "blast":
+        w = _blastResults(run, folder)
+        if w is not None:
+            return w
     if run["kind"] == "indentation":
         peaks = os.path.join(folder, RESULTS["indentation"][0])
         with open(peaks) as f:
@@ -218,6 +276,19 @@ def make(run, case):
     postProcessing/runs/<name>; the folder. PaperError if it fails or its
     results are then not current."""
     folder = os.path.join(case, RUNS, run["name"])
+    # only a folder: a symbolic link (to someone's results) or a file there
+    # is not the comparison's copy (pa25, pa26: shutil's traceback)
+    for p in (os.path.dirname(os.path.dirname(folder)),
+              os.path.dirname(folder), folder):
+        if os.path.islink(p) and p == folder:
+            kind = "a symbolic link (to %s)" % os.path.realpath(p)
+        elif os.path.lexists(p) and not os.path.isdir(p):
+            kind = options.notARegularFile(p) or "a file"
+        else:
+            continue
+        raise PaperError("%s: %s is %s, not a folder of the comparison's "
+                         "runs: move it away (nothing was changed)"
+                         % (run["name"], p, kind))
     if os.path.lexists(folder):
         shutil.rmtree(folder)
     os.makedirs(folder)

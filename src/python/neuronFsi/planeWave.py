@@ -704,7 +704,10 @@ def writeInflow(path, wave, height, pulse, what, overwrite=False):
                   for line in what.split("\n")), height, wave.Z,
         " ".join("(%.17g %.17g)" % (a, b) for a, b in pulse), wave.dz,
         ambient[0], ambient[1], wave.thermoDigest, inflowDigest(rows))]
-    text += ["    (%.17g %.17g %.17g)\n" % r for r in rows]
+    # each number as OpenFOAM reads it (a denormal ahead of the wave as 0:
+    # a dictionary's number up to 1e-300 is refused since fix19i)
+    text += ["    (%.17g %.17g %.17g)\n" % tuple(_asRead(x) for x in r)
+             for r in rows]
     text.append(");\n")
     if not overwrite and os.path.exists(path):
         try:

@@ -41,7 +41,8 @@ import math
 import os
 import re
 
-from . import allrunOptions, damageIndicators, foamDict, uncertainty
+from . import (allrunOptions, damageIndicators, foamDict, options, ranges,
+               uncertainty)
 
 DICT = "system/pulseStudyDict"
 KEYWORDS = ("baseCase", "baseOptions", "overpressure", "duration",
@@ -53,6 +54,21 @@ THRESHOLD_KEYWORDS = ("indicator", "value", "source")
 STUDY_OPTIONS = ("-amplitude", "-pulse", "-writeInterval", "-noPlots",
                  "-noVTK", "-noRun")
 _UNIT = re.compile(r"\[(.*)\]\Z")
+
+
+# The most writes of a point's run: the solvers' default maxWrites
+# (src/foamTools/inputChecks.H checkStepCount)
+MAX_WRITES = 10000
+
+
+# The valid range of a threshold of each indicator (its unit): above 0
+# for those that are 0 at rest (von Mises, stretch, rate, heating), either
+# sign but not 0 for the pressure (compression +, tension -); the upper
+# bounds those of the inputs (src/eos/physicalBounds.H: a modulus below
+# 1e13 Pa, temperatures below 1e5 K), a strain of 10 (a stretch of 4.6)
+THRESHOLD_RANGES = {"pressure": "[-1e13, 1e13]", "vonMises": "(0, 1e13)",
+                    "strain": "(0, 10]", "strainRate": "(0, 1e13]",
+                    "temperatureRise": "(0, 1e5)"}
 
 
 class StudyError(Exception):
@@ -126,6 +142,14 @@ def _threshold(name, t, where):
     if _UNIT.match(u).group(1) != unit:
         raise StudyError("%s: value %g %s: the unit of indicator %s is [%s] "
                          "(SI)" % (w, x, u, ind, unit))
+    # a value the indicator reaches from the start (0 or below for the
+    # positive ones: its time above was the whole run) or never (adv pass
+    # st36, st42: accepted silently)
+    if x not in ranges.Interval(THRESHOLD_RANGES[ind]) or x == 0:
+        raise StudyError("%s: value %g %s is outside the valid range %s %s "
+                         "of indicator %s%s" % (
+                             w, x, u, THRESHOLD_RANGES[ind], u, ind,
+                             " (not 0)" if ind == "pressure" else ""))
     if not isinstance(t["source"], str) or len(t["source"].split()) < 3:
         raise StudyError("%s: source '%s' is not a citation (authors, year,"
                          " journal, the quantity, the test's conditions)"
@@ -184,16 +208,19 @@ def read(case, dictionary=DICT):
     if not os.path.isfile(os.path.join(base, "Allrun")):
         raise StudyError("%s: entry 'baseCase': %s has no Allrun"
                          % (path, base))
+    # a blast case's folders, looked at before any point runs (adv pass
+    # ps30: a base without 0.orig failed in every point's Allrun)
+    for sub, what in (("0.orig", "the initial fields its Allrun copies to "
+                       "0"), ("constant", "its dictionaries"),
+                      ("system", "its dictionaries")):
+        if not os.path.isdir(os.path.join(base, sub)):
+            raise StudyError("%s: entry 'baseCase': %s has no folder %s (%s)"
+                             ": not a blast case" % (path, base, sub, what))
     s = {"case": case, "dict": path, "base": base}
     s["overpressure"] = _grid(d, "overpressure", path, "Pa")
     s["duration"] = _grid(d, "duration", path, "s")
     s["sampleInterval"] = _number(d, "sampleInterval", path)
     s["window"] = _number(d, "strainRateWindow", path)
-    m = s["window"]/s["sampleInterval"]
-    if abs(m - round(m)) > 1e-9*m or round(m) < 1:
-        raise StudyError("%s: entry 'strainRateWindow' = %g s is not a whole"
-                         " number of sampleInterval = %g s" % (
-                             path, s["window"], s["sampleInterval"]))
     th = d["thresholds"]
     if not isinstance(th, dict):
         raise StudyError("%s: entry 'thresholds' is not a sub-dictionary"
@@ -235,6 +262,32 @@ def read(case, dictionary=DICT):
                     "the header of %s/Allrun)" % base)
                 raise StudyError("%s: entry '%s': %g: %s%s"
                                  % (path, key, v, err, why))
+    # the writes of a point's run: its endTime over sampleInterval, at most
+    # the solvers' maxWrites (adv pass ps09: sampleInterval 1e-15 s wrote
+    # without end); the window a whole number of samples within the run
+    # (ps04, pu04: 5e-324 s was a ZeroDivisionError or an OverflowError)
+    given = allrunOptions.parse(decl, s["baseOptions"])
+    end = float(given["-endTime"]) if "-endTime" in given \
+        else _baseEndTime(base, path)
+    sample = s["sampleInterval"]
+    if not end/MAX_WRITES <= sample <= end:
+        raise StudyError(
+            "%s: entry 'sampleInterval' = %g s is outside the valid range "
+            "[%g, %g] s: a point's run to endTime %g s would write %s times"
+            " (at most %d: the solvers' maxWrites, each write a time "
+            "directory of the point's case)"
+            % (path, sample, end/MAX_WRITES, end, end, "%.3g" % (end/sample)
+               if sample < end else "no", MAX_WRITES))
+    if not sample <= s["window"] <= end:
+        raise StudyError(
+            "%s: entry 'strainRateWindow' = %g s is outside the valid range"
+            " [%g, %g] s (from sampleInterval to the run's endTime)"
+            % (path, s["window"], sample, end))
+    m = s["window"]/sample
+    if abs(m - round(m)) > 1e-9*m:
+        raise StudyError("%s: entry 'strainRateWindow' = %g s is not a whole"
+                         " number of sampleInterval = %g s" % (
+                             path, s["window"], sample))
     s["uncertainty"] = None
     if "uncertainty" in d:
         try:
@@ -260,6 +313,21 @@ def read(case, dictionary=DICT):
                             if extra else ""))
     s["nProcs"] = int(n)
     return s
+
+
+def _baseEndTime(base, where):
+    """endTime [s] of the base case's system/controlDict (its Allrun's
+    default run length)."""
+    path = os.path.join(base, "system", "controlDict")
+    try:
+        end = foamDict.read(path).get("endTime")
+    except (foamDict.DictError, OSError) as err:
+        raise StudyError("%s: entry 'baseCase': %s" % (where, err))
+    if isinstance(end, bool) or not isinstance(end, (int, float)) \
+            or not end > 0:
+        raise StudyError("%s: entry 'baseCase': %s has no positive endTime "
+                         "(%s)" % (where, path, foamDict.format_value(end)))
+    return float(end)
 
 
 def projectDir():
@@ -405,6 +473,11 @@ def readRecord(path, point=None):
     def damaged(why):
         return StudyError("%s: the point's record is damaged (%s): its "
                           "values cannot be used. %s" % (path, why, rerun))
+    # a FIFO blocked the study at the open (adv pass ps25): looked at first
+    kind = options.notARegularFile(path)
+    if kind:
+        raise StudyError("%s is %s, not a point's record (a file written by "
+                         "pulseStudy). %s" % (path, kind, rerun))
     try:
         with open(path) as f:
             r = json.load(f)

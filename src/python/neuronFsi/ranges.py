@@ -1,6 +1,8 @@
 """A valid range written as in mathematics, "(0, 1]", "[1, inf)": the one
 form in which our Python code states and checks a range (the Allrun
-options, neuronFsi.allrunOptions; calibrateCell's settings)."""
+options, neuronFsi.allrunOptions; calibrateCell's settings); and the
+magnitudes of a number OpenFOAM's reader takes (readerRangeProblem: every
+number of a dictionary, foamDict, and of a command-line option, options)."""
 
 import math
 import re
@@ -39,3 +41,33 @@ class Interval:
 
     def __str__(self):
         return self.text
+
+
+# The magnitudes OpenFOAM's reader of a number takes (ScalarRead: above
+# 1e300 an error, non-zero at most 1e-300 read as 0 silently): the limits of
+# src/foamTools/inputChecks.H (readerLargest, readerSmallest), so that an
+# input means the same to the Python tools as to the solvers (issue 19:
+# 5e-324 in a dictionary or an option was a ZeroDivisionError or an
+# OverflowError in the scripts, 0 in the solvers)
+READER_LARGEST = 1e300
+READER_SMALLEST = 1e-300
+
+
+def readerRangeProblem(token, v):
+    """Why the number v written as token is outside what OpenFOAM's reader
+    takes as written ("" if it is inside, or not a number): above
+    READER_LARGEST (or beyond a double), or not zero and at most
+    READER_SMALLEST (a denormal such as 5e-324, or 1e-400 which Python
+    reads as 0). The words of foamTools::readerRangeText."""
+    if isinstance(v, bool) or not isinstance(v, (int, float)) \
+            or (isinstance(v, float) and math.isnan(v)):
+        return ""
+    mantissa = re.split("[eE]", token, maxsplit=1)[0]
+    nonzero = any(c in "123456789" for c in mantissa)
+    if abs(v) > READER_LARGEST:
+        return ("is beyond the range of a number (OpenFOAM reads |x| <= "
+                "1e+300; a double holds |x| <= 1.79769e+308)")
+    if nonzero and abs(v) <= READER_SMALLEST:
+        return ("is below the smallest magnitude OpenFOAM reads (1e-300): "
+                "it would be read as 0")
+    return ""

@@ -16,6 +16,74 @@ std::string names(const Map& m)
     return s;
 }
 
+//- Throw a parameter SolidError unless a structured mesh of counts n[0..dims)
+//  between lo and hi is buildable: each count at least 1 (0 divided by
+//  zero: adv32 f11), at most maxStructuredElements in all (counted in
+//  doubles: 2e15 overflowed int and allocated without end, f12), hi above
+//  lo in every component (an inverted box failed later, f15)
+void checkStructured
+(
+    const char* what,
+    int dims,
+    const int* n,
+    const double* lo,
+    const double* hi
+)
+{
+    const auto list = [dims](const auto* v, const char* unit)
+    {
+        std::ostringstream os;
+        os << "(";
+        for (int d = 0; d < dims; ++d) os << (d ? " " : "") << v[d];
+        os << ")" << unit;
+        return os.str();
+    };
+    const std::string cells(list(n, ""));
+    double total = 1;
+    for (int d = 0; d < dims; ++d)
+    {
+        if (n[d] < 1)
+        {
+            throw solid::SolidError
+            (
+                solid::SolidError::Kind::parameter, std::string(what)
+              + ": entry 'cells' = " + cells + ": each count must be a"
+                " whole number of at least 1 (valid range [1, "
+              + std::to_string(solid::Mesh::maxStructuredElements)
+              + "] elements in all)"
+            );
+        }
+        total *= n[d];
+    }
+    if (total > double(solid::Mesh::maxStructuredElements))
+    {
+        std::ostringstream os;
+        os << what << ": entry 'cells' = " << cells << " makes " << total
+           << " elements, more than the limit "
+           << solid::Mesh::maxStructuredElements << " (valid range [1, "
+           << solid::Mesh::maxStructuredElements << "] elements in all:"
+           << " a model needs about " << solid::Mesh::bytesPerElement/1000
+           << " kB per element, " << total*solid::Mesh::bytesPerElement/1e9
+           << " GB for this mesh)";
+        throw solid::SolidError(solid::SolidError::Kind::parameter, os.str());
+    }
+    for (int d = 0; d < dims; ++d)
+    {
+        if (!(hi[d] > lo[d]))
+        {
+            std::ostringstream os;
+            os << what << ": entries 'min' = " << list(lo, " m")
+               << " and 'max' = " << list(hi, " m") << ": max must be"
+               << " above min in every component (component " << d
+               << ": " << hi[d] << " m is not above " << lo[d] << " m)";
+            throw solid::SolidError
+            (
+                solid::SolidError::Kind::parameter, os.str()
+            );
+        }
+    }
+}
+
 } // namespace
 
 
@@ -180,6 +248,9 @@ solid::Mesh solid::Mesh::rectangle
     int nr, int nz, double r0, double r1, double z0, double z1
 )
 {
+    const int n[2] = {nr, nz};
+    const double lo[2] = {r0, z0}, hi[2] = {r1, z1};
+    checkStructured("rectangle", 2, n, lo, hi);
     Mesh m;
     m.type = ElementType::quad4Axi;
     auto id = [&](int i, int j) { return j*(nr + 1) + i; };
@@ -230,6 +301,11 @@ solid::Mesh solid::Mesh::box
     int nx, int ny, int nz, const Vec3& lo, const Vec3& hi
 )
 {
+    {
+        const int n[3] = {nx, ny, nz};
+        const double l[3] = {lo(0), lo(1), lo(2)}, h[3] = {hi(0), hi(1), hi(2)};
+        checkStructured("box", 3, n, l, h);
+    }
     Mesh m;
     m.type = ElementType::hex8;
     auto id = [&](int i, int j, int k)

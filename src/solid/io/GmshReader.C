@@ -84,6 +84,8 @@ struct MshModel
     std::vector<Vec3> nodeX;
     //- Element blocks per entity (dim, tag), entities in ascending order
     std::map<std::pair<int, int>, std::vector<ElementBlock>> elements;
+    //- Whether the file declares its entities ($Entities, MSH 4.1)
+    bool entities = false;
 
     //- Physical groups (dim, tag) in gmsh's order: by dimension, then tag
     std::set<std::pair<int, int>> groups() const
@@ -257,6 +259,7 @@ public:
     void entities41(MshModel& m)
     {
         const auto n = integers(need("Entities"), "entity counts", 4);
+        m.entities = true;
         for (int dim = 0; dim < 4; ++dim)
         {
             const std::size_t ne = count(n[dim], "entity count");
@@ -337,6 +340,34 @@ public:
                 "elementType numElementsInBlock", 4);
             ElementBlock blk;
             blk.type = int(bh[2]);
+            // The block's entity as declared: an undeclared one, or one of
+            // another dimension than its elements', made the elements
+            // belong to no region, and the error blamed a boundary group
+            // (adv32 g17, g18)
+            const std::string entity
+            (
+                "(" + std::to_string(bh[0]) + ", " + std::to_string(bh[1])
+              + ")"
+            );
+            const ElementTypeInfo* info = typeInfo(blk.type);
+            if (info && info->dim != bh[0])
+            {
+                fail("element block of entity " + entity + " (dimension "
+                   + std::to_string(bh[0]) + ") holds elements of type '"
+                   + info->name + "', of dimension "
+                   + std::to_string(info->dim) + ": a block's entity "
+                     "dimension must be its elements' dimension");
+            }
+            if
+            (
+                m.entities
+             && !m.entityPhysicals.count({int(bh[0]), int(bh[1])})
+            )
+            {
+                fail("element block of entity " + entity + " not in "
+                     "$Entities: every block's entity (dimension, tag) must "
+                     "be declared there, with its physical groups");
+            }
             const std::size_t ne = count(bh[3], "element count");
             int nn = -1;
             for (std::size_t k = 0; k < ne; ++k)
@@ -561,6 +592,36 @@ solid::Mesh solid::readGmsh(const std::string& fileName, double scale)
     mesh.type = dim == 2 ? ElementType::quad4Axi : ElementType::hex8;
     const int wanted = dim == 2 ? gmshQuad4 : gmshHex8;
     const int nen = mesh.nen();
+
+    // An axisymmetric (2D) mesh lies in the plane z = 0: a mesh in another
+    // plane was projected onto it silently (adv32 g22: every node at
+    // z = y/2 ran as the planar mesh). Round-off allowed: 1e-6 of the
+    // mesh's extent in r and z (gmsh's geometric tolerance is below 1e-8
+    // of a cell)
+    if (dim == 2 && !msh.nodeX.empty())
+    {
+        Vec3 lo(msh.nodeX[0]), hi(msh.nodeX[0]);
+        for (const Vec3& x : msh.nodeX)
+        {
+            lo = lo.cwiseMin(x);
+            hi = hi.cwiseMax(x);
+        }
+        const double tol = 1e-6*std::max(hi(0) - lo(0), hi(1) - lo(1));
+        for (std::size_t i = 0; i < msh.nodeX.size(); ++i)
+        {
+            const Vec3& x = msh.nodeX[i];
+            if (std::abs(x(2)) > tol)
+            {
+                std::ostringstream os;
+                os  << "gmsh file '" << fileName << "': node "
+                    << msh.nodeTags[i] << " at (" << x.transpose()
+                    << ") is not in the plane z = 0 of an axisymmetric (2D)"
+                    << " mesh (r, z, 0): |z| must be at most " << tol
+                    << " (1e-6 of the mesh's extent, in the file's units)";
+                throw SolidError(SolidError::Kind::mesh, os.str());
+            }
+        }
+    }
 
     std::map<std::size_t, int> index;
     for (std::size_t i = 0; i < msh.nodeTags.size(); ++i)

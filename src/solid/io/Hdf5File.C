@@ -28,6 +28,15 @@ hid_t openFile(const std::string& name, solid::Hdf5File::Mode mode)
                            " other side)"))
         );
     }
+    // No clean-up of the library at exit: a file whose close failed (a
+    // full disk) stays registered, and HDF5's atexit handler closed it
+    // again after the error had been reported, crashing in H5F__close_cb
+    // (adv32 d02, d04: sigSegv, exit 139). Every write of ours goes to a
+    // temporary file closed and renamed in its scope (AtomicFile.H), so a
+    // file still open at exit is one whose write failed or was abandoned.
+    // H5dont_atexit works only before the library's first call: here
+    static const bool noCleanupAtExit = H5dont_atexit() >= 0;
+    static_cast<void>(noCleanupAtExit);
     // Failures are reported as SolidErrors naming the file, not as the
     // library's error stack on stderr
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);

@@ -208,6 +208,14 @@ void solid::Model::buildPattern()
 }
 
 
+const Eigen::SparseMatrix<double>& solid::Model::tangentPattern()
+{
+    requireInitialised("tangentPattern");
+    if (!pattern_.built) buildPattern();
+    return pattern_.K;
+}
+
+
 bool solid::Model::addToPattern
 (
     const Triplets& t,

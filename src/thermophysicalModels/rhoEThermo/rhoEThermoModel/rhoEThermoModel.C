@@ -2,6 +2,7 @@
 #include "eosStatus.H"
 #include "isentropeTable.H"
 #include "keywordCheck.H"
+#include "subDict.H"
 
 #include <limits>
 
@@ -9,7 +10,7 @@ template<class Law>
 Law Foam::rhoEThermoModel<Law>::makeLaw(const dictionary& dict)
 {
     const dictionary& coeffs =
-        dict.subDict(word(Law::typeName) + "Coeffs");
+        foamTools::subDict(dict, word(Law::typeName) + "Coeffs");
     foamTools::checkKeywords(coeffs, coeffNames());
     try
     {

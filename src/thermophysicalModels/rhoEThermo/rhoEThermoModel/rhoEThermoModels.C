@@ -9,6 +9,7 @@ Description
 #include "MieGruneisen.H"
 #include "StiffenedGas.H"
 #include "IdealGas.H"
+#include "inputChecks.H"
 
 namespace Foam
 {
@@ -17,7 +18,7 @@ namespace
 {
     //- Read a coefficient [SI], optionally preceded by its dimensions,
     //  which must then match dims (a FatalIOError naming the entry, not
-    //  the abort of dimensioned<Type>::initialize)
+    //  the abort of dimensioned<Type>::initialize); nothing after it
     scalar readCoeff
     (
         const dictionary& dict,
@@ -40,6 +41,11 @@ namespace
         }
         const scalar value = readScalar(is);
         is.check(FUNCTION_NAME);
+        OStringStream expected;
+        expected
+            << "one number (SI), optionally preceded by its dimensions "
+            << dims;
+        foamTools::checkEntryEnd(dict, name, is, expected.str());
         return value;
     }
 }
