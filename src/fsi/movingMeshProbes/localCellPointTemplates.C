@@ -124,11 +124,13 @@ Foam::tmp<Foam::Field<Type>> Foam::localCellPoint::coupledValues
 
     List<DynamicList<label, 16>> faces(meshPoints.size());
     List<scalarList> w(meshPoints.size());
+    boolList processor(meshPoints.size(), false);
     scalarField sumW(nPoints, Zero);
     forAll(meshPoints, i)
     {
         const label pointi = meshPoints[i];
-        if (onProcessorPatch(pointi))
+        processor[i] = onProcessorPatch(pointi);
+        if (processor[i])
         {
             faces[i] = weightingFaces(pointi);
             w[i] = inverseDistances(pointi, faces[i], sumW[pointi]);
@@ -145,7 +147,7 @@ Foam::tmp<Foam::Field<Type>> Foam::localCellPoint::coupledValues
     forAll(meshPoints, i)
     {
         const label pointi = meshPoints[i];
-        if (onProcessorPatch(pointi))
+        if (processor[i])
         {
             values[pointi] =
                 weightedSum(vf, pointi, faces[i], w[i], sumW[pointi]);
