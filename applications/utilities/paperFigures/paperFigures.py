@@ -1074,7 +1074,10 @@ def make(cases, used, s, out, tutorials, results):
     project = os.path.dirname(tutorials)
     for name, u in used.items():
         f = u["folder"]
-        if f.startswith(results + os.sep):
+        # the comparison's own runs (postProcessing/runs of the paper
+        # case) may lie under results too: they are not the main job's
+        own = (os.sep + paperCases.RUNS + os.sep) in (f + os.sep)
+        if f.startswith(results + os.sep) and not own:
             where = "the main job's, tutorials/%s" % os.path.relpath(
                 f, results)
         elif f.startswith(project + os.sep):
