@@ -87,6 +87,7 @@ def prepareBase(s, out):
     every point's case is copied; {file: digest} of its files."""
     staging = os.path.join(out, "base")
     if os.path.lexists(staging):
+        caseRuns.checkNoEarlierRun(staging)
         shutil.rmtree(staging)
     shutil.copytree(s["base"], staging, symlinks=True)
     if os.path.isfile(os.path.join(staging, "Allclean")):
@@ -100,6 +101,7 @@ def prepareBase(s, out):
 def runPoint(s, staging, point, inputs, folder, keep):
     """Run one point in folder/case; its record."""
     if os.path.lexists(folder):         # interrupted earlier: from scratch
+        caseRuns.checkNoEarlierRun(os.path.join(folder, "case"))
         shutil.rmtree(folder)
     os.makedirs(folder)
     case = os.path.join(folder, "case")
@@ -587,6 +589,11 @@ def main():
         OUT = ps.output(a.dict)
         out = os.path.join(case, OUT)
         os.makedirs(os.path.join(out, "points"), exist_ok=True)
+        # a run left going by a study killed with SIGKILL: refused before
+        # anything is removed or started (adv33 x07)
+        for label in sorted(os.listdir(os.path.join(out, "points"))):
+            caseRuns.checkNoEarlierRun(
+                os.path.join(out, "points", label, "case"))
         staging, digests = prepareBase(s, out)
         pts = ps.points(s)
         upts = ps.uncertaintyPoints(s)

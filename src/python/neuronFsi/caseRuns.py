@@ -7,13 +7,20 @@ pulseStudy (applications/utilities) share.
 runIn runs a shell command in a folder with its output in a log there
 (signals.call: a termination signal ends it and what it started), and
 raises RunError naming the command, its exit code and the log when it
-fails. inParallel calls job(item) for every item, nProcs at a time (threads;
+fails. While the command runs, folder/.caseRun names its process group
+(pgid, host, command): an application killed with SIGKILL cannot end the
+runs it started, and these go on in their folders; checkNoEarlierRun(
+folder) raises RunError naming such a run (processes of that group whose
+working directory is in the folder) before the folder is removed or run
+again (issue 19, adv33 x07: pulseStudy started again replaced a point's
+folder under the run its SIGKILLed predecessor had left). inParallel calls job(item) for every item, nProcs at a time (threads;
 each job runs its own program), and returns the results in the items'
 order; the first exception of a job is raised once the others are done.
 """
 
 import concurrent.futures
 import os
+import socket
 import subprocess
 import time
 
@@ -24,16 +31,98 @@ class RunError(Exception):
     pass
 
 
+MARKER = ".caseRun"
+
+
+def _marker(folder):
+    """(pgid, host, command) of folder's marker, or None."""
+    try:
+        with open(os.path.join(folder, MARKER)) as f:
+            w = f.read().split("\n")
+        return int(w[0].split()[1]), w[1].split(None, 1)[1], \
+            w[2].split(None, 1)[1]
+    except (OSError, ValueError, IndexError):
+        return None
+
+
+def _groupIn(pgid, folder):
+    """[(pid, name)] of the live processes of group pgid whose working
+    directory is folder or below it (/proc of this host)."""
+    real = os.path.realpath(folder)
+    found = []
+    for d in os.listdir("/proc"):
+        if not d.isdigit():
+            continue
+        try:
+            with open("/proc/%s/stat" % d) as f:
+                stat = f.read()
+            name = stat[stat.index("(") + 1:stat.rindex(")")]
+            rest = stat[stat.rindex(")") + 2:].split()
+            if rest[0] == "Z" or int(rest[2]) != pgid:
+                continue
+            cwd = os.readlink("/proc/%s/cwd" % d)
+        except (OSError, ValueError, IndexError):
+            continue
+        if cwd == real or cwd.startswith(real + os.sep):
+            found.append((int(d), name))
+    return found
+
+
+def checkNoEarlierRun(folder):
+    """RunError if a run that runIn started in folder (its marker) still
+    has processes working there: started by an application that was killed
+    without ending it. A marker without such processes is removed."""
+    m = _marker(folder)
+    if m is None:
+        return
+    pgid, host, command = m
+    if host != socket.gethostname():
+        raise RunError(
+            "%s: a run ('%s') was started there on host %s and may still "
+            "go on; it cannot be checked from here. Nothing was removed: "
+            "if it is over, remove %s" % (folder, command, host,
+                                          os.path.join(folder, MARKER)))
+    procs = _groupIn(pgid, folder)
+    if procs:
+        raise RunError(
+            "%s: a run started there earlier ('%s') still goes on: process "
+            "group %d (%s), left by an application that was killed (SIGKILL "
+            "cannot end the runs it started). Nothing was removed: wait for "
+            "it to end or end it with 'kill -- -%d', then start again"
+            % (folder, command, pgid, ", ".join(
+                "%s pid %d" % (n, p) for p, n in procs[:4]), pgid))
+    try:
+        os.remove(os.path.join(folder, MARKER))
+    except OSError:
+        pass
+
+
 def runIn(folder, command, log):
     """Run the shell command in folder, its stdout and stderr to
     folder/log (log itself if absolute); the wall time [s]. RunError if it
-    fails."""
+    fails, or if a run started there earlier still goes on."""
+    checkNoEarlierRun(folder)
     t0 = time.time()
     path = os.path.join(folder, log)
-    with open(path, "w") as f:
-        # ended, with what the shell started, on SIGTERM, SIGHUP, SIGINT
-        rc = signals.call(command, shell=True, cwd=folder, stdout=f,
-                          stderr=subprocess.STDOUT)
+    marker = os.path.join(folder, MARKER)
+
+    def started(p):
+        with open(marker, "w") as m:
+            m.write("pgid %d\nhost %s\ncommand %s\n"
+                    % (p.pid, socket.gethostname(), command))
+
+    try:
+        with open(path, "w") as f:
+            # ended, with what the shell started, on SIGTERM, SIGHUP,
+            # SIGINT
+            rc = signals.call(command, started=started, shell=True,
+                              cwd=folder, stdout=f,
+                              stderr=subprocess.STDOUT)
+    finally:
+        try:
+            os.remove(marker)
+        except OSError:
+            pass
     if rc:
         raise RunError("'%s' failed (exit %d), see %s" % (command, rc, path))
     return time.time() - t0

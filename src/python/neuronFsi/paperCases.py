@@ -290,6 +290,10 @@ def make(run, case):
                          "runs: move it away (nothing was changed)"
                          % (run["name"], p, kind))
     if os.path.lexists(folder):
+        try:                            # a killed comparison's run
+            caseRuns.checkNoEarlierRun(folder)
+        except caseRuns.RunError as err:
+            raise PaperError("%s: %s" % (run["name"], err))
         shutil.rmtree(folder)
     os.makedirs(folder)
     for f in trackedFiles(run["tutorial"]):

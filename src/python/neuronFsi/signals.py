@@ -54,16 +54,19 @@ def _kill(p):
         pass
 
 
-def call(cmd, **kwargs):
+def call(cmd, started=None, **kwargs):
     """subprocess.call(cmd, **kwargs) in a process group of its own, which
     stopOn's handler kills; Stopped instead of a start once a signal
-    came."""
+    came. started(p), if given, is called with the Popen once the program
+    runs (its pid is its process group's id)."""
     with _lock:
         if _stopped:
             raise Stopped(_stopped[0])
         p = subprocess.Popen(cmd, start_new_session=True, **kwargs)
         _children.add(p)
     try:
+        if started:
+            started(p)
         if _stopped:            # the handler ran while p was starting
             _kill(p)
         return p.wait()

@@ -1,0 +1,96 @@
+"""neuronFsi.caseRuns: a run that an application started and could not
+end (the application killed with SIGKILL) is named, and its folder is not
+removed or run again under it (issue 19, adv33 x07)."""
+import os
+import signal
+import socket
+import subprocess
+import sys
+import time
+import unittest
+
+from fixtures import TempDirTestCase
+from neuronFsi import caseRuns
+
+# an application that starts a long run with runIn and is then killed
+APP = r"""
+import sys
+from neuronFsi import caseRuns
+caseRuns.runIn(sys.argv[1], "sleep 60; true", "log.run")
+"""
+
+
+def waitFor(path, seconds=20):
+    t0 = time.time()
+    while not os.path.exists(path):
+        if time.time() - t0 > seconds:
+            raise AssertionError("%s did not appear" % path)
+        time.sleep(0.05)
+
+
+class CaseRuns(TempDirTestCase):
+
+    def testMarkerOnlyWhileRunning(self):
+        caseRuns.runIn(self.tmp, "test -f %s" % caseRuns.MARKER, "log")
+        self.assertFalse(os.path.exists(
+            os.path.join(self.tmp, caseRuns.MARKER)))
+        with self.assertRaises(caseRuns.RunError):
+            caseRuns.runIn(self.tmp, "exit 3", "log")
+        self.assertFalse(os.path.exists(
+            os.path.join(self.tmp, caseRuns.MARKER)))
+
+    def testRunLeftByAKilledApplication(self):
+        folder = os.path.join(self.tmp, "point")
+        os.makedirs(folder)
+        app = subprocess.Popen([sys.executable, "-c", APP, folder])
+        waitFor(os.path.join(folder, caseRuns.MARKER))
+        time.sleep(0.3)                 # the shell has started its sleep
+        app.kill()
+        app.wait()
+        with open(os.path.join(folder, caseRuns.MARKER)) as f:
+            pgid = int(f.read().split()[1])
+        try:
+            with self.assertRaises(caseRuns.RunError) as c:
+                caseRuns.checkNoEarlierRun(folder)
+            msg = str(c.exception)
+            self.assertIn(folder, msg)
+            self.assertIn("process group %d" % pgid, msg)
+            self.assertIn("sleep", msg)
+            self.assertIn("Nothing was removed", msg)
+            # runIn refuses too, before it starts anything
+            with self.assertRaises(caseRuns.RunError):
+                caseRuns.runIn(folder, "touch started", "log.again")
+            self.assertFalse(os.path.exists(os.path.join(folder, "started")))
+        finally:
+            os.killpg(pgid, signal.SIGKILL)
+        t0 = time.time()
+        while caseRuns._groupIn(pgid, folder) and time.time() - t0 < 10:
+            time.sleep(0.05)
+        # the run is over: the marker is stale, removed, runs go on
+        caseRuns.checkNoEarlierRun(folder)
+        self.assertFalse(os.path.exists(
+            os.path.join(folder, caseRuns.MARKER)))
+        caseRuns.runIn(folder, "touch started", "log.again")
+        self.assertTrue(os.path.exists(os.path.join(folder, "started")))
+
+    def testGroupWorkingElsewhereIsNotTheRun(self):
+        # a reused group id: live processes, but none in the folder
+        self.write(caseRuns.MARKER, "pgid %d\nhost %s\ncommand ./Allrun\n"
+                   % (os.getpgrp(), socket.gethostname()))
+        self.addCleanup(os.chdir, os.getcwd())
+        os.chdir(os.path.dirname(self.tmp))
+        caseRuns.checkNoEarlierRun(self.tmp)
+        self.assertFalse(os.path.exists(
+            os.path.join(self.tmp, caseRuns.MARKER)))
+
+    def testRunOnAnotherHost(self):
+        self.write(caseRuns.MARKER, "pgid 12345\nhost elsewhere.example\n"
+                   "command ./Allrun -pulse 5e-9\n")
+        with self.assertRaises(caseRuns.RunError) as c:
+            caseRuns.checkNoEarlierRun(self.tmp)
+        self.assertIn("elsewhere.example", str(c.exception))
+        self.assertIn(caseRuns.MARKER, str(c.exception))
+
+
+if __name__ == "__main__":
+    unittest.main()
