@@ -59,6 +59,29 @@ class ColumnFiles(TempDirTestCase):
         with self.assertRaisesRegex(pp.ColumnFileError, "no column 'p'"):
             t.column("p")
 
+    def testFiniteAndIncreasing(self):
+        # adv32 pl01, pl02: nan forces and times going back, named with the
+        # file's line
+        p = self.write("force.dat", "# time [s]  force [N]  stage\n"
+                       "0.1 1e-10 A\n0.2 nan A\n0.15 2e-10 B\n")
+        t = pp.readTable(p)
+        self.assertTrue(np.isnan(t.column("force")[1]))
+        with self.assertRaisesRegex(pp.ColumnFileError,
+                                    r"force.dat, line 3: column 'force' is "
+                                    r"nan, not a finite number"):
+            t.column("force", finite=True)
+        with self.assertRaisesRegex(pp.ColumnFileError,
+                                    r"force.dat, line 4: column 'time' = "
+                                    r"0.15 is not after the previous row's "
+                                    r"0.2 \(line 3\)"):
+            t.column("time", increasing=True)
+        np.testing.assert_array_equal(t.column("time", finite=True),
+                                      [0.1, 0.2, 0.15])
+        with self.assertRaisesRegex(pp.ColumnFileError,
+                                    r"line 2: column 'stage' is 'A', not a "
+                                    r"number"):
+            t.column("stage", finite=True)
+
     def testNamesLineAmongNotes(self):
         # solidProbes.dat: a description before the names, a note per probe
         # after them
