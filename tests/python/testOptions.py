@@ -167,5 +167,19 @@ class FileKind(unittest.TestCase):
             foamDict.read(fifo)
 
 
+class CasePath(unittest.TestCase):
+
+    def testBackslashNamed(self):
+        # adv32 u02: OpenFOAM's own error on the case's files; named, and
+        # no other directory claimed (fileName::validate keeps it)
+        msg = options.casePathProblem("/tmp/a\\b")
+        self.assertIn("holds a backslash", msg)
+        self.assertNotIn("it would run in", msg)
+        msg = options.casePathProblem("/tmp/a b")
+        self.assertIn('holds a space, which OpenFOAM\'s file names cannot '
+                      'hold (it would run in "/tmp/ab")', msg)
+        self.assertEqual(options.casePathProblem("/tmp/ab"), "")
+
+
 if __name__ == "__main__":
     unittest.main()
