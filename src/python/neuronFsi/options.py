@@ -42,8 +42,8 @@ def notARegularFile(path):
 
 def _invalidCharacters(path):
     """The characters of path that OpenFOAM's file names drop (fileName::
-    valid: white space, a quote) or its strings take as an escape (a
-    backslash, adv32 u02), each once, named ("a space, '\"'"); "" if
+    valid: white space, a quote) or change (a backslash, taken for a '/',
+    adv32 u02), each once, named ("a space, '\"'"); "" if
     there are none."""
     names = []
     for c in path:
@@ -71,8 +71,8 @@ def casePathProblem(path, how=""):
     named = _invalidCharacters(full)
     if not named:
         return ""
-    # a backslash is kept by OpenFOAM's fileName::validate
-    kept = "".join(c for c in full
+    # OpenFOAM takes a backslash for a '/'
+    kept = "".join("/" if c == "\\" else c for c in full
                    if c == "\\" or not _invalidCharacters(c))
     return ("the case directory \"%s\"%s holds %s, which OpenFOAM's file "
             "names cannot hold%s.\n    Nothing was read or written: rename "
