@@ -177,6 +177,23 @@ class ColumnFiles(TempDirTestCase):
         np.testing.assert_allclose(d[:, 0]*1e10, [1, 2, 2.5, 3, 3.5])
         np.testing.assert_array_equal(d[:, 2], [1, 1, 1, 2, 2])
 
+    def testTimeGoingBackInASegment(self):
+        # a time before the previous row's, or not a number, in a segment:
+        # named with file and line (fix19k, the class of adv32 pl02)
+        self.write("postProcessing/fsi/0/coupling.dat", HEADER + "".join(
+            row(t*1e-10, 1) for t in (1, 2, 1.5, 3)))
+        with self.assertRaisesRegex(pp.ColumnFileError,
+                                    r"0/coupling.dat, line 5: the time "
+                                    r"\(first column\) 1.5e-10 is before "
+                                    r"the previous row's 2e-10 \(line 4\)"):
+            pp.series(self.tmp, "fsi/coupling.dat")
+        self.write("postProcessing/fsi/0/coupling.dat", HEADER + row(1e-10)
+                   + "nan 1e-10 1 1e-7 1 0 0 0 0.5\n")
+        with self.assertRaisesRegex(pp.ColumnFileError,
+                                    r"line 4: the time \(first column\) is "
+                                    r"nan, not a finite number"):
+            pp.series(self.tmp, "fsi/coupling.dat")
+
     def testEmptySegmentSkipped(self):
         # a start killed before its first step wrote the header only
         self.write("postProcessing/fsi/0/coupling.dat",

@@ -229,12 +229,41 @@ def series(case, log, vectors=False):
     segments, not the directory names: these are rounded to the
     controlDict's timePrecision. vectors: see readTable (e.g. "probes/U":
     time, then x y z of each probe)."""
-    parts = [readTable(p, vectors).data() for t0, p in segments(case, log)]
+    parts = []
+    for t0, p in segments(case, log):
+        table = readTable(p, vectors)
+        a = table.data()
+        _timesForward(table, a)
+        parts.append(a)
     parts = [a for a in parts if len(a)]
     if not parts:
         raise ColumnFileError("%s: no rows in %s" % (case, log))
     out = [a[a[:, 0] < parts[k + 1][0, 0]] for k, a in enumerate(parts[:-1])]
     return np.vstack(out + [parts[-1]])
+
+
+def _timesForward(table, a):
+    """The first column of a (table's rows as floats), a time, finite and
+    never going back within the file: else a ColumnFileError naming the
+    file and line (as Table.column's checks; equal times are let through:
+    a time printed with few digits repeats)."""
+    if not len(a):
+        return
+    t = a[:, 0]
+    bad = np.flatnonzero(~np.isfinite(t))
+    if bad.size:
+        k = bad[0]
+        raise ColumnFileError("%s, line %d: the time (first column) is %s, "
+                              "not a finite number" % (
+                                  table.path, table.lineNo[k],
+                                  table.rows[k][0]))
+    back = np.flatnonzero(np.diff(t) < 0)
+    if back.size:
+        k = back[0] + 1
+        raise ColumnFileError("%s, line %d: the time (first column) %.10g "
+                              "is before the previous row's %.10g (line %d)"
+                              % (table.path, table.lineNo[k], t[k],
+                                 t[k - 1], table.lineNo[k - 1]))
 
 
 def latest(case, log):
