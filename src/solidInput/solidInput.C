@@ -9,6 +9,7 @@
 #include "vector2D.H"
 
 #include "GmshReader.H"
+#include "fileKind.H"
 #include "SolidError.H"
 #include "keywordCheck.H"
 #include "inputChecks.H"
@@ -96,9 +97,15 @@ solid::Mesh Foam::solidInput::mesh() const
             if (!file.isAbsolute()) file = caseDir_/file;
             if (!isFile(file))
             {
+                // a directory (adv32 z04: "Cannot find"), a FIFO, ...
+                // named as such
+                const std::string kind(foamTools::notARegularFile(file));
                 FatalIOErrorInFunction(dict)
-                    << "Cannot find " << file << " (entry 'file'; run "
-                    << "cellMesh first)" << exit(FatalIOError);
+                    << "entry 'file' = " << file << ": "
+                    << (kind.empty() ? std::string("no such file (run "
+                        "cellMesh first)") : kind + ", not a gmsh mesh file")
+                        .c_str()
+                    << exit(FatalIOError);
             }
             const scalar scale = foamTools::readInRangeOrDefault<scalar>
             (

@@ -138,6 +138,19 @@ def bad_targets(work):
                          "row 3, column 'force': negative force"),
         "text.csv": ("time [s],force [N]\n0.1,abc\n", "row 2, column "
                      "'force': 'abc' is not a number"),
+        # adv32 k01, k01b, k03, k11 (fix19k): SI units only, times from
+        # 0, forces of a cell
+        "ms.csv": ("time [ms],force [N]\n1,1e-11\n", "column 'time' "
+                   "(header 'time [ms]', column 1) is in 'ms'"),
+        "nN.csv": ("time [s],force [nN]\n0.1,0.01\n", "column 'force' "
+                   "(header 'force [nN]', column 2) is in 'nN'"),
+        "before0.csv": ("time [s],force [N]\n-0.1,1e-11\n", "row 2, "
+                        "column 'time': -0.1 s is before the protocol's "
+                        "start"),
+        "huge.csv": ("time [s],force [N]\n0.1,1e300\n", "row 2, column "
+                     "'force': 1e+300 N is outside the valid range"),
+        "bom.csv": ("\ufefftime [s],force [N]\n0.1,1e-11\n1e6,2e-11\n",
+                    "the measured curve ends at 1e+06 s"),
     }
     for fname, (text, expect) in csvs.items():
         open(os.path.join(case, fname), "w").write(text)

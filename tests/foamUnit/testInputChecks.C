@@ -88,11 +88,57 @@ TEST(inputChecks, timeControls)
         {
             EXPECT_NE(err.message().find("'maxCo' = 0"), std::string::npos)
                 << err.message();
-            EXPECT_NE(err.message().find("(0, inf)"), std::string::npos)
+            EXPECT_NE(err.message().find("(0, 1]"), std::string::npos)
                 << err.message();
+        }
+        // Above the schemes' stable Courant number 1 (adv32 pr21)
+        EXPECT_NO_THROW
+        (
+            foamTools::checkTimeControls(tc.time(), true, 1, 1e-5)
+        );
+        try
+        {
+            foamTools::checkTimeControls(tc.time(), true, 1.01, 1e-5);
+            ADD_FAILURE() << "maxCo 1.01 was accepted";
+        }
+        catch (const Foam::IOerror& err)
+        {
+            EXPECT_NE
+            (
+                err.message().find
+                (
+                    "entry 'maxCo' = 1.01 is outside the valid range (0, 1]"
+                ),
+                std::string::npos
+            ) << err.message();
         }
         // Without adjustTimeStep maxCo and maxDeltaT are not used
         EXPECT_NO_THROW(foamTools::checkTimeControls(tc.time(), false, 0, 0));
+        // ... but a fixed deltaT's Courant number is at most 1 (pr22)
+        EXPECT_NO_THROW(foamTools::checkCourantNumber(tc.time(), false, 1));
+        EXPECT_NO_THROW(foamTools::checkCourantNumber(tc.time(), true, 3));
+        try
+        {
+            foamTools::checkCourantNumber(tc.time(), false, 2);
+            ADD_FAILURE() << "a fixed deltaT of Courant number 2 ran";
+        }
+        catch (const Foam::IOerror& err)
+        {
+            for
+            (
+                const std::string m :
+                {
+                    "entry 'deltaT' = ",
+                    " s (adjustTimeStep no) gives the step from time 0 s",
+                    "a Courant number of 2, above 1",
+                    "Valid: deltaT <= "
+                }
+            )
+            {
+                EXPECT_NE(err.message().find(m), std::string::npos)
+                    << "no '" << m << "' in: " << err.message();
+            }
+        }
     }
     {
         foamUnit::testCase tc("inputChecks", 0);

@@ -39,6 +39,17 @@ class IndenterProperties(unittest.TestCase):
                                     r"^f: no protocol table"):
             ip.setProtocol("protocol ;\n", [("A", "load", "1", "1")], "f")
 
+    def testProtocolDuration(self):
+        rows = [("A", "load", 0.3e-6, 1.41e-6), ("B", "hold", 0, 15),
+                ("C1", "unload", 10e-6, 2e-6)]
+        self.assertAlmostEqual(ip.protocolDuration(rows),
+                               4.7 + 15 + 0.2, places=12)
+        # calibrateCell's delta0 replaces the first row's depth
+        self.assertAlmostEqual(ip.protocolDuration(rows, 0.6e-6),
+                               2 + 15 + 0.2, places=12)
+        self.assertIsNone(ip.protocolDuration([("A", "push", 1, 1)]))
+        self.assertIsNone(ip.protocolDuration([("A", "load", 0, 1)]))
+
 
 if __name__ == "__main__":
     unittest.main()

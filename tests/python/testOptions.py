@@ -167,5 +167,19 @@ class FileKind(unittest.TestCase):
             foamDict.read(fifo)
 
 
+class CasePath(unittest.TestCase):
+
+    def testBackslashNamed(self):
+        # adv32 u02: OpenFOAM ran in /tmp/a/b ("cannot open root
+        # directory")
+        msg = options.casePathProblem("/tmp/a\\b")
+        self.assertIn('holds a backslash, which OpenFOAM\'s file names '
+                      'cannot hold (it would run in "/tmp/a/b")', msg)
+        msg = options.casePathProblem("/tmp/a b")
+        self.assertIn('holds a space, which OpenFOAM\'s file names cannot '
+                      'hold (it would run in "/tmp/ab")', msg)
+        self.assertEqual(options.casePathProblem("/tmp/ab"), "")
+
+
 if __name__ == "__main__":
     unittest.main()

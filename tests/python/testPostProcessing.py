@@ -59,6 +59,29 @@ class ColumnFiles(TempDirTestCase):
         with self.assertRaisesRegex(pp.ColumnFileError, "no column 'p'"):
             t.column("p")
 
+    def testFiniteAndIncreasing(self):
+        # adv32 pl01, pl02: nan forces and times going back, named with the
+        # file's line
+        p = self.write("force.dat", "# time [s]  force [N]  stage\n"
+                       "0.1 1e-10 A\n0.2 nan A\n0.15 2e-10 B\n")
+        t = pp.readTable(p)
+        self.assertTrue(np.isnan(t.column("force")[1]))
+        with self.assertRaisesRegex(pp.ColumnFileError,
+                                    r"force.dat, line 3: column 'force' is "
+                                    r"nan, not a finite number"):
+            t.column("force", finite=True)
+        with self.assertRaisesRegex(pp.ColumnFileError,
+                                    r"force.dat, line 4: column 'time' = "
+                                    r"0.15 is not after the previous row's "
+                                    r"0.2 \(line 3\)"):
+            t.column("time", increasing=True)
+        np.testing.assert_array_equal(t.column("time", finite=True),
+                                      [0.1, 0.2, 0.15])
+        with self.assertRaisesRegex(pp.ColumnFileError,
+                                    r"line 2: column 'stage' is 'A', not a "
+                                    r"number"):
+            t.column("stage", finite=True)
+
     def testNamesLineAmongNotes(self):
         # solidProbes.dat: a description before the names, a note per probe
         # after them
@@ -153,6 +176,23 @@ class ColumnFiles(TempDirTestCase):
         d = pp.series(self.tmp, "fsi/coupling.dat")
         np.testing.assert_allclose(d[:, 0]*1e10, [1, 2, 2.5, 3, 3.5])
         np.testing.assert_array_equal(d[:, 2], [1, 1, 1, 2, 2])
+
+    def testTimeGoingBackInASegment(self):
+        # a time before the previous row's, or not a number, in a segment:
+        # named with file and line (fix19k, the class of adv32 pl02)
+        self.write("postProcessing/fsi/0/coupling.dat", HEADER + "".join(
+            row(t*1e-10, 1) for t in (1, 2, 1.5, 3)))
+        with self.assertRaisesRegex(pp.ColumnFileError,
+                                    r"0/coupling.dat, line 5: the time "
+                                    r"\(first column\) 1.5e-10 is before "
+                                    r"the previous row's 2e-10 \(line 4\)"):
+            pp.series(self.tmp, "fsi/coupling.dat")
+        self.write("postProcessing/fsi/0/coupling.dat", HEADER + row(1e-10)
+                   + "nan 1e-10 1 1e-7 1 0 0 0 0.5\n")
+        with self.assertRaisesRegex(pp.ColumnFileError,
+                                    r"line 4: the time \(first column\) is "
+                                    r"nan, not a finite number"):
+            pp.series(self.tmp, "fsi/coupling.dat")
 
     def testEmptySegmentSkipped(self):
         # a start killed before its first step wrote the header only

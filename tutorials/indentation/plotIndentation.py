@@ -41,6 +41,6 @@ for case in sys.argv[1:] or ["."]:
     try:
         rows, peaks = ip.read(case)
     except ip.IndentationPlotError as err:
-        sys.exit("plotIndentation.py: %s" % err)
+        sys.exit("plotIndentation.py: error: %s" % err)
     ip.forceDepth(case, rows, os.path.join(case, "indentation.png"))
     table(case, peaks)

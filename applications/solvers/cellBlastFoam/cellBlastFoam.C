@@ -86,6 +86,11 @@ int main(int argc, char *argv[])
         const dictionary& cd = runTime.controlDict();
         const bool adjust = cd.getOrDefault<bool>("adjustTimeStep", false);
         const scalar maxDeltaT = cd.getOrDefault<scalar>("maxDeltaT", GREAT);
+        // deltaT, maxDeltaT > 0, maxCo in (0, 1] (adv32 pr21)
+        foamTools::checkTimeControls
+        (
+            runTime, adjust, cd.getOrDefault<scalar>("maxCo", 1.0), maxDeltaT
+        );
         if (adjust)
         {
             foamTools::checkStepCount(runTime, maxDeltaT, "maxDeltaT");

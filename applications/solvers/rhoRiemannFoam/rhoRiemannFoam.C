@@ -121,6 +121,8 @@ int main(int argc, char *argv[])
         fluid.fluxes();
 
         const scalar CoNum = fluid.courantNumber(runTime.deltaTValue());
+        // a fixed deltaT above the stability limit stops before its step
+        foamTools::checkCourantNumber(runTime, adjustTimeStep, CoNum);
         #include "setDeltaT.H"
 
         ++runTime;

@@ -77,7 +77,8 @@ import numpy as np
 from scipy import optimize, stats
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-from neuronFsi import foamDict, options, ranges, signals  # noqa: E402
+from neuronFsi import foamDict, indenterProperties, options, ranges, \
+    signals  # noqa: E402
 from forwardModel import ForwardModel, ModelError  # noqa: E402
 from targets import Targets, TargetError  # noqa: E402
 
@@ -261,6 +262,7 @@ class Calibration:
                         for r in protocol)):
             raise InputError("%s: 'protocol' must be a list of rows "
                              "(stage motion rate amount)" % where)
+        self._check_curve_times(protocol, where)
         print("Forward model: cellIndentationFoam in %s" % args.work)
         self.model = ForwardModel(self.case, args.work,
                                   setting(d, "meshSizeFactor", 1.0, where,
@@ -270,6 +272,42 @@ class Calibration:
         self.lock = threading.Lock()
         self.cache = {}
         self.history = []
+
+    def _check_curve_times(self, protocol, where):
+        """A measured curve ending after the protocol, refused before any
+        forward run (adv32 k04: refused after the first one). The
+        protocol's duration from its rows (neuronFsi.indenterProperties.
+        protocolDuration), with a fitted delta0 at its min (the shortest
+        run the fit may make); not known when stage A ends at a
+        forceTarget (then checked after each forward run)."""
+        src = "%s: entry 'protocol'" % where
+        ip_path = os.path.join(self.case, "constant", "indenterProperties")
+        try:
+            ipd = foamDict.read(ip_path)
+        except (OSError, foamDict.DictError):
+            return          # the forward model's set-up names it
+        if protocol is None:
+            protocol = ipd.get("protocol")
+            src = "%s: entry 'protocol'" % ip_path
+        force_target = ipd.get("forceTarget", 0)
+        if not isinstance(protocol, list) or (
+                isinstance(force_target, (int, float))
+                and force_target > 0):
+            return
+        delta0 = [p for p in self.params if p.name == "delta0"]
+        first = delta0[0].lo if delta0 else None
+        end = indenterProperties.protocolDuration(protocol, first)
+        if end is None:
+            return          # a bad row: cellIndentationFoam names it
+        for it in self.targets.items:
+            if it["kind"] == "curve" and it["time"][-1] > end*(1 + 1e-9):
+                raise InputError(
+                    "%s: the measured curve ends at %g s (its last row), "
+                    "after the end of the protocol (%s), %g s%s: the "
+                    "forward runs have no force there; valid times [0, %g] "
+                    "s" % (it["file"], it["time"][-1], src, end,
+                           " with delta0 at its min %g m" % first
+                           if delta0 and delta0[0].fit else "", end))
 
     def _check_names(self, where):
         regions = self.model.materials

@@ -189,10 +189,15 @@ class ForwardModel:
                                               fatal[-1:] if fatal else
                                               text.splitlines()[-8:])))
         pp = os.path.join(d, "postProcessing/indentation")
-        p = postProcessing.readTable(os.path.join(pp, "peaks.dat"))
-        peaks = dict(zip(p.column("label"), p.column("force").tolist()))
-        f = postProcessing.readTable(os.path.join(pp, "force.dat"))
-        t, F = f.column("time").tolist(), f.column("force").tolist()
+        try:
+            p = postProcessing.readTable(os.path.join(pp, "peaks.dat"))
+            peaks = dict(zip(p.column("label"),
+                             p.column("force", finite=True).tolist()))
+            f = postProcessing.readTable(os.path.join(pp, "force.dat"))
+            t = f.column("time", increasing=True).tolist()
+            F = f.column("force", finite=True).tolist()
+        except postProcessing.ColumnFileError as err:
+            raise ModelError("the forward run in %s: %s" % (d, err))
         m = re.search(r"delta0 = (\S+) m", text)
         cpu = re.search(r"CPU time ([0-9.eE+-]+) s", text)
         out = dict(peaks=peaks, time=t, force=F, wall=wall,

@@ -16,8 +16,23 @@ class TargetError(Exception):
 
 
 def _header_name(cell):
-    """'time [s]' -> 'time'; 'Force(N)' -> 'force'."""
-    return re.split(r"[\[(]", cell.strip(), 1)[0].strip().lower()
+    """'time [s]' -> ('time', 's'); 'Force(N)' -> ('force', 'N'); 'time'
+    -> ('time', '')."""
+    m = re.match(r"\s*([^\[(]*?)\s*(?:[\[(]\s*([^\])]*?)\s*[\])])?\s*$",
+                 cell)
+    if not m:
+        return cell.strip().lower(), None
+    return m.group(1).lower(), m.group(2) or ""
+
+
+# a target force [N]: a cell's contact force is pN to nN; 1 mN would
+# crush it
+FORCE_RANGE = "[1e-15, 1e-3]"
+FORCE_MAX = 1e-3
+
+# the units of the columns read: SI only (a curve in ms and nN was read as
+# s and N without a word, adv32 k01, k01b)
+CURVE_UNITS = {"time": "s", "force": "N"}
 
 
 def read_curve(path):
@@ -26,12 +41,21 @@ def read_curve(path):
     ignored). Times strictly increasing, forces finite and >= 0."""
     if not os.path.isfile(path):
         raise TargetError("%s: no such file" % path)
-    with open(path, newline="") as f:
-        rows = [r for r in csv.reader(f) if r and any(c.strip() for c in r)]
+    # utf-8-sig: a byte-order mark (spreadsheet exports) is not part of
+    # the first column's name (adv32 k02: "missing column 'time'")
+    try:
+        with open(path, newline="", encoding="utf-8-sig") as f:
+            rows = [r for r in csv.reader(f)
+                    if r and any(c.strip() for c in r)]
+    except UnicodeDecodeError as err:
+        raise TargetError("%s: not a UTF-8 text file (byte %d): expected a "
+                          "CSV file with the columns 'time [s]' and "
+                          "'force [N]'" % (path, err.start))
     if not rows:
         raise TargetError("%s: empty file (expected a header row with the "
                           "columns 'time [s]' and 'force [N]')" % path)
-    names = [_header_name(c) for c in rows[0]]
+    heads = [_header_name(c) for c in rows[0]]
+    names = [h[0] for h in heads]
     for want in ("time", "force"):
         if names.count(want) > 1:
             # was: the first one used, without a word (adv30 k15)
@@ -49,6 +73,14 @@ def read_curve(path):
                               "expected 'time [s]' and 'force [N]')"
                               % (path, want, ", ".join(rows[0])))
         cols[want] = names.index(want)
+        unitGiven = heads[cols[want]][1]
+        if unitGiven not in ("", CURVE_UNITS[want]):
+            raise TargetError(
+                "%s: column '%s' (header '%s', column %d) is in '%s': the "
+                "valid unit is [%s] (or none: SI); convert the column to %s"
+                % (path, want, rows[0][cols[want]].strip(),
+                   cols[want] + 1, unitGiven, CURVE_UNITS[want],
+                   CURVE_UNITS[want]))
     t, F = [], []
     for n, r in enumerate(rows[1:], start=2):
         vals = {}
@@ -73,6 +105,19 @@ def read_curve(path):
         if vals["force"] < 0:
             raise TargetError("%s, row %d, column 'force': negative force "
                               "%g N" % (path, n, vals["force"]))
+        # a cell's contact force: a force of 1e300 N overflowed in the
+        # report (adv32 k11)
+        if vals["force"] > FORCE_MAX:
+            raise TargetError("%s, row %d, column 'force': %g N is outside "
+                              "the valid range [0, %g] N (a cell's contact "
+                              "force: pN to nN; the column must be in N)"
+                              % (path, n, vals["force"], FORCE_MAX))
+        # the protocol starts at 0 s (adv32 k03: negative times accepted)
+        if vals["time"] < 0:
+            raise TargetError("%s, row %d, column 'time': %g s is before "
+                              "the protocol's start: the valid range is "
+                              "[0, the protocol's end] s"
+                              % (path, n, vals["time"]))
         if t and vals["time"] <= t[-1]:
             raise TargetError("%s, row %d, column 'time': time %g s is not "
                               "after the previous row's %g s (time must "
@@ -85,9 +130,6 @@ def read_curve(path):
     return np.array(t), np.array(F)
 
 
-# a target force [N]: a cell's contact force is pN to nN; 1 mN would
-# crush it
-FORCE_RANGE = "[1e-15, 1e-3]"
 
 
 def _sigmaAgainst(at, sigma, force):

@@ -75,8 +75,17 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     // (1e-250 was gmsh's failure, "nothing written"; adv pass cm18)
     f_ = foamTools::readInRangeOrDefault<scalar>
     (
-        dict, "nucleusVolumeFraction", "(-)", 1e-3, 1 - SMALL, true, 1.0/3.0
+        dict, "nucleusVolumeFraction", "(-)", 1e-3, 1, true, 1.0/3.0
     );
+    // below 1 (a range open at 1: adv32 cm05, 1 was refused with the
+    // range [0.001, 1] printed for 1 - SMALL)
+    if (!(f_ < 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'nucleusVolumeFraction' = " << f_ << " (-) is outside"
+            << " the valid range [0.001, 1) (-): a nucleus filling the cell "
+            << "leaves no cytoplasm and no membrane" << exit(FatalIOError);
+    }
 
     // The inner parallel surface exists below the smallest radius of
     // curvature of the outer ellipse (at the equator H^2/a, on the axis

@@ -4,6 +4,7 @@
 #include "mathematicalConstants.H"
 #include "OSspecific.H"
 #include "mshFile.H"
+#include "OStringStream.H"
 #include <gmsh.h>
 #include <algorithm>
 #include <set>
@@ -503,10 +504,28 @@ Foam::fileName Foam::cellMesher::writeTemporary(const fileName& file) const
     }
     if (nElements == 0)
     {
+        // the entries named with their values (adv32 cm17: membraneSize
+        // 1e-8 m, "these sizes" named none). gmsh's quadrilateral mesher
+        // fails without a message for some neighbouring sizes: measured
+        // (fix19k, tests/badInput/cellMeshDict) membraneSize 2e-7 m or less
+        // next to contactSize 4e-7 m fails, 3e-7 m meshes, and 2e-7 m
+        // meshes with contactSize 2e-7 m
+        OStringStream contact;
+        if (geom_.contactRadius() > 0)
+        {
+            contact << ", contactSize " << geom_.contactSize() << " m";
+        }
         FatalErrorInFunction
-            << "gmsh produced no elements for these sizes; " << file
-            << " is not written. Change the mesh sizes in system/cellMeshDict"
-            << exit(FatalError);
+            << "gmsh produced no elements for the sizes of "
+            << "system/cellMeshDict: entries nucleusSize "
+            << geom_.nucleusSize() << " m, cytoplasmSize "
+            << geom_.cytoplasmSize() << " m, membraneSize "
+            << geom_.membraneSize() << " m" << contact.str().c_str()
+            << " (membraneThickness " << geom_.t() << " m, membraneLayers "
+            << geom_.layers() << "); " << file << " is not written." << nl
+            << "    gmsh fails so when neighbouring sizes differ much (a "
+            << "membraneSize below the contactSize or far below the "
+            << "cytoplasmSize): bring them closer" << exit(FatalError);
     }
 
     gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);

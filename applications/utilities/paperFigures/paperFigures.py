@@ -400,8 +400,9 @@ def contactRadius(case, t):
     """The contact radius [m] of force.dat's row at time t [s]."""
     table = postProcessing.readTable(os.path.join(
         case, "postProcessing", "indentation", "force.dat"))
-    time = table.column("time")
-    return float(table.column("contactRadius")[np.argmin(abs(time - t))])
+    time = table.column("time", increasing=True)
+    return float(table.column("contactRadius", finite=True)[
+        np.argmin(abs(time - t))])
 
 
 def figures78Indentation(cases, out, res, md):

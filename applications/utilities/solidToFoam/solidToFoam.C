@@ -146,24 +146,13 @@ int main(int argc, char *argv[])
     #include "createTime.H"
 
     const fileName h5Name(args[1]);
-    // A plain name: the region is written to constant/<region>,
-    // system/<region> and <time>/<region> (was: -region ../x wrote outside
-    // the case's layout; issue 19)
-    const string regionOption(args.opt<string>("region", "solid"));
-    if
+    // A plain name, not one of the case's own folders (issue 19; adv32
+    // h07, h08: -region constant, polyMesh accepted)
+    const word region
     (
-        regionOption.empty() || regionOption == "." || regionOption == ".."
-     || word::validate(regionOption) != regionOption
-    )
-    {
-        FatalErrorInFunction
-            << "option -region '" << regionOption.c_str() << "' is not a"
-            << " plain name (the region is written to constant/<region>,"
-            << " system/<region> and <time>/<region>): give a name without"
-            << " '/', spaces, quotes or ';', not '.' or '..'"
-            << exit(FatalError);
-    }
-    const word region(regionOption);
+        foamTools::regionOption(args, "solid", "constant/<region>, "
+            "system/<region> and <time>/<region>")
+    );
     const scalar angle =
         degToRad(args.opt<scalar>("wedgeAngle", 5.0));
     if (!(angle > 0 && angle < constant::mathematical::pi))

@@ -622,6 +622,8 @@ void Foam::fluidSolidInteraction::setDeltaT()
     const scalar maxCo = controlDict.lookupOrDefault<scalar>("maxCo", 1.0);
     const scalar maxDeltaT =
         controlDict.lookupOrDefault<scalar>("maxDeltaT", GREAT);
+    // also as modified during the run (runTimeModifiable)
+    foamTools::checkTimeControls(runTime, adjustTimeStep, maxCo, maxDeltaT);
 
     // A wedge face pair carries no wave across (axisymmetry, the swirl is
     // removed in the ALE stages): out of the Courant number, else the thin
@@ -635,7 +637,8 @@ void Foam::fluidSolidInteraction::setDeltaT()
         }
     }
 
-    const scalar CoNum = fluid_.courantNumber(runTime.deltaTValue());
+    const scalar stepDeltaT0 = runTime.deltaTValue();
+    const scalar CoNum = fluid_.courantNumber(stepDeltaT0);
 
     // writeControl adjustableRunTime: the step shortened so that steps end
     // on the next write time, as Time::adjustDeltaT does, but with the
@@ -686,6 +689,15 @@ void Foam::fluidSolidInteraction::setDeltaT()
     {
         setDeltaT(solidDt, true);
     }
+
+    // A fixed deltaT (within the solid's limit) above the stability limit
+    // stops before the step (adv32 pr22, pr24)
+    foamTools::checkCourantNumber
+    (
+        runTime,
+        adjustTimeStep,
+        CoNum*runTime.deltaTValue()/max(stepDeltaT0, VSMALL)
+    );
 }
 
 

@@ -40,12 +40,15 @@ def read(case):
     d = os.path.join(case, "postProcessing", "indentation")
     try:
         f = postProcessing.readTable(os.path.join(d, "force.dat"))
-        rows = list(zip(f.column("time"), f.column("depth"),
-                        f.column("force"), f.column("stage")))
+        # times increasing, numbers finite (adv32 pl01, pl02: nan forces
+        # and times going back were plotted, exit 0)
+        rows = list(zip(f.column("time", increasing=True),
+                        f.column("depth", finite=True),
+                        f.column("force", finite=True), f.column("stage")))
         p = postProcessing.readTable(os.path.join(d, "peaks.dat"))
         peaks = {label: (t, z, F) for label, t, z, F in zip(
-            p.column("label"), p.column("time"), p.column("depth"),
-            p.column("force"))}
+            p.column("label"), p.column("time", finite=True),
+            p.column("depth", finite=True), p.column("force", finite=True))}
     except postProcessing.ColumnFileError as err:
         raise IndentationPlotError(str(err))
     return rows, peaks

@@ -26,3 +26,27 @@ def setProtocol(text, rows, name="<text>"):
         raise ProtocolError(f"{name}: no protocol table "
                             "(protocol ( ... );)")
     return new
+
+
+def protocolDuration(rows, firstAmount=None):
+    """The duration [s] of a protocol's rows (stage, kind, rate, amount)
+    as cellIndentationFoam runs them (src/solid/drivers/
+    IndentationProtocol.H): a hold lasts its amount [s], a load or unload
+    row amount/rate (amount [m], rate [m/s]). firstAmount replaces the
+    first row's amount (calibrateCell's delta0). None when a row is not
+    such a row (its reader names it)."""
+    total = 0.0
+    for k, row in enumerate(rows):
+        try:
+            kind, rate, amount = str(row[1]), float(row[2]), float(row[3])
+        except (IndexError, TypeError, ValueError):
+            return None
+        if k == 0 and firstAmount is not None:
+            amount = float(firstAmount)
+        if kind == "hold":
+            total += amount
+        elif kind in ("load", "unload") and rate > 0:
+            total += amount/rate
+        else:
+            return None
+    return total

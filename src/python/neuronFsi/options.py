@@ -42,12 +42,14 @@ def notARegularFile(path):
 
 def _invalidCharacters(path):
     """The characters of path that OpenFOAM's file names drop (fileName::
-    valid: white space, a quote), each once, named ("a space, '\"'");
-    "" if there are none."""
+    valid: white space, a quote) or change (a backslash, taken for a '/',
+    adv32 u02), each once, named ("a space, '\"'"); "" if
+    there are none."""
     names = []
     for c in path:
-        if c in " \t\n\r\v\f\"'":
-            name = {" ": "a space", "\t": "a tab", "\n": "a newline"}.get(
+        if c in " \t\n\r\v\f\"'\\":
+            name = {" ": "a space", "\t": "a tab", "\n": "a newline",
+                    "\\": "a backslash"}.get(
                 c, "'%s'" % c if c in "\"'" else repr(c))
             if name not in names:
                 names.append(name)
@@ -69,11 +71,14 @@ def casePathProblem(path, how=""):
     named = _invalidCharacters(full)
     if not named:
         return ""
-    kept = "".join(c for c in full if not _invalidCharacters(c))
+    # OpenFOAM takes a backslash for a '/'
+    kept = "".join("/" if c == "\\" else c for c in full
+                   if c == "\\" or not _invalidCharacters(c))
     return ("the case directory \"%s\"%s holds %s, which OpenFOAM's file "
-            "names cannot hold (it would run in \"%s\").\n    Nothing was "
-            "read or written: rename the directory (or one above it) "
-            "without such characters." % (full, how, named, kept))
+            "names cannot hold%s.\n    Nothing was read or written: rename "
+            "the directory (or one above it) without such characters."
+            % (full, how, named, " (it would run in \"%s\")" % kept
+               if kept != full else ""))
 
 
 def _numbers(s):

@@ -76,10 +76,13 @@ class Table:
     rows    the rows as lists of strings
     """
 
-    def __init__(self, path, header, rows):
+    def __init__(self, path, header, rows, lineNo=None):
         self.path = path
         self.header = header
         self.rows = rows
+        # the file's line of each row (1-based), for messages
+        self.lineNo = lineNo if lineNo is not None \
+            else list(range(1, len(rows) + 1))
         self.names, self.units = [], []
         # the names line: the first with as many names as a row has
         # columns (a description may come before it, notes after it)
@@ -103,9 +106,42 @@ class Table:
         except ValueError as err:
             raise ColumnFileError("%s: not a number (%s)" % (self.path, err))
 
-    def column(self, name):
+    def column(self, name, finite=False, increasing=False):
         """One column by its header name: floats, or strings for a column
-        of words (e.g. the stage of force.dat)."""
+        of words (e.g. the stage of force.dat). finite: every value a
+        finite number; increasing: each above the one before (a time
+        column); else a ColumnFileError naming the file and line (adv32
+        pl01, pl02: nan forces and times going back were plotted)."""
+        col = self._column(name)
+        if not (finite or increasing):
+            return col
+        if not isinstance(col, np.ndarray):
+            k = next(k for k, v in enumerate(col)
+                     if not _isNumber(v))
+            raise ColumnFileError("%s, line %d: column '%s' is '%s', not a "
+                                  "number" % (self.path, self.lineNo[k],
+                                              name, col[k]))
+        bad = np.flatnonzero(~np.isfinite(col))
+        if bad.size:
+            k = bad[0]
+            raise ColumnFileError("%s, line %d: column '%s' is %s, not a "
+                                  "finite number" % (self.path,
+                                                     self.lineNo[k], name,
+                                                     self.rows[k][
+                                                         self.names.index(
+                                                             name)]))
+        if increasing:
+            back = np.flatnonzero(np.diff(col) <= 0)
+            if back.size:
+                k = back[0] + 1
+                raise ColumnFileError(
+                    "%s, line %d: column '%s' = %.10g is not after the "
+                    "previous row's %.10g (line %d): it must increase"
+                    % (self.path, self.lineNo[k], name, col[k], col[k - 1],
+                       self.lineNo[k - 1]))
+        return col
+
+    def _column(self, name):
         if not self.names:
             raise ColumnFileError("%s: no column '%s': the file has no "
                                   "header line ('# name ...'; an empty "
@@ -119,6 +155,14 @@ class Table:
             return np.array(col, dtype=float)
         except ValueError:
             return col
+
+
+def _isNumber(text):
+    try:
+        float(text)
+        return True
+    except ValueError:
+        return False
 
 
 def _lines(path):
@@ -157,7 +201,7 @@ def readTable(path, vectors=False):
                 if "\x00" in lines[i - 1] else ""
             raise ColumnFileError("%s, line %d: %d columns, the first row "
                                   "has %d%s" % (path, i, len(r), n, damaged))
-    table = Table(path, header, rows)
+    table = Table(path, header, rows, lineNo)
     table.notes = notes
     return table
 
@@ -185,12 +229,41 @@ def series(case, log, vectors=False):
     segments, not the directory names: these are rounded to the
     controlDict's timePrecision. vectors: see readTable (e.g. "probes/U":
     time, then x y z of each probe)."""
-    parts = [readTable(p, vectors).data() for t0, p in segments(case, log)]
+    parts = []
+    for t0, p in segments(case, log):
+        table = readTable(p, vectors)
+        a = table.data()
+        _timesForward(table, a)
+        parts.append(a)
     parts = [a for a in parts if len(a)]
     if not parts:
         raise ColumnFileError("%s: no rows in %s" % (case, log))
     out = [a[a[:, 0] < parts[k + 1][0, 0]] for k, a in enumerate(parts[:-1])]
     return np.vstack(out + [parts[-1]])
+
+
+def _timesForward(table, a):
+    """The first column of a (table's rows as floats), a time, finite and
+    never going back within the file: else a ColumnFileError naming the
+    file and line (as Table.column's checks; equal times are let through:
+    a time printed with few digits repeats)."""
+    if not len(a):
+        return
+    t = a[:, 0]
+    bad = np.flatnonzero(~np.isfinite(t))
+    if bad.size:
+        k = bad[0]
+        raise ColumnFileError("%s, line %d: the time (first column) is %s, "
+                              "not a finite number" % (
+                                  table.path, table.lineNo[k],
+                                  table.rows[k][0]))
+    back = np.flatnonzero(np.diff(t) < 0)
+    if back.size:
+        k = back[0] + 1
+        raise ColumnFileError("%s, line %d: the time (first column) %.10g "
+                              "is before the previous row's %.10g (line %d)"
+                              % (table.path, table.lineNo[k], t[k],
+                                 t[k - 1], table.lineNo[k - 1]))
 
 
 def latest(case, log):

@@ -34,7 +34,7 @@ simulation = [11.5, 11.0, 10.2, 5.3, 4.6, 4.3, 2.5, 2.5, 2.5]
 table = postProcessing.readTable(os.path.join(
     case, "postProcessing/indentation/peaks.dat"))
 peaks = {label: force*1e9 for label, force in
-         zip(table.column("label"), table.column("force"))}
+         zip(table.column("label"), table.column("force", finite=True))}
 run = logs.indentationRun(os.path.join(case, "log.cellIndentationFoam"))
 delta0, cpu, ne = run["delta0"]*1e6, run["cpu"], run["elements"]
 ours = [peaks[k] for k in labels]

@@ -167,6 +167,28 @@ void Foam::rhoEThermo::correctFromPT()
 }
 
 
+std::string Foam::rhoEThermo::stepHint() const
+{
+    const Time& runTime = mesh_.time();
+    OStringStream os;
+    if (runTime.timeIndex() > runTime.startTimeIndex())
+    {
+        // after a step: its length is the first suspect (adv32 pr17,
+        // pr19: "Invalid thermodynamic state" without naming deltaT)
+        os  << "    The step to this time, deltaT = " << runTime.deltaTValue()
+            << " s, may have been too long for this state: reduce maxCo"
+            << " (adjustTimeStep yes) or deltaT (adjustTimeStep no) of "
+            << "system/controlDict, or check the initial and boundary "
+            << "conditions." << nl;
+    }
+    else
+    {
+        os  << "    Check the initial and boundary conditions." << nl;
+    }
+    return os.str();
+}
+
+
 void Foam::rhoEThermo::checkStates(const string& hint) const
 {
     string reason;
@@ -182,8 +204,8 @@ void Foam::rhoEThermo::checkStates(const string& hint) const
             << ", time " << mesh_.time().timeName() << " s" << nl
             << "    rho = " << rho_[celli] << " kg/m^3, e = " << e_[celli]
             << " J/kg" << nl
-            << "    The last written time directory is kept; reduce maxCo"
-            << " or check the initial and boundary conditions."
+            << stepHint().c_str()
+            << "    The last written time directory is kept."
             << (hint.empty() ? "" : "\n    ") << hint.c_str()
             << exit(FatalError);
     }
