@@ -26,8 +26,9 @@ solidProbes (the Fig. 10 point, cytoplasm and nucleus side):
    averaged over the containing element, the scene's probe, and the same
    recovery applied to the scene's element pressures of solid.h5 (a check
    of the rebuilt weights);
- - each patch element's own pressure (solid.h5) against the 1D answer
-   averaged over that element;
+ - the containing element's pressure against the 1D answer at its
+   centroid's height, and each patch element's own pressure (solid.h5)
+   against the 1D answer averaged over that element;
 then, over every element of the cell, the incident 1-ns peak's error of
 the element's pressure against the 1D answer averaged over it, by region
 and by bins of r = sqrt(x^2 + y^2) and z (means; elements whose incident
@@ -205,6 +206,11 @@ def main():
                                                        Xp[2]))))
         if not fine:
             continue
+        print("   the containing element against the 1D answer at its "
+              "centroid's height: %s"
+              % fmt(measure(ts, P[:, host], ref.t,
+                            ref.at(cell.centroid(host)[2]),
+                            cell.centroid(host)[2])))
         print("   each patch element against the 1D answer averaged over it:")
         for e in sorted(patch, key=lambda i: i != host):
             c = cell.centroid(e)
