@@ -31,7 +31,11 @@ def waitFor(path, seconds=20):
 class CaseRuns(TempDirTestCase):
 
     def testMarkerOnlyWhileRunning(self):
-        caseRuns.runIn(self.tmp, "test -f %s" % caseRuns.MARKER, "log")
+        # the marker is written once the program runs (its group's id is
+        # its pid): the command waits for it, up to 10 s
+        caseRuns.runIn(self.tmp, "for i in $(seq 100); do test -f %s && "
+                       "exit 0; sleep 0.1; done; exit 1" % caseRuns.MARKER,
+                       "log")
         self.assertFalse(os.path.exists(
             os.path.join(self.tmp, caseRuns.MARKER)))
         with self.assertRaises(caseRuns.RunError):
