@@ -39,6 +39,12 @@ import sys
 
 import numpy as np
 
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("bench/blast/run.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import bench, logs, msh, planeWave, postProcessing, scratch
 
 HERE = os.path.dirname(os.path.abspath(__file__))

@@ -47,6 +47,13 @@ import argparse
 import math
 import os
 
+import sys
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("fluidWedgeMesh.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import options
 
 p = argparse.ArgumentParser(add_help=False)

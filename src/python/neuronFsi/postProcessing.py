@@ -100,8 +100,26 @@ class Table:
         try:
             return np.array(self.rows, dtype=float).reshape(
                 len(self.rows), -1)
-        except ValueError as err:
-            raise ColumnFileError("%s: not a number (%s)" % (self.path, err))
+        except ValueError:
+            pass
+        # the first field that is not a number, named by file, line and
+        # column (adv33 sh25: "not a number (could not convert ...)",
+        # raised uncaught by the plot scripts)
+        lines = getattr(self, "lineNo", None) or range(1, len(self.rows) + 1)
+        for row, line in zip(self.rows, lines):
+            for k, value in enumerate(row):
+                try:
+                    float(value)
+                except ValueError:
+                    name = " ('%s')" % self.names[k] \
+                        if k < len(self.names) else ""
+                    raise ColumnFileError(
+                        "%s, line %d, column %d%s: %s is not a number%s"
+                        % (self.path, line, k + 1, name,
+                           repr(value).replace("\\x00", "\\0"),
+                           "; it holds zero bytes (a damaged file)"
+                           if "\x00" in value else ""))
+        raise ColumnFileError("%s: rows of different lengths" % self.path)
 
     def column(self, name):
         """One column by its header name: floats, or strings for a column
@@ -159,6 +177,7 @@ def readTable(path, vectors=False):
                                   "has %d%s" % (path, i, len(r), n, damaged))
     table = Table(path, header, rows)
     table.notes = notes
+    table.lineNo = lineNo
     return table
 
 
@@ -185,12 +204,76 @@ def series(case, log, vectors=False):
     segments, not the directory names: these are rounded to the
     controlDict's timePrecision. vectors: see readTable (e.g. "probes/U":
     time, then x y z of each probe)."""
-    parts = [readTable(p, vectors).data() for t0, p in segments(case, log)]
+    tables = [readTable(p, vectors) for t0, p in segments(case, log)]
+    sameHeader(tables)
+    parts = [t.data() for t in tables]
     parts = [a for a in parts if len(a)]
     if not parts:
         raise ColumnFileError("%s: no rows in %s" % (case, log))
     out = [a[a[:, 0] < parts[k + 1][0, 0]] for k, a in enumerate(parts[:-1])]
     return np.vstack(out + [parts[-1]])
+
+
+def sameHeader(tables):
+    """A ColumnFileError naming both files and the first line where they
+    differ unless every table (segment of one log) has the first one's
+    header: a run continued with other settings (a probe moved in
+    controlDict, adv33 b14, b08) writes another header, and its rows are
+    not the same series (they were joined under the first header's
+    locations)."""
+    first = next((t for t in tables if t.header), None)
+    for t in tables:
+        if not t.header or t.header == first.header:
+            continue
+        k = next((k for k, (a, b) in enumerate(zip(first.header, t.header))
+                  if a != b), min(len(first.header), len(t.header)))
+        line = lambda h: "'# %s'" % h[k] if k < len(h) else "no line"
+        raise ColumnFileError(
+            "%s and %s: the headers differ at header line %d: %s in the "
+            "first, %s in the later one: the run was continued with other "
+            "settings (e.g. a probe moved in system/controlDict), its "
+            "segments are not one series and were not joined. Compare "
+            "them separately, or run again from the start"
+            % (first.path, t.path, k + 1, line(first.header),
+               line(t.header)))
+
+
+def latestCommittedTime(case):
+    """The latest time [s] the solver wrote and committed in case (a time
+    directory with the write guard's .writeCommitted marker, in the case
+    or in processor0 for a parallel run), and its directory; (None, None)
+    if there is none."""
+    best = (None, None)
+    for d in glob.glob(os.path.join(case, "*", ".writeCommitted")) + \
+            glob.glob(os.path.join(case, "processor0", "*",
+                                   ".writeCommitted")):
+        d = os.path.dirname(d)
+        try:
+            t = float(os.path.basename(d))
+        except ValueError:
+            continue
+        if best[0] is None or t > best[0]:
+            best = (t, d)
+    return best
+
+
+def checkCovers(case, log, data):
+    """A ColumnFileError unless the rows data of our solver's log "dir/
+    file" (flushed at every step, and before each write time is
+    committed) reach the latest committed time of the case: a cut file
+    was taken as the whole run (adv33 pb07: interface maxima of 'the whole
+    run' from half the file, exit 0)."""
+    t, d = latestCommittedTime(case)
+    if t is None:
+        return
+    last = data[-1, 0] if len(data) else None
+    if last is None or last < t*(1 - 1e-9) - 1e-300:
+        raise ColumnFileError(
+            "%s: its rows end at %s, before the latest time the run wrote, "
+            "%.10g s (%s): the file is cut (or was replaced by an older "
+            "one), it does not cover the run"
+            % (os.path.join(case, "postProcessing", log),
+               "t = %.10g s" % last if last is not None else "no row", t, d))
 
 
 def latest(case, log):
