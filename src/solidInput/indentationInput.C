@@ -170,6 +170,41 @@ Foam::indentationInput::indentationInput
         );
     }
 
+    // The Time's entries cellIndentationFoam does not use, said as endTime
+    // is, whatever their value (adv33 cd03: deltaT 0 accepted without a
+    // word): the steps are indenterProperties', the outputs ours
+    {
+        DynamicList<word> unused;
+        for
+        (
+            const char* key :
+            {
+                "deltaT", "writeControl", "writeInterval", "writeFrequency",
+                "adjustTimeStep", "maxCo", "maxDeltaT", "purgeWrite"
+            }
+        )
+        {
+            if (controlDict.found(key))
+            {
+                unused.append(key);
+            }
+        }
+        if (unused.size())
+        {
+            Info<< "Note: system/controlDict's";
+            for (const word& key : unused)
+            {
+                Info<< " " << key;
+            }
+            Info<< " (OpenFOAM's Time's entries) are not used by"
+                << " cellIndentationFoam, whatever their values: its steps"
+                << " are constant/indenterProperties' maxDepthIncrement,"
+                << " holdDeltaT0, maxDeltaT and holdGrowth, its outputs"
+                << " controlDict's fieldWriteInterval and checkpointInterval"
+                << nl << endl;
+        }
+    }
+
     settings_.writeInterval = readInRange<scalar>
     (
         controlDict, "fieldWriteInterval", "s", 0, GREAT, true

@@ -50,6 +50,7 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     foamTools::resultGuard::addOption();
+    foamTools::writeGuard::addOption();      // -acceptEdited
     #include "setRootCaseListOptions.H"
     // setRootCase.H with checkCasePath before OpenFOAM checks the case
     #include "setRootCaseChecked.H"
@@ -72,6 +73,9 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     // The start time's name and the time its state was written at
     foamTools::checkTimeName(runTime);
+    // the start time's files and the mesh as the run that wrote them
+    // left them (their digests at the commit; adv33 sh05, b13)
+    foamTools::writeGuard::verify(args, runTime);
     // The boundary conditions' tables (a pulse): not empty, times
     // increasing, or an error naming file and patch
     foamTools::checkTables(runTime.timePath());

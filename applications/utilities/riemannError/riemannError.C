@@ -25,6 +25,8 @@ Description
 #include "riemannProblem.H"
 #include "anyExactRiemannSolver.H"
 #include "domainError.H"
+#include "caseLock.H"
+#include "writeGuard.H"
 
 using namespace Foam;
 
@@ -65,9 +67,14 @@ int main(int argc, char *argv[])
     );
     argList::noParallel();
     timeSelector::addOptions(false, true);
+    foamTools::writeGuard::addOption();      // -acceptEdited
 
     // setRootCase.H with checkCasePath before OpenFOAM checks the case
     #include "setRootCaseChecked.H"
+    // one writer per case: a solver running in it (or another utility)
+    // is named and nothing is written (adv33 lk10: setRiemannProblem
+    // -overwrite removed a running solver's time directories)
+    const foamTools::caseLock lock(args);
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
     // no directory 'nan' or '1e999' for the Time to take for a time
     foamTools::checkTimeDirectoryNames(args);
@@ -93,6 +100,18 @@ int main(int argc, char *argv[])
     // initial fields (issue 19)
     foamTools::requireExistingTimes(args, runTime);
     problem.requireRecordMatches(runTime);
+    // the results compared are the files the solver wrote, on the mesh it
+    // computed them on (their digests at the commit; adv33 sh22: the old
+    // fields compared on a new mesh's cells, exit 0)
+    for (const instant& t : timeDirs)
+    {
+        foamTools::writeGuard::verify
+        (
+            runTime.path()/t.name(),
+            args.found(foamTools::writeGuard::acceptEditedOption()),
+            "riemannError"
+        );
+    }
 
     // The law the results were computed with: each time rhoRiemannFoam
     // wrote records the digest of constant/thermophysicalProperties
