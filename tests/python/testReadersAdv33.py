@@ -119,5 +119,32 @@ class ScriptErrors(TempDirTestCase):
             FileNotFoundError(2, "No such file", "/a/missing.dat")))
 
 
+class SolidDigest(TempDirTestCase):
+
+    def testChangedValueRefused(self):
+        import h5py
+        import numpy as np
+        from neuronFsi import solidResults
+        p = os.path.join(self.tmp, "solid.h5")
+        u = np.zeros((4, 3))
+        with h5py.File(p, "w") as f:
+            f["mesh/coordinates"] = u
+            f["steps/0/displacement"] = u
+            f["steps/0"].attrs["time"] = 0.0
+            for k in ("mesh/coordinates", "steps/0/displacement"):
+                f[k].attrs["digest64"] = np.uint64(solidResults.digest64(u))
+        with solidResults.SolidResults(p) as r:
+            self.assertEqual(r.field("0", "displacement").shape, (4, 3))
+        with h5py.File(p, "a") as f:
+            f["steps/0/displacement"][0, 2] = np.nan
+        with solidResults.SolidResults(p) as r:
+            r.mesh("coordinates")
+            with self.assertRaisesRegex(
+                    solidResults.SolidResultsError,
+                    r"solid.h5: dataset /steps/0/displacement: its values "
+                    r"do not match their digest digest64"):
+                r.field("0", "displacement")
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -48,6 +48,10 @@ def message(err):
                 % err.filename)
     if isinstance(err, OSError) and err.filename:
         return "%s: %s" % (err.filename, err.strerror or err)
+    if isinstance(err, OSError) and err.errno:
+        # no file named (adv33 x12: a full disk inside matplotlib's save)
+        return "a file could not be written or read: %s" \
+            % (err.strerror or err)
     return None
 
 
