@@ -305,8 +305,14 @@ int main(int argc, char *argv[])
             runTime.globalPath()/"postProcessing"/"riemannError"
            /runTime.timeName();
         mkDir(dir);
+        // Both files written aside, checked, then renamed: a failed write
+        // (a full disk) leaves the earlier files, never a cut profile
+        // taken for the whole tube (adv33 x12, x15)
+        const fileName profileTmp(dir/".profile.dat.tmp");
+        const fileName errorsTmp(dir/".errors.dat.tmp");
+        bool written = true;
         {
-            OFstream os(dir/"profile.dat");
+            OFstream os(profileTmp);
             os.precision(12);
             os  << "# x [m]  rho rhoExact [kg/m^3]  u uExact [m/s]"
                 << "  p pExact [Pa]" << nl;
@@ -319,9 +325,11 @@ int main(int argc, char *argv[])
                     << u[celli] << ' ' << uX[celli] << ' '
                     << p[celli] << ' ' << pX[celli] << nl;
             }
+            os.flush();
+            written = written && os.good();
         }
         {
-            OFstream os(dir/"errors.dat");
+            OFstream os(errorsTmp);
             os.precision(10);
             os  << "# nCells L1rho[kg/m^3] L1u[m/s] L1p[Pa]"
                 << " relErrPStar relErrRhoStarL relErrRhoStarR"
@@ -329,6 +337,23 @@ int main(int argc, char *argv[])
                 << mesh.nCells() << ' ' << L1rho << ' ' << L1u << ' '
                 << L1p << ' ' << errPStar << ' ' << errRhoL << ' '
                 << errRhoR << ' ' << L1rhoSmooth << ' ' << L1pSmooth << nl;
+            os.flush();
+            written = written && os.good();
+        }
+        if
+        (
+            !written
+         || !Foam::mv(profileTmp, dir/"profile.dat")
+         || !Foam::mv(errorsTmp, dir/"errors.dat")
+        )
+        {
+            Foam::rm(profileTmp);
+            Foam::rm(errorsTmp);
+            FatalErrorInFunction
+                << "cannot write " << dir/"profile.dat" << " and "
+                << dir/"errors.dat" << " (is the disk full, or the"
+                << " directory not writable?). Nothing was replaced: the"
+                << " earlier files, if any, are kept" << exit(FatalError);
         }
 
         Info<< "    exact star state: p* = " << star.p << " Pa, u* = "
