@@ -476,6 +476,25 @@ Foam::indentationInput::addContact(solid::Model& model) const
         {
             zBottom = min(zBottom, x(mesh.dim() - 1));
         }
+        // The sphere comes down from above the cell: the contact patch
+        // must reach the cell's top (adv33 ip15: the substrate face set
+        // fixedBottom was taken, and the table blamed for a depth "as
+        // deep as the cell")
+        scalar zMax = -GREAT;
+        for (const solid::Vec3& x : mesh.X)
+        {
+            zMax = max(zMax, x(mesh.dim() - 1));
+        }
+        if (zTop < zMax - 1e-6*(zMax - zBottom))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "entry 'contactPatch' = '" << contactPatch_ << "': its"
+                << " highest point, at z = " << zTop << " m, is below the"
+                << " top of the cell at " << zMax << " m: the sphere comes"
+                << " down onto the cell from above, the contact patch must"
+                << " be the cell's top surface (e.g. outerSurface)"
+                << exit(FatalIOError);
+        }
         const scalar height = zTop - zBottom;
         const auto& rows = protocol_->rows();
         for (std::size_t i = 0; i < rows.size(); ++i)
