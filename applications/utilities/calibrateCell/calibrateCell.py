@@ -76,13 +76,14 @@ import time
 import numpy as np
 from scipy import optimize, stats
 
-sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 try:
-    from neuronFsi import script
+    from neuronFsi import script  # noqa: E402
 except ImportError:
     sys.exit("calibrateCell.py: error: the project's Python package neuronFsi "
              "is not found: source the project's etc/bashrc first")
 script.guard()  # an input's error: one line, exit 1 (adv33)
+
+sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from neuronFsi import foamDict, options, ranges, signals  # noqa: E402
 from forwardModel import ForwardModel, ModelError  # noqa: E402
 from targets import Targets, TargetError  # noqa: E402

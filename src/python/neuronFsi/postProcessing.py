@@ -100,26 +100,8 @@ class Table:
         try:
             return np.array(self.rows, dtype=float).reshape(
                 len(self.rows), -1)
-        except ValueError:
-            pass
-        # the first field that is not a number, named by file, line and
-        # column (adv33 sh25: "not a number (could not convert ...)",
-        # raised uncaught by the plot scripts)
-        lines = getattr(self, "lineNo", None) or range(1, len(self.rows) + 1)
-        for row, line in zip(self.rows, lines):
-            for k, value in enumerate(row):
-                try:
-                    float(value)
-                except ValueError:
-                    name = " ('%s')" % self.names[k] \
-                        if k < len(self.names) else ""
-                    raise ColumnFileError(
-                        "%s, line %d, column %d%s: %s is not a number%s"
-                        % (self.path, line, k + 1, name,
-                           repr(value).replace("\\x00", "\\0"),
-                           "; it holds zero bytes (a damaged file)"
-                           if "\x00" in value else ""))
-        raise ColumnFileError("%s: rows of different lengths" % self.path)
+        except ValueError as err:
+            raise ColumnFileError(_notANumber(self, err))
 
     def column(self, name):
         """One column by its header name: floats, or strings for a column
@@ -147,6 +129,26 @@ def _lines(path):
             return f.read().split("\n")
     except OSError as err:
         raise ColumnFileError("%s: %s" % (path, err.strerror))
+
+
+def _notANumber(table, err):
+    """The message of table's first field that is not a number, named by
+    file, line and column (adv33 sh25: "not a number (could not convert
+    ...)", raised uncaught by the plot scripts)."""
+    lines = getattr(table, "lineNo", None) or range(1, len(table.rows) + 1)
+    for row, line in zip(table.rows, lines):
+        for k, value in enumerate(row):
+            try:
+                float(value)
+            except ValueError:
+                name = " ('%s')" % table.names[k] \
+                    if k < len(table.names) else ""
+                return ("%s, line %d, column %d%s: %s is not a number%s"
+                        % (table.path, line, k + 1, name,
+                           repr(value).replace("\\x00", "\\0"),
+                           "; it holds zero bytes (a damaged file)"
+                           if "\x00" in value else ""))
+    return "%s: not a number (%s)" % (table.path, err)
 
 
 def readTable(path, vectors=False):
@@ -194,7 +196,9 @@ def segments(case, log):
     if not found:
         raise ColumnFileError("no %s" % os.path.join(
             case, "postProcessing", d, "<startTime>", name))
-    return sorted(found)
+    found.sort()
+    sameHeader([_headerOnly(p) for t0, p in found])
+    return found
 
 
 def series(case, log, vectors=False):
@@ -204,14 +208,25 @@ def series(case, log, vectors=False):
     segments, not the directory names: these are rounded to the
     controlDict's timePrecision. vectors: see readTable (e.g. "probes/U":
     time, then x y z of each probe)."""
-    tables = [readTable(p, vectors) for t0, p in segments(case, log)]
-    sameHeader(tables)
-    parts = [t.data() for t in tables]
+    parts = [readTable(p, vectors).data() for t0, p in segments(case, log)]
     parts = [a for a in parts if len(a)]
     if not parts:
         raise ColumnFileError("%s: no rows in %s" % (case, log))
     out = [a[a[:, 0] < parts[k + 1][0, 0]] for k, a in enumerate(parts[:-1])]
     return np.vstack(out + [parts[-1]])
+
+
+def _headerOnly(path):
+    """A Table of a file's header lines only (the '#' lines before its
+    first row), for sameHeader."""
+    header = []
+    for line in _lines(path):
+        if not line.startswith("#"):
+            if line.strip():
+                break
+            continue
+        header.append(line[1:].strip())
+    return Table(path, header, [])
 
 
 def sameHeader(tables):
