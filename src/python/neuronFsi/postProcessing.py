@@ -216,6 +216,65 @@ def series(case, log, vectors=False):
     return np.vstack(out + [parts[-1]])
 
 
+def latest(case, log):
+    """Table of the latest segment of a log: the output of a utility run on
+    the latest time (e.g. "riemannError/errors.dat")."""
+    return readTable(segments(case, log)[-1][1])
+
+
+def header(case, log):
+    """The header lines (without '# ') of the first segment of a log."""
+    return readTable(segments(case, log)[0][1]).header
+
+
+def materials(path):
+    """The materials a solver built, from its materials.dat (a row per
+    region: region, rho0 [kg/m^3], C10 [Pa], d0 [1/Pa], then muN [Pa] and
+    tauN [s] per Maxwell branch, as many as the region has; 17 digits):
+    region -> {C10, d0, mu1, tau1, ...}."""
+    lines = _lines(path)
+    mats = {}
+    for line in lines:
+        if line.startswith("#") or not line.strip():
+            continue
+        s = line.split()
+        if len(s) < 4 or len(s) % 2:
+            raise ColumnFileError("%s: malformed line '%s'"
+                                  % (path, line.strip()))
+        e = {"C10": float(s[2]), "d0": float(s[3])}
+        for n in range(1, (len(s) - 4)//2 + 1):
+            e["mu%d" % n] = float(s[2 + 2*n])
+            e["tau%d" % n] = float(s[3 + 2*n])
+        mats[s[0]] = e
+    if not mats:
+        raise ColumnFileError("%s: no material" % path)
+    return mats
+
+
+def probes(case, log="solidProbes/solidProbes.dat"):
+    """The probes the header of the solid probes file names, in order:
+    each a dict of name, point [m] (its reference coordinates, 3
+    components), region, element (the one containing the point) and patch
+    (the number of elements its value is recovered from)."""
+    out = []
+    for line in header(case, log):
+        m = re.match(r"probe \d+ (\S+) at \((\S+) (\S+) (\S+)\) m in (\w+): "
+                     r"element (\d+), patch of (\d+) elements", line)
+        if m:
+            out.append(dict(name=m.group(1),
+                            point=np.array([float(m.group(k))
+                                            for k in (2, 3, 4)]),
+                            region=m.group(5), element=int(m.group(6)),
+                            patch=int(m.group(7))))
+    return out
+
+
+def names(case, log):
+    """The column names of a log (from its first segment with rows)."""
+    tables = [readTable(p) for t0, p in segments(case, log)]
+    return next((t for t in tables if t.rows), tables[0]).names
+
+
 def _headerOnly(path):
     """A Table of a file's header lines only (the '#' lines before its
     first row), for sameHeader."""
@@ -289,62 +348,3 @@ def checkCovers(case, log, data):
             "one), it does not cover the run"
             % (os.path.join(case, "postProcessing", log),
                "t = %.10g s" % last if last is not None else "no row", t, d))
-
-
-def latest(case, log):
-    """Table of the latest segment of a log: the output of a utility run on
-    the latest time (e.g. "riemannError/errors.dat")."""
-    return readTable(segments(case, log)[-1][1])
-
-
-def header(case, log):
-    """The header lines (without '# ') of the first segment of a log."""
-    return readTable(segments(case, log)[0][1]).header
-
-
-def materials(path):
-    """The materials a solver built, from its materials.dat (a row per
-    region: region, rho0 [kg/m^3], C10 [Pa], d0 [1/Pa], then muN [Pa] and
-    tauN [s] per Maxwell branch, as many as the region has; 17 digits):
-    region -> {C10, d0, mu1, tau1, ...}."""
-    lines = _lines(path)
-    mats = {}
-    for line in lines:
-        if line.startswith("#") or not line.strip():
-            continue
-        s = line.split()
-        if len(s) < 4 or len(s) % 2:
-            raise ColumnFileError("%s: malformed line '%s'"
-                                  % (path, line.strip()))
-        e = {"C10": float(s[2]), "d0": float(s[3])}
-        for n in range(1, (len(s) - 4)//2 + 1):
-            e["mu%d" % n] = float(s[2 + 2*n])
-            e["tau%d" % n] = float(s[3 + 2*n])
-        mats[s[0]] = e
-    if not mats:
-        raise ColumnFileError("%s: no material" % path)
-    return mats
-
-
-def probes(case, log="solidProbes/solidProbes.dat"):
-    """The probes the header of the solid probes file names, in order:
-    each a dict of name, point [m] (its reference coordinates, 3
-    components), region, element (the one containing the point) and patch
-    (the number of elements its value is recovered from)."""
-    out = []
-    for line in header(case, log):
-        m = re.match(r"probe \d+ (\S+) at \((\S+) (\S+) (\S+)\) m in (\w+): "
-                     r"element (\d+), patch of (\d+) elements", line)
-        if m:
-            out.append(dict(name=m.group(1),
-                            point=np.array([float(m.group(k))
-                                            for k in (2, 3, 4)]),
-                            region=m.group(5), element=int(m.group(6)),
-                            patch=int(m.group(7))))
-    return out
-
-
-def names(case, log):
-    """The column names of a log (from its first segment with rows)."""
-    tables = [readTable(p) for t0, p in segments(case, log)]
-    return next((t for t in tables if t.rows), tables[0]).names
