@@ -308,6 +308,15 @@ class Calibration:
                         "itself; a ratio <a>To<B> needs two regions "
                         "(regions: %s)" % (where, p.name, a,
                                           ", ".join(regions)))
+                if not p.lo > 0:
+                    # a ratio of C10 at or below 0 (adv33 cc13: a forward
+                    # run started, then the solver's "C10 = -1.67 Pa" of
+                    # a temporary case quoted)
+                    raise InputError(
+                        "%s: parameter '%s' = %g%s (the ratio %s.C10/%s.C10)"
+                        " must be positive: valid range (0, inf)"
+                        % (where, p.name, p.lo, " (its min)" if p.fit
+                           else "", a, b))
                 self.ratios[p.name] = (a, b)
             for t in targets:
                 region, _, entry = t.partition(".")
