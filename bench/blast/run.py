@@ -39,6 +39,12 @@ import sys
 
 import numpy as np
 
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("bench/blast/run.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import bench, logs, msh, planeWave, postProcessing, scratch
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -547,6 +553,18 @@ def main():
         size["window"] = min(size["window"], args.endTime)
     out = os.path.abspath(args.out)
     doc = bench.reportPath(args.doc, args.quick, out, ROOT, "blast.md")
+    if args.reportOnly:
+        # --out must hold the runs to report (adv33 bn06: a missing log
+        # named, not that --out holds no run)
+        missing = [f for f in size["factors"]
+                   if not os.path.isdir(os.path.join(out, f"level_{f}"))]
+        if missing:
+            raise bench.BenchError(
+                "--reportOnly: --out %s holds no run of level%s %s (no "
+                "level_<factor> folder): run the benchmark into it first, "
+                "or give the --out it ran into"
+                % (out, "s" if len(missing) > 1 else "",
+                   " ".join(missing)))
     os.makedirs(out, exist_ok=True)
     os.makedirs(os.path.dirname(doc), exist_ok=True)
     env = bench.foamEnv(ROOT)
@@ -569,7 +587,7 @@ def main():
             bench.stampCommit(os.path.join(out, f"level_{f}"), commit, dirty)
         end = datetime.datetime.utcnow()
     if not any(r["rc"] == 0 for r in rows):
-        raise RuntimeError("every level failed")
+        raise bench.BenchError("every level failed")
     png = "blast_cost_vs_error.png"
     lines, ref = report(rows, size, mode, start, png, commit, dirty, end,
                         args.reportOnly)

@@ -30,6 +30,13 @@ import shutil
 import subprocess
 import time
 
+import sys
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("bench/fluid/run.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import bench, scratch
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))

@@ -20,6 +20,12 @@ import os
 import subprocess
 import sys
 
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("bench/indentation/run.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import bench
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -38,7 +44,8 @@ def run(factors, work, case):
                              env=env, stdout=subprocess.PIPE, text=True)
         if res.returncode != 0:
             sys.stdout.write(res.stdout)
-            raise RuntimeError(f"meshConvergence.sh {f} failed (in {work})")
+            raise bench.BenchError(f"meshConvergence.sh {f} failed (in "
+                                   f"{work}; its output is above)")
         line = [x.strip() for x in res.stdout.strip().splitlines()[-1]
                 .strip("|").split("|")]
         # factor, elements, delta0, 11 forces, iterations, wall, CPU, MB
@@ -137,6 +144,17 @@ def main():
                          "two coarse meshes, output in --out")
     ap.add_argument("--case", default="averageCell")
     args = bench.parse(ap)
+    # a case that is not a tutorial: said before any run (adv33 bn07:
+    # "RuntimeError: meshConvergence.sh 1.4 failed", a traceback)
+    cases = os.path.join(ROOT, "tutorials", "indentation")
+    if not os.path.isfile(os.path.join(cases, args.case, "system",
+                                       "controlDict")):
+        valid = sorted(d for d in os.listdir(cases) if os.path.isfile(
+            os.path.join(cases, d, "system", "controlDict")))
+        raise bench.BenchError(
+            "--case '%s' is not a case of %s (a directory with "
+            "system/controlDict); valid: %s. Nothing was run"
+            % (args.case, cases, " ".join(valid)))
     size = "quick" if args.quick else "full"
     out = os.path.abspath(args.out)
     doc = bench.reportPath(args.doc, args.quick, out, ROOT,

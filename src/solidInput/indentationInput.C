@@ -170,6 +170,41 @@ Foam::indentationInput::indentationInput
         );
     }
 
+    // The Time's entries cellIndentationFoam does not use, said as endTime
+    // is, whatever their value (adv33 cd03: deltaT 0 accepted without a
+    // word): the steps are indenterProperties', the outputs ours
+    {
+        DynamicList<word> unused;
+        for
+        (
+            const char* key :
+            {
+                "deltaT", "writeControl", "writeInterval", "writeFrequency",
+                "adjustTimeStep", "maxCo", "maxDeltaT", "purgeWrite"
+            }
+        )
+        {
+            if (controlDict.found(key))
+            {
+                unused.append(key);
+            }
+        }
+        if (unused.size())
+        {
+            Info<< "Note: system/controlDict's";
+            for (const word& key : unused)
+            {
+                Info<< " " << key;
+            }
+            Info<< " (OpenFOAM's Time's entries) are not used by"
+                << " cellIndentationFoam, whatever their values: its steps"
+                << " are constant/indenterProperties' maxDepthIncrement,"
+                << " holdDeltaT0, maxDeltaT and holdGrowth, its outputs"
+                << " controlDict's fieldWriteInterval and checkpointInterval"
+                << nl << endl;
+        }
+    }
+
     settings_.writeInterval = readInRange<scalar>
     (
         controlDict, "fieldWriteInterval", "s", 0, GREAT, true
@@ -440,6 +475,25 @@ Foam::indentationInput::addContact(solid::Model& model) const
         for (const solid::Vec3& x : mesh.X)
         {
             zBottom = min(zBottom, x(mesh.dim() - 1));
+        }
+        // The sphere comes down from above the cell: the contact patch
+        // must reach the cell's top (adv33 ip15: the substrate face set
+        // fixedBottom was taken, and the table blamed for a depth "as
+        // deep as the cell")
+        scalar zMax = -GREAT;
+        for (const solid::Vec3& x : mesh.X)
+        {
+            zMax = max(zMax, x(mesh.dim() - 1));
+        }
+        if (zTop < zMax - 1e-6*(zMax - zBottom))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "entry 'contactPatch' = '" << contactPatch_ << "': its"
+                << " highest point, at z = " << zTop << " m, is below the"
+                << " top of the cell at " << zMax << " m: the sphere comes"
+                << " down onto the cell from above, the contact patch must"
+                << " be the cell's top surface (e.g. outerSurface)"
+                << exit(FatalIOError);
         }
         const scalar height = zTop - zBottom;
         const auto& rows = protocol_->rows();

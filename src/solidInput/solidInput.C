@@ -275,8 +275,21 @@ std::vector<solid::MaterialParameters> Foam::solidInput::setup
     {
         model.setMaterial(p.name, solid::Material::create(p));
     }
+    const label dim = model.mesh().dim();
     for (const auto& f : dict_.get<List<Tuple2<word, label>>>("fixed"))
     {
+        // the component by the row and the mesh's valid ones (adv33
+        // sp02: "Dirichlet condition on node 93 component 2 is out of
+        // range")
+        if (f.second() < 0 || f.second() >= dim)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "entry 'fixed': row (" << f.first() << " " << f.second()
+                << "): component " << f.second() << " is not one of the "
+                << (dim == 2 ? "r-z" : "3D") << " mesh's components, valid: "
+                << (dim == 2 ? "0 (r) or 1 (z)" : "0 (x), 1 (y) or 2 (z)")
+                << exit(FatalIOError);
+        }
         try
         {
             model.fix(f.first(), f.second());

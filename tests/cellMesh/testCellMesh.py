@@ -25,6 +25,8 @@ independent reader of the .msh file:
   docExample: the dictionary printed in docs/userGuide/cellMesh.md
     meshes (axisymmetric and quarter3D, with the water box).
   scaledNucleus: nucleusShape scaledCell, axisymmetric.
+  coarseContact: a contactSize above the regions' sizes meshes (adv33
+    cm16: was SIGABRT).
   scaledQuarter3D (the blast tutorial's 1.4/1.4/1 um, 1 layer, and
     0.7/0.7/0.5 um, 2 layers), scaledFull3D (0.8/0.8/0.6 um, 1 layer):
     nucleusShape scaledCell in 3D, the checks of quarter3D/full3D plus
@@ -33,7 +35,8 @@ independent reader of the .msh file:
     semi-spheroid touching its top and rim, its base (area pi a_n^2 to
     1 %) in fixedBottom.
 Usage: testCellMesh.py axisymmetric|quarter3D|full3D|shapes3D|docExample|
-    scaledNucleus|scaledQuarter3D|scaledFull3D [solidReadCheck]"""
+    scaledNucleus|scaledQuarter3D|scaledFull3D|coarseContact
+    [solidReadCheck]"""
 import os
 import subprocess
 import sys
@@ -457,7 +460,26 @@ def scaledFull3D():
     scaled3D("full3D", [(0.8e-6, 0.8e-6, 0.6e-6, 1)], 3.5e-3)
 
 
+def coarseContact():
+    # a contactSize above the regions' sizes (adv33 cm16: gmsh's MathEval
+    # could not parse "+ -..." and cellMesh aborted, SIGABRT): meshes, the
+    # regions' sizes decide near the contact
+    with tempfile.TemporaryDirectory() as tmp:
+        X, g = run(os.path.join(tmp, "c"), {
+            "mode": "axisymmetric", "cellDiameter": D, "cellHeight": H,
+            "membraneThickness": t, "membraneLayers": 1,
+            "nucleusVolumeFraction": 0.3333, "nucleusShape": "scaledCell",
+            "nucleusSize": 0.8e-6, "cytoplasmSize": 0.8e-6,
+            "membraneSize": 0.4e-6, "contactRadius": 5e-6,
+            "contactSize": 2e-6, "contactDepth": 3e-6})
+        types = {e[2] for r in ("nucleus", "cytoplasm", "membrane")
+                 for e in g[r][1]}
+        check(types == {3}, f"contactSize 2e-6 m: region element types "
+              f"{types} (3 = 4-node quadrilateral)")
+
+
 {"axisymmetric": axisymmetric, "quarter3D": quarter3D,
+ "coarseContact": coarseContact,
  "scaledQuarter3D": scaledQuarter3D, "scaledFull3D": scaledFull3D,
  "full3D": full3D, "shapes3D": shapes3D,
  "docExample": docExample, "scaledNucleus": scaledNucleus}[sys.argv[1]]()

@@ -26,6 +26,12 @@ fi
 grep -q "Note: the run ends with the loading table at 2.1 s.*, not at system/controlDict's endTime 273.1 s" \
     log.cellIndentationFoam \
     || { echo "smokeIndentation: no note on endTime in log.cellIndentationFoam"; exit 1; }
+# deltaT, writeControl and writeInterval of the tutorial's controlDict: not
+# used either, said whatever their values (adv33 cd03: deltaT 0 without a
+# word)
+grep -q "Note: system/controlDict's deltaT writeControl writeInterval (OpenFOAM's Time's entries) are not used by cellIndentationFoam" \
+    log.cellIndentationFoam \
+    || { echo "smokeIndentation: no note on deltaT, writeControl, writeInterval in log.cellIndentationFoam"; exit 1; }
 ls indentation.png results.md fields_C1_i.png VTK/solid > /dev/null
 /usr/bin/python3 - <<'PY'
 from neuronFsi.postProcessing import readTable

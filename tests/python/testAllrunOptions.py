@@ -72,6 +72,13 @@ class Parse(unittest.TestCase):
         self.assertIn("-np = 0 is outside the valid range [1, inf)",
                       self.error(["-np", "0"]))
 
+    def testBelowTheReaderRange(self):
+        # adv33 ar01: -endTime 1e-301 accepted, read as 0 by OpenFOAM and
+        # refused later as "-endTime 0 s"
+        self.assertIn("option -h = 1e-301 m is below the smallest magnitude"
+                      " OpenFOAM reads (1e-300): it would be read as 0",
+                      self.error(["-h", "1e-301"]))
+
     def testWordsAndOptions(self):
         self.assertIn("'yess' is not valid (valid: yes or no); did you "
                       "mean 'yes'?", self.error(["-filter", "yess"]))

@@ -411,6 +411,18 @@ TEST(SolidIndentationDriver, ResumeRefusesOutputsOfAnotherRunOrDamaged)
         EXPECT_NE(msg.find("runA"), std::string::npos) << msg;
     }
 
+    // A missing output (adv33 c24: was "belongs to another run: its first
+    // line is ''"): said to be missing
+    for (const char* f : {"force.dat", "peaks.dat"})
+    {
+        const std::string msg = resume([&](const std::string& dir)
+        {
+            fs::remove(dir + "/" + f);
+        });
+        EXPECT_NE(msg.find(std::string(f) + " is missing"),
+                  std::string::npos) << msg;
+    }
+
     // A value of step 0 of solid.h5 zeroed (the checkpoint's steps later)
     const std::string msg = resume([](const std::string& dir)
     {

@@ -47,6 +47,13 @@ import argparse
 import math
 import os
 
+import sys
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("fluidWedgeMesh.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import options
 
 p = argparse.ArgumentParser(add_help=False)
@@ -93,17 +100,24 @@ Rb = Zb = max(a, H) + 4e-6      # inner box around the cell [m]
 # would be a thinner cell, setting a smaller time step); a scene shortened
 # by a planeWaveInflow top (Allrun -inflow) ends there at the lowest
 if not (math.isfinite(Z) and Z >= Zb + dz*(1 - 1e-9)):
-    p.error("-Z %g m: the water column must reach one axial cell (-dz %g m) "
+    p.error("-Z %g m: the water column must reach one axial cell (-dz %g m%s) "
             "above the inner box around the cell, whose top is at %g m "
             "(max(-H, -D/2) + 4 um): valid range -Z >= %g m"
-            % (Z, dz, Zb, Zb + dz))
+            % (Z, dz, "" if args.dz is not None else
+               ", -far by default" if args.far is not None else
+               ", 2 -h by default: -h %g m" % h, Zb, Zb + dz))
 # the ring beside the box: at least one radial cell of -far (was: -R
 # inside the box wrote an inside-out block that blockMesh refused)
 if not (math.isfinite(R) and R >= Rb + far*(1 - 1e-9)):
+    # -far named as given or as derived from -h (adv33 fw09: only -h was
+    # given, and the message named a -far the user never wrote)
     p.error("-R %g m: the water column must reach one radial cell (-far %g "
-            "m) beside the inner box around the cell, whose side is at %g m "
-            "(max(-H, -D/2) + 4 um): valid range -R >= %g m"
-            % (R, far, Rb, Rb + far))
+            "m%s) beside the inner box around the cell, whose side is at %g m "
+            "(max(-H, -D/2) + 4 um): valid range -R >= %g m, or a smaller "
+            "-far%s"
+            % (R, far, "" if args.far is not None else
+               ", 2 -h by default: -h %g m" % h, Rb, Rb + far,
+               "" if args.far is not None else " or -h"))
 alpha = math.radians(args.wedge)/2
 phiP = math.radians(45.0)
 

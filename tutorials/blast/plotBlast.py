@@ -20,6 +20,12 @@ import sys
 import os
 import numpy as np
 
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("plotBlast.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import blastPlots as bp
 
 args = sys.argv[1:]

@@ -13,6 +13,12 @@ the extremes per region.
 import os
 import sys
 
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("plotFields.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import indentationPlots as ip
 
 case = sys.argv[1]

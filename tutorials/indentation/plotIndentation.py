@@ -12,6 +12,12 @@ on the E plateau next to the paper's 0.3 nN and 1.67 nN).
 import os
 import sys
 
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("plotIndentation.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import indentationPlots as ip
 from neuronFsi.paper import TABLE3_EXP as PAPER_EXP, TABLE3_SIM as PAPER_SIM
 from neuronFsi.paper import F_B as PAPER_FB, F_E as PAPER_FE

@@ -13,6 +13,12 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("plotShockTube.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import postProcessing
 
 
@@ -23,6 +29,15 @@ def main(case):
     except postProcessing.ColumnFileError as err:
         sys.exit(f"plotShockTube: {err}: run riemannError first")
     data = postProcessing.readTable(path).data()
+    # the whole tube: as many rows as errors.dat (written with it) has
+    # cells (adv33 sh24: a cut profile plotted as the whole, exit 0)
+    errors = os.path.join(os.path.dirname(path), "errors.dat")
+    nCells = postProcessing.readTable(errors).column("nCells")
+    if len(nCells) != 1 or nCells[0] != len(data):
+        sys.exit(f"plotShockTube.py: error: {path} holds {len(data)} rows,"
+                 f" but {errors} (written with it) counts "
+                 f"{' '.join('%g' % n for n in nCells)} cells: the profile "
+                 "is cut or not of this run; run riemannError again")
     x = data[:, 0]
     fig, axes = plt.subplots(3, 1, figsize=(7, 8), sharex=True)
     labels = [("density [kg/m^3]", 1), ("velocity [m/s]", 3),

@@ -52,6 +52,7 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     foamTools::resultGuard::addOption();
+    foamTools::writeGuard::addOption();      // -acceptEdited
     #include "setRootCaseListOptions.H"
     // setRootCase.H with checkCasePath before OpenFOAM checks the case
     #include "setRootCaseChecked.H"
@@ -110,6 +111,11 @@ int main(int argc, char *argv[])
     foamTools::resultGuard::check(args, runTime);
     const foamTools::inputRecord inputs(runTime, mesh);
     inputs.checkRestart();
+    // the start time's files and the mesh as the run that wrote them
+    // left them (their digests at the commit; adv33 sh05, b13): after the
+    // record, which names an input that changed (a boundary condition, a
+    // mesh point) as such
+    foamTools::writeGuard::verify(args, runTime);
 
     Info<< "\nStarting time loop\n" << endl;
 

@@ -76,6 +76,13 @@ import time
 import numpy as np
 from scipy import optimize, stats
 
+try:
+    from neuronFsi import script  # noqa: E402
+except ImportError:
+    sys.exit("calibrateCell.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
+
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from neuronFsi import foamDict, indenterProperties, options, ranges, \
     signals  # noqa: E402
@@ -339,6 +346,15 @@ class Calibration:
                         "itself; a ratio <a>To<B> needs two regions "
                         "(regions: %s)" % (where, p.name, a,
                                           ", ".join(regions)))
+                if not p.lo > 0:
+                    # a ratio of C10 at or below 0 (adv33 cc13: a forward
+                    # run started, then the solver's "C10 = -1.67 Pa" of
+                    # a temporary case quoted)
+                    raise InputError(
+                        "%s: parameter '%s' = %g%s (the ratio %s.C10/%s.C10)"
+                        " must be positive: valid range (0, inf)"
+                        % (where, p.name, p.lo, " (its min)" if p.fit
+                           else "", a, b))
                 self.ratios[p.name] = (a, b)
             for t in targets:
                 region, _, entry = t.partition(".")

@@ -31,6 +31,7 @@ Usage
 #include <memory>
 #include "sigFpe.H"
 #include <gmsh.h>
+#include "caseLock.H"
 
 using namespace Foam;
 
@@ -46,6 +47,10 @@ int main(int argc, char *argv[])
 
     // setRootCase.H with checkCasePath before OpenFOAM checks the case
     #include "setRootCaseChecked.H"
+    // one writer per case: a solver running in it (or another utility)
+    // is named and nothing is written (adv33 lk10: setRiemannProblem
+    // -overwrite removed a running solver's time directories)
+    const foamTools::caseLock lock(args);
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
 
     const fileName dictFile

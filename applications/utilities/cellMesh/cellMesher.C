@@ -300,7 +300,11 @@ void Foam::cellMesher::sizeFields() const
            /L_;
         std::ostringstream os;
         os.precision(17);
-        os  << hc << " + " << (hFar - hc) << "*min(1, max(0, max(x - "
+        // the sign written out: a contactSize above the far size made
+        // "+ -0.5*..." that gmsh's MathEval cannot parse, an exception
+        // thrown where nothing catches it, SIGABRT (adv33 cm16)
+        os  << hc << (hFar < hc ? " - " : " + ") << mag(hFar - hc)
+            << "*min(1, max(0, max(x - "
             << geom_.contactRadius()/L_ << ", " << zLow << " - y))/"
             << geom_.contactDepth()/L_ << ")";
         const int f = field::add("MathEval");

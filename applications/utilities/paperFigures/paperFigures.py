@@ -51,6 +51,12 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from matplotlib.collections import PolyCollection
 
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("paperFigures.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import (blastPlots as bp, foamField, indentationPlots as ip,
                        msh, options, paper, paperCases, planeWave,
                        postProcessing, signals)

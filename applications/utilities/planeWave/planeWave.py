@@ -89,6 +89,12 @@ import math
 import os
 import sys
 
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("planeWave.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import foamDict, options, planeWave, postProcessing
 
 BOUNDS = {"arrival": 0.3e-9, "peak1ns": 0.05, "peakIncident": 0.05,
@@ -345,6 +351,14 @@ def solidRows(case, wave, skip):
         s, r = planeWave.solidMeasures(
             data[:, 0], data[:, cols.index("vonMises%d" % i)],
             data[:, cols.index("strainZ%d" % i)], wave.t, vmRef, ezRef)
+        if not r["vonMises1ns"] or not r["strain1ns"]:
+            # the answer is at rest there: no relative error (adv33 pw01:
+            # inf % and numpy's divide-by-zero warnings)
+            print("planeWave: solid probe %d (%s) at z = %g m: the 1D "
+                  "answer is at rest there up to %g s (the wave has not "
+                  "reached it): not compared"
+                  % (i, q["region"], z, wave.t[-1]))
+            continue
         e = {k: s[k]/r[k] - 1 for k in ("vonMises1ns", "strain1ns")}
         # the temperature rise: the water's in the 1D answer at this height
         # (the region has the water's law) against the solid's

@@ -62,6 +62,12 @@ import time
 
 import numpy as np
 
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("pulseStudy.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import (caseRuns, damageIndicators as di, logs, options,
                        postProcessing, pulseStudy as ps, signals,
                        uncertainty as unc)

@@ -25,6 +25,8 @@ Description
 #include "riemannProblem.H"
 #include "anyExactRiemannSolver.H"
 #include "domainError.H"
+#include "caseLock.H"
+#include "writeGuard.H"
 
 using namespace Foam;
 
@@ -65,9 +67,14 @@ int main(int argc, char *argv[])
     );
     argList::noParallel();
     timeSelector::addOptions(false, true);
+    foamTools::writeGuard::addOption();      // -acceptEdited
 
     // setRootCase.H with checkCasePath before OpenFOAM checks the case
     #include "setRootCaseChecked.H"
+    // one writer per case: a solver running in it (or another utility)
+    // is named and nothing is written (adv33 lk10: setRiemannProblem
+    // -overwrite removed a running solver's time directories)
+    const foamTools::caseLock lock(args);
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
     // no directory 'nan' or '1e999' for the Time to take for a time
     foamTools::checkTimeDirectoryNames(args);
@@ -148,6 +155,20 @@ int main(int argc, char *argv[])
                     << " solver). Nothing was written" << exit(FatalError);
             }
         }
+    }
+
+    // the results compared are the files the solver wrote, on the mesh it
+    // computed them on (their digests at the commit, after the records
+    // above, which name a changed input as such; adv33 sh22: the old
+    // fields compared on a new mesh's cells, exit 0)
+    for (const instant& t : timeDirs)
+    {
+        foamTools::writeGuard::verify
+        (
+            runTime.path()/t.name(),
+            args.found(foamTools::writeGuard::acceptEditedOption()),
+            "riemannError"
+        );
     }
 
     #include "createMesh.H"
@@ -286,8 +307,14 @@ int main(int argc, char *argv[])
             runTime.globalPath()/"postProcessing"/"riemannError"
            /runTime.timeName();
         mkDir(dir);
+        // Both files written aside, checked, then renamed: a failed write
+        // (a full disk) leaves the earlier files, never a cut profile
+        // taken for the whole tube (adv33 x12, x15)
+        const fileName profileTmp(dir/".profile.dat.tmp");
+        const fileName errorsTmp(dir/".errors.dat.tmp");
+        bool written = true;
         {
-            OFstream os(dir/"profile.dat");
+            OFstream os(profileTmp);
             os.precision(12);
             os  << "# x [m]  rho rhoExact [kg/m^3]  u uExact [m/s]"
                 << "  p pExact [Pa]" << nl;
@@ -300,9 +327,11 @@ int main(int argc, char *argv[])
                     << u[celli] << ' ' << uX[celli] << ' '
                     << p[celli] << ' ' << pX[celli] << nl;
             }
+            os.flush();
+            written = written && os.good();
         }
         {
-            OFstream os(dir/"errors.dat");
+            OFstream os(errorsTmp);
             os.precision(10);
             os  << "# nCells L1rho[kg/m^3] L1u[m/s] L1p[Pa]"
                 << " relErrPStar relErrRhoStarL relErrRhoStarR"
@@ -310,6 +339,23 @@ int main(int argc, char *argv[])
                 << mesh.nCells() << ' ' << L1rho << ' ' << L1u << ' '
                 << L1p << ' ' << errPStar << ' ' << errRhoL << ' '
                 << errRhoR << ' ' << L1rhoSmooth << ' ' << L1pSmooth << nl;
+            os.flush();
+            written = written && os.good();
+        }
+        if
+        (
+            !written
+         || !Foam::mv(profileTmp, dir/"profile.dat")
+         || !Foam::mv(errorsTmp, dir/"errors.dat")
+        )
+        {
+            Foam::rm(profileTmp);
+            Foam::rm(errorsTmp);
+            FatalErrorInFunction
+                << "cannot write " << dir/"profile.dat" << " and "
+                << dir/"errors.dat" << " (is the disk full, or the"
+                << " directory not writable?). Nothing was replaced: the"
+                << " earlier files, if any, are kept" << exit(FatalError);
         }
 
         Info<< "    exact star state: p* = " << star.p << " Pa, u* = "

@@ -31,6 +31,7 @@ Description
 #include "writeGuard.H"
 #include "MieGruneisen.H"
 #include <cstdio>
+#include "caseLock.H"
 
 int main(int argc, char *argv[])
 {
@@ -43,6 +44,10 @@ int main(int argc, char *argv[])
 
     // setRootCase.H with checkCasePath before OpenFOAM checks the case
     #include "setRootCaseChecked.H"
+    // one writer per case: a solver running in it (or another utility)
+    // is named and nothing is written (adv33 lk10: setRiemannProblem
+    // -overwrite removed a running solver's time directories)
+    const foamTools::caseLock lock(args);
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
     // A number beyond a double's range is a sigFpe inside OpenFOAM's
     // tokenizer: every file of the case the run reads is scanned first,

@@ -34,6 +34,7 @@ Usage
 #include "inputChecks.H"
 
 #include <memory>
+#include "caseLock.H"
 
 using namespace Foam;
 
@@ -142,6 +143,10 @@ int main(int argc, char *argv[])
 
     // setRootCase.H with checkCasePath before OpenFOAM checks the case
     #include "setRootCaseChecked.H"
+    // one writer per case: a solver running in it (or another utility)
+    // is named and nothing is written (adv33 lk10: setRiemannProblem
+    // -overwrite removed a running solver's time directories)
+    const foamTools::caseLock lock(args);
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
     #include "createTime.H"
 

@@ -53,6 +53,12 @@ import re
 import shutil
 import sys
 
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("sweepCase.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import caseRuns, foamDict, options, postProcessing, signals
 
 

@@ -41,6 +41,12 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
 sys.path.insert(0, HERE)
 import hertzMesh  # noqa: E402
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("bench/solid/calculix/run.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import bench, logs  # noqa: E402
 
 LIB = os.path.join(ROOT, "platforms", "linux64GccDPInt32Opt", "lib")

@@ -49,6 +49,12 @@ sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(HERE, "..", "calculix"))
 import hertzMesh  # noqa: E402
 import layerMesh  # noqa: E402
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("bench/solid/layer/run.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import bench  # noqa: E402
 
 LIB = os.path.join(ROOT, "platforms", "linux64GccDPInt32Opt", "lib")

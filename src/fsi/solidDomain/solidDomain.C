@@ -578,10 +578,32 @@ Foam::point Foam::solidDomain::interfacePoint
     }
     if (bestR < 0)
     {
+        // The outer region's height: inside the inner one's, the two were
+        // given the other way round (adv33 bi19: the message did not say
+        // that regions is (outer inner))
+        scalar oMin = GREAT, oMax = -GREAT;
+        for (int a = 0; a < m.nNodes(); ++a)
+        {
+            if (!inO[a]) continue;
+            oMin = min(oMin, m.X[a](axial));
+            oMax = max(oMax, m.X[a](axial));
+        }
         FatalIOErrorInFunction(dict_)
             << "interfaceProbe: no edge of the " << outer << "-" << inner
             << " interface crosses z = " << z << " m at x >= 0"
-            << (dim == 3 ? ", y = 0" : "") << exit(FatalIOError);
+            << (dim == 3 ? ", y = 0" : "") << " (entry 'regions' is"
+            << " (outer inner); z is the fraction " << fraction << " of the"
+            << " inner region " << inner << "'s height, " << zMin << " to "
+            << zMax << " m)";
+        if (oMin > zMin + tol || oMax < zMax - tol)
+        {
+            FatalIOError
+                << ": " << outer << " (" << oMin << " to " << oMax << " m)"
+                << " lies inside " << inner << ", the regions are given the"
+                << " other way round: regions (" << inner << " " << outer
+                << ")";
+        }
+        FatalIOError << exit(FatalIOError);
     }
     return P;
 }

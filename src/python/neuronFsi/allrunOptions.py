@@ -138,6 +138,13 @@ class Option:
                 "option %s = %s is beyond the range of a number (a double "
                 "holds |x| <= 1.79769e+308; valid: %s)"
                 % (self.name, text, self.valid()))
+        # what OpenFOAM's reader would not take as written (adv33 ar01:
+        # -endTime 1e-301 accepted, then planeWave's "-endTime 0 s")
+        why = ranges.readerRangeProblem(text, x)
+        if why:
+            raise OptionError("option %s = %s%s %s (valid: %s)"
+                              % (self.name, text, self.unitText(), why,
+                                 self.valid()))
         if x not in self.range:
             raise OptionError(
                 "option %s = %s%s is outside the valid range %s%s"

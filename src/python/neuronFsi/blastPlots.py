@@ -30,9 +30,12 @@ class BlastPlotError(Exception):
 def series(case, log):
     """The rows of postProcessing/<dir>/<start>/<file> (log "dir/file")
     over every start of the run (a restart writes its rows under its start
-    time)"""
+    time), checked to reach the latest time the run wrote (a cut file,
+    adv33 pb07)"""
     try:
-        return postProcessing.series(case, log)
+        data = postProcessing.series(case, log)
+        postProcessing.checkCovers(case, log, data)
+        return data
     except postProcessing.ColumnFileError as err:
         raise BlastPlotError(str(err))
 

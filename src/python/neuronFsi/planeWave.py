@@ -1050,6 +1050,7 @@ def errors(scene, ref):
     e = {"arrival": (None if scene["arrival"] is None
                      else scene["arrival"] - ref["arrival"])}
     for k in ("peak1ns", "peakIncident", "plateau", "impulse"):
-        e[k] = (None if scene[k] is None or ref[k] is None
+        # a zero reference (the wave has not arrived): no relative error
+        e[k] = (None if scene[k] is None or not ref[k]
                 else scene[k]/ref[k] - 1)
     return e

@@ -104,7 +104,7 @@ class Table:
             return np.array(self.rows, dtype=float).reshape(
                 len(self.rows), -1)
         except ValueError as err:
-            raise ColumnFileError("%s: not a number (%s)" % (self.path, err))
+            raise ColumnFileError(_notANumber(self, err))
 
     def column(self, name, finite=False, increasing=False):
         """One column by its header name: floats, or strings for a column
@@ -175,6 +175,26 @@ def _lines(path):
         raise ColumnFileError("%s: %s" % (path, err.strerror))
 
 
+def _notANumber(table, err):
+    """The message of table's first field that is not a number, named by
+    file, line and column (adv33 sh25: "not a number (could not convert
+    ...)", raised uncaught by the plot scripts)."""
+    lines = getattr(table, "lineNo", None) or range(1, len(table.rows) + 1)
+    for row, line in zip(table.rows, lines):
+        for k, value in enumerate(row):
+            try:
+                float(value)
+            except ValueError:
+                name = " ('%s')" % table.names[k] \
+                    if k < len(table.names) else ""
+                return ("%s, line %d, column %d%s: %s is not a number%s"
+                        % (table.path, line, k + 1, name,
+                           repr(value).replace("\\x00", "\\0"),
+                           "; it holds zero bytes (a damaged file)"
+                           if "\x00" in value else ""))
+    return "%s: not a number (%s)" % (table.path, err)
+
+
 def readTable(path, vectors=False):
     """Table of one column file; a cut last row (fewer fields than the
     first row, or no newline at its end) is dropped. vectors: the rows hold
@@ -203,6 +223,7 @@ def readTable(path, vectors=False):
                                   "has %d%s" % (path, i, len(r), n, damaged))
     table = Table(path, header, rows, lineNo)
     table.notes = notes
+    table.lineNo = lineNo
     return table
 
 
@@ -219,7 +240,9 @@ def segments(case, log):
     if not found:
         raise ColumnFileError("no %s" % os.path.join(
             case, "postProcessing", d, "<startTime>", name))
-    return sorted(found)
+    found.sort()
+    sameHeader([_headerOnly(p) for t0, p in found])
+    return found
 
 
 def series(case, log, vectors=False):
@@ -323,3 +346,78 @@ def names(case, log):
     """The column names of a log (from its first segment with rows)."""
     tables = [readTable(p) for t0, p in segments(case, log)]
     return next((t for t in tables if t.rows), tables[0]).names
+
+
+def _headerOnly(path):
+    """A Table of a file's header lines only (the '#' lines before its
+    first row), for sameHeader."""
+    header = []
+    for line in _lines(path):
+        if not line.startswith("#"):
+            if line.strip():
+                break
+            continue
+        header.append(line[1:].strip())
+    return Table(path, header, [])
+
+
+def sameHeader(tables):
+    """A ColumnFileError naming both files and the first line where they
+    differ unless every table (segment of one log) has the first one's
+    header: a run continued with other settings (a probe moved in
+    controlDict, adv33 b14, b08) writes another header, and its rows are
+    not the same series (they were joined under the first header's
+    locations)."""
+    first = next((t for t in tables if t.header), None)
+    for t in tables:
+        if not t.header or t.header == first.header:
+            continue
+        k = next((k for k, (a, b) in enumerate(zip(first.header, t.header))
+                  if a != b), min(len(first.header), len(t.header)))
+        line = lambda h: "'# %s'" % h[k] if k < len(h) else "no line"
+        raise ColumnFileError(
+            "%s and %s: the headers differ at header line %d: %s in the "
+            "first, %s in the later one: the run was continued with other "
+            "settings (e.g. a probe moved in system/controlDict), its "
+            "segments are not one series and were not joined. Compare "
+            "them separately, or run again from the start"
+            % (first.path, t.path, k + 1, line(first.header),
+               line(t.header)))
+
+
+def latestCommittedTime(case):
+    """The latest time [s] the solver wrote and committed in case (a time
+    directory with the write guard's .writeCommitted marker, in the case
+    or in processor0 for a parallel run), and its directory; (None, None)
+    if there is none."""
+    best = (None, None)
+    for d in glob.glob(os.path.join(case, "*", ".writeCommitted")) + \
+            glob.glob(os.path.join(case, "processor0", "*",
+                                   ".writeCommitted")):
+        d = os.path.dirname(d)
+        try:
+            t = float(os.path.basename(d))
+        except ValueError:
+            continue
+        if best[0] is None or t > best[0]:
+            best = (t, d)
+    return best
+
+
+def checkCovers(case, log, data):
+    """A ColumnFileError unless the rows data of our solver's log "dir/
+    file" (flushed at every step, and before each write time is
+    committed) reach the latest committed time of the case: a cut file
+    was taken as the whole run (adv33 pb07: interface maxima of 'the whole
+    run' from half the file, exit 0)."""
+    t, d = latestCommittedTime(case)
+    if t is None:
+        return
+    last = data[-1, 0] if len(data) else None
+    if last is None or last < t*(1 - 1e-9) - 1e-300:
+        raise ColumnFileError(
+            "%s: its rows end at %s, before the latest time the run wrote, "
+            "%.10g s (%s): the file is cut (or was replaced by an older "
+            "one), it does not cover the run"
+            % (os.path.join(case, "postProcessing", log),
+               "t = %.10g s" % last if last is not None else "no row", t, d))

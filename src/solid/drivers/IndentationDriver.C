@@ -66,6 +66,19 @@ void solid::IndentationDriver::checkResume()
         for (const char* f : {"force.dat", "peaks.dat"})
         {
             std::ifstream is(path(f));
+            if (!is)
+            {
+                // missing (adv33 c24: was "belongs to another run: its
+                // first line is ''")
+                throw SolidError
+                (
+                    SolidError::Kind::io, path(f) + " is missing (or cannot"
+                    " be read): the checkpoint " + checkpointFile()
+                  + " continues run " + runId_ + ", whose " + f + " a"
+                    " restart appends to. Restore it to continue; nothing"
+                    " was changed"
+                );
+            }
             std::string first;
             std::getline(is, first);
             if (first != "# run " + runId_)

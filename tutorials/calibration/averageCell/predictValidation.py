@@ -8,6 +8,12 @@ import shutil
 import subprocess
 import sys
 
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("predictValidation.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import logs, postProcessing, scratch
 
 here = os.path.dirname(os.path.abspath(__file__))

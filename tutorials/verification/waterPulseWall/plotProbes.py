@@ -9,6 +9,13 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
+import sys
+try:
+    from neuronFsi import script
+except ImportError:
+    sys.exit("plotProbes.py: error: the project's Python package neuronFsi "
+             "is not found: source the project's etc/bashrc first")
+script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import postProcessing
 
 data = postProcessing.series(".", "probes/p")

@@ -1,0 +1,74 @@
+"""The main of every Python script of the project (plots, utilities,
+benchmarks): an error that is the input's or the environment's becomes one
+line, "<script>: error: <message>", and exit 1, never a traceback (adv33
+c13, sh25: a reader's ColumnFileError uncaught in a plot script; cc19: a
+binary of the project missing from PATH).
+
+    from neuronFsi import script
+    script.guard()          # before anything else runs
+
+What is the input's or the environment's: an exception of a neuronFsi
+module (each reader raises its own class, whose message names the file
+and the entry), a file that cannot be opened or read (OSError: the file is
+named), a program that is not on PATH (the project not built or its
+etc/bashrc not sourced). Any other exception is a bug of the script and
+keeps its traceback.
+
+A script run without the project's environment cannot import neuronFsi
+(adv33 pl01: ModuleNotFoundError): its first neuronFsi import is
+
+    try:
+        from neuronFsi import script
+    except ImportError:
+        sys.exit("<script>: error: the project's Python package neuronFsi "
+                 "is not found: source the project's etc/bashrc first")
+    script.guard()
+"""
+
+import os
+import sys
+
+
+def _ours(err):
+    """Whether err was raised by a reader of neuronFsi (its class is)."""
+    return any(c.__module__.split(".")[0] == "neuronFsi"
+               for c in type(err).__mro__)
+
+
+def message(err):
+    """The one-line message of an input's or environment's error, or None
+    for any other exception."""
+    if _ours(err):
+        return str(err)
+    if isinstance(err, FileNotFoundError) and err.filename and \
+            os.sep not in str(err.filename):
+        # subprocess: a program name, not a path
+        return ("the program '%s' is not found on PATH: build the project "
+                "(./Allwmake) and source its etc/bashrc first"
+                % err.filename)
+    if isinstance(err, OSError) and err.filename:
+        return "%s: %s" % (err.filename, err.strerror or err)
+    if isinstance(err, OSError) and err.errno:
+        # no file named (adv33 x12: a full disk inside matplotlib's save)
+        return "a file could not be written or read: %s" \
+            % (err.strerror or err)
+    return None
+
+
+def _hook(name):
+    def hook(kind, err, tb):
+        text = message(err) if isinstance(err, Exception) else None
+        if text is None:
+            sys.__excepthook__(kind, err, tb)
+        else:
+            sys.stderr.write("%s: error: %s\n" % (name, text))
+    return hook
+
+
+def guard(name=None):
+    """From here on, an input's or environment's error that the script
+    does not catch is printed as one line "<name>: error: <message>" on
+    stderr (exit 1, as after any uncaught exception) instead of a
+    traceback; other exceptions keep theirs (see the module). name: the
+    script's (default: its file name)."""
+    sys.excepthook = _hook(name or os.path.basename(sys.argv[0]))

@@ -1,0 +1,150 @@
+"""What the independent pass adv33 found in the Python readers and scripts
+(fix19l), on small synthetic files: a damaged number named by file, line
+and column (sh25, c13); segments of a continued run with another header
+not joined (b14, b08); our logs checked to reach the latest committed time
+(pb07); no relative error against a reference at rest (pw01); the
+scripts' one-line errors (neuronFsi.script)."""
+import os
+import subprocess
+import sys
+import unittest
+
+from fixtures import TempDirTestCase
+from neuronFsi import planeWave, postProcessing as pp, script
+
+PROBES = ("# Probe 0 (0 0 1e-05)\n# Probe 1 (0 %s 0)\n#  Probe 0 1\n"
+          "#  Time\n")
+
+
+class DamagedNumbers(TempDirTestCase):
+
+    def testZeroBytesNamedByLineAndColumn(self):
+        p = self.write("a.dat", "# x [m]  rho [kg/m^3]\n1 2\n3 4\0\0\n5 6\n")
+        with self.assertRaisesRegex(
+                pp.ColumnFileError, r"a.dat, line 3, column 2 \('rho'\): "
+                r"'4\\0\\0' is not a number; it holds zero bytes"):
+            pp.readTable(p).data()
+
+    def testWordNamed(self):
+        p = self.write("a.dat", "# x [m]  rho [kg/m^3]\n1 2\n3 x4\n5 6\n")
+        with self.assertRaisesRegex(pp.ColumnFileError,
+                                    r"line 3, column 2 \('rho'\): 'x4'"):
+            pp.readTable(p).data()
+
+
+class SegmentHeaders(TempDirTestCase):
+
+    def testMovedProbeNotJoined(self):
+        self.write("postProcessing/probes/0/p",
+                   PROBES % "1e-05" + "0 1 2\n1e-9 1 2\n")
+        self.write("postProcessing/probes/1e-09/p",
+                   PROBES % "1.5e-05" + "1e-9 1 2\n2e-9 1 2\n")
+        with self.assertRaisesRegex(
+                pp.ColumnFileError, r"0/p and .*1e-09/p: the headers differ"
+                r" at header line 2: '# Probe 1 \(0 1e-05 0\)' in the first,"
+                r" '# Probe 1 \(0 1.5e-05 0\)' in the later"):
+            pp.series(self.tmp, "probes/p")
+
+    def testSameHeaderJoined(self):
+        for t0 in ("0", "1e-09"):
+            self.write("postProcessing/probes/%s/p" % t0,
+                       PROBES % "1e-05" + "%s 1 2\n" % t0)
+        self.assertEqual(pp.series(self.tmp, "probes/p").shape, (2, 3))
+
+
+class Coverage(TempDirTestCase):
+
+    def testCutLogRefused(self):
+        self.write("2e-09/.writeCommitted", "2e-09\n")
+        self.write("1e-09/.writeCommitted", "1e-09\n")
+        data = [[0.0], [1e-9]]
+        import numpy as np
+        with self.assertRaisesRegex(
+                pp.ColumnFileError, r"rows end at t = 1e-09 s, before the "
+                r"latest time the run wrote, 2e-09 s .*: the file is cut"):
+            pp.checkCovers(self.tmp, "solidInterfaces/interfaceMaxima.dat",
+                           np.array(data))
+        pp.checkCovers(self.tmp, "x/y.dat", np.array([[0.0], [2.1e-9]]))
+
+    def testNoCommittedTime(self):
+        import numpy as np
+        pp.checkCovers(self.tmp, "x/y.dat", np.array([[0.0]]))
+
+
+class PlaneWaveAtRest(unittest.TestCase):
+
+    def testZeroReferenceNoError(self):
+        m = {"arrival": None, "peak1ns": 1.0, "peakIncident": 0.0,
+             "plateau": None, "impulse": 2.0}
+        r = {"arrival": None, "peak1ns": 0.0, "peakIncident": 0.0,
+             "plateau": 1.0, "impulse": 4.0}
+        e = planeWave.errors(m, r)
+        self.assertIsNone(e["peak1ns"])
+        self.assertIsNone(e["peakIncident"])
+        self.assertAlmostEqual(e["impulse"], -0.5)
+
+
+class ScriptErrors(TempDirTestCase):
+
+    def run_(self, body, env=None):
+        p = self.write("s.py", "import sys\n" + body)
+        return subprocess.run([sys.executable, p], capture_output=True,
+                              text=True, env=env)
+
+    def testReaderErrorOneLine(self):
+        bad = self.write("a.dat", "# x [m]\n1\n2x\n3\n")
+        r = self.run_("from neuronFsi import script, postProcessing\n"
+                      "script.guard()\n"
+                      "postProcessing.readTable(%r).data()\n" % bad)
+        self.assertEqual(r.returncode, 1)
+        self.assertNotIn("Traceback", r.stderr)
+        self.assertRegex(r.stderr, r"^s.py: error: .*a.dat, line 3")
+
+    def testMissingProgram(self):
+        r = self.run_("from neuronFsi import script\nscript.guard()\n"
+                      "import subprocess\n"
+                      "subprocess.run(['noSuchProgramOf19l'])\n")
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("the program 'noSuchProgramOf19l' is not found on "
+                      "PATH", r.stderr)
+
+    def testOtherErrorKeepsTraceback(self):
+        r = self.run_("from neuronFsi import script\nscript.guard()\n"
+                      "1/0\n")
+        self.assertIn("Traceback", r.stderr)
+
+    def testMessage(self):
+        self.assertIsNone(script.message(ValueError("x")))
+        self.assertIn("missing.dat", script.message(
+            FileNotFoundError(2, "No such file", "/a/missing.dat")))
+
+
+class SolidDigest(TempDirTestCase):
+
+    def testChangedValueRefused(self):
+        import h5py
+        import numpy as np
+        from neuronFsi import solidResults
+        p = os.path.join(self.tmp, "solid.h5")
+        u = np.zeros((4, 3))
+        with h5py.File(p, "w") as f:
+            f["mesh/coordinates"] = u
+            f["steps/0/displacement"] = u
+            f["steps/0"].attrs["time"] = 0.0
+            for k in ("mesh/coordinates", "steps/0/displacement"):
+                f[k].attrs["digest64"] = np.uint64(solidResults.digest64(u))
+        with solidResults.SolidResults(p) as r:
+            self.assertEqual(r.field("0", "displacement").shape, (4, 3))
+        with h5py.File(p, "a") as f:
+            f["steps/0/displacement"][0, 2] = np.nan
+        with solidResults.SolidResults(p) as r:
+            r.mesh("coordinates")
+            with self.assertRaisesRegex(
+                    solidResults.SolidResultsError,
+                    r"solid.h5: dataset /steps/0/displacement: its values "
+                    r"do not match their digest digest64"):
+                r.field("0", "displacement")
+
+
+if __name__ == "__main__":
+    unittest.main()
