@@ -20,7 +20,8 @@
 #
 # Prints: water cells (checkMesh), time steps, the time step before the
 # arrival, coupling passes, cellBlastFoam's CPU split of the time loop
-# (rank 0; on N ranks also the largest of each part over the ranks),
+# (rank 0; on N ranks also the largest of each part over the ranks and
+# every rank's split),
 # wall time and peak resident memory of the run (/usr/bin/time -v: the
 # largest of the processes it waited for, i.e. one rank), and on
 # one rank planeWave's measures (postProcessing/planeWave/0/measures.dat,
@@ -61,8 +62,8 @@ fi
 echo "water cells: $(awk '/^ *cells:/ {print $2}' log.checkMesh)"
 echo "time steps: $(grep -c '^Time =' log.cellBlastFoam)," \
     "first steps' deltaT: $(awk '/^deltaT/ {print $3}' log.cellBlastFoam | sed -n 200p) s (step 200)"
-grep -E "^(CPU time of the time loop|    largest over|FSI interface energy|FSI coupling [A-Za-z]+:)" \
-    log.cellBlastFoam | tail -4
+grep -E "^(CPU time of the time loop|    largest over|    rank [0-9]+: time loop|FSI interface energy|FSI coupling [A-Za-z]+:)" \
+    log.cellBlastFoam | tail -$((4 + (np > 1 ? np : 0)))
 echo "wall (time -v): $(awk -F': ' '/Elapsed \(wall clock\)/ {print $2}' log.time)," \
     "peak RSS $(awk -F': ' '/Maximum resident/ {printf "%.0f MB", $2/1024}' log.time)," \
     "load at the end $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -72,12 +72,29 @@ public:
 
 //- A distorted bar of 7 x 2 x 2 hexahedra of the cell's cytoplasm (Mie-
 //  Grueneisen, a Maxwell branch: element and point histories), fixed at
-//  xmin, with random initial velocities (the same on every call)
-std::unique_ptr<Model> bar()
+//  xmin, with random initial velocities (the same on every call);
+//  reversed: the elements listed in the reverse order (the same model,
+//  its nodal sums in another order)
+std::unique_ptr<Model> bar(bool reversed = false)
 {
     const double h = 1e-6;
     Mesh m = Mesh::box(7, 2, 2, Vec3(0, 0, 0), Vec3(7*h, 2*h, 2*h));
     solidTest::distortInterior(m, h, 0.2, 5);
+    if (reversed)
+    {
+        const int nen = m.nen(), ne = m.nElements();
+        std::vector<int> conn(m.conn.size());
+        for (int e = 0; e < ne; ++e)
+        {
+            std::copy
+            (
+                m.element(ne - 1 - e), m.element(ne - 1 - e) + nen,
+                conn.begin() + nen*e
+            );
+        }
+        m.conn = conn;
+        std::reverse(m.region.begin(), m.region.end());
+    }
     std::unique_ptr<Model> model(new Model(m));
     model->setMaterial(m.regionNames[0], solidTest::cytoplasm());
     for (int i = 0; i < 3; ++i) model->fix("xmin", i);
@@ -107,6 +124,19 @@ double relDiff(const Eigen::VectorXd& a, const Eigen::VectorXd& b)
 {
     return (a - b).lpNorm<Eigen::Infinity>()
        /std::max(b.lpNorm<Eigen::Infinity>(), 1e-300);
+}
+
+//- The committed histories of a model built by bar(true), in the
+//  element order of bar()
+std::vector<double> unreversed(const StateArray& s)
+{
+    std::vector<double> x;
+    const int ne = int(s.nItems());
+    for (int e = 0; e < ne; ++e)
+    {
+        x.insert(x.end(), s.old(ne - 1 - e), s.old(ne - 1 - e) + s.size(e));
+    }
+    return x;
 }
 
 double relDiff(const std::vector<double>& a, const std::vector<double>& b)
@@ -222,11 +252,20 @@ TEST(partition, partialForcesSumToSerial)
 
 TEST(partition, twoPartsStepAsSerial)
 {
+    // The serial run and, for the scale of round-off, the serial run with
+    // its elements in the reverse order (its nodal sums in another order,
+    // as the parts' are): the 2 parts must differ from the serial run by
+    // no more than a few times what that reordering alone gives
     const int steps = 200;
     auto serial = bar();
     start(*serial);
     ExplicitSolver s(*serial, settings());
     for (int i = 0; i < steps; ++i) s.step();
+    auto reordered = bar(true);
+    start(*reordered);
+    ExplicitSolver r(*reordered, settings());
+    for (int i = 0; i < steps; ++i) r.step();
+    const ExplicitState rs = r.state();
 
     ThreadGather g(2);
     std::vector<std::unique_ptr<Model>> m(2);
@@ -269,15 +308,35 @@ TEST(partition, twoPartsStepAsSerial)
     EXPECT_EQ(m[0]->pointState().oldData(), m[1]->pointState().oldData());
     EXPECT_EQ(m[0]->elementState().oldData(),
               m[1]->elementState().oldData());
-    // Against serial: round-off
+    // Against serial: round-off, as the reordered serial run (which
+    // itself differs from the serial run: the comparison is not empty)
+    const double
+        du = relDiff(reordered->u, serial->u),
+        dv = relDiff(reordered->v, serial->v),
+        dfint = relDiff(rs.fint, ss.fint),
+        dfhg = relDiff(rs.fhg, ss.fhg),
+        dps = relDiff(unreversed(reordered->pointState()),
+                      serial->pointState().oldData()),
+        des = relDiff(unreversed(reordered->elementState()),
+                      serial->elementState().oldData());
+    std::printf("reordered serial against serial: u %.3e, v %.3e, fint "
+        "%.3e, fhg %.3e, point states %.3e, element states %.3e "
+        "relative\n", du, dv, dfint, dfhg, dps, des);
     EXPECT_GT(ss.energy.hourglass, 0);
-    EXPECT_LT(relDiff(m[0]->u, serial->u), 1e-11);
-    EXPECT_LT(relDiff(m[0]->v, serial->v), 1e-11);
-    EXPECT_LT(relDiff(st[0].fhg, ss.fhg), 1e-10);
+    EXPECT_GT(dv, 0);
+    EXPECT_GT(dfint, 0);
+    const double f = 10;
+    EXPECT_LT(relDiff(m[0]->u, serial->u), f*du);
+    EXPECT_LT(relDiff(m[0]->v, serial->v), f*dv);
+    EXPECT_LT(relDiff(st[0].fint, ss.fint), f*dfint);
+    EXPECT_LT(relDiff(st[0].fhg, ss.fhg), f*dfhg);
     EXPECT_LT(relDiff(m[0]->pointState().oldData(),
-                      serial->pointState().oldData()), 1e-10);
+                      serial->pointState().oldData()), f*dps);
     EXPECT_LT(relDiff(m[0]->elementState().oldData(),
-                      serial->elementState().oldData()), 1e-10);
+                      serial->elementState().oldData()), f*des);
+    // and small in absolute terms
+    EXPECT_LT(relDiff(m[0]->u, serial->u), 1e-12);
+    EXPECT_LT(relDiff(m[0]->v, serial->v), 1e-10);
     EXPECT_NEAR(st[0].dt, ss.dt, 1e-12*ss.dt);
     EXPECT_NEAR(st[0].energy.internal, ss.energy.internal,
                 1e-10*std::abs(ss.energy.internal));
@@ -323,7 +382,10 @@ TEST(partition, shareStatesOfSomeElements)
             const double owner = e < ne/2 ? 1.0 : 2.0;
             ASSERT_GT(s.size(e), 0);
             EXPECT_EQ(s.old(e)[0], isListed ? owner : p + 1.0) << e;
-            if (isListed) EXPECT_EQ(s.current(e)[0], owner) << e;
+            if (isListed)
+            {
+                EXPECT_EQ(s.current(e)[0], owner) << e;
+            }
         }
     }
 }
