@@ -260,7 +260,8 @@ void solid::ExplicitSolver::addFilteredShearForce
 
     // g = (I - A)^T s, f_e = -Bd_e^T g_e: this part's elements (the
     // rates and averages above over all elements, the same on every part)
-    for (int e = model_.elementBegin(); e < model_.elementEnd(); ++e)
+    const int eEnd = model_.elementEnd();
+    for (int e = model_.elementBegin(); e < eEnd; ++e)
     {
         const int* en = mesh.element(e);
         Rate g = s.col(e);
@@ -286,7 +287,8 @@ Eigen::VectorXd solid::ExplicitSolver::hourglassForce
     const Mesh& mesh = model_.mesh();
     const int nen = mesh.nen(), dim = mesh.dim();
     Eigen::Matrix<double, 8, 3> ve;
-    for (int e = model_.elementBegin(); e < model_.elementEnd(); ++e)
+    const int eEnd = model_.elementEnd();
+    for (int e = model_.elementBegin(); e < eEnd; ++e)
     {
         const int* en = mesh.element(e);
         for (int a = 0; a < nen; ++a)

@@ -342,7 +342,8 @@ void solid::Model::assemble
     ElementOutput out;
     std::vector<int> dofs(nd);
     Eigen::VectorXd ue(nd);
-    for (int e = elementBegin(); e < elementEnd(); ++e)
+    const int eEnd = elementEnd();
+    for (int e = elementBegin(); e < eEnd; ++e)
     {
         const int* en = mesh_.element(e);
         for (int b = 0; b < nen; ++b)
