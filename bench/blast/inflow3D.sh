@@ -17,6 +17,11 @@
 #              -inflow 20e-6
 #   MAXCO=X in the environment: system/controlDict's maxCo of the copy
 #   set to X (the tutorial's default 0.9; 0.5 before 2026-12-03)
+#   NICENESS=N in the environment: cellBlastFoam runs at nice -n N
+#   (default 10; 0 for a final measurement on a shared machine)
+#
+# While cellBlastFoam runs, the load average is sampled every 15 s into
+# DIR/quarter3D/log.load (printed as its range at the end).
 #
 # Prints: water cells (checkMesh), time steps, the time step before the
 # arrival, coupling passes, cellBlastFoam's CPU split of the time loop
@@ -50,15 +55,28 @@ echo "== ./Allrun -noRun -noPlots ${npOpt[*]} $*"
 PROJECT_DIR=$root ./Allrun -noRun -noPlots "${npOpt[@]}" "$@" > log.prepare 2>&1 \
     || { tail -20 log.prepare; exit 1; }
 grep '^Pulse' log.prepare || true
+niceness=${NICENESS:-10}
+(
+    while true
+    do
+        echo "$(date -u +%T) $(cut -d' ' -f1-3 /proc/loadavg)" >> log.load
+        sleep 15
+    done
+) &
+sampler=$!
+trap 'kill $sampler 2> /dev/null || true' EXIT
 if [ "$np" -le 1 ]
 then
-    echo "== nice -n 10 /usr/bin/time -v cellBlastFoam"
-    nice -n 10 /usr/bin/time -v -o log.time cellBlastFoam > log.cellBlastFoam 2>&1
+    echo "== nice -n $niceness /usr/bin/time -v cellBlastFoam"
+    nice -n "$niceness" /usr/bin/time -v -o log.time cellBlastFoam \
+        > log.cellBlastFoam 2>&1
 else
-    echo "== nice -n 10 /usr/bin/time -v mpirun -np $np --bind-to none cellBlastFoam -parallel"
-    nice -n 10 /usr/bin/time -v -o log.time mpirun -np "$np" --bind-to none \
-        cellBlastFoam -parallel > log.cellBlastFoam 2>&1
+    echo "== nice -n $niceness /usr/bin/time -v mpirun -np $np --bind-to none cellBlastFoam -parallel"
+    nice -n "$niceness" /usr/bin/time -v -o log.time mpirun -np "$np" \
+        --bind-to none cellBlastFoam -parallel > log.cellBlastFoam 2>&1
 fi
+kill $sampler 2> /dev/null || true
+echo "load average (1 min) during the run, every 15 s: $(awk '{print $2}' log.load | sort -g | sed -n '1p;$p' | paste -sd- ), mean $(awk '{s += $2} END {printf "%.1f", s/NR}' log.load)"
 echo "water cells: $(awk '/^ *cells:/ {print $2}' log.checkMesh)"
 echo "time steps: $(grep -c '^Time =' log.cellBlastFoam)," \
     "first steps' deltaT: $(awk '/^deltaT/ {print $3}' log.cellBlastFoam | sed -n 200p) s (step 200)"
