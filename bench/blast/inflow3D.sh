@@ -17,10 +17,16 @@
 #              -inflow 20e-6
 #   MAXCO=X in the environment: system/controlDict's maxCo of the copy
 #   set to X (the tutorial's default 0.9; 0.5 before 2026-12-03)
+#   NICENESS=N in the environment: cellBlastFoam runs at nice -n N
+#   (default 10; 0 for a final measurement on a shared machine)
+#
+# While cellBlastFoam runs, the load average is sampled every 15 s into
+# DIR/quarter3D/log.load (printed as its range at the end).
 #
 # Prints: water cells (checkMesh), time steps, the time step before the
 # arrival, coupling passes, cellBlastFoam's CPU split of the time loop
-# (rank 0; on N ranks also the largest of each part over the ranks),
+# (rank 0; on N ranks also the largest of each part over the ranks and
+# every rank's split),
 # wall time and peak resident memory of the run (/usr/bin/time -v: the
 # largest of the processes it waited for, i.e. one rank), and on
 # one rank planeWave's measures (postProcessing/planeWave/0/measures.dat,
@@ -49,20 +55,33 @@ echo "== ./Allrun -noRun -noPlots ${npOpt[*]} $*"
 PROJECT_DIR=$root ./Allrun -noRun -noPlots "${npOpt[@]}" "$@" > log.prepare 2>&1 \
     || { tail -20 log.prepare; exit 1; }
 grep '^Pulse' log.prepare || true
+niceness=${NICENESS:-10}
+(
+    while true
+    do
+        echo "$(date -u +%T) $(cut -d' ' -f1-3 /proc/loadavg)" >> log.load
+        sleep 15
+    done
+) &
+sampler=$!
+trap 'kill $sampler 2> /dev/null || true' EXIT
 if [ "$np" -le 1 ]
 then
-    echo "== nice -n 10 /usr/bin/time -v cellBlastFoam"
-    nice -n 10 /usr/bin/time -v -o log.time cellBlastFoam > log.cellBlastFoam 2>&1
+    echo "== nice -n $niceness /usr/bin/time -v cellBlastFoam"
+    nice -n "$niceness" /usr/bin/time -v -o log.time cellBlastFoam \
+        > log.cellBlastFoam 2>&1
 else
-    echo "== nice -n 10 /usr/bin/time -v mpirun -np $np --bind-to none cellBlastFoam -parallel"
-    nice -n 10 /usr/bin/time -v -o log.time mpirun -np "$np" --bind-to none \
-        cellBlastFoam -parallel > log.cellBlastFoam 2>&1
+    echo "== nice -n $niceness /usr/bin/time -v mpirun -np $np --bind-to none cellBlastFoam -parallel"
+    nice -n "$niceness" /usr/bin/time -v -o log.time mpirun -np "$np" \
+        --bind-to none cellBlastFoam -parallel > log.cellBlastFoam 2>&1
 fi
+kill $sampler 2> /dev/null || true
+echo "load average (1 min) during the run, every 15 s: $(awk '{print $2}' log.load | sort -g | sed -n '1p;$p' | paste -sd- ), mean $(awk '{s += $2} END {printf "%.1f", s/NR}' log.load)"
 echo "water cells: $(awk '/^ *cells:/ {print $2}' log.checkMesh)"
 echo "time steps: $(grep -c '^Time =' log.cellBlastFoam)," \
     "first steps' deltaT: $(awk '/^deltaT/ {print $3}' log.cellBlastFoam | sed -n 200p) s (step 200)"
-grep -E "^(CPU time of the time loop|    largest over|FSI interface energy|FSI coupling [A-Za-z]+:)" \
-    log.cellBlastFoam | tail -4
+grep -E "^(CPU time of the time loop|    largest over|    rank [0-9]+: time loop|FSI interface energy|FSI coupling [A-Za-z]+:)" \
+    log.cellBlastFoam | tail -$((4 + (np > 1 ? np : 0)))
 echo "wall (time -v): $(awk -F': ' '/Elapsed \(wall clock\)/ {print $2}' log.time)," \
     "peak RSS $(awk -F': ' '/Maximum resident/ {printf "%.0f MB", $2/1024}' log.time)," \
     "load at the end $(cut -d' ' -f1-3 /proc/loadavg)"

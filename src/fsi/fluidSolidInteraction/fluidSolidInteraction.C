@@ -781,6 +781,27 @@ void Foam::fluidSolidInteraction::report()
             << " s, solid " << largest(cpuSolid_) << " s, other "
             << largest(total - cpuMotion_ - cpuFluid_ - cpuSolid_) << " s"
             << endl;
+        // Every rank's split (the imbalance of a part: one rank's work
+        // against the other's waiting in it)
+        List<scalarList> split(Pstream::nProcs());
+        split[Pstream::myProcNo()] = scalarList
+        ({
+            total, cpuMotion_, cpuFluid_, cpuSolid_, cpuCoupling_,
+            cpuRestore_, cpuOutput_
+        });
+        Pstream::gatherList(split);
+        forAll(split, proci)
+        {
+            const scalarList& x = split[proci];
+            if (x.size() != 7) continue;
+            Info<< "    rank " << proci << ": time loop " << x[0]
+                << " s: mesh motion " << x[1] << " s, fluid " << x[2]
+                << " s, solid " << x[3] << " s, other "
+                << x[0] - x[1] - x[2] - x[3] << " s (coupling " << x[4]
+                << " s, restore " << x[5] << " s, output " << x[6]
+                << " s, the rest " << x[0] - x[1] - x[2] - x[3] - x[4]
+                 - x[5] - x[6] << " s)" << endl;
+        }
     }
 
     if (couplingLog_.valid())

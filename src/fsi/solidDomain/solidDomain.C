@@ -11,6 +11,9 @@
 #include "IFstream.H"
 #include "OSspecific.H"
 #include "SubList.H"
+#include "Pstream.H"
+
+#include <mpi.h>
 
 #include <algorithm>
 #include <cmath>
@@ -202,6 +205,27 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
             << "mean dilatation) and 'gaussPoints'" << exit(FatalIOError);
     }
     model_->setPointVolumetric(integration == "gaussPoints");
+    if (Pstream::parRun())
+    {
+        // The solid's elements shared over the ranks, the forces summed
+        // through MPI (OpenFOAM's world communicator is MPI_COMM_WORLD)
+        model_->setPartition
+        (
+            solid::Partition
+            (
+                Pstream::myProcNo(),
+                Pstream::nProcs(),
+                [](const double* mine, std::size_t n, double* all)
+                {
+                    MPI_Allgather
+                    (
+                        const_cast<double*>(mine), int(n), MPI_DOUBLE,
+                        all, int(n), MPI_DOUBLE, MPI_COMM_WORLD
+                    );
+                }
+            )
+        );
+    }
     guarded("solid initialise", [&]
     {
         model_->initialise();
@@ -715,6 +739,19 @@ void Foam::solidDomain::setupOutput()
     const solid::Mesh& m = mesh();
     const label nProbes = label(probes_.size());
     probeStrain_.setSize(2*nProbes, 0);
+    for (const solid::PointProbe& p : probes_)
+    {
+        probeElements_.insert
+        (
+            probeElements_.end(), p.patch().begin(), p.patch().end()
+        );
+    }
+    std::sort(probeElements_.begin(), probeElements_.end());
+    probeElements_.erase
+    (
+        std::unique(probeElements_.begin(), probeElements_.end()),
+        probeElements_.end()
+    );
     if (nProbes && Pstream::master())
     {
         const fileName dir
@@ -825,7 +862,7 @@ void Foam::solidDomain::setupOutput()
 void Foam::solidDomain::save()
 {
     saved_.model = solid::ModelSnapshot(*model_);
-    saved_.solver.reset(new solid::ExplicitSolver(*solver_));
+    saved_.solver = solver_->state();
     startForces_ = force_->forces();
     startTime_ = model_->time;
 }
@@ -834,7 +871,7 @@ void Foam::solidDomain::save()
 void Foam::solidDomain::restore()
 {
     saved_.model.restore(*model_);
-    solver_.reset(new solid::ExplicitSolver(*saved_.solver));
+    solver_->setState(saved_.solver);
 }
 
 
@@ -884,6 +921,9 @@ void Foam::solidDomain::write(const scalar dt)
         const solid::Mat3 dev = s - s.trace()/3*solid::Mat3::Identity();
         return std::sqrt(1.5*(dev.array()*dev.array()).sum());
     };
+    // The probes' histories from the ranks that own their elements (every
+    // rank takes part; the master evaluates and writes)
+    model_->shareStates(probeElements_);
     if (probeFile_.valid())
     {
         OFstream& os = probeFile_();
@@ -910,23 +950,34 @@ void Foam::solidDomain::write(const scalar dt)
         os  << nl;
         os.flush();
     }
-    if (interfaceFile_.valid())
+    if (interfaceElements_.size())
     {
-        OFstream& os = interfaceFile_();
-        os  << runTime_.value();
+        // Each rank's elements (whose histories it holds), then the
+        // maxima over the ranks
+        const label b = model_->elementBegin(), e1 = model_->elementEnd();
+        std::vector<double> maxima;
         for (const labelList& elems : interfaceElements_)
         {
             scalar pMax = -GREAT, vmMax = 0;
             for (const label e : elems)
             {
+                if (e < b || e >= e1) continue;
                 const solid::ElementOutput o = model_->evaluateElement(e, 0);
                 pMax = max(pMax, o.p);
                 vmMax = max(vmMax, vonMises(o.sigma));
             }
-            os  << ' ' << pMax << ' ' << vmMax;
+            maxima.push_back(pMax);
+            maxima.push_back(vmMax);
         }
-        os  << nl;
-        os.flush();
+        model_->partition().combine(maxima.data(), 0, 0, maxima.size());
+        if (interfaceFile_.valid())
+        {
+            OFstream& os = interfaceFile_();
+            os  << runTime_.value();
+            for (const scalar m : maxima) os << ' ' << m;
+            os  << nl;
+            os.flush();
+        }
     }
     if (runTime_.writeTime())
     {
@@ -934,6 +985,9 @@ void Foam::solidDomain::write(const scalar dt)
         // a run killed later restarts here and loses no row
         if (probeFile_.valid()) probeFile_().flush();
         if (interfaceFile_.valid()) interfaceFile_().flush();
+        // The whole solid's histories on the master for the result file
+        // (stresses) and the restart state
+        model_->shareStates();
         label k = -1;
         if (writer_)
         {

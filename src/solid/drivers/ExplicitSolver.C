@@ -258,8 +258,10 @@ void solid::ExplicitSolver::addFilteredShearForce
         }
     }
 
-    // g = (I - A)^T s, f_e = -Bd_e^T g_e
-    for (int e = 0; e < ne; ++e)
+    // g = (I - A)^T s, f_e = -Bd_e^T g_e: this part's elements (the
+    // rates and averages above over all elements, the same on every part)
+    const int eEnd = model_.elementEnd();
+    for (int e = model_.elementBegin(); e < eEnd; ++e)
     {
         const int* en = mesh.element(e);
         Rate g = s.col(e);
@@ -285,7 +287,8 @@ Eigen::VectorXd solid::ExplicitSolver::hourglassForce
     const Mesh& mesh = model_.mesh();
     const int nen = mesh.nen(), dim = mesh.dim();
     Eigen::Matrix<double, 8, 3> ve;
-    for (int e = 0; e < mesh.nElements(); ++e)
+    const int eEnd = model_.elementEnd();
+    for (int e = model_.elementBegin(); e < eEnd; ++e)
     {
         const int* en = mesh.element(e);
         for (int a = 0; a < nen; ++a)
@@ -316,6 +319,64 @@ Eigen::VectorXd solid::ExplicitSolver::hourglassForce
     }
     return f;
 }
+
+void solid::ExplicitSolver::forces
+(
+    const double t,
+    const double dt,
+    const Eigen::VectorXd& v,
+    Eigen::VectorXd& fhg
+)
+{
+    Model& m = model_;
+    if (m.partition().serial())
+    {
+        m.assemble(m.u, m.pressure, t, dt, false, asm_);
+        fhg = hourglassForce(v);
+        return;
+    }
+    // This part's elements; an element's failure on one part stops every
+    // part (the exchange below is collective): the flag goes with the
+    // forces, the part that failed rethrows its own error
+    std::string error;
+    SolidError::Kind kind = SolidError::Kind::parameter;
+    try
+    {
+        m.assemble(m.u, m.pressure, t, dt, false, asm_, false);
+    }
+    catch (const SolidError& e)
+    {
+        error = e.what();
+        kind = e.kind();
+        asm_.fint = Eigen::VectorXd::Zero(m.nDisplacementDofs());
+        asm_.constraint = Eigen::VectorXd::Zero(m.nMultipliers());
+        asm_.fext = Eigen::VectorXd::Zero(m.nDisplacementDofs());
+    }
+    // The parts that failed and the sum of their kinds (+ 1)
+    const long n = m.nDisplacementDofs();
+    Eigen::VectorXd more(n + 2);
+    more.head(n) = hourglassForce(v);
+    more(n) = error.empty() ? 0 : 1;
+    more(n + 1) = error.empty() ? 0 : 1 + int(kind);
+    m.combineParts(asm_, &more);
+    fhg = more.head(n);
+    if (!error.empty())
+    {
+        throw SolidError(kind, error);
+    }
+    if (more(n) > 0)
+    {
+        throw SolidError
+        (
+            more(n) == 1
+          ? SolidError::Kind(int(more(n + 1)) - 1)
+          : SolidError::Kind::invertedElement,
+            "an element owned by another part of the parallel solid "
+            "failed (that part reports which)"
+        );
+    }
+}
+
 
 solid::ExplicitSolver::ExplicitSolver
 (
@@ -386,11 +447,10 @@ solid::ExplicitSolver::ExplicitSolver
     fixed_ = m.prescribedDofs();
     invMass_ = m.lumpedMass().cwiseInverse();
     if (anyHourglass) buildHourglass();
-    m.assemble(m.u, m.pressure, m.time, 0, false, asm_);
+    forces(m.time, 0, m.v, fhg_);
     m.commit();
     fint_ = asm_.fint;
     fext_ = asm_.fext;
-    fhg_ = hourglassForce(m.v);
     a_ = (fext_ - fint_ + fhg_).cwiseProduct(invMass_);
     for (int d : fixed_) a_(d) = 0;
     stableDt_ = std::min(asm_.stableDt, hourglassStableDt_);
@@ -447,9 +507,11 @@ double solid::ExplicitSolver::step()
     m.applyDirichlet(m.u, t1);
     for (int d : fixed_) vh(d) = (m.u(d) - u0(d))/dt;
 
+    // Internal and viscous hourglass forces (from the mid-step velocity)
+    Eigen::VectorXd fhg;
     try
     {
-        m.assemble(m.u, m.pressure, t1, dt, false, asm_);
+        forces(t1, dt, vh, fhg);
     }
     catch (const SolidError& e)
     {
@@ -461,8 +523,6 @@ double solid::ExplicitSolver::step()
           + " (dt = " + seconds(dt) + "): " + e.what()
         );
     }
-    // Viscous hourglass force from the mid-step velocity
-    const Eigen::VectorXd fhg = hourglassForce(vh);
     Eigen::VectorXd a =
         (asm_.fext - asm_.fint + fhg).cwiseProduct(invMass_);
     for (int d : fixed_) a(d) = 0;

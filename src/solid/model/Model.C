@@ -294,10 +294,20 @@ void solid::Model::assemble
     double t,
     double dt,
     bool tangent,
-    Assembly& a
+    Assembly& a,
+    bool combine
 )
 {
     requireInitialised("assemble");
+    if (tangent && !partition_.serial())
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter,
+            "Model::assemble: the tangent of a model shared over "
+          + std::to_string(partition_.nParts()) + " parts (one part only)"
+        );
+    }
     const int dim = mesh_.dim(), nen = mesh_.nen(), nd = nen*dim;
     const int nu = nDisplacementDofs();
     a.fint = Eigen::VectorXd::Zero(nu);
@@ -332,7 +342,8 @@ void solid::Model::assemble
     ElementOutput out;
     std::vector<int> dofs(nd);
     Eigen::VectorXd ue(nd);
-    for (int e = 0; e < mesh_.nElements(); ++e)
+    const int eEnd = elementEnd();
+    for (int e = elementBegin(); e < eEnd; ++e)
     {
         const int* en = mesh_.element(e);
         for (int b = 0; b < nen; ++b)
@@ -398,6 +409,7 @@ void solid::Model::assemble
             }
         }
     }
+    if (combine) combineParts(a);
     a.fext = Eigen::VectorXd::Zero(nu);
     for (const auto& c : contributions_)
     {
@@ -411,8 +423,96 @@ void solid::Model::assemble
         // A contribution coupled dofs outside the element pattern: extend
         // the pattern once and assemble again
         buildPattern();
-        assemble(x, p, t, dt, tangent, a);
+        assemble(x, p, t, dt, tangent, a, combine);
     }
+}
+
+
+void solid::Model::combineParts(Assembly& a, Eigen::VectorXd* more) const
+{
+    if (partition_.serial()) return;
+    const std::size_t nf = a.fint.size(), nc = a.constraint.size();
+    const std::size_t nm = more ? more->size() : 0;
+    const std::size_t nSum = nf + nc + nm + 4;
+    std::vector<double> x(nSum + 2);
+    double* p = x.data();
+    p = std::copy(a.fint.data(), a.fint.data() + nf, p);
+    p = std::copy(a.constraint.data(), a.constraint.data() + nc, p);
+    if (more) p = std::copy(more->data(), more->data() + nm, p);
+    *p++ = a.energy;
+    *p++ = a.dissipated;
+    *p++ = a.shockHeat;
+    *p++ = a.viscousHeat;
+    *p++ = a.stableDt;
+    *p++ = a.temperatureRiseMax;
+    partition_.combine(x.data(), nSum, 1, 1);
+    const double* q = x.data();
+    std::copy(q, q + nf, a.fint.data());
+    q += nf;
+    std::copy(q, q + nc, a.constraint.data());
+    q += nc;
+    if (more)
+    {
+        std::copy(q, q + nm, more->data());
+        q += nm;
+    }
+    a.energy = *q++;
+    a.dissipated = *q++;
+    a.shockHeat = *q++;
+    a.viscousHeat = *q++;
+    a.stableDt = *q++;
+    a.temperatureRiseMax = *q++;
+}
+
+
+void solid::Model::shareStates(const std::vector<int>& elements)
+{
+    if (partition_.serial()) return;
+    const int b = elementBegin(), e1 = elementEnd();
+    std::size_t n = 0;
+    for (const int e : elements)
+    {
+        n += pointState_.size(e) + elementState_.size(e);
+    }
+    // Owners' blocks, zeros elsewhere: the sum is the owner's value
+    std::vector<double> x(n, 0.0);
+    std::size_t k = 0;
+    for (const int e : elements)
+    {
+        const bool mine = e >= b && e < e1;
+        for (StateArray* s : {&pointState_, &elementState_})
+        {
+            const double* o = s->old(e);
+            for (int i = 0; i < s->size(e); ++i, ++k)
+            {
+                if (mine) x[k] = o[i];
+            }
+        }
+    }
+    partition_.combine(x.data(), n);
+    k = 0;
+    for (const int e : elements)
+    {
+        for (StateArray* s : {&pointState_, &elementState_})
+        {
+            double* o = s->old(e);
+            double* c = s->current(e);
+            for (int i = 0; i < s->size(e); ++i, ++k)
+            {
+                o[i] = x[k];
+                c[i] = x[k];
+            }
+        }
+    }
+}
+
+
+void solid::Model::shareStates()
+{
+    if (partition_.serial()) return;
+    std::vector<int> all(mesh_.nElements());
+    for (int e = 0; e < mesh_.nElements(); ++e) all[e] = e;
+    shareStates(all);
 }
 
 

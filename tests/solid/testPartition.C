@@ -1,0 +1,391 @@
+// The explicit solver with its elements shared over parts (solid::Partition,
+// Model::setPartition; the FSI solver's ranks): the parts' partial element
+// forces sum to the serial ones; two parts stepping in two threads, their
+// exchange a fake all-gather between the threads, advance the replicated
+// nodes bit-identically on both parts and to the serial run's values to
+// round-off (summation order); shareStates brings every element's history
+// to both parts; the partition covers every element once.
+#include "ExplicitSolver.H"
+#include "Partition.H"
+#include "SolidError.H"
+#include "SolidTestUtils.H"
+
+#include <gtest/gtest.h>
+#include <algorithm>
+#include <condition_variable>
+#include <cstdio>
+#include <mutex>
+#include <random>
+#include <thread>
+
+using namespace solid;
+
+namespace
+{
+
+//- The exchange of nParts threads: each deposits its values, waits for
+//  the others, copies all in part order, waits again (so that no part
+//  overwrites its values before every part has copied them)
+class ThreadGather
+{
+    std::mutex mutex_;
+    std::condition_variable cv_;
+    const int nParts_;
+    int arrived_ = 0;
+    long generation_ = 0;
+    std::vector<std::vector<double>> data_;
+
+    void barrier(std::unique_lock<std::mutex>& lock)
+    {
+        const long g = generation_;
+        if (++arrived_ == nParts_)
+        {
+            arrived_ = 0;
+            ++generation_;
+            cv_.notify_all();
+        }
+        else
+        {
+            cv_.wait(lock, [&] { return generation_ != g; });
+        }
+    }
+
+public:
+
+    explicit ThreadGather(int nParts) : nParts_(nParts), data_(nParts) {}
+
+    Partition::AllGather of(int part)
+    {
+        return [this, part](const double* mine, std::size_t n, double* all)
+        {
+            std::unique_lock<std::mutex> lock(mutex_);
+            data_[part].assign(mine, mine + n);
+            barrier(lock);
+            for (int r = 0; r < nParts_; ++r)
+            {
+                std::copy(data_[r].begin(), data_[r].end(), all + r*n);
+            }
+            barrier(lock);
+        };
+    }
+};
+
+//- A distorted bar of 7 x 2 x 2 hexahedra of the cell's cytoplasm (Mie-
+//  Grueneisen, a Maxwell branch: element and point histories), fixed at
+//  xmin, with random initial velocities (the same on every call);
+//  reversed: the elements listed in the reverse order (the same model,
+//  its nodal sums in another order)
+std::unique_ptr<Model> bar(bool reversed = false)
+{
+    const double h = 1e-6;
+    Mesh m = Mesh::box(7, 2, 2, Vec3(0, 0, 0), Vec3(7*h, 2*h, 2*h));
+    solidTest::distortInterior(m, h, 0.2, 5);
+    if (reversed)
+    {
+        const int nen = m.nen(), ne = m.nElements();
+        std::vector<int> conn(m.conn.size());
+        for (int e = 0; e < ne; ++e)
+        {
+            std::copy
+            (
+                m.element(ne - 1 - e), m.element(ne - 1 - e) + nen,
+                conn.begin() + nen*e
+            );
+        }
+        m.conn = conn;
+        std::reverse(m.region.begin(), m.region.end());
+    }
+    std::unique_ptr<Model> model(new Model(m));
+    model->setMaterial(m.regionNames[0], solidTest::cytoplasm());
+    for (int i = 0; i < 3; ++i) model->fix("xmin", i);
+    return model;
+}
+
+void start(Model& m)
+{
+    m.initialise();
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int d = 0; d < m.v.size(); ++d) m.v(d) = u(gen);
+    for (const int d : m.prescribedDofs()) m.v(d) = 0;
+}
+
+//- The tutorial's viscosities: hourglass, filtered deviatoric
+ExplicitSettings settings()
+{
+    ExplicitSettings set;
+    set.hourglass = 0.1;
+    set.shearViscosity = 0.2;
+    set.shearViscosityFilter = true;
+    return set;
+}
+
+double relDiff(const Eigen::VectorXd& a, const Eigen::VectorXd& b)
+{
+    return (a - b).lpNorm<Eigen::Infinity>()
+       /std::max(b.lpNorm<Eigen::Infinity>(), 1e-300);
+}
+
+//- The committed histories of a model built by bar(true), in the
+//  element order of bar()
+std::vector<double> unreversed(const StateArray& s)
+{
+    std::vector<double> x;
+    const int ne = int(s.nItems());
+    for (int e = 0; e < ne; ++e)
+    {
+        x.insert(x.end(), s.old(ne - 1 - e), s.old(ne - 1 - e) + s.size(e));
+    }
+    return x;
+}
+
+double relDiff(const std::vector<double>& a, const std::vector<double>& b)
+{
+    return relDiff
+    (
+        Eigen::Map<const Eigen::VectorXd>(a.data(), a.size()),
+        Eigen::Map<const Eigen::VectorXd>(b.data(), b.size())
+    );
+}
+
+} // namespace
+
+
+TEST(partition, ownsEveryElementOnce)
+{
+    for (const int n : {0, 1, 5, 28, 2085})
+    {
+        for (const int parts : {1, 2, 3, 7})
+        {
+            std::vector<int> owners(n, 0);
+            int previousEnd = 0;
+            for (int p = 0; p < parts; ++p)
+            {
+                const Partition P(p, parts, [](const double*, std::size_t,
+                                               double*) {});
+                EXPECT_EQ(P.begin(n), previousEnd);
+                for (int e = P.begin(n); e < P.end(n); ++e) ++owners[e];
+                // Balanced: block sizes differ by at most one
+                EXPECT_LE(P.end(n) - P.begin(n), n/parts + 1);
+                EXPECT_GE(P.end(n) - P.begin(n), n/parts);
+                previousEnd = P.end(n);
+            }
+            EXPECT_EQ(previousEnd, n);
+            for (const int c : owners) EXPECT_EQ(c, 1);
+        }
+    }
+    EXPECT_THROW(Partition(2, 2, {}), SolidError);
+    EXPECT_THROW(Partition(0, 0, {}), SolidError);
+    EXPECT_THROW(Partition(0, 2, {}), SolidError);      // no exchange
+    EXPECT_NO_THROW(Partition(0, 1, {}));
+}
+
+
+TEST(partition, combineSumsInPartOrderMinMax)
+{
+    // Three parts in three threads: sums in part order, minima, maxima;
+    // the same bits on every part
+    ThreadGather g(3);
+    std::vector<std::vector<double>> x(3);
+    std::vector<std::thread> threads;
+    for (int p = 0; p < 3; ++p)
+    {
+        x[p] = {1e16*(p == 0) + 1.0, double(p), double(p), -double(p)};
+        threads.emplace_back([&, p]
+        {
+            Partition(p, 3, g.of(p)).combine(x[p].data(), 2, 1, 1);
+        });
+    }
+    for (auto& t : threads) t.join();
+    for (int p = 0; p < 3; ++p)
+    {
+        // (1e16 + 1) + 1 + 1 in part order
+        EXPECT_EQ(x[p][0], (1e16 + 1.0) + 1.0 + 1.0);
+        EXPECT_EQ(x[p][1], 3.0);
+        EXPECT_EQ(x[p][2], 0.0);
+        EXPECT_EQ(x[p][3], 0.0);
+        EXPECT_EQ(x[p], x[0]);
+    }
+}
+
+
+TEST(partition, partialForcesSumToSerial)
+{
+    // Each part's assemble over its own elements (not combined): the sum
+    // of the parts' internal forces and energies is the serial one
+    auto serial = bar();
+    start(*serial);
+    serial->u = 1e-3*serial->v*1e-6;
+    Assembly as;
+    serial->assemble(serial->u, serial->pressure, 0, 1e-12, false, as);
+    Eigen::VectorXd sum(Eigen::VectorXd::Zero(as.fint.size()));
+    double energy = 0;
+    double stableDt = 1e300;
+    for (int p = 0; p < 2; ++p)
+    {
+        auto m = bar();
+        m->setPartition(Partition(p, 2, [](const double*, std::size_t,
+                                           double*) { FAIL(); }));
+        start(*m);
+        m->u = serial->u;
+        Assembly a;
+        m->assemble(m->u, m->pressure, 0, 1e-12, false, a, false);
+        sum += a.fint;
+        energy += a.energy;
+        stableDt = std::min(stableDt, a.stableDt);
+        // Each part's share is not the whole
+        EXPECT_GT(relDiff(a.fint, as.fint), 1e-3);
+        // The tangent is refused on a shared model
+        EXPECT_THROW
+        (
+            m->assemble(m->u, m->pressure, 0, 1e-12, true, a, false),
+            SolidError
+        );
+    }
+    std::printf("parts' internal force sum against serial: %.3e relative\n",
+        relDiff(sum, as.fint));
+    EXPECT_LT(relDiff(sum, as.fint), 1e-13);
+    EXPECT_NEAR(energy, as.energy, 1e-13*std::abs(as.energy));
+    EXPECT_EQ(stableDt, as.stableDt);
+}
+
+
+TEST(partition, twoPartsStepAsSerial)
+{
+    // The serial run and, for the scale of round-off, the serial run with
+    // its elements in the reverse order (its nodal sums in another order,
+    // as the parts' are): the 2 parts must differ from the serial run by
+    // no more than a few times what that reordering alone gives
+    const int steps = 200;
+    auto serial = bar();
+    start(*serial);
+    ExplicitSolver s(*serial, settings());
+    for (int i = 0; i < steps; ++i) s.step();
+    auto reordered = bar(true);
+    start(*reordered);
+    ExplicitSolver r(*reordered, settings());
+    for (int i = 0; i < steps; ++i) r.step();
+    const ExplicitState rs = r.state();
+
+    ThreadGather g(2);
+    std::vector<std::unique_ptr<Model>> m(2);
+    std::vector<ExplicitState> st(2);
+    for (int p = 0; p < 2; ++p)
+    {
+        m[p] = bar();
+        m[p]->setPartition(Partition(p, 2, g.of(p)));
+        start(*m[p]);
+    }
+    std::vector<std::thread> threads;
+    for (int p = 0; p < 2; ++p)
+    {
+        threads.emplace_back([&, p]
+        {
+            ExplicitSolver solver(*m[p], settings());
+            for (int i = 0; i < steps; ++i) solver.step();
+            m[p]->shareStates();
+            st[p] = solver.state();
+        });
+    }
+    for (auto& t : threads) t.join();
+
+    const ExplicitState ss = s.state();
+    std::printf("2 parts against serial after %d steps: u %.3e, v %.3e, "
+        "a %.3e, fint %.3e, fhg %.3e, point states %.3e, internal "
+        "energy %.3e, hourglass dissipation %.3e relative\n", steps,
+        relDiff(m[0]->u, serial->u), relDiff(m[0]->v, serial->v),
+        relDiff(st[0].a, ss.a), relDiff(st[0].fint, ss.fint),
+        relDiff(st[0].fhg, ss.fhg),
+        relDiff(m[0]->pointState().oldData(),
+                serial->pointState().oldData()),
+        std::abs(st[0].energy.internal/ss.energy.internal - 1),
+        std::abs(st[0].energy.hourglass/ss.energy.hourglass - 1));
+    // The replicated nodes: the same bits on both parts
+    EXPECT_EQ(m[0]->u, m[1]->u);
+    EXPECT_EQ(m[0]->v, m[1]->v);
+    EXPECT_EQ(st[0].a, st[1].a);
+    EXPECT_EQ(st[0].dt, st[1].dt);
+    EXPECT_EQ(m[0]->pointState().oldData(), m[1]->pointState().oldData());
+    EXPECT_EQ(m[0]->elementState().oldData(),
+              m[1]->elementState().oldData());
+    // Against serial: round-off, as the reordered serial run (which
+    // itself differs from the serial run: the comparison is not empty)
+    const double
+        du = relDiff(reordered->u, serial->u),
+        dv = relDiff(reordered->v, serial->v),
+        dfint = relDiff(rs.fint, ss.fint),
+        dfhg = relDiff(rs.fhg, ss.fhg),
+        dps = relDiff(unreversed(reordered->pointState()),
+                      serial->pointState().oldData()),
+        des = relDiff(unreversed(reordered->elementState()),
+                      serial->elementState().oldData());
+    std::printf("reordered serial against serial: u %.3e, v %.3e, fint "
+        "%.3e, fhg %.3e, point states %.3e, element states %.3e "
+        "relative\n", du, dv, dfint, dfhg, dps, des);
+    EXPECT_GT(ss.energy.hourglass, 0);
+    EXPECT_GT(dv, 0);
+    EXPECT_GT(dfint, 0);
+    const double f = 10;
+    EXPECT_LT(relDiff(m[0]->u, serial->u), f*du);
+    EXPECT_LT(relDiff(m[0]->v, serial->v), f*dv);
+    EXPECT_LT(relDiff(st[0].fint, ss.fint), f*dfint);
+    EXPECT_LT(relDiff(st[0].fhg, ss.fhg), f*dfhg);
+    EXPECT_LT(relDiff(m[0]->pointState().oldData(),
+                      serial->pointState().oldData()), f*dps);
+    EXPECT_LT(relDiff(m[0]->elementState().oldData(),
+                      serial->elementState().oldData()), f*des);
+    // and small in absolute terms
+    EXPECT_LT(relDiff(m[0]->u, serial->u), 1e-12);
+    EXPECT_LT(relDiff(m[0]->v, serial->v), 1e-10);
+    EXPECT_NEAR(st[0].dt, ss.dt, 1e-12*ss.dt);
+    EXPECT_NEAR(st[0].energy.internal, ss.energy.internal,
+                1e-10*std::abs(ss.energy.internal));
+    EXPECT_NEAR(st[0].energy.hourglass, ss.energy.hourglass,
+                1e-10*std::abs(ss.energy.hourglass));
+    EXPECT_NEAR(st[0].energy.balance(), ss.energy.balance(),
+                1e-10*std::abs(ss.energy.kinetic));
+}
+
+
+TEST(partition, shareStatesOfSomeElements)
+{
+    // Histories of listed elements only: from their owners to both parts;
+    // the other elements keep each part's own values
+    ThreadGather g(2);
+    std::vector<std::unique_ptr<Model>> m(2);
+    for (int p = 0; p < 2; ++p)
+    {
+        m[p] = bar();
+        m[p]->setPartition(Partition(p, 2, g.of(p)));
+        start(*m[p]);
+        // Marks: part p writes p + 1 into every element's blocks
+        for (StateArray* s : {&m[p]->pointState(), &m[p]->elementState()})
+        {
+            std::fill(s->oldData().begin(), s->oldData().end(), p + 1.0);
+        }
+    }
+    const int ne = m[0]->mesh().nElements();
+    const std::vector<int> listed = {0, ne/2 - 1, ne/2, ne - 1};
+    std::vector<std::thread> threads;
+    for (int p = 0; p < 2; ++p)
+    {
+        threads.emplace_back([&, p] { m[p]->shareStates(listed); });
+    }
+    for (auto& t : threads) t.join();
+    for (int p = 0; p < 2; ++p)
+    {
+        const StateArray& s = m[p]->pointState();
+        for (int e = 0; e < ne; ++e)
+        {
+            const bool isListed =
+                std::find(listed.begin(), listed.end(), e) != listed.end();
+            const double owner = e < ne/2 ? 1.0 : 2.0;
+            ASSERT_GT(s.size(e), 0);
+            EXPECT_EQ(s.old(e)[0], isListed ? owner : p + 1.0) << e;
+            if (isListed)
+            {
+                EXPECT_EQ(s.current(e)[0], owner) << e;
+            }
+        }
+    }
+}
