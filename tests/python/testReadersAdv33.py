@@ -66,6 +66,21 @@ class Coverage(TempDirTestCase):
                            np.array(data))
         pp.checkCovers(self.tmp, "x/y.dat", np.array([[0.0], [2.1e-9]]))
 
+    def testTimeNameRounded(self):
+        # the time directory's name is the time to its digits: a log whose
+        # last row is the exact time covers it (blast.axisymmetricPreview
+        # Smoke: 2.200335068e-08 s in 2.2003351e-08); one a step short not
+        import numpy as np
+        self.write("2.2003351e-08/.writeCommitted", "\n")
+        pp.checkCovers(self.tmp, "x/y.dat",
+                       np.array([[0.0], [2.200335068e-08]]))
+        with self.assertRaises(pp.ColumnFileError):
+            pp.checkCovers(self.tmp, "x/y.dat",
+                           np.array([[0.0], [2.1999e-08]]))
+        with self.assertRaises(pp.ColumnFileError):
+            pp.checkCovers(self.tmp, "x/y.dat",
+                           np.array([[0.0], [2.2003341e-08]]))
+
     def testNoCommittedTime(self):
         import numpy as np
         pp.checkCovers(self.tmp, "x/y.dat", np.array([[0.0]]))
