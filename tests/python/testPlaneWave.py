@@ -713,3 +713,21 @@ class PlaneWaveInflowUtility(TempDirTestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class CaseProbesFinite(TempDirTestCase):
+    """A nan in a water probe's history is refused naming the probe and
+    the time (adv34 n14: nan errors printed, exit 0)."""
+
+    def testNanRefused(self):
+        from neuronFsi import planeWave as pwave
+        self.write("postProcessing/fluidProbes/0/p",
+                   "# Probe 0 (0 1e-05 0)\n# Probe 1 (0 2e-05 0)\n"
+                   "#     Time  0  1\n0 1e5 1e5\n1e-09 2e5 1e5\n"
+                   "2e-09 nan 1e5\n")
+        with self.assertRaisesRegex(pwave.PlaneWaveError,
+                                    r"fluidProbes 0.*t = 2e-09 s is nan"):
+            pwave.caseProbes(self.tmp, solid=False)
+        self.write("postProcessing/fluidProbes/0/p",
+                   "# Probe 0 (0 1e-05 0)\n#     Time  0\n0 1e5\n1e-09 2e5\n")
+        self.assertEqual(len(pwave.caseProbes(self.tmp, solid=False)), 1)

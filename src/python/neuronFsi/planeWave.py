@@ -899,6 +899,16 @@ def caseProbes(case, solid=True, fluid=True):
                 out.append(("%s %d" % (os.path.basename(d), i),
                             float(m.group(2 + axis)), data[:, 0],
                             data[:, 1 + i]))
+    for name, z, t, p in out:
+        # a probe history with a nan or inf is no history to measure
+        # (adv34 n14: nan errors printed, exit 0)
+        bad = np.flatnonzero(~np.isfinite(p))
+        if len(bad):
+            raise PlaneWaveError(
+                "probe '%s' of %s: its pressure at t = %.10g s is %s (row "
+                "%d of its history in postProcessing): the file is damaged "
+                "or the run failed; nothing compared"
+                % (name, case, t[bad[0]], p[bad[0]], bad[0] + 1))
     return out
 
 
