@@ -5,17 +5,19 @@
 # planeWave -check: the Fig. 10 probe and the water probes on the axis
 # against the 1D plane wave (50 nm cells, within 0.3 % of the 25 nm
 # answer; arrival 0.3 ns, 1-ns peaks and plateau 5 %, impulse 3 %: issue
-# 17). Not checked, the known failures of docs/results/
-# blastPlaneWave.md: the echo is not yet the 1D one near the cell (water
-# probes' whole-history 1-ns peak -11 % at 10 um, solid probe's 1-ns peak
-# before the 1D echo +7.8 %, both for the 15 ns pulse), and the solid
-# probes' deviatoric response against the uniaxial-strain answer (with
-# the default filtered deviatoric viscosity: von Mises 1-ns peaks +4 to +8 %
-# off, strain +2.5 to +5 %, a residual strain of 1.5e-3 to 2.2e-3 after
-# the pulse against the bound 1e-3; without it 15-27 % and 0.003-0.005:
-# the Q1/P0 solid on gmsh's irregular quadrilaterals, docs/results/
-# blastPlaneWave.md, "A filtered deviatoric viscosity"); they are printed
-# (solidMeasures.dat). Every other measure is checked.
+# 17), and the solid probes' von Mises and strain against the uniaxial-
+# strain answer (1-ns peaks within 5 %; after 140 ns |strain_z| below 1e-3
+# and von Mises below 10 % of its peak). Not checked, the known failures
+# of docs/results/blastPlaneWave.md ("The default at x0.7"), for the 10 and
+# 15 ns pulses only: the echo from the substrate near the cell (the water
+# probe's whole-history 1-ns peak at 10 um, +14.6 / -6.1 %: the membrane's
+# quadratic law is not water's Mie-Grueneisen one, so the cell is not
+# acoustically transparent at 50-100 MPa; with water's law in the membrane
+# +5.6 % for the 10 ns pulse), the solid probe's 1-ns peak before the 1D
+# echo (+7 to +8 %: the scene's echo front, about 1 ns wide in the solid,
+# enters the window that ends at the sharp 1D echo's arrival), and for the
+# 10 ns pulse the rest strain (1.03e-3 against 1e-3: a slow isochoric drift
+# after the pulse). They are printed (measures.dat, solidMeasures.dat).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
@@ -28,7 +30,11 @@ rm -f "$work.log"
 status=0
 /usr/bin/python3 "$here/checkLongRun.py" "$work/axisymmetricPreview" 1.5e-7 \
     || status=1
-planeWave -case "$work/axisymmetricPreview" -dz 50e-9 -check \
-    -except fluid:peak1ns,solid:peakIncident,solid:vonMises1ns,\
-solid:strain1ns,solid:restStrain,solid:restVonMises || status=1
+case "$pulse" in
+    5e-9) except=() ;;
+    10e-9|1e-8) except=(-except fluid:peak1ns,solid:peakIncident,solid:restStrain) ;;
+    *) except=(-except fluid:peak1ns,solid:peakIncident) ;;
+esac
+planeWave -case "$work/axisymmetricPreview" -dz 50e-9 -check "${except[@]}" \
+    || status=1
 exit $status
