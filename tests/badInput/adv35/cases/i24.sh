@@ -1,0 +1,5 @@
+#!/bin/bash
+# i24: ind: radius as string with unit '22.5e-6 m'
+. "$(dirname "$0")/../lib.sh"
+ind; sed -i 's/^radius .*/radius 22.5e-6 m;/' constant/indenterProperties
+cellIndentationFoam > log.run 2>&1; rc=$?; grep -A5 "FATAL\|rror" log.run | head -8; tail -2 log.run; echo "rc=$rc"

@@ -1,0 +1,5 @@
+#!/bin/bash
+# i42: cellMeshDict: nucleusShape misspelt
+. "$(dirname "$0")/../lib.sh"
+ind; setd system/cellMeshDict nucleusShape scaledcell
+cellMesh > log.cm 2>&1; rc=$?; grep -A5 "FATAL\|rror" log.cm | head -8; tail -2 log.cm; echo "rc=$rc"
