@@ -60,6 +60,14 @@ class PlaneWaveOnARunningCase(LiveLockTestCase):
                          % p.pid)
         self.assertFalse(os.path.exists(self.case + "/postProcessing/"
                                         "planeWave"))
+        # -partial: the run so far, said so (here it stops further on:
+        # the case has no 0/p)
+        r = subprocess.run(tool("planeWave") + ["-case", self.case,
+                                                "-partial"],
+                           capture_output=True, text=True)
+        self.assertRegex(r.stdout, r"is not finished: it is in use by sleep"
+                         r" .*-partial: the report is of the run so far")
+        self.assertIn("no 0/p", r.stderr)
 
 
 class ToolsTakeTheLock(LiveLockTestCase):
@@ -126,6 +134,28 @@ class PythonLock(TempDirTestCase):
             self.assertEqual(caseLock.read(case + "/.runLock")["pid"],
                              os.getpid())
         self.assertFalse(os.path.exists(case + "/.runLock"))
+
+    def testSolverRefusesIt(self):
+        # a solver's caseLock (C++) sees the lock of a Python tool as live:
+        # "in use by planeWave", not taken over as stale
+        import shutil
+        if not shutil.which("rhoRiemannFoam"):
+            self.skipTest("rhoRiemannFoam not built / not on PATH")
+        case = self.tmp + "/case"
+        os.makedirs(case + "/system")
+        code = ("import sys, time\nfrom neuronFsi import caseLock\n"
+                "with caseLock.held(sys.argv[2], 'planeWave'):\n"
+                "    print('held', flush=True); time.sleep(30)\n")
+        p = subprocess.Popen([sys.executable, "-c", code, "-case", case],
+                             stdout=subprocess.PIPE, text=True)
+        self.addCleanup(lambda: (p.kill(), p.wait(), p.stdout.close()))
+        self.assertEqual(p.stdout.readline().strip(), "held")
+        r = subprocess.run(["rhoRiemannFoam", "-case", case],
+                           capture_output=True, text=True)
+        self.assertNotEqual(r.returncode, 0)
+        self.assertRegex(r.stdout + r.stderr, r"is in use by planeWave "
+                         r"\(process %d" % p.pid)
+        self.assertEqual(caseLock.read(case + "/.runLock")["pid"], p.pid)
 
     def testNotALockNeverTakenOver(self):
         os.mkdir(self.tmp + "/.runLock")
