@@ -243,7 +243,11 @@ def _stamp(path):
 
 def run_one(case, copy, f, keys, value, outputs, command):
     # copy does not exist (checked in main): copytree never replaces
-    shutil.copytree(case, copy, symlinks=True)
+    # without the case's run lock, which the sweep holds (a copy of it
+    # would be a lock of another case there)
+    shutil.copytree(case, copy, symlinks=True,
+                    ignore=lambda d, names: [caseLock.FILE]
+                    if os.path.samefile(d, case) else [])
     p = os.path.join(copy, f)
     text = foamDict.set_entry(open(p).read(), keys, value, p)
     open(p, "w").write(text)

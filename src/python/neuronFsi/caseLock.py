@@ -148,7 +148,10 @@ def inUse(case):
         if not stale(h, case):
             return "it is in use by " + _describe(h, path)
     m = caseRuns._marker(case)
-    if m is not None:
+    # the run of the marker is not this tool's own (an Allrun that runIn
+    # started, running planeWave after its solver: the same process group)
+    if m is not None and not (m[0] == os.getpgrp()
+                              and m[1] == socket.gethostname()):
         pgid, host, command = m
         if host != socket.gethostname():
             return ("a run ('%s') was started there on host %s and may "
