@@ -154,11 +154,25 @@ def sod_case(dst, n, dim, steps, stock=False, timeScheme="SSPRK3",
     return n if dim == 1 else n**3
 
 
+def fresh(case):
+    """The case as its first run found it: the time directories after the
+    initial one (also in processor*/) and postProcessing/ removed. Our
+    solvers write their end time, and a second run of the case (a repeat,
+    the profile) continued from it (startFrom latestTime) and stopped:
+    "would compute nothing" (adv33/adv34 bn10: '(perf record failed: no
+    profile)')"""
+    foam("foamListTimes -rm > /dev/null && rm -rf postProcessing"
+         " && if [ -d processor0 ]; then foamListTimes -processor -rm"
+         " > /dev/null; fi", case)
+
+
 def run_solver(case, app, nProcs=1):
-    """Run the solver; return per-step wall stamps [s] (taken when each
-    ExecutionTime line arrives), the ExecutionTime values [s], the peak
-    resident memory of every rank [MB], the wall time [s] and, serial,
-    the CPU time [s] of the process."""
+    """Run the solver from the case's initial time (fresh); return
+    per-step wall stamps [s] (taken when each ExecutionTime line arrives),
+    the ExecutionTime values [s], the peak resident memory of every rank
+    [MB], the wall time [s] and, serial, the CPU time [s] of the
+    process."""
+    fresh(case)
     if nProcs == 1:
         cmd = [app]
     else:
@@ -269,11 +283,22 @@ def profile(case, md):
         md.append("(perf not found: no profile)")
         return
     data = os.path.join(case, "perf.data")
+    fresh(case)     # the case was run to its end by the timings
     try:
         foam(f"perf record -e cpu-clock -o {data} rhoRiemannFoam", case,
              "log.perf")
     except RuntimeError:
-        md.append("(perf record failed: no profile)")
+        # why: the solver's error or perf's, named (was: "perf record
+        # failed", the cause hidden)
+        with open(os.path.join(case, "log.perf"), errors="replace") as f:
+            text = f.read()
+        m = re.search(r"FOAM FATAL.*?\n(.+)", text) or \
+            re.search(r"^(.*(?:[Ee]rror|failed|not permitted).*)$", text,
+                      re.M)
+        md.append("(perf record -e cpu-clock rhoRiemannFoam failed in %s: "
+                  "%s; see %s: no profile)"
+                  % (case, m.group(1).strip() if m else "no error message",
+                     os.path.join(case, "log.perf")))
         return
     tables = []
     for sort, title, n in (("dso", "library", 8),

@@ -220,5 +220,36 @@ class Bench(TempDirTestCase):
         self.assertEqual(shown.getvalue(), f"# T\n\n| a |\nwrote {doc}\n")
 
 
+class FluidBenchRunsTwice(TempDirTestCase):
+    """bench/fluid/run.py runs a Sod case more than once (the repeats of
+    the timings, then the perf profile): each run starts from the initial
+    time (adv33/adv34 bn10: the profile continued the finished case from
+    its end time, rhoRiemannFoam refused, the report said only '(perf
+    record failed: no profile)')."""
+
+    def testRepeatAndProfileOfAFinishedCase(self):
+        import importlib.util
+        import shutil
+        if not shutil.which("rhoRiemannFoam"):
+            self.skipTest("rhoRiemannFoam not built / not on PATH")
+        spec = importlib.util.spec_from_file_location(
+            "fluidBench", os.path.join(os.path.dirname(__file__), "..", "..",
+                                       "bench", "fluid", "run.py"))
+        run = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(run)
+        case = os.path.join(self.tmp, "sod")
+        with redirect_stdout(io.StringIO()):
+            run.sod_case(case, 200, 1, 5)
+            for _ in range(2):
+                r = run.run_solver(case, "rhoRiemannFoam")
+                self.assertEqual(len(r["cpu"]), 5)
+            if shutil.which("perf"):
+                md = []
+                run.profile(case, md)
+                self.assertNotIn("failed", "\n".join(md))
+                self.assertRegex(md[0], r"\| share of CPU samples \| "
+                                 r"library \|")
+
+
 if __name__ == "__main__":
     unittest.main()

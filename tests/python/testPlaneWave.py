@@ -731,3 +731,40 @@ class CaseProbesFinite(TempDirTestCase):
         self.write("postProcessing/fluidProbes/0/p",
                    "# Probe 0 (0 1e-05 0)\n#     Time  0\n0 1e5\n1e-09 2e5\n")
         self.assertEqual(len(pwave.caseProbes(self.tmp, solid=False)), 1)
+
+
+class CaseProbesCover(TempDirTestCase):
+    """An OpenFOAM probes file that ends before the run's latest committed
+    time is refused naming the file, its last time and the time expected
+    (adv34 n14: the file cut at 2/3, an impulse 11 % wrong, exit 0); the
+    probes run after the time step they follow, so a file one step short
+    of that time (a run killed after its write) is whole."""
+
+    def case(self, last):
+        rows = "".join("%g %g\n" % (t*1e-9, 1e5 + t) for t in range(last + 1))
+        self.write("postProcessing/fluidProbes/0/p",
+                   "# Probe 0 (0 1e-05 0)\n#     Time  0\n" + rows)
+        for t in ("4e-09", "8e-09"):
+            self.write(t + "/.writeCommitted", "")
+            self.write(t + "/uniform/time", "FoamFile { version 2.0; format "
+                       "ascii; class dictionary; object time; }\nvalue %s;\n"
+                       "name \"%s\";\nindex 8;\ndeltaT 1e-09;\ndeltaT0 "
+                       "1e-09;\n" % (t, t))
+
+    def testCutFileRefused(self):
+        from neuronFsi import planeWave as pwave
+        from neuronFsi import postProcessing as pp
+        self.case(5)
+        with self.assertRaisesRegex(
+                pp.ColumnFileError,
+                r"postProcessing/fluidProbes/0/p: its rows end at t = 5e-09 s,"
+                r" before the latest time the run wrote, 8e-09 s \(.*8e-09"
+                r"\) less its last time step \(1e-09 s.*the file is cut"):
+            pwave.caseProbes(self.tmp, solid=False)
+
+    def testOneStepShortAccepted(self):
+        from neuronFsi import planeWave as pwave
+        for last in (7, 8):
+            self.case(last)
+            self.assertEqual(len(pwave.caseProbes(self.tmp, solid=False)[0][2]),
+                             last + 1)

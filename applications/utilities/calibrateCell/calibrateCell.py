@@ -84,8 +84,8 @@ except ImportError:
 script.guard()  # an input's error: one line, exit 1 (adv33)
 
 sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
-from neuronFsi import foamDict, indenterProperties, options, ranges, \
-    signals  # noqa: E402
+from neuronFsi import caseLock, foamDict, indenterProperties, options, \
+    ranges, signals  # noqa: E402
 from forwardModel import ForwardModel, ModelError  # noqa: E402
 from targets import Targets, TargetError  # noqa: E402
 
@@ -685,9 +685,16 @@ def main():
         return 1
     dict_path = args.dict or os.path.join(args.case,
                                           "system/calibrationDict")
-    own = args.work is None
-    args.work = args.work or tempfile.mkdtemp(prefix="calibrateCell.")
+    # the solvers' run lock of the case (neuronFsi.caseLock), held while
+    # the calibration reads and writes it
     try:
+        lock = caseLock.held(args.case, "calibrateCell").__enter__()
+    except caseLock.CaseLockError as err:
+        print("calibrateCell: error: %s" % err, file=sys.stderr)
+        return 1
+    own = args.work is None
+    try:
+        args.work = args.work or tempfile.mkdtemp(prefix="calibrateCell.")
         return Calibration(args.case, dict_path, args).run()
     except ModelError as err:
         # the scratch folder stays: the message points into it
@@ -699,8 +706,9 @@ def main():
         return 1
     finally:
         # our own temporary scratch folder; kept with -keep
-        if own and not args.keep:
+        if own and args.work and not args.keep:
             shutil.rmtree(args.work, ignore_errors=True)
+        lock.__exit__(None, None, None)
 
 
 if __name__ == "__main__":

@@ -54,6 +54,17 @@ def read_curve(path):
     if not rows:
         raise TargetError("%s: empty file (expected a header row with the "
                           "columns 'time [s]' and 'force [N]')" % path)
+    # a spreadsheet export with another separator (';' in many locales, a
+    # tab): one column (adv34 n15: reported as "missing column 'time'")
+    if len(rows[0]) == 1:
+        for sep, name in ((";", "';'"), ("\t", "tabs")):
+            if sep in rows[0][0]:
+                raise TargetError(
+                    "%s: the columns of its header row are separated by %s, "
+                    "not by commas (header row: %s): calibrateCell reads "
+                    "comma-separated values; export the file with ',' as "
+                    "the separator (and '.' as the decimal mark)"
+                    % (path, name, rows[0][0]))
     heads = [_header_name(c) for c in rows[0]]
     names = [h[0] for h in heads]
     for want in ("time", "force"):

@@ -76,6 +76,36 @@ std::string incomplete(const std::string& file)
 
 //- Bytes free for an unprivileged user on the file system holding path
 //  (for the message), or -1
+//- Why writing to file fails, as the system says (strerror of errno), or
+//  empty if it does not: gmsh::write reports no error (adv33 x11: a full
+//  disk reported as an incomplete file, its cause not said). Blocks are
+//  appended until a write fails (a full file system, a file size limit)
+//  or 1 MB is written
+std::string writeError(const std::string& file)
+{
+    const int fd = ::open(file.c_str(), O_WRONLY | O_APPEND);
+    if (fd < 0)
+    {
+        return std::strerror(errno);
+    }
+    const std::vector<char> block(65536, '\n');
+    std::string why;
+    for (int i = 0; i < 16 && why.empty(); ++i)
+    {
+        if (::write(fd, block.data(), block.size()) < 0)
+        {
+            why = std::strerror(errno);
+        }
+    }
+    if (why.empty() && ::fsync(fd) != 0)
+    {
+        why = std::strerror(errno);
+    }
+    ::close(fd);
+    return why;
+}
+
+
 double bytesFree(const std::string& path)
 {
     struct statvfs s;
@@ -101,11 +131,18 @@ Foam::fileName Foam::mshFile::writeTemporary(const fileName& file)
     if (!why.empty())
     {
         const double size = Foam::fileSize(tmp);
-        const double free = bytesFree(file.path());
+        const std::string cause(writeError(tmp));
         Foam::rm(tmp);
+        const double free = bytesFree(file.path());
         FatalErrorInFunction
             << "the gmsh file written for " << file << " is incomplete ("
             << why << ", " << size << " bytes): the write failed";
+        if (!cause.empty())
+        {
+            FatalError
+                << ": writing to " << tmp << " fails with '"
+                << cause.c_str() << "'";
+        }
         if (free >= 0)
         {
             FatalError

@@ -49,7 +49,7 @@ Description
 Usage
     planeWave [-case dir] [-Z 100e-6] [-dz 25e-9] [-endTime t]
               [-probes solid,fluid] [-check] [-except m1,m2]
-              [-reference file]
+              [-reference file] [-partial]
     planeWave -inflow HEIGHT [-case dir] [-Z Z] [-dz 25e-9] [-endTime t]
               [-overwrite] [-maxSteps 1e6]
 
@@ -80,6 +80,13 @@ Usage
                 vonMises1ns, strain1ns, restStrain, restVonMises
     -reference  reuse a reference.dat of an earlier run (same pulse,
                 column and heights) instead of computing it
+    -partial    compare the probes of a run still going on in the case
+                (its solver holds the case's run lock): by default such a
+                case is refused, naming the run (adv34 n21: a report of
+                the run so far, exit 0, without a word)
+
+    planeWave takes the case's run lock (.runLock, the solvers'; neuronFsi.
+    caseLock) while it writes there; -partial takes none.
 
 \\*---------------------------------------------------------------------------*/
 """
@@ -95,7 +102,7 @@ except ImportError:
     sys.exit("planeWave.py: error: the project's Python package neuronFsi "
              "is not found: source the project's etc/bashrc first")
 script.guard()  # an input's error: one line, exit 1 (adv33)
-from neuronFsi import foamDict, options, planeWave, postProcessing
+from neuronFsi import caseLock, foamDict, options, planeWave, postProcessing
 
 BOUNDS = {"arrival": 0.3e-9, "peak1ns": 0.05, "peakIncident": 0.05,
           "plateau": 0.05, "impulse": 0.03}
@@ -120,6 +127,7 @@ def main():
     p.add_argument("-check", action="store_true")
     p.add_argument("-except", dest="skip", default="")
     p.add_argument("-reference", default=None)
+    p.add_argument("-partial", action="store_true")
     a = options.parse(p)
     case = os.path.abspath(a.case)
     # [(kind or None, measure)]: "peak1ns" or "fluid:peak1ns"
@@ -153,6 +161,25 @@ def main():
     if a.inflow is not None and (a.check or a.skip or a.reference):
         p.error("-inflow writes constant/inflowWave only: no -check, "
                 "-except or -reference with it")
+    if a.partial and a.inflow is not None:
+        p.error("-partial is not an option of -inflow (it writes "
+                "constant/inflowWave into the case: the case's run lock)")
+    if a.partial:
+        running = caseLock.inUse(case)
+        if running:
+            print("planeWave: the case %s is not finished: %s. -partial: "
+                  "the report is of the run so far (its probes' last "
+                  "time)" % (case, running))
+        return compare(case, a, p, skip, kinds)
+    if a.inflow is None:
+        caseLock.checkFree(case, "planeWave", "-partial")
+    with caseLock.held(case, "planeWave"):
+        return compare(case, a, p, skip, kinds)
+
+
+def compare(case, a, p, skip, kinds):
+    """The body of main, the options checked (the case's lock held
+    unless -partial)"""
     # the physical column: a planeWaveInflow top states it
     columnHeight = planeWave.inflowColumnHeight(case)
     if a.Z is None:
@@ -405,6 +432,6 @@ def _fmt(kind, v):
 if __name__ == "__main__":
     try:
         main()
-    except (planeWave.PlaneWaveError,
+    except (planeWave.PlaneWaveError, caseLock.CaseLockError,
             postProcessing.ColumnFileError) as err:
         sys.exit("planeWave: error: %s" % err)

@@ -59,7 +59,8 @@ except ImportError:
     sys.exit("sweepCase.py: error: the project's Python package neuronFsi "
              "is not found: source the project's etc/bashrc first")
 script.guard()  # an input's error: one line, exit 1 (adv33)
-from neuronFsi import caseRuns, foamDict, options, postProcessing, signals
+from neuronFsi import caseLock, caseRuns, foamDict, options, postProcessing, \
+    signals
 
 
 class SweepError(Exception):
@@ -242,7 +243,11 @@ def _stamp(path):
 
 def run_one(case, copy, f, keys, value, outputs, command):
     # copy does not exist (checked in main): copytree never replaces
-    shutil.copytree(case, copy, symlinks=True)
+    # without the case's run lock, which the sweep holds (a copy of it
+    # would be a lock of another case there)
+    shutil.copytree(case, copy, symlinks=True,
+                    ignore=lambda d, names: [caseLock.FILE]
+                    if os.path.samefile(d, case) else [])
     p = os.path.join(copy, f)
     text = foamDict.set_entry(open(p).read(), keys, value, p)
     open(p, "w").write(text)
@@ -284,6 +289,7 @@ def main():
     ap.add_argument("-name")
     ap.add_argument("-keep", action="store_true")
     a = options.parse(ap)
+    lock = None
     try:
         if a.nProcs < 1:
             raise SweepError("-nProcs %d is outside the valid range [1, inf)"
@@ -291,6 +297,9 @@ def main():
         case = os.path.abspath(a.case)
         if not os.path.isdir(case):
             raise SweepError("-case %s: no such directory" % case)
+        # the solvers' run lock of the case (neuronFsi.caseLock): its
+        # copies are taken from it, its report written into it
+        lock = caseLock.held(case, "sweepCase").__enter__()
         f, keys = split_entry(case, a.entry)
         outputs = [Output(s) for s in a.output]
         # one column per name (was: two columns named p; adv30 sw09b)
@@ -371,9 +380,13 @@ def main():
             c.write("".join(",".join(r) + "\n" for r in rows))
         print("\n" + md + "\nWritten %s.{md,csv}" % os.path.join(out, name))
         return 0
-    except (SweepError, foamDict.DictError, OSError) as err:
+    except (SweepError, foamDict.DictError, caseLock.CaseLockError,
+            OSError) as err:
         print("sweepCase: error: %s" % err, file=sys.stderr)
         return 1
+    finally:
+        if lock is not None:
+            lock.__exit__(None, None, None)
 
 
 if __name__ == "__main__":

@@ -881,6 +881,8 @@ def caseProbes(case, solid=True, fluid=True):
     log = "solidProbes/solidProbes.dat"
     if solid and _has(case, log):
         data = postProcessing.series(case, log)
+        # a cut file is not the run (adv34 n14)
+        postProcessing.checkCovers(case, log, data)
         cols = postProcessing.names(case, log)
         out += [("solid p%d" % i, q["point"][axis], data[:, 0],
                  data[:, cols.index("p%d" % i)])
@@ -895,6 +897,11 @@ def caseProbes(case, solid=True, fluid=True):
             if m:
                 if data is None:
                     data = postProcessing.series(case, log)
+                    # OpenFOAM's probes follow the step they sample: one
+                    # step short of the latest time written is whole
+                    # (adv34 n14: a file cut at 2/3, impulse -11 %, exit 0)
+                    postProcessing.checkCovers(case, log, data,
+                                               afterStep=True)
                 i = int(m.group(1))
                 out.append(("%s %d" % (os.path.basename(d), i),
                             float(m.group(2 + axis)), data[:, 0],

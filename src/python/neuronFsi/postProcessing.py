@@ -15,6 +15,7 @@ dropped. Any other malformed row is an error naming the file and line.
 """
 
 import glob
+import math
 import os
 import re
 
@@ -404,12 +405,43 @@ def latestCommittedTime(case):
     return best
 
 
-def checkCovers(case, log, data):
-    """A ColumnFileError unless the rows data of our solver's log "dir/
-    file" (flushed at every step, and before each write time is
-    committed) reach the latest committed time of the case: a cut file
-    was taken as the whole run (adv33 pb07: interface maxima of 'the whole
-    run' from half the file, exit 0)."""
+def lastStep(timeDir):
+    """The time step [s] that ended at a time directory the solver wrote
+    (deltaT of its uniform/time, written with the time), or None if it
+    cannot be read."""
+    try:
+        with open(os.path.join(timeDir, "uniform", "time")) as f:
+            text = f.read()
+    except OSError:
+        return None
+    m = re.search(r"^\s*deltaT\s+([^;\s]+)\s*;", text, re.M)
+    try:
+        dt = float(m.group(1)) if m else None
+    except ValueError:
+        return None
+    return dt if dt is not None and math.isfinite(dt) and dt > 0 else None
+
+
+def _lastSegment(case, log):
+    """The path of the latest segment of log "dir/file" (postProcessing/
+    dir/file if it has none)."""
+    try:
+        return segments(case, log)[-1][1]
+    except ColumnFileError:
+        return os.path.join(case, "postProcessing", log)
+
+
+def checkCovers(case, log, data, afterStep=False):
+    """A ColumnFileError unless the rows data of the log "dir/file" reach
+    the latest committed time of the case: a cut file was taken as the
+    whole run (adv33 pb07: interface maxima of 'the whole run' from half
+    the file, exit 0). Our solver's logs are flushed at every step, and
+    before each write time is committed. afterStep: a file of OpenFOAM's
+    function objects (probes): they run after the time step they follow,
+    at the start of the next one, so a run killed after its last write
+    has them one step short of that time: the rows must reach the latest
+    committed time less its last time step (deltaT of its uniform/time;
+    adv34 n14: a probes file cut at 2/3, an impulse 11 % wrong, exit 0)."""
     t, d = latestCommittedTime(case)
     if t is None:
         return
@@ -420,10 +452,25 @@ def checkCovers(case, log, data):
     # row 2.200335068e-08 s, the time 2.2003351e-08)
     mantissa = os.path.basename(d).lower().split("e")[0].lstrip("+-")
     digits = max(6, len(mantissa.replace(".", "").lstrip("0")))
-    if last is None or float("%.*g" % (digits, last)) < t:
+    step = lastStep(d) if afterStep else None
+    if afterStep and step is None:
+        raise ColumnFileError(
+            "%s: the time step that ended at the latest time the run "
+            "wrote, %.10g s, cannot be read (entry deltaT of %s): the "
+            "probes file cannot be checked against the run"
+            % (_lastSegment(case, log), t,
+               os.path.join(d, "uniform", "time")))
+    expected = t - step if step else t
+    # the rounding of the printed times: a relative 10^-digits
+    tol = abs(t)*10.0**(1 - digits)
+    if last is None or (float("%.*g" % (digits, last)) < t if not step
+                        else last < expected - tol):
         raise ColumnFileError(
             "%s: its rows end at %s, before the latest time the run wrote, "
-            "%.10g s (%s): the file is cut (or was replaced by an older "
+            "%.10g s (%s)%s: the file is cut (or was replaced by an older "
             "one), it does not cover the run"
-            % (os.path.join(case, "postProcessing", log),
-               "t = %.10g s" % last if last is not None else "no row", t, d))
+            % (_lastSegment(case, log),
+               "t = %.10g s" % last if last is not None else "no row", t, d,
+               " less its last time step (%.10g s; the probes run after "
+               "the step they follow): %.10g s expected" % (step, expected)
+               if step else ""))

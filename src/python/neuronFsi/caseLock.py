@@ -1,0 +1,276 @@
+"""The case lock of our solvers (src/foamTools/caseLock.H), taken and read
+by our Python tools: one run per case, whatever writes into it.
+
+    with caseLock.held(case, "planeWave"):
+        ...                         # writes into case
+
+    caseLock.checkFree(case, "planeWave")  # reads a case: no run going on
+
+The lock is the same file, <case>/.runLock, in the same format (pid, host,
+executable, started, case), created the same way (O_CREAT | O_EXCL), and
+a lock is stale under the same rules: of this host, and its process is
+gone, runs another executable (the kernel's comm name, 15 characters,
+begins the executable's name) or works on another case (its -case
+option, else its working directory, links resolved). A stale lock is
+replaced with a line saying so; what is not a lock (a directory, a FIFO,
+an unreadable, empty or damaged file) and a lock of another host are never
+taken over. So that a solver's caseLock can tell a Python tool's lock from
+a stale one, the tool's process takes the tool's name as its comm name
+(prctl PR_SET_NAME): "in use by planeWave (process ...)" both ways.
+
+A case is also in use while a run that caseRuns.runIn started there (its
+.caseRun marker) still has processes in it: an Allrun between two of its
+solvers holds no .runLock (issue 19, adv34 n21: planeWave reported on a
+run still going on without a word).
+
+OpenFOAM's own utilities (blockMesh, decomposePar, foamListTimes, ...)
+cannot take this lock: docs/reliability.md says so."""
+
+import atexit
+import ctypes
+import os
+import socket
+import stat
+import sys
+import time
+
+from . import caseRuns
+
+FILE = ".runLock"
+PID_MAX = 4194304               # Linux's PID_MAX_LIMIT
+
+
+class CaseLockError(Exception):
+    pass
+
+
+def _notAFile(path):
+    """What path is if it exists and is not a regular file, else ''."""
+    try:
+        m = os.lstat(path).st_mode
+    except OSError:
+        return ""
+    for test, what in ((stat.S_ISDIR, "a directory"), (stat.S_ISFIFO,
+                       "a FIFO"), (stat.S_ISSOCK, "a socket"),
+                       (stat.S_ISCHR, "a device"), (stat.S_ISBLK,
+                                                    "a device"),
+                       (stat.S_ISLNK, "a symbolic link")):
+        if test(m):
+            return what
+    return ""
+
+
+def read(path):
+    """The lock file's fields as a dict (pid -1 if missing or not a
+    process id; readable False if it cannot be read)."""
+    h = {"pid": -1, "host": "", "executable": "", "started": "", "case": "",
+         "readable": False}
+    if _notAFile(path):
+        return h
+    try:
+        with open(path, errors="replace") as f:
+            lines = f.read().split("\n")
+    except OSError:
+        return h
+    h["readable"] = True
+    for line in lines:
+        key, _, value = line.strip().partition(" ")
+        value = value.strip()
+        if key == "pid":
+            h["pid"] = int(value) if value.isdigit() and len(value) <= 7 \
+                and 1 <= int(value) <= PID_MAX else -1
+        elif key in ("host", "executable"):
+            h[key] = value.split()[0] if value else ""
+        elif key in ("started", "case"):
+            h[key] = value
+    return h
+
+
+def _running(pid):
+    """The comm name of a live process, '' if none has that id."""
+    try:
+        with open("/proc/%d/stat" % pid) as f:
+            s = f.read()
+        if s[s.rindex(")") + 2] in "ZX":
+            return ""
+        with open("/proc/%d/comm" % pid) as f:
+            return f.read().strip() or "?"
+    except (OSError, ValueError, IndexError):
+        return ""
+
+
+def _runningCase(pid):
+    """The case a process works on: its -case option (relative to its
+    working directory), else that directory; links resolved; '' unknown."""
+    try:
+        with open("/proc/%d/cmdline" % pid, "rb") as f:
+            argv = f.read().decode(errors="replace").split("\0")
+        d = os.readlink("/proc/%d/cwd" % pid)
+    except OSError:
+        return ""
+    for i in range(1, len(argv) - 1):
+        if argv[i] == "-case":
+            d = os.path.join(d, argv[i + 1])
+    return os.path.realpath(d)
+
+
+def stale(h, case):
+    """True if the run of lock h (of this host) is over: caseLock.H's
+    rule."""
+    if h["host"] != socket.gethostname():
+        return False
+    comm = _running(h["pid"])
+    if not comm or comm != h["executable"][:len(comm)]:
+        return True
+    its = _runningCase(h["pid"])
+    return bool(its) and its != os.path.realpath(case)
+
+
+def _describe(h, path):
+    return ("%s (process %d on host %s, started %s; lock file %s)"
+            % (h["executable"] or "another run", h["pid"], h["host"],
+               h["started"], path))
+
+
+def inUse(case):
+    """A sentence naming the run going on in case (its lock, or a run that
+    caseRuns.runIn started there), or '' if none."""
+    path = os.path.join(case, FILE)
+    if os.path.lexists(path):
+        h = read(path)
+        what = _notAFile(path)
+        if what or not h["readable"] or h["pid"] <= 0:
+            return ("its run lock %s is %s, not a lock that can be checked"
+                    % (path, what or ("a file that cannot be read"
+                                      if not h["readable"] else
+                                      "empty or damaged (it names no "
+                                      "process)")))
+        if not stale(h, case):
+            return "it is in use by " + _describe(h, path)
+    m = caseRuns._marker(case)
+    # the run of the marker is not this tool's own (an Allrun that runIn
+    # started, running planeWave after its solver: the same process group)
+    if m is not None and not (m[0] == os.getpgrp()
+                              and m[1] == socket.gethostname()):
+        pgid, host, command = m
+        if host != socket.gethostname():
+            return ("a run ('%s') was started there on host %s and may "
+                    "still go on (%s)" % (command, host,
+                                          os.path.join(case,
+                                                       caseRuns.MARKER)))
+        procs = caseRuns._groupIn(pgid, case)
+        if procs:
+            return ("a run started there ('%s') still goes on: process "
+                    "group %d (%s)" % (command, pgid, ", ".join(
+                        "%s pid %d" % (n, p) for p, n in procs[:4])))
+    return ""
+
+
+def checkFree(case, tool, option=None):
+    """CaseLockError if a run goes on in case: what tool would read is
+    not the run's result yet. option: the tool's option that asks for a
+    report of the run so far, named in the message."""
+    why = inUse(case)
+    if why:
+        raise CaseLockError(
+            "the case %s is not finished: %s. Its results so far are "
+            "partial; %s" % (
+                os.path.realpath(case), why,
+                "wait for the run to end, or give %s for a report of the "
+                "run so far" % option if option else
+                "wait for the run to end"))
+
+
+def _setComm(name):
+    """The process's comm name (ps, /proc/<pid>/comm), which a solver's
+    caseLock compares with the lock's executable."""
+    try:
+        libc = ctypes.CDLL(None, use_errno=True)
+        libc.prctl(15, ctypes.c_char_p(name.encode()[:15]), 0, 0, 0)
+    except (OSError, AttributeError):
+        pass
+
+
+class held:
+    """Context manager: the case lock of case, taken for tool (a
+    CaseLockError naming the run holding it), released on leaving."""
+
+    def __init__(self, case, tool):
+        self.case = os.path.realpath(case)
+        self.tool = tool
+        self.path = os.path.join(case, FILE)
+        self.taken = False
+
+    def _create(self):
+        try:
+            fd = os.open(self.path, os.O_WRONLY | os.O_CREAT | os.O_EXCL,
+                         0o644)
+        except FileExistsError:
+            return False
+        except OSError as err:
+            raise CaseLockError("cannot create the run lock %s: %s. The "
+                                "case directory must be writable"
+                                % (self.path, err.strerror))
+        with os.fdopen(fd, "w") as f:
+            f.write("pid %d\nhost %s\nexecutable %s\nstarted %s\ncase %s\n"
+                    % (os.getpid(), socket.gethostname(), self.tool,
+                       time.strftime("%a %b %d %H:%M:%S %Y"), self.case))
+        return True
+
+    def __enter__(self):
+        if not os.path.isdir(self.case):
+            raise CaseLockError("the case %s is not a directory"
+                                % self.case)
+        _setComm(self.tool)
+        why = inUse(self.case)
+        if why and not why.startswith("it is in use") \
+                and not why.startswith("its run lock"):
+            raise CaseLockError("the case %s is in use: %s. One run per "
+                                "case: wait for it to end" % (self.case,
+                                                              why))
+        for attempt in range(2):
+            if self._create():
+                self.taken = True
+                atexit.register(self._release)
+                return self
+            h = read(self.path)
+            if h["readable"] and h["pid"] <= 0:
+                time.sleep(0.5)        # a run starting: not written yet
+                h = read(self.path)
+            what = _notAFile(self.path)
+            if what or not h["readable"] or h["pid"] <= 0:
+                raise CaseLockError(
+                    "the run lock %s of the case %s is %s, not a lock this "
+                    "run can check. If no run of this case is going on (or"
+                    " starting), remove it; otherwise wait for that run to "
+                    "end" % (self.path, self.case, what or (
+                        "a file that cannot be read" if not h["readable"]
+                        else "empty or damaged (it names no process)")))
+            if attempt > 0 or not stale(h, self.case):
+                raise CaseLockError(
+                    "the case %s is in use by %s. One run per case: wait "
+                    "for that run to end or stop it, or copy the case. If "
+                    "that run is over (a run on another host cannot be "
+                    "checked from here), remove %s"
+                    % (self.case, _describe(h, self.path), self.path))
+            print("%s: removing the stale run lock %s of %s (process %d on "
+                  "%s, started %s; no longer running, or running another "
+                  "case)" % (self.tool, self.path, h["executable"], h["pid"],
+                             h["host"], h["started"]), file=sys.stderr)
+            try:
+                os.unlink(self.path)
+            except FileNotFoundError:
+                pass
+        raise CaseLockError("cannot take the run lock %s" % self.path)
+
+    def _release(self):
+        if self.taken:
+            self.taken = False
+            try:
+                os.unlink(self.path)
+            except OSError:
+                pass
+
+    def __exit__(self, *exc):
+        self._release()
+        return False

@@ -1,0 +1,170 @@
+"""The case lock of the solvers (.runLock, src/foamTools/caseLock.H) in our
+Python tools (neuronFsi.caseLock): planeWave refuses a case whose run goes
+on unless -partial asks for a report of the run so far (adv34 n21), and
+the tools that write into a case - planeWave, planeWave -inflow, sweepCase,
+calibrateCell - take the lock, refusing a live one, replacing a stale one;
+their lock is one a solver's caseLock sees as live (the process's comm
+name is the tool's, which begins the lock's executable)."""
+import os
+import socket
+import subprocess
+import sys
+import time
+import unittest
+
+from fixtures import TempDirTestCase
+from neuronFsi import caseLock
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+UTIL = os.path.join(ROOT, "applications", "utilities")
+PREVIEW = os.path.join(ROOT, "tutorials", "blast", "axisymmetricPreview")
+
+
+def tool(name):
+    return [sys.executable, os.path.join(UTIL, name, name + ".py")]
+
+
+class LiveLockTestCase(TempDirTestCase):
+    """A case (self.case) whose run lock is held by a live process of this
+    host working in it (sleep, as a solver would)."""
+
+    def setUp(self):
+        super().setUp()
+        self.case = os.path.join(self.tmp, "case")
+        os.makedirs(self.case + "/system")
+
+    def holdLock(self):
+        p = subprocess.Popen(["sleep", "60"], cwd=self.case)
+        self.addCleanup(lambda: (p.kill(), p.wait()))
+        with open(self.case + "/.runLock", "w") as f:
+            f.write("pid %d\nhost %s\nexecutable sleep\nstarted now\n"
+                    "case %s\n" % (p.pid, socket.gethostname(),
+                                   os.path.realpath(self.case)))
+        return p
+
+
+class PlaneWaveOnARunningCase(LiveLockTestCase):
+    """adv34 n21: planeWave while the solver runs reported on the partial
+    run, exit 0, without a word."""
+
+    def testRefusedNamingTheRun(self):
+        p = self.holdLock()
+        self.write("case/postProcessing/fluidProbes/0/p",
+                   "# Probe 0 (0 0 1e-06)\n#   Time  0\n0 1e5\n1e-9 2e5\n")
+        r = subprocess.run(tool("planeWave") + ["-case", self.case],
+                           capture_output=True, text=True)
+        self.assertNotEqual(r.returncode, 0, r.stdout)
+        self.assertRegex(r.stderr, r"planeWave: error: the case .*/case is "
+                         r"not finished: it is in use by sleep \(process %d "
+                         r".*Its results so far are partial.* -partial"
+                         % p.pid)
+        self.assertFalse(os.path.exists(self.case + "/postProcessing/"
+                                        "planeWave"))
+        # -partial: the run so far, said so (here it stops further on:
+        # the case has no 0/p)
+        r = subprocess.run(tool("planeWave") + ["-case", self.case,
+                                                "-partial"],
+                           capture_output=True, text=True)
+        self.assertRegex(r.stdout, r"is not finished: it is in use by sleep"
+                         r" .*-partial: the report is of the run so far")
+        self.assertIn("no 0/p", r.stderr)
+
+
+class ToolsTakeTheLock(LiveLockTestCase):
+    """Every tool that writes into a case refuses a case in use, naming
+    the run; nothing written."""
+
+    def testPlaneWaveInflow(self):
+        p = self.holdLock()
+        r = subprocess.run(tool("planeWave") + ["-case", self.case,
+                                                "-inflow", "2e-6"],
+                           capture_output=True, text=True)
+        self.assertNotEqual(r.returncode, 0)
+        self.assertRegex(r.stderr, r"in use by sleep \(process %d" % p.pid)
+        self.assertFalse(os.path.exists(self.case + "/constant"))
+
+    def testSweepCase(self):
+        p = self.holdLock()
+        self.write("case/system/controlDict", "application sleep;\n"
+                   "endTime 1;\n")
+        r = subprocess.run(tool("sweepCase") + [
+            "-case", self.case, "-entry", "system/controlDict/endTime",
+            "-values", "1 2", "-output", "x=log:/(x)/"],
+            capture_output=True, text=True)
+        self.assertNotEqual(r.returncode, 0)
+        self.assertRegex(r.stderr, r"in use by sleep \(process %d" % p.pid)
+        self.assertFalse(os.path.exists(self.case + ".sweep_endTime_0"))
+
+    def testCalibrateCell(self):
+        p = self.holdLock()
+        r = subprocess.run(tool("calibrateCell") + ["-case", self.case,
+                                                    "-work", self.tmp + "/w"],
+                           capture_output=True, text=True)
+        self.assertNotEqual(r.returncode, 0)
+        self.assertRegex(r.stderr, r"in use by sleep \(process %d" % p.pid)
+
+
+class PythonLock(TempDirTestCase):
+
+    def testHeldReleasedAndSeenLiveBySolverRule(self):
+        case = self.tmp
+        code = ("import sys, time\nfrom neuronFsi import caseLock\n"
+                "with caseLock.held(sys.argv[1], 'planeWave'):\n"
+                "    print('held', flush=True); time.sleep(30)\n")
+        p = subprocess.Popen([sys.executable, "-c", code, case],
+                             stdout=subprocess.PIPE, text=True, cwd=case)
+        self.addCleanup(lambda: (p.kill(), p.wait(), p.stdout.close()))
+        self.assertEqual(p.stdout.readline().strip(), "held")
+        h = caseLock.read(case + "/.runLock")
+        self.assertEqual((h["pid"], h["executable"]), (p.pid, "planeWave"))
+        # caseLock.H's rule: the comm name begins the executable
+        with open("/proc/%d/comm" % p.pid) as f:
+            self.assertEqual(f.read().strip(), "planeWave")
+        self.assertFalse(caseLock.stale(h, case))
+        with self.assertRaisesRegex(caseLock.CaseLockError,
+                                    r"in use by planeWave \(process %d"
+                                    % p.pid):
+            with caseLock.held(case, "sweepCase"):
+                pass
+        p.kill()
+        p.wait()
+        # a killed holder's lock is stale: taken over, then released
+        self.assertTrue(caseLock.stale(h, case))
+        with caseLock.held(case, "sweepCase"):
+            self.assertEqual(caseLock.read(case + "/.runLock")["pid"],
+                             os.getpid())
+        self.assertFalse(os.path.exists(case + "/.runLock"))
+
+    def testSolverRefusesIt(self):
+        # a solver's caseLock (C++) sees the lock of a Python tool as live:
+        # "in use by planeWave", not taken over as stale
+        import shutil
+        if not shutil.which("rhoRiemannFoam"):
+            self.skipTest("rhoRiemannFoam not built / not on PATH")
+        case = self.tmp + "/case"
+        os.makedirs(case + "/system")
+        code = ("import sys, time\nfrom neuronFsi import caseLock\n"
+                "with caseLock.held(sys.argv[2], 'planeWave'):\n"
+                "    print('held', flush=True); time.sleep(30)\n")
+        p = subprocess.Popen([sys.executable, "-c", code, "-case", case],
+                             stdout=subprocess.PIPE, text=True)
+        self.addCleanup(lambda: (p.kill(), p.wait(), p.stdout.close()))
+        self.assertEqual(p.stdout.readline().strip(), "held")
+        r = subprocess.run(["rhoRiemannFoam", "-case", case],
+                           capture_output=True, text=True)
+        self.assertNotEqual(r.returncode, 0)
+        self.assertRegex(r.stdout + r.stderr, r"is in use by planeWave "
+                         r"\(process %d" % p.pid)
+        self.assertEqual(caseLock.read(case + "/.runLock")["pid"], p.pid)
+
+    def testNotALockNeverTakenOver(self):
+        os.mkdir(self.tmp + "/.runLock")
+        with self.assertRaisesRegex(caseLock.CaseLockError,
+                                    r"\.runLock of the case .* is a "
+                                    r"directory, not a lock"):
+            with caseLock.held(self.tmp, "planeWave"):
+                pass
+
+
+if __name__ == "__main__":
+    unittest.main()
