@@ -25,7 +25,17 @@ step nearest --time (default: the last):
    the probe file's value at that time; the recovered deviatoric stress'
    components and the part of it each patch element contributes.
 
-    bench/blast/restVonMises.py CASE [--time 1.5e-7]
+    bench/blast/restVonMises.py CASE [--time 1.5e-7] [--history]
+                                     [--fluid TIME ...]
+
+--history: instead, per written step of solid.h5, the mean element von
+Mises of each region, over each probe's patch the mean von Mises and the
+mean cylindrical components rz, rr, zz of the deviatoric stress, and the
+solid's mean and largest nodal speed and largest displacement.
+--fluid TIME ...: instead, the water's speed at those OpenFOAM times, by
+the cell's ellipsoidal distance d = sqrt((r/9.5 um)^2 + (z/8.5 um)^2)
+(the cell: d <= 1); needs the cell centres written first:
+`postProcess -case CASE -func writeCellCentres -time 'T1,T2'`.
 
 The exact (uniaxial-strain) answer is at rest after the pulse: F = I, von
 Mises 0 (planeWave -check compares the probe's von Mises after 140 ns with
@@ -77,12 +87,74 @@ def cylindrical(c):
     return np.array([er, [-er[1], er[0], 0], [0, 0, 1.0]])
 
 
+def history(case):
+    probes, _ = probeHistory(case)
+    with h5py.File(os.path.join(case, "solid", "solid.h5"), "r") as h5:
+        cell = Cell(h5)
+        keys = sorted(h5["steps"], key=int)
+        steps = [(h5["steps"][k].attrs["time"],
+                  h5["steps"][k]["cauchyStress"][()].reshape(-1, 3, 3),
+                  h5["steps"][k]["velocity"][()],
+                  h5["steps"][k]["displacement"][()]) for k in keys]
+    ne = len(cell.C)
+    R = [cylindrical(cell.centroid(e)) for e in range(ne)]
+    patches = []
+    for num, name, x, y, z, region, host, nPatch in probes:
+        if any(p[1] == region for p in patches):
+            continue
+        Xp = np.array([float(x), float(y), float(z)])
+        patches.append((int(num), region, cell.recovery(Xp, int(host))[0]))
+    regions = np.unique(cell.R)
+    print("t [ns] | mean von Mises per region %s [Pa] | per probe patch "
+          "(%s): von Mises, dev rz, rr, zz [Pa] | solid speed mean, max "
+          "[m/s] | max |u| [nm]"
+          % (" ".join(str(r) for r in regions),
+             ", ".join(p[1] for p in patches)))
+    for t, sig, v, u in steps:
+        vm = np.array([vonMises(x) for x in sig])
+        line = "%7.2f | %s |" % (t*1e9, " ".join("%5.2f" % vm[cell.R == r]
+                                                 .mean() for r in regions))
+        for _, _, patch in patches:
+            d = np.array([R[e] @ dev(sig[e]) @ R[e].T for e in patch]
+                         ).mean(0)
+            line += " %5.2f %+5.2f %+5.2f %+5.2f |" % (
+                vm[patch].mean(), d[0, 2], d[0, 0], d[2, 2])
+        sp = np.linalg.norm(v, axis=1)
+        line += " %.3f %.3f | %5.1f" % (sp.mean(), sp.max(),
+                                         np.abs(u).max()*1e9)
+        print(line)
+
+
+def fluid(case, times):
+    from neuronFsi import foamField as ff
+    for t in times:
+        d = os.path.join(case, t)
+        C = ff.internalField(os.path.join(d, "C"))
+        U = ff.internalField(os.path.join(d, "U"))
+        dist = np.sqrt((C[:, 0]**2 + C[:, 1]**2)/9.5e-6**2
+                       + C[:, 2]**2/8.5e-6**2)
+        s = np.linalg.norm(U, axis=1)
+        print("water at %s s (%d cells): speed mean / max [m/s] by the "
+              "ellipsoidal distance d:" % (t, len(C)))
+        for lo, hi in ((0, 1.2), (1.2, 1.5), (1.5, 2), (2, 3), (3, 1e9)):
+            m = (dist >= lo) & (dist < hi)
+            print("   d %3g-%-5g (%5d cells): %.4f / %.4f"
+                  % (lo, hi if hi < 1e9 else np.inf, m.sum(), s[m].mean(),
+                     s[m].max()))
+
+
 def main():
     a = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     a.add_argument("case")
     a.add_argument("--time", type=float, default=None)
+    a.add_argument("--history", action="store_true")
+    a.add_argument("--fluid", nargs="+", default=None)
     o = a.parse_args()
     case = os.path.abspath(o.case)
+    if o.history:
+        return history(case)
+    if o.fluid:
+        return fluid(case, o.fluid)
     regions = {}
     with h5py.File(os.path.join(case, "solid", "solid.h5"), "r") as h5:
         cell = Cell(h5)
