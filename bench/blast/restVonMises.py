@@ -30,8 +30,10 @@ step nearest --time (default: the last):
 
 --history: instead, per written step of solid.h5, the mean element von
 Mises of each region, over each probe's patch the mean von Mises and the
-mean cylindrical components rz, rr, zz of the deviatoric stress, and the
-solid's mean and largest nodal speed and largest displacement.
+mean cylindrical components rz, rr, zz of the deviatoric stress, the
+solid's mean and largest nodal speed and largest displacement, and its
+lateral speed sqrt(v_x^2 + v_y^2) (exact: 0): the mean over the nodes of
+each kind (of one region, or shared by two) and the largest, with where.
 --fluid TIME ...: instead, the water's speed at those OpenFOAM times, by
 the cell's ellipsoidal distance d = sqrt((r/9.5 um)^2 + (z/8.5 um)^2)
 (the cell: d <= 1); needs the cell centres written first:
@@ -105,11 +107,21 @@ def history(case):
         Xp = np.array([float(x), float(y), float(z)])
         patches.append((int(num), region, cell.recovery(Xp, int(host))[0]))
     regions = np.unique(cell.R)
+    names = {int(cell.R[int(p[6])]): p[5] for p in probes}
+    nodeRegions = {}
+    for e in range(ne):
+        for n in cell.C[e]:
+            nodeRegions.setdefault(int(n), set()).add(int(cell.R[e]))
+    kindOf = np.array(["/".join(names.get(r, str(r)) for r in
+                                sorted(nodeRegions[n]))
+                       for n in range(len(cell.X))])
+    kinds = sorted(set(kindOf), key=lambda k: (k.count("/"), k))
     print("t [ns] | mean von Mises per region %s [Pa] | per probe patch "
           "(%s): von Mises, dev rz, rr, zz [Pa] | solid speed mean, max "
-          "[m/s] | max |u| [nm]"
-          % (" ".join(str(r) for r in regions),
-             ", ".join(p[1] for p in patches)))
+          "[m/s] | max |u| [nm] | lateral speed mean over the nodes of "
+          "%s [m/s], largest [m/s] at (r, z) [um]"
+          % (" ".join(names.get(int(r), str(r)) for r in regions),
+             ", ".join(p[1] for p in patches), ", ".join(kinds)))
     for t, sig, v, u in steps:
         vm = np.array([vonMises(x) for x in sig])
         line = "%7.2f | %s |" % (t*1e9, " ".join("%5.2f" % vm[cell.R == r]
@@ -120,8 +132,13 @@ def history(case):
             line += " %5.2f %+5.2f %+5.2f %+5.2f |" % (
                 vm[patch].mean(), d[0, 2], d[0, 0], d[2, 2])
         sp = np.linalg.norm(v, axis=1)
-        line += " %.3f %.3f | %5.1f" % (sp.mean(), sp.max(),
-                                         np.abs(u).max()*1e9)
+        line += " %.3f %.3f | %5.1f |" % (sp.mean(), sp.max(),
+                                           np.abs(u).max()*1e9)
+        lat = np.hypot(v[:, 0], v[:, 1])
+        i = int(np.argmax(lat))
+        line += " %s | %.3f at (%.2f, %.2f)" % (
+            " ".join("%.3f" % lat[kindOf == k].mean() for k in kinds),
+            lat[i], np.hypot(*cell.X[i, :2])*1e6, cell.X[i, 2]*1e6)
         print(line)
 
 
