@@ -16,8 +16,8 @@ step nearest --time (default: the last):
    written one; and the branch's internal variable Q (restart/pointState)
    against beta S_iso(C) (what it holds if it only follows the spring);
  - the deviatoric stress split into cylindrical components (r, theta, z
-   about the axis x = y = 0), root mean square over each region and over
-   the probes' patches;
+   about the axis x = y = 0), root mean square over each region;
+ - the nodes' velocity (exact: 0), v_r and v_z, mean over bins of r, z;
  - for each probe of postProcessing/solidProbes: its patch and weights
    (solid::PointProbe's, rebuilt as bench/blast/probeOvershoot.py does),
    von Mises of the recovered stress (what the probe writes), the
@@ -185,6 +185,7 @@ def main():
         U = s["displacement"][()]
         pointState = s["restart/pointState"][()]
         vmW = s["vonMises"][()]
+        vel = s["velocity"][()]
         names = h5["mesh"].attrs.get("regionNames", None)
     ne = len(cell.C)
     print("%s: step at %.4g s (%d elements)" % (case, t, ne))
@@ -278,6 +279,23 @@ def main():
         print("   deviatoric stress, rms over the region [Pa]: rr %.3g, "
               "tt %.3g, zz %.3g, rt %.3g, tz %.3g, rz %.3g"
               % tuple(np.sqrt((comp**2).mean(0))[[0, 1, 2, 3, 4, 5]]))
+
+    # the nodes' velocity (exact: 0), binned
+    rn = np.hypot(cell.X[:, 0], cell.X[:, 1])
+    er = np.stack([cell.X[:, 0], cell.X[:, 1]], 1)/np.maximum(rn, 1e-12)[:, None]
+    vr = (vel[:, :2]*er).sum(1)
+    print("\nnodal velocity v_r / v_z [m/s] (nodes), mean over bins; rows r "
+          "[um], columns z [um] %s" % " ".join("%g-%g" % (zb[i], zb[i + 1])
+                                                for i in range(len(zb) - 1)))
+    for i in range(len(rb) - 1):
+        line = []
+        for j in range(len(zb) - 1):
+            mm = ((rn*1e6 >= rb[i]) & (rn*1e6 < rb[i + 1])
+                  & (cell.X[:, 2]*1e6 >= zb[j]) & (cell.X[:, 2]*1e6 < zb[j + 1]))
+            line.append("%+.3f/%+.3f (%3d)" % (vr[mm].mean(), vel[mm, 2].mean(),
+                                               mm.sum())
+                        if mm.any() else "       -           ")
+        print("   r %3g-%3g: %s" % (rb[i], rb[i + 1], " ".join(line)))
 
     # the probes
     tp = data[:, 0]
