@@ -46,8 +46,6 @@ its 1-ns peak; bound 0.1).
 
 import argparse
 import os
-import re
-import subprocess
 import sys
 
 import h5py
@@ -172,7 +170,6 @@ def main():
         return history(case)
     if o.fluid:
         return fluid(case, o.fluid)
-    regions = {}
     with h5py.File(os.path.join(case, "solid", "solid.h5"), "r") as h5:
         cell = Cell(h5)
         keys = sorted(h5["steps"], key=int)
@@ -186,7 +183,6 @@ def main():
         pointState = s["restart/pointState"][()]
         vmW = s["vonMises"][()]
         vel = s["velocity"][()]
-        names = h5["mesh"].attrs.get("regionNames", None)
     ne = len(cell.C)
     print("%s: step at %.4g s (%d elements)" % (case, t, ne))
     # the region names and laws from the probe file and solidProperties
@@ -282,7 +278,8 @@ def main():
 
     # the nodes' velocity (exact: 0), binned
     rn = np.hypot(cell.X[:, 0], cell.X[:, 1])
-    er = np.stack([cell.X[:, 0], cell.X[:, 1]], 1)/np.maximum(rn, 1e-12)[:, None]
+    er = (np.stack([cell.X[:, 0], cell.X[:, 1]], 1)
+          / np.maximum(rn, 1e-12)[:, None])
     vr = (vel[:, :2]*er).sum(1)
     print("\nnodal velocity v_r / v_z [m/s] (nodes), mean over bins; rows r "
           "[um], columns z [um] %s" % " ".join("%g-%g" % (zb[i], zb[i + 1])
@@ -290,10 +287,11 @@ def main():
     for i in range(len(rb) - 1):
         line = []
         for j in range(len(zb) - 1):
+            zn = cell.X[:, 2]*1e6
             mm = ((rn*1e6 >= rb[i]) & (rn*1e6 < rb[i + 1])
-                  & (cell.X[:, 2]*1e6 >= zb[j]) & (cell.X[:, 2]*1e6 < zb[j + 1]))
-            line.append("%+.3f/%+.3f (%3d)" % (vr[mm].mean(), vel[mm, 2].mean(),
-                                               mm.sum())
+                  & (zn >= zb[j]) & (zn < zb[j + 1]))
+            line.append("%+.3f/%+.3f (%3d)" % (vr[mm].mean(),
+                                               vel[mm, 2].mean(), mm.sum())
                         if mm.any() else "       -           ")
         print("   r %3g-%3g: %s" % (rb[i], rb[i + 1], " ".join(line)))
 
