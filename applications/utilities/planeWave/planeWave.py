@@ -162,6 +162,11 @@ def main():
         a.Z = planeWave.caseColumnHeight(case)
     else:
         planeWave.checkColumnHeight(case, a.Z, "-Z")
+    if a.inflow is not None and not 0 < a.inflow < a.Z:
+        p.error("-inflow %g m is outside the valid range (0, %g) m: the "
+                "scene's top lies inside the column, whose top is at %g m "
+                "(%s)" % (a.inflow, a.Z, a.Z, "-Z" if columnHeight is None
+                          else "columnHeight of the top in 0/p"))
     # -inflow writes a file only a planeWaveInflow top reads, for the
     # height where the case's water ends (issue 19, adv35 t48: written on a
     # classic top, exit 0)
@@ -171,7 +176,7 @@ def main():
             sys.exit("planeWave: -inflow writes %s for a top patch of type "
                      "%s; %s: boundaryField/top is of type %s, which reads "
                      "no such file. Nothing written: set the top to %s "
-                     "(tests/blast/runPreview.sh -Z does) or leave -inflow "
+                     "(the blast Allruns' -inflow option does) or leave -inflow "
                      "out" % (planeWave.INFLOW_FILE, planeWave.INFLOW, path,
                               top.get("type"), planeWave.INFLOW))
         top = planeWave.meshTop(case)
@@ -181,11 +186,6 @@ def main():
                      "the boundary condition applies the wave there; give "
                      "-inflow %g" % (a.inflow, top, os.path.join(
                          case, planeWave.POINTS), top))
-    if a.inflow is not None and not 0 < a.inflow < a.Z:
-        p.error("-inflow %g m is outside the valid range (0, %g) m: the "
-                "scene's top lies inside the column, whose top is at %g m "
-                "(%s)" % (a.inflow, a.Z, a.Z, "-Z" if columnHeight is None
-                          else "columnHeight of the top in 0/p"))
     if a.Z/a.dz > a.maxCells:
         p.error("-Z %g m / -dz %g m = %.3g cells, above -maxCells %d (the "
                 "column's cost grows as the square of its cells)"
