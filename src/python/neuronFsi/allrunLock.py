@@ -157,7 +157,7 @@ def take(case, pid):
                 f.write("pid %d\nhost %s\nexecutable %s\nstarted %s\n"
                         "case %s\n" % (pid, socket.gethostname(),
                                        comm(pid) or "Allrun",
-                                       time.strftime("%c"), real))
+                                       time.strftime("%Y-%m-%dT%H:%M:%S"), real))
             return True
         h = read(path)
         if h["readable"] and h["pid"] <= 0:
