@@ -711,6 +711,85 @@ class PlaneWaveInflowUtility(TempDirTestCase):
             self.tmp + "/case/constant/inflowWave"))
 
 
+CLASSIC_P = INFLOW_P.replace(
+    "type            planeWaveInflow;\n        columnHeight    1e-4;"
+    "\n        pulse  ", "type            uniformFixedValue;\n        uniformValue")
+
+
+def pointsFile(heights):
+    """constant/polyMesh/points (ascii) of a 3D column: two points at each
+    height [m] (z)"""
+    pts = " ".join("(0 0 %.17g) (1e-6 0 %.17g)" % (z, z) for z in heights)
+    return ("FoamFile { version 2.0; format ascii; class vectorField; "
+            "object points; }\n%d\n(\n%s\n)\n" % (2*len(heights), pts))
+
+
+class ColumnOfTheMesh(TempDirTestCase):
+    """issue 19, adv35 t42, t48: -Z checked against the case's water (the
+    top of its mesh) for a classic top, and a probe outside the mesh
+    (OpenFOAM's -1e300 fill, 'Not Found') refused, never read as a
+    pressure; -inflow refused on a top that reads no constant/inflowWave"""
+
+    def case(self, values):
+        self.write("0/p", CLASSIC_P)
+        self.write("constant/polyMesh/points", pointsFile([0, 1e-5, 2e-5]))
+        self.write("constant/polyMesh/boundary", "FoamFile {}\n0 ()\n")
+        rows = "".join("%g %s\n" % (t, " ".join(str(v) for v in vs))
+                       for t, vs in values)
+        self.write("postProcessing/fluidProbes/0/p",
+                   "# Probe 0 (1e-07 0 5e-05)  # Not Found\n"
+                   "# Probe 1 (1e-07 0 1e-05)\n"
+                   "#  Probe 0 1\n#  Time\n" + rows)
+
+    def testZAgainstTheMesh(self):
+        self.case([(0, (-1e300, 0)), (1e-9, (-1e300, 1e5))])
+        self.assertEqual(pw.meshTop(self.tmp), 2e-5)
+        self.assertEqual(pw.caseColumnHeight(self.tmp), 2e-5)
+        pw.checkColumnHeight(self.tmp, 20e-6, "-Z")
+        with self.assertRaisesRegex(
+                pw.PlaneWaveError, r"-Z 3e-05 m differs from the case's "
+                r"water column, 2e-05 m \(the top of its mesh, .*constant/"
+                r"polyMesh/points\).*type uniformFixedValue"):
+            pw.checkColumnHeight(self.tmp, 30e-6, "-Z")
+        # the probe above the water is returned (the caller leaves it out)
+        self.assertEqual([n for n, _, _, _ in pw.caseProbes(self.tmp)],
+                         ["fluidProbes 0", "fluidProbes 1"])
+
+    def testOutOfMeshProbeRefused(self):
+        for bad in ("-1e+300", "1e300"):
+            self.case([(0, (-1e300, 0)), (1e-9, (-1e300, bad))])
+            with self.assertRaisesRegex(
+                    pw.PlaneWaveError, r"probe 'fluidProbes 1' of .* at "
+                    r"height 1e-05 m: its pressure at t = 1e-09 s is "
+                    r"[-]?1e\+300 Pa \(row 2 of postProcessing/fluidProbes/"
+                    r"<start>/p\): OpenFOAM found no cell"):
+                pw.caseProbes(self.tmp)
+        # reported 'Not Found' inside the water, whatever its values
+        self.case([(0, (0, 0)), (1e-9, (0, 1e5))])
+        self.write("constant/polyMesh/points", pointsFile([0, 1e-4]))
+        with self.assertRaisesRegex(pw.PlaneWaveError,
+                                    r"probe 'fluidProbes 0' .*'Not Found'"):
+            pw.caseProbes(self.tmp)
+
+    def testUtility(self):
+        self.case([(0, (-1e300, 0)), (1e-9, (-1e300, 1e5))])
+        for args, msg in (
+                (["-Z", "30e-6"], r"-Z 3e-05 m differs from the case's water "
+                 r"column, 2e-05 m"),
+                (["-inflow", "15e-6", "-Z", "20e-6"],
+                 r"-inflow writes constant/inflowWave for a top patch of "
+                 r"type planeWaveInflow; .*0/p: boundaryField/top is of type "
+                 r"uniformFixedValue, which reads no such file")):
+            out = subprocess.run([sys.executable, UTILITY, "-case", self.tmp]
+                                 + args, capture_output=True, text=True)
+            self.assertNotEqual(out.returncode, 0)
+            self.assertRegex(out.stderr + out.stdout, msg)
+        self.assertFalse(os.path.exists(os.path.join(self.tmp, "constant",
+                                                     "inflowWave")))
+        self.assertFalse(os.path.exists(os.path.join(
+            self.tmp, "postProcessing", "planeWave")))
+
+
 if __name__ == "__main__":
     unittest.main()
 

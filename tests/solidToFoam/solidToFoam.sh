@@ -48,4 +48,24 @@ print(f"solidToFoam: {name}: volume {vol:.6e} m^3, expected {exact:.6e} m^3, rel
 sys.exit(0 if err < 2e-5 else 1)   # checkMesh prints 6 digits
 PY
 done
+# A conversion over an earlier one (issue 19, adv35 t45): the earlier
+# conversion's times this file has no step for are removed (only the region
+# folders solidToFoam marked; a time directory keeps what else it holds),
+# an unmarked region folder of such a time stops it with nothing written
+c="$work/box"
+for t in 8e-05 9e-05; do
+    mkdir -p "$c/$t/solid"; cp "$c/1/solid/.solidToFoam" "$c/1/solid/D" "$c/$t/solid/"
+done
+echo "not solidToFoam's" > "$c/8e-05/p"
+(cd "$c" && solidToFoam ../box.h5 > log.solidToFoam2)
+[ ! -e "$c/9e-05" ] && [ ! -e "$c/8e-05/solid" ] && [ -f "$c/8e-05/p" ] \
+    || { echo "the earlier conversion's times 8e-05, 9e-05 not removed as they should"; ls "$c" "$c/8e-05"; exit 1; }
+grep -q "Removed 9e-05/solid: a time of an earlier conversion" "$c/log.solidToFoam2" \
+    || { echo "the removal is not reported"; exit 1; }
+mkdir -p "$c/7e-05/solid"; echo "a user's" > "$c/7e-05/solid/D"
+if (cd "$c" && solidToFoam ../box.h5 > log.solidToFoam3 2>&1); then
+    echo "an unmarked region folder of a time the file has not: converted over"; exit 1
+fi
+grep -q "the time directories 7e-05 of .* hold a folder 'solid'" "$c/log.solidToFoam3" \
+    && [ -f "$c/7e-05/solid/D" ] || { echo "not refused as it should"; tail -5 "$c/log.solidToFoam3"; exit 1; }
 echo "solidToFoam: passed"

@@ -103,6 +103,39 @@ int main(int argc, char *argv[])
                 << indenter.settings().maxDepthIncrement << " m, 'tolerance'"
                 << " and 'penaltyFactor' (the contact), and the rows of"
                 << " 'protocol'";
+            // The first step from rest moving the indenter by less than
+            // about 1e-10 m: its residual stops at round-off above the
+            // tolerance, relative to the step's own tiny force (issue 19,
+            // adv35 s13, s05: maxDeltaT 1e-6 s and 1e-5 s, inside their
+            // range, refused naming seven inputs but not the cause).
+            // Measured on the average cell's meshes (cells of 7.9 um):
+            // first steps of 3e-13 m and 3e-12 m fail, 3e-11 m and 3e-10 m
+            // run (docs/reliability.md, adv35 rows)
+            const auto& rows = indenter.protocol()->rows();
+            const auto& set = indenter.settings();
+            const scalar minDepth = 1e-10;
+            if (model.time == 0 && !rows.empty() && rows[0].motion != "hold"
+             && rows[0].rate > 0)
+            {
+                const scalar rate = rows[0].rate;
+                const scalar dt0 =
+                    std::min(set.maxDeltaT, set.maxDepthIncrement/rate);
+                if (rate*dt0 < minDepth)
+                {
+                    FatalError
+                        << nl << "    The cause is the first step from rest,"
+                        << " of " << dt0 << " s: at the first row's rate, "
+                        << rate << " m/s, it moves the indenter "
+                        << rate*dt0 << " m, so little that the residual of"
+                        << " the step stops at round-off above its tolerance"
+                        << " (1e-9 of the step's own force). The valid range"
+                        << " for this protocol: entry 'maxDeltaT' >= "
+                        << minDepth/rate << " s and entry 'maxDepthIncrement'"
+                        << " >= " << minDepth << " m (a first step of at"
+                        << " least " << minDepth << " m; constant/"
+                        << "indenterProperties)";
+                }
+            }
         }
         FatalError << exit(FatalError);
     }

@@ -54,9 +54,10 @@ Usage
               [-overwrite] [-maxSteps 1e6]
 
     -Z          the physical water column's height [m]: the pulse is
-                applied at its top face (default 100e-6; for a case whose
-                top is planeWaveInflow, its columnHeight in 0/p, and a
-                different -Z is refused)
+                applied at its top face (default: for a case whose top is
+                planeWaveInflow, its columnHeight in 0/p; else the top of
+                the case's mesh, 100e-6 without a mesh; a different -Z is
+                refused)
     -dz         the 1D cell size [m] (default 25e-9: ten times finer
                 than the preview's finest water cell)
     -endTime    [s]; default: the last time of the case's probes (with
@@ -69,7 +70,9 @@ Usage
                 (0.5 dz / c), c the water's sound speed at rest; more is
                 refused (issue 19: -endTime 1 ran without end)
     -inflow     the height [m] of the scene's top above the substrate,
-                0 < HEIGHT < Z: write constant/inflowWave for it. An
+                0 < HEIGHT < Z, the top of its mesh, for a top patch of
+                type planeWaveInflow (refused for another): write
+                constant/inflowWave for it. An
                 earlier file whose entries differ from the new ones is
                 kept and the run refused (results may have been computed
                 with it), unless -overwrite; one differing in its comments
@@ -183,7 +186,7 @@ def compare(case, a, p, skip, kinds):
     # the physical column: a planeWaveInflow top states it
     columnHeight = planeWave.inflowColumnHeight(case)
     if a.Z is None:
-        a.Z = columnHeight or 100e-6
+        a.Z = planeWave.caseColumnHeight(case)
     else:
         planeWave.checkColumnHeight(case, a.Z, "-Z")
     if a.inflow is not None and not 0 < a.inflow < a.Z:
@@ -191,6 +194,25 @@ def compare(case, a, p, skip, kinds):
                 "scene's top lies inside the column, whose top is at %g m "
                 "(%s)" % (a.inflow, a.Z, a.Z, "-Z" if columnHeight is None
                           else "columnHeight of the top in 0/p"))
+    # -inflow writes a file only a planeWaveInflow top reads, for the
+    # height where the case's water ends (issue 19, adv35 t48: written on a
+    # classic top, exit 0)
+    if a.inflow is not None:
+        if columnHeight is None:
+            path, top = planeWave._topP(case, "top")
+            sys.exit("planeWave: -inflow writes %s for a top patch of type "
+                     "%s; %s: boundaryField/top is of type %s, which reads "
+                     "no such file. Nothing written: set the top to %s "
+                     "(the blast Allruns' -inflow option does) or leave -inflow "
+                     "out" % (planeWave.INFLOW_FILE, planeWave.INFLOW, path,
+                              top.get("type"), planeWave.INFLOW))
+        top = planeWave.meshTop(case)
+        if top is not None and abs(a.inflow - top) > 1e-6*top:
+            sys.exit("planeWave: -inflow %g m differs from the height where "
+                     "the case's water ends, %g m (the top of its mesh, %s): "
+                     "the boundary condition applies the wave there; give "
+                     "-inflow %g" % (a.inflow, top, os.path.join(
+                         case, planeWave.POINTS), top))
     if a.Z/a.dz > a.maxCells:
         p.error("-Z %g m / -dz %g m = %.3g cells, above -maxCells %d (the "
                 "column's cost grows as the square of its cells)"
@@ -205,10 +227,13 @@ def compare(case, a, p, skip, kinds):
     if not probes:
         sys.exit("planeWave: no solid or fluid probes in %s/postProcessing"
                  % case)
-    outside = [n for n, z, _, _ in probes if not 0 <= z <= a.Z]
+    # the water of the scene: its mesh (a shortened scene ends below the
+    # physical column)
+    water = min(a.Z, planeWave.meshTop(case) or a.Z)
+    outside = [n for n, z, _, _ in probes if not 0 <= z <= water*(1 + 1e-9)]
     if outside:
-        print("planeWave: %s outside the column [0, %g] m: not compared"
-              % (", ".join(outside), a.Z))
+        print("planeWave: %s outside the case's water [0, %g] m: not "
+              "compared" % (", ".join(outside), water))
         probes = [q for q in probes if q[0] not in outside]
     heights = sorted({z for _, z, _, _ in probes})
     end = a.endTime or max(t[-1] for _, _, t, _ in probes)

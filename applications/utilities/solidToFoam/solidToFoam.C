@@ -34,6 +34,7 @@ Usage
 #include "inputChecks.H"
 
 #include <memory>
+#include <unistd.h>
 #include "caseLock.H"
 
 using namespace Foam;
@@ -167,6 +168,55 @@ int main(int argc, char *argv[])
     }
 
     const h5File h5(h5Name);
+    const List<Tuple2<label, scalar>> steps = h5.steps();
+
+    // The region's time directories of an earlier conversion that this
+    // solid.h5 no longer has (a new run with fewer steps): removed once
+    // the new ones are written, so that the region's time series is one
+    // run's. Only what solidToFoam wrote (its marker, <time>/<region>/
+    // .solidToFoam) is removed; a region folder without it (a user's, or
+    // of a build before the marker) stops the conversion, named, before
+    // anything is written (issue 19, adv35 t45)
+    const word marker(".solidToFoam");
+    DynamicList<fileName> stale;
+    {
+        wordHashSet current;
+        for (const auto& step : steps)
+        {
+            current.insert(runTime.timeName(step.second()));
+        }
+        DynamicList<fileName> foreign;
+        for (const fileName& d : readDir(runTime.path(), fileName::DIRECTORY))
+        {
+            scalar t;
+            const fileName r(runTime.path()/d/region);
+            if (!readScalar(d, t) || current.found(d) || !isDir(r, false))
+            {
+                continue;
+            }
+            (isFile(r/marker, false, false) ? stale : foreign).append(d);
+        }
+        if (foreign.size())
+        {
+            FatalErrorInFunction
+                << "the time directories";
+            for (const fileName& d : foreign)
+            {
+                FatalError << " " << d.c_str();
+            }
+            FatalError
+                << " of " << runTime.path().c_str() << " hold a folder '"
+                << region << "' that " << h5Name.c_str() << " has no step for, and"
+                << " that solidToFoam did not mark as its own (<time>/"
+                << region << "/" << marker << "): an earlier conversion of"
+                << " another run, or files of yours. Kept, and nothing"
+                << " written: converted with the new file, the region's"
+                << " time series would mix two runs. Remove those folders"
+                << " (<time>/" << region << ") if they are an earlier"
+                << " conversion, or convert into another -region"
+                << exit(FatalError);
+        }
+    }
 
     label nNodes, nc, nElems, nen;
     const List<scalar> X = h5.read("/mesh/coordinates", nNodes, nc);
@@ -298,13 +348,21 @@ int main(int argc, char *argv[])
     );
     const pointMesh& pMesh = pointMesh::New(mesh);
 
-    const List<Tuple2<label, scalar>> steps = h5.steps();
     for (const auto& step : steps)
     {
         runTime.setTime(step.second(), step.first());
         const word g("/steps/" + Foam::name(step.first()) + "/");
         Info<< "Step " << step.first() << ", time " << runTime.timeName()
             << " s" << endl;
+        {
+            // this folder is solidToFoam's (removed by a later conversion
+            // that has no such step)
+            const fileName dir(runTime.timePath()/region);
+            mkDir(dir);
+            OFstream(dir/marker)()
+                << "written by solidToFoam from " << h5Name.c_str()
+                << ", step " << step.first() << nl;
+        }
 
         // Nodal vectors, rotated to the angle of each point
         for (const word& name : {word("displacement"), word("velocity")})
@@ -389,6 +447,18 @@ int main(int argc, char *argv[])
             f.primitiveFieldRef() = scalarField(v);
             f.write();
         }
+    }
+
+    // the earlier conversion's times this file has not: removed (and a
+    // time directory left empty by it)
+    for (const fileName& d : stale)
+    {
+        rmDir(runTime.path()/d/region);
+        // the time directory too if nothing else is in it (rmdir(2) removes
+        // only an empty directory; hidden files count)
+        ::rmdir((runTime.path()/d).c_str());
+        Info<< "Removed " << (d/region).c_str() << ": a time of an earlier"
+            << " conversion that " << h5Name.c_str() << " has no step for" << endl;
     }
 
     Info<< "Wrote region " << region << " with " << steps.size()

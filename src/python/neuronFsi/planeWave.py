@@ -59,6 +59,7 @@ import tempfile
 import numpy as np
 
 from . import foamDict
+from . import foamField
 from . import postProcessing
 from . import signals
 
@@ -214,17 +215,66 @@ def inflowColumnHeight(case, patch="top"):
     return float(Z)
 
 
+POINTS = "constant/polyMesh/points"
+# OpenFOAM's probes write -VGREAT (-1e300) for a location outside the mesh
+# (no cell holds it): never a pressure (issue 19, adv35 t42)
+OUT_OF_MESH = 1e299
+
+
+def meshTop(case):
+    """The height [m] of the top of <case>'s fluid mesh (the largest y of
+    constant/polyMesh/points for an r-z wedge, else z): where its water
+    ends; None when the case has no mesh yet."""
+    path = os.path.join(case, POINTS)
+    if not os.path.isfile(path):
+        return None
+    try:
+        pts = foamField.points(path)
+    except (OSError, ValueError, AttributeError, IndexError) as err:
+        raise PlaneWaveError("%s: cannot be read as a pointField (%s)"
+                             % (path, err))
+    if not len(pts) or not np.all(np.isfinite(pts)):
+        raise PlaneWaveError("%s: no points, or a point that is not finite"
+                             % path)
+    return float(pts[:, 1 if isWedge(case) else 2].max())
+
+
 def checkColumnHeight(case, Z, what="the column height"):
-    """Refuse a column height Z [m] that differs from the columnHeight of a
-    planeWaveInflow top (relative 1e-9: the same number written another
-    way); nothing for another top."""
+    """Refuse a column height Z [m] that differs from the case's physical
+    column (relative 1e-9: the same number written another way): the
+    columnHeight of a planeWaveInflow top, else the top of the case's
+    mesh (relative 1e-6: the points are written with 6 or more digits),
+    where the classic top applies the pulse (issue 19, adv35 t42: -Z
+    30e-6 on a 20 um column blamed the scene)."""
     H = inflowColumnHeight(case)
-    if H is not None and abs(Z - H) > 1e-9*H:
+    if H is not None:
+        if abs(Z - H) > 1e-9*H:
+            raise PlaneWaveError(
+                "%s %g m differs from the case's physical column, %s: "
+                "boundaryField/top/columnHeight = %g m (type %s): the pulse "
+                "is applied at the top of that column" % (
+                    what, Z, _fieldFile(case, "p"), H, INFLOW))
+        return
+    top = meshTop(case)
+    if top is not None and abs(Z - top) > 1e-6*top:
+        path, patch = _topP(case, "top")
         raise PlaneWaveError(
-            "%s %g m differs from the case's physical column, %s: "
-            "boundaryField/top/columnHeight = %g m (type %s): the pulse is "
-            "applied at the top of that column" % (
-                what, Z, _fieldFile(case, "p"), H, INFLOW))
+            "%s %g m differs from the case's water column, %g m (the top "
+            "of its mesh, %s): its top patch (%s, boundaryField/top of type "
+            "%s) applies the pulse there; give -Z %g or leave -Z out"
+            % (what, Z, top, os.path.join(case, POINTS), path,
+               patch.get("type"), top))
+
+
+def caseColumnHeight(case, default=100e-6):
+    """The physical column's height [m] of <case>: the columnHeight of a
+    planeWaveInflow top, else the top of its mesh, else default (no mesh
+    yet)."""
+    H = inflowColumnHeight(case)
+    if H is not None:
+        return H
+    top = meshTop(case)
+    return default if top is None else top
 
 
 def pulseShape(table):
@@ -868,7 +918,10 @@ def isWedge(case):
     """True when the fluid mesh is an r-z wedge (height along y, the solid
     probes' points (r z 0)); else 3D (height along z)."""
     path = os.path.join(case, "constant", "polyMesh", "boundary")
-    return os.path.isfile(path) and "wedge" in open(path).read()
+    if not os.path.isfile(path):
+        return False
+    with open(path) as f:
+        return "wedge" in f.read()
 
 
 def caseProbes(case, solid=True, fluid=True):
@@ -878,6 +931,7 @@ def caseProbes(case, solid=True, fluid=True):
     p (postProcessing/<name>/<start>/p)."""
     axis = 1 if isWedge(case) else 2
     out = []
+    notFound = set()        # fluid probes OpenFOAM reports outside the mesh
     log = "solidProbes/solidProbes.dat"
     if solid and _has(case, log):
         data = postProcessing.series(case, log)
@@ -903,10 +957,18 @@ def caseProbes(case, solid=True, fluid=True):
                     postProcessing.checkCovers(case, log, data,
                                                afterStep=True)
                 i = int(m.group(1))
+                if "Not Found" in line:
+                    notFound.add("%s %d" % (os.path.basename(d), i))
                 out.append(("%s %d" % (os.path.basename(d), i),
                             float(m.group(2 + axis)), data[:, 0],
                             data[:, 1 + i]))
+    # probes above the mesh's water (a shortened scene's column above its
+    # inflow top, a probe set for a taller column): outside the mesh, not
+    # measured (the caller leaves out the probes above its column)
+    top = meshTop(case)
     for name, z, t, p in out:
+        if top is not None and z > top*(1 + 1e-9):
+            continue
         # a probe history with a nan or inf is no history to measure
         # (adv34 n14: nan errors printed, exit 0)
         bad = np.flatnonzero(~np.isfinite(p))
@@ -916,6 +978,23 @@ def caseProbes(case, solid=True, fluid=True):
                 "%d of its history in postProcessing): the file is damaged "
                 "or the run failed; nothing compared"
                 % (name, case, t[bad[0]], p[bad[0]], bad[0] + 1))
+        # OpenFOAM's fill for a probe outside the mesh (adv35 t42: read as
+        # a peak of -1e+294 MPa, exit 0)
+        bad = np.flatnonzero(np.abs(p) >= OUT_OF_MESH)
+        if name in notFound and not len(bad):
+            bad = [0]
+        if len(bad):
+            raise PlaneWaveError(
+                "probe '%s' of %s at height %g m: its pressure at t = %.10g "
+                "s is %g Pa (row %d of postProcessing/%s): OpenFOAM found no "
+                "cell holding its location ('Not Found' in the header, "
+                "-1e+300 its fill for such a probe): "
+                "move the probe into the water (the mesh's water ends at "
+                "%s) or leave it out (-probes); nothing compared"
+                % (name, case, z, t[bad[0]], p[bad[0]], bad[0] + 1,
+                   "solidProbes/solidProbes.dat" if name.startswith("solid ")
+                   else name.split(" ")[0] + "/<start>/p",
+                   "an unknown height" if top is None else "%g m" % top))
     return out
 
 

@@ -1,0 +1,226 @@
+"""An Allrun holds its case's run lock, the one our solvers take
+(src/foamTools/caseLock.H, <case>/.runLock), from its start to its end:
+one run per case (issue 19, adv35 c16: a second Allrun started in a case
+whose Allrun was running re-ran blockMesh and restore0Dir on it, then
+failed with "tail: cannot open ...coupling.dat").
+
+    python3 -m neuronFsi.allrunLock take CASE PID     (etc/RunFunctions)
+    python3 -m neuronFsi.allrunLock release CASE PID
+
+take writes the lock for the process PID (the Allrun's shell, $$) in
+caseLock.H's format (pid, host, executable: the process's comm name,
+started, case: the real path), created with O_CREAT | O_EXCL. A lock of
+a live run of this host is refused naming it, exit 1, before the Allrun
+touches anything; a stale lock (caseLock.H's rule: its process is gone,
+runs another executable or works on another case) is replaced with a line
+saying so; what is not a lock (a directory, a FIFO, an empty or damaged
+file) and a lock of another host are never taken over. The solvers,
+utilities and tools the Allrun starts run under its lock: a lock held by
+an ancestor of the process is its own run's (caseLock.H: underAncestor).
+release removes the lock if it is PID's (the Allrun's exit trap)."""
+
+import os
+import socket
+import stat
+import sys
+import time
+
+FILE = ".runLock"
+PID_MAX = 4194304               # Linux's PID_MAX_LIMIT
+
+
+class LockError(Exception):
+    pass
+
+
+def _notAFile(path):
+    """What path is if it exists and is not a regular file, else ''."""
+    try:
+        m = os.lstat(path).st_mode
+    except OSError:
+        return ""
+    for test, what in ((stat.S_ISDIR, "a directory"),
+                       (stat.S_ISFIFO, "a FIFO"),
+                       (stat.S_ISSOCK, "a socket"),
+                       (stat.S_ISCHR, "a device"), (stat.S_ISBLK, "a device"),
+                       (stat.S_ISLNK, "a symbolic link")):
+        if test(m):
+            return what
+    return ""
+
+
+def read(path):
+    """The fields of a lock file (pid -1 when missing or not a process
+    id; readable False when it cannot be read)."""
+    h = {"pid": -1, "host": "", "executable": "", "started": "", "case": "",
+         "readable": False}
+    if _notAFile(path):
+        return h
+    try:
+        with open(path, errors="replace") as f:
+            lines = f.read().split("\n")
+    except OSError:
+        return h
+    h["readable"] = True
+    for line in lines:
+        key, _, value = line.strip().partition(" ")
+        value = value.strip()
+        if key == "pid":
+            h["pid"] = int(value) if value.isdigit() and len(value) <= 7 \
+                and 1 <= int(value) <= PID_MAX else -1
+        elif key in ("host", "executable"):
+            h[key] = value.split()[0] if value else ""
+        elif key in ("started", "case"):
+            h[key] = value
+    return h
+
+
+def comm(pid):
+    """The comm name of a live process ('' if none has that id, or a
+    zombie)."""
+    try:
+        with open("/proc/%d/stat" % pid) as f:
+            s = f.read()
+        if s[s.rindex(")") + 2] in "ZX":
+            return ""
+        with open("/proc/%d/comm" % pid) as f:
+            return f.read().strip() or "?"
+    except (OSError, ValueError, IndexError):
+        return ""
+
+
+def parent(pid):
+    """The parent process id of pid (0 when unknown)."""
+    try:
+        with open("/proc/%d/stat" % pid) as f:
+            s = f.read()
+        return int(s[s.rindex(")") + 2:].split()[1])
+    except (OSError, ValueError, IndexError):
+        return 0
+
+
+def isAncestor(pid, of):
+    """True when pid is of or one of its ancestors."""
+    seen = 0
+    while of > 1 and seen < 1000:
+        if of == pid:
+            return True
+        of = parent(of)
+        seen += 1
+    return False
+
+
+def _runningCase(pid):
+    """The case a process works on: its -case option (relative to its
+    working directory), else that directory; links resolved; '' unknown."""
+    try:
+        with open("/proc/%d/cmdline" % pid, "rb") as f:
+            argv = f.read().decode(errors="replace").split("\0")
+        d = os.readlink("/proc/%d/cwd" % pid)
+    except OSError:
+        return ""
+    for i in range(1, len(argv) - 1):
+        if argv[i] == "-case":
+            d = os.path.join(d, argv[i + 1])
+    return os.path.realpath(d)
+
+
+def stale(h, case):
+    """True if the run of lock h (of this host) is over: caseLock.H's
+    rule."""
+    if h["host"] != socket.gethostname():
+        return False
+    c = comm(h["pid"])
+    if not c or c != h["executable"][:len(c)]:
+        return True
+    its = _runningCase(h["pid"])
+    return bool(its) and its != os.path.realpath(case)
+
+
+def take(case, pid):
+    """Write case's lock for process pid; LockError naming the run that
+    holds it. A lock of pid or of an ancestor of pid is kept (an Allrun
+    started by another Allrun of the same case)."""
+    real = os.path.realpath(case)
+    path = os.path.join(real, FILE)
+    for attempt in range(2):
+        try:
+            fd = os.open(path, os.O_CREAT | os.O_EXCL | os.O_WRONLY, 0o644)
+        except FileExistsError:
+            pass
+        except OSError as err:
+            raise LockError("Cannot create the run lock %s: %s. The case "
+                            "directory must be writable." % (path,
+                                                             err.strerror))
+        else:
+            with os.fdopen(fd, "w") as f:
+                f.write("pid %d\nhost %s\nexecutable %s\nstarted %s\n"
+                        "case %s\n" % (pid, socket.gethostname(),
+                                       comm(pid) or "Allrun",
+                                       time.strftime("%Y-%m-%dT%H:%M:%S"), real))
+            return True
+        h = read(path)
+        if h["readable"] and h["pid"] <= 0:
+            time.sleep(0.5)         # a run starting: not written yet
+            h = read(path)
+        what = _notAFile(path)
+        if what or not h["readable"] or h["pid"] <= 0:
+            raise LockError(
+                "The run lock %s of the case %s is %s, not a lock this run "
+                "can check. If no run of this case is going on (or "
+                "starting), remove it; otherwise wait for that run to end."
+                % (path, real, what or ("a file that cannot be read"
+                                        if not h["readable"] else
+                                        "empty or damaged (it names no "
+                                        "process)")))
+        if h["host"] == socket.gethostname() and isAncestor(h["pid"], pid) \
+                and comm(h["pid"]):
+            return False            # this run's own lock
+        if attempt > 0 or not stale(h, real):
+            raise LockError(
+                "The case %s is in use by %s (process %d on host %s, started "
+                "%s; lock file %s). Nothing was done. One run per case: wait "
+                "for that run to end or stop it, or copy the case. If that "
+                "run is over (a run on another host cannot be checked from "
+                "here), remove %s."
+                % (real, h["executable"] or "another run", h["pid"],
+                   h["host"], h["started"], path, path))
+        print("Removing the stale run lock %s of %s (process %d on %s, "
+              "started %s; no longer running, or running another case)"
+              % (path, h["executable"], h["pid"], h["host"], h["started"]))
+        try:
+            os.unlink(path)
+        except FileNotFoundError:
+            pass
+    return False
+
+
+def release(case, pid):
+    """Remove case's lock if it is pid's."""
+    path = os.path.join(os.path.realpath(case), FILE)
+    if not _notAFile(path) and read(path)["pid"] == pid:
+        try:
+            os.unlink(path)
+        except FileNotFoundError:
+            pass
+
+
+def main(argv):
+    if len(argv) != 3 or argv[0] not in ("take", "release") \
+            or not argv[2].isdigit():
+        sys.exit("usage: python3 -m neuronFsi.allrunLock take|release CASE "
+                 "PID")
+    case, pid = argv[1], int(argv[2])
+    if argv[0] == "release":
+        release(case, pid)
+        return 0
+    try:
+        # exit 2: held by an ancestor (not ours to release)
+        return 0 if take(case, pid) else 2
+    except LockError as err:
+        print("%s: %s" % (comm(pid) or "Allrun", err), file=sys.stderr)
+        return 1
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

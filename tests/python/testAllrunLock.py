@@ -1,0 +1,110 @@
+"""An Allrun holds its case's run lock, <case>/.runLock (etc/RunFunctions
+allrunLock, neuronFsi.allrunLock; issue 19, adv35 c16: two Allruns at once
+in one case re-ran each other's meshing): a second Allrun is refused naming
+the first's process before it touches anything, the applications an Allrun
+starts run under its lock (caseLock.H: a lock of an ancestor), the lock is
+removed when the Allrun ends, and a stale one replaced."""
+import os
+import subprocess
+import sys
+import time
+import unittest
+
+from fixtures import TempDirTestCase
+from neuronFsi import allrunLock
+
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+
+# an Allrun as the tutorials write theirs: options checked first
+ALLRUN = """#!/bin/bash
+cd "${0%/*}" || exit 1
+. "$PROJECT_DIR"/etc/RunFunctions
+allrunOptions "" "$@" < /dev/null
+echo started > started
+BODY
+"""
+
+
+def env():
+    e = dict(os.environ, PROJECT_DIR=os.path.abspath(ROOT))
+    e["PYTHONPATH"] = os.path.join(os.path.abspath(ROOT), "src", "python")
+    return e
+
+
+class AllrunLock(TempDirTestCase):
+
+    def allrun(self, body):
+        path = self.write("case/Allrun", ALLRUN.replace("BODY", body))
+        os.chmod(path, 0o755)
+        return path
+
+    def testSecondAllrunRefusedNamingTheFirst(self):
+        script = self.allrun("sleep 3")
+        case = os.path.dirname(script)
+        first = subprocess.Popen([script], env=env())
+        try:
+            for _ in range(100):
+                if os.path.exists(os.path.join(case, "started")):
+                    break
+                time.sleep(0.1)
+            os.remove(os.path.join(case, "started"))
+            second = subprocess.run([script], env=env(),
+                                    capture_output=True, text=True)
+            self.assertEqual(second.returncode, 1, second.stderr)
+            self.assertRegex(
+                second.stderr, r"The case %s is in use by Allrun \(process "
+                r"%d on host .*lock file %s/\.runLock\)\. Nothing was done"
+                % (os.path.realpath(case), first.pid, os.path.realpath(case)))
+            # it touched nothing: its body did not run
+            self.assertFalse(os.path.exists(os.path.join(case, "started")))
+        finally:
+            first.wait()
+        self.assertEqual(first.returncode, 0)
+        self.assertFalse(os.path.exists(os.path.join(case, ".runLock")))
+
+    def testApplicationsRunUnderTheAllrunsLock(self):
+        """a solver or utility the Allrun starts runs under its lock
+        (caseLock.H), as does a Python tool taking it (allrunLock.take ->
+        exit 2), and neither removes it"""
+        script = self.allrun(
+            "setRiemannProblem > log.app 2>&1\n"
+            "/usr/bin/python3 -m neuronFsi.allrunLock take . $BASHPID\n"
+            "echo \"take: $?\" > log.take\n"
+            "test -f .runLock && echo kept > log.kept")
+        case = os.path.dirname(script)
+        r = subprocess.run([script], env=env(), capture_output=True,
+                           text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(case, "log.app")) as f:
+            log = f.read()
+        self.assertIn("Running under the run lock", log)
+        self.assertNotIn("is in use by", log)
+        with open(os.path.join(case, "log.take")) as f:
+            self.assertEqual(f.read().strip(), "take: 2")
+        self.assertTrue(os.path.exists(os.path.join(case, "log.kept")))
+        self.assertFalse(os.path.exists(os.path.join(case, ".runLock")))
+
+    def testStaleLockReplaced(self):
+        script = self.allrun("true")
+        case = os.path.dirname(script)
+        dead = subprocess.Popen(["true"])
+        dead.wait()
+        with open(os.path.join(case, ".runLock"), "w") as f:
+            f.write("pid %d\nhost %s\nexecutable Allrun\nstarted then\n"
+                    "case %s\n" % (dead.pid, os.uname().nodename,
+                                   os.path.realpath(case)))
+        r = subprocess.run([script], env=env(), capture_output=True,
+                           text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("Removing the stale run lock", r.stdout)
+        self.assertFalse(os.path.exists(os.path.join(case, ".runLock")))
+
+    def testNotALockNeverTakenOver(self):
+        os.makedirs(os.path.join(self.tmp, ".runLock"))
+        with self.assertRaisesRegex(allrunLock.LockError,
+                                    r"is a directory, not a lock"):
+            allrunLock.take(self.tmp, os.getpid())
+
+
+if __name__ == "__main__":
+    unittest.main()
