@@ -166,5 +166,40 @@ class PythonLock(TempDirTestCase):
                 pass
 
 
+class UnderItsAllrun(LiveLockTestCase):
+    """A tool started by a run that holds the lock (an Allrun: etc/
+    RunFunctions allrunLock) runs under it, as the solvers do (caseLock.H
+    underAncestor); a live lock of a process that is not its ancestor is
+    refused (fix19m + fix19o merged: planeWave inside an Allrun was refused
+    by its own Allrun's lock)."""
+
+    def writeLock(self, pid):
+        with open(self.case + "/.runLock", "w") as f:
+            f.write("pid %d\nhost %s\nexecutable Allrun\nstarted now\n"
+                    "case %s\n" % (pid, socket.gethostname(),
+                                    os.path.realpath(self.case)))
+
+    def testAncestorsLockIsOwn(self):
+        # this process stands for the Allrun: it holds the lock
+        self.writeLock(os.getpid())
+        caseLock.checkFree(self.case, "planeWave")
+        with caseLock.held(self.case, "planeWave") as h:
+            self.assertFalse(h.taken)
+        self.assertTrue(os.path.exists(self.case + "/.runLock"),
+                        "the Allrun's lock must stay")
+        # a child tool of this process (the Allrun's planeWave) too
+        r = subprocess.run(
+            [sys.executable, "-c", "import sys; from neuronFsi import "
+             "caseLock; caseLock.checkFree(sys.argv[1], 'planeWave')",
+             self.case], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+
+    def testOthersLockRefused(self):
+        p = self.holdLock()
+        with self.assertRaisesRegex(caseLock.CaseLockError,
+                                    r"in use by sleep \(process %d" % p.pid):
+            caseLock.checkFree(self.case, "planeWave")
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -21,120 +21,18 @@ release removes the lock if it is PID's (the Allrun's exit trap)."""
 
 import os
 import socket
-import stat
 import sys
 import time
 
-FILE = ".runLock"
-PID_MAX = 4194304               # Linux's PID_MAX_LIMIT
+# one lock, one implementation: the file, its reader and the stale and
+# ancestor rules are neuronFsi.caseLock's (the Python tools' side of
+# caseLock.H)
+from .caseLock import FILE, _notAFile, _running as comm, isAncestor, read, \
+    stale
 
 
 class LockError(Exception):
     pass
-
-
-def _notAFile(path):
-    """What path is if it exists and is not a regular file, else ''."""
-    try:
-        m = os.lstat(path).st_mode
-    except OSError:
-        return ""
-    for test, what in ((stat.S_ISDIR, "a directory"),
-                       (stat.S_ISFIFO, "a FIFO"),
-                       (stat.S_ISSOCK, "a socket"),
-                       (stat.S_ISCHR, "a device"), (stat.S_ISBLK, "a device"),
-                       (stat.S_ISLNK, "a symbolic link")):
-        if test(m):
-            return what
-    return ""
-
-
-def read(path):
-    """The fields of a lock file (pid -1 when missing or not a process
-    id; readable False when it cannot be read)."""
-    h = {"pid": -1, "host": "", "executable": "", "started": "", "case": "",
-         "readable": False}
-    if _notAFile(path):
-        return h
-    try:
-        with open(path, errors="replace") as f:
-            lines = f.read().split("\n")
-    except OSError:
-        return h
-    h["readable"] = True
-    for line in lines:
-        key, _, value = line.strip().partition(" ")
-        value = value.strip()
-        if key == "pid":
-            h["pid"] = int(value) if value.isdigit() and len(value) <= 7 \
-                and 1 <= int(value) <= PID_MAX else -1
-        elif key in ("host", "executable"):
-            h[key] = value.split()[0] if value else ""
-        elif key in ("started", "case"):
-            h[key] = value
-    return h
-
-
-def comm(pid):
-    """The comm name of a live process ('' if none has that id, or a
-    zombie)."""
-    try:
-        with open("/proc/%d/stat" % pid) as f:
-            s = f.read()
-        if s[s.rindex(")") + 2] in "ZX":
-            return ""
-        with open("/proc/%d/comm" % pid) as f:
-            return f.read().strip() or "?"
-    except (OSError, ValueError, IndexError):
-        return ""
-
-
-def parent(pid):
-    """The parent process id of pid (0 when unknown)."""
-    try:
-        with open("/proc/%d/stat" % pid) as f:
-            s = f.read()
-        return int(s[s.rindex(")") + 2:].split()[1])
-    except (OSError, ValueError, IndexError):
-        return 0
-
-
-def isAncestor(pid, of):
-    """True when pid is of or one of its ancestors."""
-    seen = 0
-    while of > 1 and seen < 1000:
-        if of == pid:
-            return True
-        of = parent(of)
-        seen += 1
-    return False
-
-
-def _runningCase(pid):
-    """The case a process works on: its -case option (relative to its
-    working directory), else that directory; links resolved; '' unknown."""
-    try:
-        with open("/proc/%d/cmdline" % pid, "rb") as f:
-            argv = f.read().decode(errors="replace").split("\0")
-        d = os.readlink("/proc/%d/cwd" % pid)
-    except OSError:
-        return ""
-    for i in range(1, len(argv) - 1):
-        if argv[i] == "-case":
-            d = os.path.join(d, argv[i + 1])
-    return os.path.realpath(d)
-
-
-def stale(h, case):
-    """True if the run of lock h (of this host) is over: caseLock.H's
-    rule."""
-    if h["host"] != socket.gethostname():
-        return False
-    c = comm(h["pid"])
-    if not c or c != h["executable"][:len(c)]:
-        return True
-    its = _runningCase(h["pid"])
-    return bool(its) and its != os.path.realpath(case)
 
 
 def take(case, pid):

@@ -23,6 +23,10 @@ A case is also in use while a run that caseRuns.runIn started there (its
 solvers holds no .runLock (issue 19, adv34 n21: planeWave reported on a
 run still going on without a word).
 
+A tool started by a run that holds the lock (an Allrun: etc/RunFunctions
+allrunLock, neuronFsi.allrunLock) runs under it, as the solvers do
+(caseLock.H's underAncestor).
+
 OpenFOAM's own utilities (blockMesh, decomposePar, foamListTimes, ...)
 cannot take this lock: docs/reliability.md says so."""
 
@@ -114,6 +118,36 @@ def _runningCase(pid):
     return os.path.realpath(d)
 
 
+def parent(pid):
+    """The parent process id of pid (0 when unknown)."""
+    try:
+        with open("/proc/%d/stat" % pid) as f:
+            s = f.read()
+        return int(s[s.rindex(")") + 2:].split()[1])
+    except (OSError, ValueError, IndexError):
+        return 0
+
+
+def isAncestor(pid, of):
+    """True when pid is of or one of its ancestors."""
+    seen = 0
+    while of > 1 and seen < 1000:
+        if of == pid:
+            return True
+        of = parent(of)
+        seen += 1
+    return False
+
+
+def ownRun(h):
+    """True when lock h is held by this process's own run: a live process
+    of this host that is this process or one of its ancestors (the Allrun
+    that started this tool: etc/RunFunctions allrunLock; caseLock.H's
+    underAncestor)."""
+    return (h["host"] == socket.gethostname() and h["pid"] > 0
+            and bool(_running(h["pid"])) and isAncestor(h["pid"], os.getpid()))
+
+
 def stale(h, case):
     """True if the run of lock h (of this host) is over: caseLock.H's
     rule."""
@@ -145,7 +179,7 @@ def inUse(case):
                                       if not h["readable"] else
                                       "empty or damaged (it names no "
                                       "process)")))
-        if not stale(h, case):
+        if not stale(h, case) and not ownRun(h):
             return "it is in use by " + _describe(h, path)
     m = caseRuns._marker(case)
     # the run of the marker is not this tool's own (an Allrun that runIn
@@ -237,6 +271,8 @@ class held:
             if h["readable"] and h["pid"] <= 0:
                 time.sleep(0.5)        # a run starting: not written yet
                 h = read(self.path)
+            if ownRun(h):
+                return self            # runs under its Allrun's lock
             what = _notAFile(self.path)
             if what or not h["readable"] or h["pid"] <= 0:
                 raise CaseLockError(
