@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cfenv>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -239,6 +240,58 @@ TEST(SolidIndentationDriver, HoldStepsGrowAndTheForceRelaxes)
     EXPECT_NE(peaks.find("\nendE "), std::string::npos) << peaks;
 }
 
+
+// Rows of more steps than ln(DBL_MAX/holdDeltaT0)/ln(holdGrowth) (311 at
+// 1e-3 s and 10): the hold step, grown at every step of a row and stored
+// uncapped, overflowed to inf, a sigFpe under OpenFOAM's trapping (adv35
+// s15, s16, s20: cellIndentationFoam died at t = 0.177 s of a load row of
+// 1e-4 s steps). Run in a child process with the traps OpenFOAM sets: a
+// trap fails this test only. Both a load row and a hold row are longer
+// than 311 steps; every step is maxDeltaT. (The default "fast" death
+// test style: the child writes into this test's scratch directory.)
+TEST(SolidIndentationDriver, RowsOfManyStepsDoNotOverflowTheStep)
+{
+    ScratchDir dir;
+    IndentationSettings s = baseSettings();
+    s.holdGrowth = 10;              // the top of its range [1, 10]
+    s.holdDeltaT0 = 1e-3;           // [s]
+    s.maxDeltaT = 1e-3;             // [s]
+    const std::vector<ProtocolRow> longRows =
+    {
+        {"A", "load", 1e-6, 0.35e-6},   // 0.35 s: 350 steps
+        {"B", "hold", 0, 0.35}          // 350 steps
+    };
+    EXPECT_EXIT
+    (
+        {
+            Indentation a(longRows, s, dir.path);
+            a.driver->start(false);
+            feclearexcept(FE_ALL_EXCEPT);
+            feenableexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW);
+            a.driver->run();
+            fedisableexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW);
+            std::exit(0);
+        },
+        ::testing::ExitedWithCode(0),
+        ""
+    );
+    const auto rows = forceRows(dir.path);
+    std::size_t nA = 0, nB = 0;
+    double t = 0;
+    for (std::size_t k = 0; k < rows.size(); ++k)
+    {
+        (rows[k].stage == "A" ? nA : nB) += 1;
+        if (k + 1 < rows.size())
+        {
+            EXPECT_NEAR(rows[k].t - t, s.maxDeltaT, 1e-9) << "row " << k;
+        }
+        t = rows[k].t;
+    }
+    EXPECT_GE(nA, 350u);
+    EXPECT_GE(nB, 350u);
+    ASSERT_FALSE(rows.empty());
+    EXPECT_NEAR(rows.back().t, 0.7, 1e-9);
+}
 
 namespace
 {

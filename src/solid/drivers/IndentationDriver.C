@@ -403,7 +403,12 @@ void solid::IndentationDriver::run()
             (
                 std::min(dt, s.maxDeltaT), protocol_->rowEnd(i) - model_.time
             );
-            holdDt_ *= s.holdGrowth;
+            // Capped where it is stored, not only where it is used: a row
+            // of more than ln(DBL_MAX/holdDeltaT0)/ln(holdGrowth) steps
+            // (1760 at 1e-4 s and 1.5) overflowed it to inf, a sigFpe
+            // under OpenFOAM's trapping (adv35 s15, s16, s20). The steps
+            // are unchanged: min(holdDt_, maxDeltaT) is the same either way
+            holdDt_ = std::min(holdDt_*s.holdGrowth, s.maxDeltaT);
             const Saved before = save();
             advance(dt);
             extrapolate_ = !hold;
