@@ -495,4 +495,37 @@ TEST(SolidIndentationDriver, ResumeRefusesOutputsOfAnotherRunOrDamaged)
     EXPECT_NE(msg.find("solid.h5"), std::string::npos) << msg;
     EXPECT_NE(msg.find("/steps/1/velocity"), std::string::npos) << msg;
     EXPECT_NE(msg.find("checksum"), std::string::npos) << msg;
+
+    // Zero bytes or a digit changed inside the rows of force.dat and
+    // peaks.dat the checkpoint covers (adv35 k32, k33: continued without
+    // a word, the damage kept); refused naming the file and the line
+    for (const char* f : {"force.dat", "peaks.dat"})
+    {
+        const std::string zeroed = resume([&](const std::string& dir)
+        {
+            std::string bytes = contents(dir + "/" + f);
+            const auto at = bytes.find('\n', bytes.find("\n") + 1) + 3;
+            ASSERT_LT(at + 4, bytes.size());
+            bytes.replace(at, 4, std::string(4, '\0'));
+            std::ofstream(dir + "/" + f, std::ios::binary) << bytes;
+        });
+        EXPECT_NE(zeroed.find(std::string(f) + " changed after the run "
+                  "wrote it"), std::string::npos) << zeroed;
+        EXPECT_NE(zeroed.find("zero bytes from byte"), std::string::npos)
+            << zeroed;
+        EXPECT_NE(zeroed.find("(line 3)"), std::string::npos) << zeroed;
+        const std::string edited = resume([&](const std::string& dir)
+        {
+            std::string bytes = contents(dir + "/" + f);
+            const auto at = bytes.find_first_of
+            (
+                "123456789", bytes.find('\n', bytes.find('\n') + 1) + 1
+            );
+            ASSERT_NE(at, std::string::npos);
+            bytes[at] = bytes[at] == '9' ? '8' : char(bytes[at] + 1);
+            std::ofstream(dir + "/" + f, std::ios::binary) << bytes;
+        });
+        EXPECT_NE(edited.find(std::string(f) + " changed after the run "
+                  "wrote it"), std::string::npos) << edited;
+    }
 }
