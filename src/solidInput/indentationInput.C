@@ -1,6 +1,7 @@
 #include "indentationInput.H"
 #include "inputChecks.H"
 #include "keywordCheck.H"
+#include "resultGuard.H"
 #include "IOstream.H"
 #include "ITstream.H"
 #include "token.H"
@@ -640,6 +641,10 @@ std::unique_ptr<solid::IndentationDriver> Foam::indentationInput::driver
         << settings.inputDigests << "fieldWriteInterval "
         << settings.writeInterval << '\n';
     settings.runId = foamTools::inputRecord::sha1(runText.str());
+    // -overwrite: the earlier run's results stay (moved aside) until this
+    // run has a checkpoint or its end (adv35 o14: a first step that failed
+    // had emptied force.dat and peaks.dat and removed restart.h5)
+    settings.committed = []{ foamTools::resultGuard::confirmOverwrite(); };
     std::unique_ptr<solid::IndentationDriver> driver;
     try
     {

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cfenv>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -240,6 +241,58 @@ TEST(SolidIndentationDriver, HoldStepsGrowAndTheForceRelaxes)
 }
 
 
+// Rows of more steps than ln(DBL_MAX/holdDeltaT0)/ln(holdGrowth) (311 at
+// 1e-3 s and 10): the hold step, grown at every step of a row and stored
+// uncapped, overflowed to inf, a sigFpe under OpenFOAM's trapping (adv35
+// s15, s16, s20: cellIndentationFoam died at t = 0.177 s of a load row of
+// 1e-4 s steps). Run in a child process with the traps OpenFOAM sets: a
+// trap fails this test only. Both a load row and a hold row are longer
+// than 311 steps; every step is maxDeltaT. (The default "fast" death
+// test style: the child writes into this test's scratch directory.)
+TEST(SolidIndentationDriver, RowsOfManyStepsDoNotOverflowTheStep)
+{
+    ScratchDir dir;
+    IndentationSettings s = baseSettings();
+    s.holdGrowth = 10;              // the top of its range [1, 10]
+    s.holdDeltaT0 = 1e-3;           // [s]
+    s.maxDeltaT = 1e-3;             // [s]
+    const std::vector<ProtocolRow> longRows =
+    {
+        {"A", "load", 1e-6, 0.35e-6},   // 0.35 s: 350 steps
+        {"B", "hold", 0, 0.35}          // 350 steps
+    };
+    EXPECT_EXIT
+    (
+        {
+            Indentation a(longRows, s, dir.path);
+            a.driver->start(false);
+            feclearexcept(FE_ALL_EXCEPT);
+            feenableexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW);
+            a.driver->run();
+            fedisableexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW);
+            std::exit(0);
+        },
+        ::testing::ExitedWithCode(0),
+        ""
+    );
+    const auto rows = forceRows(dir.path);
+    std::size_t nA = 0, nB = 0;
+    double t = 0;
+    for (std::size_t k = 0; k < rows.size(); ++k)
+    {
+        (rows[k].stage == "A" ? nA : nB) += 1;
+        if (k + 1 < rows.size())
+        {
+            EXPECT_NEAR(rows[k].t - t, s.maxDeltaT, 1e-9) << "row " << k;
+        }
+        t = rows[k].t;
+    }
+    EXPECT_GE(nA, 350u);
+    EXPECT_GE(nB, 350u);
+    ASSERT_FALSE(rows.empty());
+    EXPECT_NEAR(rows.back().t, 0.7, 1e-9);
+}
+
 namespace
 {
 
@@ -442,4 +495,37 @@ TEST(SolidIndentationDriver, ResumeRefusesOutputsOfAnotherRunOrDamaged)
     EXPECT_NE(msg.find("solid.h5"), std::string::npos) << msg;
     EXPECT_NE(msg.find("/steps/1/velocity"), std::string::npos) << msg;
     EXPECT_NE(msg.find("checksum"), std::string::npos) << msg;
+
+    // Zero bytes or a digit changed inside the rows of force.dat and
+    // peaks.dat the checkpoint covers (adv35 k32, k33: continued without
+    // a word, the damage kept); refused naming the file and the line
+    for (const char* f : {"force.dat", "peaks.dat"})
+    {
+        const std::string zeroed = resume([&](const std::string& dir)
+        {
+            std::string bytes = contents(dir + "/" + f);
+            const auto at = bytes.find('\n', bytes.find("\n") + 1) + 3;
+            ASSERT_LT(at + 4, bytes.size());
+            bytes.replace(at, 4, std::string(4, '\0'));
+            std::ofstream(dir + "/" + f, std::ios::binary) << bytes;
+        });
+        EXPECT_NE(zeroed.find(std::string(f) + " changed after the run "
+                  "wrote it"), std::string::npos) << zeroed;
+        EXPECT_NE(zeroed.find("zero bytes from byte"), std::string::npos)
+            << zeroed;
+        EXPECT_NE(zeroed.find("(line 3)"), std::string::npos) << zeroed;
+        const std::string edited = resume([&](const std::string& dir)
+        {
+            std::string bytes = contents(dir + "/" + f);
+            const auto at = bytes.find_first_of
+            (
+                "123456789", bytes.find('\n', bytes.find('\n') + 1) + 1
+            );
+            ASSERT_NE(at, std::string::npos);
+            bytes[at] = bytes[at] == '9' ? '8' : char(bytes[at] + 1);
+            std::ofstream(dir + "/" + f, std::ios::binary) << bytes;
+        });
+        EXPECT_NE(edited.find(std::string(f) + " changed after the run "
+                  "wrote it"), std::string::npos) << edited;
+    }
 }

@@ -33,8 +33,9 @@ Usage
 #include "heapPolicy.H"
 #include "caseLock.H"
 #include "resultGuard.H"
+#include "restartLogs.H"
 #include "inputRecord.H"
-#include "inputChecks.H"
+#include "fvInputChecks.H"
 
 int main(int argc, char *argv[])
 {
@@ -137,7 +138,11 @@ int main(int argc, char *argv[])
     // not those its results were computed with
     foamTools::resultGuard::check
     (
-        args, runTime, {runTime.globalPath()/"solid"/"solid.h5"}
+        args, runTime,
+        {
+            runTime.globalPath()/"solid"/"solid.h5",
+            runTime.globalPath()/"solid"/"solid.xmf"
+        }
     );
     const foamTools::inputRecord inputs(runTime, mesh);
     inputs.checkRestart();
@@ -146,6 +151,12 @@ int main(int argc, char *argv[])
     // record, which names an input that changed (a boundary condition, a
     // mesh point) as such
     foamTools::writeGuard::verify(args, runTime);
+    // the logs a restart continues complete up to its time (adv35 k13,
+    // k14: a cut solidProbes.dat or coupling.dat continued without a word)
+    foamTools::checkRestartLogs
+    (
+        runTime, {"fsi", "solidProbes", "solidInterfaces"}
+    );
 
     fluidSolidInteraction fsi(mesh, fluid);
 

@@ -33,9 +33,10 @@ Usage
 #include "conservativeFluid.H"
 #include "writeGuard.H"
 #include "heapPolicy.H"
-#include "inputChecks.H"
+#include "fvInputChecks.H"
 #include "caseLock.H"
 #include "resultGuard.H"
+#include "restartLogs.H"
 #include "inputRecord.H"
 
 int main(int argc, char *argv[])
@@ -116,6 +117,8 @@ int main(int argc, char *argv[])
     // record, which names an input that changed (a boundary condition, a
     // mesh point) as such
     foamTools::writeGuard::verify(args, runTime);
+    // the probes' logs a restart continues complete up to its time
+    foamTools::checkRestartLogs(runTime, wordList());
 
     Info<< "\nStarting time loop\n" << endl;
 

@@ -7,8 +7,65 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <vector>
 
 namespace fs = std::filesystem;
+
+namespace
+{
+
+const std::uint64_t fnvBasis = 0xcbf29ce484222325ULL;
+
+//- Continue the FNV-1a 64-bit digest h over bytes [from, to) of file;
+//  firstZero: the offset of the first zero byte read (unchanged if none).
+//  False if the file cannot be read that far
+bool digestBytes
+(
+    const std::string& file,
+    std::uintmax_t from,
+    std::uintmax_t to,
+    std::uint64_t& h,
+    std::uintmax_t& firstZero
+)
+{
+    std::ifstream is(file, std::ios::binary);
+    if (!is || !is.seekg(std::streamoff(from)))
+    {
+        return from == to;
+    }
+    std::vector<char> buf(1 << 16);
+    std::uintmax_t at = from;
+    while (at < to)
+    {
+        const std::streamsize n =
+            std::streamsize(std::min<std::uintmax_t>(buf.size(), to - at));
+        if (!is.read(buf.data(), n))
+        {
+            return false;
+        }
+        for (std::streamsize k = 0; k < n; ++k)
+        {
+            const unsigned char b = static_cast<unsigned char>(buf[k]);
+            if (b == 0 && firstZero == std::uintmax_t(-1))
+            {
+                firstZero = at + std::uintmax_t(k);
+            }
+            h = (h ^ b)*0x100000001b3ULL;
+        }
+        at += std::uintmax_t(n);
+    }
+    return true;
+}
+
+std::string hex(std::uint64_t h)
+{
+    std::ostringstream os;
+    os << std::hex << h;
+    return os.str();
+}
+
+} // namespace
 
 
 solid::IndentationDriver::IndentationDriver
@@ -123,7 +180,11 @@ void solid::IndentationDriver::checkResume()
             "constant/indenterProperties (changed since?)"
         );
     }
-    // The output files must be at least as long as when checkpointed
+    // The output files must be at least as long as when checkpointed,
+    // and hold up to that length what the run wrote (its digest: zero
+    // bytes or a row cut or edited inside were continued without a word,
+    // adv35 k32, k33); both checked before either is cut back
+    int k = 0;
     for (const char* f : {"force.dat", "peaks.dat"})
     {
         const double len = c.scalar(std::string(f) + ".length");
@@ -141,6 +202,45 @@ void solid::IndentationDriver::checkResume()
               + std::to_string(long(len)) + " bytes)"
             );
         }
+        std::uint64_t h = fnvBasis;
+        std::uintmax_t zero = std::uintmax_t(-1);
+        const std::string key = std::string(f) + ".fnv1a64";
+        if
+        (
+            !digestBytes(path(f), 0, std::uintmax_t(len), h, zero)
+         || (c.hasText(key) && c.text(key) != hex(h))
+        )
+        {
+            std::ostringstream os;
+            os  << path(f) << " changed after the run wrote it: its first "
+                << long(len) << " bytes (the rows up to the checkpoint "
+                << checkpointFile() << ", t = " << c.scalar("model/time")
+                << " s) differ from the digest the checkpoint recorded";
+            if (zero != std::uintmax_t(-1))
+            {
+                // the line of the first zero byte
+                std::ifstream is(path(f), std::ios::binary);
+                long line = 1;
+                for (std::uintmax_t b = 0; b < zero && is; ++b)
+                {
+                    line += (is.get() == '\n');
+                }
+                os  << "; it holds zero bytes from byte " << zero
+                    << " (line " << line << ")";
+            }
+            os  << ". A restart would continue a damaged or edited file:"
+                " nothing was changed. Restore it, or start anew"
+                " (startFrom startTime, -overwrite)";
+            throw SolidError(SolidError::Kind::io, os.str());
+        }
+        logDigest_[k] = h;
+        logDigested_[k] = std::uintmax_t(len);
+        ++k;
+    }
+    for (const char* f : {"force.dat", "peaks.dat"})
+    {
+        const double len = c.scalar(std::string(f) + ".length");
+        std::error_code ec;
         fs::resize_file(path(f), std::uintmax_t(len), ec);
         if (ec)
         {
@@ -228,6 +328,8 @@ void solid::IndentationDriver::start(bool resume)
     {
         std::remove(checkpointFile().c_str());
         runId_ = settings_.runId;
+        logDigest_[0] = logDigest_[1] = fnvBasis;
+        logDigested_[0] = logDigested_[1] = 0;
     }
     openOutputs();
     counters_ = IndentationCounters();
@@ -342,11 +444,27 @@ void solid::IndentationDriver::checkpoint(long row)
     // The lengths the outputs have now (flushed)
     forceFile_.flush();
     peakFile_.flush();
+    int k = 0;
     for (const char* f : {"force.dat", "peaks.dat"})
     {
-        c.set(std::string(f) + ".length", double(outputLength(f)));
+        const std::uintmax_t len = outputLength(f);
+        c.set(std::string(f) + ".length", double(len));
+        // The digest continued over the bytes written since the last one
+        std::uintmax_t zero = std::uintmax_t(-1);
+        if (!digestBytes(path(f), logDigested_[k], len, logDigest_[k], zero))
+        {
+            throw SolidError
+            (
+                SolidError::Kind::io, "cannot read back " + path(f)
+              + " (changed during the run?)"
+            );
+        }
+        logDigested_[k] = len;
+        c.setText(std::string(f) + ".fnv1a64", hex(logDigest_[k]));
+        ++k;
     }
     c.write();
+    if (settings_.committed) settings_.committed();
 }
 
 
@@ -403,7 +521,12 @@ void solid::IndentationDriver::run()
             (
                 std::min(dt, s.maxDeltaT), protocol_->rowEnd(i) - model_.time
             );
-            holdDt_ *= s.holdGrowth;
+            // Capped where it is stored, not only where it is used: a row
+            // of more than ln(DBL_MAX/holdDeltaT0)/ln(holdGrowth) steps
+            // (1760 at 1e-4 s and 1.5) overflowed it to inf, a sigFpe
+            // under OpenFOAM's trapping (adv35 s15, s16, s20). The steps
+            // are unchanged: min(holdDt_, maxDeltaT) is the same either way
+            holdDt_ = std::min(holdDt_*s.holdGrowth, s.maxDeltaT);
             const Saved before = save();
             advance(dt);
             extrapolate_ = !hold;
@@ -507,4 +630,5 @@ void solid::IndentationDriver::run()
     peakFile_.flush();
     outputLength("force.dat");
     outputLength("peaks.dat");
+    if (settings_.committed) settings_.committed();
 }
