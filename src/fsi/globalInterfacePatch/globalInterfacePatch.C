@@ -86,7 +86,7 @@ Foam::tmp<Foam::scalarField> Foam::globalInterfacePatch::packedFaceValues
         FatalErrorInFunction
             << "patch " << name_ << ": " << local.size() << " values for "
             << faceOffsets_.localSize() << " faces of " << width
-            << " values each" << abort(FatalError);
+            << " values each" << exit(FatalError);
     }
     if (!Pstream::parRun())
     {
