@@ -229,7 +229,14 @@ TEST(conservativeFluid, movingMeshKeepsRestStateUniform)
         }
         mesh.movePoints(newPoints);
         ASSERT_TRUE(mesh.moving());
-        worstGcl = max(worstGcl, fluid.aleStep(runTime.deltaTValue(), ""));
+        worstGcl = max
+        (
+            worstGcl,
+            returnReduce
+            (
+                fluid.aleStep(runTime.deltaTValue(), ""), maxOp<scalar>()
+            )
+        );
     }
 
     // The mesh did move: cell volumes changed by percents

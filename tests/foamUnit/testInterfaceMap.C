@@ -186,6 +186,25 @@ TEST(interfaceMap, globalInterfacePatchSerialIsThePatch)
     const vectorField Sf(pp.faceAreas());
     EXPECT_EQ(g.faceValues(Sf)(), Sf);
     EXPECT_EQ(g.localPointValues(pp.localPoints())(), pp.localPoints());
+    // Several fields packed face by face: the same packing back (serial:
+    // the rank's values; in parallel the ranks' in order, tests/blast
+    // parallel.sh through the coupled step)
+    scalarField packed(4*pp.size());
+    forAll(pp, facei)
+    {
+        for (direction d = 0; d < 3; ++d) packed[4*facei + d] = Sf[facei][d];
+        packed[4*facei + 3] = facei + 0.5;
+    }
+    EXPECT_EQ(g.packedFaceValues(packed, 4)(), packed);
+}
+
+
+TEST(interfaceMap, packedFaceValuesRefusesAWrongWidth)
+{
+    case3D c(3, 4, 5, 3);
+    const globalInterfacePatch& g = c.patch();
+    const scalarField packed(4*g.size() + 1, 1.0);
+    EXPECT_THROW(g.packedFaceValues(packed, 4), Foam::error);
 }
 
 

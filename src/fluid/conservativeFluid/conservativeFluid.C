@@ -318,20 +318,59 @@ void Foam::conservativeFluid::signalSpeeds()
 
 Foam::scalar Foam::conservativeFluid::courantNumber(const scalar deltaT) const
 {
+    return courantNumber
+    (
+        deltaT, returnReduce(localCourantRate(), maxOp<scalar>())
+    );
+}
+
+
+Foam::scalar Foam::conservativeFluid::courantNumber
+(
+    const scalar deltaT,
+    const scalar rate
+) const
+{
+    const scalar CoNum = rate*deltaT;
+
+    Info<< "Courant number max: " << CoNum << endl;
+
+    return CoNum;
+}
+
+
+Foam::scalar Foam::conservativeFluid::localCourantRate() const
+{
     tmp<surfaceScalarField> tspeedSf(amaxSf_);
     if (viscous_)
     {
         tspeedSf = amaxSf_ + viscousSpeedSf();
     }
-    const scalarField sumSpeedSf
-    (
-        fvc::surfaceSum(tspeedSf())().primitiveField()
-    );
-    const scalar CoNum = 0.5*gMax(sumSpeedSf/mesh_.V().field())*deltaT;
+    const surfaceScalarField& speedSf = tspeedSf();
 
-    Info<< "Courant number max: " << CoNum << endl;
+    // fvc::surfaceSum's cell sums, in its order (the same bits), without
+    // its processor-patch exchange (the vol field's boundary values are
+    // not used)
+    scalarField sumSpeedSf(mesh_.nCells(), Zero);
+    const labelUList& owner = mesh_.owner();
+    const labelUList& neighbour = mesh_.neighbour();
+    forAll(owner, facei)
+    {
+        sumSpeedSf[owner[facei]] += speedSf[facei];
+        sumSpeedSf[neighbour[facei]] += speedSf[facei];
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        const labelUList& pFaceCells = mesh_.boundary()[patchi].faceCells();
+        const fvsPatchScalarField& pssf = speedSf.boundaryField()[patchi];
+        forAll(pFaceCells, facei)
+        {
+            sumSpeedSf[pFaceCells[facei]] += pssf[facei];
+        }
+    }
 
-    return CoNum;
+    // 0.5 max(x) is max(0.5 x) to the bit
+    return 0.5*max(sumSpeedSf/mesh_.V().field());
 }
 
 
@@ -503,7 +542,7 @@ Foam::scalar Foam::conservativeFluid::aleStep
         thermo_->checkStates(hint);
     }
 
-    return gMax(mag(Vk - mesh_.V().field())/mesh_.V().field());
+    return max(mag(Vk - mesh_.V().field())/mesh_.V().field());
 }
 
 

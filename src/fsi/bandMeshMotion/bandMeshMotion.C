@@ -348,7 +348,19 @@ void Foam::bandMeshMotion::updateProcessorFactors()
         Cf0.boundaryFieldRef()[patchi] =
             pbm[patchi].patchSlice(mesh_.faceCentres());
     }
-    const_cast<volVectorField&>(mesh_.C()).correctBoundaryConditions();
+    // C on the processor patches: the other side's cell centres, which
+    // polyBoundaryMesh::movePoints has just received (what
+    // C.correctBoundaryConditions would exchange again: the same bits, one
+    // exchange less per motion)
+    {
+        volVectorField& C = const_cast<volVectorField&>(mesh_.C());
+        for (const label patchi : processorPatches_)
+        {
+            C.boundaryFieldRef()[patchi] =
+                refCast<const processorPolyPatch>(pbm[patchi])
+               .neighbFaceCellCentres();
+        }
+    }
 
     for (const label patchi : processorPatches_)
     {
@@ -404,7 +416,14 @@ void Foam::bandMeshMotion::notify()
     meshObject::movePoints<polyMesh>(mesh_);
     meshObject::movePoints<pointMesh>(mesh_);
 
-    const_cast<Time&>(mesh_.time()).functionObjects().movePoints(mesh_);
+    if (deferFunctionObjects_)
+    {
+        functionObjectsPending_ = true;
+    }
+    else
+    {
+        const_cast<Time&>(mesh_.time()).functionObjects().movePoints(mesh_);
+    }
 
     // As fvMesh::movePoints after the mesh flux
     const_cast<fvBoundaryMesh&>(mesh_.boundary()).movePoints();
@@ -423,6 +442,8 @@ Foam::bandMeshMotion::bandMeshMotion
 :
     mesh_(mesh),
     whole_(false),
+    deferFunctionObjects_(false),
+    functionObjectsPending_(false),
     timeIndex_(-1)
 {
     bitSet inBand(mesh.nPoints());
@@ -529,6 +550,16 @@ void Foam::bandMeshMotion::movePoints(const pointField& newPoints)
     }
     updateGeometry(newPoints);
     notify();
+}
+
+
+void Foam::bandMeshMotion::notifyFunctionObjects()
+{
+    if (functionObjectsPending_)
+    {
+        const_cast<Time&>(mesh_.time()).functionObjects().movePoints(mesh_);
+        functionObjectsPending_ = false;
+    }
 }
 
 

@@ -10,6 +10,7 @@
 #include "subDict.H"
 
 #include <cmath>
+#include <mpi.h>
 #include "keywordCheck.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
@@ -60,6 +61,29 @@ Foam::label interfacePatchIndex
             << exit(FatalIOError);
     }
     return patchi;
+}
+
+//- Each rank's values on every rank, in rank order, in one exchange
+//  (MPI_Allgather; OpenFOAM's world communicator is MPI_COMM_WORLD)
+template<int N>
+Foam::List<Foam::FixedList<Foam::scalar, N>> allGatherRanks
+(
+    const Foam::FixedList<Foam::scalar, N>& mine
+)
+{
+    using namespace Foam;
+    List<FixedList<scalar, N>> all(Pstream::nProcs());
+    if (!Pstream::parRun())
+    {
+        all[0] = mine;
+        return all;
+    }
+    MPI_Allgather
+    (
+        const_cast<scalar*>(mine.cdata()), N, MPI_DOUBLE,
+        all.data(), N, MPI_DOUBLE, MPI_COMM_WORLD
+    );
+    return all;
 }
 
 } // End anonymous namespace
@@ -211,6 +235,9 @@ void Foam::fluidSolidInteraction::createMotion
             )
         );
         bandMotion_.reset(new bandMeshMotion(mesh_, motion_->movedPoints()));
+        // The probes follow the mesh once per step, after its last pass
+        // (step()), not in every pass
+        bandMotion_->deferFunctionObjects();
         Info<< "FSI mesh motion: geometry updated on " << bandMotion_->nFaces()
             << " faces and " << bandMotion_->nCells() << " cells of "
             << mesh_.nFaces() << " and " << mesh_.nCells()
@@ -330,6 +357,64 @@ void Foam::fluidSolidInteraction::moveWall(const scalarField& d)
 }
 
 
+void Foam::fluidSolidInteraction::zeroWedgeSpeeds()
+{
+    // Axisymmetry: the swirl is removed in the ALE stages, and the thin
+    // cells at the axis (width r theta) would otherwise set the time step
+    surfaceScalarField& amaxSf = fluid_.amaxSf();
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (isA<wedgeFvPatch>(mesh_.boundary()[patchi]))
+        {
+            amaxSf.boundaryFieldRef()[patchi] = Zero;
+        }
+    }
+}
+
+
+void Foam::fluidSolidInteraction::wallFaceValues
+(
+    vectorField& force,
+    vectorField& Sf,
+    scalarField& Z
+) const
+{
+    // Packed face by face: force (3), Sf (3), Z (1)
+    const label width = 7;
+    const vectorField& phiU = fluid_.phiU().boundaryField()[patchi_];
+    const vectorField& patchSf = mesh_.boundary()[patchi_].Sf();
+    const rhoEThermo& thermo = fluid_.thermo();
+    const scalarField rhoc
+    (
+        thermo.rho().boundaryField()[patchi_].patchInternalField()
+       *thermo.c().boundaryField()[patchi_].patchInternalField()
+    );
+    scalarField local(width*phiU.size());
+    forAll(phiU, facei)
+    {
+        scalar* v = &local[width*facei];
+        for (direction d = 0; d < vector::nComponents; ++d)
+        {
+            v[d] = phiU[facei][d];
+            v[3 + d] = patchSf[facei][d];
+        }
+        v[6] = rhoc[facei];
+    }
+    const scalarField all(fsiPatch_.packedFaceValues(local, width));
+    const label n = fsiPatch_.size();
+    force.setSize(n);
+    Sf.setSize(n);
+    Z.setSize(n);
+    for (label facei = 0; facei < n; ++facei)
+    {
+        const scalar* v = &all[width*facei];
+        force[facei] = vector(v[0], v[1], v[2]);
+        Sf[facei] = vector(v[3], v[4], v[5]);
+        Z[facei] = v[6];
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fluidSolidInteraction::fluidSolidInteraction
@@ -366,6 +451,7 @@ Foam::fluidSolidInteraction::fluidSolidInteraction
         )
     ),
     wallWork_(0),
+    courantRate_(-1),
     cpuMotion_(0),
     cpuFluid_(0),
     cpuSolid_(0),
@@ -529,18 +615,15 @@ void Foam::fluidSolidInteraction::step()
         gclError = fluid_.aleStep(dt, hint);
 
         // Wall force at t_n+1 -> solid nodes (the interface patch's fluxes
-        // only: a full evaluation costs as much as a Runge-Kutta stage)
+        // only: a full evaluation costs as much as a Runge-Kutta stage),
+        // with the area vectors of the moved interface faces (the pressure
+        // load and the Robin impedance) and the fluid's acoustic impedance
+        // at the wall (Robin), over the whole patch in one exchange
         fluid_.wallFluxes(patchi_);
-        const vectorField wallForce
-        (
-            fsiPatch_.faceValues(fluid_.phiU().boundaryField()[patchi_])
-        );
-        // Area vectors of the moved interface faces (whole patch): the
-        // pressure load and the Robin impedance
-        const vectorField wallSf
-        (
-            fsiPatch_.faceValues(mesh_.boundary()[patchi_].Sf())
-        );
+        vectorField wallForce;
+        vectorField wallSf;
+        scalarField Z;
+        wallFaceValues(wallForce, wallSf, Z);
         cpuFluid_ += cpuTimer_.cpuTimeIncrement();
         solid.advance
         (
@@ -559,19 +642,6 @@ void Foam::fluidSolidInteraction::step()
         const scalarField xTilde(0.5*(v0 + map.interfaceDofs(solid.velocity())));
 
         // Acoustic added damping of the fluid per interface dof (Robin)
-        const rhoEThermo& thermo = fluid_.thermo();
-        const scalarField Z
-        (
-            fsiPatch_.faceValues
-            (
-                scalarField
-                (
-                    thermo.rho().boundaryField()[patchi_]
-                   .patchInternalField()
-                   *thermo.c().boundaryField()[patchi_].patchInternalField()
-                )
-            )
-        );
         const scalarField beta
         (
             0.25*dt*map.nodalImpedance(Z, wallSf)/interfaceMass_
@@ -583,6 +653,12 @@ void Foam::fluidSolidInteraction::step()
             << coupling_->residual() << endl;
     }
     cpuCoupling_ += cpuTimer_.cpuTimeIncrement();
+    if (bandMotion_.valid())
+    {
+        // The function objects (probes) to the step's final mesh
+        bandMotion_->notifyFunctionObjects();
+        cpuMotion_ += cpuTimer_.cpuTimeIncrement();
+    }
     coupling_->endStep(runTime.value());
     fluidInterfaceDisplacement_ += dt*x;
 
@@ -594,9 +670,30 @@ void Foam::fluidSolidInteraction::step()
     // Signal speeds of the final state for the next step's Courant number
     cpuCoupling_ += cpuTimer_.cpuTimeIncrement();
     fluid_.signalSpeeds();
+    zeroWedgeSpeeds();
+    const scalar localRate = fluid_.localCourantRate();
     cpuFluid_ += cpuTimer_.cpuTimeIncrement();
 
-    const vector F = gSum(fluid_.phiU().boundaryField()[patchi_]);
+    // The step's global values in one exchange (each a point where the
+    // ranks wait for each other): the Courant rate and the geometric
+    // conservation error (largest over the ranks) and the wall force
+    // (summed in rank order, as gSum on 2 ranks: the same bits)
+    vector F = sum(fluid_.phiU().boundaryField()[patchi_]);
+    {
+        const List<FixedList<scalar, 5>> all
+        (
+            allGatherRanks<5>({localRate, gclError, F.x(), F.y(), F.z()})
+        );
+        courantRate_ = all[0][0];
+        gclError = all[0][1];
+        F = vector(all[0][2], all[0][3], all[0][4]);
+        for (label proci = 1; proci < all.size(); ++proci)
+        {
+            courantRate_ = max(courantRate_, all[proci][0]);
+            gclError = max(gclError, all[proci][1]);
+            F += vector(all[proci][2], all[proci][3], all[proci][4]);
+        }
+    }
     if (couplingLog_.valid())
     {
         couplingLog_()
@@ -625,20 +722,18 @@ void Foam::fluidSolidInteraction::setDeltaT()
     // also as modified during the run (runTimeModifiable)
     foamTools::checkTimeControls(runTime, adjustTimeStep, maxCo, maxDeltaT);
 
-    // A wedge face pair carries no wave across (axisymmetry, the swirl is
-    // removed in the ALE stages): out of the Courant number, else the thin
-    // cells at the axis (width r theta) would set the time step
-    surfaceScalarField& amaxSf = fluid_.amaxSf();
-    forAll(mesh_.boundary(), patchi)
-    {
-        if (isA<wedgeFvPatch>(mesh_.boundary()[patchi]))
-        {
-            amaxSf.boundaryFieldRef()[patchi] = Zero;
-        }
-    }
-
+    // The Courant number of the state the last step ended with (reduced
+    // over the ranks with the step's other global values); before the
+    // first step from the initial fluxes
     const scalar stepDeltaT0 = runTime.deltaTValue();
-    const scalar CoNum = fluid_.courantNumber(stepDeltaT0);
+    if (courantRate_ < 0)
+    {
+        zeroWedgeSpeeds();
+        courantRate_ =
+            returnReduce(fluid_.localCourantRate(), maxOp<scalar>());
+    }
+    const scalar CoNum = fluid_.courantNumber(stepDeltaT0, courantRate_);
+    courantRate_ = -1;
 
     // writeControl adjustableRunTime: the step shortened so that steps end
     // on the next write time, as Time::adjustDeltaT does, but with the

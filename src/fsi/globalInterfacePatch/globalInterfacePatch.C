@@ -2,6 +2,8 @@
 #include "Pstream.H"
 #include "SubField.H"
 
+#include <mpi.h>
+
 #include <array>
 #include <map>
 
@@ -70,4 +72,40 @@ Foam::globalInterfacePatch::globalInterfacePatch(const polyPatch& pp)
     // (scatterList would not send a rank its own entry)
     Pstream::scatter(rankToGlobal);
     localToGlobal_ = rankToGlobal[Pstream::myProcNo()];
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::globalInterfacePatch::packedFaceValues
+(
+    const UList<scalar>& local,
+    const label width
+) const
+{
+    if (local.size() != width*faceOffsets_.localSize())
+    {
+        FatalErrorInFunction
+            << "patch " << name_ << ": " << local.size() << " values for "
+            << faceOffsets_.localSize() << " faces of " << width
+            << " values each" << exit(FatalError);
+    }
+    if (!Pstream::parRun())
+    {
+        return tmp<scalarField>(new scalarField(local));
+    }
+    tmp<scalarField> tall(new scalarField(width*faceOffsets_.size()));
+    List<int> counts(Pstream::nProcs());
+    List<int> starts(Pstream::nProcs());
+    forAll(counts, proci)
+    {
+        counts[proci] = int(width*faceOffsets_.localSize(proci));
+        starts[proci] = int(width*faceOffsets_.offset(proci));
+    }
+    // OpenFOAM's world communicator is MPI_COMM_WORLD
+    MPI_Allgatherv
+    (
+        const_cast<scalar*>(local.cdata()), int(local.size()), MPI_DOUBLE,
+        tall.ref().data(), counts.cdata(), starts.cdata(), MPI_DOUBLE,
+        MPI_COMM_WORLD
+    );
+    return tall;
 }
