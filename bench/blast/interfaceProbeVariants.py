@@ -41,14 +41,7 @@ from probeOvershoot import Cell, Reference, fmt, measure, probeHistory  # noqa
 def fit(cell, Xp, patch):
     """Weights of the linear least-squares fit over the centroids of
     patch, evaluated at Xp (solid::PointProbe's construction)."""
-    D = np.array([cell.centroid(e) - Xp for e in patch])
-    D /= np.linalg.norm(D, axis=1).max()
-    _, s, Vt = np.linalg.svd(D - D.mean(0))
-    k = int((s > 1e-8*s[0]).sum())
-    A = np.hstack([np.ones((len(patch), 1)), D @ Vt[:k].T])
-    e0 = np.zeros(1 + k)
-    e0[0] = 1
-    return A @ np.linalg.solve(A.T @ A, e0)
+    return cell.fitWeights(Xp, patch)
 
 
 def main():

@@ -94,6 +94,11 @@ class Cell:
         nodes = set(self.C[host])
         patch = [e for e in range(len(self.C))
                  if self.R[e] == self.R[host] and nodes & set(self.C[e])]
+        return patch, self.fitWeights(Xp, patch)
+
+    def fitWeights(self, Xp, patch):
+        """Weights of the linear least-squares fit over the centroids of
+        patch, evaluated at Xp (solid::PointProbe's construction)."""
         D = np.array([self.centroid(e) - Xp for e in patch])
         D /= np.linalg.norm(D, axis=1).max()
         _, s, Vt = np.linalg.svd(D - D.mean(0))
@@ -101,7 +106,7 @@ class Cell:
         A = np.hstack([np.ones((len(patch), 1)), D @ Vt[:k].T])
         e0 = np.zeros(1 + k)
         e0[0] = 1
-        return patch, A @ np.linalg.solve(A.T @ A, e0)
+        return A @ np.linalg.solve(A.T @ A, e0)
 
 
 class Reference:
