@@ -20,7 +20,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL inflowPreview: $*"; exit 1; }
 
-bash "$here/runPreview.sh" "$work/a" -h 0.25e-6 -far 2e-6 -cell 0.5e-6 \
+bash "$here/runPreview.sh" "$work/a" -h 0.25e-6 -far 2e-6 -dz 0.25e-6 -cell 0.5e-6 \
     -Z 30e-6 -pulse 3e-9 -endTime 1.2e-8 -inflow 20e-6 -noRun \
     > "$work/log" 2>&1 || { cat "$work/log"; fail "Allrun -inflow 20e-6"; }
 case=$work/a/axisymmetricPreview
@@ -95,7 +95,7 @@ cmp -s <(grep -v '^#sinclude\|^$' "$case/system/controlDict") \
     || fail "system/controlDict edited"
 
 # too short a water column: refused, naming -inflow and the range
-if bash "$here/runPreview.sh" "$work/b" -h 0.25e-6 -far 2e-6 -cell 0.5e-6 \
+if bash "$here/runPreview.sh" "$work/b" -h 0.25e-6 -far 2e-6 -dz 0.25e-6 -cell 0.5e-6 \
     -Z 30e-6 -endTime 1.2e-8 -inflow 12e-6 -noRun > "$work/log" 2>&1
 then
     fail "Allrun -inflow 12e-6 accepted"

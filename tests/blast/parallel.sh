@@ -155,7 +155,7 @@ decompose "$qpar" "3D quarter"
 runParallel "$qpar" log.cellBlastFoam
 /usr/bin/python3 "$compare" "$q" "$qpar" --tol 1e-9 --h5 --pulse 1e6
 # 4. The shortened preview (planeWaveInflow top): serial against 2 ranks
-bash "$here/runPreview.sh" "$work/inflow" -h 0.25e-6 -far 2e-6 -cell 0.5e-6 \
+bash "$here/runPreview.sh" "$work/inflow" -h 0.25e-6 -far 2e-6 -dz 0.25e-6 -cell 0.5e-6 \
     -Z 30e-6 -inflow 14e-6 -endTime 2.4e-8 -noPlots -noRun \
     > "$work/inflow.log" 2>&1 || { cat "$work/inflow.log"; exit 1; }
 inS=$work/inflow/axisymmetricPreview

@@ -9,7 +9,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 dir=$1; shift
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
-bash "$here/runPreview.sh" "$dir" -h 0.25e-6 -far 2e-6 -cell 0.5e-6 \
+bash "$here/runPreview.sh" "$dir" -h 0.25e-6 -far 2e-6 -dz 0.25e-6 -cell 0.5e-6 \
     -Z 20e-6 -endTime 1.6e-8 -noPlots -noRun > "$log" 2>&1 \
     || { cat "$log"; exit 1; }
 while [ "$#" -ge 2 ]

@@ -16,7 +16,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 work=${TMPDIR:-/tmp}/blastSmoke.$$
 trap 'rm -rf "$work"' EXIT
-bash "$here/runPreview.sh" "$work" -h 0.25e-6 -far 2e-6 -cell 0.5e-6 \
+bash "$here/runPreview.sh" "$work" -h 0.25e-6 -far 2e-6 -dz 0.25e-6 -cell 0.5e-6 \
     -Z 30e-6 -endTime 2.2e-8 -noPlots > "$work.log" 2>&1 \
     || { cat "$work.log"; exit 1; }
 rm -f "$work.log"

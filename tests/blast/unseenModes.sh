@@ -13,7 +13,7 @@ work=${TMPDIR:-/tmp}/blastUnseen.$$
 trap 'rm -rf "$work"' EXIT
 for h in 0.25e-6 0.1e-6
 do
-    bash "$here/runPreview.sh" "$work/h$h" -h $h -far 2e-6 -cell 0.25e-6 \
+    bash "$here/runPreview.sh" "$work/h$h" -h $h -far 2e-6 -dz 0.25e-6 -cell 0.25e-6 \
         -Z 30e-6 -endTime 2e-10 -noRun > "$work.log" 2>&1 \
         || { cat "$work.log"; rm -f "$work.log"; exit 1; }
     rm -f "$work.log"
