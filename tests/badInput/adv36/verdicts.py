@@ -101,4 +101,6 @@ NEW = {
  'v74': ('4 input', 'OK', 'dynamicMeshDict: dynamicFvMesh given twice with the same value accepted (OpenFOAM\'s dictionary, documented as not ours; no effect)'),
  'v75': ('4 input', 'SILENT', 'our own constant/indenterProperties: maxDeltaT 5 and a second maxDeltaT 0.05 brought in by #include "stepOverride": no error, the run takes 0.05 s (53 force.dat rows instead of 23), exit 0. Same root as v51: the duplicate check reads the file itself, not what #include brings in'),
  'v76': ('4 input', 'SILENT', 'our own constant/fsiProperties: coupling maxIter 30 and maxIter 1 through #include: accepted, exit 0 (the short run converges in 1 iteration anyway, so the effect is not visible here). Root: v75'),
+ 'v77': ('2 re-run', 'UNCLEAR', 'indentation: after a killed -overwrite the restart says "restore what is missing (no checkpoint restart.h5)"; the six .<name>.overwritten files next to it, the earlier results, are not named (0 mentions). Root: v01'),
+ 'v78': ('2 re-run', 'OK', 'the message\'s other advice, -overwrite, followed after a killed -overwrite (ind and blast): the earlier .<name>.overwritten set is kept (6 and 8 left aside), nothing lost'),
 }
