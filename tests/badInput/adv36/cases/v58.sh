@@ -1,0 +1,4 @@
+#!/bin/bash
+# v58: probes at restart: fluidProbes fields (p) -> (p T)
+. "$(dirname "$0")/../lib.sh"
+blastDone; sed -i "s/^startFrom .*/startFrom latestTime;/" system/controlDict; blastEnd 3e-9 1e-9; sed -i 's/fields          (p);/fields (p T);/' system/controlDict; grep -n "fields" system/controlDict; cellBlastFoam > log.r 2>&1; echo "restart rc=$?"; grep -a -A4 FATAL log.r | head -6 | cut -c1-300

@@ -1,0 +1,4 @@
+#!/bin/bash
+# v62: probes at restart: fluidProbes renamed (same entries) to fluidProbes2
+. "$(dirname "$0")/../lib.sh"
+blastDone; sed -i "s/^startFrom .*/startFrom latestTime;/" system/controlDict; blastEnd 3e-9 1e-9; sed -i 's/^    fluidProbes$/    fluidProbes2/' system/controlDict; grep -n fluidProbes2 system/controlDict; cellBlastFoam > log.r 2>&1; echo "restart rc=$?"; grep -a -A4 FATAL log.r | head -6 | cut -c1-300; ls postProcessing
