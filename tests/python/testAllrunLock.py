@@ -106,5 +106,45 @@ class AllrunLock(TempDirTestCase):
             allrunLock.take(self.tmp, os.getpid())
 
 
+class AllcleanLock(TempDirTestCase):
+    """adv36 v72: a tutorial's Allclean (here the preview's, copied) removed
+    the 0/, mesh and logs of a case whose run went on; it now takes the
+    case's run lock like the Allruns: refused while the run goes on, runs
+    once it is over (the stale lock replaced), its lock gone at its end."""
+
+    def testRefusedWhileARunGoesOn(self):
+        case = os.path.join(self.tmp, "case")
+        os.makedirs(case)
+        src = os.path.join(ROOT, "tutorials", "blast",
+                           "axisymmetricPreview", "Allclean")
+        script = os.path.join(case, "Allclean")
+        with open(src) as f, open(script, "w") as g:
+            g.write(f.read())
+        os.chmod(script, 0o755)
+        self.write("case/log.cellBlastFoam", "a run's log\n")
+        run = subprocess.Popen(["sleep", "30"], cwd=case)
+        try:
+            with open(os.path.join(case, ".runLock"), "w") as f:
+                f.write("pid %d\nhost %s\nexecutable sleep\nstarted now\n"
+                        "case %s\n" % (run.pid, os.uname().nodename,
+                                        os.path.realpath(case)))
+            r = subprocess.run([script], env=env(), capture_output=True,
+                               text=True)
+            self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+            self.assertIn("is in use by sleep (process %d" % run.pid,
+                          r.stderr)
+            self.assertTrue(os.path.exists(os.path.join(
+                case, "log.cellBlastFoam")), "Allclean removed a log")
+        finally:
+            run.kill()
+            run.wait()
+        r = subprocess.run([script], env=env(), capture_output=True,
+                           text=True)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        self.assertFalse(os.path.exists(os.path.join(case,
+                                                     "log.cellBlastFoam")))
+        self.assertFalse(os.path.exists(os.path.join(case, ".runLock")))
+
+
 if __name__ == "__main__":
     unittest.main()
