@@ -92,15 +92,10 @@ def read(path):
 
 def _running(pid):
     """The comm name of a live process, '' if none has that id."""
-    try:
-        with open("/proc/%d/stat" % pid) as f:
-            s = f.read()
-        if s[s.rindex(")") + 2] in "ZX":
-            return ""
-        with open("/proc/%d/comm" % pid) as f:
-            return f.read().strip() or "?"
-    except (OSError, ValueError, IndexError):
+    st = caseRuns.procStat(pid)
+    if st is None or st[1] in ("Z", "X"):
         return ""
+    return st[0].strip() or "?"
 
 
 def _runningCase(pid):
@@ -120,12 +115,8 @@ def _runningCase(pid):
 
 def parent(pid):
     """The parent process id of pid (0 when unknown)."""
-    try:
-        with open("/proc/%d/stat" % pid) as f:
-            s = f.read()
-        return int(s[s.rindex(")") + 2:].split()[1])
-    except (OSError, ValueError, IndexError):
-        return 0
+    st = caseRuns.procStat(pid)
+    return st[2] if st is not None else 0
 
 
 def isAncestor(pid, of):

@@ -45,6 +45,20 @@ def _marker(folder):
         return None
 
 
+def procStat(pid):
+    """(name, state, parent pid, process group) of process pid from
+    /proc/<pid>/stat (this host), None if there is none; the one reader of
+    that file for caseRuns and caseLock."""
+    try:
+        with open("/proc/%s/stat" % pid) as f:
+            stat = f.read()
+        name = stat[stat.index("(") + 1:stat.rindex(")")]
+        rest = stat[stat.rindex(")") + 2:].split()
+        return name, rest[0], int(rest[1]), int(rest[2])
+    except (OSError, ValueError, IndexError):
+        return None
+
+
 def _groupIn(pgid, folder):
     """[(pid, name)] of the live processes of group pgid whose working
     directory is folder or below it (/proc of this host)."""
@@ -53,15 +67,13 @@ def _groupIn(pgid, folder):
     for d in os.listdir("/proc"):
         if not d.isdigit():
             continue
+        st = procStat(d)
+        if st is None or st[1] == "Z" or st[3] != pgid:
+            continue
+        name = st[0]
         try:
-            with open("/proc/%s/stat" % d) as f:
-                stat = f.read()
-            name = stat[stat.index("(") + 1:stat.rindex(")")]
-            rest = stat[stat.rindex(")") + 2:].split()
-            if rest[0] == "Z" or int(rest[2]) != pgid:
-                continue
             cwd = os.readlink("/proc/%s/cwd" % d)
-        except (OSError, ValueError, IndexError):
+        except OSError:
             continue
         if cwd == real or cwd.startswith(real + os.sep):
             found.append((int(d), name))
