@@ -35,7 +35,8 @@ import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from probeOvershoot import Cell, Reference, fmt, measure, probeHistory  # noqa
+from probeOvershoot import (Cell, Reference, fmt, measure,  # noqa
+                            passagePressures, probeHistory)
 
 
 def fit(cell, Xp, patch):
@@ -54,11 +55,7 @@ def main():
     ref = Reference(o.reference)
     with h5py.File(os.path.join(case, "solid", "solid.h5"), "r") as h5:
         cell = Cell(h5)
-        keys = sorted(h5["steps"], key=int)
-        times = np.array([h5["steps"][k].attrs["time"] for k in keys])
-        sel = [k for k, t in zip(keys, times) if t > 5.2e-8]
-        ts = np.array([h5["steps"][k].attrs["time"] for k in sel])
-        P = np.array([h5["steps"][k]["pressure"][()] for k in sel])
+        ts, P = passagePressures(h5)
     sides = {}
     for num, name, x, y, z, region, host, nPatch in probes:
         if region not in sides:

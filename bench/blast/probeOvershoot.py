@@ -62,6 +62,16 @@ def shape(xi):
     return N, dN
 
 
+def passagePressures(h5, after=5.2e-8):
+    """Times [s] and element pressures [Pa] of the writes of solid.h5 after
+    `after` [s] (the passage of the pulse), each time read once."""
+    steps = h5["steps"]
+    sel = [(k, steps[k].attrs["time"]) for k in sorted(steps, key=int)]
+    sel = [(k, t) for k, t in sel if t > after]
+    return (np.array([t for _, t in sel]),
+            np.array([steps[k]["pressure"][()] for k, _ in sel]))
+
+
 class Cell:
     def __init__(self, h5):
         self.X = h5["mesh/coordinates"][()]
@@ -171,11 +181,7 @@ def main():
     ref = Reference(refPath)
     with h5py.File(os.path.join(case, "solid", "solid.h5"), "r") as h5:
         cell = Cell(h5)
-        keys = sorted(h5["steps"], key=int)
-        times = np.array([h5["steps"][k].attrs["time"] for k in keys])
-        sel = [k for k, t in zip(keys, times) if t > 5.2e-8]
-        ts = np.array([h5["steps"][k].attrs["time"] for k in sel])
-        P = np.array([h5["steps"][k]["pressure"][()] for k in sel])
+        ts, P = passagePressures(h5)
     fine = len(ts) >= 20
     if fine:
         print("solid.h5: %d steps from %.4g to %.4g s (every %.3g s)"
