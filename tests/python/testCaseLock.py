@@ -174,13 +174,22 @@ class UnderItsAllrun(LiveLockTestCase):
     by its own Allrun's lock)."""
 
     def writeLock(self, pid):
+        # the holder's own comm name, so that the lock is live by the
+        # stale rule and only the ancestor rule lets the tool through
+        with open("/proc/%d/comm" % pid) as f:
+            comm = f.read().strip()
         with open(self.case + "/.runLock", "w") as f:
-            f.write("pid %d\nhost %s\nexecutable Allrun\nstarted now\n"
-                    "case %s\n" % (pid, socket.gethostname(),
+            f.write("pid %d\nhost %s\nexecutable %s\nstarted now\n"
+                    "case %s\n" % (pid, socket.gethostname(), comm,
                                     os.path.realpath(self.case)))
 
     def testAncestorsLockIsOwn(self):
-        # this process stands for the Allrun: it holds the lock
+        # this process stands for the Allrun: it holds the lock and works
+        # in the case (else the stale rule, another case, would let the
+        # tool through without the ancestor rule)
+        here = os.getcwd()
+        os.chdir(self.case)
+        self.addCleanup(os.chdir, here)
         self.writeLock(os.getpid())
         caseLock.checkFree(self.case, "planeWave")
         with caseLock.held(self.case, "planeWave") as h:
