@@ -9,7 +9,8 @@ CASE: a blast preview case (r-z) with solid/solid.h5. For every write in
 [--from, --to]: the nucleus's largest principal Green-Lagrange strain E1
 (neuronFsi.damageIndicators, the pulse study's definition: F at the
 element's centre), the element and its centroid (r, z), the largest E1
-away from the axis (r > 0.5 um) and the rms over the nucleus; then the
+away from the axis (r > 0.5 um) and the rms over the nucleus, and the
+largest von Mises stress with its element and away from the axis; then the
 nucleus's largest rate over --window (the study's strainRate: the
 largest principal magnitude of the change of E over the window, which
 needs writes --window apart), its element, time and zz component. With
@@ -49,7 +50,8 @@ def main():
         t = np.array([s.time(k) for k in steps])
         E, best = {}, None
         print("# t[ns] E1max[-] element r[um] z[um] E1maxOffAxis[-] "
-              "E1rms[-]")
+              "E1rms[-] vonMisesMax[Pa] element r[um] z[um] "
+              "vonMisesMaxOffAxis[Pa]")
         for j, k in enumerate(steps):
             if t[j] < a.t0 - a.window*(1 + 1e-6) or t[j] > a.t1:
                 continue
@@ -69,9 +71,12 @@ def main():
                 continue
             e1 = di.largestPrincipal(E[j])
             e = n[np.argmax(e1[n])]
-            print("%.2f %.4g %d %.2f %.2f %.4g %.4g" % (
+            vm = s.field(k, "vonMises")
+            v = n[np.argmax(vm[n])]
+            print("%.2f %.4g %d %.2f %.2f %.4g %.4g %.4g %d %.2f %.2f %.4g" % (
                 t[j]*1e9, e1[e], e, c[e, 0]*1e6, c[e, 1]*1e6,
-                e1[off].max(), np.sqrt(np.mean(e1[n]**2))))
+                e1[off].max(), np.sqrt(np.mean(e1[n]**2)), vm[v], v,
+                c[v, 0]*1e6, c[v, 1]*1e6, vm[off].max()))
     if best is None:
         print("# no two writes %g s apart: no rate" % a.window)
     else:
