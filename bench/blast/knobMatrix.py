@@ -36,7 +36,6 @@ Writes the tables to --doc (default: the --out folder's knobMatrix.md);
 runs --jobs cases at a time (run the script under nice -n 10).
 """
 import argparse
-import datetime
 import importlib.machinery
 import importlib.util
 import os
@@ -47,6 +46,7 @@ from concurrent.futures import ThreadPoolExecutor
 import numpy as np
 
 from neuronFsi import bench, damageIndicators, logs
+from neuronFsi.solidResults import SolidResults
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
@@ -55,6 +55,11 @@ _loader = importlib.machinery.SourceFileLoader(
 _spec = importlib.util.spec_from_loader("previewOptions", _loader)
 P = importlib.util.module_from_spec(_spec)
 _loader.exec_module(P)
+_loader = importlib.machinery.SourceFileLoader(
+    "interfaceTop", os.path.join(HERE, "analysis", "interfaceTop.py"))
+_spec = importlib.util.spec_from_loader("interfaceTop", _loader)
+T = importlib.util.module_from_spec(_spec)
+_loader.exec_module(T)
 
 VARIANTS = {
     "base": ([], {}),
@@ -82,7 +87,7 @@ def finished(c):
                 c, "postProcessing", "planeWave", "0", "solidMeasures.dat")))
 
 
-def runCase(variant, pulse, out, env, extra, keep):
+def runCase(variant, pulse, out, env, extra, keep, commit, dirty):
     c = caseDir(out, variant, pulse)
     if keep and finished(c):
         print(f"{variant} {pulse:g} s: finished in {c}, kept", flush=True)
@@ -102,6 +107,7 @@ def runCase(variant, pulse, out, env, extra, keep):
     with open(os.path.join(c, "bench.cmd"), "w") as o:
         o.write("tests/blast/runPreview.sh " + text
                 + "; cellBlastFoam; planeWave -case . -check\n")
+    bench.stampCommit(c, commit, dirty)
     print(f"{variant} {pulse:g} s: cellBlastFoam in {c} ...", flush=True)
     bench.runTimed(c, ["cellBlastFoam"], env, "log.cellBlastFoam")
     with open(os.path.join(c, "log.planeWave"), "w") as o:
@@ -146,6 +152,23 @@ def measures(c, pulse):
         # when the passage maximum was reached [s]
         k = np.argmax(np.where(t <= PASSAGE + pulse, vm, -1))
         m[f"ifPassageTime:{name}"] = t[k]
+    # the last write (150 ns): the mean of each side's band elements and
+    # the element of the largest von Mises (interfaceTop.py)
+    with SolidResults(os.path.join(c, "solid", "solid.h5")) as f:
+        X = f.mesh("coordinates")
+        conn = f.mesh("connectivity")
+        reg = f.mesh("region").ravel()
+        vm = f.field(f.steps()[-1], "vonMises").ravel()
+    for name in INTERFACES:
+        a, b = name.split("-")
+        els = T.band(conn, reg, a, b)
+        for r in (a, b):
+            m[f"bandMean:{name}:{r}"] = vm[els[reg[els] == T.NAMES.index(r)]
+                                          ].mean()
+        e = els[np.argmax(vm[els])]
+        C = X[conn[e]].mean(axis=0)*1e6
+        m[f"bandTop:{name}"] = "%s (%.2f, %.2f) um" % (T.NAMES[reg[e]],
+                                                       C[0], C[1])
     tv = logs.timeV(os.path.join(c, "log.time"))
     m["cpu"] = tv["user"] + tv["system"]
     m["status"] = tv["status"]
@@ -197,13 +220,18 @@ def table(rows, columns, w):
           + " |")
 
 
-def report(results, variants, pulses, extra, start, commit, dirty):
+def report(results, variants, pulses, extra, cases):
     L = []
     w = L.append
     w("# Numerical knobs of the blast preview (issue 17 item 5)")
     w("")
+    commit, dirty = bench.stampedCommit(cases)
+    start, end = bench.runPeriod(
+        [os.path.join(c, "bench.cmd") for c in cases],
+        [os.path.join(c, "log.planeWave") for c in cases])
     w(bench.writtenBy("bench/blast/knobMatrix.py", start, commit,
                       dirty=dirty)
+      + f" (the last run ended {end.strftime('%H:%M')} UTC)"
       + ". Allrun options besides the variant's: "
       + (f"`{' '.join(extra)}`" if extra else "none (the defaults)")
       + ". In parentheses: the change against base of the same pulse "
@@ -222,6 +250,20 @@ def report(results, variants, pulses, extra, start, commit, dirty):
     w(f"At rest (t >= {REST*1e9:g} ns to 150 ns):")
     w("")
     table(rows, REST_COLUMNS, w)
+    w("")
+    w("Where the interface maxima are at the last write (150 ns): the mean "
+      "von Mises of each side's band elements [Pa] and the element of the "
+      "largest (region, centroid r, z):")
+    w("")
+    w("| pulse | variant | " + " | ".join(
+        f"{n}: mean, {n.split('-')[0]} side | {n.split('-')[1]} side | "
+        "largest at" for n in INTERFACES) + " |")
+    w("|---|---|" + "---|---|---|"*len(INTERFACES))
+    for pulse, v, m, ref in rows:
+        w(f"| {pulse*1e9:g} ns | {v} | " + " | ".join(
+            " | ".join(cell(m, ref, f"bandMean:{n}:{r}", "%.2f", v)
+                       for r in n.split("-")) + " | " + m[f"bandTop:{n}"]
+            for n in INTERFACES) + " |")
     w("")
     w("Per run: cellBlastFoam's CPU (user + system), when the interface "
       "maxima over the passage were reached (m-c / c-n), the bounds "
@@ -266,15 +308,14 @@ def main():
     commit = bench.commit(ROOT)
     dirty = bench.uncommitted(ROOT, ["src", "applications", "tutorials",
                                      "bench/blast"])
-    start = datetime.datetime.utcnow()
     jobs = [(v, p) for p in pulses for v in variants]
     if not args.reportOnly:
         with ThreadPoolExecutor(max_workers=args.jobs) as ex:
             list(ex.map(lambda j: runCase(j[0], j[1], out, env, args.extra,
-                                          args.keep), jobs))
+                                          args.keep, commit, dirty), jobs))
     results = {j: measures(caseDir(out, *j), j[1]) for j in jobs}
-    lines = report(results, variants, pulses, args.extra, start, commit,
-                   dirty)
+    lines = report(results, variants, pulses, args.extra,
+                   [caseDir(out, *j) for j in jobs])
     bench.writeReport(args.doc or os.path.join(out, "knobMatrix.md"), lines)
 
 
