@@ -33,7 +33,9 @@ the same pulse:
         [--keep] [--reportOnly] [-- ALLRUN OPTIONS]
 
 Writes the tables to --doc (default: the --out folder's knobMatrix.md);
-runs --jobs cases at a time (run the script under nice -n 10).
+runs --jobs cases at a time (run the script under nice -n 10). The case
+folders are named by variant and pulse only: give Allrun options (e.g.
+another level's sizes) a --out of their own.
 """
 import argparse
 import importlib.machinery
@@ -293,7 +295,7 @@ def main():
     ap.add_argument("--reportOnly", action="store_true")
     ap.add_argument("extra", nargs="*", help="more Allrun options (after "
                     "--), for every case")
-    args = ap.parse_args()
+    args = bench.parse(ap)
     variants = args.variants.split()
     for v in variants:
         if v not in VARIANTS:
@@ -301,7 +303,13 @@ def main():
                      f"{', '.join(VARIANTS)})")
     if "base" not in variants:
         variants.insert(0, "base")
-    pulses = [float(p) for p in args.pulses.split()]
+    try:
+        pulses = [float(p) for p in args.pulses.split()]
+    except ValueError:
+        pulses = []
+    if not pulses or not all(0 < p <= 0.9 for p in pulses):
+        sys.exit(f"knobMatrix: --pulses {args.pulses!r}: pulse durations "
+                 "[s] in (0, 0.9] (the Allrun's -pulse)")
     out = os.path.abspath(args.out)
     os.makedirs(out, exist_ok=True)
     env = bench.foamEnv(ROOT)
