@@ -75,6 +75,7 @@ PULSES = "5e-9 1e-8 1.5e-8"
 PASSAGE = 80e-9         # [s] the passage ends at PASSAGE + pulse
 REST = 140e-9           # [s] at rest from here (issue 17 item 6)
 INTERFACES = ("membrane-cytoplasm", "cytoplasm-nucleus")
+PATCH = 0.5e-6          # [m] radius of the interface patch means
 
 
 def caseDir(out, variant, pulse):
@@ -154,6 +155,23 @@ def measures(c, pulse):
         # when the passage maximum was reached [s]
         k = np.argmax(np.where(t <= PASSAGE + pulse, vm, -1))
         m[f"ifPassageTime:{name}"] = t[k]
+    # the write nearest each interface's passage maximum: the largest
+    # element von Mises there and the largest mean over PATCH of interface
+    # (interfaceTop.patchMaximum)
+    with SolidResults(os.path.join(c, "solid", "solid.h5")) as f:
+        X = f.mesh("coordinates")
+        conn = f.mesh("connectivity")
+        reg = f.mesh("region").ravel()
+        C = X[conn].mean(axis=1)
+        for name in INTERFACES:
+            a, b = name.split("-")
+            els = T.band(conn, reg, a, b)
+            k = f.nearest(m[f"ifPassageTime:{name}"])
+            vm = f.field(k, "vonMises").ravel()
+            m[f"writeTime:{name}"] = f.time(k)
+            m[f"writeMax:{name}"] = vm[els].max()
+            m[f"patchMax:{name}"], e = T.patchMaximum(C, reg, els, vm,
+                                                      PATCH)
     # the last write (150 ns): the mean of each side's band elements and
     # the element of the largest von Mises (interfaceTop.py)
     with SolidResults(os.path.join(c, "solid", "solid.h5")) as f:
@@ -252,6 +270,24 @@ def report(results, variants, pulses, extra, cases):
     w(f"At rest (t >= {REST*1e9:g} ns to 150 ns):")
     w("")
     table(rows, REST_COLUMNS, w)
+    w("")
+    w("The interface maxima over elements against means over a length of "
+      "the interface, at the write nearest the passage maximum (solid.h5, "
+      "every 6.55 ns): the largest element von Mises of the band there, "
+      "and the largest mean over the band elements of one region within "
+      f"{PATCH*1e6:g} um of a band element (interfaceTop.patchMaximum) "
+      "[Pa]:")
+    w("")
+    w("| pulse | variant | " + " | ".join(
+        f"{n}: write [ns] | element max | {PATCH*1e6:g}-um patch max"
+        for n in INTERFACES) + " |")
+    w("|---|---|" + "---|---|---|"*len(INTERFACES))
+    for pulse, v, m, ref in rows:
+        w(f"| {pulse*1e9:g} ns | {v} | " + " | ".join(
+            "%.2f | %s | %s" % (1e9*m[f"writeTime:{n}"],
+                                cell(m, ref, f"writeMax:{n}", "%.2f", v),
+                                cell(m, ref, f"patchMax:{n}", "%.2f", v))
+            for n in INTERFACES) + " |")
     w("")
     w("Where the interface maxima are at the last write (150 ns): the mean "
       "von Mises of each side's band elements [Pa] and the element of the "

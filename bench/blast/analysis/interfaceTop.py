@@ -33,6 +33,21 @@ def band(conn, reg, a, b):
                      or (reg[e] == rb and inA[conn[e]].any())])
 
 
+def patchMaximum(C, reg, els, vm, radius):
+    """The largest, over the band elements els, of the mean von Mises of
+    the band elements of the same region whose centroids C lie within
+    radius [m] of its centroid (a mean over a fixed length of the
+    interface instead of one element), and the element it is centred on."""
+    best, at = -1.0, -1
+    for e in els:
+        near = els[(reg[els] == reg[e])
+                   & (np.linalg.norm(C[els] - C[e], axis=1) <= radius)]
+        v = vm[near].mean()
+        if v > best:
+            best, at = v, e
+    return best, at
+
+
 def main():
     if len(sys.argv) < 3:
         sys.exit(__doc__)
