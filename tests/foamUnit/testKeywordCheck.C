@@ -574,7 +574,7 @@ TEST(keywordCheck, duplicatesInPatternScope)
         ).find
         (
             "entry 'uniformValue' is given 2 times in "
-            "'boundaryField/(top|side)' (lines 6 and 7"
+            "'boundaryField/(top|side)' (lines 7 and 8"
         ),
         npos()
     );
