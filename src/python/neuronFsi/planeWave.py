@@ -97,6 +97,16 @@ def _foamDictionary(path, entry, value=False):
     return out.stdout
 
 
+def _patchEntry(path, patch):
+    """boundaryField/<patch> of a field file as foamDictionary prints it,
+    under the patch's own name: a patch matched by a pattern (".*" in the
+    blast's 0/T) is printed under the pattern, and the column's field then
+    held that pattern twice, for top and bottom (refused since fix19q as a
+    keyword given twice in one scope)."""
+    text = _foamDictionary(path, "boundaryField/" + patch).lstrip("\n")
+    return patch + "\n" + text.split("\n", 1)[1]
+
+
 INFLOW = "planeWaveInflow"     # the top patch type of a shortened scene
 INFLOW_FILE = "constant/inflowWave"
 # The water states the project takes as input (a pulse, an initial state)
@@ -549,7 +559,7 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
                                ("U", "volVectorField")):
                 path = _fieldFile(case, field)
                 if not inflow:
-                    top = _foamDictionary(path, "boundaryField/top")
+                    top = _patchEntry(path, "top")
                 elif field == "p":
                     top = ("    top { type uniformFixedValue; uniformValue "
                            "table ( %s ); }" % " ".join(
@@ -563,7 +573,7 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
                         internal=_foamDictionary(path, "internalField",
                                                  True).strip(),
                         top=top,
-                        bottom=_foamDictionary(path, "boundaryField/bottom")))
+                        bottom=_patchEntry(path, "bottom")))
             for app in ("blockMesh", "rhoRiemannFoam"):
                 with open(os.path.join(work, "log." + app), "w") as out:
                     rc = signals.call([app, "-case", work], stdout=out,
