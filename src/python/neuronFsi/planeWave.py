@@ -586,6 +586,7 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
             wave = PlaneWave(heights, data[:, 0], data[:, 1:], dz, Z,
                              rho[:, 1:], U[:, 2::3], T[:, 1:])
             wave.thermoDigest = _recordedThermo(work)
+            wave.inputDigests = _recordedDigests(work)
             return wave
         finally:
             if not keep:
@@ -595,12 +596,9 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
 THERMO = "constant/thermophysicalProperties"
 
 
-def _recordedThermo(work):
-    """The digest of constant/thermophysicalProperties that rhoRiemannFoam
-    recorded in the last time it wrote in work (<time>/uniform/
-    inputDigests, "<sha1>  <path>" lines: foamTools::inputRecord, the one
-    digest of the project's input records; planeWaveInflow compares the
-    case's with it). None if there is none."""
+def _lastRecord(work):
+    """(time name, path) of the input record of the last time written in
+    work that has one (<time>/uniform/inputDigests), else (None, None)"""
     times = []
     for name in os.listdir(work):
         try:
@@ -610,12 +608,67 @@ def _recordedThermo(work):
     for _, name in sorted(times, reverse=True):
         path = os.path.join(work, name, "uniform", "inputDigests")
         if os.path.isfile(path):
-            with open(path) as f:
-                for line in f:
-                    digest, _, item = line.rstrip("\n").partition("  ")
-                    if item == THERMO:
-                        return digest
-    return None
+            return name, path
+    return None, None
+
+
+def _recordedDigests(work):
+    """{input: digest} of the input record of the last time written in
+    work ("<sha1>  <path>" lines: foamTools::inputRecord, the one digest
+    of the project's input records); {} if there is none"""
+    _, path = _lastRecord(work)
+    record = {}
+    if path:
+        with open(path, errors="replace") as f:
+            for line in f:
+                digest, _, item = line.rstrip("\n").partition("  ")
+                record[item] = digest
+    return record
+
+
+def _recordedThermo(work):
+    """The digest of constant/thermophysicalProperties that rhoRiemannFoam
+    recorded in the last time it wrote in work (<time>/uniform/
+    inputDigests; planeWaveInflow compares the case's with it). None if
+    there is none."""
+    return _recordedDigests(work).get(THERMO)
+
+
+#: The inputs of a case the 1D column is computed from (copied into it)
+COLUMN_INPUTS = (THERMO, "system/fvSchemes", "system/fvSolution")
+
+
+def checkRunInputs(case, wave):
+    """Refuse (PlaneWaveError) to compare the run of case with a column
+    computed from inputs that differ from those the run recorded (the
+    last time of the case, or of its processor0, with a uniform/
+    inputDigests): the 1D answer would be that of another water or other
+    numerics (adv37 w50: C0 changed after the run, compared without a
+    word, errors 12.6 -> 35.6 %). Nothing to compare with when the run
+    has no record (a run of an earlier build)."""
+    column = getattr(wave, "inputDigests", None) or {}
+    for where in (case, os.path.join(case, "processor0")):
+        if not os.path.isdir(where):
+            continue
+        time, path = _lastRecord(where)
+        if path is None:
+            continue
+        run = _recordedDigests(where)
+        changed = [f for f in COLUMN_INPUTS
+                   if f in run and f in column and run[f] != column[f]]
+        if changed:
+            raise PlaneWaveError(
+                "%s changed since the run in %s (its inputs as recorded at "
+                "t = %s s, %s): the 1D answer would be computed with other "
+                "inputs than the run's and the comparison would be "
+                "meaningless. Restore %s as the run had %s, or run the case "
+                "again with the new %s"
+                % (", ".join(changed), case, time,
+                   os.path.relpath(path, case),
+                   "it" if len(changed) == 1 else "them",
+                   "it" if len(changed) == 1 else "them",
+                   "input" if len(changed) == 1 else "inputs"))
+        return
 
 
 def _logError(path, lines=6):
