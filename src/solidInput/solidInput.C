@@ -397,6 +397,7 @@ void Foam::solidInput::checkAxis
             << " Add the row (<set> 0) for the"
             << " node set on the axis"
             << (onAxis.empty() ? std::string() : " (here: " + onAxis + ")")
+               .c_str()
             << ", e.g. (axis 0)" << exit(FatalIOError);
     }
 }
