@@ -638,14 +638,38 @@ def _recordedThermo(work):
 COLUMN_INPUTS = (THERMO, "system/fvSchemes", "system/fvSolution")
 
 
+_CONDITION = re.compile(r"^(?:field |initial conditions (?:processor\d+/)?"
+                        r"[^/]+/)(p|U|T), boundaryField/(top|bottom)$")
+
+
+def _conditions(record):
+    """{(kind, field, patch): digest} of the top and bottom conditions of
+    p, U and T in an input record, its keys "field p, boundaryField/top"
+    (kind "field") and "initial conditions 0/p, boundaryField/top" (kind
+    "initial", whatever the start directory)"""
+    found = {}
+    for key, digest in record.items():
+        m = _CONDITION.match(key)
+        if m:
+            kind = "field" if key.startswith("field ") else "initial"
+            found[(kind, m.group(1), m.group(2))] = digest
+    return found
+
+
 def checkRunInputs(case, wave):
     """Refuse (PlaneWaveError) to compare the run of case with a column
     computed from inputs that differ from those the run recorded (the
     last time of the case, or of its processor0, with a uniform/
-    inputDigests): the 1D answer would be that of another water or other
-    numerics (adv37 w50: C0 changed after the run, compared without a
-    word, errors 12.6 -> 35.6 %). Nothing to compare with when the run
-    has no record (a run of an earlier build)."""
+    inputDigests): the 1D answer would be that of another water, other
+    numerics or another pulse (adv37 w50: C0 changed after the run,
+    compared without a word, errors 12.6 -> 35.6 %; w111: the next run's
+    pulse set in 0/p, +70.7 %). The column's own record (rhoRiemannFoam's,
+    the same digests) is compared with the run's: the files it copies
+    (COLUMN_INPUTS) and, unless the case's top is a planeWaveInflow (the
+    column then applies the pulse of constant/inflowWave, which the
+    boundary condition checks), the top and bottom conditions of p, U and
+    T it takes from 0/. Nothing to compare with when the run has no
+    record (a run of an earlier build)."""
     column = getattr(wave, "inputDigests", None) or {}
     for where in (case, os.path.join(case, "processor0")):
         if not os.path.isdir(where):
@@ -656,6 +680,13 @@ def checkRunInputs(case, wave):
         run = _recordedDigests(where)
         changed = [f for f in COLUMN_INPUTS
                    if f in run and f in column and run[f] != column[f]]
+        if inflowColumnHeight(case) is None:
+            now, was = _conditions(column), _conditions(run)
+            for key in sorted(k for k in now if k in was
+                              and now[k] != was[k]):
+                name = "0/%s, boundaryField/%s" % key[1:]
+                if name not in changed:
+                    changed.append(name)
         if changed:
             raise PlaneWaveError(
                 "%s changed since the run in %s (its inputs as recorded at "
