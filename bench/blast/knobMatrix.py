@@ -47,7 +47,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-from neuronFsi import bench, damageIndicators, logs
+from neuronFsi import bench, damageIndicators, logs, planeWave
 from neuronFsi.solidResults import SolidResults
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -126,13 +126,9 @@ def solidRows(c):
     path = os.path.join(c, "postProcessing", "planeWave", "0",
                         "solidMeasures.dat")
     out = {}
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            w = line.split()
-            if float(w[2]) > 4e-6 and w[1] not in out:
-                out[w[1]] = [float(x) for x in w[3:11]]
+    for r in planeWave.readMeasures(path):
+        if r["z"] > 4e-6 and r["region"] not in out:
+            out[r["region"]] = list(r.values())[3:11]
     return out
 
 

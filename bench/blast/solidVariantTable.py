@@ -17,15 +17,15 @@ import os
 import re
 import sys
 
+from neuronFsi import planeWave
+
 
 def rows(path):
+    """{probe: its row's values in column order} (the first row of each
+    probe) of a planeWave measures file"""
     out = {}
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            w = line.split()
-            out.setdefault(w[0], w)
+    for r in planeWave.readMeasures(path):
+        out.setdefault(r["probe"], list(r.values()))
     return out
 
 

@@ -61,15 +61,10 @@ def solidRefs(case):
     planeWave -check's solidMeasures.dat (empty when it is not there)."""
     path = os.path.join(case, "postProcessing", "planeWave", "0",
                         "solidMeasures.dat")
-    out = {}
     if not os.path.isfile(path):
-        return out
-    with open(path) as f:
-        for line in f:
-            w = line.split()
-            if w and w[0].startswith("solid_"):
-                out[int(w[0][6:])] = float(w[7])
-    return out
+        return {}
+    return {int(r["probe"][len("solid_"):]): r["strain1nsRef"]
+            for r in planeWave.readMeasures(path)}
 
 
 if __name__ == "__main__":

@@ -146,6 +146,34 @@ class ReferenceFile(TempDirTestCase):
             pw.readReference(self.tmp + "/bad.dat")
 
 
+class MeasuresFile(TempDirTestCase):
+    """readMeasures: columns by the last header line, units (also with a
+    space, '[Pa s]') dropped, numbers as floats; a row that does not fit
+    the header refused."""
+
+    def testColumnsByName(self):
+        path = self.write("measures.dat",
+                          "# planeWave: probes of a case\n"
+                          "# probe  z[m]  impulse[Pa s] impulseRef  "
+                          "errImpulse[%]\n"
+                          "solid_p0 4.1e-06  1.02 1.01  0.99\n"
+                          "probes_1 1e-05  0.5 0.5  0\n")
+        rows = pw.readMeasures(path)
+        self.assertEqual([list(r) for r in rows],
+                         [["probe", "z", "impulse", "impulseRef",
+                           "errImpulse"]]*2)
+        self.assertEqual(rows[0]["probe"], "solid_p0")
+        self.assertEqual(rows[1]["z"], 1e-05)
+        self.assertAlmostEqual(rows[0]["errImpulse"], 0.99)
+
+    def testRowNotFittingTheHeaderRefused(self):
+        path = self.write("solidMeasures.dat",
+                          "# probe region z[m] vonMises1ns\n"
+                          "solid_0 cytoplasm 4e-6\n")
+        with self.assertRaisesRegex(pw.PlaneWaveError, "3 words"):
+            pw.readMeasures(path)
+
+
 class UniaxialResponse(unittest.TestCase):
     """The exact solid response to a density history: closed forms."""
 

@@ -747,6 +747,40 @@ def writeReference(path, wave, what):
                 "%.12g" % v for v in data[k])))
 
 
+def readMeasures(path):
+    """The rows of planeWave's measures.dat or solidMeasures.dat (the
+    utility's output, postProcessing/planeWave/<start>/): a list of dicts
+    by the column names of the last comment line before the data, units
+    dropped ('peak1ns[MPa]' -> 'peak1ns'), in the file's column order;
+    numbers as floats, words (probe names, regions) as they are."""
+    names, rows = None, []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#"):
+                if rows:
+                    raise PlaneWaveError("%s: a comment line after its data "
+                                         "rows: not a planeWave measures "
+                                         "file" % path)
+                names = re.sub(r"\[[^\]]*\]", "", line[1:]).split()
+                continue
+            w = line.split()
+            if not w:
+                continue
+            if names is None or len(w) != len(names):
+                raise PlaneWaveError(
+                    "%s: a row of %d words under a header of %s: not a "
+                    "planeWave measures file" % (path, len(w),
+                                                 len(names or [])))
+            row = {}
+            for k, x in zip(names, w):
+                try:
+                    row[k] = float(x)
+                except ValueError:
+                    row[k] = x
+            rows.append(row)
+    return rows
+
+
 def readReference(path):
     """The PlaneWave of a file of writeReference (densities and
     temperatures if it has them)."""
