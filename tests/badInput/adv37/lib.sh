@@ -1,0 +1,27 @@
+# lib.sh (adv37): adv36's lib.sh (adv35's base cases ind/indDone/blast/blastDone/sod/sodDone, setd, sums; blastEnd,
+# contents, lost) plus:
+#   run N CMD...     CMD under `timeout -s KILL N`, prints "rc=<exit>" after it (137 = killed by the timeout: HANG if N is generous)
+#   fatal LOG [N]    the first N (6) lines from the first FATAL/Error/Traceback of LOG
+. "$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/../adv36/lib.sh"
+run() { local n=$1; shift; timeout -s KILL "$n" "$@"; local rc=$?; echo "rc=$rc"; return $rc; }
+fatal() { grep -a -m1 -A${2:-6} -i 'FATAL\|^Error\|error:\|Traceback\|refus\|cannot' "$1" | grep -av '^ *$' | head -${2:-6} | cut -c1-300; }
+#   pblast           a blast copy split in two ranks at y = 4 um (manual decomposition, tests/lib/splitAtPlane.sh), decomposed
+#   splitY Y         splitAtPlane . y Y, and the #sinclude of controlDict.allrun put back (foamDictionary -set drops it)
+#   pblastDone       the same, run on 2 ranks to its end
+. "$ROOT/tests/lib/splitAtPlane.sh"
+splitY() { splitAtPlane . y $1; grep -q "controlDict.allrun" system/controlDict || echo '#sinclude "controlDict.allrun"' >> system/controlDict; }
+pblast() { blast; splitY 4e-6; decomposePar > log.decompose 2>&1 || { echo "decomposePar failed"; tail -3 log.decompose; }; }
+pblastDone() { pblast; mpirun -np 2 cellBlastFoam -parallel > log.first 2>&1 || { echo "pblastDone failed"; tail -3 log.first; }; }
+#   latest           startFrom latestTime in system/controlDict (sed: foamDictionary -set would drop its #sinclude of controlDict.allrun)
+#   committed        the number of committed time directories of processor1 (or of the case, serial)
+latest() { sed -i 's/^startFrom .*/startFrom latestTime;/' system/controlDict; }
+committed() { if [ -d processor1 ]; then ls -d processor1/*/.writeCommitted 2>/dev/null | wc -l; else ls -d */.writeCommitted 2>/dev/null | wc -l; fi; }
+#   killAfter N PID [S]  waits for N committed writes (at most 60 s), then S s more (default: random in [0, 0.3)), then SIGKILLs PID's children and PID
+killAfter() { local i=0; until [ "$(committed)" -ge "$1" ] || [ $i -ge 600 ]; do sleep 0.1; i=$((i+1)); done; local s=${3:-$(/usr/bin/python3 -c "import random;print(round(random.uniform(0,0.3),3))")}; sleep $s; pkill -KILL -P $2; kill -KILL $2 2>/dev/null; wait $2 2>/dev/null; echo "killed after $(committed) commits (+$s s)"; }
+#   indKilled S      a fresh indentation case with 10x finer depth steps (maxDepthIncrement 0.01 um), SIGKILLed S s after its start, startFrom latestTime
+indKilled() { ind; sed -i 's/maxDepthIncrement 0.1e-6/maxDepthIncrement 0.01e-6/' constant/indenterProperties; cellIndentationFoam > log.first 2>&1 & local p=$!; sleep $1; kill -KILL $p; wait $p 2>/dev/null; latest; echo "killed at $1 s: $(ls postProcessing/indentation | tr '\n' ' ') force rows $(grep -vc '^#' postProcessing/indentation/force.dat)"; }
+#   try LABEL CMD... runs CMD (60 s timeout), prints "LABEL: rc=<exit> | <first error line>"
+try() { local l=$1; shift; timeout -s KILL 60 "$@" > $W/try.log 2>&1; local rc=$?; echo "$l: rc=$rc | $(grep -a -m1 -A2 -i 'FATAL\|error\|refus\|invalid\|cannot\|Traceback\|not ' $W/try.log | grep -av '^ *$\|^-->' | head -2 | tr '\n' ' ' | cut -c1-260)"; }
+#   snap FILE / gone FILE   as contents/lost, with the file names: the earlier files whose content is found nowhere in the case now
+snap() { find . -type f ! -path './system/*' ! -path './constant/*' ! -name 'log.*' ! -name '.runLock' -print0 | xargs -0 md5sum | sort > "$1"; }
+gone() { local now; now=$(find . -type f ! -path './system/*' ! -path './constant/*' ! -name 'log.*' ! -name '.runLock' -print0 | xargs -0 md5sum | awk '{print $1}' | sort -u); awk '{print $1, $2}' "$1" | while read s f; do grep -q "$s" <<< "$now" || echo "$f"; done; }
