@@ -33,5 +33,5 @@ setStudy() { sed -i "s/^$1 .*/$1 $2;/" system/pulseStudyDict; }   # setStudy ENT
 #   each FILE "ENTRY VALUE"... -- CMD...   for each edit (results of an accepted run reported, then removed): the original FILE back, ENTRY set to VALUE (sed on a line "ENTRY ...;", else appended), try CMD
 each() { local f=$1; shift; local edits=(); while [ $# -gt 0 ] && [ "$1" != "--" ]; do edits+=("$1"); shift; done; shift; cp "$f" "$W/each.orig"
   for e in "${edits[@]}"; do cp "$W/each.orig" "$f"; local k=${e%% *} v=${e#* }; if grep -q "^ *$k " "$f"; then sed -i "0,/^\( *\)$k .*/s//\1$k $v;/" "$f"; else echo "$k $v;" >> "$f"; fi; try "$e" "$@"; [ -d solid ] || [ -d postProcessing ] && echo "    (the run wrote results: $(ls -d [1-9]* solid postProcessing 2>/dev/null | tr '\n' ' '); removed for the next edit)"; rm -rf solid postProcessing [1-9]*; done; cp "$W/each.orig" "$f"; }
-#   inDir DIR        "pid:comm" of every process whose working directory is under DIR
-inDir() { for d in /proc/[0-9]*; do c=$(readlink $d/cwd 2>/dev/null) || continue; case "$c" in "$1"*) echo -n "${d#/proc/}:$(cat $d/comm 2>/dev/null) ";; esac; done; }
+#   inDir DIR        "pid:command line (in its directory)" of every process but this script whose working directory is under DIR
+inDir() { for d in /proc/[0-9]*; do local q=${d#/proc/}; [ "$q" = $$ ] || [ "$q" = $BASHPID ] && continue; c=$(readlink $d/cwd 2>/dev/null) || continue; case "$c" in "$1"*) echo -n "$q:$(tr '\0' ' ' < $d/cmdline 2>/dev/null | cut -c1-60) (in ${c#$1}); ";; esac; done; }

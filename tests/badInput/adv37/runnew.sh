@@ -1,5 +1,5 @@
 #!/bin/bash
-# runnew.sh [-o DIR] ID...: each case under nice -n 10 and a 300 s KILL timeout, output in out/DIR/ID.txt (DIR: new)
+# runnew.sh [-o DIR] ID...: each case (ADV default /tmp/adv37x: the base cases) under nice -n 10 and a 300 s KILL timeout, output in out/DIR/ID.txt (DIR: new)
 cd "$(dirname "$0")"; d=new; [ "$1" = -o ] && { d=$2; shift 2; }; OUT=$PWD/out/$d; mkdir -p $OUT
 for id in "$@"; do
   start=$(date +%s.%N)
