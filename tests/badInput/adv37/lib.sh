@@ -35,3 +35,8 @@ each() { local f=$1; shift; local edits=(); while [ $# -gt 0 ] && [ "$1" != "--"
   for e in "${edits[@]}"; do cp "$W/each.orig" "$f"; local k=${e%% *} v=${e#* }; if grep -q "^ *$k " "$f"; then sed -i "0,/^\( *\)$k .*/s//\1$k $v;/" "$f"; else echo "$k $v;" >> "$f"; fi; try "$e" "$@"; [ -d solid ] || [ -d postProcessing ] && echo "    (the run wrote results: $(ls -d [1-9]* solid postProcessing 2>/dev/null | tr '\n' ' '); removed for the next edit)"; rm -rf solid postProcessing [1-9]*; done; cp "$W/each.orig" "$f"; }
 #   inDir DIR        "pid:command line (in its directory)" of every process but this script whose working directory is under DIR
 inDir() { for d in /proc/[0-9]*; do local q=${d#/proc/}; [ "$q" = $$ ] || [ "$q" = $BASHPID ] && continue; c=$(readlink $d/cwd 2>/dev/null) || continue; case "$c" in "$1"*) echo -n "$q:$(tr '\0' ' ' < $d/cmdline 2>/dev/null | cut -c1-60) (in ${c#$1}); ";; esac; done; }
+#   prev             a copy of tutorials/blast/axisymmetricPreview in $W/c (cd there); PREV holds the small Allrun options (20 um column, 2 ns... set END)
+prev() { cp -r "$ROOT/tutorials/blast/axisymmetricPreview" $W/c; cd $W/c; }
+PREV="-h 0.25e-6 -far 2e-6 -dz 0.25e-6 -cell 0.5e-6 -Z 20e-6 -writeInterval 1e-9 -noPlots -noVTK"
+#   killIn DIR       SIGKILL, by process id, every process (but this script) whose working directory is under DIR (all started by the case)
+killIn() { for d in /proc/[0-9]*; do local q=${d#/proc/}; [ "$q" = $$ ] || [ "$q" = $BASHPID ] && continue; c=$(readlink $d/cwd 2>/dev/null) || continue; case "$c" in "$1"*) kill -KILL $q 2>/dev/null;; esac; done; }
