@@ -36,9 +36,8 @@ what=${1:-cost}
 prepare() {     # prepare <dir> <Allrun options...>
     local c=$1/quarter3D
     shift
-    mkdir -p "$c"
-    cp -r "$root"/tutorials/blast/quarter3D/{0.orig,constant,system,Allrun} "$c/"
-    rm -rf "$c/constant/polyMesh" "$c"/constant/*.msh
+    python3 -m neuronFsi.scratch "$root/tutorials/blast/quarter3D" "$c" \
+        0.orig constant system Allrun --ignore polyMesh '*.msh'
     (cd "$c" && PROJECT_DIR=$root ./Allrun -noRun -noPlots -inflow none "$@" \
         > log.prepare 2>&1) || { tail -20 "$c/log.prepare"; exit 1; }
     echo "$c"

@@ -39,9 +39,8 @@ root=$(cd "$here/../.." && pwd)
 . "$root/etc/bashrc"
 [ ! -e "$dir" ] || { echo "inflow3D.sh: $dir exists" >&2; exit 1; }
 c=$dir/quarter3D
-mkdir -p "$c"
-cp -r "$root"/tutorials/blast/quarter3D/{0.orig,constant,system,Allrun} "$c/"
-rm -rf "$c/constant/polyMesh" "$c"/constant/*.msh
+python3 -m neuronFsi.scratch "$root/tutorials/blast/quarter3D" "$c" \
+    0.orig constant system Allrun --ignore polyMesh '*.msh'
 cd "$c"
 if [ -n "${MAXCO:-}" ]
 then

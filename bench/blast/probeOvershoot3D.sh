@@ -26,9 +26,8 @@ root=$(cd "$here/../.." && pwd)
 . "$root/etc/bashrc"
 [ ! -e "$dir" ] || { echo "probeOvershoot3D.sh: $dir exists" >&2; exit 1; }
 c=$dir/quarter3D
-mkdir -p "$c"
-cp -r "$root"/tutorials/blast/quarter3D/{0.orig,constant,system,Allrun} "$c/"
-rm -rf "$c/constant/polyMesh" "$c"/constant/*.msh
+python3 -m neuronFsi.scratch "$root/tutorials/blast/quarter3D" "$c" \
+    0.orig constant system Allrun --ignore polyMesh '*.msh'
 cd "$c"
 echo "== $(date -u '+%F %H:%M UTC'), commit $(git -C "$root" rev-parse --short HEAD)$(git -C "$root" diff --quiet HEAD -- src applications tutorials/blast bench/blast || echo ' (with uncommitted changes)'), load $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "== ./Allrun -noRun -noPlots -lateral 2e-6 -far 10e-6 -endTime 8e-8 $*"

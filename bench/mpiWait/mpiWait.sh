@@ -25,9 +25,8 @@ mkdir -p "$dir"
 dir=$(cd "$dir" && pwd)
 mpicxx -O2 -shared -fPIC -o "$dir/libmpiWait.so" "$here/mpiWait.C" -ldl
 c=$dir/quarter3D
-mkdir -p "$c"
-cp -r "$root"/tutorials/blast/quarter3D/{0.orig,constant,system,Allrun} "$c/"
-rm -rf "$c/constant/polyMesh" "$c"/constant/*.msh
+python3 -m neuronFsi.scratch "$root/tutorials/blast/quarter3D" "$c" \
+    0.orig constant system Allrun --ignore polyMesh '*.msh'
 cd "$c"
 echo "== $(date -u '+%F %H:%M UTC'), $(command -v cellBlastFoam), load $(cut -d' ' -f1-3 /proc/loadavg)"
 PROJECT_DIR=$root ./Allrun -noRun -noPlots -np "$np" -endTime "$end" "$@" \

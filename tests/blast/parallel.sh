@@ -133,10 +133,9 @@ echo "parallel restart: logs, solid.h5 and the fields of t = $last s bitwise"
 
 # 3. The 3D quarter: serial against 2 ranks
 q=$work/q3D/quarter3D
-mkdir -p "$q"
+python3 -m neuronFsi.scratch "$root/tutorials/blast/quarter3D" "$q" \
+    0.orig constant system Allrun --ignore polyMesh '*.msh'
 cp "$root/tutorials/blast/plotBlast.py" "$work/q3D/"
-cp -r "$root"/tutorials/blast/quarter3D/{0.orig,constant,system,Allrun} "$q/"
-rm -rf "$q/constant/polyMesh" "$q"/constant/*.msh
 # to 12 ns: the pulse reaches the probe (the scaled nucleus's interface
 # point, z = 4.1 um) at about 10.8 ns in the 20 um box
 (cd "$q" && PROJECT_DIR=$root ./Allrun -tet -box 20e-6 -h 0.6e-6 -far 2e-6 \

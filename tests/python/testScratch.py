@@ -30,6 +30,25 @@ class Scratch(TempDirTestCase):
         with self.assertRaises(FileExistsError):
             scratch.copyInputs(src, dst, ("Allrun",))
 
+    def testCommandLineCopiesAndRefuses(self):
+        """The shell scripts' form: the same copy; an existing folder or a
+        missing entry is refused before anything is copied."""
+        src = os.path.join(self.tmp, "case")
+        self.write("case/Allrun", "#!/bin/sh\n")
+        self.write("case/constant/cell.msh", "mesh\n")
+        self.write("case/constant/solidProperties", "a 1;\n")
+        dst = os.path.join(self.tmp, "deeper/copy")
+        scratch.main([src, dst, "constant", "Allrun", "--ignore", "*.msh"])
+        found = sorted(os.path.relpath(os.path.join(d, f), dst)
+                       for d, _, fs in os.walk(dst) for f in fs)
+        self.assertEqual(found, ["Allrun", "constant/solidProperties"])
+        with self.assertRaises(SystemExit):
+            scratch.main([src, dst, "Allrun"])
+        other = os.path.join(self.tmp, "other")
+        with self.assertRaises(SystemExit):
+            scratch.main([src, other, "Allrun", "system"])
+        self.assertFalse(os.path.exists(other))
+
 
 if __name__ == "__main__":
     unittest.main()
