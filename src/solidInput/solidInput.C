@@ -276,7 +276,23 @@ std::vector<solid::MaterialParameters> Foam::solidInput::setup
         model.setMaterial(p.name, solid::Material::create(p));
     }
     const label dim = model.mesh().dim();
-    for (const auto& f : dict_.get<List<Tuple2<word, label>>>("fixed"))
+    const List<Tuple2<word, label>> fixedRows
+    (
+        dict_.get<List<Tuple2<word, label>>>("fixed")
+    );
+    // Nothing held: the load carries the cell away as a rigid body (and
+    // through the substrate it rests on); adv37 w97 ran to its end
+    if (fixedRows.empty())
+    {
+        FatalIOErrorInFunction(dict_)
+            << "entry 'fixed' is empty: nothing holds the cell, so the load"
+            << " moves it as a rigid body (through the substrate it rests"
+            << " on). Hold it where it is attached, e.g. ((fixedBottom 0)"
+            << " (fixedBottom 1)" << (dim == 2 ? " (axis 0)" : "")
+            << "); the node sets of the mesh: "
+            << nodeSetNames(model.mesh()).c_str() << exit(FatalIOError);
+    }
+    for (const auto& f : fixedRows)
     {
         // the component by the row and the mesh's valid ones (adv33
         // sp02: "Dirichlet condition on node 93 component 2 is out of
@@ -300,7 +316,90 @@ std::vector<solid::MaterialParameters> Foam::solidInput::setup
                 << "entry 'fixed': " << err.what() << exit(FatalIOError);
         }
     }
+    if (model.mesh().axisymmetric())
+    {
+        checkAxis(model.mesh(), fixedRows);
+    }
     return mats;
+}
+
+
+std::string Foam::solidInput::nodeSetNames(const solid::Mesh& mesh)
+{
+    std::string names;
+    for (const auto& s : mesh.nodeSets)
+    {
+        names += (names.empty() ? "" : ", ") + s.first;
+    }
+    return names.empty() ? std::string("(none)") : names;
+}
+
+
+void Foam::solidInput::checkAxis
+(
+    const solid::Mesh& mesh,
+    const List<Tuple2<word, label>>& fixed
+) const
+{
+    // Nodes with u_r fixed (component 0 of a listed set)
+    std::vector<bool> held(mesh.nNodes(), false);
+    for (const auto& f : fixed)
+    {
+        const auto it = mesh.nodeSets.find(f.first());
+        if (f.second() == 0 && it != mesh.nodeSets.end())
+        {
+            for (const int n : it->second)
+            {
+                held[n] = true;
+            }
+        }
+    }
+    // On the axis: r within 1e-9 of the mesh's radial extent of 0
+    double rMax = 0;
+    for (const solid::Vec3& x : mesh.X)
+    {
+        rMax = std::max(rMax, x[0]);
+    }
+    label free = 0;
+    label first = -1;
+    for (label n = 0; n < mesh.nNodes(); ++n)
+    {
+        if (mesh.X[n][0] <= 1e-9*rMax && !held[n])
+        {
+            if (first < 0)
+            {
+                first = n;
+            }
+            ++free;
+        }
+    }
+    if (free)
+    {
+        // The node sets that lie on the axis: the ones to name
+        std::string onAxis;
+        for (const auto& s : mesh.nodeSets)
+        {
+            bool all = !s.second.empty();
+            for (const int n : s.second)
+            {
+                all = all && mesh.X[n][0] <= 1e-9*rMax;
+            }
+            if (all)
+            {
+                onAxis += (onAxis.empty() ? "" : ", ") + s.first;
+            }
+        }
+        FatalIOErrorInFunction(dict_)
+            << "entry 'fixed' leaves u_r free on " << free << " node(s) on"
+            << " the axis r = 0 of the r-z mesh (the first: node " << first
+            << " at z = " << mesh.X[first][1] << " m): a solid of revolution"
+            << " has u_r = 0 there (free, the results are no model of one)."
+            << " Add the row (<set> 0) for the"
+            << " node set on the axis"
+            << (onAxis.empty() ? std::string() : " (here: " + onAxis + ")")
+               .c_str()
+            << ", e.g. (axis 0)" << exit(FatalIOError);
+    }
 }
 
 

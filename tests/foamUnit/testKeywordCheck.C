@@ -441,6 +441,146 @@ TEST(keywordCheck, duplicatesInIncludedFiles)
 }
 
 
+TEST(keywordCheck, duplicatesThroughIncludes)
+{
+    // A keyword of the file given again by a file it includes after it
+    // (adv36 v75, v76: the included value silently won) is a duplicate
+    // naming both places; the including file giving a keyword of a set it
+    // included before is the override by design, so is an Allrun's
+    // options file (<dictionary>.allrun) at its end
+    foamUnit::testCase tc("keywordCheck");
+    tc.writeFile("constant/stepOverride", "maxDeltaT 0.05;\n");
+    tc.writeFile
+    (
+        "constant/indenterProperties",
+        header + "maxDeltaT 5;\nradius 1;\n#include \"stepOverride\"\n"
+    );
+    const std::string msg = errorAtLine
+    (
+        [&]
+        {
+            foamTools::checkDuplicates
+            (
+                readDict(tc, "constant/indenterProperties")
+            );
+        }
+    );
+    for
+    (
+        const std::string& part
+      : {
+            std::string("entry 'maxDeltaT' is given twice in the top level"),
+            std::string("constant/indenterProperties line 2 and, read after"
+                " it, at "),
+            std::string("constant/stepOverride line 1 (included by "),
+            "file: " + std::string(tc.dir()/"constant/stepOverride")
+          + " at line 1"
+        }
+    )
+    {
+        EXPECT_NE(msg.find(part), npos()) << "no \"" << part << "\" in: "
+            << msg;
+    }
+    // the same in a sub-dictionary, the include nested in another one
+    tc.writeFile("constant/couplingOverride", "#include \"deeper\"\n");
+    tc.writeFile("constant/deeper", "maxIter 1;\n");
+    tc.writeFile
+    (
+        "constant/fsiProperties",
+        header + "coupling\n{\n    maxIter 30;\n"
+        "    #include \"couplingOverride\"\n}\n"
+    );
+    const dictionary fsi(readDict(tc, "constant/fsiProperties"));
+    EXPECT_NE
+    (
+        errorOf([&]{ foamTools::checkDuplicates(fsi.subDict("coupling")); })
+       .find("entry 'maxIter' is given twice in 'coupling'"),
+        npos()
+    );
+    // by design: the file after the set it includes; an .allrun at the end
+    tc.writeFile("constant/set", "nucleus { C10 1; volumetric quadratic; }\n");
+    tc.writeFile("constant/solidProperties.allrun", "shearViscosity 0.5;\n");
+    tc.writeFile
+    (
+        "constant/solidProperties",
+        header + "shearViscosity 0.2;\nmaterials\n{\n    #include \"set\"\n"
+        "    nucleus { volumetric mieGruneisen; }\n}\n"
+        "#sinclude \"solidProperties.allrun\"\n"
+    );
+    const dictionary solid(readDict(tc, "constant/solidProperties"));
+    EXPECT_EQ(errorOf([&]{ foamTools::checkDuplicates(solid); }), "");
+    EXPECT_EQ
+    (
+        errorOf
+        (
+            [&]
+            {
+                foamTools::checkDuplicates
+                (
+                    solid.subDict("materials").subDict("nucleus")
+                );
+            }
+        ),
+        ""
+    );
+    // the set included after the file's own entry: the set would win
+    tc.writeFile
+    (
+        "constant/solidProperties",
+        header + "materials\n{\n    nucleus { volumetric mieGruneisen; }\n"
+        "    #include \"set\"\n}\n"
+    );
+    const dictionary late(readDict(tc, "constant/solidProperties"));
+    EXPECT_NE
+    (
+        errorOf
+        (
+            [&]
+            {
+                foamTools::checkDuplicates
+                (
+                    late.subDict("materials").subDict("nucleus")
+                );
+            }
+        ).find("entry 'volumetric' is given twice in 'materials/nucleus'"),
+        npos()
+    );
+}
+
+
+TEST(keywordCheck, duplicatesInPatternScope)
+{
+    // A scope named by a pattern is walked by its characters (adv36 v44:
+    // a second uniformValue in the patch "(top)" was not seen)
+    foamUnit::testCase tc("keywordCheck");
+    tc.writeFile
+    (
+        "0/p",
+        header + "boundaryField\n{\n    \"(top|side)\"\n    {\n"
+        "        type uniformFixedValue;\n        uniformValue constant 1;\n"
+        "        uniformValue constant 2;\n    }\n}\n"
+    );
+    EXPECT_NE
+    (
+        errorOf
+        (
+            [&]
+            {
+                foamTools::checkDuplicatesIn
+                (
+                    tc.dir()/"0/p", {"boundaryField", "(top|side)"}
+                );
+            }
+        ).find
+        (
+            "entry 'uniformValue' is given 2 times in "
+            "'boundaryField/(top|side)' (lines 7 and 8"
+        ),
+        npos()
+    );
+}
+
+
 TEST(keywordCheck, controlDictKeywords)
 {
     // OpenFOAM's keywords and the solver's are valid; a misspelt one of

@@ -13,7 +13,9 @@
 #  - every run that ends (also in a fatal error) removes its lock;
 #  - an empty lock and a directory in place of the lock are refused as
 #    such; a lock naming another case says so; a run records its case;
-#  - a run through a symbolic link to the case is a run of the same case.
+#  - a run through a symbolic link to the case is a run of the same case;
+#  - a solver started by an Allrun whose shell is killed alone (SIGTERM,
+#    SIGKILL) keeps the case locked until its end.
 # The runs over the first run's results start anew with -overwrite.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -129,4 +131,45 @@ wait "$own" || true
 check "a run through a link to the case is refused as the same case" \
     "[ $status -ne 0 ] && grep -q 'is in use by cellBlastFoam (process $own' '$work/log.link' \
      && ! grep -q 'another case' '$work/log.link'"
+
+# 8. A solver started by an Allrun whose shell is then killed alone (adv36
+#    v69, v38: its exit trap removed the lock, or with SIGKILL the lock
+#    named a dead process; a solver started by hand ran beside the orphan
+#    and force.dat held rows of both): the solver takes the Allrun's lock
+#    over, so a second run is refused naming it, and the lock goes at the
+#    orphan's end
+rm -f "$work/link"
+cat > "$work/case/AllrunSolver" <<'ALLRUN'
+#!/bin/bash
+cd "${0%/*}" || exit 1
+. "$PROJECT_DIR"/etc/RunFunctions
+allrunLock
+cellBlastFoam -overwrite > log.allrunSolver 2>&1
+ALLRUN
+chmod +x AllrunSolver
+for sig in TERM KILL
+do
+    PROJECT_DIR="$here/../.." setsid ./AllrunSolver &
+    allrun=$!; pids+=("$allrun")
+    solver=
+    for _ in $(seq 200)
+    do
+        solver=$(pgrep -s "$allrun" cellBlastFoam || true)
+        [ -n "$solver" ] && grep -qx "pid $solver" .runLock 2>/dev/null && break
+        sleep 0.05
+    done
+    pids+=("$solver")
+    kill -STOP "$solver"
+    kill -"$sig" "$allrun"; wait "$allrun" 2>/dev/null || true
+    status=0; cellBlastFoam -overwrite > "log.byHand$sig" 2>&1 || status=$?
+    kill -CONT "$solver"
+    check "an Allrun's shell killed (SIG$sig) while its solver runs: a solver by hand is refused naming the orphan" \
+        "[ $status -ne 0 ] && grep -q 'is in use by cellBlastFoam (process $solver on host' log.byHand$sig"
+    check "the Allrun's solver said it took the lock over" \
+        "grep -q 'Running under the run lock .* taken over by this process' log.allrunSolver"
+    for _ in $(seq 600); do [ -e /proc/$solver ] || break; sleep 0.1; done
+    check "the orphan runs to its end and the lock goes with it (SIG$sig)" \
+        "grep -q '^End' log.allrunSolver && [ ! -e .runLock ]"
+done
+rm AllrunSolver
 exit $fail

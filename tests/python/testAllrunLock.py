@@ -106,6 +106,89 @@ class AllrunLock(TempDirTestCase):
             allrunLock.take(self.tmp, os.getpid())
 
 
+class AllrunKilledAlone(TempDirTestCase):
+    """adv36 v69 (v36, v38): the Allrun's shell killed alone while its
+    solver runs - SIGTERM (as `kill PID`: its exit trap removed the lock)
+    or SIGKILL (the lock named a dead process, stale) - left the solver
+    running with no live lock, and a solver started by hand beside it was
+    accepted (force.dat got rows of both). A run started under an Allrun's
+    lock takes it over (here a tool through caseLock.held, as the solvers
+    through caseLock.H), so the lock names the live orphan: a second run
+    is refused naming it, and the lock goes with the orphan's end."""
+
+    TOOL = ("import time\n"
+            "from neuronFsi import caseLock\n"
+            "with caseLock.held('.', 'planeWave'):\n"
+            "    open('toolStarted', 'w').close()\n"
+            "    time.sleep(4)\n")
+
+    def allrunKilled(self, sig):
+        path = self.write("case/Allrun", ALLRUN.replace(
+            "BODY", "/usr/bin/python3 -c \"%s\"\n" % self.TOOL))
+        os.chmod(path, 0o755)
+        case = os.path.dirname(path)
+        allrun = subprocess.Popen([path], env=env(), start_new_session=True)
+        self.addCleanup(lambda: subprocess.run(
+            ["pkill", "-KILL", "-s", str(allrun.pid)]))
+        for _ in range(100):
+            if os.path.exists(os.path.join(case, "toolStarted")):
+                break
+            time.sleep(0.1)
+        tool = int(subprocess.run(["pgrep", "-s", str(allrun.pid),
+                                   "planeWave"], capture_output=True,
+                                  text=True).stdout.split()[0])
+        os.kill(allrun.pid, sig)
+        allrun.wait()
+        time.sleep(0.3)
+        # the orphan runs on, named by the lock
+        self.assertTrue(os.path.exists("/proc/%d" % tool))
+        lock = allrunLock.read(os.path.join(case, ".runLock"))
+        self.assertEqual(lock["pid"], tool)
+        # a run started by hand (a solver: caseLock.H) is refused
+        r = subprocess.run(["setRiemannProblem"], cwd=case, env=env(),
+                           capture_output=True, text=True)
+        self.assertNotEqual(r.returncode, 0)
+        self.assertIn("is in use by planeWave (process %d" % tool,
+                      r.stdout + r.stderr)
+        # ... and so is another Allrun
+        r = subprocess.run([path], env=env(), capture_output=True,
+                           text=True)
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertIn("is in use by planeWave (process %d" % tool, r.stderr)
+        # the orphan's end: its Allrun is gone, so is the lock
+        for _ in range(100):
+            if not os.path.exists("/proc/%d" % tool):
+                break
+            time.sleep(0.1)
+        time.sleep(0.2)
+        self.assertFalse(os.path.exists(os.path.join(case, ".runLock")))
+
+    def testSigterm(self):
+        import signal
+        self.allrunKilled(signal.SIGTERM)
+
+    def testSigkill(self):
+        import signal
+        self.allrunKilled(signal.SIGKILL)
+
+    def testGivenBackToALiveAllrun(self):
+        """at the tool's end the lock is the Allrun's again: a second
+        Allrun is refused naming the first, which removes it at its end"""
+        script = self.write("case/Allrun", ALLRUN.replace(
+            "BODY", "/usr/bin/python3 -c \"%s\"\nhead -1 .runLock > "
+            "lockAfterTool\necho \"pid $$\" > allrunPid\n"
+            % self.TOOL.replace("time.sleep(4)", "time.sleep(0)")))
+        os.chmod(script, 0o755)
+        case = os.path.dirname(script)
+        r = subprocess.run([script], env=env(), capture_output=True,
+                           text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        with open(os.path.join(case, "lockAfterTool")) as f, \
+                open(os.path.join(case, "allrunPid")) as g:
+            self.assertEqual(f.read(), g.read())
+        self.assertFalse(os.path.exists(os.path.join(case, ".runLock")))
+
+
 class AllcleanLock(TempDirTestCase):
     """adv36 v72: a tutorial's Allclean (here the preview's, copied) removed
     the 0/, mesh and logs of a case whose run went on; it now takes the

@@ -203,6 +203,29 @@ class UnderItsAllrun(LiveLockTestCase):
              self.case], capture_output=True, text=True)
         self.assertEqual(r.returncode, 0, r.stderr)
 
+    def testKilledToolInsideALiveAllrun(self):
+        """a lock naming a process that is over, taken over from a run
+        that goes on (a solver killed inside its Allrun), is that run's,
+        not stale (adv36 v69)"""
+        p = self.holdLock()
+        with open(self.case + "/.runLock") as f:
+            allrun = f.read()
+        dead = subprocess.Popen(["true"])
+        dead.wait()
+        with open(self.case + "/.runLock", "w") as f:
+            f.write("pid %d\nhost %s\nexecutable planeWave\nstarted now\n"
+                    "case %s\n" % (dead.pid, socket.gethostname(),
+                                    os.path.realpath(self.case))
+                    + "".join("under %s\n" % line
+                              for line in allrun.splitlines()))
+        with self.assertRaisesRegex(caseLock.CaseLockError,
+                                    r"in use by sleep \(process %d" % p.pid):
+            caseLock.checkFree(self.case, "planeWave")
+        with self.assertRaisesRegex(caseLock.CaseLockError,
+                                    r"in use by sleep \(process %d" % p.pid):
+            with caseLock.held(self.case, "sweepCase"):
+                pass
+
     def testOthersLockRefused(self):
         p = self.holdLock()
         with self.assertRaisesRegex(caseLock.CaseLockError,

@@ -77,6 +77,30 @@ class CaseRuns(TempDirTestCase):
         caseRuns.runIn(folder, "touch started", "log.again")
         self.assertTrue(os.path.exists(os.path.join(folder, "started")))
 
+    def testRunOfALiveApplicationIsNamedAsGoingOn(self):
+        # adv37 w63: the run of an application still running was called
+        # left by a killed one, with the advice to end its process group
+        folder = os.path.join(self.tmp, "point")
+        os.makedirs(folder)
+        app = subprocess.Popen([sys.executable, "-c", APP, folder])
+        waitFor(os.path.join(folder, caseRuns.MARKER))
+        time.sleep(0.3)                 # the shell has started its sleep
+        with open(os.path.join(folder, caseRuns.MARKER)) as f:
+            pgid = int(f.read().split()[1])
+        try:
+            with self.assertRaises(caseRuns.RunError) as c:
+                caseRuns.checkNoEarlierRun(folder)
+            msg = str(c.exception)
+            self.assertIn("is going on", msg)
+            self.assertIn("(pid %d), is running" % app.pid, msg)
+            self.assertNotIn("kill", msg)
+            self.assertNotIn("was killed", msg)
+            self.assertIsNone(app.poll())       # nothing ended
+        finally:
+            app.kill()
+            app.wait()
+            os.killpg(pgid, signal.SIGKILL)
+
     def testGroupWorkingElsewhereIsNotTheRun(self):
         # a reused group id: live processes, but none in the folder
         self.write(caseRuns.MARKER, "pgid %d\nhost %s\ncommand ./Allrun\n"

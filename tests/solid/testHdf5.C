@@ -11,6 +11,9 @@
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <cerrno>
+#include "AtomicFile.H"
 #include "Hdf5File.H"
 #include "SolidError.H"
 
@@ -353,4 +356,18 @@ TEST(Hdf5DeathTest, FailedCloseIsAnErrorAndExitDoesNotCrash)
         ::testing::ExitedWithCode(3),
         "error: HDF5 file 'full.h5': cannot (write|close)"
     );
+}
+
+
+// A failed write says when the file system is full (adv37 w29, w39: "cannot
+// copy ...: Input/output error", "cannot close" on a full disk, no reason):
+// a write needing more than the free space is named as such, with
+// strerror(ENOSPC); one that fits, in a writable directory, gets no note
+TEST(Hdf5, FullFileSystemIsNamed)
+{
+    const std::string note = spaceNote("./x.h5", 1ull << 62);
+    EXPECT_NE(note.find("bytes free, the write needs"), std::string::npos)
+        << note;
+    EXPECT_NE(note.find(std::strerror(ENOSPC)), std::string::npos) << note;
+    EXPECT_EQ(spaceNote("./x.h5", 0), "");
 }

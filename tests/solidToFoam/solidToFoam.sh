@@ -68,4 +68,17 @@ if (cd "$c" && solidToFoam ../box.h5 > log.solidToFoam3 2>&1); then
 fi
 grep -q "the time directories 7e-05 of .* hold a folder 'solid'" "$c/log.solidToFoam3" \
     && [ -f "$c/7e-05/solid/D" ] || { echo "not refused as it should"; tail -5 "$c/log.solidToFoam3"; exit 1; }
+# ... and a marked folder holding a file solidToFoam did not write (a
+# user's notes: adv36 v32, removed with the folder, exit 0) stops it,
+# naming the file, with nothing removed
+rm -rf "$c/7e-05"
+mkdir -p "$c/6e-05/solid"; cp "$c/1/solid/.solidToFoam" "$c/1/solid/D" "$c/6e-05/solid/"
+echo "my notes" > "$c/6e-05/solid/notes.txt"
+if (cd "$c" && solidToFoam ../box.h5 > log.solidToFoam4 2>&1); then
+    echo "a marked region folder holding a user's file: removed"; exit 1
+fi
+grep -q "holds files solidToFoam did not write" "$c/log.solidToFoam4" \
+    && grep -q "6e-05/solid/notes.txt" "$c/log.solidToFoam4" \
+    && [ -f "$c/6e-05/solid/notes.txt" ] && [ -f "$c/6e-05/solid/D" ] \
+    || { echo "not refused as it should"; tail -5 "$c/log.solidToFoam4"; exit 1; }
 echo "solidToFoam: passed"

@@ -47,6 +47,9 @@ echo "restartKilledWrites: uninterrupted run: ${#times[@]} writes, last $last s,
 setup b
 cut=${times[2]}
 for t in "${times[@]:0:3}"; do cp -r "$work/a/$t" "$work/b/"; done
+# the logs the restart continues (their bytes up to each commit are
+# recorded in its marker and checked at a restart)
+cp -r "$work/a/postProcessing" "$work/b/"
 head -c 2000 "$work/a/$cut/p" > "$work/b/$cut/p"
 mv "$work/b/$cut/.writeCommitted" "$work/b/$cut/.writeInProgress"
 ( cd "$work/b" && rhoRiemannFoam > log.1 )
@@ -107,6 +110,7 @@ for proc in 0 1
 do
     for t in "${ptimes[@]:0:3}"; do cp -r "$work/pa/processor$proc/$t" "$work/pd/processor$proc/"; done
 done
+[ ! -d "$work/pa/postProcessing" ] || cp -r "$work/pa/postProcessing" "$work/pd/"
 head -c 1500 "$work/pa/processor1/$pcut/p" > "$work/pd/processor1/$pcut/p"
 mv "$work/pd/processor1/$pcut/.writeCommitted" "$work/pd/processor1/$pcut/.writeInProgress"
 ( cd "$work/pd" && mpirun -np 2 rhoRiemannFoam -parallel > log.1 2>&1 ) \

@@ -136,13 +136,19 @@ int main(int argc, char *argv[])
     // A new start stops here, before the coupling writes, if it would
     // replace the results of an earlier run; a restart if its inputs are
     // not those its results were computed with
+    // A start from a time of the earlier run continues its solid.h5 (the
+    // step uniform/solidState names): -overwrite, which would move it
+    // aside, is refused (adv36 v70)
     foamTools::resultGuard::check
     (
         args, runTime,
         {
             runTime.globalPath()/"solid"/"solid.h5",
             runTime.globalPath()/"solid"/"solid.xmf"
-        }
+        },
+        isFile(runTime.timePath()/"uniform"/"solidState")
+      ? fileNameList(1, runTime.globalPath()/"solid"/"solid.h5")
+      : fileNameList()
     );
     const foamTools::inputRecord inputs(runTime, mesh);
     inputs.checkRestart();

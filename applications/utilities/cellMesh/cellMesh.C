@@ -21,6 +21,9 @@ Usage
 
 \*---------------------------------------------------------------------------*/
 
+#include <cerrno>
+#include <cstring>
+#include <unistd.h>
 #include "argList.H"
 #include "inputChecks.H"
 #include "cellGeometry.H"
@@ -76,6 +79,17 @@ int main(int argc, char *argv[])
             << " directory: cellMesh writes constant/cell.msh (and"
             << " constant/fluid.msh) into the directory constant of the"
             << " case. Move it aside. Nothing was meshed or written"
+            << exit(FatalError);
+    }
+    // ... and one it cannot write into (a read-only file system, adv37
+    // w57: meshed, then gmsh's "Unable to open file" without the reason)
+    if (isDir(constantDir) && ::access(constantDir.c_str(), W_OK) != 0)
+    {
+        const std::string reason(std::strerror(errno));
+        FatalErrorInFunction
+            << constantDir << " cannot be written into (" << reason.c_str()
+            << "): cellMesh writes constant/cell.msh (and constant/"
+            << "fluid.msh) there. Nothing was meshed or written"
             << exit(FatalError);
     }
     const cellGeometry geom(dictFile);

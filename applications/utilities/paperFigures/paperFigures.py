@@ -41,6 +41,7 @@ Usage
 import argparse
 import json
 import os
+import re
 import shutil
 import sys
 import tempfile
@@ -57,7 +58,8 @@ except ImportError:
     sys.exit("paperFigures.py: error: the project's Python package neuronFsi "
              "is not found: source the project's etc/bashrc first")
 script.guard()  # an input's error: one line, exit 1 (adv33)
-from neuronFsi import (blastPlots as bp, foamField, indentationPlots as ip,
+from neuronFsi import (blastPlots as bp, foamDict, foamField,
+                       indentationPlots as ip,
                        msh, options, paper, paperCases, planeWave,
                        postProcessing, signals)
 from neuronFsi.solidResults import SolidResults
@@ -946,6 +948,54 @@ def listing(md):
            "table3_validation.png |", ""]
 
 
+def _um(x):
+    return "%g" % float("%.6g" % (x*1e6))
+
+
+def meshSizes(case):
+    """The mesh sizes the run was made with, as its own files record them:
+    the solid's (system/cellMeshDict: nucleusSize, cytoplasmSize,
+    membraneSize) and the water's (the wedge: the sizes fluidWedgeMesh.py
+    writes into the header of system/blockMeshDict; the 3D quarter:
+    cellMeshDict's fluid nearSize, farSize, hexCoeffs axialSize and
+    lateralSize). A text in um for README.md, "-" where not recorded."""
+    try:
+        d = foamDict.read(os.path.join(case, "system", "cellMeshDict"))
+    except (foamDict.DictError, OSError):
+        d = {}
+    parts = []
+    water = None
+    try:
+        with open(os.path.join(case, "system", "blockMeshDict")) as f:
+            head = f.read(4000)
+    except OSError:
+        head = ""
+    num = r"([-+0-9.eE]+)"
+    m = re.search(r"sizes %s/%s um,\s*(?://)?\s*axial size %s um"
+                  % (num, num, num), head)
+    fluid = d.get("fluid") if isinstance(d.get("fluid"), dict) else {}
+    hexc = fluid.get("hexCoeffs") if isinstance(fluid.get("hexCoeffs"),
+                                                dict) else {}
+    if m:
+        water = ("water %s at the cell, %s across the column, %s along z"
+                 % m.groups())
+    elif all(isinstance(x, float) for x in (
+            fluid.get("nearSize"), fluid.get("farSize"),
+            hexc.get("axialSize"), hexc.get("lateralSize"))):
+        water = ("water %s at the cell, %s in the inner box, %s at the "
+                 "side walls, %s along z" % (
+                     _um(fluid["nearSize"]), _um(hexc["lateralSize"]),
+                     _um(fluid["farSize"]), _um(hexc["axialSize"])))
+    if water:
+        parts.append(water)
+    solid = [d.get(k) for k in ("nucleusSize", "cytoplasmSize",
+                                "membraneSize")]
+    if all(isinstance(x, float) for x in solid):
+        parts.append("cell %s / %s (membrane %s)" % tuple(
+            _um(x) for x in solid))
+    return "; ".join(parts) if parts else "-"
+
+
 def setup(cases, md):
     rows = []
     for key in ("blast5ns", "quarter3D"):
@@ -967,20 +1017,22 @@ def setup(cases, md):
                    % (pts[:, 0].max()*1e6, np.ptp(pts[:, 1])*1e6))
         else:
             ext = "x %.1f, y %.1f, z %.1f um" % tuple(np.ptp(pts, axis=0)*1e6)
-        rows.append((key, ext, Z, pulse))
+        rows.append((key, ext, Z, pulse, meshSizes(case)))
     md += ["## Fig. 3: the blast setup", "",
            "A picture in the paper (the cell at the bottom of a 100 um cube "
            "of water, 50 MPa for 5 ns on the top face, sec. 2.2.2). "
            "Compared: the extent of our water mesh, the column the top "
            "boundary carries (planeWaveInflow: the 1D answer of the full "
-           "column enters there) and the applied pulse.", "",
+           "column enters there) and the applied pulse; the mesh sizes "
+           "the run was made with (its system/cellMeshDict and, in the "
+           "wedge, the header of system/blockMeshDict).", "",
            "| run | water mesh extent | column height carried "
            "[um] | pulse amplitude [MPa], duration at half amplitude [ns]"
-           " |", "|---|---|---|---|"]
-    for key, ext, Z, pulse in rows:
-        md.append("| %s | %s | %s | %.1f, %.2f |" % (
+           " | mesh sizes [um] |", "|---|---|---|---|---|"]
+    for key, ext, Z, pulse, sizes in rows:
+        md.append("| %s | %s | %s | %.1f, %.2f | %s |" % (
             key, ext, "%.0f" % (Z*1e6) if Z else "-", pulse[0]/1e6,
-            pulse[1]*1e9))
+            pulse[1]*1e9, sizes))
     md += ["", "Paper: 100 um cube, 50 MPa, 5 ns. The wedge is a column "
            "of radius 50 um (the cube's half-width) with slip sides; the "
            "quarter has symmetry planes (docs/results/blast.md, "

@@ -250,6 +250,9 @@ def compare(case, a, p, skip, kinds):
     else:
         wave = planeWave.column(case, heights, a.Z, end, dz=a.dz,
                                 maxCells=a.maxCells, maxSteps=a.maxSteps)
+        # the column's inputs are those the run was computed with (adv37
+        # w50), before anything is written
+        planeWave.checkRunInputs(case, wave)
         planeWave.writeReference(
             os.path.join(out, "reference.dat"), wave,
             "1D plane wave of %s: column %g m, cells %g m, pulse %g Pa for "

@@ -33,6 +33,7 @@ Usage
 #include "SolidError.H"
 #include "inputChecks.H"
 
+#include <dirent.h>
 #include <memory>
 #include <unistd.h>
 #include "caseLock.H"
@@ -178,6 +179,22 @@ int main(int argc, char *argv[])
     // of a build before the marker) stops the conversion, named, before
     // anything is written (issue 19, adv35 t45)
     const word marker(".solidToFoam");
+    // What a conversion writes into <time>/<region>/: its marker and these
+    // fields (compressed: with .gz; dimensionSet assignment checks
+    // equality: no List<dimensionSet>)
+    const std::pair<word, const dimensionSet*> scalarFields[] =
+    {
+        {"pressure", &dimPressure},
+        {"vonMises", &dimPressure},
+        {"J", &dimless},
+        {"temperatureRise", &dimTemperature},
+        {"region", &dimless}
+    };
+    wordHashSet own({marker, word("D"), word("Ud"), word("sigma")});
+    for (const auto& field : scalarFields)
+    {
+        own.insert(field.first);
+    }
     DynamicList<fileName> stale;
     {
         wordHashSet current;
@@ -195,6 +212,55 @@ int main(int argc, char *argv[])
                 continue;
             }
             (isFile(r/marker, false, false) ? stale : foreign).append(d);
+        }
+        // A marked folder that holds more than the conversion wrote (a
+        // user's file put there): removing the folder would remove it
+        // too (adv36 v32: removed without a word, exit 0)
+        DynamicList<fileName> foreignFiles;
+        for (const fileName& d : stale)
+        {
+            DIR* dp = ::opendir((runTime.path()/d/region).c_str());
+            for (const dirent* de; dp && (de = ::readdir(dp)) != nullptr;)
+            {
+                const std::string n(de->d_name);
+                const bool gz =
+                    n.size() > 3 && n.compare(n.size() - 3, 3, ".gz") == 0;
+                if
+                (
+                    n != "." && n != ".."
+                 && !own.found(gz ? n.substr(0, n.size() - 3) : n)
+                )
+                {
+                    foreignFiles.append(runTime.path()/d/region/n);
+                }
+            }
+            if (dp)
+            {
+                ::closedir(dp);
+            }
+        }
+        if (foreignFiles.size())
+        {
+            FatalErrorInFunction
+                << "the time directories";
+            for (const fileName& d : stale)
+            {
+                FatalError << " " << d.c_str();
+            }
+            FatalError
+                << " of " << runTime.path().c_str() << " hold a folder '"
+                << region << "' of an earlier conversion that "
+                << h5Name.c_str() << " has no step for (removed by a"
+                << " conversion of this file), but it holds files"
+                << " solidToFoam did not write:";
+            for (const fileName& f : foreignFiles)
+            {
+                FatalError << nl << "    " << f.c_str();
+            }
+            FatalError
+                << nl << "    Kept, and nothing written. Move those files"
+                << " out of the folder (or remove them), or convert into"
+                << " another -region" << exit(FatalError);
         }
         if (foreign.size())
         {
@@ -425,15 +491,7 @@ int main(int argc, char *argv[])
             }
             sigma.write();
         }
-        // (dimensionSet assignment checks equality: no List<dimensionSet>)
-        const std::pair<word, const dimensionSet*> scalarFields[] =
-        {
-            {"pressure", &dimPressure},
-            {"vonMises", &dimPressure},
-            {"J", &dimless},
-            {"temperatureRise", &dimTemperature},
-            {"region", &dimless}
-        };
+        // (scalarFields: above, with what a conversion writes)
         for (const auto& field : scalarFields)
         {
             label r, c;

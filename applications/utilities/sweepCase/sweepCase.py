@@ -8,7 +8,11 @@ Description
     outputs: a parameter sensitivity or a study such as the paper's
     pulse-duration study. Each value runs in a copy of the case placed next
     to it (so that the relative paths of its Allrun still hold), removed
-    afterwards unless -keep. The table goes to the terminal and to
+    afterwards unless -keep. Every copy is taken from one copy of the case
+    made at the sweep's start (<case>.sweep_<name>_base, removed at the
+    end): an edit of the case during the sweep reaches no run, and is
+    named in a note at the end (adv37 w112: it reached the later runs
+    only, the table's rows from two different cases). The table goes to the terminal and to
     <case>/postProcessing/sweep/<name>.{md,csv}. A report of that name
     that exists already (an earlier sweep's) is kept: the sweep stops
     before running anything (move it away, or choose another -name), as
@@ -48,6 +52,7 @@ Usage
 
 import argparse
 import math
+import filecmp
 import os
 import re
 import shutil
@@ -241,13 +246,44 @@ def _stamp(path):
     return st.st_mtime_ns, st.st_size
 
 
-def run_one(case, copy, f, keys, value, outputs, command):
-    # copy does not exist (checked in main): copytree never replaces
-    # without the case's run lock, which the sweep holds (a copy of it
-    # would be a lock of another case there)
+def _copyCase(case, copy):
+    """copytree of the case without its run lock (which the sweep holds: a
+    copy of it would be a lock of another case there); copy does not
+    exist (checked in main), copytree never replaces"""
     shutil.copytree(case, copy, symlinks=True,
                     ignore=lambda d, names: [caseLock.FILE]
                     if os.path.samefile(d, case) else [])
+
+
+def _changedSince(case, base):
+    """The files of case (its run lock, logs and postProcessing/sweep aside)
+    that differ from, or are not in, its copy base, and those of base no
+    longer in case: relative paths, sorted"""
+    def files(top):
+        found = set()
+        for d, dirs, names in os.walk(top):
+            rel = os.path.relpath(d, top)
+            if rel == os.path.join("postProcessing", "sweep"):
+                dirs[:] = []
+                continue
+            for n in names:
+                r = os.path.normpath(os.path.join(rel, n))
+                if r != caseLock.FILE and not n.startswith("log."):
+                    found.add(r)
+        return found
+    now, was = files(case), files(base)
+    changed = sorted((now ^ was) | {
+        r for r in now & was
+        if not filecmp.cmp(os.path.join(case, r), os.path.join(base, r),
+                           shallow=False)})
+    return changed
+
+
+def run_one(case, copy, f, keys, value, outputs, command):
+    # case: the sweep's copy of the case taken at its start (adv37 w112:
+    # each value copied the case when its run started, and an edit made
+    # during the sweep went into the later runs only)
+    _copyCase(case, copy)
     p = os.path.join(copy, f)
     text = foamDict.set_entry(open(p).read(), keys, value, p)
     open(p, "w").write(text)
@@ -290,6 +326,7 @@ def main():
     ap.add_argument("-keep", action="store_true")
     a = options.parse(ap)
     lock = None
+    base, made_base = None, False
     try:
         if a.nProcs < 1:
             raise SweepError("-nProcs %d is outside the valid range [1, inf)"
@@ -351,12 +388,22 @@ def main():
                     "the report %s exists (an earlier sweep's): the sweep "
                     "would replace it. Nothing was run: move it away, or "
                     "choose another -name" % r)
+        # The case as it is now, for every value's copy (adv37 w112: the
+        # later runs took an edit made during the first)
+        base = "%s.sweep_%s_base" % (case, name)
+        if os.path.lexists(base):
+            raise SweepError(
+                "the folder %s exists (an earlier sweep's copy of the case, "
+                "or the user's files): the sweep would replace it. Nothing "
+                "was run: move it away, or choose another -name" % base)
+        made_base = True
+        _copyCase(case, base)
         print("sweepCase: %s = %s, %d runs of '%s' (%d at a time)"
               % ("/".join([f] + keys), " ".join(values), len(values),
                  command, a.nProcs), flush=True)
 
         def job(i):
-            res = run_one(case, copies[i], f, keys, values[i], outputs,
+            res = run_one(base, copies[i], f, keys, values[i], outputs,
                           command)
             print("    %s = %s: %s (wall %.1f s)" % (name, values[i], ", ".join(
                 "%s %s" % (o.name, v) for o, v in zip(outputs, res[0])),
@@ -364,6 +411,13 @@ def main():
             return res
 
         results = caseRuns.inParallel(a.nProcs, job, range(len(values)))
+        changed = _changedSince(case, base)
+        if changed:
+            print("sweepCase: note: the case changed during the sweep (%s):"
+                  " every value ran with the case as it was at the sweep's "
+                  "start" % ", ".join(changed[:10]
+                                      + (["..."] if len(changed) > 10
+                                         else [])), flush=True)
         if not a.keep:
             for c in copies:
                 shutil.rmtree(c, ignore_errors=True)
@@ -385,6 +439,8 @@ def main():
         print("sweepCase: error: %s" % err, file=sys.stderr)
         return 1
     finally:
+        if base and os.path.isdir(base) and made_base:
+            shutil.rmtree(base, ignore_errors=True)
         if lock is not None:
             lock.__exit__(None, None, None)
 

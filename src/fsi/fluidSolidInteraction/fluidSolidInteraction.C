@@ -464,6 +464,22 @@ Foam::fluidSolidInteraction::fluidSolidInteraction
     const dictionary& interfaceDict =
         foamTools::subDict(fsiProperties_, "interface");
 
+    // The coupling's and the mesh motion's entries checked before any
+    // output is created or cut (adv37 w98: maxIter 0 refused after
+    // solid.h5, solid.xmf and the logs were written, the corrected run
+    // then refused as one over results)
+    coupling_ =
+        couplingScheme::New(foamTools::subDict(fsiProperties_, "coupling"));
+    if (interfaceDict.found("motionDistance"))
+    {
+        scalar motionDistance = 0;
+        label motionNearest = 0;
+        interfaceMotion::checkEntries
+        (
+            interfaceDict, motionDistance, motionNearest
+        );
+    }
+
     if (runTime.value() > 0)
     {
         truncateSolidResults(runTime);
@@ -545,9 +561,6 @@ Foam::fluidSolidInteraction::fluidSolidInteraction
             << " step up to " << solidSubcycles_ << " solid steps ("
             << solidSubcycles_*solid_->timeStep() << " s now)" << endl;
     }
-
-    coupling_ =
-        couplingScheme::New(foamTools::subDict(fsiProperties_, "coupling"));
 
     createMotion(interfaceDict);
 

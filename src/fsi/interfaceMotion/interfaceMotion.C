@@ -77,6 +77,26 @@ Foam::tensorField Foam::interfaceMotion::slipProjectors() const
 }
 
 
+void Foam::interfaceMotion::checkEntries
+(
+    const dictionary& interfaceDict,
+    scalar& motionDistance,
+    label& motionNearest
+)
+{
+    motionDistance = foamTools::readInRange<scalar>
+    (
+        interfaceDict, "motionDistance", "m", 0,
+        foamTools::noUpperBound<scalar>(), false
+    );
+    motionNearest = foamTools::readInRangeOrDefault<label>
+    (
+        interfaceDict, "motionNearest", "", 1,
+        foamTools::noUpperBound<label>(), true, 8
+    );
+}
+
+
 Foam::interfaceMotion::interfaceMotion
 (
     const fvMesh& mesh,
@@ -113,16 +133,9 @@ Foam::interfaceMotion::interfaceMotion
       : vector(Zero)
     )
 {
-    const scalar L = foamTools::readInRange<scalar>
-    (
-        interfaceDict, "motionDistance", "m", 0,
-        foamTools::noUpperBound<scalar>(), false
-    );
-    const label n = foamTools::readInRangeOrDefault<label>
-    (
-        interfaceDict, "motionNearest", "", 1,
-        foamTools::noUpperBound<label>(), true, 8
-    );
+    scalar L = 0;
+    label n = 0;
+    checkEntries(interfaceDict, L, n);
     const bool axi = mag(axisDirection_) > 0;
 
     // Interface points (whole patch) in the interpolation space: (r, z, 0)

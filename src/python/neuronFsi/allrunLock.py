@@ -15,9 +15,15 @@ touches anything; a stale lock (caseLock.H's rule: its process is gone,
 runs another executable or works on another case) is replaced with a line
 saying so; what is not a lock (a directory, a FIFO, an empty or damaged
 file) and a lock of another host are never taken over. The solvers,
-utilities and tools the Allrun starts run under its lock: a lock held by
-an ancestor of the process is its own run's (caseLock.H: underAncestor).
-release removes the lock if it is PID's (the Allrun's exit trap)."""
+utilities and tools the Allrun starts take its lock over until their end
+(a lock held by an ancestor of the process is its own run's; caseLock.H:
+underAncestor, takeOver), as does an Allrun started by an Allrun of the
+same case (exit 0, its exit trap gives the lock back). release gives the
+lock back if it is PID's, or names a process of PID's run that is over
+(caseLock.H's giveBack: the lock taken over if that run still goes on,
+else none): the Allrun's exit trap. An Allrun's shell killed while its
+solver runs leaves the lock naming the solver (adv36 v69: its exit trap
+removed the lock and a second solver ran beside the orphaned one)."""
 
 import os
 import socket
@@ -27,8 +33,8 @@ import time
 # one lock, one implementation: the file, its reader and the stale and
 # ancestor rules are neuronFsi.caseLock's (the Python tools' side of
 # caseLock.H)
-from .caseLock import FILE, _notAFile, _running as comm, isAncestor, read, \
-    stale
+from .caseLock import FILE, _notAFile, _running as comm, giveBack, \
+    holding, isAncestor, lockText, read, stale, takeOver
 
 
 class LockError(Exception):
@@ -52,10 +58,7 @@ def take(case, pid):
                                                              err.strerror))
         else:
             with os.fdopen(fd, "w") as f:
-                f.write("pid %d\nhost %s\nexecutable %s\nstarted %s\n"
-                        "case %s\n" % (pid, socket.gethostname(),
-                                       comm(pid) or "Allrun",
-                                       time.strftime("%Y-%m-%dT%H:%M:%S"), real))
+                f.write(lockText(pid, comm(pid) or "Allrun", real))
             return True
         h = read(path)
         if h["readable"] and h["pid"] <= 0:
@@ -71,9 +74,16 @@ def take(case, pid):
                                         if not h["readable"] else
                                         "empty or damaged (it names no "
                                         "process)")))
+        h = holding(h)
         if h["host"] == socket.gethostname() and isAncestor(h["pid"], pid) \
                 and comm(h["pid"]):
-            return False            # this run's own lock
+            if h["pid"] == pid:
+                return False        # this run's own lock
+            # an Allrun of the same case started by this run: it takes the
+            # lock over until its end (its exit trap gives it back)
+            if takeOver(path, pid, comm(pid) or "Allrun", real, h["pid"]):
+                return True
+            continue
         if attempt > 0 or not stale(h, real):
             raise LockError(
                 "The case %s is in use by %s (process %d on host %s, started "
@@ -90,17 +100,14 @@ def take(case, pid):
             os.unlink(path)
         except FileNotFoundError:
             pass
-    return False
+    raise LockError("Cannot take the run lock %s: it changed twice while "
+                    "this run looked at it (other runs starting or "
+                    "ending). Start again." % path)
 
 
 def release(case, pid):
-    """Remove case's lock if it is pid's."""
-    path = os.path.join(os.path.realpath(case), FILE)
-    if not _notAFile(path) and read(path)["pid"] == pid:
-        try:
-            os.unlink(path)
-        except FileNotFoundError:
-            pass
+    """Give case's lock back at the end of pid's run (caseLock.giveBack)."""
+    giveBack(os.path.join(os.path.realpath(case), FILE), pid)
 
 
 def main(argv):
@@ -113,7 +120,7 @@ def main(argv):
         release(case, pid)
         return 0
     try:
-        # exit 2: held by an ancestor (not ours to release)
+        # exit 2: held by pid already (not this call's to give back)
         return 0 if take(case, pid) else 2
     except LockError as err:
         print("%s: %s" % (comm(pid) or "Allrun", err), file=sys.stderr)

@@ -24,8 +24,14 @@ solvers holds no .runLock (issue 19, adv34 n21: planeWave reported on a
 run still going on without a word).
 
 A tool started by a run that holds the lock (an Allrun: etc/RunFunctions
-allrunLock, neuronFsi.allrunLock) runs under it, as the solvers do
-(caseLock.H's underAncestor).
+allrunLock, neuronFsi.allrunLock) takes it over, as the solvers do
+(caseLock.H's underAncestor and takeOver): the lock names the tool, the
+Allrun's lock kept below it as its lines each after "under ", and at the
+tool's end it is given back (giveBack: the lines below, if that run still
+goes on, else no lock). A lock whose process is over but whose taken-over
+run goes on is that run's (holding). So a run's lock always names a live
+process of it: an Allrun's shell killed alone leaves its solver or tool
+named by the lock (issue 19, adv36 v69).
 
 OpenFOAM's own utilities (blockMesh, decomposePar, foamListTimes, ...)
 cannot take this lock: docs/reliability.md says so."""
@@ -64,20 +70,13 @@ def _notAFile(path):
     return ""
 
 
-def read(path):
-    """The lock file's fields as a dict (pid -1 if missing or not a
-    process id; readable False if it cannot be read)."""
+def parse(text):
+    """The fields of a lock's text as a dict (pid -1 if missing or not a
+    process id); 'under': the text of the lock it took over (its lines
+    "under <line>"), '' if none. caseLock.H's parse."""
     h = {"pid": -1, "host": "", "executable": "", "started": "", "case": "",
-         "readable": False}
-    if _notAFile(path):
-        return h
-    try:
-        with open(path, errors="replace") as f:
-            lines = f.read().split("\n")
-    except OSError:
-        return h
-    h["readable"] = True
-    for line in lines:
+         "under": "", "readable": True}
+    for line in text.split("\n"):
         key, _, value = line.strip().partition(" ")
         value = value.strip()
         if key == "pid":
@@ -87,7 +86,32 @@ def read(path):
             h[key] = value.split()[0] if value else ""
         elif key in ("started", "case"):
             h[key] = value
+        elif key == "under":
+            h["under"] += value + "\n"
     return h
+
+
+def readText(path):
+    """The text of a lock file, None if it is not a regular file or
+    cannot be read."""
+    if _notAFile(path):
+        return None
+    try:
+        with open(path, errors="replace") as f:
+            return f.read()
+    except OSError:
+        return None
+
+
+def read(path):
+    """The lock file's fields as a dict (parse; readable False if it
+    cannot be read)."""
+    text = readText(path)
+    if text is None:
+        h = parse("")
+        h["readable"] = False
+        return h
+    return parse(text)
 
 
 def _running(pid):
@@ -139,16 +163,99 @@ def ownRun(h):
             and bool(_running(h["pid"])) and isAncestor(h["pid"], os.getpid()))
 
 
-def stale(h, case):
-    """True if the run of lock h (of this host) is over: caseLock.H's
-    rule."""
+def running(h):
+    """True if the process of lock h is of this host and still runs its
+    executable (caseLock.H's running)."""
     if h["host"] != socket.gethostname():
         return False
     comm = _running(h["pid"])
-    if not comm or comm != h["executable"][:len(comm)]:
+    return bool(comm) and comm == h["executable"][:len(comm)]
+
+
+def holding(h):
+    """The run that holds lock h: its process if it runs, else the first
+    still running in the chain of locks it took over (a solver killed
+    inside its live Allrun), else h (stale). caseLock.H's holding."""
+    if h["host"] != socket.gethostname() or not h["under"] or running(h):
+        return h
+    below = holding(parse(h["under"]))
+    return below if running(below) else h
+
+
+def stale(h, case):
+    """True if the run of lock h (of this host; give it holding(read(..)))
+    is over: caseLock.H's rule."""
+    if h["host"] != socket.gethostname():
+        return False
+    if not running(h):
         return True
     its = _runningCase(h["pid"])
     return bool(its) and its != os.path.realpath(case)
+
+
+def lockText(pid, executable, case, started=None):
+    """A lock's text for process pid (caseLock.H's lockText)."""
+    return ("pid %d\nhost %s\nexecutable %s\nstarted %s\ncase %s\n"
+            % (pid, socket.gethostname(), executable,
+               started or time.strftime("%Y-%m-%dT%H:%M:%S"), case))
+
+
+def _replace(path, text, pid, what):
+    """Write text to the lock path atomically (a temporary file renamed
+    onto it); False if the rename fails."""
+    tmp = "%s.%s.%d" % (path, what, pid)
+    with open(tmp, "w") as f:
+        f.write(text)
+    try:
+        os.rename(tmp, path)
+    except OSError:
+        os.unlink(tmp)
+        return False
+    return True
+
+
+def takeOver(path, pid, executable, case, ancestor):
+    """Take over the lock path of the run ancestor that started pid: the
+    lock names pid, the one taken over kept as its "under" lines; False
+    if the lock is gone or no longer that run's (caseLock.H's takeOver)."""
+    text = readText(path)
+    if not text or parse(text)["pid"] <= 0 \
+            or holding(parse(text))["pid"] != ancestor:
+        return False
+    lock = lockText(pid, executable, case) + "".join(
+        "under %s\n" % line for line in text.split("\n") if line)
+    try:
+        return _replace(path, lock, pid, "takeOver")
+    except OSError as err:
+        raise CaseLockError("cannot write the run lock %s: %s. The case "
+                            "directory must be writable"
+                            % (path, err.strerror))
+
+
+def giveBack(path, pid):
+    """At the end of the run of process pid, its lock given back: the
+    lock it took over if that run still goes on, else none. Levels above
+    pid's whose process is over go too; a lock a live process of another
+    run holds is left (caseLock.H's giveBack)."""
+    text = readText(path)
+    if text is None:
+        return
+    h = parse(text)
+    for _ in range(1000):
+        if h["pid"] == pid:
+            break
+        if h["pid"] <= 0 or running(h) or not h["under"]:
+            return
+        h = parse(h["under"])
+    if h["pid"] != pid:
+        return
+    try:
+        if h["under"] and running(holding(parse(h["under"]))):
+            if _replace(path, h["under"], pid, "giveBack"):
+                return
+        os.unlink(path)
+    except OSError:
+        pass
 
 
 def _describe(h, path):
@@ -163,6 +270,8 @@ def inUse(case):
     path = os.path.join(case, FILE)
     if os.path.lexists(path):
         h = read(path)
+        if h["pid"] > 0:
+            h = holding(h)
         what = _notAFile(path)
         if what or not h["readable"] or h["pid"] <= 0:
             return ("its run lock %s is %s, not a lock that can be checked"
@@ -237,9 +346,7 @@ class held:
                                 "case directory must be writable"
                                 % (self.path, err.strerror))
         with os.fdopen(fd, "w") as f:
-            f.write("pid %d\nhost %s\nexecutable %s\nstarted %s\ncase %s\n"
-                    % (os.getpid(), socket.gethostname(), self.tool,
-                       time.strftime("%a %b %d %H:%M:%S %Y"), self.case))
+            f.write(lockText(os.getpid(), self.tool, self.case))
         return True
 
     def __enter__(self):
@@ -262,9 +369,19 @@ class held:
             if h["readable"] and h["pid"] <= 0:
                 time.sleep(0.5)        # a run starting: not written yet
                 h = read(self.path)
-            if ownRun(h):
-                return self            # runs under its Allrun's lock
             what = _notAFile(self.path)
+            if not what and h["readable"] and h["pid"] > 0:
+                h = holding(h)
+            if ownRun(h):
+                if h["pid"] == os.getpid():
+                    return self        # this process holds it already
+                # its Allrun's lock, taken over until this tool's end
+                if not takeOver(self.path, os.getpid(), self.tool,
+                                self.case, h["pid"]):
+                    continue
+                self.taken = True
+                atexit.register(self._release)
+                return self
             if what or not h["readable"] or h["pid"] <= 0:
                 raise CaseLockError(
                     "the run lock %s of the case %s is %s, not a lock this "
@@ -288,15 +405,14 @@ class held:
                 os.unlink(self.path)
             except FileNotFoundError:
                 pass
-        raise CaseLockError("cannot take the run lock %s" % self.path)
+        raise CaseLockError("cannot take the run lock %s: it changed twice "
+                            "while this run looked at it (other runs "
+                            "starting or ending); start again" % self.path)
 
     def _release(self):
         if self.taken:
             self.taken = False
-            try:
-                os.unlink(self.path)
-            except OSError:
-                pass
+            giveBack(self.path, os.getpid())
 
     def __exit__(self, *exc):
         self._release()

@@ -8,12 +8,15 @@ runIn runs a shell command in a folder with its output in a log there
 (signals.call: a termination signal ends it and what it started), and
 raises RunError naming the command, its exit code and the log when it
 fails. While the command runs, folder/.caseRun names its process group
-(pgid, host, command): an application killed with SIGKILL cannot end the
+(pgid, host, command, and the pid and start time of the application that
+started it): an application killed with SIGKILL cannot end the
 runs it started, and these go on in their folders; checkNoEarlierRun(
 folder) raises RunError naming such a run (processes of that group whose
 working directory is in the folder) before the folder is removed or run
 again (issue 19, adv33 x07: pulseStudy started again replaced a point's
-folder under the run its SIGKILLed predecessor had left). inParallel calls job(item) for every item, nProcs at a time (threads;
+folder under the run its SIGKILLed predecessor had left); a run whose
+starter still runs is named as going on (adv37 w63: a second pulseStudy
+beside a running one was told to kill the live run's group). inParallel calls job(item) for every item, nProcs at a time (threads;
 each job runs its own program), and returns the results in the items'
 order; the first exception of a job is raised once the others are done.
 """
@@ -41,6 +44,33 @@ def _marker(folder):
             w = f.read().split("\n")
         return int(w[0].split()[1]), w[1].split(None, 1)[1], \
             w[2].split(None, 1)[1]
+    except (OSError, ValueError, IndexError):
+        return None
+
+
+def _starter(folder):
+    """(pid, start time) of the application that started the run of
+    folder's marker (its line "starter <pid> <start time>"), None if the
+    marker has none (written before it was recorded) or there is none."""
+    try:
+        with open(os.path.join(folder, MARKER)) as f:
+            for line in f:
+                if line.startswith("starter "):
+                    w = line.split()
+                    return int(w[1]), w[2]
+    except (OSError, ValueError, IndexError):
+        pass
+    return None
+
+
+def _startTime(pid):
+    """The start time of process pid (/proc/<pid>/stat, field 22, in clock
+    ticks since boot: with the pid, it tells a process from a later one
+    given the same pid), None if there is none."""
+    try:
+        with open("/proc/%s/stat" % pid) as f:
+            stat = f.read()
+        return stat[stat.rindex(")") + 2:].split()[19]
     except (OSError, ValueError, IndexError):
         return None
 
@@ -88,6 +118,7 @@ def checkNoEarlierRun(folder):
     if m is None:
         return
     pgid, host, command = m
+    starter = _starter(folder)
     if host != socket.gethostname():
         raise RunError(
             "%s: a run ('%s') was started there on host %s and may still "
@@ -95,6 +126,17 @@ def checkNoEarlierRun(folder):
             "if it is over, remove %s" % (folder, command, host,
                                           os.path.join(folder, MARKER)))
     procs = _groupIn(pgid, folder)
+    if procs and starter is not None and _startTime(starter[0]) == starter[1]:
+        # the application that started it runs too: a live run, not one
+        # left by a killed application (adv37 w63: a second pulseStudy
+        # beside a running one was told to kill the first one's run)
+        st = procStat(starter[0])
+        raise RunError(
+            "%s: a run started there ('%s', process group %d) is going on: "
+            "the application that started it, %s (pid %d), is running. "
+            "Nothing was removed or started: wait for it to end (ending "
+            "that run would stop the other application's work)"
+            % (folder, command, pgid, st[0] if st else "?", starter[0]))
     if procs:
         raise RunError(
             "%s: a run started there earlier ('%s') still goes on: process "
@@ -120,8 +162,9 @@ def runIn(folder, command, log):
 
     def started(p):
         with open(marker, "w") as m:
-            m.write("pgid %d\nhost %s\ncommand %s\n"
-                    % (p.pid, socket.gethostname(), command))
+            m.write("pgid %d\nhost %s\ncommand %s\nstarter %d %s\n"
+                    % (p.pid, socket.gethostname(), command, os.getpid(),
+                       _startTime(os.getpid())))
 
     try:
         with open(path, "w") as f:

@@ -97,6 +97,16 @@ def _foamDictionary(path, entry, value=False):
     return out.stdout
 
 
+def _patchEntry(path, patch):
+    """boundaryField/<patch> of a field file as foamDictionary prints it,
+    under the patch's own name: a patch matched by a pattern (".*" in the
+    blast's 0/T) is printed under the pattern, and the column's field then
+    held that pattern twice, for top and bottom (refused since fix19q as a
+    keyword given twice in one scope)."""
+    text = _foamDictionary(path, "boundaryField/" + patch).lstrip("\n")
+    return patch + "\n" + text.split("\n", 1)[1]
+
+
 INFLOW = "planeWaveInflow"     # the top patch type of a shortened scene
 INFLOW_FILE = "constant/inflowWave"
 # The water states the project takes as input (a pulse, an initial state)
@@ -549,7 +559,7 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
                                ("U", "volVectorField")):
                 path = _fieldFile(case, field)
                 if not inflow:
-                    top = _foamDictionary(path, "boundaryField/top")
+                    top = _patchEntry(path, "top")
                 elif field == "p":
                     top = ("    top { type uniformFixedValue; uniformValue "
                            "table ( %s ); }" % " ".join(
@@ -563,7 +573,7 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
                         internal=_foamDictionary(path, "internalField",
                                                  True).strip(),
                         top=top,
-                        bottom=_foamDictionary(path, "boundaryField/bottom")))
+                        bottom=_patchEntry(path, "bottom")))
             for app in ("blockMesh", "rhoRiemannFoam"):
                 with open(os.path.join(work, "log." + app), "w") as out:
                     rc = signals.call([app, "-case", work], stdout=out,
@@ -586,6 +596,7 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
             wave = PlaneWave(heights, data[:, 0], data[:, 1:], dz, Z,
                              rho[:, 1:], U[:, 2::3], T[:, 1:])
             wave.thermoDigest = _recordedThermo(work)
+            wave.inputDigests = _recordedDigests(work)
             return wave
         finally:
             if not keep:
@@ -595,12 +606,9 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
 THERMO = "constant/thermophysicalProperties"
 
 
-def _recordedThermo(work):
-    """The digest of constant/thermophysicalProperties that rhoRiemannFoam
-    recorded in the last time it wrote in work (<time>/uniform/
-    inputDigests, "<sha1>  <path>" lines: foamTools::inputRecord, the one
-    digest of the project's input records; planeWaveInflow compares the
-    case's with it). None if there is none."""
+def _lastRecord(work):
+    """(time name, path) of the input record of the last time written in
+    work that has one (<time>/uniform/inputDigests), else (None, None)"""
     times = []
     for name in os.listdir(work):
         try:
@@ -610,12 +618,98 @@ def _recordedThermo(work):
     for _, name in sorted(times, reverse=True):
         path = os.path.join(work, name, "uniform", "inputDigests")
         if os.path.isfile(path):
-            with open(path) as f:
-                for line in f:
-                    digest, _, item = line.rstrip("\n").partition("  ")
-                    if item == THERMO:
-                        return digest
-    return None
+            return name, path
+    return None, None
+
+
+def _recordedDigests(work):
+    """{input: digest} of the input record of the last time written in
+    work ("<sha1>  <path>" lines: foamTools::inputRecord, the one digest
+    of the project's input records); {} if there is none"""
+    _, path = _lastRecord(work)
+    record = {}
+    if path:
+        with open(path, errors="replace") as f:
+            for line in f:
+                digest, _, item = line.rstrip("\n").partition("  ")
+                record[item] = digest
+    return record
+
+
+def _recordedThermo(work):
+    """The digest of constant/thermophysicalProperties that rhoRiemannFoam
+    recorded in the last time it wrote in work (<time>/uniform/
+    inputDigests; planeWaveInflow compares the case's with it). None if
+    there is none."""
+    return _recordedDigests(work).get(THERMO)
+
+
+#: The inputs of a case the 1D column is computed from (copied into it)
+COLUMN_INPUTS = (THERMO, "system/fvSchemes", "system/fvSolution")
+
+
+_CONDITION = re.compile(r"^(?:field |initial conditions (?:processor\d+/)?"
+                        r"[^/]+/)(p|U|T), boundaryField/(top|bottom)$")
+
+
+def _conditions(record):
+    """{(kind, field, patch): digest} of the top and bottom conditions of
+    p, U and T in an input record, its keys "field p, boundaryField/top"
+    (kind "field") and "initial conditions 0/p, boundaryField/top" (kind
+    "initial", whatever the start directory)"""
+    found = {}
+    for key, digest in record.items():
+        m = _CONDITION.match(key)
+        if m:
+            kind = "field" if key.startswith("field ") else "initial"
+            found[(kind, m.group(1), m.group(2))] = digest
+    return found
+
+
+def checkRunInputs(case, wave):
+    """Refuse (PlaneWaveError) to compare the run of case with a column
+    computed from inputs that differ from those the run recorded (the
+    last time of the case, or of its processor0, with a uniform/
+    inputDigests): the 1D answer would be that of another water, other
+    numerics or another pulse (adv37 w50: C0 changed after the run,
+    compared without a word, errors 12.6 -> 35.6 %; w111: the next run's
+    pulse set in 0/p, +70.7 %). The column's own record (rhoRiemannFoam's,
+    the same digests) is compared with the run's: the files it copies
+    (COLUMN_INPUTS) and, unless the case's top is a planeWaveInflow (the
+    column then applies the pulse of constant/inflowWave, which the
+    boundary condition checks), the top and bottom conditions of p, U and
+    T it takes from 0/. Nothing to compare with when the run has no
+    record (a run of an earlier build)."""
+    column = getattr(wave, "inputDigests", None) or {}
+    for where in (case, os.path.join(case, "processor0")):
+        if not os.path.isdir(where):
+            continue
+        time, path = _lastRecord(where)
+        if path is None:
+            continue
+        run = _recordedDigests(where)
+        changed = [f for f in COLUMN_INPUTS
+                   if f in run and f in column and run[f] != column[f]]
+        if inflowColumnHeight(case) is None:
+            now, was = _conditions(column), _conditions(run)
+            for key in sorted(k for k in now if k in was
+                              and now[k] != was[k]):
+                name = "0/%s, boundaryField/%s" % key[1:]
+                if name not in changed:
+                    changed.append(name)
+        if changed:
+            raise PlaneWaveError(
+                "%s changed since the run in %s (its inputs as recorded at "
+                "t = %s s, %s): the 1D answer would be computed with other "
+                "inputs than the run's and the comparison would be "
+                "meaningless. Restore %s as the run had %s, or run the case "
+                "again with the new %s"
+                % (", ".join(changed), case, time,
+                   os.path.relpath(path, case),
+                   "it" if len(changed) == 1 else "them",
+                   "it" if len(changed) == 1 else "them",
+                   "input" if len(changed) == 1 else "inputs"))
+        return
 
 
 def _logError(path, lines=6):

@@ -2,6 +2,7 @@
 #include <sstream>
 #include "Checkpoint.H"
 #include "SolidError.H"
+#include "fileDigest.H"
 
 #include <algorithm>
 #include <cmath>
@@ -15,11 +16,10 @@ namespace fs = std::filesystem;
 namespace
 {
 
-const std::uint64_t fnvBasis = 0xcbf29ce484222325ULL;
+const std::uint64_t fnvBasis = fileDigest::basis;
 
-//- Continue the FNV-1a 64-bit digest h over bytes [from, to) of file;
-//  firstZero: the offset of the first zero byte read (unchanged if none).
-//  False if the file cannot be read that far
+//- Continue the FNV-1a 64-bit digest h over bytes [from, to) of file
+//  (the project's one file digest, src/foamTools/fileDigest.H)
 bool digestBytes
 (
     const std::string& file,
@@ -29,40 +29,12 @@ bool digestBytes
     std::uintmax_t& firstZero
 )
 {
-    std::ifstream is(file, std::ios::binary);
-    if (!is || !is.seekg(std::streamoff(from)))
-    {
-        return from == to;
-    }
-    std::vector<char> buf(1 << 16);
-    std::uintmax_t at = from;
-    while (at < to)
-    {
-        const std::streamsize n =
-            std::streamsize(std::min<std::uintmax_t>(buf.size(), to - at));
-        if (!is.read(buf.data(), n))
-        {
-            return false;
-        }
-        for (std::streamsize k = 0; k < n; ++k)
-        {
-            const unsigned char b = static_cast<unsigned char>(buf[k]);
-            if (b == 0 && firstZero == std::uintmax_t(-1))
-            {
-                firstZero = at + std::uintmax_t(k);
-            }
-            h = (h ^ b)*0x100000001b3ULL;
-        }
-        at += std::uintmax_t(n);
-    }
-    return true;
+    return fileDigest::bytes(file, from, to, h, firstZero);
 }
 
 std::string hex(std::uint64_t h)
 {
-    std::ostringstream os;
-    os << std::hex << h;
-    return os.str();
+    return fileDigest::hex(h);
 }
 
 } // namespace

@@ -15,6 +15,34 @@ std::string solid::temporaryName(const std::string& file)
 }
 
 
+std::string solid::spaceNote
+(
+    const std::string& file,
+    const unsigned long long needed
+)
+{
+    std::filesystem::path dir = std::filesystem::path(file).parent_path();
+    if (dir.empty())
+    {
+        dir = ".";
+    }
+    std::error_code ec;
+    const std::filesystem::space_info sp = std::filesystem::space(dir, ec);
+    if (!ec && sp.available < needed + (1ull << 20))
+    {
+        return " (the file system of '" + dir.string() + "' has "
+            + std::to_string(sp.available) + " bytes free"
+            + (needed ? ", the write needs " + std::to_string(needed) : "")
+            + ": " + std::strerror(ENOSPC) + ")";
+    }
+    if (::access(dir.c_str(), W_OK) != 0)
+    {
+        return " ('" + dir.string() + "': " + std::strerror(errno) + ")";
+    }
+    return std::string();
+}
+
+
 std::string solid::copyToTemporary(const std::string& file)
 {
     const std::string tmp = temporaryName(file);
@@ -27,10 +55,12 @@ std::string solid::copyToTemporary(const std::string& file)
     }
     catch (const std::filesystem::filesystem_error& e)
     {
+        std::error_code ec;
+        const auto size = std::filesystem::file_size(file, ec);
         throw SolidError
         (
             SolidError::Kind::io, "cannot copy '" + file + "' to '" + tmp
-          + "': " + e.what()
+          + "': " + e.what() + spaceNote(tmp, ec ? 0 : size)
         );
     }
     return tmp;

@@ -1,5 +1,6 @@
 #include "Hdf5Group.H"
 #include "SolidError.H"
+#include "AtomicFile.H"
 
 #include <hdf5.h>
 
@@ -169,6 +170,7 @@ void solid::Hdf5Group::check(bool ok, const std::string& what) const
         throw SolidError
         (
             SolidError::Kind::io, "HDF5 file '" + file_ + "': cannot " + what
+          + spaceNote(file_)
         );
     }
 }

@@ -185,6 +185,14 @@ std::string Foam::rhoEThermo::stepHint() const
     {
         os  << "    Check the initial and boundary conditions." << nl;
     }
+    // A constant in other units than the file's is inside its valid
+    // range but not the material's (adv37 w79: C0 1.45, km/s for m/s,
+    // failed at 1.85 ns naming only the time step)
+    os  << "    Check too the constants of the equation of state in "
+        << "constant/thermophysicalProperties (their units are SI: a sound"
+        << " speed C0 in m/s, a density rho0 in kg/m^3, a pressure in Pa):"
+        << " a value in other units is inside the valid range but not the"
+        << " material's." << nl;
     return os.str();
 }
 
