@@ -11,6 +11,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "writeGuard.H"
+#include "restartLogs.H"
 #include "foamTestCase.H"
 
 #include <gtest/gtest.h>
@@ -171,4 +172,45 @@ TEST(writeGuard, failedWriteIsAnError)
     }
     // not committed: moved aside at a restart
     EXPECT_TRUE(writeGuard::incomplete(runTime.timePath()));
+}
+
+
+// The logs' digests a commit records (restartLogs.H, logRecord): each
+// commit continues the previous one's digest over the bytes added since;
+// the result must be the whole file's digest, as before
+TEST(writeGuard, restartLogDigestContinuesToTheWholeFile)
+{
+    foamUnit::testCase tc("writeGuardLogDigest");
+    const fileName log(tc.time().path()/"coupling.dat");
+    std::string rows("# t iterations\n");
+    std::uint64_t h = 0, n = 0, hWhole = 0, nWhole = 0;
+    for (int commit = 0; commit < 4; ++commit)
+    {
+        for (int row = 0; row < 1000*(commit + 1); ++row)
+        {
+            rows += std::to_string(1e-10*row) + " 3\n";
+        }
+        tc.writeFile("coupling.dat", rows);
+        ASSERT_TRUE(foamTools::restartLogsDetail::logDigest(log, h, n));
+        ASSERT_TRUE(fileDigest::whole(log, hWhole, nWhole));
+        EXPECT_EQ(h, hWhole) << "commit " << commit;
+        EXPECT_EQ(n, nWhole) << "commit " << commit;
+        EXPECT_EQ(n, rows.size());
+    }
+    // It continues (not digested whole again): a byte changed among those
+    // already digested is not seen by the next record ...
+    rows[3] = 'T';
+    rows += "1 3\n";
+    tc.writeFile("coupling.dat", rows);
+    ASSERT_TRUE(foamTools::restartLogsDetail::logDigest(log, h, n));
+    ASSERT_TRUE(fileDigest::whole(log, hWhole, nWhole));
+    EXPECT_NE(h, hWhole);
+    EXPECT_EQ(n, nWhole);
+    // ... and a file cut shorter than the last record is digested whole
+    rows.resize(100);
+    tc.writeFile("coupling.dat", rows);
+    ASSERT_TRUE(foamTools::restartLogsDetail::logDigest(log, h, n));
+    ASSERT_TRUE(fileDigest::whole(log, hWhole, nWhole));
+    EXPECT_EQ(h, hWhole);
+    EXPECT_EQ(n, 100u);
 }
