@@ -16,6 +16,7 @@ Description
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -213,4 +214,50 @@ TEST(writeGuard, restartLogDigestContinuesToTheWholeFile)
     ASSERT_TRUE(fileDigest::whole(log, hWhole, nWhole));
     EXPECT_EQ(h, hWhole);
     EXPECT_EQ(n, 100u);
+}
+
+
+// The directory the run writes its times into removed and made again
+// while it runs (OpenFOAM's decomposePar -force on the processor
+// directories, adv37 w13): the next step stops with a FatalError naming
+// it, before writing
+TEST(writeGuard, replacedCaseDirectoryStopsTheRun)
+{
+    foamUnit::testCase tc("writeGuardReplaced");
+    Time& runTime = tc.time();
+    using foamTools::writeGuard;
+    tc.writeUniformField("p", dimPressure, 1e5, "zeroGradient");
+    ++runTime;
+    writeGuard::write(runTime);
+    EXPECT_TRUE(writeGuard::run(runTime));
+    // what decomposePar -force does: the directory removed, made again
+    const fileName dir(runTime.path());
+    const fileName old(dir + ".old");
+    ASSERT_EQ(std::rename(dir.c_str(), old.c_str()), 0);
+    ASSERT_TRUE(cp(old, dir));
+    ++runTime;
+    std::string msg;
+    try
+    {
+        writeGuard::write(runTime);
+    }
+    catch (const Foam::error& err)
+    {
+        msg = err.message();
+    }
+    for
+    (
+        const std::string& part
+      : {
+            std::string("the directory " + dir + " this run writes its"
+                " times into is not the one it started in"),
+            std::string("decomposePar -force")
+        }
+    )
+    {
+        EXPECT_NE(msg.find(part), std::string::npos)
+            << "no \"" << part << "\" in: " << msg;
+    }
+    EXPECT_FALSE(isDir(runTime.timePath()));
+    rmDir(old);
 }
