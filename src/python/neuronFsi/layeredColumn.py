@@ -453,7 +453,9 @@ class Column:
         record(t)
         while t < endTime*(1 - 1e-12):
             dz = np.diff(z)
-            c = np.sqrt(c2)
+            # the longitudinal sound speed: the bulk one and the shear
+            # modulus's 4/3 mu/rho (1e-7 of it in the cell; not in tests)
+            c = np.sqrt(c2 + (4.0/3.0)*self.mu/rho)
             # q adds to the stiffness: the usual VNR bound
             dt = CFL*np.min(dz/(c + 2*C2**2*np.abs(np.minimum(
                 np.diff(u), 0)) + 1e-30))
