@@ -187,6 +187,60 @@ class Layers(TempDirTestCase):
         self.assertEqual([l.kind for l in col.laws[10:12]],
                          ["quadratic", "quadratic"])
 
+    def testCaseLayersReadEachRegionsLaw(self):
+        # a case: the mesh above, the regions' laws in solidProperties
+        # (inner the solid's water law with rho0 1100, outer the
+        # membrane's quadratic one), the water's in thermophysicalProperties
+        self.write("constant/cell.msh", MSH)
+        self.write("constant/solidProperties", """FoamFile { version 2.0;
+    format ascii; class dictionary; object solidProperties; }
+mesh { type gmsh; file "constant/cell.msh"; scale 1; }
+materials
+{
+    inner { rho0 1100; C10 5; mu1 100; tau1 0.5; volumetric mieGruneisen;
+            C0 1500; s 2; Gamma0 0.2; Cv 4000; T0 300; }
+    outer { rho0 1000; C10 166.67; mu1 13.89; tau1 3000;
+            volumetric quadratic; d0 9.5125e-10; }
+}
+""")
+        self.write("constant/thermophysicalProperties", """FoamFile {
+    version 2.0; format ascii; class dictionary;
+    object thermophysicalProperties; }
+equationOfState mieGruneisen;
+mieGruneisenCoeffs { rho0 1000; C0 1450; s 1.99; Gamma0 0.1; Cv 4184;
+    T0 293.15; }
+""")
+        layers, laws, w = lc.caseLayers(self.tmp, 0.0)
+        self.assertEqual([n for _, _, n in layers], ["inner", "outer"])
+        inner, outer = laws["inner"], laws["outer"]
+        self.assertEqual((inner.kind, inner.rho0, inner.C0, inner.s,
+                          inner.Gamma0, inner.Cv, inner.T0, inner.mu),
+                         ("mieGruneisen", 1100, 1500, 2, 0.2, 4000, 300, 110))
+        self.assertEqual(outer.kind, "quadratic")
+        self.assertAlmostEqual(outer.K, 2/9.5125e-10)
+        self.assertAlmostEqual(outer.mu, 333.34 + 13.89)
+        self.assertEqual((w.rho0, w.C0, w.s, w.Gamma0), (1000, 1450, 1.99,
+                                                         0.1))
+        # the column of the case: a 50 MPa step through the water onto
+        # the layers; at the material point 0.5 um of inner (rho0 1100,
+        # C0 1500, s 2) the state is its Hugoniot's: rho from p
+        self.write("0/p", """FoamFile { version 2.0; format ascii;
+    class volScalarField; object p; }
+dimensions [1 -1 -2 0 0 0 0];
+internalField uniform 0;
+boundaryField { top { type uniformFixedValue;
+    uniformValue table ((0 0) (1e-10 5e7) (1 5e7)); } }
+""")
+        wave = lc.solve(self.tmp, [0.5e-6, 4e-6], 5e-6, 2.2e-9, dz=10e-9,
+                        material=[0.5e-6])
+        self.assertEqual(wave.layers, [(0.0, 1e-6, "inner"),
+                                       (1e-6, 3e-6, "outer")])
+        # the first shock reaches 0.5 um at about 0.05 + 2/1516 + 2/1450
+        # + 0.5/1570 ns = 3.1 ns: at 2.2 ns the material point is at rest,
+        # the water at 4 um behind the incident shock
+        self.assertLess(abs(wave.at(0.5e-6)[-1]), 1.0)
+        self.assertAlmostEqual(wave.at(4e-6)[-1]/5e7, 1, delta=2e-3)
+
     def testRefusals(self):
         with self.assertRaisesRegex(lc.LayeredError, "d0 = 0.*incompress"):
             lc.regionLaw("solidProperties", "membrane",
