@@ -48,7 +48,8 @@ Description
     finite-volume solver, independent of the scene's code and of
     rhoRiemannFoam); the water's probes at fixed heights, the solid's at
     their material points. Written to postProcessing/planeWaveLayered/0/
-    (the same files), so that both comparisons stay side by side.
+    (postProcessing/planeWaveLayeredR<r>/0/ with -radius; the same files),
+    so that the comparisons stay side by side.
 
     With -inflow HEIGHT, for a scene whose water ends at HEIGHT below the
     physical column (its top patch of type planeWaveInflow): computes the
@@ -271,8 +272,13 @@ def compare(case, a, p, skip, kinds):
     heights = sorted({z for _, z, _, _ in probes})
     end = a.endTime or max(t[-1] for _, _, t, _ in probes)
 
-    out = os.path.join(case, "postProcessing",
-                       "planeWaveLayered" if a.layered else "planeWave", "0")
+    # each reference its own folder: the water column, the layered one on
+    # the axis, on another line (-radius)
+    name = "planeWave"
+    if a.layered:
+        name = "planeWaveLayered" + ("" if not a.radius
+                                     else "R%g" % a.radius)
+    out = os.path.join(case, "postProcessing", name, "0")
     os.makedirs(out, exist_ok=True)
     if a.reference:
         kind = options.notARegularFile(a.reference)
