@@ -36,7 +36,7 @@ def main():
               + " |")
         print("|---:|" + "---:|"*len(rows))
         for tt in np.arange(t0, t1 + 0.5*dt, dt):
-            print("| %.1f | %s |" % (tt*1e9, " | ".join(
+            print("| %.2f | %s |" % (tt*1e9, " | ".join(
                 "%.2f" % (np.interp(tt, a, b)*1e-6) for _, a, b in rows)))
 
 
