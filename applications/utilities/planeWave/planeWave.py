@@ -291,7 +291,8 @@ def compare(case, a, p, skip, kinds):
         layeredColumn.checkRunMesh(case)
         wave = layeredColumn.solve(
             case, heights, a.Z, end, dz=a.dz, r=a.radius or 0.0,
-            material={z for n, z, _, _ in probes if n.startswith("solid")})
+            material={z for n, z, _, _ in probes if n.startswith("solid")},
+            maxSteps=a.maxSteps)
         planeWave.writeReference(
             os.path.join(out, "reference.dat"), wave,
             "1D layered column of %s on r = %g m (%s; water above): column "

@@ -499,7 +499,7 @@ class Column:
 
 
 def solve(case, heights, Z, endTime, dz=20e-9, r=0.0, material=(),
-          water=False):
+          water=False, maxSteps=1e6):
     """The layered column of <case> (its layers on the line x = r [m] of
     the solid mesh, its water, its pulse) to endTime [s], cells of at most
     dz [m]: a planeWave.PlaneWave at heights [m], those in material
@@ -517,6 +517,17 @@ def solve(case, heights, Z, endTime, dz=20e-9, r=0.0, material=(),
         cells, laws, w = caseLayers(case, r)
         layers = [(z0, z1, laws[name]) for z0, z1, name in cells]
     col = Column(layers, w, Z, dz)
+    # its time steps, estimated before it runs (a lower bound: the
+    # water's sound speed at rest, the smallest cell; issue 19's refusal
+    # of planeWave's columns)
+    steps = endTime/(CFL*np.diff(col.z0).min()/w.C0)
+    if not steps <= maxSteps:
+        raise LayeredError(
+            "the layered column to %g s in cells of up to %g m takes about "
+            "%.3g time steps (end time / (%g x the smallest cell / C0)), "
+            "above the limit of %.3g (-maxSteps raises it; a shorter "
+            "-endTime or a coarser -dz takes fewer)"
+            % (endTime, dz, steps, CFL, maxSteps))
     pulse = planeWave.appliedPressure(case)
     mats = [h for h in heights if h in set(material)]
     euls = [h for h in heights if h not in set(material)]
