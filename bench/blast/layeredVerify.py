@@ -13,10 +13,13 @@
    reference samples them);
 3. order: the layered column of CASE (its layers on the axis) at the -dz
    sizes, its measures at the probes (the solid's at material points) and
-   the observed order of their changes.
+   the observed order of their changes;
+4. top (not in the default parts): the water-only column with the pulse
+   applied on the moving top node itself, against the fixed plane Z (the
+   delay of layeredColumn), cells of the last -dz.
 
 Usage: layeredVerify.py CASE [-dz 40e-9,20e-9,10e-9] [-rdz 25e-9]
-           [-reference FILE] [-parts wall,rhoRiemann,order]
+           [-reference FILE] [-parts wall,rhoRiemann,order,top]
 CASE: a blast case that has run (its probes and solid mesh), e.g. the
 preview of tests/blast/runPreview.sh DIR -pulse 5e-9 -noPlots -noVTK.
 """
@@ -135,6 +138,21 @@ def order(case, sizes, heights, material, amp, T, Z, end):
                 z*1e6, k, " | ".join("%.6g" % (x*scale) for x in v), o))
 
 
+def topCheck(case, dz, heights, amp, T, Z, end):
+    print("\n4. the top: the pulse at the fixed plane Z (the delay) against "
+          "the table on the moving top node, water-only column of %s, %g nm"
+          % (case, dz*1e9))
+    ref = lc.solve(case, heights, Z, end, dz=dz, water=True)
+    moving = lc.solve(case, heights, Z, end, dz=dz, water=True,
+                      fixedTop=False)
+    print("| height [um] | " + " | ".join(KEYS) + " |")
+    print("|---:|" + "---:|"*len(KEYS))
+    for z in heights:
+        _, _, e = row(moving, ref, z, amp, T)
+        print("| %.4g | %s |" % (z*1e6, " | ".join(fmt(k, e[k])
+                                                   for k in KEYS)))
+
+
 def main():
     p = argparse.ArgumentParser()
     p.add_argument("case")
@@ -148,7 +166,7 @@ def main():
     case = os.path.abspath(a.case)
     if "wall" in parts:
         wall(sizes)
-    if not ({"rhoRiemann", "order"} & set(parts)):
+    if not ({"rhoRiemann", "order", "top"} & set(parts)):
         return
     Z = pw.caseColumnHeight(case)
     table = pw.appliedPressure(case)
@@ -163,6 +181,8 @@ def main():
         rhoRiemann(case, sizes, a.rdz, a.reference, heights, amp, T, Z, end)
     if "order" in parts:
         order(case, sizes, heights, material, amp, T, Z, end)
+    if "top" in parts:
+        topCheck(case, sizes[-1], heights, amp, T, Z, end)
 
 
 if __name__ == "__main__":
