@@ -3,7 +3,8 @@
 answers (issue 17 item 1; not a test): the scene (postProcessing/
 fluidProbes), the layered column (postProcessing/planeWaveLayered/0/
 reference.dat, planeWave -layered) and the water-only column
-(postProcessing/planeWave/0/reference.dat, planeWave), every STEP from
+(postProcessing/planeWave/0/reference.dat, planeWave; each if the case
+has it), every STEP from
 T0 to T1, and the largest 1-ns running mean of each with its time.
 
 Usage: waterProbeHistory.py CASE [T0 T1 STEP]   (default 58e-9 95e-9
@@ -21,10 +22,13 @@ def main():
     case = sys.argv[1]
     t0, t1, dt = ((float(x) for x in sys.argv[2:5]) if len(sys.argv) > 4
                   else (58e-9, 95e-9, 1e-9))
-    refs = [(name, pw.readReference(os.path.join(
-        case, "postProcessing", d, "0", "reference.dat")))
+    # the references the case has (each planeWave run writes its own)
+    refs = [(name, pw.readReference(path)) for name, path in (
+        (name, os.path.join(case, "postProcessing", d, "0",
+                            "reference.dat"))
         for name, d in (("layered", "planeWaveLayered"),
-                        ("water only", "planeWave"))]
+                        ("water only", "planeWave")))
+        if os.path.isfile(path)]
     for n, z, t, p in pw.caseProbes(case, solid=False):
         print("%s at z = %g um: largest 1-ns mean [MPa] at [ns]" % (n, z*1e6))
         rows = [("scene", t, p)] + [(name, r.t, r.at(z)) for name, r in refs]
