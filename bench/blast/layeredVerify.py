@@ -29,7 +29,6 @@ import os
 import sys
 import time
 
-import numpy as np
 
 from neuronFsi import layeredColumn as lc
 from neuronFsi import planeWave as pw

@@ -5,7 +5,6 @@ MPa for a 50 MPa shock), the wave speed of a layer with its deviatoric
 stress, the layers read from a gmsh mesh, the material probes, and the
 refusals. Each column is short (a few um, a second or two)."""
 import math
-import os
 import unittest
 
 import numpy as np
