@@ -147,7 +147,8 @@ def measures(c, pulse):
         t, _, vm = im[name]
         m[f"ifPassage:{name}"] = vm[t <= PASSAGE + pulse].max()
         late = t >= REST
-        m[f"ifRest:{name}"] = vm[late].max()
+        # a run ended before REST (-endTime): no rest value
+        m[f"ifRest:{name}"] = vm[late].max() if late.any() else np.nan
         # when the passage maximum was reached [s]
         k = np.argmax(np.where(t <= PASSAGE + pulse, vm, -1))
         m[f"ifPassageTime:{name}"] = t[k]
