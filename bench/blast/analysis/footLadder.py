@@ -24,7 +24,11 @@ writes of:
                 average over a fixed physical length of the membrane);
 
 each with the write time [ns] it was reached at, and the membrane's
-tangential element size at the foot [um]. Prints a markdown table and, for
+tangential element size at the foot [um]; and from
+postProcessing/solidInterfaces (every step, not only the writes) the
+membrane-cytoplasm maximum in each --windows interval [ns] (default
+60-74, before the substrate's echo reaches the foot, and 74-95, after
+it) with its time. Prints a markdown table and, for
 three or more cases in the order given (coarse to fine), the changes from
 level to level.
 """
@@ -32,6 +36,7 @@ import argparse
 
 import numpy as np
 
+from neuronFsi import damageIndicators
 from neuronFsi.solidResults import SolidResults
 
 NAMES = ["nucleus", "cytoplasm", "membrane"]   # cellMesh's region order
@@ -98,6 +103,7 @@ def main():
     ap.add_argument("--t1", type=float, default=95.0)
     ap.add_argument("--near", type=float, default=1.0)
     ap.add_argument("--away", type=float, default=1.0)
+    ap.add_argument("--windows", default="60-74 74-95")
     ap.add_argument("cases", nargs="+")
     a = ap.parse_args()
     keys = ("band max", "foot el.", "away max", "foot mean")
@@ -116,6 +122,23 @@ def main():
               + " | ".join(f"{best[k][0]:.2f} ({best[k][1]:.2f})"
                            for k in keys)
               + f" |  <!-- foot mean over {n} elements -->")
+    windows = [tuple(float(x) for x in w.split("-"))
+               for w in a.windows.split()]
+    print("\nmembrane-cytoplasm maximum of postProcessing/solidInterfaces "
+          "(every step) [Pa] (t [ns]):\n")
+    print("| case | " + " | ".join(f"{w0:g}-{w1:g} ns" for w0, w1 in windows)
+          + " |")
+    print("|---|" + "---|"*len(windows))
+    for c in a.cases:
+        label, case = c.split("=", 1)
+        t, _, vm = damageIndicators.interfaceMaxima(case)["membrane-cytoplasm"]
+        t = t*1e9
+        cells = []
+        for w0, w1 in windows:
+            s = (t >= w0) & (t <= w1)
+            k = np.argmax(np.where(s, vm, -np.inf))
+            cells.append(f"{vm[k]:.2f} ({t[k]:.2f})")
+        print(f"| {label} | " + " | ".join(cells) + " |")
     if len(rows) >= 2:
         print("\nchange from the previous case [%]:\n")
         for (l0, b0), (l1, b1) in zip(rows, rows[1:]):
