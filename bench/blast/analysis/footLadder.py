@@ -22,6 +22,11 @@ writes of:
   foot mean     the area-weighted mean von Mises of the band's membrane
                 elements whose centroid lies within --near [um] of P (an
                 average over a fixed physical length of the membrane);
+  patch max     the largest, over the band elements, of the mean von
+                Mises of the band elements of the same region within
+                --near [um] of it (interfaceTop.patchMaximum: the
+                interface maximum of a mean over a fixed length instead
+                of one element);
 
 each with the write time [ns] it was reached at, and the membrane's
 tangential element size at the foot [um]; and from
@@ -34,12 +39,22 @@ level to level.
 """
 import argparse
 
+import importlib.machinery
+import importlib.util
+import os
+
 import numpy as np
 
 from neuronFsi import damageIndicators
 from neuronFsi.solidResults import SolidResults
 
 NAMES = ["nucleus", "cytoplasm", "membrane"]   # cellMesh's region order
+_loader = importlib.machinery.SourceFileLoader(
+    "interfaceTop", os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                 "interfaceTop.py"))
+_spec = importlib.util.spec_from_loader("interfaceTop", _loader)
+T = importlib.util.module_from_spec(_spec)
+_loader.exec_module(T)
 
 
 def band(conn, reg, a, b):
@@ -78,7 +93,8 @@ def footMeasures(case, t0, t1, near, away):
         # the foot element's tangential size: its extent in z
         size = np.ptp(X[conn[foot], 1])
         best = {k: (-1.0, 0.0) for k in
-                ("band max", "foot el.", "away max", "foot mean")}
+                ("band max", "foot el.", "away max", "foot mean",
+                 "patch max")}
         for s in f.steps():
             t = f.time(s)*1e9
             if t < t0 or t > t1:
@@ -90,6 +106,7 @@ def footMeasures(case, t0, t1, near, away):
                 "away max": vm[awayEls].max(),
                 "foot mean": np.sum(vm[nearEls]*area[nearEls])
                 / np.sum(area[nearEls]),
+                "patch max": T.patchMaximum(C, reg, els, vm, near*1e-6)[0],
             }
             for k, v in vals.items():
                 if v > best[k][0]:
@@ -106,7 +123,7 @@ def main():
     ap.add_argument("--windows", default="60-74 74-95")
     ap.add_argument("cases", nargs="+")
     a = ap.parse_args()
-    keys = ("band max", "foot el.", "away max", "foot mean")
+    keys = ("band max", "foot el.", "away max", "foot mean", "patch max")
     rows = []
     print(f"writes {a.t0:g}-{a.t1:g} ns; foot mean over the band's "
           f"membrane elements within {a.near:g} um of the contact point; "
