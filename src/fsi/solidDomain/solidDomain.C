@@ -151,28 +151,32 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
     set.hourglass = fraction(dict_, "hourglassViscosity", true, 0);
     set.shearViscosity = fraction(dict_, "shearViscosity", true, 0);
     {
-        // The filtered (scale-selective) form of that viscosity: yes/no
+        // The filtered (scale-selective) form of that viscosity: yes/no,
+        // or region (its neighbourhood averages within each region)
         const word filter
         (
             dict_.getOrDefault<word>("shearViscosityFilter", "no")
         );
-        const Switch sw(filter, true);
+        const bool byRegion = (filter == "region");
+        const Switch sw(byRegion ? word("yes") : filter, true);
         if (!sw.valid())
         {
             FatalIOErrorInFunction(dict_)
                 << "entry 'shearViscosityFilter' = '" << filter << "': "
-                << "valid values are yes/no (on/off, true/false)"
+                << "valid values are yes/no (on/off, true/false) or region"
+                << " (filtered within each region)"
                 << exit(FatalIOError);
         }
         if (sw && !(set.shearViscosity > 0))
         {
             FatalIOErrorInFunction(dict_)
-                << "entry 'shearViscosityFilter' is yes but "
+                << "entry 'shearViscosityFilter' is " << filter << " but "
                 << "'shearViscosity' is " << set.shearViscosity << ": the "
                 << "filter shapes that viscosity; give shearViscosity in "
                 << "(0, 1) or leave the filter out" << exit(FatalIOError);
         }
         set.shearViscosityFilter = sw;
+        set.shearViscosityFilterByRegion = byRegion;
     }
     if (dict_.found("hourglassViscosityRegions"))
     {
