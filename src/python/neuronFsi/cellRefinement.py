@@ -62,6 +62,26 @@ def innerMargin(case):
     return 0.5*min(a, H)
 
 
+def _withoutActions(text):
+    """The dictionary's text without its top-level list 'actions ( ... );'
+    (topoSet's dictionaries in a list, which foamDict does not read; the
+    distance is an entry before it)."""
+    m = re.search(r"(?m)^\s*actions\s*\(", text)
+    if not m:
+        return text
+    depth, i = 0, m.end() - 1
+    while i < len(text):
+        if text[i] == "(":
+            depth += 1
+        elif text[i] == ")":
+            depth -= 1
+            if depth == 0:
+                j = text.find(";", i)
+                return text[:m.start()] + (text[j + 1:] if j >= 0 else "")
+        i += 1
+    return text[:m.start()]
+
+
 def readDistance(case):
     """refineDistance of system/topoSetDict [m], checked: in (0, the
     O-grid's innerMargin] (beyond it the refinement would reach the
@@ -70,7 +90,9 @@ def readDistance(case):
     the file, the entry and the valid range."""
     path = os.path.join(case, "system", "topoSetDict")
     try:
-        d = foamDict.read(path)
+        with open(path) as f:
+            d = foamDict.parse(_withoutActions(f.read()), path,
+                               os.path.dirname(path))
     except (OSError, foamDict.DictError) as e:
         raise RefinementError(f"{path}: {e}") from None
     if "refineDistance" not in d:
