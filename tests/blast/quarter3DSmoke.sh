@@ -24,15 +24,17 @@
 #   atRest: to 2 ns only (the chain and the interface at rest before the
 #   pulse's precursor reaches the cell; checkQuarter3D.py --atRest)
 #   refineCell: atRest with the water along the cell refined (Allrun
-#   -refineCell, -h doubled): also the interface faces four times
-#   cellMesh's, split-face polyhedra, checkMesh clean
+#   -refineCell, -h doubled), on 2 ranks (the sectors' processor patches
+#   cut through the refined cells and their split-face neighbours): also
+#   the interface faces four times cellMesh's, split-face polyhedra,
+#   checkMesh clean
 set -euo pipefail
 mode=${1:-arrival}
 L=30e-6
 endTime=1.82e-8
 h=(-h 0.6e-6)
 [ "$mode" = arrival ] || endTime=2e-9
-[ "$mode" = refineCell ] && h=(-h 1.2e-6 -refineCell 1.2e-6)
+[ "$mode" = refineCell ] && h=(-h 1.2e-6 -refineCell 1.2e-6 -np 2)
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
 work=${TMPDIR:-/tmp}/quarter3DSmoke.$$
