@@ -10,7 +10,8 @@ cell: the map, convergence, no NaN, and the interface stays at rest,
 round-off velocities below 1e-9 m/s, instead of the arrival; refineCell:
 atRest on a case prepared with Allrun -refineCell: also the water's faces
 on the cell four times cellMesh's (constant/fluid.msh), split-face
-polyhedra around the refined cells, checkMesh clean)"""
+polyhedra around the refined cells, checkMesh clean, the geometric
+conservation error round-off)"""
 import glob
 import math
 import os
@@ -128,6 +129,15 @@ for k, plane in enumerate(("x = 0", "y = 0", "z = 0")):
           f" largest motion normal to the plane to t = "
           f"{os.path.basename(last)} s {off:.3g} m (exactly 0 asked; the"
           f" mesh moved up to {moved:.3g} m)")
+
+# the moving band through the refined cells and their split-face
+# neighbours: the fluid's geometric conservation error (coupling.dat's
+# gclError, the swept volumes against the cells' volume change) stays
+# round-off
+if refined:
+    gcl = np.abs(c[:, 9]).max()
+    check(gcl < 1e-12, f"geometric conservation on the refined water: "
+          f"largest gclError {gcl:.3g} (< 1e-12)")
 
 nc = int(np.sum(c[:, 4] == 0))
 finite = bool(np.isfinite(c).all())
