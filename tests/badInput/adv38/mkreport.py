@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""mkreport.py: the tables of report.md from verdicts.py, the cases' headers and out/<new|p2>/<id>.txt (adv37)"""
+"""mkreport.py: the tables of report.md from verdicts.py, the cases' headers and out/<new|p2>/<id>.txt (adv38)"""
 import os, re, sys
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, here)
@@ -25,15 +25,15 @@ def observed(path, n=4, width=330):
     return s.replace('|', '\\|')
 
 def where(k):
-    """(case script, output) of a key: wNN (adv37) or adv36:vNN"""
-    if k.startswith('adv36:'):
-        v = k.split(':')[1]
-        return os.path.join(here, '..', 'adv36', 'cases', v + '.sh'), 'adv36_' + v + '.txt'
+    """(case script, output) of a key: xNN (adv38) or adv36:vNN, adv37:wNN (earlier passes' reproducers, rerun.sh)"""
+    if ':' in k:
+        pas, v = k.split(':')
+        return os.path.join(here, '..', pas, 'cases', v + '.sh'), pas + '_' + v + '.txt'
     return os.path.join(here, 'cases', k + '.sh'), k + '.txt'
 
 def table(d, outDir):
     rows = ['| id | class | input | observed (first lines, [case exit, time]) | verdict |', '|---|---|---|---|---|']
-    for k in sorted(d, key=lambda k: (k.startswith('adv36'), k)):
+    for k in sorted(d, key=lambda k: (':' in k, k)):
         cls, v, why = d[k]
         script, out = where(k)
         inp = header(script).replace('|', '\\|')
@@ -55,7 +55,7 @@ for name, d in (('phase 1 (new)', NEW), ('phase 2', P2)):
 with open(os.path.join(here, 'report.md')) as f:
     text = f.read()
 mark = '<!-- tables -->'
-text = text.split(mark)[0] + mark + '\n\n## Table: phase 1, new cases (main e8491b4)\n\n' + table(NEW, 'new')
+text = text.split(mark)[0] + mark + '\n\n## Table: phase 1, new cases (main 6fd9435)\n\n' + table(NEW, 'new')
 if P2:
     text += '\n\n## Table: phase 2, re-runs after the merge\n\n' + table(P2, 'p2')
 with open(os.path.join(here, 'report.md'), 'w') as f:
