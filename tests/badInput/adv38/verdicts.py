@@ -82,5 +82,7 @@ NEW = {
  'x77': ('1 restart', 'SILENT', '0/T walls fixedValue 300 K from the start; after the run only the VALUE changed to 320 K: the restart continues without a word (exit 0) at 300 K, read from 2e-09/T: the record digests each condition without its \'value\', which for fixedValue IS the condition (w18\'s class, for the fixedValue family)'),
  'x78': ('3 concurrent', 'OK', 'planeWave -partial four times on a running case: no traceback, the run ends with exit 0'),
  'x79': ('1 restart', 'OK', 'postProcess writeCellCentres wrote C, Cx, Cy, Cz into the latest time: the restart accepted (added files are not the run\'s)'),
+
+ 'x80': ('2 re-run', 'OK', 'Allrun -noRun, the solver by hand to its end, then ./Allrun for the post-processing: the Allrun\'s solver step refuses the hand run\'s results (nothing lost, the six files named); none of the ways out it gives leads to the post-processing of a finished run (latestTime would compute nothing) (low, not issue 19\'s)'),
 }
 P2 = {}
