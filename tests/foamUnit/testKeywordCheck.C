@@ -523,6 +523,47 @@ TEST(keywordCheck, duplicatesThroughIncludes)
         ),
         ""
     );
+    // ... pulseStudy's options file too; another suffix is no options
+    // file of a tool: its duplicate is refused (a user's copy included)
+    tc.writeFile("constant/solidProperties.pulseStudy", "shearViscosity 0.4;\n");
+    tc.writeFile("constant/solidProperties.old", "shearViscosity 0.3;\n");
+    for (const std::string suffix : {"pulseStudy", "old"})
+    {
+        tc.writeFile
+        (
+            "constant/solidProperties",
+            header + "shearViscosity 0.2;\n"
+            "#include \"solidProperties." + suffix + "\"\n"
+        );
+        const std::string err
+        (
+            errorOf
+            (
+                [&]
+                {
+                    foamTools::checkDuplicates
+                    (
+                        readDict(tc, "constant/solidProperties")
+                    );
+                }
+            )
+        );
+        if (suffix == "pulseStudy")
+        {
+            EXPECT_EQ(err, "");
+        }
+        else
+        {
+            EXPECT_NE
+            (
+                err.find("entry 'shearViscosity' is given twice in the top"
+                    " level"),
+                npos()
+            ) << err;
+            EXPECT_NE(err.find("constant/solidProperties.old line 1"), npos())
+                << err;
+        }
+    }
     // the set included after the file's own entry: the set would win
     tc.writeFile
     (

@@ -11,10 +11,12 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "writeGuard.H"
+#include "restartLogs.H"
 #include "foamTestCase.H"
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -171,4 +173,91 @@ TEST(writeGuard, failedWriteIsAnError)
     }
     // not committed: moved aside at a restart
     EXPECT_TRUE(writeGuard::incomplete(runTime.timePath()));
+}
+
+
+// The logs' digests a commit records (restartLogs.H, logRecord): each
+// commit continues the previous one's digest over the bytes added since;
+// the result must be the whole file's digest, as before
+TEST(writeGuard, restartLogDigestContinuesToTheWholeFile)
+{
+    foamUnit::testCase tc("writeGuardLogDigest");
+    const fileName log(tc.time().path()/"coupling.dat");
+    std::string rows("# t iterations\n");
+    std::uint64_t h = 0, n = 0, hWhole = 0, nWhole = 0;
+    for (int commit = 0; commit < 4; ++commit)
+    {
+        for (int row = 0; row < 1000*(commit + 1); ++row)
+        {
+            rows += std::to_string(1e-10*row) + " 3\n";
+        }
+        tc.writeFile("coupling.dat", rows);
+        ASSERT_TRUE(foamTools::restartLogsDetail::logDigest(log, h, n));
+        ASSERT_TRUE(fileDigest::whole(log, hWhole, nWhole));
+        EXPECT_EQ(h, hWhole) << "commit " << commit;
+        EXPECT_EQ(n, nWhole) << "commit " << commit;
+        EXPECT_EQ(n, rows.size());
+    }
+    // It continues (not digested whole again): a byte changed among those
+    // already digested is not seen by the next record ...
+    rows[3] = 'T';
+    rows += "1 3\n";
+    tc.writeFile("coupling.dat", rows);
+    ASSERT_TRUE(foamTools::restartLogsDetail::logDigest(log, h, n));
+    ASSERT_TRUE(fileDigest::whole(log, hWhole, nWhole));
+    EXPECT_NE(h, hWhole);
+    EXPECT_EQ(n, nWhole);
+    // ... and a file cut shorter than the last record is digested whole
+    rows.resize(100);
+    tc.writeFile("coupling.dat", rows);
+    ASSERT_TRUE(foamTools::restartLogsDetail::logDigest(log, h, n));
+    ASSERT_TRUE(fileDigest::whole(log, hWhole, nWhole));
+    EXPECT_EQ(h, hWhole);
+    EXPECT_EQ(n, 100u);
+}
+
+
+// The directory the run writes its times into removed and made again
+// while it runs (OpenFOAM's decomposePar -force on the processor
+// directories, adv37 w13): the next step stops with a FatalError naming
+// it, before writing
+TEST(writeGuard, replacedCaseDirectoryStopsTheRun)
+{
+    foamUnit::testCase tc("writeGuardReplaced");
+    Time& runTime = tc.time();
+    using foamTools::writeGuard;
+    tc.writeUniformField("p", dimPressure, 1e5, "zeroGradient");
+    ++runTime;
+    writeGuard::write(runTime);
+    EXPECT_TRUE(writeGuard::run(runTime));
+    // what decomposePar -force does: the directory removed, made again
+    const fileName dir(runTime.path());
+    const fileName old(dir + ".old");
+    ASSERT_EQ(std::rename(dir.c_str(), old.c_str()), 0);
+    ASSERT_TRUE(cp(old, dir));
+    ++runTime;
+    std::string msg;
+    try
+    {
+        writeGuard::write(runTime);
+    }
+    catch (const Foam::error& err)
+    {
+        msg = err.message();
+    }
+    for
+    (
+        const std::string& part
+      : {
+            std::string("the directory " + dir + " this run writes its"
+                " times into is not the one it started in"),
+            std::string("decomposePar -force")
+        }
+    )
+    {
+        EXPECT_NE(msg.find(part), std::string::npos)
+            << "no \"" << part << "\" in: " << msg;
+    }
+    EXPECT_FALSE(isDir(runTime.timePath()));
+    rmDir(old);
 }

@@ -106,6 +106,19 @@ int main(int argc, char *argv[])
         }
     }
 
+    // A restart's dynamicMeshDict before the mesh is built: a motion
+    // solver switched on there reads its fields while the mesh is built,
+    // and OpenFOAM's "cannot find file 0/pointDisplacement" came before
+    // the input record named the change (adv37 w17); every other input
+    // is compared below, after its own checks
+    if (!foamTools::resultGuard::newStart(runTime))
+    {
+        foamTools::inputRecord(runTime).checkRestart
+        (
+            {"constant/dynamicMeshDict"}
+        );
+    }
+
     autoPtr<dynamicFvMesh> meshPtr
     (
         fluidSolidInteraction::newMesh(args, runTime)

@@ -89,6 +89,17 @@ int main(int argc, char *argv[])
                 << " remove the later time directories first, or on a copy"
                 << " of the case." << exit(FatalError);
         }
+        // -overwrite removes them below: not with a file no run wrote in
+        // one (adv36 v32; the rule of the solvers' -overwrite)
+        if (later.size())
+        {
+            DynamicList<fileName> dirs;
+            for (const fileName& dir : later)
+            {
+                dirs.append(runTime.path()/dir);
+            }
+            foamTools::resultGuard::refuseForeign(dirs, runTime.timeName());
+        }
     }
     #include "createMesh.H"
     problem.checkDiaphragm(mesh);

@@ -37,6 +37,7 @@ Usage
 #include <memory>
 #include <unistd.h>
 #include "caseLock.H"
+#include "solidToFoamFiles.H"
 
 using namespace Foam;
 
@@ -178,10 +179,12 @@ int main(int argc, char *argv[])
     // .solidToFoam) is removed; a region folder without it (a user's, or
     // of a build before the marker) stops the conversion, named, before
     // anything is written (issue 19, adv35 t45)
-    const word marker(".solidToFoam");
-    // What a conversion writes into <time>/<region>/: its marker and these
-    // fields (compressed: with .gz; dimensionSet assignment checks
-    // equality: no List<dimensionSet>)
+    // (its marker and fields: foamTools::solidToFoamFiles, the one list,
+    // also read by the solvers' -overwrite, resultGuard)
+    const word marker(foamTools::solidToFoamFiles::marker());
+    // The cell fields a conversion writes into <time>/<region>/ with their
+    // dimensions (dimensionSet assignment checks equality: no
+    // List<dimensionSet>)
     const std::pair<word, const dimensionSet*> scalarFields[] =
     {
         {"pressure", &dimPressure},
@@ -190,11 +193,6 @@ int main(int argc, char *argv[])
         {"temperatureRise", &dimTemperature},
         {"region", &dimless}
     };
-    wordHashSet own({marker, word("D"), word("Ud"), word("sigma")});
-    for (const auto& field : scalarFields)
-    {
-        own.insert(field.first);
-    }
     DynamicList<fileName> stale;
     {
         wordHashSet current;
@@ -223,12 +221,10 @@ int main(int argc, char *argv[])
             for (const dirent* de; dp && (de = ::readdir(dp)) != nullptr;)
             {
                 const std::string n(de->d_name);
-                const bool gz =
-                    n.size() > 3 && n.compare(n.size() - 3, 3, ".gz") == 0;
                 if
                 (
                     n != "." && n != ".."
-                 && !own.found(gz ? n.substr(0, n.size() - 3) : n)
+                 && !foamTools::solidToFoamFiles::written(n)
                 )
                 {
                     foreignFiles.append(runTime.path()/d/region/n);

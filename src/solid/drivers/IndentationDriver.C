@@ -13,32 +13,6 @@
 
 namespace fs = std::filesystem;
 
-namespace
-{
-
-const std::uint64_t fnvBasis = fileDigest::basis;
-
-//- Continue the FNV-1a 64-bit digest h over bytes [from, to) of file
-//  (the project's one file digest, src/foamTools/fileDigest.H)
-bool digestBytes
-(
-    const std::string& file,
-    std::uintmax_t from,
-    std::uintmax_t to,
-    std::uint64_t& h,
-    std::uintmax_t& firstZero
-)
-{
-    return fileDigest::bytes(file, from, to, h, firstZero);
-}
-
-std::string hex(std::uint64_t h)
-{
-    return fileDigest::hex(h);
-}
-
-} // namespace
-
 
 solid::IndentationDriver::IndentationDriver
 (
@@ -174,13 +148,13 @@ void solid::IndentationDriver::checkResume()
               + std::to_string(long(len)) + " bytes)"
             );
         }
-        std::uint64_t h = fnvBasis;
+        std::uint64_t h = fileDigest::basis;
         std::uintmax_t zero = std::uintmax_t(-1);
         const std::string key = std::string(f) + ".fnv1a64";
         if
         (
-            !digestBytes(path(f), 0, std::uintmax_t(len), h, zero)
-         || (c.hasText(key) && c.text(key) != hex(h))
+            !fileDigest::bytes(path(f), 0, std::uintmax_t(len), h, zero)
+         || (c.hasText(key) && c.text(key) != fileDigest::hex(h))
         )
         {
             std::ostringstream os;
@@ -300,7 +274,7 @@ void solid::IndentationDriver::start(bool resume)
     {
         std::remove(checkpointFile().c_str());
         runId_ = settings_.runId;
-        logDigest_[0] = logDigest_[1] = fnvBasis;
+        logDigest_[0] = logDigest_[1] = fileDigest::basis;
         logDigested_[0] = logDigested_[1] = 0;
     }
     openOutputs();
@@ -423,7 +397,13 @@ void solid::IndentationDriver::checkpoint(long row)
         c.set(std::string(f) + ".length", double(len));
         // The digest continued over the bytes written since the last one
         std::uintmax_t zero = std::uintmax_t(-1);
-        if (!digestBytes(path(f), logDigested_[k], len, logDigest_[k], zero))
+        if
+        (
+            !fileDigest::bytes
+            (
+                path(f), logDigested_[k], len, logDigest_[k], zero
+            )
+        )
         {
             throw SolidError
             (
@@ -432,7 +412,10 @@ void solid::IndentationDriver::checkpoint(long row)
             );
         }
         logDigested_[k] = len;
-        c.setText(std::string(f) + ".fnv1a64", hex(logDigest_[k]));
+        c.setText
+        (
+            std::string(f) + ".fnv1a64", fileDigest::hex(logDigest_[k])
+        );
         ++k;
     }
     c.write();

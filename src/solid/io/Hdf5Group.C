@@ -1,6 +1,7 @@
 #include "Hdf5Group.H"
 #include "SolidError.H"
 #include "AtomicFile.H"
+#include "fileDigest.H"
 
 #include <hdf5.h>
 
@@ -78,9 +79,10 @@ bool readAttributes(hid_t obj)
     return true;
 }
 
-//- The 64-bit digest of a dataset's values (FNV-1a over the bytes of each
-//  value as a double, in order, then the rows and columns): stored as the
-//  dataset's attribute digestName, compared at every read. Fletcher-32,
+//- The 64-bit digest of a dataset's values (FNV-1a, fileDigest::add, over
+//  the bytes of each value as a double, in order, then the rows and
+//  columns): stored as the dataset's attribute digestName, compared at
+//  every read. Fletcher-32,
 //  HDF5's filter, sums 16-bit words modulo 65535, so a word 0x0000 turned
 //  into 0xffff (or back) passes it (zeros, most of a step at rest); this
 //  digest sees any change of a byte's value or place
@@ -89,22 +91,14 @@ const char* const digestName = "digest64";
 template<class T>
 std::uint64_t digest(const T* data, std::size_t n, hsize_t rows, hsize_t cols)
 {
-    std::uint64_t h = 0xcbf29ce484222325ULL;
-    const auto add = [&h](const unsigned char* b, std::size_t size)
-    {
-        for (std::size_t k = 0; k < size; ++k)
-        {
-            h = (h ^ b[k])*0x100000001b3ULL;
-        }
-    };
+    std::uint64_t h = fileDigest::basis;
     for (std::size_t i = 0; i < n; ++i)
     {
         const double v = double(data[i]);
-        add(reinterpret_cast<const unsigned char*>(&v), sizeof v);
+        h = fileDigest::add(h, &v, sizeof v);
     }
     const std::uint64_t shape[2] = {rows, cols};
-    add(reinterpret_cast<const unsigned char*>(shape), sizeof shape);
-    return h;
+    return fileDigest::add(h, shape, sizeof shape);
 }
 
 } // namespace

@@ -167,10 +167,23 @@ void Foam::rhoEThermo::correctFromPT()
 }
 
 
+std::string& Foam::rhoEThermo::implausibleNote()
+{
+    static std::string note;
+    return note;
+}
+
+
 std::string Foam::rhoEThermo::stepHint() const
 {
     const Time& runTime = mesh_.time();
     OStringStream os;
+    if (!implausibleNote().empty())
+    {
+        // the likeliest cause first (adv37 w79)
+        os  << "    constant/thermophysicalProperties: "
+            << implausibleNote().c_str() << nl;
+    }
     if (runTime.timeIndex() > runTime.startTimeIndex())
     {
         // after a step: its length is the first suspect (adv32 pr17,

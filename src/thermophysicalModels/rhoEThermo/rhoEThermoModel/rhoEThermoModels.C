@@ -69,6 +69,15 @@ rhoEThermoModel<eos::MieGruneisen>::readParameters(const dictionary& dict)
     par.Gamma0 = readCoeff(dict, "Gamma0", dimless);
     par.Cv = readCoeff(dict, "Cv", dimEnergy/dimMass/dimTemperature);
     par.T0 = readCoeff(dict, "T0", dimTemperature);
+    // Inside the valid range but not a liquid's or solid's value: other
+    // units, likely (adv37 w79); said now and in an invalid state's message
+    rhoEThermo::implausibleNote() = eos::MieGruneisen::implausible(par);
+    if (!rhoEThermo::implausibleNote().empty())
+    {
+        WarningInFunction
+            << dict.name().c_str() << ": "
+            << rhoEThermo::implausibleNote().c_str() << nl << endl;
+    }
     return par;
 }
 
