@@ -125,7 +125,7 @@ open("0/p", "w").write(s[:m.start()] + m.group(1) + text + ";" + s[m.end():])
 PY
 status=0; cellBlastFoam > log.restart 2>&1 || status=$?
 check "cellBlastFoam: 0/p's table rewritten with its size and 17 digits (the same rows) is not a change" \
-    "grep -q '^ *uniformValue *table *5((0 0) (1.0000000000000001e-10 50000000)' 0/p \
+    "tr -s ' \n' ' ' < 0/p | grep -q 'uniformValue table 5((0 0) (1e-10 50000000) (5.0000000000000001e-09 50000000)' \
      && [ $status -eq 0 ] && grep -q '^End' log.restart && [ -d 1.5e-08 ]"
 cd "$case"
 sed -i 's#^\(materials\)#// a comment added before the restart\n\1#; s/rho0        1000;/rho0  1000 ;/' constant/solidProperties
