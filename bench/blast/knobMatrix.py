@@ -147,7 +147,8 @@ def measures(c, pulse):
         t, _, vm = im[name]
         m[f"ifPassage:{name}"] = vm[t <= PASSAGE + pulse].max()
         late = t >= REST
-        m[f"ifRest:{name}"] = vm[late].max()
+        # a run ended before REST (-endTime): no rest value
+        m[f"ifRest:{name}"] = vm[late].max() if late.any() else np.nan
         # when the passage maximum was reached [s]
         k = np.argmax(np.where(t <= PASSAGE + pulse, vm, -1))
         m[f"ifPassageTime:{name}"] = t[k]
@@ -218,10 +219,16 @@ REST_COLUMNS = [
 
 
 def cell(m, ref, key, fmt, variant):
-    v = fmt % m[key]
+    x, r = m[key], ref[key]
+    # no value (a run ended before 140 ns: planeWave's '-', or nan)
+    if not isinstance(x, float) or np.isnan(x):
+        return "-"
+    v = fmt % x
+    if not isinstance(r, float) or np.isnan(r):
+        return v
     if variant == "base":
         return v
-    d = 100*(m[key]/ref[key] - 1)
+    d = 100*(x/r - 1)
     bold = "**" if abs(d) >= 5 else ""
     return f"{v} ({bold}{d:+.1f} %{bold})"
 

@@ -4,26 +4,51 @@ map check against the exact projected areas, arrival time at the probe,
 coupling convergence, no NaN, and the fluid points of the symmetry planes
 and the substrate still exactly on their planes at the last time (edges
 and the axis, where two planes meet, included).
-usage: checkQuarter3D.py case L [arrival|atRest]   (L: side of the water
-cube [m]; atRest: a run that ends before the pulse reaches the cell: the
-map, convergence, no NaN, and the interface stays at rest, round-off
-velocities below 1e-9 m/s, instead of the arrival)"""
+usage: checkQuarter3D.py case L [arrival|atRest|refineCell]   (L: side of
+the water cube [m]; atRest: a run that ends before the pulse reaches the
+cell: the map, convergence, no NaN, and the interface stays at rest,
+round-off velocities below 1e-9 m/s, instead of the arrival; refineCell:
+atRest on a case prepared with Allrun -refineCell: also the water's faces
+on the cell four times cellMesh's (constant/fluid.msh), split-face
+polyhedra around the refined cells, checkMesh clean, the geometric
+conservation error round-off)"""
 import glob
 import math
 import os
+import re
 import sys
 import numpy as np
 
-from neuronFsi import foamDict, foamField, logs, postProcessing
+from neuronFsi import (cellRefinement, foamDict, foamField, logs, msh,
+                       postProcessing)
 from neuronFsi.checks import Checks
 
 case, L = sys.argv[1], float(sys.argv[2])
 mode = sys.argv[3] if len(sys.argv) > 3 else "arrival"
-if mode not in ("arrival", "atRest"):
-    sys.exit(f"checkQuarter3D.py: mode {mode}: arrival or atRest")
+if mode not in ("arrival", "atRest", "refineCell"):
+    sys.exit(f"checkQuarter3D.py: mode {mode}: arrival, atRest or "
+             "refineCell")
+refined = mode == "refineCell"
+if refined:
+    mode = "atRest"
 a, H = 8.4e-6, 7.9e-6
 check = Checks()
 
+
+# Allrun -refineCell: the water's faces on the cell four times those of
+# cellMesh's water (its physical group cellInterface), the refined cells'
+# neighbours split-face polyhedra, the mesh clean
+if refined:
+    n0 = len(msh.read(f"{case}/constant/fluid.msh")[1]["cellInterface"][1])
+    n1 = cellRefinement.interfaceFaces(f"{case}/constant/polyMesh/boundary")
+    check(n1 == 4*n0, f"refined interface: {n1} water faces on the cell "
+          f"against cellMesh's {n0} (4x asked)")
+    text = open(f"{case}/log.checkMesh").read()
+    poly = [int(x) for x in re.findall(r"polyhedra:\s+(\d+)", text)]
+    check("Mesh OK." in text and bool(poly) and poly[-1] > 0,
+          f"checkMesh of the refined water: 'Mesh OK.' "
+          f"{'Mesh OK.' in text}, polyhedra {poly[-1] if poly else None} "
+          "(> 0: the refined cells' neighbours)")
 
 # Unit pressure on the quarter cell surface: the force is minus the
 # projected areas, pi a H/4 on x = 0 and y = 0 (quarter ellipses) and
@@ -104,6 +129,15 @@ for k, plane in enumerate(("x = 0", "y = 0", "z = 0")):
           f" largest motion normal to the plane to t = "
           f"{os.path.basename(last)} s {off:.3g} m (exactly 0 asked; the"
           f" mesh moved up to {moved:.3g} m)")
+
+# the moving band through the refined cells and their split-face
+# neighbours: the fluid's geometric conservation error (coupling.dat's
+# gclError, the swept volumes against the cells' volume change) stays
+# round-off
+if refined:
+    gcl = np.abs(c[:, 9]).max()
+    check(gcl < 1e-12, f"geometric conservation on the refined water: "
+          f"largest gclError {gcl:.3g} (< 1e-12)")
 
 nc = int(np.sum(c[:, 4] == 0))
 finite = bool(np.isfinite(c).all())

@@ -20,14 +20,21 @@
 # coupling step converged, no NaN; fluid and solid VTK files exist; the
 # fluid points of the symmetry planes and the substrate are exactly on
 # them at the end.
-# usage: quarter3DSmoke.sh [atRest]
+# usage: quarter3DSmoke.sh [atRest|refineCell]
 #   atRest: to 2 ns only (the chain and the interface at rest before the
 #   pulse's precursor reaches the cell; checkQuarter3D.py --atRest)
+#   refineCell: atRest with the water along the cell refined (Allrun
+#   -refineCell, -h doubled), on 2 ranks (the sectors' processor patches
+#   cut through the refined cells and their split-face neighbours): also
+#   the interface faces four times cellMesh's, split-face polyhedra,
+#   checkMesh clean
 set -euo pipefail
 mode=${1:-arrival}
 L=30e-6
 endTime=1.82e-8
-[ "$mode" = atRest ] && endTime=2e-9
+h=(-h 0.6e-6)
+[ "$mode" = arrival ] || endTime=2e-9
+[ "$mode" = refineCell ] && h=(-h 1.2e-6 -refineCell 1.2e-6 -np 2)
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
 work=${TMPDIR:-/tmp}/quarter3DSmoke.$$
@@ -44,7 +51,7 @@ case=$work/quarter3D
 foamDictionary -entry writeInterval -set "$(/usr/bin/python3 -c "print($endTime/2)")" \
     "$case/system/controlDict" > /dev/null
 rm -rf "$case/constant/polyMesh" "$case"/constant/*.msh
-PROJECT_DIR=$here/../.. "$case/Allrun" -box $L -h 0.6e-6 -far 2e-6 \
+PROJECT_DIR=$here/../.. "$case/Allrun" -box $L "${h[@]}" -far 2e-6 \
     -growth 5e-6 -cell 1.4e-6 -endTime $endTime -inflow 15e-6 -noPlots \
     > "$work.log" 2>&1 || { cat "$work.log"; exit 1; }
 ls "$case"/VTK/*.vtm > /dev/null

@@ -249,7 +249,7 @@ TEST(writeGuard, replacedCaseDirectoryStopsTheRun)
     (
         const std::string& part
       : {
-            std::string("the directory " + dir + " this run writes its"
+            std::string("the directory \"" + dir + "\" this run writes its"
                 " times into is not the one it started in"),
             std::string("decomposePar -force")
         }

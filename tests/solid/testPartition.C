@@ -4,15 +4,22 @@
 // exchange a fake all-gather between the threads, advance the replicated
 // nodes bit-identically on both parts and to the serial run's values to
 // round-off (summation order); shareStates brings every element's history
-// to both parts; the partition covers every element once.
+// to both parts; the partition covers every element once and names each
+// element's owner. PackedValues: sums (in part order), minima, maxima and
+// owned values combined in one exchange, the same bits on every part; a
+// probe recovered from its patch elements' samples packed by their owners
+// has the bits of the probe evaluated from the shared histories.
 #include "ExplicitSolver.H"
 #include "Partition.H"
+#include "PointProbe.H"
 #include "SolidError.H"
 #include "SolidTestUtils.H"
 
 #include <gtest/gtest.h>
 #include <algorithm>
+#include <cmath>
 #include <condition_variable>
+#include <cstring>
 #include <cstdio>
 #include <mutex>
 #include <random>
@@ -388,4 +395,235 @@ TEST(partition, shareStatesOfSomeElements)
             }
         }
     }
+}
+
+
+TEST(partition, ownerOfEveryElement)
+{
+    for (const int n : {1, 5, 28, 2085})
+    {
+        for (const int parts : {1, 2, 3, 7})
+        {
+            for (int p = 0; p < parts; ++p)
+            {
+                const Partition P(p, parts, [](const double*, std::size_t,
+                                               double*) {});
+                for (int e = 0; e < n; ++e)
+                {
+                    const bool mine = e >= P.begin(n) && e < P.end(n);
+                    EXPECT_EQ(P.owner(e, n) == p, mine) << e << " of " << n;
+                }
+            }
+        }
+    }
+    const Partition P(1, 2, [](const double*, std::size_t, double*) {});
+    EXPECT_THROW(P.owner(-1, 5), SolidError);
+    EXPECT_THROW(P.owner(5, 5), SolidError);
+}
+
+
+TEST(partition, packedValuesCombinedInOneExchange)
+{
+    // Three parts in three threads, the exchange counted: sums in part
+    // order, minima, maxima and values owned by one part, interleaved
+    ThreadGather g(3);
+    int exchanges[3] = {0, 0, 0};
+    std::vector<PackedValues> v(3);
+    std::vector<std::size_t> at;
+    std::mutex atMutex;
+    std::vector<std::thread> threads;
+    for (int p = 0; p < 3; ++p)
+    {
+        threads.emplace_back([&, p]
+        {
+            const Partition::AllGather gather = g.of(p);
+            const Partition P(p, 3, [&, p, gather]
+                (const double* mine, std::size_t n, double* all)
+                {
+                    ++exchanges[p];
+                    gather(mine, n, all);
+                });
+            const double big[2] = {1e16*(p == 0) + 1.0, double(p)};
+            const double m[2] = {double(p), -double(p)};
+            const double own[3] = {10.0 + p, -0.0, 1e-300*p};
+            const double other[2] = {-1.0*p, 2.0*p};
+            PackedValues& x = v[p];
+            std::vector<std::size_t> o;
+            o.push_back(x.sum(big, 2));
+            o.push_back(x.min(m, 1));
+            o.push_back(x.max(m + 1, 1));
+            // Owned by part 2, zeros on the others
+            o.push_back(x.owned(2, p == 2 ? own : nullptr, 3));
+            o.push_back(x.owned(0, own, 3));
+            o.push_back(x.max(other, 2));
+            o.push_back(x.sum(nullptr, 1));
+            P.combine(x);
+            if (p == 0)
+            {
+                std::lock_guard<std::mutex> lock(atMutex);
+                at = o;
+            }
+        });
+    }
+    for (auto& t : threads) t.join();
+    ASSERT_EQ(at.size(), 7u);
+    EXPECT_EQ(at[0], 0u);
+    EXPECT_EQ(at[3], 4u);
+    EXPECT_EQ(at[6], 12u);
+    for (int p = 0; p < 3; ++p)
+    {
+        EXPECT_EQ(exchanges[p], 1);
+        const PackedValues& x = v[p];
+        ASSERT_EQ(x.size(), 13u);
+        // (1e16 + 1) + 1 + 1 in part order
+        EXPECT_EQ(x[at[0]], (1e16 + 1.0) + 1.0 + 1.0);
+        EXPECT_EQ(x[at[0] + 1], 3.0);
+        EXPECT_EQ(x[at[1]], 0.0);
+        EXPECT_EQ(x[at[2]], 0.0);
+        // Part 2's values exactly, the sign of its zero too
+        EXPECT_EQ(x[at[3]], 12.0);
+        EXPECT_EQ(x[at[3] + 1], 0.0);
+        EXPECT_TRUE(std::signbit(x[at[3] + 1]));
+        EXPECT_EQ(x[at[3] + 2], 2e-300);
+        EXPECT_EQ(x[at[4]], 10.0);
+        EXPECT_EQ(x[at[4] + 2], 0.0);
+        EXPECT_EQ(x[at[5]], 0.0);
+        EXPECT_EQ(x[at[5] + 1], 4.0);
+        EXPECT_EQ(x[at[6]], 0.0);
+        for (std::size_t i = 0; i < x.size(); ++i)
+        {
+            EXPECT_EQ
+            (
+                std::memcmp(x.data() + i, v[0].data() + i, sizeof(double)),
+                0
+            ) << i;
+        }
+    }
+
+    // One part: no exchange, the values as packed; cleared: empty
+    PackedValues one;
+    const double y[2] = {1.5, -0.0};
+    one.owned(0, y, 1);
+    one.sum(y + 1, 1);
+    Partition().combine(one);
+    EXPECT_EQ(one[0], 1.5);
+    EXPECT_TRUE(std::signbit(one[1]));
+    one.clear();
+    EXPECT_EQ(one.size(), 0u);
+    // An owner that is no part
+    EXPECT_THROW(one.owned(-1, y, 1), SolidError);
+    ThreadGather g2(2);
+    std::vector<std::thread> t2;
+    int thrown = 0;
+    std::mutex thrownMutex;
+    for (int p = 0; p < 2; ++p)
+    {
+        t2.emplace_back([&, p]
+        {
+            PackedValues z;
+            z.owned(2, y, 1);
+            try
+            {
+                Partition(p, 2, g2.of(p)).combine(z);
+            }
+            catch (const SolidError&)
+            {
+                std::lock_guard<std::mutex> lock(thrownMutex);
+                ++thrown;
+            }
+        });
+    }
+    for (auto& t : t2) t.join();
+    EXPECT_EQ(thrown, 2);
+}
+
+
+TEST(partition, probeFromOwnersSamplesAsFromSharedStates)
+{
+    // Two parts step the bar; a probe whose patch spans both parts'
+    // elements is recovered (a) from the patch elements' samples each
+    // part evaluates for the elements it owns, packed as owned values and
+    // combined, and (b) as before: the histories shared (shareStates),
+    // then evaluated on one part. The same bits on both parts
+    const int steps = 50;
+    ThreadGather g(2);
+    std::vector<std::unique_ptr<Model>> m(2);
+    for (int p = 0; p < 2; ++p)
+    {
+        m[p] = bar();
+        m[p]->setPartition(Partition(p, 2, g.of(p)));
+        start(*m[p]);
+    }
+    const double h = 1e-6;
+    const PointProbe probe(m[0]->mesh(), Vec3(3.4*h, 0.9*h, 1.2*h), -1);
+    const std::vector<int>& patch = probe.patch();
+    const int ne = m[0]->mesh().nElements();
+    int owners[2] = {0, 0};
+    for (const int e : patch) ++owners[m[0]->partition().owner(e, ne)];
+    ASSERT_GT(owners[0], 0);
+    ASSERT_GT(owners[1], 0);
+
+    std::vector<ProbeValues> fromSamples(2), fromStates(2);
+    std::vector<std::thread> threads;
+    for (int p = 0; p < 2; ++p)
+    {
+        threads.emplace_back([&, p]
+        {
+            Model& model = *m[p];
+            ExplicitSolver solver(model, settings());
+            for (int i = 0; i < steps; ++i) solver.step();
+            const Partition& part = model.partition();
+            PackedValues v;
+            std::vector<std::size_t> at;
+            for (const int e : patch)
+            {
+                const bool mine =
+                    e >= model.elementBegin() && e < model.elementEnd();
+                double x[21] = {};
+                if (mine)
+                {
+                    const ProbeValues s =
+                        PointProbe::sample(model.evaluateElement(e, 0));
+                    x[0] = s.p;
+                    std::copy(s.sigma.data(), s.sigma.data() + 9, x + 1);
+                    std::copy(s.F.data(), s.F.data() + 9, x + 10);
+                    x[19] = s.theta;
+                    x[20] = s.temperatureRise;
+                }
+                at.push_back(v.owned(part.owner(e, ne), x, 21));
+            }
+            part.combine(v);
+            std::vector<ProbeValues> samples(patch.size());
+            for (std::size_t i = 0; i < patch.size(); ++i)
+            {
+                const double* x = v.data() + at[i];
+                samples[i].p = x[0];
+                std::copy(x + 1, x + 10, samples[i].sigma.data());
+                std::copy(x + 10, x + 19, samples[i].F.data());
+                samples[i].theta = x[19];
+                samples[i].temperatureRise = x[20];
+            }
+            fromSamples[p] = probe.recover(samples);
+            model.shareStates(patch);
+            fromStates[p] = probe.evaluate(model);
+        });
+    }
+    for (auto& t : threads) t.join();
+    for (int p = 0; p < 2; ++p)
+    {
+        const ProbeValues& a = fromSamples[p];
+        const ProbeValues& b = fromStates[p];
+        EXPECT_EQ(a.p, b.p);
+        EXPECT_EQ(a.sigma, b.sigma);
+        EXPECT_EQ(a.F, b.F);
+        EXPECT_EQ(a.theta, b.theta);
+        EXPECT_EQ(a.temperatureRise, b.temperatureRise);
+        EXPECT_EQ(a.p, fromSamples[0].p);
+        EXPECT_EQ(a.sigma, fromSamples[0].sigma);
+    }
+    // Not a trivial state: stressed and deformed
+    EXPECT_GT(fromSamples[0].sigma.norm(), 0);
+    EXPECT_NE(fromSamples[0].theta, 1.0);
+    // The samples must match the patch
+    EXPECT_THROW(probe.recover(std::vector<ProbeValues>(1)), SolidError);
 }

@@ -39,6 +39,18 @@ Description
     |strain| 1e-3 and von Mises 10 % of its peak), naming it; -except
     leaves the named measures out of the check (they are still printed).
 
+    With -layered, the reference is the 1D answer of the posed model on the
+    axis instead of the water-only column: the water column with the
+    cell's layers where the axis (or the line r = -radius) crosses the
+    solid mesh (membrane: its quadratic law; cytoplasm, nucleus: their
+    Mie-Grueneisen law and rho0; the neo-Hookean deviatoric stress of
+    uniaxial strain), computed by neuronFsi.layeredColumn (a Lagrangian
+    finite-volume solver, independent of the scene's code and of
+    rhoRiemannFoam); the water's probes at fixed heights, the solid's at
+    their material points. Written to postProcessing/planeWaveLayered/0/
+    (postProcessing/planeWaveLayeredR<r>/0/ with -radius; the same files),
+    so that the comparisons stay side by side.
+
     With -inflow HEIGHT, for a scene whose water ends at HEIGHT below the
     physical column (its top patch of type planeWaveInflow): computes the
     column to -endTime (default: the case's controlDict endTime) and
@@ -49,7 +61,7 @@ Description
 Usage
     planeWave [-case dir] [-Z 100e-6] [-dz 25e-9] [-endTime t]
               [-probes solid,fluid] [-check] [-except m1,m2]
-              [-reference file] [-partial]
+              [-reference file] [-partial] [-layered [-radius r]]
     planeWave -inflow HEIGHT [-case dir] [-Z Z] [-dz 25e-9] [-endTime t]
               [-overwrite] [-maxSteps 1e6]
 
@@ -59,7 +71,12 @@ Usage
                 the case's mesh, 100e-6 without a mesh; a different -Z is
                 refused)
     -dz         the 1D cell size [m] (default 25e-9: ten times finer
-                than the preview's finest water cell)
+                than the preview's finest water cell; with -layered
+                10e-9, the largest cell of the layered column)
+    -layered    the reference is the layered column of the posed model
+                (above) instead of the water-only column
+    -radius     with -layered: the vertical line r [m] whose layers make
+                the column (default 0, the axis)
     -endTime    [s]; default: the last time of the case's probes (with
                 -inflow: the case's controlDict endTime; the wave is
                 computed one step of the scene beyond it, maxDeltaT or
@@ -105,8 +122,12 @@ except ImportError:
     sys.exit("planeWave.py: error: the project's Python package neuronFsi "
              "is not found: source the project's etc/bashrc first")
 script.guard()  # an input's error: one line, exit 1 (adv33)
-from neuronFsi import caseLock, foamDict, options, planeWave, postProcessing
+from neuronFsi import caseLock, foamDict, layeredColumn, options, \
+    planeWave, postProcessing
 
+# the layered column's default cell size [m] (docs/results/
+# blastPlaneWave.md, "The layered reference": its own error)
+LAYERED_DZ = 10e-9
 BOUNDS = {"arrival": 0.3e-9, "peak1ns": 0.05, "peakIncident": 0.05,
           "plateau": 0.05, "impulse": 0.03}
 # the solid probes' deviatoric response against the uniaxial-strain answer
@@ -121,7 +142,9 @@ def main():
     p.add_argument("-case", default=".")
     p.add_argument("-Z", type=float, default=None)
     p.add_argument("-inflow", type=float, default=None)
-    p.add_argument("-dz", type=float, default=25e-9)
+    p.add_argument("-dz", type=float, default=None)
+    p.add_argument("-layered", action="store_true")
+    p.add_argument("-radius", type=float, default=None)
     p.add_argument("-endTime", type=float, default=None)
     p.add_argument("-maxCells", type=int, default=100000)
     p.add_argument("-maxSteps", type=float, default=1e6)
@@ -133,6 +156,17 @@ def main():
     p.add_argument("-partial", action="store_true")
     a = options.parse(p)
     case = os.path.abspath(a.case)
+    if a.radius is not None and not a.layered:
+        p.error("-radius is an option of -layered (the line whose layers "
+                "make the column)")
+    if a.radius is not None and not (a.radius >= 0
+                                     and math.isfinite(a.radius)):
+        p.error("-radius %g m: must be 0 or positive and finite" % a.radius)
+    if a.layered and a.inflow is not None:
+        p.error("-layered is not an option of -inflow (the inflow wave is "
+                "the water column's)")
+    if a.dz is None:
+        a.dz = LAYERED_DZ if a.layered else 25e-9
     # [(kind or None, measure)]: "peak1ns" or "fluid:peak1ns"
     skip = [tuple(k.split(":")) if ":" in k else (None, k)
             for k in a.skip.split(",") if k]
@@ -238,7 +272,13 @@ def compare(case, a, p, skip, kinds):
     heights = sorted({z for _, z, _, _ in probes})
     end = a.endTime or max(t[-1] for _, _, t, _ in probes)
 
-    out = os.path.join(case, "postProcessing", "planeWave", "0")
+    # each reference its own folder: the water column, the layered one on
+    # the axis, on another line (-radius)
+    name = "planeWave"
+    if a.layered:
+        name = "planeWaveLayered" + ("" if not a.radius
+                                     else "R%g" % a.radius)
+    out = os.path.join(case, "postProcessing", name, "0")
     os.makedirs(out, exist_ok=True)
     if a.reference:
         kind = options.notARegularFile(a.reference)
@@ -247,6 +287,20 @@ def compare(case, a, p, skip, kinds):
                 "-reference %s is %s, not a file (a reference.dat of an "
                 "earlier run)" % (a.reference, kind))
         wave = planeWave.readReference(a.reference)
+    elif a.layered:
+        layeredColumn.checkRunMesh(case)
+        wave = layeredColumn.solve(
+            case, heights, a.Z, end, dz=a.dz, r=a.radius or 0.0,
+            material={z for n, z, _, _ in probes if n.startswith("solid")},
+            maxSteps=a.maxSteps)
+        planeWave.writeReference(
+            os.path.join(out, "reference.dat"), wave,
+            "1D layered column of %s on r = %g m (%s; water above): column "
+            "%g m, cells up to %g m (%d), pulse %g Pa for %g s" % (
+                case, a.radius or 0.0, ", ".join(
+                    "%s %.6g-%.6g um" % (n, z0*1e6, z1*1e6)
+                    for z0, z1, n in wave.layers), a.Z, a.dz, wave.cells,
+                amp, T))
     else:
         wave = planeWave.column(case, heights, a.Z, end, dz=a.dz,
                                 maxCells=a.maxCells, maxSteps=a.maxSteps)
@@ -281,8 +335,10 @@ def compare(case, a, p, skip, kinds):
 
     keys = ("arrival", "peak1ns", "peakIncident", "plateau", "impulse")
     unit = {"arrival": ("[ns]", 1e9), "impulse": ("[Pa s]", 1.0)}
-    lines = ["# planeWave: probes of %s against the 1D plane wave (cells "
-             "%g m); errors: arrival [ns], the others [%%]" % (case, a.dz),
+    lines = ["# planeWave: probes of %s against the %s (cells "
+             "%g m); errors: arrival [ns], the others [%%]"
+             % (case, "layered 1D column (-layered)" if a.layered
+                else "1D plane wave", a.dz),
              "# probe  z[m]  " + "  ".join(
                  "%s%s %sRef" % (k, unit.get(k, ("[MPa]",))[0], k)
                  for k in keys) + "  " + "  ".join(

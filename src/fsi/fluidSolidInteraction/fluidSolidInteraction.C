@@ -63,29 +63,6 @@ Foam::label interfacePatchIndex
     return patchi;
 }
 
-//- Each rank's values on every rank, in rank order, in one exchange
-//  (MPI_Allgather; OpenFOAM's world communicator is MPI_COMM_WORLD)
-template<int N>
-Foam::List<Foam::FixedList<Foam::scalar, N>> allGatherRanks
-(
-    const Foam::FixedList<Foam::scalar, N>& mine
-)
-{
-    using namespace Foam;
-    List<FixedList<scalar, N>> all(Pstream::nProcs());
-    if (!Pstream::parRun())
-    {
-        all[0] = mine;
-        return all;
-    }
-    MPI_Allgather
-    (
-        const_cast<scalar*>(mine.cdata()), N, MPI_DOUBLE,
-        all.data(), N, MPI_DOUBLE, MPI_COMM_WORLD
-    );
-    return all;
-}
-
 } // End anonymous namespace
 
 
@@ -687,25 +664,26 @@ void Foam::fluidSolidInteraction::step()
     const scalar localRate = fluid_.localCourantRate();
     cpuFluid_ += cpuTimer_.cpuTimeIncrement();
 
-    // The step's global values in one exchange (each a point where the
+    // The step's values in one exchange (each exchange a point where the
     // ranks wait for each other): the Courant rate and the geometric
-    // conservation error (largest over the ranks) and the wall force
-    // (summed in rank order, as gSum on 2 ranks: the same bits)
+    // conservation error (largest over the ranks), the wall force (summed
+    // in rank order, as gSum on 2 ranks: the same bits) and the solid's
+    // output of the step (its probes' element samples from their owners,
+    // the interface maxima), written by write()
     vector F = sum(fluid_.phiU().boundaryField()[patchi_]);
     {
-        const List<FixedList<scalar, 5>> all
+        stepValues_.clear();
+        const scalar maxima[2] = {localRate, gclError};
+        const std::size_t iMax = stepValues_.max(maxima, 2);
+        const std::size_t iSum = stepValues_.sum(F.cdata(), 3);
+        solid.packOutput(stepValues_);
+        solid.model().partition().combine(stepValues_);
+        courantRate_ = stepValues_[iMax];
+        gclError = stepValues_[iMax + 1];
+        F = vector
         (
-            allGatherRanks<5>({localRate, gclError, F.x(), F.y(), F.z()})
+            stepValues_[iSum], stepValues_[iSum + 1], stepValues_[iSum + 2]
         );
-        courantRate_ = all[0][0];
-        gclError = all[0][1];
-        F = vector(all[0][2], all[0][3], all[0][4]);
-        for (label proci = 1; proci < all.size(); ++proci)
-        {
-            courantRate_ = max(courantRate_, all[proci][0]);
-            gclError = max(gclError, all[proci][1]);
-            F += vector(all[proci][2], all[proci][3], all[proci][4]);
-        }
     }
     if (couplingLog_.valid())
     {
@@ -820,7 +798,8 @@ void Foam::fluidSolidInteraction::write(const scalar stepDeltaT)
         ~charge() { sum += timer.cpuTimeIncrement(); }
     } chargeOutput{cpuTimer_, cpuOutput_};
 
-    solid_->write(stepDeltaT);
+    // The solid's rows from the values step() combined
+    solid_->write(stepValues_, stepDeltaT);
 
     const Time& runTime = mesh_.time();
     if (!runTime.writeTime())

@@ -151,28 +151,32 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
     set.hourglass = fraction(dict_, "hourglassViscosity", true, 0);
     set.shearViscosity = fraction(dict_, "shearViscosity", true, 0);
     {
-        // The filtered (scale-selective) form of that viscosity: yes/no
+        // The filtered (scale-selective) form of that viscosity: yes/no,
+        // or region (its neighbourhood averages within each region)
         const word filter
         (
             dict_.getOrDefault<word>("shearViscosityFilter", "no")
         );
-        const Switch sw(filter, true);
+        const bool byRegion = (filter == "region");
+        const Switch sw(byRegion ? word("yes") : filter, true);
         if (!sw.valid())
         {
             FatalIOErrorInFunction(dict_)
                 << "entry 'shearViscosityFilter' = '" << filter << "': "
-                << "valid values are yes/no (on/off, true/false)"
+                << "valid values are yes/no (on/off, true/false) or region"
+                << " (filtered within each region)"
                 << exit(FatalIOError);
         }
         if (sw && !(set.shearViscosity > 0))
         {
             FatalIOErrorInFunction(dict_)
-                << "entry 'shearViscosityFilter' is yes but "
+                << "entry 'shearViscosityFilter' is " << filter << " but "
                 << "'shearViscosity' is " << set.shearViscosity << ": the "
                 << "filter shapes that viscosity; give shearViscosity in "
                 << "(0, 1) or leave the filter out" << exit(FatalIOError);
         }
         set.shearViscosityFilter = sw;
+        set.shearViscosityFilterByRegion = byRegion;
     }
     if (dict_.found("hourglassViscosityRegions"))
     {
@@ -830,6 +834,30 @@ void Foam::solidDomain::setupOutput()
         interfaceElements_[i] = interfaceElements(pairs[i].first(),
             pairs[i].second());
     }
+    // The output elements this rank owns, each evaluated once per step
+    {
+        const int b = model_->elementBegin(), e1 = model_->elementEnd();
+        std::vector<int>& owned = ownedOutputElements_;
+        for (const int e : probeElements_)
+        {
+            if (e >= b && e < e1) owned.push_back(e);
+        }
+        for (const labelList& elems : interfaceElements_)
+        {
+            for (const label e : elems)
+            {
+                if (e >= b && e < e1) owned.push_back(e);
+            }
+        }
+        std::sort(owned.begin(), owned.end());
+        owned.erase(std::unique(owned.begin(), owned.end()), owned.end());
+        outputSamples_.resize(owned.size());
+        outputSlot_.assign(m.nElements(), -1);
+        for (std::size_t k = 0; k < owned.size(); ++k)
+        {
+            outputSlot_[owned[k]] = int(k);
+        }
+    }
     if (pairs.size() && Pstream::master())
     {
         const fileName dir
@@ -914,25 +942,124 @@ Foam::scalarField Foam::solidDomain::interfaceForces() const
 }
 
 
-void Foam::solidDomain::write(const scalar dt)
+namespace
 {
-    const auto vonMises = [](const solid::Mat3& s)
+
+//- A probe sample packed: p, sigma, F, theta, temperature rise
+constexpr std::size_t sampleSize = 21;
+
+void packSample(const solid::ProbeValues& v, double* x)
+{
+    x[0] = v.p;
+    std::copy(v.sigma.data(), v.sigma.data() + 9, x + 1);
+    std::copy(v.F.data(), v.F.data() + 9, x + 10);
+    x[19] = v.theta;
+    x[20] = v.temperatureRise;
+}
+
+solid::ProbeValues unpackSample(const double* x)
+{
+    solid::ProbeValues v;
+    v.p = x[0];
+    std::copy(x + 1, x + 10, v.sigma.data());
+    std::copy(x + 10, x + 19, v.F.data());
+    v.theta = x[19];
+    v.temperatureRise = x[20];
+    return v;
+}
+
+Foam::scalar vonMises(const solid::Mat3& s)
+{
+    const solid::Mat3 dev = s - s.trace()/3*solid::Mat3::Identity();
+    return std::sqrt(1.5*(dev.array()*dev.array()).sum());
+}
+
+} // End anonymous namespace
+
+
+void Foam::solidDomain::packOutput(solid::PackedValues& values)
+{
+    // The output elements this rank owns (whose histories it holds),
+    // each once
+    for (std::size_t k = 0; k < ownedOutputElements_.size(); ++k)
     {
-        const solid::Mat3 dev = s - s.trace()/3*solid::Mat3::Identity();
-        return std::sqrt(1.5*(dev.array()*dev.array()).sum());
-    };
-    // The probes' histories from the ranks that own their elements (every
-    // rank takes part; the master evaluates and writes)
-    model_->shareStates(probeElements_);
+        outputSamples_[k] = solid::PointProbe::sample
+        (
+            model_->evaluateElement(ownedOutputElements_[k], 0)
+        );
+    }
+    // The probes' samples from their elements' owners
+    const solid::Partition& part = model_->partition();
+    const int ne = mesh().nElements();
+    probeOffset_ = values.size();
+    double x[sampleSize];
+    for (const int e : probeElements_)
+    {
+        const int slot = outputSlot_[e];
+        if (slot >= 0)
+        {
+            packSample(outputSamples_[slot], x);
+        }
+        values.owned(part.owner(e, ne), slot >= 0 ? x : nullptr, sampleSize);
+    }
+    // The interface maxima over this rank's elements, then over the ranks
+    maximaOffset_ = values.size();
+    for (const labelList& elems : interfaceElements_)
+    {
+        scalar pMax = -GREAT, vmMax = 0;
+        for (const label e : elems)
+        {
+            const int slot = outputSlot_[e];
+            if (slot < 0) continue;
+            const solid::ProbeValues& o = outputSamples_[slot];
+            pMax = max(pMax, o.p);
+            vmMax = max(vmMax, vonMises(o.sigma));
+        }
+        const double m[2] = {pMax, vmMax};
+        values.max(m, 2);
+    }
+    packed_ = true;
+}
+
+
+void Foam::solidDomain::write
+(
+    const solid::PackedValues& values,
+    const scalar dt
+)
+{
+    if (!packed_)
+    {
+        FatalErrorInFunction
+            << "the solid's step output written before it was packed"
+            << " (packOutput)" << abort(FatalError);
+    }
+    packed_ = false;
     if (probeFile_.valid())
     {
         OFstream& os = probeFile_();
         os  << runTime_.value();
         const int axial = mesh().dim() - 1;
         scalarField ez(probes_.size());
+        std::vector<solid::ProbeValues> samples;
         for (label i = 0; i < label(probes_.size()); ++i)
         {
-            const solid::ProbeValues v = probes_[i].evaluate(*model_);
+            // The patch's samples by their elements' places among the
+            // packed probe elements (sorted)
+            const std::vector<int>& patch = probes_[i].patch();
+            samples.resize(patch.size());
+            for (std::size_t j = 0; j < patch.size(); ++j)
+            {
+                const std::size_t k = std::lower_bound
+                (
+                    probeElements_.begin(), probeElements_.end(), patch[j]
+                ) - probeElements_.begin();
+                samples[j] = unpackSample
+                (
+                    values.data() + probeOffset_ + k*sampleSize
+                );
+            }
+            const solid::ProbeValues v = probes_[i].recover(samples);
             const scalar logJ = std::log(v.theta);
             os  << ' ' << v.p << ' ' << vonMises(v.sigma) << ' ' << logJ
                 << ' ' << (logJ - probeStrain_[2*i])/dt << ' '
@@ -950,34 +1077,16 @@ void Foam::solidDomain::write(const scalar dt)
         os  << nl;
         os.flush();
     }
-    if (interfaceElements_.size())
+    if (interfaceFile_.valid())
     {
-        // Each rank's elements (whose histories it holds), then the
-        // maxima over the ranks
-        const label b = model_->elementBegin(), e1 = model_->elementEnd();
-        std::vector<double> maxima;
-        for (const labelList& elems : interfaceElements_)
+        OFstream& os = interfaceFile_();
+        os  << runTime_.value();
+        for (label i = 0; i < 2*interfaceElements_.size(); ++i)
         {
-            scalar pMax = -GREAT, vmMax = 0;
-            for (const label e : elems)
-            {
-                if (e < b || e >= e1) continue;
-                const solid::ElementOutput o = model_->evaluateElement(e, 0);
-                pMax = max(pMax, o.p);
-                vmMax = max(vmMax, vonMises(o.sigma));
-            }
-            maxima.push_back(pMax);
-            maxima.push_back(vmMax);
+            os  << ' ' << values[maximaOffset_ + i];
         }
-        model_->partition().combine(maxima.data(), 0, 0, maxima.size());
-        if (interfaceFile_.valid())
-        {
-            OFstream& os = interfaceFile_();
-            os  << runTime_.value();
-            for (const scalar m : maxima) os << ' ' << m;
-            os  << nl;
-            os.flush();
-        }
+        os  << nl;
+        os.flush();
     }
     if (runTime_.writeTime())
     {

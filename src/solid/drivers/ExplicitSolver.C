@@ -179,13 +179,14 @@ void solid::ExplicitSolver::buildShearDamping
         {
             shearRate_.resize(mesh.nElements());
             shearWeight_.assign(mesh.nElements(), 0);
-            shearNodeWeight_.assign(mesh.nNodes(), 0);
+            buildShearSlots();
+            shearNodeWeight_.assign(shearSlots_, 0);
         }
         shearRate_[e] = Bd;
         shearWeight_[e] = 2*eta*geo.V;
         for (int a = 0; a < nen; ++a)
         {
-            shearNodeWeight_[en[a]] += shearWeight_[e];
+            shearNodeWeight_[shearSlot_[nen*e + a]] += shearWeight_[e];
         }
     }
     else
@@ -210,6 +211,38 @@ void solid::ExplicitSolver::buildShearDamping
 }
 
 
+void solid::ExplicitSolver::buildShearSlots()
+{
+    const Mesh& mesh = model_.mesh();
+    const int nen = mesh.nen(), ne = mesh.nElements();
+    shearSlot_.assign(std::size_t(nen)*ne, -1);
+    if (!set_.shearViscosityFilterByRegion)
+    {
+        for (int e = 0; e < ne; ++e)
+        {
+            const int* en = mesh.element(e);
+            for (int a = 0; a < nen; ++a) shearSlot_[nen*e + a] = en[a];
+        }
+        shearSlots_ = mesh.nNodes();
+        return;
+    }
+    // One slot per (node, region) pair met, numbered in element order
+    std::map<std::pair<int, int>, int> slot;
+    for (int e = 0; e < ne; ++e)
+    {
+        const int* en = mesh.element(e);
+        for (int a = 0; a < nen; ++a)
+        {
+            const auto it =
+                slot.emplace(std::make_pair(en[a], mesh.region[e]),
+                             int(slot.size())).first;
+            shearSlot_[nen*e + a] = it->second;
+        }
+    }
+    shearSlots_ = int(slot.size());
+}
+
+
 void solid::ExplicitSolver::addFilteredShearForce
 (
     const Eigen::VectorXd& v,
@@ -225,8 +258,10 @@ void solid::ExplicitSolver::addFilteredShearForce
     using Rate = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
 
     // Element rates d_e and their w-weighted averages at the nodes
+    // (the averages per slot: a node, or a node and region pair)
+    const int* slot = shearSlot_.data();
     Eigen::MatrixXd d(ns, ne);
-    Eigen::MatrixXd nodal(Eigen::MatrixXd::Zero(ns, mesh.nNodes()));
+    Eigen::MatrixXd nodal(Eigen::MatrixXd::Zero(ns, shearSlots_));
     for (int e = 0; e < ne; ++e)
     {
         const int* en = mesh.element(e);
@@ -235,26 +270,26 @@ void solid::ExplicitSolver::addFilteredShearForce
         d.col(e) = shearRate_[e]*ve;
         for (int a = 0; a < nen; ++a)
         {
-            nodal.col(en[a]) += shearWeight_[e]*d.col(e);
+            nodal.col(slot[nen*e + a]) += shearWeight_[e]*d.col(e);
         }
     }
-    for (int a = 0; a < mesh.nNodes(); ++a)
+    for (int k = 0; k < shearSlots_; ++k)
     {
-        if (shearNodeWeight_[a] > 0) nodal.col(a) /= shearNodeWeight_[a];
+        if (shearNodeWeight_[k] > 0) nodal.col(k) /= shearNodeWeight_[k];
     }
 
-    // s = W (I - A) d, and the nodal sums of s/(nen W_a) for A^T s
+    // s = W (I - A) d, and the slot sums of s/(nen W_a) for A^T s
     Eigen::MatrixXd& s = d;
-    Eigen::MatrixXd back(Eigen::MatrixXd::Zero(ns, mesh.nNodes()));
+    Eigen::MatrixXd back(Eigen::MatrixXd::Zero(ns, shearSlots_));
     for (int e = 0; e < ne; ++e)
     {
-        const int* en = mesh.element(e);
         Rate mean(Rate::Zero(ns));
-        for (int a = 0; a < nen; ++a) mean += nodal.col(en[a]);
+        for (int a = 0; a < nen; ++a) mean += nodal.col(slot[nen*e + a]);
         s.col(e) = shearWeight_[e]*(d.col(e) - mean/nen);
         for (int a = 0; a < nen; ++a)
         {
-            back.col(en[a]) += s.col(e)/(nen*shearNodeWeight_[en[a]]);
+            const int k = slot[nen*e + a];
+            back.col(k) += s.col(e)/(nen*shearNodeWeight_[k]);
         }
     }
 
@@ -267,7 +302,7 @@ void solid::ExplicitSolver::addFilteredShearForce
         Rate g = s.col(e);
         for (int a = 0; a < nen; ++a)
         {
-            g -= shearWeight_[e]*back.col(en[a]);
+            g -= shearWeight_[e]*back.col(slot[nen*e + a]);
         }
         ve = shearRate_[e].transpose()*g;
         for (int a = 0; a < nen; ++a)

@@ -58,3 +58,128 @@ void solid::Partition::combine
         }
     }
 }
+
+
+int solid::Partition::owner(int e, int n) const
+{
+    if (e < 0 || e >= n)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter, "partition: element "
+          + std::to_string(e) + " of " + std::to_string(n)
+          + " (valid: 0 <= element < elements)"
+        );
+    }
+    // The last part whose block starts at or before e
+    int p = nParts_ - 1;
+    while (static_cast<long long>(n)*p/nParts_ > e) --p;
+    return p;
+}
+
+
+void solid::Partition::combine(PackedValues& values) const
+{
+    if (nParts_ == 1) return;
+    const std::size_t n = values.values_.size();
+    buffer_.resize(n*nParts_);
+    allGather_(values.values_.data(), n, buffer_.data());
+    const double* all = buffer_.data();
+    double* x = values.values_.data();
+    for (const PackedValues::Block& b : values.blocks_)
+    {
+        const std::size_t i0 = b.begin, i1 = b.begin + b.size;
+        if (b.kind >= 0)
+        {
+            // The owner's values (a part beyond the last: SolidError at
+            // packing would be too early, the parts are known here)
+            if (b.kind >= nParts_)
+            {
+                throw SolidError
+                (
+                    SolidError::Kind::parameter, "partition: values "
+                    "owned by part " + std::to_string(b.kind) + " of "
+                  + std::to_string(nParts_) + " parts"
+                );
+            }
+            const double* y = all + std::size_t(b.kind)*n;
+            std::copy(y + i0, y + i1, x + i0);
+            continue;
+        }
+        std::copy(all + i0, all + i1, x + i0);
+        for (int r = 1; r < nParts_; ++r)
+        {
+            const double* y = all + std::size_t(r)*n;
+            if (b.kind == PackedValues::sumKind)
+            {
+                for (std::size_t i = i0; i < i1; ++i) x[i] += y[i];
+            }
+            else if (b.kind == PackedValues::minKind)
+            {
+                for (std::size_t i = i0; i < i1; ++i)
+                {
+                    x[i] = std::min(x[i], y[i]);
+                }
+            }
+            else
+            {
+                for (std::size_t i = i0; i < i1; ++i)
+                {
+                    x[i] = std::max(x[i], y[i]);
+                }
+            }
+        }
+    }
+}
+
+
+std::size_t solid::PackedValues::add
+(
+    int kind,
+    const double* x,
+    std::size_t n
+)
+{
+    const std::size_t begin = values_.size();
+    if (x)
+    {
+        values_.insert(values_.end(), x, x + n);
+    }
+    else
+    {
+        values_.resize(begin + n, 0.0);
+    }
+    // Consecutive values of one kind: one block
+    if
+    (
+        !blocks_.empty() && blocks_.back().kind == kind
+     && blocks_.back().begin + blocks_.back().size == begin
+    )
+    {
+        blocks_.back().size += n;
+    }
+    else if (n)
+    {
+        blocks_.push_back({begin, n, kind});
+    }
+    return begin;
+}
+
+
+std::size_t solid::PackedValues::owned
+(
+    int owner,
+    const double* x,
+    std::size_t n
+)
+{
+    if (owner < 0)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter, "packed values: owner part "
+          + std::to_string(owner) + " (valid: >= 0)"
+        );
+    }
+    return add(owner, x, n);
+}

@@ -229,13 +229,48 @@ solid::Vec3 solid::PointProbe::interpolate(const Eigen::VectorXd& nodal) const
 
 solid::ProbeValues solid::PointProbe::evaluate(Model& model) const
 {
+    std::vector<ProbeValues> samples(patch_.size());
+    for (std::size_t i = 0; i < patch_.size(); ++i)
+    {
+        samples[i] = sample(model.evaluateElement(patch_[i], 0));
+    }
+    return recover(samples);
+}
+
+
+solid::ProbeValues solid::PointProbe::sample(const ElementOutput& o)
+{
+    ProbeValues s;
+    s.p = o.p;
+    s.sigma = o.sigma;
+    s.F = o.F;
+    s.theta = o.theta;
+    s.temperatureRise = o.temperatureRise;
+    return s;
+}
+
+
+solid::ProbeValues solid::PointProbe::recover
+(
+    const std::vector<ProbeValues>& samples
+) const
+{
+    if (samples.size() != patch_.size())
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter, "probe recovery: "
+          + std::to_string(samples.size()) + " samples for a patch of "
+          + std::to_string(patch_.size()) + " elements"
+        );
+    }
     ProbeValues v;
     v.sigma.setZero();
     v.F.setZero();
     v.theta = 0;
     for (std::size_t i = 0; i < patch_.size(); ++i)
     {
-        const ElementOutput o = model.evaluateElement(patch_[i], 0);
+        const ProbeValues& o = samples[i];
         const double w = weights_[i];
         v.p += w*o.p;
         v.sigma += w*o.sigma;
