@@ -107,10 +107,15 @@ solid::Mesh Foam::solidInput::mesh() const
                         .c_str()
                     << exit(FatalIOError);
             }
+            // The file's unit in metres, from nm (1e-9) to km (1e3): a
+            // scale without an upper bound (was (0, inf)) overflowed the
+            // reader's Jacobians before the size check below could refuse
+            // it, 'scale 1e300' a floating point exception (adv38 x58,
+            // x74); within this range a file's coordinates would have to
+            // pass 1e148 for that
             const scalar scale = foamTools::readInRangeOrDefault<scalar>
             (
-                dict, "scale", "", 0, foamTools::noUpperBound<scalar>(),
-                false, 1
+                dict, "scale", "", 1e-9, 1e3, true, 1
             );
             solid::Mesh mesh(checked(solid::readGmsh(file, scale)));
             // A cell: its size in metres after scaling lies in cellMesh's

@@ -8,6 +8,9 @@
 #      the in-progress marker again (what a SIGKILL inside the write
 #      leaves), continued from latestTime: the truncated time must be moved
 #      aside and the run must reach bitwise the same final fields as (a);
+#  (b2) the same time with its .writeCommitted empty (a power loss after
+#      the rename) and 64 bytes of its p zeroed: moved aside too, naming
+#      the empty marker, the same final fields;
 #  (c) SIGKILL at random instants (2-12 % of the uninterrupted run's time
 #      after each start), restarted
 #      from latestTime until it completes: at least one kill must have
@@ -58,6 +61,28 @@ grep -q "writeGuard: time directory .*$cut\" is incomplete" "$work/b/log.1" \
 [ -d "$work/b/$cut.incomplete" ] || { echo "restartKilledWrites: (b) no $cut.incomplete"; exit 1; }
 same b || exit 1
 echo "restartKilledWrites: (b) truncated write of $cut s moved aside, final fields bitwise equal"
+
+# (b2) what a power loss after the commit's rename can leave: the third
+# write's .writeCommitted empty (no digest, no file lines) and 64 bytes of
+# its p zeroed: an unfinished write, moved aside naming the empty marker
+# (adv38 x33: taken as a commit, the run continued from the damaged p)
+setup b2
+for t in "${times[@]:0:3}"; do cp -r "$work/a/$t" "$work/b2/"; done
+cp -r "$work/a/postProcessing" "$work/b2/"
+: > "$work/b2/$cut/.writeCommitted"
+/usr/bin/python3 - "$work/b2/$cut/p" <<'PY'
+import sys
+s = bytearray(open(sys.argv[1], "rb").read())
+k = s.find(b"(", s.find(b"internalField")) + 200
+s[k:k + 64] = b"\0"*64
+open(sys.argv[1], "wb").write(s)
+PY
+( cd "$work/b2" && rhoRiemannFoam > log.1 )
+grep -q "writeGuard: time directory .*$cut\" is incomplete (its .writeCommitted marker is empty" "$work/b2/log.1" \
+    || { echo "restartKilledWrites: (b2) the time $cut with an empty marker was not moved aside naming it"; exit 1; }
+[ -d "$work/b2/$cut.incomplete" ] || { echo "restartKilledWrites: (b2) no $cut.incomplete"; exit 1; }
+same b2 || exit 1
+echo "restartKilledWrites: (b2) $cut s with an empty commit marker moved aside, final fields bitwise equal"
 
 # (c) random SIGKILLs
 setup c

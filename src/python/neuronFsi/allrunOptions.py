@@ -339,6 +339,15 @@ def main(argv):
         # foamDictionary's "stripInvalid", then an unrelated error)
         problem = options.casePathProblem(os.getcwd(),
                                           " (the Allrun's folder)")
+        # and as the shell reached it ($PWD, through symbolic links),
+        # which OpenFOAM's applications take (adv38 x08)
+        logical = os.environ.get("PWD", "")
+        if not problem and os.path.isabs(logical) \
+                and os.path.realpath(logical) == os.path.realpath(os.getcwd()):
+            problem = options.casePathProblem(
+                logical, " (the Allrun's folder as the shell reached it, "
+                "$PWD, through a symbolic link: OpenFOAM's applications "
+                "take that path)", logical=True)
         if problem:
             raise OptionError(problem)
         try:

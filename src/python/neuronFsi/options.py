@@ -56,7 +56,7 @@ def _invalidCharacters(path):
     return ", ".join(names)
 
 
-def casePathProblem(path, how=""):
+def casePathProblem(path, how="", logical=False):
     """The project's message for a case directory holding a character
     OpenFOAM's file names drop (a space, a quote, a tab, a newline), ""
     if it holds none: the Python side of foamTools::checkCasePath
@@ -66,8 +66,13 @@ def casePathProblem(path, how=""):
     every Allrun (etc/RunFunctions allrunOptions) and pulseStudy before
     anything runs: OpenFOAM's applications in such a case end in
     "fileName::stripInvalid() called for invalid fileName", or run in
-    another directory (issue 19, adv29 z4, z5)."""
-    full = os.path.realpath(path)
+    another directory (issue 19, adv29 z4, z5). logical: path is taken
+    as given (made absolute, not resolved): the shell's $PWD, through
+    symbolic links, which OpenFOAM's applications take as the case when
+    it names the working directory (adv38 x08: a link named "my case" to
+    a folder without a space passed the physical check, then cellMesh
+    died in "fileName::stripInvalid()")."""
+    full = os.path.abspath(path) if logical else os.path.realpath(path)
     named = _invalidCharacters(full)
     if not named:
         return ""

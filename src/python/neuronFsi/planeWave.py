@@ -648,21 +648,28 @@ def _recordedThermo(work):
 COLUMN_INPUTS = (THERMO, "system/fvSchemes", "system/fvSolution")
 
 
-_CONDITION = re.compile(r"^(?:field |initial conditions (?:processor\d+/)?"
-                        r"[^/]+/)(p|U|T), boundaryField/(top|bottom)$")
+_CONDITION = re.compile(r"^(field |initial (?:boundary condition|conditions) "
+                        r"(?:processor\d+/)?[^/]+/)(p|U|T), "
+                        r"boundaryField/(top|bottom)$")
 
 
 def _conditions(record):
     """{(kind, field, patch): digest} of the top and bottom conditions of
     p, U and T in an input record, its keys "field p, boundaryField/top"
-    (kind "field") and "initial conditions 0/p, boundaryField/top" (kind
-    "initial", whatever the start directory)"""
+    (kind "field") and "initial boundary condition 0/p, boundaryField/top"
+    (kind "initial", whatever the start directory: the condition as its
+    patch field writes it, the same from 0/p and from decomposePar's
+    processor0/0/p, adv38 x73). A record of an earlier build holds
+    "initial conditions 0/p, ..." instead, a digest of the entry's text
+    (kind "initialText": compared only with its own kind)"""
     found = {}
     for key, digest in record.items():
         m = _CONDITION.match(key)
         if m:
-            kind = "field" if key.startswith("field ") else "initial"
-            found[(kind, m.group(1), m.group(2))] = digest
+            kind = "field" if key.startswith("field ") else \
+                "initial" if key.startswith("initial boundary ") else \
+                "initialText"
+            found[(kind, m.group(2), m.group(3))] = digest
     return found
 
 
