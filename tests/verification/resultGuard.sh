@@ -81,6 +81,17 @@ timeDirectorySolver()
         check "$solver (times deleted): -overwrite starts anew" \
             "[ $status -eq 0 ] && [ \"\$(foamListTimes | wc -l)\" -ge 1 ]"
     popd > /dev/null
+    # -overwrite from the first time over a run restarted twice: the
+    # function objects' segments of the restarts (postProcessing/<name>/
+    # 1e-08, 1.5e-08) go too, or the new run's rows are joined by time
+    # with the earlier run's (adv38 x18)
+    local segments
+    segments=$(ls -d postProcessing/*/1e-08 postProcessing/*/1.5e-08 2>/dev/null | wc -l)
+    sed -i 's/^startFrom .*/startFrom startTime;/; s/^endTime .*/endTime 5e-9;/; s/^writeInterval .*/writeInterval 5e-9;/' system/controlDict
+    status=0; $solver -overwrite > log.overwrite2 2>&1 || status=$?
+    check "$solver: -overwrite over a restarted run leaves no later segment of its function objects ($segments before)" \
+        "[ $status -eq 0 ] && [ $segments -ge 2 ] \
+         && [ -z \"\$(ls -A postProcessing/*/ | grep -v -x -e 0 -e 'postProcessing/.*:' -e '')\" ]"
 }
 
 mkdir "$work/fluid"; cd "$work/fluid"
