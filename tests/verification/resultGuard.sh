@@ -185,5 +185,17 @@ status=0
 mpirun -np 2 rhoRiemannFoam -parallel -overwrite > log.overwrite 2>&1 || status=$?
 check "rhoRiemannFoam -parallel -overwrite: runs, no reconstructed time of the first run left" \
     "[ $status -eq 0 ] && [ -d processor1/1e-08 ] && [ ! -e 5e-09 ] && [ ! -e 2e-08 ]"
+# A serial new start over the parallel run's processor times: refused, and
+# -overwrite moves them aside too (adv38 x16: they were left, and a later
+# reconstructPar wrote the earlier run's fields over the serial run's)
+status=0
+rhoRiemannFoam > log.serial 2>&1 || status=$?
+check "rhoRiemannFoam serial over processor*/ times: refused, naming them" \
+    "[ $status -ne 0 ] && grep -q 'of an earlier parallel run in the processor folders' log.serial \
+     && [ -d processor1/1e-08 ] && [ ! -e 1e-08 ]"
+status=0
+rhoRiemannFoam -overwrite > log.serialOverwrite 2>&1 || status=$?
+check "rhoRiemannFoam serial -overwrite: runs, no processor time after the start left" \
+    "[ $status -eq 0 ] && [ -d 1e-08 ] && [ ! -e processor0/5e-09 ] && [ ! -e processor1/1e-08 ]"
 
 exit $fail
