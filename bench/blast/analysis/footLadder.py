@@ -48,24 +48,12 @@ import numpy as np
 from neuronFsi import damageIndicators
 from neuronFsi.solidResults import SolidResults
 
-NAMES = ["nucleus", "cytoplasm", "membrane"]   # cellMesh's region order
 _loader = importlib.machinery.SourceFileLoader(
     "interfaceTop", os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                  "interfaceTop.py"))
 _spec = importlib.util.spec_from_loader("interfaceTop", _loader)
 T = importlib.util.module_from_spec(_spec)
 _loader.exec_module(T)
-
-
-def band(conn, reg, a, b):
-    ra, rb = NAMES.index(a), NAMES.index(b)
-    inA = np.zeros(conn.max() + 1, bool)
-    inB = np.zeros_like(inA)
-    inA[conn[reg == ra].ravel()] = True
-    inB[conn[reg == rb].ravel()] = True
-    return np.array([e for e in range(len(conn))
-                     if (reg[e] == ra and inB[conn[e]].any())
-                     or (reg[e] == rb and inA[conn[e]].any())])
 
 
 def footMeasures(case, t0, t1, near, away):
@@ -78,14 +66,14 @@ def footMeasures(case, t0, t1, near, away):
         x, y = X[conn][:, :, 0], X[conn][:, :, 1]
         area = 0.5*np.abs(np.sum(x*np.roll(y, -1, 1) - np.roll(x, -1, 1)*y,
                                  axis=1))
-        mem = np.unique(conn[reg == NAMES.index("membrane")].ravel())
+        mem = np.unique(conn[reg == T.NAMES.index("membrane")].ravel())
         base = mem[np.abs(X[mem, 1]) < 1e-12]
         if len(base) == 0:
             raise SystemExit(f"{case}: no membrane node on z = 0")
         P = X[base[np.argmax(X[base, 0])]]
-        els = band(conn, reg, "membrane", "cytoplasm")
+        els = T.band(conn, reg, "membrane", "cytoplasm")
         dist = np.linalg.norm(C[els] - P, axis=1)
-        memBand = els[reg[els] == NAMES.index("membrane")]
+        memBand = els[reg[els] == T.NAMES.index("membrane")]
         memDist = np.linalg.norm(C[memBand] - P, axis=1)
         foot = memBand[np.argmin(memDist)]
         nearEls = memBand[memDist <= near*1e-6]
