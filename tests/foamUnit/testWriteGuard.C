@@ -217,6 +217,32 @@ TEST(writeGuard, restartLogDigestContinuesToTheWholeFile)
 }
 
 
+// A commit marker is a commit only with its record: empty (adv38 x33) or,
+// for a record that says it ends with "end", cut short before that line
+// (adv39 y12, y16: only the files still listed were checked); a record of
+// an earlier build (no "ended") is taken as it is
+TEST(writeGuard, commitMarkerCutShortIsNoCommit)
+{
+    foamUnit::testCase tc("writeGuardMarkerCut");
+    const fileName dir(tc.dir()/"1e-09");
+    const auto recorded = [&](const std::string& text)
+    {
+        tc.writeFile("1e-09/.writeCommitted", text);
+        return foamTools::writeGuard::commitRecorded(dir);
+    };
+    const std::string head("1e-09\ndigest fnv1a64 ended\n");
+    const std::string files("file 1a2b 10 p\nfile 3c4d 20 U\n");
+    EXPECT_FALSE(recorded(""));
+    EXPECT_FALSE(recorded("1e-09\n"));
+    EXPECT_FALSE(recorded(head));
+    EXPECT_FALSE(recorded(head + "file 1a2b 10 p\n"));
+    EXPECT_FALSE(recorded(head + files + "en"));
+    EXPECT_TRUE(recorded(head + files + "end\n"));
+    EXPECT_TRUE(recorded(head + files + "log 5e6f 30 postProcessing/x\nend\n"));
+    EXPECT_TRUE(recorded("1e-09\ndigest fnv1a64\n" + files));
+}
+
+
 // The directory the run writes its times into removed and made again
 // while it runs (OpenFOAM's decomposePar -force on the processor
 // directories, adv37 w13): the next step stops with a FatalError naming

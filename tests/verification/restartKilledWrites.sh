@@ -84,6 +84,24 @@ grep -q "writeGuard: time directory .*$cut\" is incomplete (its .writeCommitted 
 same b2 || exit 1
 echo "restartKilledWrites: (b2) $cut s with an empty commit marker moved aside, final fields bitwise equal"
 
+# (b3) the same with the marker cut short instead of emptied: its first
+# three lines kept (time, digest line, one file line), no closing "end"
+# line (adv39 y12, y16: taken as a commit, only the files it still listed
+# were checked, the run continued from the damaged p)
+setup b3
+for t in "${times[@]:0:3}"; do cp -r "$work/a/$t" "$work/b3/"; done
+cp -r "$work/a/postProcessing" "$work/b3/"
+grep -q '^end$' "$work/a/$cut/.writeCommitted" \
+    || { echo "restartKilledWrites: (b3) the commit marker of $cut has no closing end line"; exit 1; }
+head -n 3 "$work/a/$cut/.writeCommitted" > "$work/b3/$cut/.writeCommitted"
+cp "$work/b2/$cut.incomplete/p" "$work/b3/$cut/p"
+( cd "$work/b3" && rhoRiemannFoam > log.1 )
+grep -q "writeGuard: time directory .*$cut\" is incomplete (its .writeCommitted marker is empty or cut short" "$work/b3/log.1" \
+    || { echo "restartKilledWrites: (b3) the time $cut with a marker cut short was not moved aside naming it"; exit 1; }
+[ -d "$work/b3/$cut.incomplete" ] || { echo "restartKilledWrites: (b3) no $cut.incomplete"; exit 1; }
+same b3 || exit 1
+echo "restartKilledWrites: (b3) $cut s with a commit marker cut short moved aside, final fields bitwise equal"
+
 # (c) random SIGKILLs
 setup c
 kills=0
