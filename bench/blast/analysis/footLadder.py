@@ -63,9 +63,7 @@ def footMeasures(case, t0, t1, near, away):
         conn = f.mesh("connectivity")
         reg = f.mesh("region").ravel()
         C = X[conn].mean(axis=1)
-        x, y = X[conn][:, :, 0], X[conn][:, :, 1]
-        area = 0.5*np.abs(np.sum(x*np.roll(y, -1, 1) - np.roll(x, -1, 1)*y,
-                                 axis=1))
+        area = T.quadAreas(X, conn)
         mem = np.unique(conn[reg == T.NAMES.index("membrane")].ravel())
         base = mem[np.abs(X[mem, 1]) < 1e-12]
         if len(base) == 0:

@@ -33,6 +33,14 @@ def band(conn, reg, a, b):
                      or (reg[e] == rb and inA[conn[e]].any())])
 
 
+def quadAreas(X, conn):
+    """The areas [m^2] of the r-z quadrilaterals conn (node rows of X,
+    r and z first), by the shoelace formula."""
+    x, y = X[conn][:, :, 0], X[conn][:, :, 1]
+    return 0.5*np.abs(np.sum(x*np.roll(y, -1, 1) - np.roll(x, -1, 1)*y,
+                             axis=1))
+
+
 def patchMaximum(C, reg, els, vm, radius):
     """The largest, over the band elements els, of the mean von Mises of
     the band elements of the same region whose centroids C lie within
@@ -58,10 +66,7 @@ def main():
         conn = f.mesh("connectivity")
         reg = f.mesh("region").ravel()
         C = X[conn].mean(axis=1)
-        # r-z quads: the area by the shoelace formula
-        x, y = X[conn][:, :, 0], X[conn][:, :, 1]
-        area = 0.5*np.abs(np.sum(x*np.roll(y, -1, 1) - np.roll(x, -1, 1)*y,
-                                 axis=1))
+        area = quadAreas(X, conn)
         size = np.sqrt(area)
         pairs = [("membrane", "cytoplasm"), ("cytoplasm", "nucleus")]
         bands = {p: band(conn, reg, *p) for p in pairs}
