@@ -29,6 +29,15 @@ def waitFor(path, seconds=20):
 
 
 class CaseRuns(TempDirTestCase):
+    def startApplication(self):
+        """APP started on a new folder 'point': (folder, its Popen), once
+        its marker is written and its shell has started its sleep"""
+        folder = os.path.join(self.tmp, "point")
+        os.makedirs(folder)
+        app = subprocess.Popen([sys.executable, "-c", APP, folder])
+        waitFor(os.path.join(folder, caseRuns.MARKER))
+        time.sleep(0.3)                 # the shell has started its sleep
+        return folder, app
 
     def testMarkerOnlyWhileRunning(self):
         # the marker is written once the program runs (its group's id is
@@ -44,11 +53,7 @@ class CaseRuns(TempDirTestCase):
             os.path.join(self.tmp, caseRuns.MARKER)))
 
     def testRunLeftByAKilledApplication(self):
-        folder = os.path.join(self.tmp, "point")
-        os.makedirs(folder)
-        app = subprocess.Popen([sys.executable, "-c", APP, folder])
-        waitFor(os.path.join(folder, caseRuns.MARKER))
-        time.sleep(0.3)                 # the shell has started its sleep
+        folder, app = self.startApplication()
         app.kill()
         app.wait()
         with open(os.path.join(folder, caseRuns.MARKER)) as f:
@@ -80,11 +85,7 @@ class CaseRuns(TempDirTestCase):
     def testRunOfALiveApplicationIsNamedAsGoingOn(self):
         # adv37 w63: the run of an application still running was called
         # left by a killed one, with the advice to end its process group
-        folder = os.path.join(self.tmp, "point")
-        os.makedirs(folder)
-        app = subprocess.Popen([sys.executable, "-c", APP, folder])
-        waitFor(os.path.join(folder, caseRuns.MARKER))
-        time.sleep(0.3)                 # the shell has started its sleep
+        folder, app = self.startApplication()
         with open(os.path.join(folder, caseRuns.MARKER)) as f:
             pgid = int(f.read().split()[1])
         try:
