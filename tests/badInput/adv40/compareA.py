@@ -15,6 +15,16 @@ def norm(t):
     t = re.sub(r'\b\d+\.\d+ s\b', 'x s', t)
     t = re.sub(r'host [A-Za-z0-9_.-]+', 'host H', t)
     t = re.sub(r'\b\d{3,7}:', 'N:', t)
+    t = re.sub(r'at line \d+', 'at line L', t)
+    t = re.sub(r'(\[\d\] )? *From function .*', 'FROM', t)
+    t = re.sub(r'from line \d+ to line \d+', 'from line A to line B', t)
+    t = re.sub(r'line \d+: +\d+ (Killed|Terminated)', r'line L: N \1', t)
+    t = re.sub(r'\[left running after the case, SIGKILLed: [0-9 ]*\]\n', '', t)
+    t = re.sub(r' log\.[A-Za-z.]+\.status', '', t)
+    t = re.sub(r'sweep_s\d+', 'sweep_sN', t)
+    t = re.sub(r'[A-Z][a-z]{2} +\d+ \d\d:\d\d', 'MTIME', t)
+    t = re.sub(r'\b\d\d:\d\d:\d\d\b', 'HMS', t)
+    t = re.sub(r'(already run on \S+)( \(it ended: exit status \d+, \S+\))?: remove log( file)? .(log\.\S+?). to (re-run|run it again)', r'\1: remove \4', t)
     return t
 def same(a, b):
     """equal, line by line, up to where the shorter of two long lines was cut by the case (at a fixed width, before
@@ -42,7 +52,9 @@ verbose = '-v' in sys.argv; args = [a for a in sys.argv[1:] if a != '-v']
 files = ['%s/out/A/%s.txt' % (here, a) for a in args] if args else sorted(glob.glob(here + '/out/A/*.txt'))
 for f in files:
     k = os.path.basename(f)[:-4]; p, i = k.split('_', 1)
-    now = norm(open(f, errors='replace').read()); bs = base(p, i)
+    raw = open(f, errors='replace').read()
+    if '[case exit' not in raw: print(k, '(running)'); continue
+    now = norm(raw); bs = base(p, i)
     res = []
     for b in bs:
         old = norm(open(b, errors='replace').read())

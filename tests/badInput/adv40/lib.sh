@@ -13,3 +13,12 @@ nul() { local f; for f in "$@"; do head -c "$(stat -c %s "$f")" /dev/zero > "$f.
 changed() { sums > $W/.sumsNow; diff "$1" $W/.sumsNow | grep '^[<>]' | awk '{print $3}' | sort -u | tr '\n' ' '; echo; }
 h5steps() { /usr/bin/python3 -c "import h5py,sys; f=h5py.File(sys.argv[1],'r'); print(len(f['steps']))" "$1" 2>&1 | tail -1; }
 xmfsteps() { grep -c '<Time ' "$1" 2>/dev/null || echo 0; }
+#   tryf LABEL CMD... as try (60 s KILL timeout), but the message shown is the first FATAL/error block (3 lines), not the first line matching a word
+tryf() { local l=$1; shift; timeout -s KILL 60 "$@" > $W/try.log 2>&1; local rc=$?; echo "$l: rc=$rc | $(grep -a -m1 -A3 'FATAL\|error:\|Error\|Traceback\|refused' $W/try.log | grep -av '^ *$\|^-->\|From function\|^\[.\] *$' | head -3 | tr '\n' ' ' | cut -c1-420)"; }
+#   forceOk FILE    rows of a force.dat/peaks.dat-like file, NUL bytes, and whether its times (column 1) increase
+forceOk() { /usr/bin/python3 - "$1" <<'P'
+import sys
+b = open(sys.argv[1], 'rb').read(); t = [float(l.split()[0]) for l in b.decode('latin-1').splitlines() if l.strip() and not l.startswith('#') and '\0' not in l]
+print("%s: %d rows, %d NUL bytes, times increasing %s" % (sys.argv[1].split('/')[-1], len(t), b.count(b'\0'), all(x < y for x, y in zip(t, t[1:]))))
+P
+}

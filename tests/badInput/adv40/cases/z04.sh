@@ -3,10 +3,10 @@
 . "$(dirname "$0")/../lib.sh"
 blastDone; latest; blastEnd 3e-9 1e-9; cp -r . ../keep
 fresh() { cd $W; rm -rf $W/blast; cp -r $W/keep $W/blast; cd $W/blast; }
-nul 2e-09/.writeCommitted; try "(a) marker NUL" cellBlastFoam; echo "   dirs: $(ls -da [1-9]* 2>/dev/null | tr '\n' ' ')"
-fresh; nul 2e-09/p; try "(b) p NUL" cellBlastFoam; echo "   dirs: $(ls -da [1-9]* 2>/dev/null | tr '\n' ' ')"
-fresh; nul 2e-09/p 2e-09/.writeCommitted; try "(c) p and marker NUL" cellBlastFoam; echo "   dirs: $(ls -da [1-9]* 2>/dev/null | tr '\n' ' ')"
-fresh; nul 2e-09/uniform/time; try "(d) uniform/time NUL" cellBlastFoam; echo "   dirs: $(ls -da [1-9]* 2>/dev/null | tr '\n' ' ')"
+nul 2e-09/.writeCommitted; tryf "(a) marker NUL" cellBlastFoam; echo "   dirs: $(ls -da [1-9]* 2>/dev/null | tr '\n' ' ')"
+fresh; nul 2e-09/p; tryf "(b) p NUL" cellBlastFoam; echo "   dirs: $(ls -da [1-9]* 2>/dev/null | tr '\n' ' ')"
+fresh; nul 2e-09/p 2e-09/.writeCommitted; tryf "(c) p and marker NUL" cellBlastFoam; echo "   dirs: $(ls -da [1-9]* 2>/dev/null | tr '\n' ' ')"
+fresh; nul 2e-09/uniform/time; tryf "(d) uniform/time NUL" cellBlastFoam; echo "   dirs: $(ls -da [1-9]* 2>/dev/null | tr '\n' ' ')"
 fresh; f=postProcessing/fsi/0/coupling.dat; s=$(stat -c %s $f); /usr/bin/python3 -c "
 import sys; b=bytearray(open('$f','rb').read()); b[-300:]=b'\0'*300; open('$f','wb').write(b)"
-try "(e) coupling.dat tail NUL" cellBlastFoam; echo "   dirs: $(ls -da [1-9]* 2>/dev/null | tr '\n' ' '); NUL bytes in coupling.dat now: $(tr -cd '\000' < $f | wc -c)"
+tryf "(e) coupling.dat tail NUL" cellBlastFoam; echo "   dirs: $(ls -da [1-9]* 2>/dev/null | tr '\n' ' '); NUL bytes in coupling.dat now: $(tr -cd '\000' < $f | wc -c)"

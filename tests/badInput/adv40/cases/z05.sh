@@ -3,10 +3,9 @@
 . "$(dirname "$0")/../lib.sh"
 indKilled 0.3; cp -r . ../keep; P=postProcessing/indentation
 fresh() { cd $W; rm -rf $W/ind; cp -r $W/keep $W/ind; cd $W/ind; }
-chk() { echo "   NUL bytes: force.dat $(tr -cd '\000' < $P/force.dat | wc -c), peaks.dat $(tr -cd '\000' < $P/peaks.dat 2>/dev/null | wc -c); force.dat times increasing: $(/usr/bin/python3 -c "
-import numpy as np; a=np.loadtxt('$P/force.dat', comments='#'); print(bool((np.diff(a[:,0])>0).all()), len(a), 'rows')" 2>&1 | tail -1)"; }
-nul $P/restart.h5; try "(a) restart.h5 NUL" cellIndentationFoam; chk
+chk() { echo "   $(forceOk $P/force.dat); $(forceOk $P/peaks.dat)"; }
+nul $P/restart.h5; tryf "(a) restart.h5 NUL" cellIndentationFoam; chk
 fresh; /usr/bin/python3 -c "
-b=bytearray(open('$P/force.dat','rb').read()); b[-200:]=b'\0'*200; open('$P/force.dat','wb').write(b)"; try "(b) force.dat tail NUL" cellIndentationFoam; chk
-fresh; nul $P/solid.h5; try "(c) solid.h5 NUL" cellIndentationFoam; chk
-fresh; nul $P/peaks.dat; try "(d) peaks.dat NUL" cellIndentationFoam; chk
+b=bytearray(open('$P/force.dat','rb').read()); b[-200:]=b'\0'*200; open('$P/force.dat','wb').write(b)"; tryf "(b) force.dat tail NUL" cellIndentationFoam; chk
+fresh; nul $P/solid.h5; tryf "(c) solid.h5 NUL" cellIndentationFoam; chk
+fresh; nul $P/peaks.dat; tryf "(d) peaks.dat NUL" cellIndentationFoam; chk

@@ -6,8 +6,8 @@ blast; sed -i "s|#include \"\$PROJECT_DIR/etc/caseDicts/cellMaterials/textFactor
 cellBlastFoam > log.first 2>&1; echo "first run: $(tail -1 log.first)"
 n=$(grep -n -m1 -E '^\s+C10\s' $W/mine/cellMats | cut -d: -f1); echo "edit line $n: $(sed -n ${n}p $W/mine/cellMats)"; cp $W/mine/cellMats $W/mine/cellMats.orig
 sed -i "${n}s/C10\(\s*\)\([0-9.e+-]*\)/C10\1200/" $W/mine/cellMats; echo "   now: $(sed -n ${n}p $W/mine/cellMats)"
-latest; blastEnd 3e-9 1e-9; try "(a) blast restart" cellBlastFoam; echo "   times: $(ls -d [1-9]* | tr '\n' ' ')"
+latest; blastEnd 3e-9 1e-9; tryf "(a) blast restart" cellBlastFoam; echo "   times: $(ls -d [1-9]* | tr '\n' ' ')"
 cp $W/mine/cellMats.orig $W/mine/cellMats
 ind; sed -i 's/maxDepthIncrement 0.1e-6/maxDepthIncrement 0.01e-6/' constant/indenterProperties; sed -i "s|#include \"\$PROJECT_DIR/etc/caseDicts/cellMaterials/textFactor4\"|#include \"$W/mine/cellMats\"|" constant/solidProperties; grep -c "$W/mine" constant/solidProperties
 cellIndentationFoam > log.first 2>&1 & p=$!; waitFor 60 test -f postProcessing/indentation/restart.h5; sleep 0.3; kill -KILL $p; wait $p 2>/dev/null; latest
-sed -i "${n}s/C10\(\s*\)\([0-9.e+-]*\)/C10\1200/" $W/mine/cellMats; try "(b) indentation restart" cellIndentationFoam
+sed -i "${n}s/C10\(\s*\)\([0-9.e+-]*\)/C10\1200/" $W/mine/cellMats; tryf "(b) indentation restart" cellIndentationFoam

@@ -1,15 +1,18 @@
 #!/bin/bash
-# z29: solid.h5 damage that Fletcher-32 cannot see (a 16-bit word 0x0000 turned into 0xffff inside /steps/1/displacement's data; reliability.md: digest64 catches it): solidToFoam, the Python reader (neuronFsi.solidResults, used by pulseStudy's indicators), and a restart to 3 ns: each refused naming the file and dataset?
+# z29: solid.h5 damage that Fletcher-32 cannot see (a 16-bit word 0x0000 turned into 0xffff inside /steps/1/region's (or displacement's) data; reliability.md: digest64 catches it): solidToFoam, the Python reader (neuronFsi.solidResults, used by pulseStudy's indicators), and a restart to 3 ns: each refused naming the file and dataset?
 . "$(dirname "$0")/../lib.sh"
 blastDone; /usr/bin/python3 - solid/solid.h5 <<'P'
 import h5py, sys
-f = h5py.File(sys.argv[1], 'r'); d = f['steps/1/displacement']
-off = d.id.get_chunk_info(0).byte_offset if d.chunks else d.id.get_offset(); n = d.id.get_storage_size(); f.close()
-b = bytearray(open(sys.argv[1], 'rb').read())
-for k in range(off, off + n - 8, 8):       # each double: its low 16-bit word (mantissa) 0x0000 -> 0xffff
-    if b[k:k+2] == b'\0\0' and any(b[k+2:k+8]):
-        b[k:k+2] = b'\xff\xff'; open(sys.argv[1], 'wb').write(b); print("swapped the word at byte", k, "of", sys.argv[1]); break
-else: print("no such word found")
+f = h5py.File(sys.argv[1], 'r'); done = False
+for name, size in (('steps/1/region', 4), ('steps/1/displacement', 8)):
+    d = f[name]; off = d.id.get_chunk_info(0).byte_offset if d.chunks else d.id.get_offset(); n = d.id.get_storage_size()
+    b = bytearray(open(sys.argv[1], 'rb').read())
+    for k in range(off, off + n - size + 1, size):   # a value whose low 16-bit word is 0x0000 -> 0xffff (Fletcher-32 sums words mod 65535)
+        if b[k:k+2] == b'\0\0':
+            b[k:k+2] = b'\xff\xff'; open(sys.argv[1], 'wb').write(b); print("swapped the low word of the value at byte", k, "of", name); done = True; break
+    if done: break
+f.close()
+if not done: print("no such word found")
 P
 try "solidToFoam" solidToFoam solid/solid.h5
 PYTHONPATH=$ROOT/src/python try "neuronFsi.solidResults field(1, displacement)" /usr/bin/python3 -c "
