@@ -15,7 +15,7 @@ f.close()
 if not done: print("no such word found")
 P
 try "solidToFoam" solidToFoam solid/solid.h5
-PYTHONPATH=$ROOT/src/python try "neuronFsi.solidResults field(1, displacement)" /usr/bin/python3 -c "
+PYTHONPATH=$ROOT/src/python try "neuronFsi.solidResults field(1, region)" /usr/bin/python3 -c "
 from neuronFsi.solidResults import SolidResults
-with SolidResults('solid/solid.h5') as r: v = r.field(r.steps()[1] if not isinstance(r.steps(), int) else 1, 'displacement'); print('read', v.shape)"
+with SolidResults('solid/solid.h5') as r: v = r.field(1, 'region'); print('read', v.shape)"
 latest; blastEnd 3e-9 1e-9; try "restart" cellBlastFoam
