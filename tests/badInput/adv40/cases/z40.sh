@@ -1,0 +1,6 @@
+#!/bin/bash
+# z40: x54 for the blast (fix19u's brief: "the same check for cellBlastFoam's fresh start"): a FRESH cellBlastFoam on a full file system (a tmpfs holding the case, filled to 8 kB free), the user's postProcessing/myPlots/a.png beside; then the space freed and a plain start: refused naming the full disk first? the user's file kept? the second start runs (or says -overwrite and why)?
+. "$(dirname "$0")/../lib.sh"
+blast; mkdir -p postProcessing/myPlots; echo png > postProcessing/myPlots/a.png; mkdir -p $W/fs; sz=$(( $(du -sk . | cut -f1) + 3000 )); mount -t tmpfs -o size=${sz}k tmpfs $W/fs || { echo "no tmpfs"; exit 0; }; cp -r . $W/fs/c; cd $W/fs/c; fill=$(( $(stat -f -c '%a*%S' . ) - 8192 )); head -c $(( fill )) /dev/zero > ../dummy 2>/dev/null; df -k . | tail -1
+run 100 cellBlastFoam > ../log.r 2>&1; grep -a -i -m3 "space\|FATAL\|error\|cannot" ../log.r | cut -c1-300; echo "left: $(find . -newer system/controlDict -type f ! -name 'log.*' | sort | tr '\n' ' ' | cut -c1-400)"
+rm -f ../dummy; run 100 cellBlastFoam > ../log.r2 2>&1; tail -1 ../log.r2; fatal ../log.r2 4; echo "times: $(ls -d [1-9]* 2>/dev/null | tr '\n' ' '); a.png: $(cat postProcessing/myPlots/a.png 2>/dev/null || echo GONE)"; cd $W; umount $W/fs
