@@ -68,9 +68,36 @@ class Parse(unittest.TestCase):
         self.assertIn("beyond the range of a number",
                       self.error(["-h", "1e400"]))
         self.assertIn("is not a whole number", self.error(["-np", "abc"]))
-        self.assertIn("is not a whole number", self.error(["-np", "2.0"]))
+        # a whole number with an exponent or a decimal point: said so,
+        # with the range (adv38 x65: "'1e9' is not a whole number")
+        self.assertEqual(self.error(["-np", "2.0"]),
+                         "option -np = '2.0' is written with an exponent or "
+                         "a decimal point (2): write the whole number with "
+                         "digits only (valid: a whole number in [1, inf))")
+        self.assertIn("option -np = '1e9' is written with an exponent or a "
+                      "decimal point (1000000000)", self.error(["-np", "1e9"]))
+        self.assertIn("'2.5' is written with an exponent or a decimal point:"
+                      " write", self.error(["-np", "2.5"]))
         self.assertIn("-np = 0 is outside the valid range [1, inf)",
                       self.error(["-np", "0"]))
+
+    def testSolidSubcyclesRangeIsTheSolvers(self):
+        # adv38 x65, adv39 y15: the preview Allrun took -solidSubcycles in
+        # [1, inf), fsiProperties' coupling{} solidSubcycles [1, 1000]
+        # (3000 passed the Allrun, then the solver refused it): one range
+        src = open(os.path.join(ROOT, "src", "fsi", "fluidSolidInteraction",
+                                "fluidSolidInteraction.C")).read()
+        import re
+        m = re.search(r'"solidSubcycles", "", (\d+), (\d+), true', src)
+        self.assertTrue(m)
+        o = ao.allrunDeclaration(os.path.join(
+            ROOT, "tutorials", "blast", "axisymmetricPreview"))
+        self.assertEqual(o["-solidSubcycles"].interval,
+                         "[%s, %s]" % (m.group(1), m.group(2)))
+        with self.assertRaises(ao.OptionError) as c:
+            ao.parse(o, ["-solidSubcycles", "3000"])
+        self.assertEqual(str(c.exception), "option -solidSubcycles = 3000 "
+                         "is outside the valid range [1, 1000]")
 
     def testBelowTheReaderRange(self):
         # adv33 ar01: -endTime 1e-301 accepted, read as 0 by OpenFOAM and

@@ -127,6 +127,20 @@ class Option:
                 % (self.name, text, self.valid(),
                    foamDict.did_you_mean(text, self.words)))
         pattern = INTEGER if self.kind == "integer" else NUMBER
+        if self.kind == "integer" and NUMBER.match(text):
+            # a whole number with an exponent or a decimal point (1e3,
+            # 2.0) is a number the solvers' readers do not take as an
+            # integer: said so, with the range (adv38 x65: "'1e9' is not
+            # a whole number")
+            x = float(text)
+            if not INTEGER.match(text):
+                raise OptionError(
+                    "option %s = '%s' is written with an exponent or a "
+                    "decimal point%s: write the whole number with digits "
+                    "only (valid: %s)"
+                    % (self.name, text, " (%d)" % x if math.isfinite(x)
+                       and x == int(x) and abs(x) < 1e18 else "",
+                       self.valid()))
         if not pattern.match(text):
             raise OptionError(
                 "option %s = '%s' is not %s (valid: %s)"

@@ -1,5 +1,6 @@
 #include "IndentationDriver.H"
 #include <sstream>
+#include "AtomicFile.H"
 #include "Checkpoint.H"
 #include "SolidError.H"
 #include "fileDigest.H"
@@ -228,6 +229,7 @@ void solid::IndentationDriver::openOutputs()
         (
             SolidError::Kind::io, "cannot open " + path("force.dat")
           + " and " + path("peaks.dat") + " for writing"
+          + spaceNote(path("force.dat"))
         );
     }
 }

@@ -1,4 +1,5 @@
 #include "Hdf5File.H"
+#include "AtomicFile.H"
 #include "SolidError.H"
 
 #include "FileKind.H"
@@ -57,7 +58,8 @@ hid_t openFile(const std::string& name, solid::Hdf5File::Mode mode)
             solid::SolidError::Kind::io, "cannot "
           + std::string(mode == Mode::create ? "create" : "open")
           + " HDF5 file '" + name + "'"
-          + (mode == Mode::create ? ""
+          // a full disk or an unwritable folder named (adv38 x54)
+          + (mode == Mode::create ? solid::spaceNote(name)
              : " (missing, truncated, damaged or not HDF5)")
         );
     }
