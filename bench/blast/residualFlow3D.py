@@ -46,7 +46,7 @@ import numpy as np
 from neuronFsi import foamField as ff
 
 RHO = 1000.0
-A, H = 9.5e-6, 8.5e-6       # the cell's semi-axes (radius, height) [m]
+A, H = 8.4e-6, 7.9e-6         # the cell's semi-axes (radius, height) [m]
 
 
 def hexVolumes(X, C):
