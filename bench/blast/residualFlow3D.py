@@ -3,6 +3,7 @@
 docs/results/blast3D.md, "What makes the rest flow in 3D"); not a test.
 
     bench/blast/residualFlow3D.py CASE [--after 7.5e-8] [--fluid T ...]
+                                       [--vorticity T ...] [--faces]
 
 CASE: a finished run of tutorials/blast/quarter3D (hexahedral cell,
 solid/solid.h5 with the states at the case's write times). In the exact
@@ -31,6 +32,20 @@ within 1.5 um of the cell (ellipsoidal distance d < 1.2), split as the
 solid's by azimuth zone; the rest of the inner box (z < 12 um); the
 column above (12-20 um; the planeWaveInflow top at 20 um), and the
 axisymmetric share of the band's kinetic energy.
+
+--vorticity T ...: where the water's vorticity is (exact: none; an
+inviscid water keeps what the scheme makes): at each time the enstrophy
+(1/2 |curl U|^2 V, OpenFOAM's vorticity function object) by bins of r
+and z, its share in the cells of each band of the mesh's largest face
+non-orthogonality (checkMesh -writeFields nonOrthoAngle, on the case's
+constant mesh), and the twelve cells that hold the most, with their
+position, size V^(1/3), |curl U| and non-orthogonality; the crest of the
+pressure (where the front is) for orientation.
+
+--faces: the water's faces on the cell (patch cellInterface, from
+`surfaceMeshExtract` in a scratch copy) by the polar angle of their
+centre on the cell (0 at the top, atan2(r/a, z/H), a = 8.4 um, H =
+7.9 um): count and mean extent along the meridian and along the azimuth.
 """
 
 import argparse
@@ -196,15 +211,131 @@ def fluid(case, times):
         print("   band: axisymmetric / rest %.3g / %.3g J" % (ka, kn))
 
 
+def postFields(case, t, funcs):
+    """Cell centres, volumes and the fields of funcs at time t, from a
+    scratch copy of the case (the case is not written to)."""
+    tmp = tempfile.mkdtemp()
+    try:
+        for s in ("constant", "system", t):
+            shutil.copytree(os.path.join(case, s), os.path.join(tmp, s))
+        subprocess.run(["postProcess", "-case", tmp, "-time", t, "-funcs",
+                        "(writeCellCentres writeCellVolumes %s)"
+                        % " ".join(funcs)], check=True, capture_output=True)
+        out = {n: ff.internalField(os.path.join(tmp, t, n))
+               for n in ["C", "V"] + list(funcs) + ["p"]}
+    finally:
+        shutil.rmtree(tmp)
+    return out
+
+
+def nonOrthogonality(case):
+    tmp = tempfile.mkdtemp()
+    try:
+        for s in ("constant", "system"):
+            shutil.copytree(os.path.join(case, s), os.path.join(tmp, s))
+        os.makedirs(os.path.join(tmp, "0"))
+        subprocess.run(["checkMesh", "-case", tmp, "-constant",
+                        "-writeFields", "(nonOrthoAngle)"], check=True,
+                       capture_output=True)
+        return ff.internalField(os.path.join(tmp, "constant",
+                                             "nonOrthoAngle"))
+    finally:
+        shutil.rmtree(tmp)
+
+
+def vorticity(case, times):
+    no = nonOrthogonality(case)
+    for t in times:
+        f = postFields(case, t, ["vorticity"])
+        C, V, W, p = f["C"], f["V"], f["vorticity"], f["p"]
+        ens = 0.5*V*(W*W).sum(1)
+        E = ens.sum()
+        r = np.hypot(C[:, 0], C[:, 1])
+        print("water at %s s: enstrophy %.3g m^3/s^2; pressure crest at "
+              "z = %.2f um" % (t, E, C[np.argmax(p), 2]*1e6))
+        print("   share by r [um] (rows) and z [um] (columns 0-4, 4-8, "
+              "8-12, 12-16, 16-20):")
+        for lo, hi in ((0, 5), (5, 10), (10, 14), (14, 20), (20, 30),
+                       (30, 80)):
+            sr = (r >= lo*1e-6) & (r < hi*1e-6)
+            print("     r %2d-%2d: %s" % (lo, hi, " ".join(
+                "%.3f" % (ens[sr & (C[:, 2] >= z*1e-6)
+                              & (C[:, 2] < (z + 4)*1e-6)].sum()/E)
+                for z in range(0, 20, 4))))
+        print("   by the cell's largest face non-orthogonality [deg]: "
+              "cells, enstrophy share, mean |curl U| [1/s]")
+        for lo in range(0, 90, 10):
+            s = (no >= lo) & (no < lo + 10)
+            if s.sum():
+                print("     %2d-%2d: %5d %.3f %.3g" % (
+                    lo, lo + 10, s.sum(), ens[s].sum()/E,
+                    np.linalg.norm(W[s], axis=1).mean()))
+        print("   the cells with the most: x, y, z [um], V^(1/3) [um], "
+              "|curl U| [1/s], share, non-orthogonality [deg]")
+        for i in np.argsort(-ens)[:12]:
+            print("     %6.2f %6.2f %6.2f  %.2f  %.3g  %.3f  %.1f"
+                  % (C[i, 0]*1e6, C[i, 1]*1e6, C[i, 2]*1e6,
+                     np.cbrt(V[i])*1e6, np.linalg.norm(W[i]),
+                     ens[i]/E, no[i]))
+
+
+def faces(case):
+    tmp = tempfile.mkdtemp()
+    try:
+        for s in ("constant", "system"):
+            shutil.copytree(os.path.join(case, s), os.path.join(tmp, s))
+        os.makedirs(os.path.join(tmp, "0"))
+        subprocess.run(["surfaceMeshExtract", "-case", tmp, "-constant",
+                        "-patches", "(cellInterface)", "ci.obj"],
+                       check=True, capture_output=True)
+        V, F = [], []
+        for line in open(os.path.join(tmp, "ci_0.obj")):
+            if line.startswith("v "):
+                V.append([float(x) for x in line.split()[1:4]])
+            elif line.startswith("f "):
+                F.append([int(x.split("/")[0]) - 1
+                          for x in line.split()[1:]])
+    finally:
+        shutil.rmtree(tmp)
+    P = np.array(V)
+    rows = []
+    for idx in F:
+        X = P[idx]
+        c = X.mean(0)
+        r = np.hypot(c[0], c[1])
+        et = (np.array([-c[1], c[0], 0])/r if r > 1e-12
+              else np.array([0, 1.0, 0]))
+        n = np.array([c[0]/A**2, c[1]/A**2, c[2]/H**2])
+        tm = np.cross(et, n/np.linalg.norm(n))
+        tm /= np.linalg.norm(tm)
+        rows.append((np.degrees(np.arctan2(r/A, c[2]/H)), np.ptp(X @ tm),
+                     np.ptp(X @ et)))
+    rows = np.array(rows)
+    print("%d water faces on the cell; polar angle [deg]: count, mean "
+          "extent along the meridian / the azimuth [um]" % len(F))
+    for lo in range(0, 90, 10):
+        s = (rows[:, 0] >= lo) & (rows[:, 0] < lo + 10)
+        if s.sum():
+            print("   %2d-%2d: %4d  %.2f / %.2f" % (
+                lo, lo + 10, s.sum(), 1e6*rows[s, 1].mean(),
+                1e6*rows[s, 2].mean()))
+
+
 def main():
     a = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     a.add_argument("case")
     a.add_argument("--after", type=float, default=7.5e-8)
     a.add_argument("--fluid", nargs="+", default=None)
+    a.add_argument("--vorticity", nargs="+", default=None)
+    a.add_argument("--faces", action="store_true")
     o = a.parse_args()
     case = os.path.abspath(o.case)
     if o.fluid:
         return fluid(case, o.fluid)
+    if o.vorticity:
+        return vorticity(case, o.vorticity)
+    if o.faces:
+        return faces(case)
     return solid(case, o.after)
 
 
