@@ -339,6 +339,97 @@ TEST(interfaceMap, projection3DUniformPressureGivesConsistentForces)
 }
 
 
+TEST(interfaceMap, pressureQuadratureConvergesToTheOverlapAverage)
+{
+    // load pressure in 3D with fluid faces coarser than the solid's (the
+    // quarter's pole cap: 1-1.6 um water faces on 0.3-1 um membrane
+    // faces): each solid face takes the area average of the fluid
+    // pressure at the quadrature points that fall on it, a face with none
+    // its nearest face's. Exact: the overlap average of the fluid's
+    // piecewise-constant pressure over each solid face. With the
+    // triangles' centroids alone (pressureQuadrature 1) most of the 5 x 5
+    // solid faces under the 2 x 2 fluid faces are sampled off or not at
+    // all; nSub^2 subtriangles per triangle converge to the overlap
+    // average (first order in 1/nSub: the subtriangles straddling a solid
+    // face's edge)
+    const label nyF = 3, nzF = 2, nyS = 7, nzS = 5;
+    case3D c(nyF, nzF, nyS, nzS);
+    const scalar p0 = 5e7;
+    // Fluid face pressures: distinct, p0 (1 + j + 2 k)/4 for face (j, k)
+    const label patchi = c.fluid->boundaryMesh().findPatchID("interface");
+    const vectorField Cf(c.fluid->Cf().boundaryField()[patchi]);
+    const vectorField Sf(c.Sf());
+    scalarField pF(Sf.size());
+    forAll(pF, f)
+    {
+        const label j = std::floor(Cf[f].y()/(L/nyF));
+        const label k = std::floor(Cf[f].z()/(L/nzF));
+        pF[f] = p0*(1 + j + 2*k)/4;
+    }
+    // Exact nodal forces: each solid face's overlap average, p hy hz/4 on
+    // its four nodes along +x
+    const scalar hy = L/nyS, hz = L/nzS;
+    const auto overlap = [](scalar a0, scalar a1, scalar b0, scalar b1)
+    {
+        return max(scalar(0), min(a1, b1) - max(a0, b0));
+    };
+    const auto exactForces = [&](const interfaceMap& map)
+    {
+        scalarField f(map.nDofs(), Zero);
+        forAll(map.nodes(), i)
+        {
+            const solid::Vec3& X = c.solid.X[map.nodes()[i]];
+            const label jn = std::lround(X[1]/hy), kn = std::lround(X[2]/hz);
+            for (label js = jn - 1; js <= jn; ++js)
+            for (label ks = kn - 1; ks <= kn; ++ks)
+            {
+                if (js < 0 || js >= nyS || ks < 0 || ks >= nzS) continue;
+                scalar P = 0;
+                forAll(pF, ff)
+                {
+                    const scalar y0 = L/nyF*std::floor(Cf[ff].y()/(L/nyF));
+                    const scalar z0 = L/nzF*std::floor(Cf[ff].z()/(L/nzF));
+                    P += pF[ff]
+                       *overlap(js*hy, (js + 1)*hy, y0, y0 + L/nyF)
+                       *overlap(ks*hz, (ks + 1)*hz, z0, z0 + L/nzF);
+                }
+                f[3*i] += P/4;
+            }
+        }
+        return f;
+    };
+    const scalar scale = p0*hy*hz;
+    scalarField err(12);
+    forAll(err, n)
+    {
+        dictionary dict(usageDict());
+        dict.set("load", word("pressure"));
+        dict.set("pressureQuadrature", label(n + 1));
+        const interfaceMap map(c.patch(), c.solid, dict);
+        err[n] = maxRelDiff
+        (
+            map.nodalPressureForces
+            (
+                vectorField(pF*Sf), Sf, scalarField(map.nDofs(), Zero)
+            ),
+            exactForces(map),
+            scale
+        );
+    }
+    // Reference values (some nSub fall exactly on the solid faces' edges
+    // for these commensurate grids: the error is not monotonic)
+    gold().check("pressureLoad3D.overlapAverage.nSub1.relError", err[0]);
+    gold().check("pressureLoad3D.overlapAverage.nSub12.relError", err[11]);
+    // Convergence (first order, not monotonic): from nSub 8 on, below a
+    // fifth of the centroids' error
+    EXPECT_GT(err[0], 0.03);
+    for (label n = 7; n < 12; ++n)
+    {
+        EXPECT_LT(err[n], 0.2*err[0]) << "nSub " << n + 1;
+    }
+}
+
+
 namespace
 {
 
@@ -655,6 +746,34 @@ TEST(interfaceMap, rzPressureLoadRingForces)
 }
 
 
+TEST(interfaceMap, rzRefusesPressureQuadrature)
+{
+    // The r-z force quadrature is two segments of two Gauss points per
+    // face: pressureQuadrature (3D) other than 1 is refused there
+    caseRz c(true, 3, 5);
+    dictionary dict(c.dict(true));
+    dict.name() = "constant/fsiProperties/interface";
+    dict.set("load", word("pressure"));
+    dict.set("pressureQuadrature", label(1));
+    EXPECT_NO_THROW(interfaceMap(c.patch(), c.solid, dict));
+    dict.set("pressureQuadrature", label(4));
+    try
+    {
+        interfaceMap map(c.patch(), c.solid, dict);
+        ADD_FAILURE() << "accepted";
+    }
+    catch (const Foam::IOerror& err)
+    {
+        EXPECT_EQ(err.ioFileName(), "constant/fsiProperties/interface");
+        EXPECT_NE
+        (
+            err.message().find("pressureQuadrature 4 is for 3D"),
+            std::string::npos
+        ) << err.message();
+    }
+}
+
+
 TEST(interfaceMap, badDictionariesNameTheEntry)
 {
     case3D c(3, 4, 5, 3);
@@ -680,6 +799,16 @@ TEST(interfaceMap, badDictionariesNameTheEntry)
             {
                 "load", "projection",
                 {"load projection is now 'load mappedForces'", "pressure"}
+            },
+            badCase
+            {
+                "pressureQuadrature", "0",
+                {"entry 'pressureQuadrature' = 0", "[1, 16]"}
+            },
+            badCase
+            {
+                "pressureQuadrature", "17",
+                {"entry 'pressureQuadrature' = 17", "[1, 16]"}
             }
         }
     )

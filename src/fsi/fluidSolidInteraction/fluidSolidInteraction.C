@@ -35,7 +35,8 @@ const Foam::dictionary& checkedInterfaceDict
         interfaceDict,
         {
             "fluidPatch", "solidFaceSet", "mapTolerance", "map", "load",
-            "axisOrigin", "axisDirection", "motionDistance", "motionNearest"
+            "axisOrigin", "axisDirection", "motionDistance", "motionNearest",
+            "pressureQuadrature"
         }
     );
     return interfaceDict;

@@ -303,6 +303,7 @@ Foam::scalarField Foam::interfaceMap::faceSizes
 void Foam::interfaceMap::quadrature3D
 (
     const globalInterfacePatch& fluidPatch,
+    const label nSub,
     vectorField& xs,
     pointField& pts
 )
@@ -320,9 +321,39 @@ void Foam::interfaceMap::quadrature3D
             const point& a = lp[f[k]];
             const point& b = lp[f[f.fcIndex(k)]];
             const scalar area = 0.5*mag((a - Cf[facei]) ^ (b - Cf[facei]));
-            qp.append((Cf[facei] + a + b)/3);
-            quadFace_.append(facei);
-            quadWeight_.append(area);
+            if (nSub == 1)
+            {
+                qp.append((Cf[facei] + a + b)/3);
+                quadFace_.append(facei);
+                quadWeight_.append(area);
+            }
+            else
+            {
+                // nSub^2 equal subtriangles of (Cf, a, b): on the grid
+                // Cf + i/n (a - Cf) + j/n (b - Cf), the nSub (nSub + 1)/2
+                // upright ones (i + j <= n - 1) and the nSub (nSub - 1)/2
+                // inverted ones (i + j <= n - 2); their centroids
+                const vector ea = (a - Cf[facei])/(3*nSub);
+                const vector eb = (b - Cf[facei])/(3*nSub);
+                for (label i = 0; i < nSub; ++i)
+                {
+                    for (label j = 0; i + j < nSub; ++j)
+                    {
+                        qp.append(Cf[facei] + (3*i + 1)*ea + (3*j + 1)*eb);
+                        quadFace_.append(facei);
+                        quadWeight_.append(area/(nSub*nSub));
+                        if (i + j < nSub - 1)
+                        {
+                            qp.append
+                            (
+                                Cf[facei] + (3*i + 2)*ea + (3*j + 2)*eb
+                            );
+                            quadFace_.append(facei);
+                            quadWeight_.append(area/(nSub*nSub));
+                        }
+                    }
+                }
+            }
             total += area;
         }
         for (label q = start; q < qp.size(); ++q)
@@ -835,6 +866,20 @@ Foam::interfaceMap::interfaceMap
         dict, "mapTolerance", "", 0, foamTools::noUpperBound<scalar>(), false,
         0.1
     );
+    // Subtriangles per side of each fluid face triangle in the 3D force
+    // quadrature (the pressure load's samples of the fluid pressure on the
+    // solid faces); 1: the triangles' centroids
+    const label pressureQuadrature = foamTools::readInRangeOrDefault<label>
+    (
+        dict, "pressureQuadrature", "", 1, 16, true, 1
+    );
+    if (axisymmetric_ && pressureQuadrature != 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "pressureQuadrature " << pressureQuadrature << " is for 3D "
+            << "solid meshes (the r-z quadrature is two segments of two "
+            << "Gauss points per face); remove the entry" << exit(FatalIOError);
+    }
     if (fluidPatch.empty())
     {
         FatalIOErrorInFunction(dict)
@@ -946,7 +991,7 @@ Foam::interfaceMap::interfaceMap
         }
         else
         {
-            quadrature3D(fluidPatch, xs, pts);
+            quadrature3D(fluidPatch, pressureQuadrature, xs, pts);
         }
         quadStencil_ = projectAll
         (
