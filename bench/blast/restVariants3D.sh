@@ -14,6 +14,10 @@
 #                      interface/load=mappedForces)
 #   amplitude=PA       the pulse's 50 MPa replaced by PA in 0.orig/p (and
 #                      in the Allrun's pulse edit) before Allrun
+#   membrane=water     the membrane's quadratic law (paper eq. 2) replaced
+#                      by water's Mie-Grueneisen law, as nucleus and
+#                      cytoplasm have: the transparent cell, whose exact
+#                      answer is the 1D plane wave, at rest after it
 # For each setting DIR/LABEL holds the case; prints the time loop's CPU,
 # the planeWave -check lines of the solid probes and its FAIL lines (each
 # case its own 1D answer: the amplitude may differ). Niced (10), one run
@@ -48,6 +52,9 @@ do
     do
         case $e in
         amplitude=*) ;;
+        membrane=water)
+            python3 -m neuronFsi.membraneLaw water \
+                "$case/constant/solidProperties" || ok=no ;;
         *:*=*)
             file=${e%%:*} rest=${e#*:}
             foamDictionary -entry "${rest%%=*}" -set "${rest#*=}" \
