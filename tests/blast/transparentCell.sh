@@ -17,7 +17,7 @@
 #   the solid's von Mises and strain 1-ns peaks  8 / 6 % (+7.46 / +5.36 %)
 # A scene whose cell scatters (the membrane's quadratic law: +14 % on the
 # axis) or whose numerics depart from the 1D wave by more fails. About
-# 50 s on an idle core.
+# 50 s wall on a quiet machine (217 s with it loaded 8-10 times over).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
