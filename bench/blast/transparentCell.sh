@@ -1,0 +1,79 @@
+#!/bin/bash
+# transparentCell.sh DIR SCALE LAW [Allrun options]: the axisymmetric
+# preview (a copy in DIR, tests/blast/runPreview.sh) at mesh level xSCALE
+# (-h 0.25e-6 SCALE, -far 1e-6 SCALE, -dz 0.25e-6 SCALE, -cell 0.5e-6
+# SCALE: the ladder of docs/results/blastPlaneWave.md, "The default at
+# x0.7"), with water probes at z = 10 um, r = 0.1, 1, 2, 4, 8 um, and
+# LAW:
+#   water  the transparent cell: the membrane's quadratic law (paper eq. 2)
+#          replaced by water's Mie-Grueneisen law (nucleus and cytoplasm
+#          have it already, every region rho0 1000 kg/m^3): the whole
+#          scene is water to its shear moduli (1e2 Pa against K = 2 GPa),
+#          so the water-only 1D column is its exact answer;
+#   posed  the tutorial's cell as it is.
+# Then cellBlastFoam, planeWave -check (DIR/axisymmetricPreview/
+# log.planeWaveCheck) and, for posed, planeWave -check -layered
+# (log.planeWaveLayered). Prints the water cells, the time loop's CPU and
+# the check's table. MEMBRANE_LAYERS (environment, optional): the
+# membrane's elements across its 200 nm (cellMeshDict membraneLayers; the
+# tutorial's 1 at every level), the cell's mesh written again with it.
+# Issue 17 item 1 (docs/results/blastPlaneWave.md, "The transparent
+# cell"); tests/blast/transparentCell.sh runs it at x1. Example:
+#   bench/blast/transparentCell.sh /tmp/t07 0.7 water -pulse 1e-8 -endTime 9e-8
+set -euo pipefail
+[ $# -ge 3 ] || { sed -n 2,24p "$0"; exit 1; }
+here=$(cd "$(dirname "$0")" && pwd)
+. "$here/../../etc/bashrc"
+dir=$1; scale=$2; law=$3; shift 3
+case $law in water|posed) ;; *) echo "transparentCell.sh: LAW $law: water or posed" >&2; exit 1 ;; esac
+size() { /usr/bin/python3 -c "import sys; print('%.6g' % (float(sys.argv[1])*float(sys.argv[2])))" "$1" "$scale"; }
+bash "$here/../../tests/blast/runPreview.sh" "$dir" -h "$(size 0.25e-6)" \
+    -far "$(size 1e-6)" -dz "$(size 0.25e-6)" -cell "$(size 0.5e-6)" \
+    -noPlots -noVTK -noRun "$@" > "$dir.log" 2>&1 \
+    || { tail -5 "$dir.log"; exit 1; }
+cd "$dir/axisymmetricPreview"
+/usr/bin/python3 - "$law" <<'PY'
+import re, sys
+# the water probes at z = 10 um (below the inflow plane)
+f = "system/controlDict.allrun"
+s = open(f).read()
+probes = " ".join("(%g 1e-05 0)" % r for r in (1e-7, 1e-6, 2e-6, 4e-6, 8e-6))
+s, n = re.subn(r"probeLocations \([^;]*\);", "probeLocations ( %s );" % probes, s)
+if n != 1:
+    raise SystemExit("transparentCell.sh: no probeLocations in %s" % f)
+open(f, "w").write(s)
+if sys.argv[1] == "water":
+    f = "constant/solidProperties"
+    s = open(f).read()
+    old = """volumetric  quadratic;  // Psi_vol = (J - 1)^2/d0 (paper eq. 2)
+        d0          9.5125e-10; // 2/K [1/Pa], K = 1000 x 1450^2 Pa"""
+    if old not in s:
+        raise SystemExit("transparentCell.sh: the membrane's quadratic law "
+                         "not found in constant/solidProperties")
+    s = s.replace(old, "volumetric  mieGruneisen;\n"
+                  "        C0 1450; s 1.99; Gamma0 0.1; Cv 4184; T0 293.15;")
+    open(f, "w").write(s)
+PY
+if [ -n "${MEMBRANE_LAYERS:-}" ]
+then
+    echo "membraneLayers $MEMBRANE_LAYERS;" >> system/cellMeshDict.allrun
+    cellMesh > log.cellMesh 2>&1 || { tail -3 log.cellMesh; exit 1; }
+    grep "membrane thickness" log.cellMesh
+fi
+# the regions' volumetric laws, as the solver reads them
+foamDictionary -expand constant/solidProperties 2>/dev/null \
+    | grep -E "^ *(volumetric|rho0|C0|d0) " | tr -s ' ' | paste -sd' '
+echo "water cells: $(awk '/^ *cells:/ {print $2; exit}' log.checkMesh)"
+nice -n 10 cellBlastFoam > log.cellBlastFoam 2>&1
+grep "^CPU time of the time loop" log.cellBlastFoam
+status=0
+nice -n 10 planeWave -case . -check > log.planeWaveCheck 2>&1 || status=$?
+grep -v "^#" log.planeWaveCheck
+if [ "$law" = posed ]
+then
+    nice -n 10 planeWave -case . -check -layered > log.planeWaveLayered 2>&1 \
+        || status=$?
+    echo "layered:"
+    grep -v "^#" log.planeWaveLayered
+fi
+exit $status

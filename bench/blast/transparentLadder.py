@@ -1,0 +1,104 @@
+#!/usr/bin/env python3
+"""The ladder table of bench/blast/transparentCell.sh runs (issue 17 item
+1; docs/results/blastPlaneWave.md, "The transparent cell"; not a test).
+
+Usage: transparentLadder.py [-layered] SCALE=DIR [SCALE=DIR ...]
+
+Each DIR a transparentCell.sh run (DIR/axisymmetricPreview after its
+planeWave -check; with -layered its planeWave -check -layered), SCALE its
+level (1, 0.7, 0.5, 0.35: the cell sizes are SCALE times x1's). Prints per
+level the water cells (log.checkMesh), the time loop's CPU
+(log.cellBlastFoam), the water probes' 1-ns peak error at each r (z =
+10 um) and the solid probe's (p0, cytoplasm side) incident 1-ns peak,
+1-ns peak, plateau and impulse errors [%]; then for each measure, from
+the three finest levels, the observed order p and the Richardson limit
+e0 of e(h) = e0 + C h^p, and the order assuming the limit 0 (ln(e2/e3) /
+ln(h2/h3), the two finest levels).
+"""
+import math
+import os
+import re
+import sys
+
+
+def rows(path):
+    return [l.split() for l in open(path) if not l.startswith("#")]
+
+
+def level(arg, layered):
+    scale, d = arg.split("=", 1)
+    case = os.path.join(d, "axisymmetricPreview")
+    sub = "planeWaveLayered" if layered else "planeWave"
+    m = {r[0]: r for r in rows(os.path.join(case, "postProcessing", sub, "0",
+                                            "measures.dat"))}
+    cells = re.search(r"^\s*cells:\s+(\d+)", open(os.path.join(
+        case, "log.checkMesh")).read(), re.M).group(1)
+    cpu = re.search(r"^CPU time of the time loop ([0-9.e+-]+) s", open(
+        os.path.join(case, "log.cellBlastFoam")).read(), re.M).group(1)
+    out = {"h": float(scale), "cells": int(cells), "cpu": float(cpu)}
+    # the water probes: r from system/controlDict.allrun's list
+    probes = re.findall(r"\(([0-9.e+-]+) ([0-9.e+-]+) 0\)", open(os.path.join(
+        case, "system", "controlDict.allrun")).read())
+    for i, (r, z) in enumerate(probes):
+        out["water r=%g um" % (float(r)*1e6)] = float(m["fluidProbes_%d" % i][13])
+    s = m["solid_p0"]
+    for name, col in (("solid incident", 14), ("solid 1-ns peak", 13),
+                      ("solid plateau", 15), ("solid impulse", 16)):
+        out[name] = float(s[col])
+    return out
+
+
+def richardson(h, e):
+    """e0, p of e = e0 + C h^p through three points (None if the
+    differences change sign: no monotone convergence)"""
+    d1, d2 = e[0] - e[1], e[1] - e[2]
+    if d1 == 0 or d2 == 0 or (d1 > 0) != (d2 > 0):
+        return None, None
+
+    def f(p):
+        return (h[0]**p - h[1]**p)/(h[1]**p - h[2]**p) - d1/d2
+    lo, hi = 0.05, 8.0
+    if f(lo)*f(hi) > 0:
+        return None, None
+    for _ in range(200):
+        mid = 0.5*(lo + hi)
+        if f(lo)*f(mid) <= 0:
+            hi = mid
+        else:
+            lo = mid
+    p = 0.5*(lo + hi)
+    c = d2/(h[1]**p - h[2]**p)
+    return e[2] - c*h[2]**p, p
+
+
+def main():
+    args = sys.argv[1:]
+    layered = "-layered" in args
+    args = [a for a in args if a != "-layered"]
+    if not args:
+        sys.exit(__doc__)
+    levels = sorted((level(a, layered) for a in args), key=lambda x: -x["h"])
+    keys = [k for k in levels[0] if k not in ("h", "cells", "cpu")]
+    print("| level | water cells | CPU time loop [s] | "
+          + " | ".join(keys) + " |")
+    print("|---|---:|---:|" + "---:|"*len(keys))
+    for lv in levels:
+        print("| x%g | %d | %.1f | " % (lv["h"], lv["cells"], lv["cpu"])
+              + " | ".join("%+.2f %%" % lv[k] for k in keys) + " |")
+    if len(levels) >= 3:
+        h = [lv["h"] for lv in levels[-3:]]
+        cells = []
+        for k in keys:
+            e = [lv[k] for lv in levels[-3:]]
+            e0, p = richardson(h, e)
+            p0 = (math.log(e[1]/e[2])/math.log(h[1]/h[2])
+                  if e[1]*e[2] > 0 else float("nan"))
+            cells.append("p %s, e0 %s; p(e0 = 0) %.2f" % (
+                "-" if p is None else "%.2f" % p,
+                "-" if e0 is None else "%+.2f %%" % e0, p0))
+        print("| order, limit (x%g, x%g, x%g) | | | " % tuple(h)
+              + " | ".join(cells) + " |")
+
+
+if __name__ == "__main__":
+    main()
