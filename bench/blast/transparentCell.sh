@@ -32,8 +32,8 @@ bash "$here/../../tests/blast/runPreview.sh" "$dir" -h "$(size 0.25e-6)" \
     -noPlots -noVTK -noRun "$@" > "$dir.log" 2>&1 \
     || { tail -5 "$dir.log"; exit 1; }
 cd "$dir/axisymmetricPreview"
-/usr/bin/python3 - "$law" <<'PY'
-import re, sys
+/usr/bin/python3 - <<'PY'
+import re
 # the water probes at z = 10 um (below the inflow plane)
 f = "system/controlDict.allrun"
 s = open(f).read()
@@ -42,18 +42,11 @@ s, n = re.subn(r"probeLocations \([^;]*\);", "probeLocations ( %s );" % probes, 
 if n != 1:
     raise SystemExit("transparentCell.sh: no probeLocations in %s" % f)
 open(f, "w").write(s)
-if sys.argv[1] == "water":
-    f = "constant/solidProperties"
-    s = open(f).read()
-    old = """volumetric  quadratic;  // Psi_vol = (J - 1)^2/d0 (paper eq. 2)
-        d0          9.5125e-10; // 2/K [1/Pa], K = 1000 x 1450^2 Pa"""
-    if old not in s:
-        raise SystemExit("transparentCell.sh: the membrane's quadratic law "
-                         "not found in constant/solidProperties")
-    s = s.replace(old, "volumetric  mieGruneisen;\n"
-                  "        C0 1450; s 1.99; Gamma0 0.1; Cv 4184; T0 293.15;")
-    open(f, "w").write(s)
 PY
+if [ "$law" = water ]
+then
+    python3 -m neuronFsi.membraneLaw water constant/solidProperties || exit 1
+fi
 if [ -n "${MEMBRANE_LAYERS:-}" ]
 then
     echo "membraneLayers $MEMBRANE_LAYERS;" >> system/cellMeshDict.allrun
