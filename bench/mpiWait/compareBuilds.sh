@@ -129,8 +129,8 @@ coeffs          { n (2 1 1); }
 DICT
         build=$base
         [ $b = new ] && build=$new
-        with "$build" "$c" bash -c 'cp -r 0.orig 0 && blockMesh > log.blockMesh
-            && setRiemannProblem > log.set'
+        with "$build" "$c" bash -c \
+            'cp -r 0.orig 0 && blockMesh > log.blockMesh && setRiemannProblem > log.set'
         if [ $n = 1 ]
         then
             with "$build" "$c" rhoRiemannFoam > "$c/log.solver" 2>&1
