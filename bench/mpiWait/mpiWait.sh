@@ -9,17 +9,28 @@
 #       NP   MPI ranks (2: the summary pairs two ranks)
 #       END  endTime [s], e.g. 3e-8
 #   NICENESS=N: cellBlastFoam at nice -n N (default 10)
+#   BUILD=DIR: another build, a copy of a worktree's
+#       platforms/linux64GccDPInt32Opt (its bin and lib put first in PATH
+#       and LD_LIBRARY_PATH after etc/bashrc; mpirun passes both), e.g.
+#       main's build copied before a branch's rebuild
 #
-# The cellBlastFoam on PATH after etc/bashrc runs (another build: put its
-# bin and lib first in PATH and LD_LIBRARY_PATH; mpirun passes both).
+# The cellBlastFoam on PATH after etc/bashrc runs (or BUILD's).
 # Prints the loop's CPU split (cellBlastFoam) and summary.py's table;
 # DIR/quarter3D/mpiWait.rank<r> hold the call stacks.
 set -euo pipefail
-[ $# -ge 3 ] || { sed -n 2,17p "$0"; exit 1; }
+[ $# -ge 3 ] || { sed -n 2,21p "$0"; exit 1; }
 dir=$1; np=$2; end=$3; shift 3
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 . "$root/etc/bashrc"
+if [ -n "${BUILD:-}" ]; then
+    [ -x "$BUILD/bin/cellBlastFoam" ] && [ -d "$BUILD/lib" ] || {
+        echo "mpiWait.sh: BUILD=$BUILD has no bin/cellBlastFoam and lib/" >&2
+        exit 1
+    }
+    BUILD=$(cd "$BUILD" && pwd)
+    export PATH=$BUILD/bin:$PATH LD_LIBRARY_PATH=$BUILD/lib:$LD_LIBRARY_PATH
+fi
 [ ! -e "$dir" ] || { echo "mpiWait.sh: $dir exists" >&2; exit 1; }
 mkdir -p "$dir"
 dir=$(cd "$dir" && pwd)

@@ -37,7 +37,8 @@ GROUPS = (
     ('solid step (all-gather)', r'combineParts'),
     ('mesh motion', r'bandMeshMotion::notify|fluidSolidInteraction::moveWall'),
     ('Courant number', r'courantNumber|setDeltaT'),
-    ('step totals (force, gcl)', r'^Foam::fluidSolidInteraction::step$'),
+    ('step totals, solid output', r'^Foam::fluidSolidInteraction::step$'
+     r'|^solid::Partition::combine < Foam::fluidSolidInteraction::step$'),
     ('solid output', r'solidDomain::write'),
     ('water probes', r'movingMeshProbes::write'),
     ('start-up and end', r''),

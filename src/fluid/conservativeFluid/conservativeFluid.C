@@ -435,9 +435,9 @@ void Foam::conservativeFluid::correctPrimitives()
     }
 
     // The thermo first: a characteristic boundary (planeWaveInflow) sets
-    // U there from the cells' new p as well as their U
-    thermo_->correct();
-    U_.correctBoundaryConditions();
+    // U there from the cells' new p as well as their U; the processor
+    // values of p, T and U in one exchange
+    thermo_->correct(U_);
 }
 
 

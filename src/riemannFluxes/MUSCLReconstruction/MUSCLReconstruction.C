@@ -331,12 +331,6 @@ void Foam::MUSCLReconstruction::gaussGrad
     }
 
     g /= mesh_.V().field();
-
-    // Neighbour cells' gradients on processor and cyclic patches
-    if (coupled_)
-    {
-        grad.correctBoundaryConditions();
-    }
 }
 
 
@@ -386,11 +380,85 @@ Foam::MUSCLReconstruction::MUSCLReconstruction(const fvMesh& mesh)
         mesh,
         dimensionedVector(dimPressure/dimLength, Zero),
         calculatedFvPatchField<vector>::typeName
-    )
+    ),
+    gradientsPending_(false)
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+void Foam::MUSCLReconstruction::startCellGradients
+(
+    const volScalarField& rho,
+    const volVectorField& U,
+    const volScalarField& p
+)
+{
+    if (gradientsPending_)
+    {
+        FatalErrorInFunction
+            << "the cell gradients' exchange of the last call is not"
+            << " finished (finishCellGradients)" << abort(FatalError);
+    }
+
+    // The neighbour cells' gradients on processor and cyclic patches: the
+    // three fields' exchanges started together, waited for once
+    gradientExchange_ = foamTools::boundaryEvaluation();
+    if (rhoLimiter_ != limiterType::upwind)
+    {
+        gaussGrad(rho, gradRho_);
+        if (coupled_)
+        {
+            gradientExchange_.start(gradRho_);
+        }
+    }
+    if (ULimiter_ != limiterType::upwind)
+    {
+        gaussGrad(U, gradU_);
+        if (coupled_)
+        {
+            gradientExchange_.start(gradU_);
+        }
+    }
+    if (pLimiter_ != limiterType::upwind)
+    {
+        gaussGrad(p, gradP_);
+        if (coupled_)
+        {
+            gradientExchange_.start(gradP_);
+        }
+    }
+    gradientsPending_ = true;
+}
+
+
+void Foam::MUSCLReconstruction::finishCellGradients()
+{
+    if (!gradientsPending_)
+    {
+        FatalErrorInFunction
+            << "no cell gradients started (startCellGradients)"
+            << abort(FatalError);
+    }
+    gradientsPending_ = false;
+    if (!coupled_)
+    {
+        return;
+    }
+    if (rhoLimiter_ != limiterType::upwind)
+    {
+        gradientExchange_.finish(gradRho_);
+    }
+    if (ULimiter_ != limiterType::upwind)
+    {
+        gradientExchange_.finish(gradU_);
+    }
+    if (pLimiter_ != limiterType::upwind)
+    {
+        gradientExchange_.finish(gradP_);
+    }
+}
+
 
 void Foam::MUSCLReconstruction::cellGradients
 (
@@ -399,18 +467,8 @@ void Foam::MUSCLReconstruction::cellGradients
     const volScalarField& p
 )
 {
-    if (rhoLimiter_ != limiterType::upwind)
-    {
-        gaussGrad(rho, gradRho_);
-    }
-    if (ULimiter_ != limiterType::upwind)
-    {
-        gaussGrad(U, gradU_);
-    }
-    if (pLimiter_ != limiterType::upwind)
-    {
-        gaussGrad(p, gradP_);
-    }
+    startCellGradients(rho, U, p);
+    finishCellGradients();
 }
 
 

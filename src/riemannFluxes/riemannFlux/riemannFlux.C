@@ -192,9 +192,10 @@ void Foam::riemannFlux::fluxes
     // Normal speed of moving faces [m/s]
     const tmp<surfaceScalarField> tw(faceSpeeds());
 
-    // Internal faces, a block at a time: the cell gradients once, then
+    // Internal faces, a block at a time: the cell gradients once (their
+    // processor exchange started, overlapping the internal faces), then
     // per block the face states, the law on them and the Riemann solver
-    reconstruction_.cellGradients(thermo.rho(), U, thermo.p());
+    reconstruction_.startCellGradients(thermo.rho(), U, thermo.p());
     const label nFaces = mesh_.nInternalFaces();
     for (label start = 0; start < nFaces; start += blockSize)
     {
@@ -230,6 +231,9 @@ void Foam::riemannFlux::fluxes
             solveMoving(L_, R_, Sf, magSf, nullptr, F);
         }
     }
+
+    // The neighbour cells' gradients for the coupled patches
+    reconstruction_.finishCellGradients();
 
     // Boundary faces
     forAll(mesh_.boundary(), patchi)

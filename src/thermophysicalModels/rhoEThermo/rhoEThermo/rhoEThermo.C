@@ -2,6 +2,7 @@
 #include "fvMesh.H"
 #include "Time.H"
 #include "inputChecks.H"
+#include "boundaryEvaluation.H"
 
 namespace Foam
 {
@@ -141,14 +142,38 @@ void Foam::rhoEThermo::checkInternalPT() const
 }
 
 
-void Foam::rhoEThermo::correct()
+void Foam::rhoEThermo::correctCells()
 {
     pFromRhoE(rho_.primitiveField(), e_.primitiveField(), p_.primitiveFieldRef());
     TFromRhoE(rho_.primitiveField(), e_.primitiveField(), T_.primitiveFieldRef());
     cFromRhoE(rho_.primitiveField(), e_.primitiveField(), c_.primitiveFieldRef());
+}
+
+
+void Foam::rhoEThermo::correct()
+{
+    correctCells();
     p_.correctBoundaryConditions();
     T_.correctBoundaryConditions();
     correctBoundaryStates();
+}
+
+
+void Foam::rhoEThermo::correct(volVectorField& U)
+{
+    correctCells();
+
+    // p, T and U to the processor neighbours with one wait; the patches
+    // evaluated in correct()'s order, U's after the boundary states (a
+    // characteristic boundary of U reads p there)
+    foamTools::boundaryEvaluation bc;
+    bc.start(p_);
+    bc.start(T_);
+    bc.start(U);
+    bc.finish(p_);
+    bc.finish(T_);
+    correctBoundaryStates();
+    bc.finish(U);
 }
 
 
