@@ -175,7 +175,7 @@ mpirun -np 2 rhoRiemannFoam -parallel > log.again 2>&1 || status=$?
 check "rhoRiemannFoam -parallel: a new start over reconstructed times exits non-zero" \
     "[ $status -ne 0 ]"
 check "rhoRiemannFoam -parallel: the message names the reconstructed times" \
-    "grep -q '4 time directories reconstructed into the case after the start time (5e-09 ... 2e-08 s' log.again \
+    "grep -q '4 time directories of the case directory after the start time (5e-09 ... 2e-08 s in .*: reconstructed by reconstructPar; a later reconstructPar of this run would write over them)' log.again \
      && grep -q 'Nothing was changed' log.again"
 caseSums 'log.*' | grep -v '/\.runLock$' > "$work/parallel.after"
 check "rhoRiemannFoam -parallel: no file of the case changed" \
@@ -197,5 +197,13 @@ status=0
 rhoRiemannFoam -overwrite > log.serialOverwrite 2>&1 || status=$?
 check "rhoRiemannFoam serial -overwrite: runs, no processor time after the start left" \
     "[ $status -eq 0 ] && [ -d 1e-08 ] && [ ! -e processor0/5e-09 ] && [ ! -e processor1/1e-08 ]"
+# ... and a parallel new start over that serial run's own times: refused,
+# naming them as a serial run's (adv39 y06, y07: they were called "time
+# directories reconstructed into the case")
+status=0
+mpirun -np 2 rhoRiemannFoam -parallel > log.parallelOverSerial 2>&1 || status=$?
+check "rhoRiemannFoam -parallel over a serial run's times: refused, naming them as the serial run's" \
+    "[ $status -ne 0 ] && grep -q 'time directories of the case directory after the start time (5e-09 ... 1e-08 s in .*: written by a serial run of the case;' log.parallelOverSerial \
+     && ! grep -q 'reconstructed by reconstructPar' log.parallelOverSerial"
 
 exit $fail

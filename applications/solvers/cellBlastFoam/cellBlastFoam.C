@@ -163,7 +163,11 @@ int main(int argc, char *argv[])
             runTime.globalPath()/"solid"/"solid.h5",
             runTime.globalPath()/"solid"/"solid.xmf"
         },
-        isFile(runTime.timePath()/"uniform"/"solidState")
+        isFile
+        (
+            runTime.timePath()/"uniform"
+           /foamTools::uniformState::solidState()
+        )
       ? fileNameList(1, runTime.globalPath()/"solid"/"solid.h5")
       : fileNameList()
     );
