@@ -113,7 +113,12 @@ class ForwardModel:
         if not m or factor == 1.0:
             return None
         count, most = float(m.group(1)), int(m.group(2))
-        least = factor*math.sqrt(count/most)
+        # 1 % over the 1/factor^2 estimate, rounded up to 3 digits (the
+        # membrane's layers go with 1/factor: at the plain estimate the
+        # count was still above maxElements, at this one below)
+        least = 1.01*factor*math.sqrt(count/most)
+        unit = 10.0**(math.floor(math.log10(least)) - 2)
+        least = math.ceil(least/unit)*unit
         return ("%s: entry 'meshSizeFactor' = %s scales the sizes of %s "
                 "to a mesh of at least %.3g elements, more than its "
                 "maxElements %d (cellMesh's estimate, %s): valid range "
@@ -122,7 +127,7 @@ class ForwardModel:
                 "system/cellMeshDict if that many is meant"
                 % (where or "calibrationDict", foamDict.format_value(factor),
                    os.path.join(self.case, "system/cellMeshDict"), count,
-                   most, log, "%.3g" % (least*1.0005)))
+                   most, log, "%.3g" % least))
 
     def _edit_mesh_dict(self, factor):
         if factor == 1.0:
