@@ -61,6 +61,11 @@ int main(int argc, char *argv[])
     #include "setRootCaseChecked.H"
     #include "setRootCaseListOutput.H"
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
+    // -dry-run's simplified fluid mesh cannot be coupled (adv40 z02)
+    foamTools::refuseDryRun
+    (
+        args, "the coupling of its interface patch to the solid's mesh"
+    );
     const foamTools::caseLock lock(args);    // one run per case
     // A number beyond a double's range is a sigFpe inside OpenFOAM's
     // tokenizer: every file of the case the run reads is scanned first,
