@@ -4,6 +4,6 @@
 wpDone; sums > ../before
 tryf "-postProcess -func probes" rhoRiemannFoam -postProcess -func probes; nochange ../before
 tryf "-postProcess -latestTime" rhoRiemannFoam -postProcess -latestTime; nochange ../before
-tryf "postProcess (utility)" postProcess; nochange ../before
+sums > ../before2; tryf "postProcess (utility)" postProcess; echo "   by the utility alone:"; nochange ../before2
 sed -i 's/^endTime .*/endTime 6e-8;/' system/controlDict; sed -i 's/^startFrom .*/startFrom latestTime;/' system/controlDict
 tryf "restart to 6e-8" rhoRiemannFoam; echo "   times: $(ls -d [1-9]* | tr '\n' ' ')"
