@@ -82,6 +82,14 @@ status=0; cellBlastFoam -overwrite > log.reused 2>&1 || status=$?
 check "a lock whose process runs another executable is stale" \
     "[ $status -eq 0 ] && grep -q 'Removing the stale run lock' log.reused"
 
+# 4b. A lock written long before the process of its id started (left by a
+# reset; the id now the new run's own: adv38 x05(c), refused as "in use by
+# cellBlastFoam", itself): stale
+status=0
+bash -c 'printf "pid %s\nhost %s\nexecutable cellBlastFoam\nstarted 2026-01-01T00:00:00\ncase %s\n" $$ "$(hostname)" "$PWD" > .runLock; exec cellBlastFoam -overwrite' > log.ownPid 2>&1 || status=$?
+check "a lock older than the process of its id (the run's own id) is stale" \
+    "[ $status -eq 0 ] && grep -q 'Removing the stale run lock' log.ownPid && [ ! -e .runLock ]"
+
 # 5. A run ending in a fatal error removes its lock
 mv constant/fsiProperties constant/fsiProperties.moved
 status=0; cellBlastFoam > log.fatal 2>&1 || status=$?

@@ -128,6 +128,18 @@ class ScriptErrors(TempDirTestCase):
                       "1/0\n")
         self.assertIn("Traceback", r.stderr)
 
+    def testFullDiskNamesTheFile(self):
+        # adv38 x55: ENOSPC comes from write() or the flush at close, with
+        # no file name: "a file could not be written or read"; the writers
+        # (planeWave's tables, measures) name the file (/dev/full: every
+        # write fails with ENOSPC)
+        with self.assertRaises(OSError) as c:
+            with script.writing("/dev/full") as f:
+                f.write("x" * 100000)
+        self.assertEqual(c.exception.filename, "/dev/full")
+        self.assertEqual(script.message(c.exception),
+                         "/dev/full: No space left on device")
+
     def testMessage(self):
         self.assertIsNone(script.message(ValueError("x")))
         self.assertIn("missing.dat", script.message(

@@ -56,6 +56,21 @@ status=0
 ./Allrun > log.allrun2b 2>&1 || status=$?
 check "with only its mark removed, the same ./Allrun still refuses the step" \
     "[ $status -ne 0 ] && grep -q \"$app was stopped before its end .*has no End line and no exit status was recorded\" log.allrun2b"
+# The advice followed word for word (adv40 z31: it named a file that did
+# not exist, and the hand run it described left an Allrun that could never
+# finish): its command line run as printed (the real solver, from the
+# latest time), then ./Allrun finishes, the step taken as run
+cmd=$(grep -A1 'To continue the solver from its last complete time instead' log.allrun2b | tail -n 1)
+check "the advice gives the hand run's command" "[ -n \"$cmd\" ] && grep -q \"rm -f log.$app.running log.$app.status; $app > log.$app 2>&1\" log.allrun2b"
+sed -i 's/^startFrom .*/startFrom latestTime;/' system/controlDict
+status=0
+bash -c "$cmd" || status=$?
+check "the hand run as advised ends well" "[ $status -eq 0 ] && grep -q '^End' log.$app"
+status=0
+./Allrun > log.allrun2c 2>&1 || status=$?
+check "and the next ./Allrun finishes, the step taken as run" \
+    "[ $status -eq 0 ] && grep -q \"$app already run\" log.allrun2c"
+cp "$root/tutorials/verification/sodIdealGas/system/controlDict" system/controlDict
 ./Allclean > /dev/null 2>&1
 status=0
 ./Allrun > log.allrun3 2>&1 || status=$?

@@ -32,6 +32,7 @@ Usage
 #include "writeGuard.H"
 #include "heapPolicy.H"
 #include "caseLock.H"
+#include "postProcessGuard.H"
 #include "resultGuard.H"
 #include "restartLogs.H"
 #include "inputRecord.H"
@@ -47,7 +48,10 @@ int main(int argc, char *argv[])
         " the explicit solid (cell under blast)."
     );
 
-    #include "postProcess.H"
+    // OpenFOAM's -postProcess (postProcess.H) would write the function
+    // objects' logs of the run anew, without the lock or the results
+    // check (adv40 z01, z32, z34, z36): refused, naming the way out
+    foamTools::refusePostProcess(argc, argv);
 
     #include "addCheckCaseOptions.H"
     foamTools::resultGuard::addOption();
@@ -57,6 +61,11 @@ int main(int argc, char *argv[])
     #include "setRootCaseChecked.H"
     #include "setRootCaseListOutput.H"
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
+    // -dry-run's simplified fluid mesh cannot be coupled (adv40 z02)
+    foamTools::refuseDryRun
+    (
+        args, "the coupling of its interface patch to the solid's mesh"
+    );
     const foamTools::caseLock lock(args);    // one run per case
     // A number beyond a double's range is a sigFpe inside OpenFOAM's
     // tokenizer: every file of the case the run reads is scanned first,
@@ -159,7 +168,11 @@ int main(int argc, char *argv[])
             runTime.globalPath()/"solid"/"solid.h5",
             runTime.globalPath()/"solid"/"solid.xmf"
         },
-        isFile(runTime.timePath()/"uniform"/"solidState")
+        isFile
+        (
+            runTime.timePath()/"uniform"
+           /foamTools::uniformState::solidState()
+        )
       ? fileNameList(1, runTime.globalPath()/"solid"/"solid.h5")
       : fileNameList()
     );

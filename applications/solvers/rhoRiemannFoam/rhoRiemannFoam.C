@@ -35,6 +35,7 @@ Usage
 #include "heapPolicy.H"
 #include "fvInputChecks.H"
 #include "caseLock.H"
+#include "postProcessGuard.H"
 #include "resultGuard.H"
 #include "restartLogs.H"
 #include "inputRecord.H"
@@ -49,7 +50,10 @@ int main(int argc, char *argv[])
         " state (Mie-Grueneisen water): HLLC/MUSCL/SSP Runge-Kutta."
     );
 
-    #include "postProcess.H"
+    // OpenFOAM's -postProcess (postProcess.H) would write the function
+    // objects' logs of the run anew, without the lock or the results
+    // check (adv40 z01, z32, z34, z36): refused, naming the way out
+    foamTools::refusePostProcess(argc, argv);
 
     #include "addCheckCaseOptions.H"
     foamTools::resultGuard::addOption();

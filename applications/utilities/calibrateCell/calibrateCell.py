@@ -274,7 +274,7 @@ class Calibration:
         self.model = ForwardModel(self.case, args.work,
                                   setting(d, "meshSizeFactor", 1.0, where,
                                           "(0, inf)"),
-                                  protocol, args.keep)
+                                  protocol, args.keep, where)
         self._check_names(where)
         self.lock = threading.Lock()
         self.cache = {}

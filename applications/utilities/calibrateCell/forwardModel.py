@@ -3,6 +3,7 @@ scratch copy of the case, one run per parameter vector in its own folder,
 the materials of every region written as sub-dictionaries of the
 materials of constant/solidProperties."""
 
+import math
 import os
 import re
 import shutil
@@ -51,7 +52,7 @@ class ForwardModel:
     copies base/ without the mesh (a link to it)."""
 
     def __init__(self, case, work, mesh_factor=1.0, protocol=None,
-                 keep=False):
+                 keep=False, factor_where=None):
         self.case = os.path.abspath(case)
         self.work = os.path.abspath(work)
         self.keep = keep
@@ -78,7 +79,8 @@ class ForwardModel:
         log = os.path.join(self.base, "log.cellMesh")
         if _run(["cellMesh", "-case", self.base], self.base, log) \
                 or not os.path.isfile(self.mesh()):
-            raise ModelError("cellMesh failed for %s (see %s)"
+            raise ModelError(self._too_many(log, mesh_factor, factor_where)
+                             or "cellMesh failed for %s (see %s)"
                              % (self.case, log))
         self.ip_path = os.path.join(self.base, "constant/indenterProperties")
         self.ip_text = open(self.ip_path).read()
@@ -94,6 +96,38 @@ class ForwardModel:
 
     def mesh(self):
         return os.path.join(self.base, "constant/cell.msh")
+
+    def _too_many(self, log, factor, where):
+        """cellMesh's refusal of the scaled sizes (more elements than its
+        maxElements) named as the calibration entry that scaled them, with
+        the smallest factor that fits (adv40 z24: "cellMesh failed"
+        without the entry); None for any other failure. The count goes
+        with 1/factor^2 in the axisymmetric mesh (1/factor^3 in 3D: the
+        same bound then fits too)."""
+        try:
+            text = open(log, errors="replace").read()
+        except OSError:
+            return None
+        m = re.search(r"at least ([0-9.eE+-]+) elements, more than "
+                      r"maxElements (\d+)", text)
+        if not m or factor == 1.0:
+            return None
+        count, most = float(m.group(1)), int(m.group(2))
+        # 1 % over the 1/factor^2 estimate, rounded up to 3 digits (the
+        # membrane's layers go with 1/factor: at the plain estimate the
+        # count was still above maxElements, at this one below)
+        least = 1.01*factor*math.sqrt(count/most)
+        unit = 10.0**(math.floor(math.log10(least)) - 2)
+        least = math.ceil(least/unit)*unit
+        return ("%s: entry 'meshSizeFactor' = %s scales the sizes of %s "
+                "to a mesh of at least %.3g elements, more than its "
+                "maxElements %d (cellMesh's estimate, %s): valid range "
+                "[%s, inf) (at least about that: the count goes with "
+                "1/meshSizeFactor^2), or a larger maxElements in "
+                "system/cellMeshDict if that many is meant"
+                % (where or "calibrationDict", foamDict.format_value(factor),
+                   os.path.join(self.case, "system/cellMeshDict"), count,
+                   most, log, "%.3g" % least))
 
     def _edit_mesh_dict(self, factor):
         if factor == 1.0:

@@ -358,13 +358,13 @@ def compare(case, a, p, skip, kinds):
             " ".join(v(e, k, 1e9 if k == "arrival" else 100)
                      for k in keys)))
     text = "\n".join(lines) + "\n"
-    with open(os.path.join(out, "measures.dat"), "w") as f:
+    with script.writing(os.path.join(out, "measures.dat")) as f:
         f.write(text)
     sys.stdout.write(text)
     if "solid" in kinds and wave.rho is not None:
         text, solidBad = solidRows(case, wave, skip)
         bad += solidBad
-        with open(os.path.join(out, "solidMeasures.dat"), "w") as f:
+        with script.writing(os.path.join(out, "solidMeasures.dat")) as f:
             f.write(text)
         sys.stdout.write(text)
     if a.check:

@@ -1,4 +1,5 @@
 #include "fluidSolidInteraction.H"
+#include "uniformState.H"
 #include "pointIOField.H"
 #include "IFstream.H"
 #include "clockTime.H"
@@ -136,7 +137,10 @@ void Foam::fluidSolidInteraction::truncateSolidResults(const Time& runTime)
     // aside, or later times. They are removed (atomically, a copy replaces
     // the file) so that the steps continue from this time's, as in an
     // uninterrupted run. A missing state is reported by solidDomain::couple
-    const fileName stateFile(runTime.timePath()/"uniform"/"solidState");
+    const fileName stateFile
+    (
+        runTime.timePath()/"uniform"/foamTools::uniformState::solidState()
+    );
     const fileName h5(runTime.globalPath()/"solid"/"solid.h5");
     if (!Pstream::master() || !isFile(stateFile) || !isFile(h5))
     {
@@ -248,7 +252,10 @@ void Foam::fluidSolidInteraction::createMotion
 void Foam::fluidSolidInteraction::readState()
 {
     const Time& runTime = mesh_.time();
-    const fileName stateFile(runTime.timePath()/"uniform"/"fsiState");
+    const fileName stateFile
+    (
+        runTime.timePath()/"uniform"/foamTools::uniformState::fsiState()
+    );
     if (!isFile(stateFile))
     {
         FatalErrorInFunction
@@ -808,7 +815,10 @@ void Foam::fluidSolidInteraction::write(const scalar stepDeltaT)
     }
 
     // Renamed into place: complete or absent
-    const fileName file(runTime.timePath()/"uniform"/"fsiState");
+    const fileName file
+    (
+        runTime.timePath()/"uniform"/foamTools::uniformState::fsiState()
+    );
     {
         OFstream os(file + ".tmp");
         os.precision(17);

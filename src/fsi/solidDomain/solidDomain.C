@@ -4,6 +4,7 @@
 #include "inputChecks.H"
 #include "subDict.H"
 #include "inputRecord.H"
+#include "uniformState.H"
 #include "SolidError.H"
 #include "IOobject.H"
 #include "pointField.H"
@@ -258,7 +259,8 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
     {
         const fileName stateFile
         (
-            runTime_.timePath()/"uniform"/"solidState"
+            runTime_.timePath()/"uniform"
+           /foamTools::uniformState::solidState()
         );
         if (!isFile(stateFile))
         {
@@ -365,7 +367,10 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
 
 Foam::label Foam::solidDomain::restartStep(const Time& runTime)
 {
-    const fileName stateFile(runTime.timePath()/"uniform"/"solidState");
+    const fileName stateFile
+    (
+        runTime.timePath()/"uniform"/foamTools::uniformState::solidState()
+    );
     const fileName h5(runTime.globalPath()/"solid"/"solid.h5");
     IFstream is(stateFile);
     const dictionary d(is);
@@ -434,7 +439,7 @@ void Foam::solidDomain::writeState(const label k) const
     mkDir(dir);
     // Written to a temporary name and renamed: the file is there complete
     // or not at all (a run killed while writing)
-    const fileName file(dir/"solidState");
+    const fileName file(dir/foamTools::uniformState::solidState());
     {
         OFstream os(file + ".tmp");
         os.precision(17);
@@ -968,12 +973,6 @@ solid::ProbeValues unpackSample(const double* x)
     return v;
 }
 
-Foam::scalar vonMises(const solid::Mat3& s)
-{
-    const solid::Mat3 dev = s - s.trace()/3*solid::Mat3::Identity();
-    return std::sqrt(1.5*(dev.array()*dev.array()).sum());
-}
-
 } // End anonymous namespace
 
 
@@ -1013,7 +1012,7 @@ void Foam::solidDomain::packOutput(solid::PackedValues& values)
             if (slot < 0) continue;
             const solid::ProbeValues& o = outputSamples_[slot];
             pMax = max(pMax, o.p);
-            vmMax = max(vmMax, vonMises(o.sigma));
+            vmMax = max(vmMax, solid::tensor::vonMises(o.sigma));
         }
         const double m[2] = {pMax, vmMax};
         values.max(m, 2);
@@ -1061,7 +1060,8 @@ void Foam::solidDomain::write
             }
             const solid::ProbeValues v = probes_[i].recover(samples);
             const scalar logJ = std::log(v.theta);
-            os  << ' ' << v.p << ' ' << vonMises(v.sigma) << ' ' << logJ
+            os  << ' ' << v.p << ' ' << solid::tensor::vonMises(v.sigma)
+                << ' ' << logJ
                 << ' ' << (logJ - probeStrain_[2*i])/dt << ' '
                 << v.temperatureRise;
             probeStrain_[2*i] = logJ;

@@ -61,6 +61,7 @@ import numpy as np
 from . import foamDict
 from . import foamField
 from . import postProcessing
+from . import script
 from . import signals
 
 
@@ -747,7 +748,7 @@ def writeReference(path, wave, what):
         if wave.T is not None:
             cols += ["T_z%.17g[K]" % z for z in wave.heights]
             data = np.hstack((data, wave.T))
-    with open(path, "w") as f:
+    with script.writing(path) as f:
         f.write("# %s\n# time [s]  %s\n" % (what, " ".join(cols)))
         for k in range(len(wave.t)):
             f.write("%.10g %s\n" % (wave.t[k], " ".join(
@@ -916,7 +917,7 @@ def writeInflow(path, wave, height, pulse, what, overwrite=False):
                    repr(new[k][:80]) if k < len(new) else "the end",
                    len(old), len(new)))
     tmp = path + ".writing"
-    with open(tmp, "w") as f:
+    with script.writing(tmp) as f:
         f.write("".join(text))
     os.replace(tmp, path)
 
@@ -1045,7 +1046,7 @@ def setInflowBoundary(case, columnHeight, inflowFile=INFLOW_FILE):
             text, ["boundaryField", "top"], entries, path,
             {"columnHeight": "m", "pulse": "s Pa"})
     for path, text in texts.items():          # all three read, then written
-        with open(path, "w") as out:
+        with script.writing(path) as out:
             out.write(text)
 
 

@@ -25,6 +25,7 @@ A script run without the project's environment cannot import neuronFsi
     script.guard()
 """
 
+import contextlib
 import os
 import sys
 
@@ -53,6 +54,23 @@ def message(err):
         return "a file could not be written or read: %s" \
             % (err.strerror or err)
     return None
+
+
+@contextlib.contextmanager
+def writing(path, mode="w"):
+    """open(path, mode) for writing, as a context manager: an OSError
+    without a file name while the file is written or closed (a full disk:
+    ENOSPC comes from write() or the flush at close, which name no file)
+    is raised again naming path, so that message() names the file that
+    could not be written (adv38 x55: planeWave on a full disk said "a file
+    could not be written or read")."""
+    try:
+        with open(path, mode) as f:
+            yield f
+    except OSError as err:
+        if err.filename or not err.errno:
+            raise
+        raise OSError(err.errno, err.strerror, path) from err
 
 
 def _hook(name):
