@@ -12,6 +12,9 @@
 #    from 0.orig as any re-run of it does);
 #  - with only log.APP.running removed, still refused (adv38 x45: no End
 #    line, no exit status);
+#  - the refusal's advice followed word for word (adv40 z31): its command
+#    line, run as printed, runs the solver with its log kept, and the next
+#    ./Allrun finishes, taking the step as run;
 #  - after ./Allclean, ./Allrun (the real solver) runs to its end and
 #    leaves no marker, the steps' exit status recorded;
 #  - a runApplication step (setRiemannProblem) killed the same way is run
