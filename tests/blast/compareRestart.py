@@ -40,6 +40,7 @@ LOGS = (
     ("fsi/coupling.dat", (0, 1, 2, 4, 5, 6, 8, 10, 11), (0, 1, 2, 4), True),
     ("solidProbes/solidProbes.dat", None, (0,), True),
     ("solidInterfaces/interfaceMaxima.dat", None, (0,), True),
+    ("solidInterfaces/interfacePatches.dat", None, (0,), True),
 )
 
 

@@ -86,7 +86,8 @@ Foam::solidDomain::solidDomain(const Time& runTime)
             "explicitSafety", "hourglassViscosity",
             "hourglassViscosityRegions", "shearViscosity",
             "shearViscosityFilter",
-            "volumetricIntegration", "probes", "interfaceProbe", "interfaces"
+            "volumetricIntegration", "probes", "interfaceProbe", "interfaces",
+            "fluidInterfaces", "interfacePatchLength"
         }
     );
     model_.reset(new solid::Model(input.mesh()));
@@ -839,6 +840,7 @@ void Foam::solidDomain::setupOutput()
         interfaceElements_[i] = interfaceElements(pairs[i].first(),
             pairs[i].second());
     }
+    setupPatches(pairs);
     // The output elements this rank owns, each evaluated once per step
     {
         const int b = model_->elementBegin(), e1 = model_->elementEnd();
@@ -853,6 +855,10 @@ void Foam::solidDomain::setupOutput()
             {
                 if (e >= b && e < e1) owned.push_back(e);
             }
+        }
+        for (const int e : patchElements_)
+        {
+            if (e >= b && e < e1) owned.push_back(e);
         }
         std::sort(owned.begin(), owned.end());
         owned.erase(std::unique(owned.begin(), owned.end()), owned.end());
@@ -887,6 +893,107 @@ void Foam::solidDomain::setupOutput()
         {
             os  << "# " << pairs[i].first() << "-" << pairs[i].second()
                 << ": " << interfaceElements_[i].size() << " elements" << nl;
+        }
+    }
+}
+
+
+void Foam::solidDomain::setupPatches(const List<Pair<word>>& pairs)
+{
+    const solid::Mesh& m = mesh();
+    const scalar L = foamTools::readInRangeOrDefault<scalar>
+    (
+        dict_, "interfacePatchLength", "m", 0,
+        foamTools::noUpperBound<scalar>(), false, 1e-6
+    );
+    const wordList fluid
+    (
+        dict_.getOrDefault<wordList>("fluidInterfaces", wordList())
+    );
+    forAll(fluid, i)
+    {
+        for (label j = 0; j < i; ++j)
+        {
+            if (fluid[j] == fluid[i])
+            {
+                FatalIOErrorInFunction(dict_)
+                    << "entry 'fluidInterfaces': region " << fluid[i]
+                    << " given twice: give each region once"
+                    << exit(FatalIOError);
+            }
+        }
+    }
+    forAll(pairs, i)
+    {
+        guarded(dict_, "entry 'interfaces'", [&]
+        {
+            patches_.emplace_back
+            (
+                m, m.regionId(pairs[i].first()),
+                m.regionId(pairs[i].second()), L
+            );
+        });
+        patchNames_.append(pairs[i].first() + "-" + pairs[i].second());
+    }
+    std::vector<char> onFluid(m.nNodes(), 0);
+    for (const int n : interfaceNodes_) onFluid[n] = 1;
+    for (const word& r : fluid)
+    {
+        guarded(dict_, "entry 'fluidInterfaces'", [&]
+        {
+            patches_.emplace_back(m, m.regionId(r), onFluid, L);
+        });
+        patchNames_.append(r + "-fluid");
+    }
+    for (const solid::InterfacePatch& ip : patches_)
+    {
+        patchElements_.insert
+        (
+            patchElements_.end(), ip.elements().begin(), ip.elements().end()
+        );
+    }
+    std::sort(patchElements_.begin(), patchElements_.end());
+    patchElements_.erase
+    (
+        std::unique(patchElements_.begin(), patchElements_.end()),
+        patchElements_.end()
+    );
+    if (patches_.size() && Pstream::master())
+    {
+        const fileName dir
+        (
+            runTime_.globalPath()/"postProcessing"/"solidInterfaces"
+           /runTime_.timeName()
+        );
+        mkDir(dir);
+        patchFile_.reset(new OFstream(dir/"interfacePatches.dat"));
+        OFstream& os = patchFile_();
+        os.precision(10);
+        os  << "# per region interface: the largest mean over a patch of "
+            << "fixed size (r-z: " << L << " m of arc along the interface;"
+            << " 3D: a disc of diameter " << L << " m) of pressure (+ "
+            << "compression), von Mises and shear traction (each side's "
+            << "elements, the larger side), the von Mises patch's centre,"
+            << " then the element maxima of the same (mesh-dependent: "
+            << "pressure and von Mises over the elements with a node on the"
+            << " other side, as interfaceMaxima.dat; shear over the faces)"
+            << nl << "# time [s]";
+        for (const word& n : patchNames_)
+        {
+            os  << "  pPatch:" << n << "[Pa] vonMisesPatch:" << n
+                << "[Pa] shearPatch:" << n << "[Pa] vonMisesPatchX:" << n
+                << "[m] vonMisesPatchY:" << n << "[m] vonMisesPatchZ:" << n
+                << "[m] pMax:" << n << "[Pa] vonMisesMax:" << n
+                << "[Pa] shearMax:" << n << "[Pa]";
+        }
+        os  << nl;
+        forAll(patchNames_, i)
+        {
+            const solid::InterfacePatch& ip = patches_[i];
+            os  << "# " << patchNames_[i] << ": " << ip.facets().size()
+                << " faces, " << ip.band().size() << " band elements, "
+                << (m.axisymmetric() ? ip.nChains() : ip.nPatches())
+                << (m.axisymmetric() ? " curves" : " patches") << nl;
         }
     }
 }
@@ -1017,6 +1124,20 @@ void Foam::solidDomain::packOutput(solid::PackedValues& values)
         const double m[2] = {pMax, vmMax};
         values.max(m, 2);
     }
+    // The stresses of the elements the patch measures read, each from its
+    // owner: pressure, then the Cauchy stress
+    patchOffset_ = values.size();
+    for (const int e : patchElements_)
+    {
+        const int slot = outputSlot_[e];
+        if (slot >= 0)
+        {
+            const solid::ProbeValues& o = outputSamples_[slot];
+            x[0] = o.p;
+            std::copy(o.sigma.data(), o.sigma.data() + 9, x + 1);
+        }
+        values.owned(part.owner(e, ne), slot >= 0 ? x : nullptr, 10);
+    }
     packed_ = true;
 }
 
@@ -1088,12 +1209,45 @@ void Foam::solidDomain::write
         os  << nl;
         os.flush();
     }
+    if (patchFile_.valid())
+    {
+        std::vector<solid::ElementStress> stress(patchElements_.size());
+        for (std::size_t k = 0; k < patchElements_.size(); ++k)
+        {
+            const double* x = values.data() + patchOffset_ + 10*k;
+            stress[k].p = x[0];
+            std::copy(x + 1, x + 10, stress[k].sigma.data());
+        }
+        const auto of = [&](int e) -> const solid::ElementStress&
+        {
+            return stress
+            [
+                std::lower_bound
+                (
+                    patchElements_.begin(), patchElements_.end(), e
+                ) - patchElements_.begin()
+            ];
+        };
+        OFstream& os = patchFile_();
+        os  << runTime_.value();
+        for (const solid::InterfacePatch& ip : patches_)
+        {
+            const solid::InterfaceMeasures r = ip.evaluate(of);
+            os  << ' ' << r.pPatch << ' ' << r.vonMisesPatch << ' '
+                << r.shearPatch << ' ' << r.vonMisesPatchAt(0) << ' '
+                << r.vonMisesPatchAt(1) << ' ' << r.vonMisesPatchAt(2) << ' '
+                << r.pMax << ' ' << r.vonMisesMax << ' ' << r.shearMax;
+        }
+        os  << nl;
+        os.flush();
+    }
     if (runTime_.writeTime())
     {
         // The logs complete up to this write time before it is committed:
         // a run killed later restarts here and loses no row
         if (probeFile_.valid()) probeFile_().flush();
         if (interfaceFile_.valid()) interfaceFile_().flush();
+        if (patchFile_.valid()) patchFile_().flush();
         // The whole solid's histories on the master for the result file
         // (stresses) and the restart state
         model_->shareStates();
