@@ -26,7 +26,12 @@ the same pulse:
     strain_z, and after 140 ns the largest |strain_z| and von Mises;
   - the interface von Mises maxima (postProcessing/solidInterfaces),
     membrane-cytoplasm and cytoplasm-nucleus: the largest over the
-    passage (t <= 80 ns + pulse) and over the rest (t >= 140 ns).
+    passage (t <= 80 ns + pulse) and over the rest (t >= 140 ns);
+  - the reported interface measure (interfacePatches.dat, when the run
+    wrote it): the solver's largest mean of von Mises and of the shear
+    traction over a fixed length of interface (membrane-cytoplasm,
+    cytoplasm-nucleus, membrane-fluid), over the passage and at rest,
+    with its centre and time, and the file's element maxima.
 
     bench/blast/knobMatrix.py [--out DIR] [--doc FILE] [--jobs 2]
         [--variants "base hg0.05 ..."] [--pulses "5e-9 1e-8 1.5e-8"]
@@ -75,6 +80,9 @@ PULSES = "5e-9 1e-8 1.5e-8"
 PASSAGE = 80e-9         # [s] the passage ends at PASSAGE + pulse
 REST = 140e-9           # [s] at rest from here (issue 17 item 6)
 INTERFACES = ("membrane-cytoplasm", "cytoplasm-nucleus")
+# the solver's patch means (interfacePatches.dat)
+PATCH_INTERFACES = ("membrane-cytoplasm", "cytoplasm-nucleus",
+                    "membrane-fluid")
 PATCH = 0.5e-6          # [m] radius of the interface patch means
 
 
@@ -152,6 +160,29 @@ def measures(c, pulse):
         # when the passage maximum was reached [s]
         k = np.argmax(np.where(t <= PASSAGE + pulse, vm, -1))
         m[f"ifPassageTime:{name}"] = t[k]
+    # the solver's means over a fixed length of interface (interfacePatches
+    # .dat, every step): the largest over the passage and at rest, where
+    # the von Mises one was reached
+    m["patchLength"] = np.nan
+    if damageIndicators.hasInterfacePatches(c):
+        m["patchLength"] = damageIndicators.patchLength(c)
+        ip = damageIndicators.interfacePatches(c)
+        for name in PATCH_INTERFACES:
+            if name not in ip:
+                continue
+            d = ip[name]
+            t = d["t"]
+            w = t <= PASSAGE + pulse
+            late = t >= REST
+            for q in ("vonMisesPatch", "shearPatch", "pPatch",
+                      "vonMisesMax", "shearMax"):
+                m[f"{q}:{name}"] = d[q][w].max()
+                m[f"{q}Rest:{name}"] = (d[q][late].max() if late.any()
+                                        else np.nan)
+            k = np.argmax(np.where(w, d["vonMisesPatch"], -np.inf))
+            m[f"vonMisesPatchTime:{name}"] = t[k]
+            m[f"vonMisesPatchAt:{name}"] = (d["vonMisesPatchX"][k],
+                                            d["vonMisesPatchY"][k])
     # the write nearest each interface's passage maximum: the largest
     # element von Mises there and the largest mean over PATCH of interface
     # (interfaceTop.patchMaximum)
@@ -274,6 +305,45 @@ def report(results, variants, pulses, extra, cases):
     w("")
     table(rows, REST_COLUMNS, w)
     w("")
+    if any(not np.isnan(results[(v, p)]["patchLength"])
+           for p in pulses for v in variants):
+        L_ = next(results[(v, p)]["patchLength"] for p in pulses
+                  for v in variants
+                  if not np.isnan(results[(v, p)]["patchLength"]))
+        cols = [(f"{q}:{n}", f"{lab}, {n} [Pa]", "%.2f")
+                for q, lab in (("vonMisesPatch", "von Mises patch mean"),
+                               ("shearPatch", "shear patch mean"))
+                for n in PATCH_INTERFACES]
+        w("The reported interface measure: the solver's largest mean over "
+          f"{L_*1e6:g} um of interface (postProcessing/solidInterfaces/"
+          "interfacePatches.dat, every step; r-z: an arc of that length), "
+          f"largest over the passage (t <= {PASSAGE*1e9:g} ns + pulse):")
+        w("")
+        table(rows, cols, w)
+        w("")
+        w("The same at rest (t >= %g ns) and the element maxima of the "
+          "same file over the passage (mesh-dependent):" % (REST*1e9))
+        w("")
+        table(rows, [(f"vonMisesPatchRest:{n}",
+                      f"von Mises patch mean at rest, {n} [Pa]", "%.2f")
+                     for n in PATCH_INTERFACES]
+              + [(f"vonMisesMax:{n}", f"von Mises element max, {n} [Pa]",
+                  "%.2f") for n in PATCH_INTERFACES]
+              + [(f"shearMax:{n}", f"shear element max, {n} [Pa]", "%.2f")
+                 for n in PATCH_INTERFACES], w)
+        w("")
+        w("Where and when the von Mises patch mean over the passage was "
+          "largest (centre r, z [um], time [ns]):")
+        w("")
+        for pulse, v, m, _ in rows:
+            w(f"- {pulse*1e9:g} ns {v}: " + "; ".join(
+                "%s (%.2f, %.2f) um at %.2f ns" % (
+                    n, 1e6*m[f"vonMisesPatchAt:{n}"][0],
+                    1e6*m[f"vonMisesPatchAt:{n}"][1],
+                    1e9*m[f"vonMisesPatchTime:{n}"])
+                for n in PATCH_INTERFACES
+                if f"vonMisesPatchAt:{n}" in m))
+        w("")
     w("The interface maxima over elements against means over a length of "
       "the interface, at the write nearest the passage maximum (solid.h5, "
       "every 6.55 ns): the largest element von Mises of the band there, "

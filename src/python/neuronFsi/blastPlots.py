@@ -6,7 +6,11 @@ what tutorials/blast/plotBlast.py and the paper comparison
                                   of the nucleus height): pressure, von
                                   Mises, longitudinal strain and strain rate
                                   against time, with the plane-wave answer
-    interfaceMaxima(case, out)    maxima along each region interface
+    interfaceMaxima(case, out)    the interface measures: the largest
+                                  mean over a fixed length of each
+                                  interface (reported; the solver's
+                                  interfacePatches.dat) over the element
+                                  maxima (mesh-dependent)
     snapshot(case, out, time)     the solid at the write nearest time: r-z
                                   section (wedge) or a quarter cut away (3D)
     summary(case, until)          probe peaks, arrival, coupling statistics
@@ -20,7 +24,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-from . import logs, planeWave, postProcessing
+from . import damageIndicators, logs, planeWave, postProcessing
 
 
 class BlastPlotError(Exception):
@@ -150,48 +154,113 @@ def fig10(cases, labels, out, dpi=120, xlim=None):
     plt.close(fig)
 
 
+def interfacePatches(case):
+    """The solver's interface means over a fixed length (the reported
+    interface measure, damageIndicators.interfacePatches), None for a run
+    that did not write them"""
+    if not damageIndicators.hasInterfacePatches(case):
+        return None
+    try:
+        postProcessing.checkCovers(case, damageIndicators.PATCH_LOG,
+                                   postProcessing.series(
+                                       case, damageIndicators.PATCH_LOG))
+        return damageIndicators.interfacePatches(case)
+    except postProcessing.ColumnFileError as err:
+        raise BlastPlotError(str(err))
+
+
 def interfaceMaxima(case, out, until=np.inf):
+    """The interface measures against time: with interfacePatches.dat the
+    reported means over a fixed length of interface (solid lines: von
+    Mises and shear traction; membrane-fluid too) over the element maxima
+    (thin dashed: mesh-dependent); without it the element maxima of
+    pressure and von Mises of interfaceMaxima.dat. Returns {interface:
+    (pMax, vmMax over t <= until, pMax, vmMax over the run)} of the
+    element maxima and, with the patches, {interface + ' patch':
+    (vonMisesPatch, shearPatch over t <= until, the same over the run)}."""
     d = series(case, "solidInterfaces/interfaceMaxima.dat")
     names = interfaceNames(case)
+    ip = interfacePatches(case)
     fig, ax = plt.subplots(1, 2, figsize=(10, 4))
-    for k, n in enumerate(names):
-        ax[0].plot(d[:, 0]*1e9, d[:, 1 + 2*k]/1e6, label=n)
-        ax[1].plot(d[:, 0]*1e9, d[:, 2 + 2*k], label=n)
-    ax[0].set_ylabel("max pressure along the interface [MPa]")
-    ax[1].set_ylabel("max von Mises along the interface [Pa]")
+    if ip is None:
+        for k, n in enumerate(names):
+            ax[0].plot(d[:, 0]*1e9, d[:, 1 + 2*k]/1e6, label=n)
+            ax[1].plot(d[:, 0]*1e9, d[:, 2 + 2*k], label=n)
+        ax[0].set_ylabel("max pressure along the interface [MPa]")
+        ax[1].set_ylabel("max von Mises along the interface [Pa]")
+    else:
+        L = damageIndicators.patchLength(case)
+        for k, (n, v) in enumerate(ip.items()):
+            t = v["t"]*1e9
+            ax[0].plot(t, v["vonMisesPatch"], color=f"C{k}",
+                       label=f"{n}: {L*1e6:g}-um mean")
+            ax[0].plot(t, v["vonMisesMax"], color=f"C{k}", ls="--", lw=0.7,
+                       label=f"{n}: element max")
+            ax[1].plot(t, v["shearPatch"], color=f"C{k}",
+                       label=f"{n}: {L*1e6:g}-um mean")
+            ax[1].plot(t, v["shearMax"], color=f"C{k}", ls="--", lw=0.7,
+                       label=f"{n}: element max")
+        ax[0].set_ylabel("von Mises along the interface [Pa]")
+        ax[1].set_ylabel("shear traction on the interface [Pa]")
+        fig.suptitle(f"Interface measures: largest mean over {L*1e6:g} um "
+                     "of interface (reported) and element maxima (dashed, "
+                     "mesh-dependent)", fontsize=9)
     for a in ax:
         a.set_xlabel("time [ns]")
         a.grid(alpha=0.3)
-        a.legend()
+        a.legend(fontsize=6)
     fig.tight_layout()
     fig.savefig(out, dpi=120)
     plt.close(fig)
     w = d[:, 0] <= until
-    return {n: (d[w, 1 + 2*k].max(), d[w, 2 + 2*k].max(),
-                d[:, 1 + 2*k].max(), d[:, 2 + 2*k].max())
-            for k, n in enumerate(names)}
+    res = {n: (d[w, 1 + 2*k].max(), d[w, 2 + 2*k].max(),
+               d[:, 1 + 2*k].max(), d[:, 2 + 2*k].max())
+           for k, n in enumerate(names)}
+    if ip is not None:
+        for n, v in ip.items():
+            w = v["t"] <= until
+            res[n + " patch"] = (v["vonMisesPatch"][w].max(),
+                                 v["shearPatch"][w].max(),
+                                 v["vonMisesPatch"].max(),
+                                 v["shearPatch"].max())
+    return res
 
 
 def interfaceMaximaCases(cases, labels, out):
-    """Interface maxima of several runs: colour per case, style per
-    interface"""
+    """Interface measures of several runs: colour per case, style per
+    interface; the patch means (reported) where the runs wrote them, else
+    the element maxima"""
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.5))
     styles = ["-", "--", ":", "-."]
+    patches = all(damageIndicators.hasInterfacePatches(c) for c in cases)
     for c, (case, lab) in enumerate(zip(cases, labels)):
+        if patches:
+            for k, (n, v) in enumerate(interfacePatches(case).items()):
+                kw = dict(color=f"C{c}", ls=styles[k % 4], label=f"{lab} {n}")
+                ax[0].plot(v["t"]*1e9, v["vonMisesPatch"], **kw)
+                ax[1].plot(v["t"]*1e9, v["shearPatch"], **kw)
+            continue
         d = series(case, "solidInterfaces/interfaceMaxima.dat")
         names = interfaceNames(case)
         for k, n in enumerate(names):
             kw = dict(color=f"C{c}", ls=styles[k % 4], label=f"{lab} {n}")
             ax[0].plot(d[:, 0]*1e9, d[:, 1 + 2*k]/1e6, **kw)
             ax[1].plot(d[:, 0]*1e9, d[:, 2 + 2*k], **kw)
-    ax[0].set_ylabel("max pressure along the interface [MPa]")
-    ax[1].set_ylabel("max von Mises along the interface [Pa]")
+    if patches:
+        L = damageIndicators.patchLength(cases[0])
+        ax[0].set_ylabel(f"von Mises, largest {L*1e6:g}-um mean [Pa]")
+        ax[1].set_ylabel(f"shear traction, largest {L*1e6:g}-um mean [Pa]")
+        fig.suptitle("Region-interface measures: the largest mean over a "
+                     "fixed length of interface")
+    else:
+        ax[0].set_ylabel("max pressure along the interface [MPa]")
+        ax[1].set_ylabel("max von Mises along the interface [Pa]")
+        fig.suptitle("Region-interface maxima (membrane-cytoplasm, "
+                     "cytoplasm-nucleus)")
     for a in ax:
         a.set_xlabel("time [ns]")
         a.grid(alpha=0.3)
     ax[1].legend(fontsize=7)
-    fig.suptitle("Region-interface maxima (membrane-cytoplasm, "
-                 "cytoplasm-nucleus)")
     fig.tight_layout()
     fig.savefig(out, dpi=120)
     plt.close(fig)

@@ -1,7 +1,9 @@
 """Damage indicators of the blast scene's solid, per region and per region
 interface, from its results file solid.h5 (solidResults) and the solver's
 interface maxima (postProcessing/solidInterfaces/interfaceMaxima.dat):
-what pulseStudy (applications/utilities) tabulates and maps.
+what pulseStudy (applications/utilities) tabulates and maps. The
+solver's interface means over a fixed length (interfacePatches.dat, the
+reported interface measure) are read by interfacePatches().
 
 At each write of solid.h5, over the elements of a target (a region, or the
 elements along an interface, either side, as the solver's interface
@@ -35,6 +37,7 @@ time it spends above a threshold (linear between samples).
 """
 
 import math
+import re
 
 import numpy as np
 
@@ -246,3 +249,51 @@ def interfaceMaxima(case):
              if n.startswith("pMax:")]
     return {n: (d[:, 0], d[:, 1 + 2*k], d[:, 2 + 2*k])
             for k, n in enumerate(names)}
+
+
+PATCH_LOG = "solidInterfaces/interfacePatches.dat"
+PATCH_QUANTITIES = ("pPatch", "vonMisesPatch", "shearPatch",
+                    "vonMisesPatchX", "vonMisesPatchY", "vonMisesPatchZ",
+                    "pMax", "vonMisesMax", "shearMax")
+
+
+def hasInterfacePatches(case):
+    """Whether the run wrote postProcessing/solidInterfaces/*/
+    interfacePatches.dat (a run of a build or case before it: no)"""
+    try:
+        postProcessing.segments(case, PATCH_LOG)
+        return True
+    except postProcessing.ColumnFileError:
+        return False
+
+
+def interfacePatches(case):
+    """{interface: {quantity: array}} of every step, from
+    postProcessing/solidInterfaces/interfacePatches.dat (over restarts):
+    't' [s] and, per interface (membrane-cytoplasm, ..., membrane-fluid),
+    the solver's largest mean over a fixed length of interface (the
+    reported measure: pPatch, vonMisesPatch, shearPatch [Pa]; the von
+    Mises patch's centre vonMisesPatchX/Y/Z [m]) and the element maxima
+    (mesh-dependent: pMax, vonMisesMax, shearMax [Pa])."""
+    d = postProcessing.series(case, PATCH_LOG)
+    names = postProcessing.names(case, PATCH_LOG)
+    out = {}
+    for k, n in enumerate(names):
+        if ":" not in n:
+            continue
+        q, iface = n.split(":", 1)
+        if q not in PATCH_QUANTITIES:
+            continue
+        out.setdefault(iface, {"t": d[:, 0]})[q] = d[:, k]
+    return out
+
+
+def patchLength(case):
+    """The patch length [m] interfacePatches.dat's header states"""
+    for seg in postProcessing.segments(case, PATCH_LOG)[:1]:
+        with open(seg[1]) as f:
+            head = f.readline()
+        m = re.search(r"r-z: ([0-9.eE+-]+) m of arc", head)
+        if m:
+            return float(m.group(1))
+    return float("nan")
