@@ -31,7 +31,8 @@ import numpy as np
 
 from neuronFsi import postProcessing
 
-# log, columns compared (None: all), exact columns, complete
+# log, columns compared (None: all; a function: of the column names),
+# exact columns, complete
 LOGS = (
     # not compared: the final residual (a convergence measure below the
     # tolerance), the swirl component of the force (zero but for round-off,
@@ -40,7 +41,13 @@ LOGS = (
     ("fsi/coupling.dat", (0, 1, 2, 4, 5, 6, 8, 10, 11), (0, 1, 2, 4), True),
     ("solidProbes/solidProbes.dat", None, (0,), True),
     ("solidInterfaces/interfaceMaxima.dat", None, (0,), True),
-    ("solidInterfaces/interfacePatches.dat", None, (0,), True),
+    # not compared: the von Mises patches' centres (where two patches'
+    # means agree to round-off the centre may move by a patch; the means
+    # are compared)
+    ("solidInterfaces/interfacePatches.dat",
+     lambda names: [j for j, n in enumerate(names)
+                    if not n.startswith(("vonMisesPatchX", "vonMisesPatchY",
+                                         "vonMisesPatchZ"))], (0,), True),
 )
 
 
@@ -99,7 +106,8 @@ def main():
                 ok = False
             rr = rr[:len(k)]
             compared += len(k)
-            c = list(cols) if cols is not None else list(range(ncols))
+            c = (list(range(ncols)) if cols is None
+                 else cols(names) if callable(cols) else list(cols))
             scale = np.maximum(np.abs(r[:, c]).max(axis=0), 1e-300)
             floor = np.array([vonMisesFloor[j]/scale[k_]
                               for k_, j in enumerate(c)])

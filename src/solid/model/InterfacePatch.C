@@ -473,7 +473,12 @@ double solid::InterfacePatch::largestMean
 
 double solid::InterfacePatch::shear(const Mat3& sigma, const Vec3& n)
 {
-    const Vec3 t(sigma*n);
+    // Of the deviatoric part (the same value: the isotropic part's
+    // traction is normal): sigma's diagonal is the pressure's size (1e8
+    // Pa in the blast), the shear a few Pa, and the traction's tangential
+    // part computed from sigma itself loses it to round-off
+    const Mat3 d(sigma - sigma.trace()/3.0*Mat3::Identity());
+    const Vec3 t(d*n);
     return (t - n.dot(t)*n).norm();
 }
 
