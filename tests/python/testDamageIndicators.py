@@ -175,5 +175,41 @@ interfaces ((skin inner));
             di.series(os.path.join(self.tmp, "case"), 1.5)
 
 
+class Patches(TempDirTestCase):
+    """interfacePatches.dat (the solver's interface means over a fixed
+    length): per interface and quantity, over a restart; its length"""
+
+    HEAD = ("# per region interface: the largest mean over a patch of "
+            "fixed size (r-z: 1e-06 m of arc along the interface; 3D: a "
+            "disc of diameter 1e-06 m) of ...\n# time [s]" + "".join(
+                "  " + " ".join("%s:%s[%s]" % (q, n, "m" if "Patch" in q
+                                               and q[-1] in "XYZ" else "Pa")
+                                for q in di.PATCH_QUANTITIES)
+                for n in ("a-b", "a-fluid")) + "\n")
+
+    def row(self, t):
+        return " ".join("%g" % x for x in
+                        [t] + [10*t + k for k in range(18)]) + "\n"
+
+    def testRead(self):
+        case = os.path.join(self.tmp, "case")
+        self.assertFalse(di.hasInterfacePatches(case))
+        log = "case/postProcessing/solidInterfaces/%s/interfacePatches.dat"
+        self.write(log % "0", self.HEAD + self.row(0) + self.row(1)
+                   + self.row(2))
+        # a restart from 1: its rows replace the first start's from 1 on
+        self.write(log % "1", self.HEAD + self.row(1) + self.row(2)
+                   + self.row(3))
+        self.assertTrue(di.hasInterfacePatches(case))
+        ip = di.interfacePatches(case)
+        self.assertEqual(sorted(ip), ["a-b", "a-fluid"])
+        np.testing.assert_array_equal(ip["a-b"]["t"], [0, 1, 2, 3])
+        np.testing.assert_array_equal(ip["a-b"]["vonMisesPatch"],
+                                      [1, 11, 21, 31])
+        np.testing.assert_array_equal(ip["a-fluid"]["shearMax"],
+                                      [17, 27, 37, 47])
+        self.assertEqual(di.patchLength(case), 1e-6)
+
+
 if __name__ == "__main__":
     unittest.main()
