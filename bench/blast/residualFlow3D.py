@@ -4,7 +4,7 @@ docs/results/blast3D.md, "What makes the rest flow in 3D"); not a test.
 
     bench/blast/residualFlow3D.py CASE [--after 7.5e-8] [--fluid T ...]
                                        [--vorticity T ...] [--faces]
-                                       [--zones T ...]
+                                       [--zones T ...] [--front]
 
 CASE: a finished run of tutorials/blast/quarter3D (hexahedral cell,
 solid/solid.h5 with the states at the case's write times). In the exact
@@ -56,6 +56,12 @@ zone the share of the lateral kinetic energy, of the enstrophy and of
 the mass, and the mass-weighted rms lateral speed; the pressure crest's
 height for orientation; the lateral kinetic energy's share by bins of r
 and z.
+
+--front: the first front's steepness at the water probes
+(postProcessing/fluidProbes/0/p): its arrival (10 % of the largest
+pressure within 3 ns of the first 5 %), its 10-90 % rise time and that
+largest pressure; a captured shock and a linear front of equal width
+differ in shape, not in this number.
 
 --faces: the water's faces on the cell (patch cellInterface, from
 `surfaceMeshExtract` in a scratch copy) by the polar angle of their
@@ -348,6 +354,22 @@ def zoneFlow(case, times):
                 for zl in range(0, 20, 4))))
 
 
+def front(case):
+    d = np.loadtxt(os.path.join(case, "postProcessing", "fluidProbes", "0",
+                                "p"))
+    t = d[:, 0]
+    for k in range(1, d.shape[1]):
+        p = d[:, k]
+        i0 = np.argmax(p > 0.05*p.max())
+        i1 = i0 + np.searchsorted(t[i0:], t[i0] + 3e-9)
+        pk = p[i0:i1].max()
+        a = t[np.argmax(p > 0.1*pk)]
+        b = t[np.argmax(p > 0.9*pk)]
+        print("water probe %d: arrival %.2f ns, rise 10-90 %% %.3f ns, "
+              "largest within 3 ns %.4g MPa" % (k - 1, 1e9*a, 1e9*(b - a),
+                                                1e-6*pk))
+
+
 def faces(case):
     tmp = tempfile.mkdtemp()
     try:
@@ -398,6 +420,7 @@ def main():
     a.add_argument("--vorticity", nargs="+", default=None)
     a.add_argument("--faces", action="store_true")
     a.add_argument("--zones", nargs="+", default=None)
+    a.add_argument("--front", action="store_true")
     o = a.parse_args()
     case = os.path.abspath(o.case)
     if o.fluid:
@@ -408,6 +431,8 @@ def main():
         return faces(case)
     if o.zones:
         return zoneFlow(case, o.zones)
+    if o.front:
+        return front(case)
     return solid(case, o.after)
 
 
