@@ -4,6 +4,7 @@ docs/results/blast3D.md, "What makes the rest flow in 3D"); not a test.
 
     bench/blast/residualFlow3D.py CASE [--after 7.5e-8] [--fluid T ...]
                                        [--vorticity T ...] [--faces]
+                                       [--zones T ...] [--front]
 
 CASE: a finished run of tutorials/blast/quarter3D (hexahedral cell,
 solid/solid.h5 with the states at the case's write times). In the exact
@@ -42,6 +43,26 @@ constant mesh), and the twelve cells that hold the most, with their
 position, size V^(1/3), |curl U| and non-orthogonality; the crest of the
 pressure (where the front is) for orientation.
 
+--zones T ...: the water's lateral flow (exact: none; lateral = the x, y
+components, across the wave's z) and its enstrophy at each time (a
+time series when given many), over the mesh's zones: the O-grid (inside
+the inner box [0, a + margin]^2 x [0, H + margin], margin
+neuronFsi.cellRefinement.innerMargin's; outside the cell) split by
+azimuth as the solid (pole r < 2 um, the symmetry planes' strips, the
+diagonal seam 35-55 deg, the others) and by the cell's largest face
+non-orthogonality (below 20, 20-40, 40 deg and more: the rays from the
+inner box's edges), and the Cartesian water outside the inner box; per
+zone the share of the lateral kinetic energy, of the enstrophy and of
+the mass, and the mass-weighted rms lateral speed; the pressure crest's
+height for orientation; the lateral kinetic energy's share by bins of r
+and z.
+
+--front: the first front's steepness at the water probes
+(postProcessing/fluidProbes/0/p): its arrival (10 % of the largest
+pressure within 3 ns of the first 5 %), its 10-90 % rise time and that
+largest pressure; a captured shock and a linear front of equal width
+differ in shape, not in this number.
+
 --faces: the water's faces on the cell (patch cellInterface, from
 `surfaceMeshExtract` in a scratch copy) by the polar angle of their
 centre on the cell (0 at the top, atan2(r/a, z/H), a = 8.4 um, H =
@@ -58,6 +79,7 @@ import tempfile
 import h5py
 import numpy as np
 
+from neuronFsi import cellRefinement
 from neuronFsi import foamField as ff
 
 RHO = 1000.0
@@ -279,6 +301,75 @@ def vorticity(case, times):
                      ens[i]/E, no[i]))
 
 
+def innerBox(case):
+    """The O-grid's inner box (x, y, z extents) [m]."""
+    margin = cellRefinement.innerMargin(case)
+    return np.array([A + margin, A + margin, H + margin])
+
+
+def zoneFlow(case, times):
+    no = nonOrthogonality(case)
+    B = innerBox(case)
+    print("inner box %.2f x %.2f x %.2f um" % tuple(1e6*B))
+    first = True
+    for t in times:
+        f = postFields(case, t, ["vorticity"])
+        C, V, W, p = f["C"], f["V"], f["vorticity"], f["p"]
+        U = ff.internalField(os.path.join(case, t, "U"))
+        rho = ff.internalField(os.path.join(case, t, "rho")) \
+            if os.path.exists(os.path.join(case, t, "rho")) else RHO
+        m = rho*V
+        kl = 0.5*m*(U[:, 0]**2 + U[:, 1]**2)
+        ens = 0.5*V*(W*W).sum(1)
+        inside = np.all(C < B, axis=1)
+        z = zones(C)
+        sets = [("O-grid " + n, inside & (z == n)) for n in NAMES]
+        sets += [("O-grid nonortho <20", inside & (no < 20)),
+                 ("O-grid nonortho 20-40", inside & (no >= 20) & (no < 40)),
+                 ("O-grid nonortho >=40", inside & (no >= 40)),
+                 ("outside the box", ~inside)]
+        K, E, M = kl.sum(), ens.sum(), m.sum()
+        if first:
+            print("zones (cells): %s" % ", ".join(
+                "%s (%d)" % (n, s.sum()) for n, s in sets))
+            first = False
+        print("t %s s: crest z %.2f um; lateral KE %.4g J, rms lateral "
+              "speed %.4g m/s, enstrophy %.4g m^3/s^2; per zone: lateral "
+              "KE share / enstrophy share / mass share / rms lateral "
+              "speed [m/s]" % (t, 1e6*C[np.argmax(p), 2], K,
+                               np.sqrt(2*K/M), E))
+        for n, s in sets:
+            print("   %-22s %.3f / %.3f / %.3f / %.4g"
+                  % (n, kl[s].sum()/K, ens[s].sum()/E, m[s].sum()/M,
+                     np.sqrt(2*kl[s].sum()/m[s].sum())))
+        r = np.hypot(C[:, 0], C[:, 1])
+        print("   lateral KE share by r [um] (rows) and z [um] (columns "
+              "0-4, 4-8, 8-12, 12-16, 16-20):")
+        for lo, hi in ((0, 5), (5, 10), (10, 14), (14, 20), (20, 30),
+                       (30, 80)):
+            sr = (r >= lo*1e-6) & (r < hi*1e-6)
+            print("     r %2d-%2d: %s" % (lo, hi, " ".join(
+                "%.3f" % (kl[sr & (C[:, 2] >= zl*1e-6)
+                             & (C[:, 2] < (zl + 4)*1e-6)].sum()/K)
+                for zl in range(0, 20, 4))))
+
+
+def front(case):
+    d = np.loadtxt(os.path.join(case, "postProcessing", "fluidProbes", "0",
+                                "p"))
+    t = d[:, 0]
+    for k in range(1, d.shape[1]):
+        p = d[:, k]
+        i0 = np.argmax(p > 0.05*p.max())
+        i1 = i0 + np.searchsorted(t[i0:], t[i0] + 3e-9)
+        pk = p[i0:i1].max()
+        a = t[np.argmax(p > 0.1*pk)]
+        b = t[np.argmax(p > 0.9*pk)]
+        print("water probe %d: arrival %.2f ns, rise 10-90 %% %.3f ns, "
+              "largest within 3 ns %.4g MPa" % (k - 1, 1e9*a, 1e9*(b - a),
+                                                1e-6*pk))
+
+
 def faces(case):
     tmp = tempfile.mkdtemp()
     try:
@@ -328,6 +419,8 @@ def main():
     a.add_argument("--fluid", nargs="+", default=None)
     a.add_argument("--vorticity", nargs="+", default=None)
     a.add_argument("--faces", action="store_true")
+    a.add_argument("--zones", nargs="+", default=None)
+    a.add_argument("--front", action="store_true")
     o = a.parse_args()
     case = os.path.abspath(o.case)
     if o.fluid:
@@ -336,6 +429,10 @@ def main():
         return vorticity(case, o.vorticity)
     if o.faces:
         return faces(case)
+    if o.zones:
+        return zoneFlow(case, o.zones)
+    if o.front:
+        return front(case)
     return solid(case, o.after)
 
 
