@@ -25,14 +25,18 @@
 #   LIMITER   the fluid's reconstruct() limiter in system/fvSchemes: MUSCL
 #          (the tutorial's), vanLeer, vanAlbada, Minmod
 #   MAXCO     the fluid Courant number (system/controlDict maxCo; 0.9)
-#   BULK_VISCOSITY "b1 b2"  the solid's linear and quadratic artificial
-#          bulk viscosity in every Mie-Grueneisen region (solidProperties
-#          materials; the library's default 0.06 1.2)
+#   SOLID_OVERRIDE '...'  appended to the copy's constant/
+#          solidProperties.allrun (as bench/blast/probeOvershoot3D.sh), e.g.
+#          'materials { nucleus { b1 0.06; b2 1.2247; } ... }': the solid's
+#          linear and quadratic artificial bulk viscosity of a region
+#          (the library's default 0.06 1.2)
+#   REFERENCE FILE  planeWave -reference FILE: the reference.dat of an
+#          earlier run of the same pulse, column and probe heights
 # Issue 17 item 1 (docs/results/blastPlaneWave.md, "The transparent
 # cell"); tests/blast/transparentCell.sh runs it at x1. Example:
 #   bench/blast/transparentCell.sh /tmp/t07 0.7 water -pulse 1e-8 -endTime 9e-8
 set -euo pipefail
-[ $# -ge 3 ] || { sed -n 2,33p "$0"; exit 1; }
+[ $# -ge 3 ] || { sed -n 2,36p "$0"; exit 1; }
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
 dir=$1; scale=$2; law=$3; shift 3
@@ -82,18 +86,10 @@ then
     foamDictionary -entry maxCo -set "$MAXCO" system/controlDict > /dev/null
     echo "maxCo $(foamDictionary -entry maxCo -value system/controlDict)"
 fi
-if [ -n "${BULK_VISCOSITY:-}" ]
+if [ -n "${SOLID_OVERRIDE:-}" ]
 then
-    /usr/bin/python3 - $BULK_VISCOSITY <<'PY'
-import sys
-b1, b2 = (float(x) for x in sys.argv[1:3])
-f = "constant/solidProperties"
-s = open(f).read()
-key = "volumetric  mieGruneisen;"
-if not s.count(key):
-    raise SystemExit("transparentCell.sh: no %s in %s" % (key, f))
-open(f, "w").write(s.replace(key, "%s b1 %.6g; b2 %.6g;" % (key, b1, b2)))
-PY
+    echo "$SOLID_OVERRIDE" >> constant/solidProperties.allrun
+    echo "constant/solidProperties.allrun + $SOLID_OVERRIDE"
 fi
 # the regions' volumetric laws, as the solver reads them
 foamDictionary -expand constant/solidProperties 2>/dev/null \
@@ -102,7 +98,9 @@ echo "water cells: $(awk '/^ *cells:/ {print $2; exit}' log.checkMesh)"
 nice -n 10 cellBlastFoam > log.cellBlastFoam 2>&1
 grep "^CPU time of the time loop" log.cellBlastFoam
 status=0
-nice -n 10 planeWave -case . -check > log.planeWaveCheck 2>&1 || status=$?
+reference=()
+[ -z "${REFERENCE:-}" ] || reference=(-reference "$REFERENCE")
+nice -n 10 planeWave -case . -check "${reference[@]}" > log.planeWaveCheck 2>&1 || status=$?
 grep -v "^#" log.planeWaveCheck
 if [ "$law" = posed ]
 then
