@@ -22,6 +22,10 @@
 #   SCALE_H, SCALE_FAR, SCALE_DZ, SCALE_CELL  that size's level instead of
 #          SCALE (-h, -far, -dz, -cell: e.g. SCALE_DZ=0.35 refines only
 #          the column above the cell's box)
+#   CELL_MESH '...'  entries appended to system/cellMeshDict.allrun, the
+#          cell's mesh written again (e.g. 'nucleusSize 1.75e-7;
+#          cytoplasmSize 1.75e-7;': the cell's interior finer than -cell,
+#          its membrane's faces, which the water's -h must resolve, not)
 #   LIMITER   the fluid's reconstruct() limiter in system/fvSchemes: MUSCL
 #          (the tutorial's), vanLeer, vanAlbada, Minmod
 #   MAXCO     the fluid Courant number (system/controlDict maxCo; 0.9)
@@ -36,7 +40,7 @@
 # cell"); tests/blast/transparentCell.sh runs it at x1. Example:
 #   bench/blast/transparentCell.sh /tmp/t07 0.7 water -pulse 1e-8 -endTime 9e-8
 set -euo pipefail
-[ $# -ge 3 ] || { sed -n 2,36p "$0"; exit 1; }
+[ $# -ge 3 ] || { sed -n 2,40p "$0"; exit 1; }
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
 dir=$1; scale=$2; law=$3; shift 3
@@ -63,9 +67,11 @@ if [ "$law" = water ]
 then
     python3 -m neuronFsi.membraneLaw water constant/solidProperties || exit 1
 fi
-if [ -n "${MEMBRANE_LAYERS:-}" ]
+if [ -n "${MEMBRANE_LAYERS:-}${CELL_MESH:-}" ]
 then
-    echo "membraneLayers $MEMBRANE_LAYERS;" >> system/cellMeshDict.allrun
+    [ -z "${MEMBRANE_LAYERS:-}" ] \
+        || echo "membraneLayers $MEMBRANE_LAYERS;" >> system/cellMeshDict.allrun
+    [ -z "${CELL_MESH:-}" ] || echo "$CELL_MESH" >> system/cellMeshDict.allrun
     cellMesh > log.cellMesh 2>&1 || { tail -3 log.cellMesh; exit 1; }
     grep "membrane thickness" log.cellMesh
 fi
