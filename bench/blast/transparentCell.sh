@@ -71,9 +71,20 @@ if [ -n "${MEMBRANE_LAYERS:-}${CELL_MESH:-}" ]
 then
     [ -z "${MEMBRANE_LAYERS:-}" ] \
         || echo "membraneLayers $MEMBRANE_LAYERS;" >> system/cellMeshDict.allrun
-    [ -z "${CELL_MESH:-}" ] || echo "$CELL_MESH" >> system/cellMeshDict.allrun
+    [ -z "${CELL_MESH:-}" ] || /usr/bin/python3 - "$CELL_MESH" <<'PY'
+import re, sys
+# each "key value;" of CELL_MESH replaces the entry Allrun wrote, or is added
+f = "system/cellMeshDict.allrun"
+s = open(f).read()
+for key, value in re.findall(r"(\w+)\s+([^;]+);", sys.argv[1]):
+    s, n = re.subn(r"^%s .*;$" % key, "%s %s;" % (key, value), s, flags=re.M)
+    if n == 0:
+        s += "%s %s;\n" % (key, value)
+open(f, "w").write(s)
+PY
     cellMesh > log.cellMesh 2>&1 || { tail -3 log.cellMesh; exit 1; }
     grep "membrane thickness" log.cellMesh
+    grep -v "^//" system/cellMeshDict.allrun | paste -sd' '
 fi
 if [ -n "${LIMITER:-}" ]
 then

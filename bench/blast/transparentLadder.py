@@ -94,11 +94,16 @@ def item1(arg, layered):
         e = [(abs(err(n, key)), n) for n in m if err(n, key) is not None]
         worst = max(e)
         out.append(("%.3f ns" if key == "arrival" else "%.2f %%") % worst[0])
+    names = {v: "water r = %g um" % (r*1e6) for r, v in water.items()}
     for n in m:
+        # solid p2 (the cytoplasm side named) repeats p0 (the same side)
+        if n == "solid_p2" and m[n][2:] == m.get("solid_p0", [])[2:]:
+            continue
         for key, bound in BOUNDS.items():
             e = err(n, key)
             if e is not None and abs(e) > bound:
-                fails.append("%s %s %+.2f" % (n, key, e))
+                fails.append("%s %s %+.2f" % (names.get(n, n.replace(
+                    "_", " ")), key, e))
     out.append("; ".join(fails) or "-")
     return out
 
