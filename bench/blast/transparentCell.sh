@@ -17,18 +17,38 @@
 # the check's table. MEMBRANE_LAYERS (environment, optional): the
 # membrane's elements across its 200 nm (cellMeshDict membraneLayers; the
 # tutorial's 1 at every level), the cell's mesh written again with it.
+# Further settings from the environment (optional; docs/results/
+# blastPlaneWave.md, "The cheapest default that meets item 1"):
+#   SCALE_H, SCALE_FAR, SCALE_DZ, SCALE_CELL  that size's level instead of
+#          SCALE (-h, -far, -dz, -cell: e.g. SCALE_DZ=0.35 refines only
+#          the column above the cell's box)
+#   CELL_MESH '...'  entries appended to system/cellMeshDict.allrun, the
+#          cell's mesh written again (e.g. 'nucleusSize 1.75e-7;
+#          cytoplasmSize 1.75e-7;': the cell's interior finer than -cell,
+#          its membrane's faces, which the water's -h must resolve, not)
+#   LIMITER   the fluid's reconstruct() limiter in system/fvSchemes: MUSCL
+#          (the tutorial's), vanLeer, vanAlbada, Minmod
+#   MAXCO     the fluid Courant number (system/controlDict maxCo; 0.9)
+#   SOLID_OVERRIDE '...'  appended to the copy's constant/
+#          solidProperties.allrun (as bench/blast/probeOvershoot3D.sh), e.g.
+#          'materials { nucleus { b1 0.06; b2 1.2247; } ... }': the solid's
+#          linear and quadratic artificial bulk viscosity of a region
+#          (the library's default 0.06 1.2)
+#   REFERENCE FILE  planeWave -reference FILE: the reference.dat of an
+#          earlier run of the same pulse, column and probe heights
 # Issue 17 item 1 (docs/results/blastPlaneWave.md, "The transparent
 # cell"); tests/blast/transparentCell.sh runs it at x1. Example:
 #   bench/blast/transparentCell.sh /tmp/t07 0.7 water -pulse 1e-8 -endTime 9e-8
 set -euo pipefail
-[ $# -ge 3 ] || { sed -n 2,24p "$0"; exit 1; }
+[ $# -ge 3 ] || { sed -n 2,40p "$0"; exit 1; }
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
 dir=$1; scale=$2; law=$3; shift 3
 case $law in water|posed) ;; *) echo "transparentCell.sh: LAW $law: water or posed" >&2; exit 1 ;; esac
-size() { /usr/bin/python3 -c "import sys; print('%.6g' % (float(sys.argv[1])*float(sys.argv[2])))" "$1" "$scale"; }
-bash "$here/../../tests/blast/runPreview.sh" "$dir" -h "$(size 0.25e-6)" \
-    -far "$(size 1e-6)" -dz "$(size 0.25e-6)" -cell "$(size 0.5e-6)" \
+size() { /usr/bin/python3 -c "import sys; print('%.6g' % (float(sys.argv[1])*float(sys.argv[2])))" "$1" "${2:-$scale}"; }
+bash "$here/../../tests/blast/runPreview.sh" "$dir" -h "$(size 0.25e-6 "${SCALE_H:-}")" \
+    -far "$(size 1e-6 "${SCALE_FAR:-}")" -dz "$(size 0.25e-6 "${SCALE_DZ:-}")" \
+    -cell "$(size 0.5e-6 "${SCALE_CELL:-}")" \
     -noPlots -noVTK -noRun "$@" > "$dir.log" 2>&1 \
     || { tail -5 "$dir.log"; exit 1; }
 cd "$dir/axisymmetricPreview"
@@ -47,20 +67,57 @@ if [ "$law" = water ]
 then
     python3 -m neuronFsi.membraneLaw water constant/solidProperties || exit 1
 fi
-if [ -n "${MEMBRANE_LAYERS:-}" ]
+if [ -n "${MEMBRANE_LAYERS:-}${CELL_MESH:-}" ]
 then
-    echo "membraneLayers $MEMBRANE_LAYERS;" >> system/cellMeshDict.allrun
+    [ -z "${MEMBRANE_LAYERS:-}" ] \
+        || echo "membraneLayers $MEMBRANE_LAYERS;" >> system/cellMeshDict.allrun
+    [ -z "${CELL_MESH:-}" ] || /usr/bin/python3 - "$CELL_MESH" <<'PY'
+import re, sys
+# each "key value;" of CELL_MESH replaces the entry Allrun wrote, or is added
+f = "system/cellMeshDict.allrun"
+s = open(f).read()
+for key, value in re.findall(r"(\w+)\s+([^;]+);", sys.argv[1]):
+    s, n = re.subn(r"^%s .*;$" % key, "%s %s;" % (key, value), s, flags=re.M)
+    if n == 0:
+        s += "%s %s;\n" % (key, value)
+open(f, "w").write(s)
+PY
     cellMesh > log.cellMesh 2>&1 || { tail -3 log.cellMesh; exit 1; }
     grep "membrane thickness" log.cellMesh
+    grep -v "^//" system/cellMeshDict.allrun | paste -sd' '
+fi
+if [ -n "${LIMITER:-}" ]
+then
+    case $LIMITER in MUSCL|vanLeer|vanAlbada|Minmod) ;;
+        *) echo "transparentCell.sh: LIMITER $LIMITER: MUSCL, vanLeer, vanAlbada or Minmod" >&2; exit 1 ;;
+    esac
+    for v in rho p
+    do
+        foamDictionary -entry "interpolationSchemes/reconstruct($v)" -set "$LIMITER" system/fvSchemes > /dev/null
+    done
+    foamDictionary -entry "interpolationSchemes/reconstruct(U)" -set "${LIMITER}V" system/fvSchemes > /dev/null
+    foamDictionary -entry interpolationSchemes -value system/fvSchemes | grep reconstruct | tr -s ' ' | paste -sd' '
+fi
+if [ -n "${MAXCO:-}" ]
+then
+    foamDictionary -entry maxCo -set "$MAXCO" system/controlDict > /dev/null
+    echo "maxCo $(foamDictionary -entry maxCo -value system/controlDict)"
+fi
+if [ -n "${SOLID_OVERRIDE:-}" ]
+then
+    echo "$SOLID_OVERRIDE" >> constant/solidProperties.allrun
+    echo "constant/solidProperties.allrun + $SOLID_OVERRIDE"
 fi
 # the regions' volumetric laws, as the solver reads them
 foamDictionary -expand constant/solidProperties 2>/dev/null \
-    | grep -E "^ *(volumetric|rho0|C0|d0) " | tr -s ' ' | paste -sd' '
+    | grep -E "^ *(volumetric|rho0|C0|d0|b1|b2) " | tr -s ' ' | paste -sd' '
 echo "water cells: $(awk '/^ *cells:/ {print $2; exit}' log.checkMesh)"
 nice -n 10 cellBlastFoam > log.cellBlastFoam 2>&1
 grep "^CPU time of the time loop" log.cellBlastFoam
 status=0
-nice -n 10 planeWave -case . -check > log.planeWaveCheck 2>&1 || status=$?
+reference=()
+[ -z "${REFERENCE:-}" ] || reference=(-reference "$REFERENCE")
+nice -n 10 planeWave -case . -check "${reference[@]}" > log.planeWaveCheck 2>&1 || status=$?
 grep -v "^#" log.planeWaveCheck
 if [ "$law" = posed ]
 then

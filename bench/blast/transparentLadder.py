@@ -3,6 +3,7 @@
 1; docs/results/blastPlaneWave.md, "The transparent cell"; not a test).
 
 Usage: transparentLadder.py [-layered] SCALE=DIR [SCALE=DIR ...]
+       transparentLadder.py -item1 [-layered] LABEL=DIR [LABEL=DIR ...]
 
 Each DIR a transparentCell.sh run (DIR/axisymmetricPreview after its
 planeWave -check; with -layered its planeWave -check -layered), SCALE its
@@ -14,6 +15,18 @@ level the water cells (log.checkMesh), the time loop's CPU
 the three finest levels, the observed order p and the Richardson limit
 e0 of e(h) = e0 + C h^p, and the order assuming the limit 0 (ln(e2/e3) /
 ln(h2/h3), the two finest levels).
+
+With -item1 (docs/results/blastPlaneWave.md, "The cheapest default that
+meets item 1"), one row per run LABEL in the order given: water cells,
+solid elements (log.cellBlastFoam), the time loop's CPU, and issue 17
+item 1's measures: the water probes' 1-ns peak error on the axis (r =
+0.1 um) and at r = 4 um, the solid probe's (p0) incident 1-ns peak and
+1-ns peak, and over every probe the largest |error| of the plateau, the
+impulse [%] and the arrival [ns]; the solid probe's von Mises and
+strain 1-ns peak errors, cytoplasm / nucleus side (solidMeasures.dat:
+issue 17 items 4-6, which planeWave -check also bounds by 5 %); then the
+measures outside the bounds (arrival 0.3 ns, peaks and plateau 5 %,
+impulse 3 %, von Mises and strain 5 %; "-": none).
 """
 import math
 import os
@@ -48,6 +61,78 @@ def level(arg, layered):
     return out
 
 
+BOUNDS = {"peak1ns": 5.0, "peakIncident": 5.0, "plateau": 5.0,
+          "impulse": 3.0, "arrival": 0.3}
+COLUMNS = {"arrival": 12, "peak1ns": 13, "peakIncident": 14, "plateau": 15,
+           "impulse": 16}
+
+
+def item1(arg, layered):
+    """One row of the -item1 table (see the module text)"""
+    label, d = arg.split("=", 1)
+    case = os.path.join(d, "axisymmetricPreview")
+    sub = "planeWaveLayered" if layered else "planeWave"
+    m = {r[0]: r for r in rows(os.path.join(case, "postProcessing", sub, "0",
+                                            "measures.dat"))}
+    log = open(os.path.join(case, "log.cellBlastFoam")).read()
+    cells = re.search(r"^\s*cells:\s+(\d+)", open(os.path.join(
+        case, "log.checkMesh")).read(), re.M).group(1)
+    elements = re.search(r"^Solid: (\d+) elements", log, re.M).group(1)
+    cpu = re.search(r"^CPU time of the time loop ([0-9.e+-]+) s", log,
+                    re.M).group(1)
+    probes = re.findall(r"\(([0-9.e+-]+) ([0-9.e+-]+) 0\)", open(os.path.join(
+        case, "system", "controlDict.allrun")).read())
+    water = {float(r): "fluidProbes_%d" % i for i, (r, z) in enumerate(probes)}
+
+    def err(name, key):
+        v = m[name][COLUMNS[key]]
+        return None if v == "-" else float(v)
+    out = [label, cells, elements, "%.1f" % float(cpu)]
+    for r in (1e-7, 4e-6):
+        out.append("%+.2f %%" % err(water[r], "peak1ns"))
+    out.append("%+.2f %%" % err("solid_p0", "peakIncident"))
+    out.append("%+.2f %%" % err("solid_p0", "peak1ns"))
+    fails = []
+    for key in ("plateau", "impulse", "arrival"):
+        e = [(abs(err(n, key)), n) for n in m if err(n, key) is not None]
+        worst = max(e)
+        out.append(("%.3f ns" if key == "arrival" else "%.2f %%") % worst[0])
+    solid = {r[0]: r for r in rows(os.path.join(
+        case, "postProcessing", sub, "0", "solidMeasures.dat"))}
+    for col, key in ((5, "vonMises1ns"), (8, "strain1ns")):
+        out.append(" / ".join("%+.2f %%" % float(solid[n][col])
+                              for n in ("solid_0", "solid_1")))
+        for n in ("solid_0", "solid_1"):
+            if abs(float(solid[n][col])) > 5.0:
+                fails.append("%s (%s) %s %+.2f" % (n.replace("_", " "),
+                             solid[n][1], key, float(solid[n][col])))
+    names = {v: "water r = %g um" % (r*1e6) for r, v in water.items()}
+    for n in m:
+        # solid p2 (the cytoplasm side named) repeats p0 (the same side)
+        if n == "solid_p2" and m[n][2:] == m.get("solid_p0", [])[2:]:
+            continue
+        for key, bound in BOUNDS.items():
+            e = err(n, key)
+            if e is not None and abs(e) > bound:
+                fails.append("%s %s %+.2f" % (names.get(n, n.replace(
+                    "_", " ")), key, e))
+    out.append("; ".join(fails) or "-")
+    return out
+
+
+def item1Table(args, layered):
+    print("| setting | water cells | solid elements | CPU time loop to "
+          "90 ns [s] | water 1-ns peak r = 0.1 um | r = 4 um | solid "
+          "incident 1-ns peak | solid 1-ns peak | plateau (worst) | impulse "
+          "(worst) | arrival (worst) | solid von Mises 1-ns peak, "
+          "cytoplasm / nucleus | solid strain 1-ns peak | outside the "
+          "bounds |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+          "---|")
+    for a in args:
+        print("| " + " | ".join(item1(a, layered)) + " |")
+
+
 def richardson(h, e):
     """e0, p of e = e0 + C h^p through three points (None if the
     differences change sign: no monotone convergence)"""
@@ -74,9 +159,13 @@ def richardson(h, e):
 def main():
     args = sys.argv[1:]
     layered = "-layered" in args
-    args = [a for a in args if a != "-layered"]
+    table1 = "-item1" in args
+    args = [a for a in args if a not in ("-layered", "-item1")]
     if not args:
         sys.exit(__doc__)
+    if table1:
+        item1Table(args, layered)
+        return
     levels = sorted((level(a, layered) for a in args), key=lambda x: -x["h"])
     keys = [k for k in levels[0] if k not in ("h", "cells", "cpu")]
     print("| level | water cells | CPU time loop [s] | "
