@@ -5,7 +5,9 @@
 // nodes bit-identically on both parts and to the serial run's values to
 // round-off (summation order); shareStates brings every element's history
 // to both parts; the partition covers every element once and names each
-// element's owner. PackedValues: sums (in part order), minima, maxima and
+// element's owner, by default in blocks, after shareOut by count within
+// the marked elements and within the others (the two-part step then as
+// serial to round-off as well). PackedValues: sums (in part order), minima, maxima and
 // owned values combined in one exchange, the same bits on every part; a
 // probe recovered from its patch elements' samples packed by their owners
 // has the bits of the probe evaluated from the shared histories.
@@ -257,7 +259,23 @@ TEST(partition, partialForcesSumToSerial)
 }
 
 
-TEST(partition, twoPartsStepAsSerial)
+namespace
+{
+
+//- The marks of twoPartsStepAsSerial's shared-out run: the first third
+//  of the bar's elements (blocks would give them all to part 0)
+std::vector<bool> firstThird(int ne)
+{
+    std::vector<bool> marked(ne, false);
+    for (int e = 0; e < ne/3; ++e) marked[e] = true;
+    return marked;
+}
+
+//- The bar stepped by the serial solver, the serial solver with the
+//  elements reversed (the scale of round-off), and two parts in two
+//  threads, their elements in the default blocks or (sharedOut) shared
+//  out by firstThird
+void twoPartsStepAsSerial(const bool sharedOut)
 {
     // The serial run and, for the scale of round-off, the serial run with
     // its elements in the reverse order (its nodal sums in another order,
@@ -280,7 +298,18 @@ TEST(partition, twoPartsStepAsSerial)
     for (int p = 0; p < 2; ++p)
     {
         m[p] = bar();
-        m[p]->setPartition(Partition(p, 2, g.of(p)));
+        Partition part(p, 2, g.of(p));
+        if (sharedOut)
+        {
+            part.shareOut(firstThird(m[p]->mesh().nElements()));
+            // Not the default blocks: the comparison is not the blocks'
+            EXPECT_NE
+            (
+                part.elements(m[p]->mesh().nElements()),
+                Partition(p, 2, g.of(p)).elements(m[p]->mesh().nElements())
+            );
+        }
+        m[p]->setPartition(std::move(part));
         start(*m[p]);
     }
     std::vector<std::thread> threads;
@@ -297,9 +326,10 @@ TEST(partition, twoPartsStepAsSerial)
     for (auto& t : threads) t.join();
 
     const ExplicitState ss = s.state();
-    std::printf("2 parts against serial after %d steps: u %.3e, v %.3e, "
+    std::printf("2 parts (%s) against serial after %d steps: u %.3e, v %.3e, "
         "a %.3e, fint %.3e, fhg %.3e, point states %.3e, internal "
-        "energy %.3e, hourglass dissipation %.3e relative\n", steps,
+        "energy %.3e, hourglass dissipation %.3e relative\n",
+        sharedOut ? "shared out" : "blocks", steps,
         relDiff(m[0]->u, serial->u), relDiff(m[0]->v, serial->v),
         relDiff(st[0].a, ss.a), relDiff(st[0].fint, ss.fint),
         relDiff(st[0].fhg, ss.fhg),
@@ -351,6 +381,22 @@ TEST(partition, twoPartsStepAsSerial)
                 1e-10*std::abs(ss.energy.hourglass));
     EXPECT_NEAR(st[0].energy.balance(), ss.energy.balance(),
                 1e-10*std::abs(ss.energy.kinetic));
+}
+
+} // namespace
+
+
+TEST(partition, twoPartsStepAsSerial)
+{
+    twoPartsStepAsSerial(false);
+}
+
+
+TEST(partition, twoPartsSharedOutStepAsSerial)
+{
+    // The elements shared out by count in two classes: the same
+    // replicated nodes on both parts, the serial values to round-off
+    twoPartsStepAsSerial(true);
 }
 
 
@@ -419,6 +465,68 @@ TEST(partition, ownerOfEveryElement)
     const Partition P(1, 2, [](const double*, std::size_t, double*) {});
     EXPECT_THROW(P.owner(-1, 5), SolidError);
     EXPECT_THROW(P.owner(5, 5), SolidError);
+}
+
+
+TEST(partition, shareOutByCountInEachClass)
+{
+    // Every element owned by one part, owner() and elements() agreeing,
+    // each class shared by count (within 1), in increasing index order;
+    // without marks the default blocks
+    std::mt19937 gen(3);
+    std::bernoulli_distribution coin(0.3);
+    for (const int n : {0, 1, 5, 28, 2085})
+    {
+        std::vector<bool> marked(n), none(n, false);
+        for (int e = 0; e < n; ++e) marked[e] = coin(gen);
+        const int nMarked = int(std::count(marked.begin(), marked.end(), true));
+        for (const int parts : {1, 2, 3, 7})
+        {
+            std::vector<int> owners(n, 0);
+            for (int p = 0; p < parts; ++p)
+            {
+                Partition P(p, parts, [](const double*, std::size_t,
+                                         double*) {});
+                const std::vector<int> blocks = P.elements(n);
+                EXPECT_FALSE(P.sharedOut());
+                Partition Q(P);
+                Q.shareOut(none);
+                EXPECT_TRUE(Q.sharedOut());
+                EXPECT_EQ(Q.elements(n), blocks) << n << ' ' << parts;
+                P.shareOut(marked);
+                const std::vector<int> mine = P.elements(n);
+                EXPECT_TRUE(std::is_sorted(mine.begin(), mine.end()));
+                int m = 0;
+                for (const int e : mine)
+                {
+                    ++owners[e];
+                    if (marked[e]) ++m;
+                    EXPECT_EQ(P.owner(e, n), p);
+                }
+                const int u = int(mine.size()) - m;
+                EXPECT_GE(m, nMarked/parts);
+                EXPECT_LE(m, nMarked/parts + 1);
+                EXPECT_GE(u, (n - nMarked)/parts);
+                EXPECT_LE(u, (n - nMarked)/parts + 1);
+                for (int e = 0; e < n; ++e)
+                {
+                    const bool listed =
+                        std::binary_search(mine.begin(), mine.end(), e);
+                    EXPECT_EQ(P.owner(e, n) == p, listed) << e;
+                }
+            }
+            for (int e = 0; e < n; ++e) EXPECT_EQ(owners[e], 1) << e;
+        }
+    }
+    // Marks of 5 elements: asked for 6 (or element 5) is an error
+    Partition P(0, 2, [](const double*, std::size_t, double*) {});
+    P.shareOut(std::vector<bool>(5, true));
+    EXPECT_THROW(P.owner(0, 6), SolidError);
+    EXPECT_THROW(P.owner(5, 5), SolidError);
+    // Set before the model's initialisation only
+    auto m = bar();
+    start(*m);
+    EXPECT_THROW(m->setPartition(P), SolidError);
 }
 
 
@@ -577,8 +685,7 @@ TEST(partition, probeFromOwnersSamplesAsFromSharedStates)
             std::vector<std::size_t> at;
             for (const int e : patch)
             {
-                const bool mine =
-                    e >= model.elementBegin() && e < model.elementEnd();
+                const bool mine = part.owner(e, ne) == part.part();
                 double x[21] = {};
                 if (mine)
                 {

@@ -211,26 +211,44 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
             << "mean dilatation) and 'gaussPoints'" << exit(FatalIOError);
     }
     model_->setPointVolumetric(integration == "gaussPoints");
+    // The probes and interfaces (their elements are evaluated every step)
+    setupOutputElements();
     if (Pstream::parRun())
     {
         // The solid's elements shared over the ranks, the forces summed
         // through MPI (OpenFOAM's world communicator is MPI_COMM_WORLD)
-        model_->setPartition
+        solid::Partition part
         (
-            solid::Partition
-            (
-                Pstream::myProcNo(),
-                Pstream::nProcs(),
-                [](const double* mine, std::size_t n, double* all)
-                {
-                    MPI_Allgather
-                    (
-                        const_cast<double*>(mine), int(n), MPI_DOUBLE,
-                        all, int(n), MPI_DOUBLE, MPI_COMM_WORLD
-                    );
-                }
-            )
+            Pstream::myProcNo(),
+            Pstream::nProcs(),
+            [](const double* mine, std::size_t n, double* all)
+            {
+                MPI_Allgather
+                (
+                    const_cast<double*>(mine), int(n), MPI_DOUBLE,
+                    all, int(n), MPI_DOUBLE, MPI_COMM_WORLD
+                );
+            }
         );
+        // By count within the output's elements (the probes' patches and
+        // the interface elements: evaluated by their owners at the end of
+        // every step, before the step's exchange) and within the others:
+        // the blocks of all elements gave one rank most of the output's
+        // evaluations (issue 18 item 5, docs/results/blast3D.md)
+        std::vector<bool> output(mesh().nElements(), false);
+        for (const int e : probeElements_) output[e] = true;
+        for (const labelList& elems : interfaceElements_)
+        {
+            for (const label e : elems) output[e] = true;
+        }
+        for (const int e : patchElements_) output[e] = true;
+        part.shareOut(output);
+        model_->setPartition(std::move(part));
+        Info<< "Solid: " << mesh().nElements() << " elements, "
+            << std::count(output.begin(), output.end(), true)
+            << " of them evaluated for the output every step; each class"
+            << " shared out by count over " << Pstream::nProcs()
+            << " ranks" << endl;
     }
     guarded("solid initialise", [&]
     {
@@ -743,12 +761,9 @@ void Foam::solidDomain::setupProbes()
 }
 
 
-void Foam::solidDomain::setupOutput()
+void Foam::solidDomain::setupOutputElements()
 {
     setupProbes();
-    const solid::Mesh& m = mesh();
-    const label nProbes = label(probes_.size());
-    probeStrain_.setSize(2*nProbes, 0);
     for (const solid::PointProbe& p : probes_)
     {
         probeElements_.insert
@@ -762,6 +777,54 @@ void Foam::solidDomain::setupOutput()
         std::unique(probeElements_.begin(), probeElements_.end()),
         probeElements_.end()
     );
+
+    const List<Pair<word>> pairs
+    (
+        dict_.getOrDefault<List<Pair<word>>>("interfaces", {})
+    );
+    // Each pair two regions, each interface once: a region paired with
+    // itself (all its elements, as if an interface) and a pair given twice
+    // (columns twice, in either order) were accepted silently (adv pass
+    // y07, y08)
+    forAll(pairs, i)
+    {
+        if (pairs[i].first() == pairs[i].second())
+        {
+            FatalIOErrorInFunction(dict_)
+                << "entry 'interfaces', pair " << i + 1 << " ("
+                << pairs[i].first() << ' ' << pairs[i].second() << "): a "
+                << "region paired with itself; an interface is a pair of "
+                << "two different regions that share nodes"
+                << exit(FatalIOError);
+        }
+        for (label j = 0; j < i; ++j)
+        {
+            if (Pair<word>::compare(pairs[i], pairs[j]) != 0)
+            {
+                FatalIOErrorInFunction(dict_)
+                    << "entry 'interfaces', pair " << i + 1 << " ("
+                    << pairs[i].first() << ' ' << pairs[i].second()
+                    << ") is the interface of pair " << j + 1 << " ("
+                    << pairs[j].first() << ' ' << pairs[j].second()
+                    << "): give each interface once" << exit(FatalIOError);
+            }
+        }
+    }
+    interfaceElements_.setSize(pairs.size());
+    forAll(pairs, i)
+    {
+        interfaceElements_[i] = interfaceElements(pairs[i].first(),
+            pairs[i].second());
+    }
+    setupPatches(pairs);
+}
+
+
+void Foam::solidDomain::setupOutput()
+{
+    const solid::Mesh& m = mesh();
+    const label nProbes = label(probes_.size());
+    probeStrain_.setSize(2*nProbes, 0);
     if (nProbes && Pstream::master())
     {
         const fileName dir
@@ -806,59 +869,26 @@ void Foam::solidDomain::setupOutput()
     (
         dict_.getOrDefault<List<Pair<word>>>("interfaces", {})
     );
-    // Each pair two regions, each interface once: a region paired with
-    // itself (all its elements, as if an interface) and a pair given twice
-    // (columns twice, in either order) were accepted silently (adv pass
-    // y07, y08)
-    forAll(pairs, i)
-    {
-        if (pairs[i].first() == pairs[i].second())
-        {
-            FatalIOErrorInFunction(dict_)
-                << "entry 'interfaces', pair " << i + 1 << " ("
-                << pairs[i].first() << ' ' << pairs[i].second() << "): a "
-                << "region paired with itself; an interface is a pair of "
-                << "two different regions that share nodes"
-                << exit(FatalIOError);
-        }
-        for (label j = 0; j < i; ++j)
-        {
-            if (Pair<word>::compare(pairs[i], pairs[j]) != 0)
-            {
-                FatalIOErrorInFunction(dict_)
-                    << "entry 'interfaces', pair " << i + 1 << " ("
-                    << pairs[i].first() << ' ' << pairs[i].second()
-                    << ") is the interface of pair " << j + 1 << " ("
-                    << pairs[j].first() << ' ' << pairs[j].second()
-                    << "): give each interface once" << exit(FatalIOError);
-            }
-        }
-    }
-    interfaceElements_.setSize(pairs.size());
-    forAll(pairs, i)
-    {
-        interfaceElements_[i] = interfaceElements(pairs[i].first(),
-            pairs[i].second());
-    }
-    setupPatches(pairs);
+    openPatchFile();
     // The output elements this rank owns, each evaluated once per step
     {
-        const int b = model_->elementBegin(), e1 = model_->elementEnd();
+        const solid::Partition& part = model_->partition();
+        const int ne = m.nElements();
         std::vector<int>& owned = ownedOutputElements_;
         for (const int e : probeElements_)
         {
-            if (e >= b && e < e1) owned.push_back(e);
+            if (part.owner(e, ne) == part.part()) owned.push_back(e);
         }
         for (const labelList& elems : interfaceElements_)
         {
             for (const label e : elems)
             {
-                if (e >= b && e < e1) owned.push_back(e);
+                if (part.owner(e, ne) == part.part()) owned.push_back(e);
             }
         }
         for (const int e : patchElements_)
         {
-            if (e >= b && e < e1) owned.push_back(e);
+            if (part.owner(e, ne) == part.part()) owned.push_back(e);
         }
         std::sort(owned.begin(), owned.end());
         owned.erase(std::unique(owned.begin(), owned.end()), owned.end());
@@ -901,11 +931,12 @@ void Foam::solidDomain::setupOutput()
 void Foam::solidDomain::setupPatches(const List<Pair<word>>& pairs)
 {
     const solid::Mesh& m = mesh();
-    const scalar L = foamTools::readInRangeOrDefault<scalar>
+    patchLength_ = foamTools::readInRangeOrDefault<scalar>
     (
         dict_, "interfacePatchLength", "m", 0,
         foamTools::noUpperBound<scalar>(), false, 1e-6
     );
+    const scalar L = patchLength_;
     const wordList fluid
     (
         dict_.getOrDefault<wordList>("fluidInterfaces", wordList())
@@ -958,6 +989,13 @@ void Foam::solidDomain::setupPatches(const List<Pair<word>>& pairs)
         std::unique(patchElements_.begin(), patchElements_.end()),
         patchElements_.end()
     );
+}
+
+
+void Foam::solidDomain::openPatchFile()
+{
+    const solid::Mesh& m = mesh();
+    const scalar L = patchLength_;
     if (patches_.size() && Pstream::master())
     {
         const fileName dir

@@ -295,8 +295,7 @@ void solid::ExplicitSolver::addFilteredShearForce
 
     // g = (I - A)^T s, f_e = -Bd_e^T g_e: this part's elements (the
     // rates and averages above over all elements, the same on every part)
-    const int eEnd = model_.elementEnd();
-    for (int e = model_.elementBegin(); e < eEnd; ++e)
+    for (const int e : model_.ownedElements())
     {
         const int* en = mesh.element(e);
         Rate g = s.col(e);
@@ -322,8 +321,7 @@ Eigen::VectorXd solid::ExplicitSolver::hourglassForce
     const Mesh& mesh = model_.mesh();
     const int nen = mesh.nen(), dim = mesh.dim();
     Eigen::Matrix<double, 8, 3> ve;
-    const int eEnd = model_.elementEnd();
-    for (int e = model_.elementBegin(); e < eEnd; ++e)
+    for (const int e : model_.ownedElements())
     {
         const int* en = mesh.element(e);
         for (int a = 0; a < nen; ++a)

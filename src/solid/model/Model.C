@@ -12,6 +12,22 @@ solid::Model::Model(Mesh mesh)
 {
     mesh_.check();
     regionMaterial_.resize(mesh_.regionNames.size());
+    owned_ = partition_.elements(mesh_.nElements());
+}
+
+
+void solid::Model::setPartition(Partition partition)
+{
+    if (initialised_)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter,
+            "setPartition: the model is already initialised"
+        );
+    }
+    partition_ = std::move(partition);
+    owned_ = partition_.elements(mesh_.nElements());
 }
 
 
@@ -342,8 +358,7 @@ void solid::Model::assemble
     ElementOutput out;
     std::vector<int> dofs(nd);
     Eigen::VectorXd ue(nd);
-    const int eEnd = elementEnd();
-    for (int e = elementBegin(); e < eEnd; ++e)
+    for (const int e : owned_)
     {
         const int* en = mesh_.element(e);
         for (int b = 0; b < nen; ++b)
@@ -468,7 +483,7 @@ void solid::Model::combineParts(Assembly& a, Eigen::VectorXd* more) const
 void solid::Model::shareStates(const std::vector<int>& elements)
 {
     if (partition_.serial()) return;
-    const int b = elementBegin(), e1 = elementEnd();
+    const int ne = mesh_.nElements(), part = partition_.part();
     std::size_t n = 0;
     for (const int e : elements)
     {
@@ -479,7 +494,7 @@ void solid::Model::shareStates(const std::vector<int>& elements)
     std::size_t k = 0;
     for (const int e : elements)
     {
-        const bool mine = e >= b && e < e1;
+        const bool mine = partition_.owner(e, ne) == part;
         for (StateArray* s : {&pointState_, &elementState_})
         {
             const double* o = s->old(e);

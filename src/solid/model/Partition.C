@@ -60,6 +60,39 @@ void solid::Partition::combine
 }
 
 
+namespace
+{
+
+//- The part whose block of n items (floor(n p/nParts) onwards) holds i
+int blockOwner(int i, int n, int nParts)
+{
+    int p = nParts - 1;
+    while (static_cast<long long>(n)*p/nParts > i) --p;
+    return p;
+}
+
+} // namespace
+
+
+void solid::Partition::shareOut(const std::vector<bool>& marked)
+{
+    const int n = int(marked.size());
+    const int nMarked = int(std::count(marked.begin(), marked.end(), true));
+    sharedOut_ = true;
+    owner_.assign(n, 0);
+    // The k-th marked element (and the k-th of the others) as the k-th
+    // element of the default blocks of its class
+    int kMarked = 0, kOther = 0;
+    for (int e = 0; e < n; ++e)
+    {
+        owner_[e] =
+            marked[e]
+          ? blockOwner(kMarked++, nMarked, nParts_)
+          : blockOwner(kOther++, n - nMarked, nParts_);
+    }
+}
+
+
 int solid::Partition::owner(int e, int n) const
 {
     if (e < 0 || e >= n)
@@ -71,10 +104,41 @@ int solid::Partition::owner(int e, int n) const
           + " (valid: 0 <= element < elements)"
         );
     }
+    if (sharedOut_)
+    {
+        if (n != int(owner_.size()))
+        {
+            throw SolidError
+            (
+                SolidError::Kind::parameter, "partition: "
+              + std::to_string(n) + " elements asked for, "
+              + std::to_string(owner_.size()) + " shared out"
+            );
+        }
+        return owner_[e];
+    }
     // The last part whose block starts at or before e
-    int p = nParts_ - 1;
-    while (static_cast<long long>(n)*p/nParts_ > e) --p;
-    return p;
+    return blockOwner(e, n, nParts_);
+}
+
+
+std::vector<int> solid::Partition::elements(int n) const
+{
+    std::vector<int> mine;
+    if (!sharedOut_)
+    {
+        for (int e = begin(n); e < end(n); ++e) mine.push_back(e);
+        return mine;
+    }
+    if (n != int(owner_.size()))
+    {
+        owner(0, n);    // its error (element or count)
+    }
+    for (int e = 0; e < n; ++e)
+    {
+        if (owner_[e] == part_) mine.push_back(e);
+    }
+    return mine;
 }
 
 
