@@ -22,7 +22,9 @@ check() {
     if eval "$2"; then echo "PASS: $1"; else echo "FAIL: $1"; fails=$((fails + 1)); fi
 }
 md() { printf '# My analysis of %s\n\nThe peak at 1.2 ns is real; see plot.\n' "$1"; }
-sums() { find . -type f ! -name 'log.*' -print0 | sort -z | xargs -0 md5sum; }
+# every file but the logs and the killed run's stale lock (.runLock, which
+# the next run takes over and removes at its end)
+sums() { find . -type f ! -name 'log.*' ! -name .runLock -print0 | sort -z | xargs -0 md5sum; }
 # waitFor SECONDS CMD...: until CMD succeeds
 waitFor() { local n=$(( $1 * 10 )); shift; while [ $n -gt 0 ]; do "$@" && return 0; sleep 0.1; n=$((n - 1)); done; return 1; }
 set_() { sed -i "s/^$1 .*/$1 $2;/" system/controlDict; }
