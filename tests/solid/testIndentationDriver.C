@@ -464,6 +464,21 @@ TEST(SolidIndentationDriver, ResumeRefusesOutputsOfAnotherRunOrDamaged)
         EXPECT_NE(msg.find("runA"), std::string::npos) << msg;
     }
 
+    // One bit of the '# run' line flipped (adv42 g20: was "belongs to
+    // another run"): said to be damaged
+    for (const char* f : {"force.dat", "peaks.dat"})
+    {
+        const std::string msg = resume([&](const std::string& dir)
+        {
+            std::string bytes = contents(dir + "/" + f);
+            ASSERT_EQ(bytes.compare(0, 10, "# run runA"), 0);
+            bytes[8] ^= 0x01;
+            std::ofstream(dir + "/" + f, std::ios::binary) << bytes;
+        });
+        EXPECT_NE(msg.find(std::string(f) + " is damaged: its first line is"
+                  " '# run ruoA'"), std::string::npos) << msg;
+    }
+
     // A missing output (adv33 c24: was "belongs to another run: its first
     // line is ''"): said to be missing
     for (const char* f : {"force.dat", "peaks.dat"})
