@@ -38,10 +38,11 @@ waitFor() { local n=$(( $1 * 10 )); shift; while [ $n -gt 0 ]; do "$@" && return
 set_() { sed -i "s/^$1 .*/$1 $2;/" system/controlDict; }
 # notRecorded LABEL FILE...: no commit marker of the case names the files
 notRecorded() {
-    local label=$1 f names=""; shift
-    for f in "$@"; do names="$names\\|$(basename $f)"; done
+    local label=$1 re; shift
+    re="^log .*/($(IFS='|'; echo "$*"))\$"
     check "$label: no commit marker records the user's files as logs" \
-        "! grep -a -q '^log .*\\(${names#\\\\|}\\)\$' */.writeCommitted processor*/*/.writeCommitted 2>/dev/null"
+        "[ -n \"\$(ls -d */.writeCommitted processor*/*/.writeCommitted 2>/dev/null)\" ] \
+         && ! cat */.writeCommitted processor*/*/.writeCommitted 2>/dev/null | grep -a -q -E '$re'"
 }
 # refusedThenRuns LABEL "APP..." FILE...: -overwrite refused naming every
 # FILE, the case unchanged; the files moved out, -overwrite runs
