@@ -465,7 +465,8 @@ TEST(SolidIndentationDriver, ResumeRefusesOutputsOfAnotherRunOrDamaged)
     }
 
     // One bit of the '# run' line flipped (adv42 g20: was "belongs to
-    // another run"): said to be damaged
+    // another run"): the line named damaged (the file of another run of
+    // the same inputs, above, differs in that line only: both named)
     for (const char* f : {"force.dat", "peaks.dat"})
     {
         const std::string msg = resume([&](const std::string& dir)
@@ -475,8 +476,10 @@ TEST(SolidIndentationDriver, ResumeRefusesOutputsOfAnotherRunOrDamaged)
             bytes[8] ^= 0x01;
             std::ofstream(dir + "/" + f, std::ios::binary) << bytes;
         });
-        EXPECT_NE(msg.find(std::string(f) + " is damaged: its first line is"
-                  " '# run ruoA'"), std::string::npos) << msg;
+        EXPECT_NE(msg.find(std::string(f) + " is damaged in its first line"
+                  ", or belongs to another run of the same inputs: its first"
+                  " line is '# run ruoA' where this run wrote '# run runA'"),
+                  std::string::npos) << msg;
     }
 
     // A missing output (adv33 c24: was "belongs to another run: its first

@@ -132,12 +132,15 @@ void solid::IndentationDriver::checkResume()
                 {
                     throw SolidError
                     (
-                        SolidError::Kind::io, path(f) + " is damaged: its"
-                        " first line is '" + first.substr(0, 80) + "' where"
-                        " the run wrote '" + own + "', and its other bytes"
-                        " up to the checkpoint " + checkpointFile() + " are"
-                        " those the run wrote (a disk error or an edit of"
-                        " that line). Restore the line, or start anew"
+                        SolidError::Kind::io, path(f) + " is damaged in"
+                        " its first line, or belongs to another run of the"
+                        " same inputs: its first line is '"
+                      + first.substr(0, 80) + "' where this run wrote '"
+                      + own + "', and its other bytes up to the checkpoint "
+                      + checkpointFile() + " are those this run wrote (a"
+                        " disk error or an edit of that line, or a copy of"
+                        " the file of a run with the same inputs). Restore"
+                        " the line to continue, or start anew"
                         " (-overwrite); nothing was changed"
                     );
                 }
