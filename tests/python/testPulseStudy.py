@@ -292,5 +292,55 @@ class Records(TempDirTestCase):
             ps.readRecord(path, self.point())
 
 
+    def testInterruptedPointKeepsTheUsersFiles(self):
+        """a point interrupted earlier is run again from the start: its case
+        copy and a record's temporary file are removed, a file of the
+        user's in the point's folder is kept (adv42 g13: the whole folder
+        was removed with the user's notes.md in it)"""
+        import importlib.util
+        import io
+        import sys
+        from contextlib import redirect_stdout
+        from neuronFsi import caseRuns
+        hook = sys.excepthook
+        spec = importlib.util.spec_from_file_location(
+            "pulseStudyApp", os.path.join(
+                os.path.dirname(__file__), "..", "..", "applications",
+                "utilities", "pulseStudy", "pulseStudy.py"))
+        app = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(app)
+        sys.excepthook = hook
+        staging = self.write("staging/Allrun", "#!/bin/sh\nexit 3\n")
+        os.chmod(staging, 0o755)
+        staging = os.path.dirname(staging)
+        self.write("staging/constant/x", "base\n")
+        folder = os.path.join(self.tmp, "points", "p1")
+        self.write("points/p1/case/constant/x", "the killed run's\n")
+        self.write("points/p1/case/1e-09/p", "the killed run's\n")
+        self.write("points/p1/result.json.tmp123", "{")
+        self.write("points/p1/notes.md", "# my notes\n")
+        os.makedirs(os.path.join(folder, "myPlots"))
+        self.write("points/p1/myPlots/a.png", "png")
+        out = io.StringIO()
+        with redirect_stdout(out), self.assertRaisesRegex(
+                caseRuns.RunError, "exit 3"):
+            app.runPoint({}, staging, {"label": "p1", "options": []}, {},
+                         folder, False)
+        self.assertEqual(sorted(os.listdir(folder)),
+                         ["case", "myPlots", "notes.md"])
+        with open(os.path.join(folder, "notes.md")) as f:
+            self.assertEqual(f.read(), "# my notes\n")
+        self.assertTrue(os.path.isfile(
+            os.path.join(folder, "myPlots", "a.png")))
+        self.assertFalse(os.path.exists(os.path.join(folder, "case",
+                                                     "1e-09")))
+        with open(os.path.join(folder, "case", "constant", "x")) as f:
+            self.assertEqual(f.read(), "base\n")
+        self.assertIn("p1: run again from the start; kept in %s (not the "
+                      "study's): myPlots, notes.md" % folder, out.getvalue())
+        self.assertEqual(app.pointFiles(folder),
+                         ([], ["myPlots", "notes.md"]))
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -19,7 +19,8 @@ Description
     postProcessing/pulseStudy/points/<label>/result.json with the digest of
     its inputs (the base case's files after its Allclean, its Allrun
     options, the strain-rate window) and is not run again; a point
-    interrupted (a folder without a result) is run again from the start.
+    interrupted (a folder without a result) is run again from the start
+    (its case copy removed; a file of the user's in its folder is kept).
     The record carries the digest of its own values and its point,
     verified on every read: a damaged record, or another point's, is
     refused naming the file (nothing runs; it is left for the user).
@@ -104,12 +105,44 @@ def prepareBase(s, out):
     return staging, ps.fileDigests(staging)
 
 
+def pointFiles(folder):
+    """The entries of a point's folder besides its case copy: (those the
+    study writes there: result.json and its temporary files
+    result.json.tmp<pid>; every other one, the user's), by name."""
+    ours, others = [], []
+    if os.path.isdir(folder) and not os.path.islink(folder):
+        for f in sorted(os.listdir(folder)):
+            if f == "case":
+                continue
+            if f == "result.json" or (f.startswith("result.json.tmp")
+                                      and f[15:].isdigit()):
+                ours.append(f)
+            else:
+                others.append(f)
+    return ours, others
+
+
 def runPoint(s, staging, point, inputs, folder, keep):
     """Run one point in folder/case; its record."""
-    if os.path.lexists(folder):         # interrupted earlier: from scratch
-        shutil.rmtree(folder)           # (a run left going: refused in main)
-    os.makedirs(folder)
     case = os.path.join(folder, "case")
+    # interrupted earlier: from scratch (a run left going: refused in
+    # main). Only what the study wrote is removed: the point's case copy
+    # and its record (and a record's temporary file); a file of the
+    # user's beside them is kept and named (adv42 g13: the point's folder
+    # was removed with the user's notes.md in it)
+    kept = pointFiles(folder)[1]
+    if os.path.lexists(case):
+        if os.path.isdir(case) and not os.path.islink(case):
+            shutil.rmtree(case)
+        else:
+            os.remove(case)
+    for f in pointFiles(folder)[0]:
+        os.remove(os.path.join(folder, f))
+    if kept:
+        print("    %s: run again from the start; kept in %s (not the "
+              "study's): %s" % (point["label"], folder, ", ".join(kept)),
+              flush=True)
+    os.makedirs(folder, exist_ok=True)
     shutil.copytree(staging, case, symlinks=True)
     # a variant or a finite-difference run of the uncertainty: its material
     # change included at the end of constant/solidProperties

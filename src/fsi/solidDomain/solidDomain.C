@@ -5,6 +5,7 @@
 #include "subDict.H"
 #include "inputRecord.H"
 #include "uniformState.H"
+#include "runLogFiles.H"
 #include "SolidError.H"
 #include "IOobject.H"
 #include "pointField.H"
@@ -128,25 +129,15 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
 
     // Fractions in [0, 1) (explicitSafety (0, 1)), checked here so that a
     // bad value is named as the file's entry (the solver's own check names
-    // its settings: 'safety', 'hourglass')
+    // its settings: 'safety', 'hourglass'); nan and inf with that range too
+    // (adv42 g25: "valid range [-inf, inf)")
     const auto fraction = [](const dictionary& d, const word& key,
                              const bool zero, const scalar deflt)
     {
-        // Any finite number read, then the range (readInRange's upper
-        // bound is closed)
-        const scalar x = foamTools::readInRangeOrDefault<scalar>
+        return foamTools::readInRangeOrDefault<scalar>
         (
-            d, key, "", -foamTools::noUpperBound<scalar>(),
-            foamTools::noUpperBound<scalar>(), true, deflt
+            d, key, "", 0, 1, zero, deflt, false
         );
-        if ((zero ? x < 0 : x <= 0) || x >= 1)
-        {
-            FatalIOErrorInFunction(d)
-                << "entry '" << key << "' = " << x << " is outside the"
-                << " valid range " << (zero ? "[" : "(") << "0, 1)"
-                << exit(FatalIOError);
-        }
-        return x;
     };
     solid::ExplicitSettings set;
     set.safety = fraction(dict_, "explicitSafety", false, 0.8);
@@ -833,12 +824,15 @@ void Foam::solidDomain::setupOutput()
            /runTime_.timeName()
         );
         mkDir(dir);
-        probeFile_.reset(new OFstream(dir/"solidProbes.dat"));
+        probeFile_.reset
+        (
+            new OFstream(dir/foamTools::runLogFiles::solidProbesName())
+        );
         OFstream& os = probeFile_();
         os.precision(10);
-        os  << "# solid probes at fixed points of the reference "
-            << "configuration (each follows its material point), recovered"
-            << " from the elements of the probe's region around it: per "
+        os  << foamTools::runLogFiles::solidProbesHeader()
+            << " of the reference configuration (each follows its material"
+            << " point), recovered from the elements of the probe's region around it: per "
             << "probe pressure (+ compression), von Mises, volumetric strain"
             << " ln J and its rate, temperature rise; then per probe the "
             << "longitudinal strain ln|F e_z| (shock direction) and its rate"
@@ -907,10 +901,14 @@ void Foam::solidDomain::setupOutput()
            /runTime_.timeName()
         );
         mkDir(dir);
-        interfaceFile_.reset(new OFstream(dir/"interfaceMaxima.dat"));
+        interfaceFile_.reset
+        (
+            new OFstream(dir/foamTools::runLogFiles::interfaceMaximaName())
+        );
         OFstream& os = interfaceFile_();
         os.precision(10);
-        os  << "# maxima over the elements along each region interface"
+        os  << foamTools::runLogFiles::interfaceMaximaHeader()
+            << " along each region interface"
             << " (either side): pressure (+ compression) and von Mises"
             << nl << "# time [s]";
         forAll(pairs, i)
@@ -1004,11 +1002,14 @@ void Foam::solidDomain::openPatchFile()
            /runTime_.timeName()
         );
         mkDir(dir);
-        patchFile_.reset(new OFstream(dir/"interfacePatches.dat"));
+        patchFile_.reset
+        (
+            new OFstream(dir/foamTools::runLogFiles::interfacePatchesName())
+        );
         OFstream& os = patchFile_();
         os.precision(10);
-        os  << "# per region interface: the largest mean over a patch of "
-            << "fixed size (r-z: " << L << " m of arc along the interface;"
+        os  << foamTools::runLogFiles::interfacePatchesHeader()
+            << " over a patch of fixed size (r-z: " << L << " m of arc along the interface;"
             << " 3D: a disc of diameter " << L << " m) of pressure (+ "
             << "compression), von Mises and shear traction (each side's "
             << "elements, the larger side), the von Mises patch's centre,"
@@ -1235,6 +1236,7 @@ void Foam::solidDomain::write
         // no destructor) leaves complete rows up to its last step
         os  << nl;
         os.flush();
+        foamTools::runLogFiles::checkWritten(os);
     }
     if (interfaceFile_.valid())
     {
@@ -1246,6 +1248,7 @@ void Foam::solidDomain::write
         }
         os  << nl;
         os.flush();
+        foamTools::runLogFiles::checkWritten(os);
     }
     if (patchFile_.valid())
     {
@@ -1278,14 +1281,23 @@ void Foam::solidDomain::write
         }
         os  << nl;
         os.flush();
+        foamTools::runLogFiles::checkWritten(os);
     }
     if (runTime_.writeTime())
     {
         // The logs complete up to this write time before it is committed:
         // a run killed later restarts here and loses no row
-        if (probeFile_.valid()) probeFile_().flush();
-        if (interfaceFile_.valid()) interfaceFile_().flush();
-        if (patchFile_.valid()) patchFile_().flush();
+        for
+        (
+            autoPtr<OFstream>* f : {&probeFile_, &interfaceFile_, &patchFile_}
+        )
+        {
+            if (f->valid())
+            {
+                (*f)().flush();
+                foamTools::runLogFiles::checkWritten((*f)());
+            }
+        }
         // The whole solid's histories on the master for the result file
         // (stresses) and the restart state
         model_->shareStates();
