@@ -70,4 +70,8 @@ A = {
  "adv35_t19": ("OK", "only the name of calibrateCell's temporary folder differs"),
  "adv35_t20": ("OK", "only the name of calibrateCell's temporary folder differs"),
  "adv40_z40": ("OK", "as adv40's phase C (fixed): the full disk named, nothing left but the user's a.png and the Allrun's own files; the list of files newer than controlDict differs by cellMeshDict.allrun (timing of its write)"),
+ "adv40_z05": ("UNCLEAR", "low; unchanged (output equal to adv41's): (a)-(c) clear; (d) a NUL-filled peaks.dat is refused as 'belongs to another run' instead of damaged (fix19w's target)"),
+ "adv40_z03": ("UNCLEAR", "low; unchanged (output equal to adv41's): rhoRiemannFoam -dry-run / -dry-run-write: rc 1 with OpenFOAM's 'size 2 is not equal to the given value of 4', nothing changed (fix19w's target)"),
+ "adv39_y10": ("UNCLEAR", "low; unchanged (output equal to adv41's): 0/T's '.*' written out per patch (the same conditions) refused at the restart as 'boundaryField/.* (removed)' (left open by fix19u)"),
+ "adv39_y17": ("UNCLEAR", "low; unchanged (output equal to adv41's): the same pulse moved from 0/p's table to a tableFile refused as changed (left open by fix19u)"),
 }
