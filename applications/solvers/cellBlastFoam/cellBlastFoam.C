@@ -64,7 +64,9 @@ int main(int argc, char *argv[])
     // -dry-run's simplified fluid mesh cannot be coupled (adv40 z02)
     foamTools::refuseDryRun
     (
-        args, "the coupling of its interface patch to the solid's mesh"
+        args,
+        "the coupling of its interface patch to the solid's mesh cannot be"
+        " checked on it (the interface map would fail with a false reason)"
     );
     const foamTools::caseLock lock(args);    // one run per case
     // A number beyond a double's range is a sigFpe inside OpenFOAM's

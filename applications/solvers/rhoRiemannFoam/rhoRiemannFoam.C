@@ -63,6 +63,16 @@ int main(int argc, char *argv[])
     #include "setRootCaseChecked.H"
     #include "setRootCaseListOutput.H"
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
+    // -dry-run's simplified mesh cannot read a written time's fields, and
+    // its end time is unbounded (adv40 z03)
+    foamTools::refuseDryRun
+    (
+        args,
+        "the fields of a time a run wrote (their boundary values per face of"
+        " the case's mesh) cannot be read on it, nor the run's step count"
+        " checked (the mode sets an unbounded end time): it would fail with"
+        " a reason that is not the case's"
+    );
     const foamTools::caseLock lock(args);    // one run per case
     // A number beyond a double's range is a sigFpe inside OpenFOAM's
     // tokenizer: every file of the case the run reads is scanned first,

@@ -10,7 +10,8 @@ import shutil
 import subprocess
 import time
 
-from neuronFsi import foamDict, logs, postProcessing, scratch, signals
+from neuronFsi import (caseLock, foamDict, logs, postProcessing, scratch,
+                       signals)
 
 MESH_SIZES = ("nucleusSize", "cytoplasmSize", "membraneSize", "contactSize")
 
@@ -66,6 +67,22 @@ class ForwardModel:
                 "the work folder %s holds files calibrateCell did not write "
                 "(no %s): refused, nothing removed; give -work a new or "
                 "empty folder" % (self.work, os.path.basename(marker)))
+        # A forward run of an earlier calibrateCell that was stopped
+        # (SIGKILL leaves its child running) still writes in its run
+        # folder: removing the folder under it made this run fail on a
+        # file vanishing (adv37 w109). Refused up front, nothing removed
+        if os.path.isdir(self.work):
+            for n in sorted(os.listdir(self.work)):
+                d = os.path.join(self.work, n)
+                why = caseLock.inUse(d) if os.path.isdir(d) else ""
+                if why:
+                    raise ModelError(
+                        "the work folder %s is in use: its run folder %s: "
+                        "%s (a forward run of an earlier calibrateCell that "
+                        "was stopped, e.g. killed, goes on). Refused, "
+                        "nothing removed: wait for that run to end, or stop "
+                        "it, then run again; or give -work another folder"
+                        % (self.work, d, why))
         os.makedirs(self.work, exist_ok=True)
         open(marker, "a").close()
         if os.path.exists(self.base):

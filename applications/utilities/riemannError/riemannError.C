@@ -20,6 +20,7 @@ Description
 #include "fvCFD.H"
 #include "inputChecks.H"
 #include "inputRecord.H"
+#include "runLogFiles.H"
 #include "OFstream.H"
 #include "rhoEThermoModel.H"
 #include "riemannProblem.H"
@@ -310,13 +311,20 @@ int main(int argc, char *argv[])
         // Both files written aside, checked, then renamed: a failed write
         // (a full disk) leaves the earlier files, never a cut profile
         // taken for the whole tube (adv33 x12, x15)
-        const fileName profileTmp(dir/".profile.dat.tmp");
-        const fileName errorsTmp(dir/".errors.dat.tmp");
+        const fileName profileTmp
+        (
+            dir/("." + word(foamTools::runLogFiles::profileName()) + ".tmp")
+        );
+        const fileName errorsTmp
+        (
+            dir/("." + word(foamTools::runLogFiles::errorsName()) + ".tmp")
+        );
         bool written = true;
         {
             OFstream os(profileTmp);
             os.precision(12);
-            os  << "# x [m]  rho rhoExact [kg/m^3]  u uExact [m/s]"
+            os  << foamTools::runLogFiles::profileHeader()
+                << " [kg/m^3]  u uExact [m/s]"
                 << "  p pExact [Pa]" << nl;
             labelList order;
             sortedOrder(xi, order);
@@ -333,7 +341,8 @@ int main(int argc, char *argv[])
         {
             OFstream os(errorsTmp);
             os.precision(10);
-            os  << "# nCells L1rho[kg/m^3] L1u[m/s] L1p[Pa]"
+            os  << foamTools::runLogFiles::errorsHeader()
+                << "[kg/m^3] L1u[m/s] L1p[Pa]"
                 << " relErrPStar relErrRhoStarL relErrRhoStarR"
                 << " L1rhoSmooth[kg/m^3] L1pSmooth[Pa]" << nl
                 << mesh.nCells() << ' ' << L1rho << ' ' << L1u << ' '
@@ -345,8 +354,8 @@ int main(int argc, char *argv[])
         if
         (
             !written
-         || !Foam::mv(profileTmp, dir/"profile.dat")
-         || !Foam::mv(errorsTmp, dir/"errors.dat")
+         || !Foam::mv(profileTmp, dir/foamTools::runLogFiles::profileName())
+         || !Foam::mv(errorsTmp, dir/foamTools::runLogFiles::errorsName())
         )
         {
             Foam::rm(profileTmp);

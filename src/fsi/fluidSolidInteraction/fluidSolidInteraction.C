@@ -1,5 +1,6 @@
 #include "fluidSolidInteraction.H"
 #include "uniformState.H"
+#include "runLogFiles.H"
 #include "pointIOField.H"
 #include "IFstream.H"
 #include "clockTime.H"
@@ -316,10 +317,14 @@ void Foam::fluidSolidInteraction::openLog()
         runTime.globalPath()/"postProcessing"/"fsi"/runTime.timeName()
     );
     mkDir(dir);
-    couplingLog_.reset(new OFstream(dir/"coupling.dat"));
+    couplingLog_.reset
+    (
+        new OFstream(dir/foamTools::runLogFiles::couplingName())
+    );
     couplingLog_().precision(10);
     couplingLog_()
-        << "# FSI coupling (" << coupling_->type() << ")" << nl
+        << foamTools::runLogFiles::couplingHeader() << coupling_->type()
+        << ")" << nl
         << "# time [s]  dt [s]  iterations  residual [-]  converged"
         << "  interfaceForce (x y z) [N]  interfaceVelocityMax [m/s]"
         << "  gclError [-]  fluidWallWork [J]  solidExternalWork [J]" << nl;

@@ -5,6 +5,7 @@
 #include "subDict.H"
 #include "inputRecord.H"
 #include "uniformState.H"
+#include "runLogFiles.H"
 #include "SolidError.H"
 #include "IOobject.H"
 #include "pointField.H"
@@ -769,12 +770,15 @@ void Foam::solidDomain::setupOutput()
            /runTime_.timeName()
         );
         mkDir(dir);
-        probeFile_.reset(new OFstream(dir/"solidProbes.dat"));
+        probeFile_.reset
+        (
+            new OFstream(dir/foamTools::runLogFiles::solidProbesName())
+        );
         OFstream& os = probeFile_();
         os.precision(10);
-        os  << "# solid probes at fixed points of the reference "
-            << "configuration (each follows its material point), recovered"
-            << " from the elements of the probe's region around it: per "
+        os  << foamTools::runLogFiles::solidProbesHeader()
+            << " of the reference configuration (each follows its material"
+            << " point), recovered from the elements of the probe's region around it: per "
             << "probe pressure (+ compression), von Mises, volumetric strain"
             << " ln J and its rate, temperature rise; then per probe the "
             << "longitudinal strain ln|F e_z| (shock direction) and its rate"
@@ -871,10 +875,14 @@ void Foam::solidDomain::setupOutput()
            /runTime_.timeName()
         );
         mkDir(dir);
-        interfaceFile_.reset(new OFstream(dir/"interfaceMaxima.dat"));
+        interfaceFile_.reset
+        (
+            new OFstream(dir/foamTools::runLogFiles::interfaceMaximaName())
+        );
         OFstream& os = interfaceFile_();
         os.precision(10);
-        os  << "# maxima over the elements along each region interface"
+        os  << foamTools::runLogFiles::interfaceMaximaHeader()
+            << " along each region interface"
             << " (either side): pressure (+ compression) and von Mises"
             << nl << "# time [s]";
         forAll(pairs, i)

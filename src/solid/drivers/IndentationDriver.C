@@ -85,6 +85,24 @@ void solid::IndentationDriver::checkResume()
             }
             std::string first;
             std::getline(is, first);
+            const std::size_t zero = first.find('\0');
+            if (first != "# run " + runId_ && zero != std::string::npos)
+            {
+                // zero bytes where the run wrote its header: the file was
+                // damaged (a power loss; adv40 z05 (d) was "belongs to
+                // another run: its first line is '<NULs>'")
+                throw SolidError
+                (
+                    SolidError::Kind::io, path(f) + " is damaged: it holds"
+                    " zero bytes from byte " + std::to_string(zero + 1)
+                  + " of its first line, where the run wrote '# run "
+                  + runId_ + "' (a power loss or a disk error after the"
+                    " run wrote it); the checkpoint " + checkpointFile()
+                  + " continues run " + runId_ + ", whose " + f + " a"
+                    " restart appends to. Restore the file as the run wrote"
+                    " it, or start anew (-overwrite); nothing was changed"
+                );
+            }
             if (first != "# run " + runId_)
             {
                 throw SolidError
