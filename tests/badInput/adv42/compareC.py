@@ -4,7 +4,7 @@ output of the same case before the merge (out/A, else the latest of out/B, B2, B
 (compareA.py's n). Prints same/DIFF; -v: the diff."""
 import sys, os, glob, difflib
 here = os.path.dirname(os.path.abspath(__file__))
-src = open(os.path.join(here, 'compareA.py')).read().split('verbose = ')[0]
+src = open(os.path.join(here, 'compareA.py')).read().split('\nverbose = ')[0]
 ns = {'__file__': os.path.join(here, 'compareA.py')}; exec(src, ns); n, same = ns['n'], ns['same']
 verbose = '-v' in sys.argv; args = [a for a in sys.argv[1:] if a != '-v']
 files = ['%s/out/C/%s.txt' % (here, a) for a in args] if args else sorted(glob.glob(here + '/out/C/*.txt'))
