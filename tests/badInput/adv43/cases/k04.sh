@@ -9,4 +9,4 @@ t = t.replace('functions\n{', 'functions\n{\n    probesU\n    {\n        type pr
 P
 sed -i "s/^endTime .*/endTime 8e-8;/" system/controlDict; grep -c probesU system/controlDict
 rhoRiemannFoam > log.first 2>&1 & p=$!; waitFor 100 bash -c 'ls */.writeCommitted > /dev/null 2>&1'; cp postProcessing/probes/0/p postProcessing/probesU/0/p; echo "k04 user row" >> postProcessing/probesU/0/p; wait $p; echo "   run rc $?: times $(ls -d [0-9]* | tr '\n' ' '); probesU/0: $(ls postProcessing/probesU/0 | tr '\n' ' ')"
-marks probesU/0/p; sums > ../s; tryf "-overwrite from 0" rhoRiemannFoam -overwrite; grep -a 'postProcessing' $W/try.log | grep -v '^-->' | head -4 | cut -c1-160; nochange ../s; kept "k04 user row"
+marks probesU/0/p; restart0; sums > ../s; tryf "-overwrite from 0" rhoRiemannFoam -overwrite; grep -a 'postProcessing' $W/try.log | grep -v '^-->' | head -4 | cut -c1-160; nochange ../s; kept "k04 user row"

@@ -4,5 +4,5 @@
 sodDone; run 60 riemannError -latestTime > log.re1 2>&1; fatal log.re1 2; D=postProcessing/riemannError; echo "   $D: $(find $D | head -8 | tr '\n' ' ')"; d=$(dirname $(find $D -name 'profile.dat' | head -1) 2>/dev/null); d=${d:-$D}; mkdir -p $d
 echo "# k17 riemann notes" > $d/notes.md; echo "k17 profile mine" > $d/profile.dat.mine
 run 60 riemannError -latestTime > log.re2 2>&1; fatal log.re2 2; kept "k17 riemann notes" "k17 profile mine"
-sums > ../s; tryf "rhoRiemannFoam -overwrite" rhoRiemannFoam -overwrite; grep -a 'postProcessing' $W/try.log | grep -v '^-->' | head -3 | cut -c1-160; kept "k17 riemann notes" "k17 profile mine"
+restart0; sums > ../s; tryf "rhoRiemannFoam -overwrite" rhoRiemannFoam -overwrite; grep -a 'postProcessing' $W/try.log | grep -v '^-->' | head -3 | cut -c1-160; kept "k17 riemann notes" "k17 profile mine"
 tryf "setRiemannProblem -overwrite" setRiemannProblem -overwrite; kept "k17 riemann notes" "k17 profile mine"
