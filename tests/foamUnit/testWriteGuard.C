@@ -243,6 +243,67 @@ TEST(writeGuard, commitMarkerCutShortIsNoCommit)
 }
 
 
+// A commit marker is sealed (fix19x): a byte of it changed is a damaged
+// marker, said so (adv42 g19: one bit of it flipped was "uniform/time
+// changed after the run wrote it"); a marker of an earlier build (no
+// seal) is not judged; a commit of the write guard seals its marker
+TEST(writeGuard, damagedCommitMarkerIsSaidToBeDamaged)
+{
+    foamUnit::testCase tc("writeGuardMarkerSeal");
+    using foamTools::writeGuard;
+    const fileName marker(tc.dir()/"1e-09"/writeGuard::committedName());
+    const auto damage = [&](const std::string& text)
+    {
+        tc.writeFile("1e-09/.writeCommitted", text);
+        return writeGuard::markerDamage(marker);
+    };
+    const std::string body
+    (
+        "1e-09\ndigest fnv1a64 ended\nfile 1a2b 10 p\nfile 3c4d 20 U\n"
+        "log 5e6f 30 postProcessing/fsi/0/coupling.dat\n"
+    );
+    const std::string sealed(body + writeGuard::sealLine(body) + "end\n");
+    EXPECT_EQ(damage(sealed), "");
+    EXPECT_EQ(damage(body + "end\n"), "");
+    std::string flipped(sealed);
+    flipped[body.find("1a2b") + 1] ^= 0x01;
+    EXPECT_NE(damage(flipped).find("seal line"), std::string::npos);
+    flipped = sealed;
+    flipped[body.size() + 6] ^= 0x01;
+    EXPECT_NE(damage(flipped).find("seal line"), std::string::npos);
+    EXPECT_NE(damage(sealed + "x\n").find("'end'"), std::string::npos);
+    damage(flipped);
+    try
+    {
+        writeGuard::checkMarker(tc.dir()/"1e-09", "The restart");
+        ADD_FAILURE() << "a damaged marker was taken";
+    }
+    catch (const Foam::error& e)
+    {
+        EXPECT_NE
+        (
+            std::string(e.message()).find("is damaged"), std::string::npos
+        );
+    }
+
+    // a commit seals its marker
+    Time& runTime = tc.time();
+    tc.writeUniformField("p", dimPressure, 1e5, "zeroGradient");
+    ++runTime;
+    writeGuard::write(runTime);
+    EXPECT_TRUE(writeGuard::run(runTime));
+    const fileName committed(runTime.timePath()/writeGuard::committedName());
+    ASSERT_TRUE(isFile(committed));
+    std::ifstream is(committed.c_str());
+    const std::string text
+    (
+        (std::istreambuf_iterator<char>(is)), std::istreambuf_iterator<char>()
+    );
+    EXPECT_NE(text.find("\nseal "), std::string::npos);
+    EXPECT_EQ(writeGuard::markerDamage(committed), "");
+}
+
+
 // The directory the run writes its times into removed and made again
 // while it runs (OpenFOAM's decomposePar -force on the processor
 // directories, adv37 w13): the next step stops with a FatalError naming

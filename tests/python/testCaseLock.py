@@ -166,6 +166,33 @@ class PythonLock(TempDirTestCase):
                 pass
 
 
+class LockOnAFullDisk(TempDirTestCase):
+    """adv38 x55: planeWave on a full disk said "a file could not be
+    written or read: No space left on device", no file named (the lock's
+    write fails at its close, naming no file), and left an empty lock"""
+
+    def testNamedAndRemoved(self):
+        import errno
+        from unittest import mock
+        real = os.fdopen
+
+        def full(fd, *a, **k):
+            f = real(fd, *a, **k)
+
+            def write(_):
+                raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+            f.write = write
+            return f
+        with mock.patch.object(caseLock.os, "fdopen", full):
+            with self.assertRaisesRegex(
+                    caseLock.CaseLockError,
+                    "cannot write the run lock %s/.runLock \\(no space left"
+                    " on the device of '%s'" % (self.tmp, self.tmp)):
+                with caseLock.held(self.tmp, "planeWave"):
+                    pass
+        self.assertFalse(os.path.exists(os.path.join(self.tmp, ".runLock")))
+
+
 class UnderItsAllrun(LiveLockTestCase):
     """A tool started by a run that holds the lock (an Allrun: etc/
     RunFunctions allrunLock) runs under it, as the solvers do (caseLock.H

@@ -36,6 +36,28 @@ class Results(TempDirTestCase):
             np.testing.assert_array_equal(r.field("10", "pressure"),
                                           [10, -10])
 
+    def testFletcherDamageNamesFileAndDataset(self):
+        """a dataset whose HDF5 Fletcher-32 checksum fails (one bit of its
+        chunk flipped) is a SolidResultsError naming the file and the
+        dataset (adv42 g21: h5py's bare OSError named neither)"""
+        from neuronFsi.solidResults import SolidResultsError
+        v = np.linspace(1.0, 2.0, 64)
+        with h5py.File(self.path, "a") as f:
+            f.create_dataset("steps/1/velocity", data=v, chunks=(64,),
+                             fletcher32=True)
+        with h5py.File(self.path, "r") as f:
+            at = f["steps/1/velocity"].id.get_chunk_info(0).byte_offset
+        with open(self.path, "r+b") as f:
+            f.seek(at + 8*10 + 3)
+            b = f.read(1)[0]
+            f.seek(at + 8*10 + 3)
+            f.write(bytes([b ^ 0x01]))
+        with SolidResults(self.path) as r:
+            with self.assertRaisesRegex(
+                    SolidResultsError, "solid.h5: dataset /steps/1/velocity "
+                    "cannot be read: .*Fletcher32.*the file is damaged"):
+                r.field("1", "velocity")
+
     def testMissingFile(self):
         with self.assertRaisesRegex(OSError, "absent.h5: cannot open"):
             SolidResults(os.path.join(self.tmp, "absent.h5"))

@@ -464,6 +464,24 @@ TEST(SolidIndentationDriver, ResumeRefusesOutputsOfAnotherRunOrDamaged)
         EXPECT_NE(msg.find("runA"), std::string::npos) << msg;
     }
 
+    // One bit of the '# run' line flipped (adv42 g20: was "belongs to
+    // another run"): the line named damaged (the file of another run of
+    // the same inputs, above, differs in that line only: both named)
+    for (const char* f : {"force.dat", "peaks.dat"})
+    {
+        const std::string msg = resume([&](const std::string& dir)
+        {
+            std::string bytes = contents(dir + "/" + f);
+            ASSERT_EQ(bytes.compare(0, 10, "# run runA"), 0);
+            bytes[8] ^= 0x01;
+            std::ofstream(dir + "/" + f, std::ios::binary) << bytes;
+        });
+        EXPECT_NE(msg.find(std::string(f) + " is damaged in its first line"
+                  ", or belongs to another run of the same inputs: its first"
+                  " line is '# run ruoA' where this run wrote '# run runA'"),
+                  std::string::npos) << msg;
+    }
+
     // A missing output (adv33 c24: was "belongs to another run: its first
     // line is ''"): said to be missing
     for (const char* f : {"force.dat", "peaks.dat"})

@@ -21,7 +21,10 @@
 #    writes it) is the same condition: the restart runs, and each rank's
 #    record of a 2-rank run holds the serial run's digest of it;
 #  - on 2 ranks each rank records its own mesh, a changed point of one
-#    rank is refused, and the reconstructed run restarts serially.
+#    rank is refused, and the reconstructed run restarts serially;
+#  - the pulse read by tableFile from constant/tables/pulse.dat or from
+#    tables/pulse.dat (outside constant/), edited: refused naming the file
+#    (adv42 g05); unchanged: the restart runs.
 set -euo pipefail
 . "$(dirname "$0")/../lib/restartTools.sh"
 . "$(dirname "$0")/../lib/checks.sh"
@@ -173,6 +176,52 @@ reconstructPar -latestTime > log.reconstructPar 2>&1
 status=0; cellBlastFoam > log.serial 2>&1 || status=$?
 check "cellBlastFoam: the reconstructed run restarts serially" \
     "[ $status -eq 0 ] && grep -q '^End' log.serial && [ -d 1.5e-08 ]"
+
+# The pulse read by OpenFOAM's tableFile from a file (adv42 g05: a table in
+# constant/tables/, a sub-folder of constant/, edited after the run: the
+# restart went on with the new pulse, exit 0). Every file in constant/ and
+# its sub-folders is an input, and so is a file a boundary condition names
+# wherever it lies (here tables/ of the case): each edit refused naming
+# the file, nothing changed; the unchanged restart runs
+for table in constant/tables/pulse.dat tables/pulse.dat
+do
+    case=$work/tableFile
+    rm -rf "$case"; mkdir "$case"; cd "$case"
+    cp -r "$root/tests/fsi/pulseLayer"/* .
+    sed -i 's/^startFrom .*/startFrom latestTime;/; s/^endTime .*/endTime 1e-8;/; s/^writeInterval .*/writeInterval 5e-9;/' system/controlDict
+    mkdir -p "$(dirname $table)"
+    printf '(\n (0 0)\n (0.1e-9 5e7)\n (5e-9 5e7)\n (5.1e-9 0)\n (1 0)\n)\n' > $table
+    /usr/bin/python3 - "$table" <<'PY'
+import re, sys
+s = open("0/p").read()
+s, n = re.subn(r"uniformValue\s+table\s*\(.*?\n\s*\);",
+               'uniformValue tableFile;\n        uniformValueCoeffs { file '
+               '"$FOAM_CASE/%s"; }' % sys.argv[1], s, 1, re.S)
+assert n == 1
+open("0/p", "w").write(s)
+PY
+    blockMesh > log.blockMesh 2>&1
+    cellBlastFoam > log.first 2>&1
+    sed -i 's/^endTime .*/endTime 1.5e-8;/' system/controlDict
+    if [ $table = tables/pulse.dat ]
+    then
+        shown="named file tables/pulse.dat (field p, boundaryField/loaded, entry uniformValueCoeffs/file)"
+    else
+        shown=$table
+    fi
+    rm -rf "$work/edit"; cp -r "$case" "$work/edit"; cd "$work/edit"
+    sed -i 's/5e7)/6e7)/' $table
+    caseSums > "$work/before"
+    status=0; cellBlastFoam > log.restart 2>&1 || status=$?
+    caseSums > "$work/after"
+    check "cellBlastFoam, the pulse's tableFile $table edited: refused, naming it, nothing changed" \
+        "[ $status -ne 0 ] && grep -q 'would continue the results with other inputs' log.restart \
+         && grep -qF '    $shown (changed)' log.restart && cmp -s '$work/before' '$work/after'"
+    cd "$case"
+    status=0; cellBlastFoam > log.restart 2>&1 || status=$?
+    check "cellBlastFoam, the pulse's tableFile $table unchanged: the restart runs" \
+        "[ $status -eq 0 ] && grep -q '^End' log.restart && [ -d 1.5e-08 ]"
+done
 
 # rhoRiemannFoam
 case=$work/fluid

@@ -708,6 +708,7 @@ void Foam::fluidSolidInteraction::step()
             << wallWork_ << ' ' << solid.energy().externalWork << nl;
         // Complete rows up to the last step after a FatalError stop too
         couplingLog_().flush();
+        foamTools::runLogFiles::checkWritten(couplingLog_());
     }
     cpuOutput_ += cpuTimer_.cpuTimeIncrement();
 }
@@ -840,6 +841,7 @@ void Foam::fluidSolidInteraction::write(const scalar stepDeltaT)
     if (couplingLog_.valid())
     {
         couplingLog_().flush();
+        foamTools::runLogFiles::checkWritten(couplingLog_());
     }
 }
 

@@ -128,25 +128,15 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
 
     // Fractions in [0, 1) (explicitSafety (0, 1)), checked here so that a
     // bad value is named as the file's entry (the solver's own check names
-    // its settings: 'safety', 'hourglass')
+    // its settings: 'safety', 'hourglass'); nan and inf with that range too
+    // (adv42 g25: "valid range [-inf, inf)")
     const auto fraction = [](const dictionary& d, const word& key,
                              const bool zero, const scalar deflt)
     {
-        // Any finite number read, then the range (readInRange's upper
-        // bound is closed)
-        const scalar x = foamTools::readInRangeOrDefault<scalar>
+        return foamTools::readInRangeOrDefault<scalar>
         (
-            d, key, "", -foamTools::noUpperBound<scalar>(),
-            foamTools::noUpperBound<scalar>(), true, deflt
+            d, key, "", 0, 1, zero, deflt, false
         );
-        if ((zero ? x < 0 : x <= 0) || x >= 1)
-        {
-            FatalIOErrorInFunction(d)
-                << "entry '" << key << "' = " << x << " is outside the"
-                << " valid range " << (zero ? "[" : "(") << "0, 1)"
-                << exit(FatalIOError);
-        }
-        return x;
     };
     solid::ExplicitSettings set;
     set.safety = fraction(dict_, "explicitSafety", false, 0.8);
@@ -1084,6 +1074,7 @@ void Foam::solidDomain::write
         // no destructor) leaves complete rows up to its last step
         os  << nl;
         os.flush();
+        foamTools::runLogFiles::checkWritten(os);
     }
     if (interfaceFile_.valid())
     {
@@ -1095,13 +1086,20 @@ void Foam::solidDomain::write
         }
         os  << nl;
         os.flush();
+        foamTools::runLogFiles::checkWritten(os);
     }
     if (runTime_.writeTime())
     {
         // The logs complete up to this write time before it is committed:
         // a run killed later restarts here and loses no row
-        if (probeFile_.valid()) probeFile_().flush();
-        if (interfaceFile_.valid()) interfaceFile_().flush();
+        for (autoPtr<OFstream>* f : {&probeFile_, &interfaceFile_})
+        {
+            if (f->valid())
+            {
+                (*f)().flush();
+                foamTools::runLogFiles::checkWritten((*f)());
+            }
+        }
         // The whole solid's histories on the master for the result file
         // (stresses) and the restart state
         model_->shareStates();

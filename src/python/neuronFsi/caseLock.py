@@ -38,6 +38,7 @@ cannot take this lock: docs/reliability.md says so."""
 
 import atexit
 import ctypes
+import errno
 import os
 import socket
 import stat
@@ -200,12 +201,37 @@ def lockText(pid, executable, case, started=None):
                started or time.strftime("%Y-%m-%dT%H:%M:%S"), case))
 
 
+def spaceNote(path, err):
+    """Why writing path failed, for a message: " (no space left on the
+    device of '<dir>': N bytes free)" when its file system has less than
+    1 MiB free or err is ENOSPC, else ": <strerror>" (caseLock.H's
+    foamTools::spaceNote)."""
+    d = os.path.dirname(os.path.abspath(path))
+    try:
+        st = os.statvfs(d)
+        free = st.f_bavail*st.f_frsize
+    except OSError:
+        free = None
+    if getattr(err, "errno", None) == errno.ENOSPC or \
+            (free is not None and free < 1 << 20):
+        return " (no space left on the device of '%s'%s)" % (
+            d, ": %d bytes free" % free if free is not None else "")
+    return ": %s" % (getattr(err, "strerror", None) or err)
+
+
 def _replace(path, text, pid, what):
     """Write text to the lock path atomically (a temporary file renamed
     onto it); False if the rename fails."""
     tmp = "%s.%s.%d" % (path, what, pid)
-    with open(tmp, "w") as f:
-        f.write(text)
+    try:
+        with open(tmp, "w") as f:
+            f.write(text)
+    except OSError:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
     try:
         os.rename(tmp, path)
     except OSError:
@@ -227,9 +253,9 @@ def takeOver(path, pid, executable, case, ancestor):
     try:
         return _replace(path, lock, pid, "takeOver")
     except OSError as err:
-        raise CaseLockError("cannot write the run lock %s: %s. The case "
+        raise CaseLockError("cannot write the run lock %s%s. The case "
                             "directory must be writable"
-                            % (path, err.strerror))
+                            % (path, spaceNote(path, err)))
 
 
 def giveBack(path, pid):
@@ -342,11 +368,24 @@ class held:
         except FileExistsError:
             return False
         except OSError as err:
-            raise CaseLockError("cannot create the run lock %s: %s. The "
+            raise CaseLockError("cannot create the run lock %s%s. The "
                                 "case directory must be writable"
-                                % (self.path, err.strerror))
-        with os.fdopen(fd, "w") as f:
-            f.write(lockText(os.getpid(), self.tool, self.case))
+                                % (self.path, spaceNote(self.path, err)))
+        try:
+            with os.fdopen(fd, "w") as f:
+                f.write(lockText(os.getpid(), self.tool, self.case))
+        except OSError as err:
+            # a full disk: the write or the flush at close fails, naming
+            # no file (adv38 x55: "a file could not be written or read:
+            # No space left on device"); the empty lock removed
+            try:
+                os.unlink(self.path)
+            except OSError:
+                pass
+            raise CaseLockError("cannot write the run lock %s%s. The case "
+                                "directory must be writable, with room for "
+                                "the lock" % (self.path,
+                                              spaceNote(self.path, err)))
         return True
 
     def __enter__(self):

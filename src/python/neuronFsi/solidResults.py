@@ -62,7 +62,15 @@ class SolidResults:
         (adv33 o13: a NaN displacement plotted, exit 0, while solidToFoam
         refused the file)."""
         d = self.file[key]
-        v = d[()]
+        try:
+            v = d[()]
+        except OSError as err:
+            # HDF5's own checksum (Fletcher-32) or a damaged chunk: its
+            # bare "Can't read data (data error detected by Fletcher32
+            # checksum)" named neither the file nor the dataset (adv42 g21)
+            raise SolidResultsError(
+                "%s: dataset /%s cannot be read: %s (the file is damaged)"
+                % (self.path, key, err))
         stored = d.attrs.get("digest64")
         if stored is not None and np.size(v) and \
                 digest64(v) != int(stored):

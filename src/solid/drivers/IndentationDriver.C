@@ -103,6 +103,48 @@ void solid::IndentationDriver::checkResume()
                     " it, or start anew (-overwrite); nothing was changed"
                 );
             }
+            // The run's file with its first line damaged (adv42 g20: one
+            // bit of peaks.dat's '# run' line flipped was "another run"):
+            // its bytes up to the checkpoint, the run's line in place of
+            // the first, are those the checkpoint's digest was made of
+            const std::string own("# run " + runId_);
+            const std::string key(std::string(f) + ".fnv1a64");
+            if
+            (
+                first != own && first.size() == own.size()
+             && c.hasText(key)
+            )
+            {
+                const std::string line(own + "\n");
+                std::uint64_t h =
+                    fileDigest::add(fileDigest::basis, line.data(), line.size());
+                std::uintmax_t zero = std::uintmax_t(-1);
+                const double len = c.scalar(std::string(f) + ".length");
+                if
+                (
+                    len >= double(line.size())
+                 && fileDigest::bytes
+                    (
+                        path(f), line.size(), std::uintmax_t(len), h, zero
+                    )
+                 && c.text(key) == fileDigest::hex(h)
+                )
+                {
+                    throw SolidError
+                    (
+                        SolidError::Kind::io, path(f) + " is damaged in"
+                        " its first line, or belongs to another run of the"
+                        " same inputs: its first line is '"
+                      + first.substr(0, 80) + "' where this run wrote '"
+                      + own + "', and its other bytes up to the checkpoint "
+                      + checkpointFile() + " are those this run wrote (a"
+                        " disk error or an edit of that line, or a copy of"
+                        " the file of a run with the same inputs). Restore"
+                        " the line to continue, or start anew"
+                        " (-overwrite); nothing was changed"
+                    );
+                }
+            }
             if (first != "# run " + runId_)
             {
                 throw SolidError
