@@ -1,0 +1,8 @@
+#!/bin/bash
+# k01 (class 2, user files named like ANOTHER function object's log, put BEFORE a restart into the folders the restart writes): a blast finished to 2 ns; before the restart 2 -> 3 ns: solidProbes/2e-09/coupling.dat (the user's plain text), fsi/2e-09/p (plain text), fluidProbes/2e-09/solidProbes.dat (a COPY of the run's solidProbes/0/solidProbes.dat: the right header, the wrong folder), solidInterfaces/2e-09/sub/notes.md; restart: kept? equal to a clean restart? recorded by 3e-09's marker? then -overwrite from 0: refused naming all four, all kept?
+. "$(dirname "$0")/../lib.sh"
+blastRef; blastDone; P=postProcessing; mkdir -p $P/solidProbes/2e-09 $P/fsi/2e-09 $P/fluidProbes/2e-09 $P/solidInterfaces/2e-09/sub
+echo "k01 coupling in solidProbes" > $P/solidProbes/2e-09/coupling.dat; echo "k01 p in fsi" > $P/fsi/2e-09/p; cp $P/solidProbes/0/solidProbes.dat $P/fluidProbes/2e-09/solidProbes.dat; echo "k01 copied solidProbes" >> $P/fluidProbes/2e-09/solidProbes.dat; echo "# k01 sub note" > $P/solidInterfaces/2e-09/sub/notes.md
+latest; blastEnd 3e-9 1e-9; tryf "restart 2 -> 3 ns" cellBlastFoam; echo "   times $(ls -d [1-9]* | tr '\n' ' ')"; kept "k01 coupling in solidProbes" "k01 p in fsi" "k01 copied solidProbes" "k01 sub note"; [ -d 3e-09 ] && cmpRef $W/r/ref
+for t in coupling.dat fsi/2e-09/p solidProbes.dat notes.md; do marks "2e-09/.*$t\|2e-09/$t"; done
+restart0; blastEnd 2e-9 1e-9; sums > ../s; tryf "-overwrite from 0" cellBlastFoam -overwrite; grep -a 'postProcessing' $W/try.log | grep -v '^-->' | head -6 | cut -c1-160; nochange ../s; kept "k01 coupling in solidProbes" "k01 p in fsi" "k01 copied solidProbes" "k01 sub note"

@@ -1,0 +1,9 @@
+#!/bin/bash
+# k20 (class 2, k07's finding isolated: the study's own copies): (a) a FINISHED one-point study; the user's notes.md in postProcessing/pulseStudy/base/; ./Allrun again (nothing to run): kept? (b) a study run with -keep (the point's case copy kept); the user's notes in points/<label>/case/ and in its postProcessing/fsi/0/; ./Allrun -keep again (nothing to run): kept? (c) the same interrupted (killed while its point runs) with the user's note in points/<label>/case/: ./Allrun again: kept, named, or removed without a word?
+. "$(dirname "$0")/../lib.sh"
+S=postProcessing/pulseStudy
+study; run 200 ./Allrun > ../log.a1 2>&1; echo "   (a) first: $(tail -1 ../log.a1 | cut -c1-100)"; echo "# k20a base notes" > $S/base/notes.md; run 200 ./Allrun > ../log.a2 2>&1; echo "   (a) again rc: $(grep -a -i -m2 'error\|refus\|kept\|base' ../log.a2 | cut -c1-200 | tr '\n' '|')"; kept "k20a base notes"
+cd $W; rm -rf study; study; run 200 ./Allrun -keep > ../log.b1 2>&1; pt=$(ls -d $S/points/* | head -1); echo "   (b) $pt: $(ls $pt | tr '\n' ' ')"; echo "k20b case notes" > $pt/case/notes.txt; echo "k20b fsi notes" > $pt/case/postProcessing/fsi/0/notes.txt
+run 200 ./Allrun -keep > ../log.b2 2>&1; echo "   (b) again: $(grep -a -i -m2 'error\|refus\|kept\|not run' ../log.b2 | cut -c1-200 | tr '\n' '|')"; kept "k20b case notes" "k20b fsi notes"
+cd $W; rm -rf study; study; setsid ./Allrun > ../log.c1 2>&1 & p=$!; waitFor 120 bash -c 'ls -d postProcessing/pulseStudy/points/*/case/1e-09'; sleep 0.5; kill -KILL -- -$p; wait $p 2>/dev/null; sleep 0.5
+pt=$(ls -d $S/points/* | head -1); echo "k20c case notes" > $pt/case/notes.txt; run 250 ./Allrun > ../log.c2 2>&1; echo "   (c) again: $(grep -a -i -m3 'error\|refus\|kept\|again' ../log.c2 | cut -c1-220 | tr '\n' '|')"; kept "k20c case notes"
