@@ -292,6 +292,36 @@ class Records(TempDirTestCase):
             ps.readRecord(path, self.point())
 
 
+    def testBaseCopyWithTheUsersFileRefused(self):
+        """the study's copy of the base case (made again at every run)
+        holding a file the base case does not is refused, nothing removed
+        (adv43 k20: the user's notes.md in it was removed by every run)"""
+        import importlib.util
+        import sys
+        hook = sys.excepthook
+        spec = importlib.util.spec_from_file_location(
+            "pulseStudyApp", os.path.join(
+                os.path.dirname(__file__), "..", "..", "applications",
+                "utilities", "pulseStudy", "pulseStudy.py"))
+        app = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(app)
+        sys.excepthook = hook
+        self.write("base/constant/x", "base\n")
+        self.write("out/base/constant/x", "base\n")
+        base = os.path.join(self.tmp, "base")
+        out = os.path.join(self.tmp, "out")
+        # the copy as the study left it: made again, nothing said
+        staging, _ = app.prepareBase({"base": base}, out)
+        self.assertEqual(sorted(os.listdir(staging)), ["constant"])
+        self.write("out/base/notes.md", "# my notes\n")
+        self.write("out/base/constant/mine/a.txt", "mine\n")
+        with self.assertRaisesRegex(
+                ps.StudyError, "holds files the base case does not: "
+                "constant/mine/a.txt, notes.md\\. Nothing was removed"):
+            app.prepareBase({"base": base}, out)
+        with open(os.path.join(out, "base", "notes.md")) as f:
+            self.assertEqual(f.read(), "# my notes\n")
+
     def testInterruptedPointKeepsTheUsersFiles(self):
         """a point interrupted earlier is run again from the start: its case
         copy and a record's temporary file are removed, a file of the

@@ -95,6 +95,17 @@ def prepareBase(s, out):
     staging = os.path.join(out, "base")
     if os.path.lexists(staging):
         caseRuns.checkNoEarlierRun(staging)
+        # re-made at every run: refused, nothing removed, if it holds a
+        # file the base case does not (the user's: adv43 k20, a notes.md
+        # in it was removed by every ./Allrun)
+        foreign = filesNotIn(staging, s["base"])
+        if foreign:
+            raise ps.StudyError(
+                "%s is the study's copy of the base case %s, made again at "
+                "every run; it holds files the base case does not: %s. "
+                "Nothing was removed: move them out of %s (or remove it "
+                "if they are not yours), then run the study again"
+                % (staging, s["base"], ", ".join(foreign), staging))
         shutil.rmtree(staging)
     shutil.copytree(s["base"], staging, symlinks=True)
     if os.path.isfile(os.path.join(staging, "Allclean")):
@@ -103,6 +114,24 @@ def prepareBase(s, out):
         caseRuns.runIn(staging, "./Allclean", log)
         os.remove(log)
     return staging, ps.fileDigests(staging)
+
+
+def filesNotIn(copy, original):
+    """The files and links under folder copy (paths relative to it,
+    sorted) with no entry of the same path under original; a caseRuns
+    marker is not counted."""
+    found = []
+    for root, dirs, files in os.walk(copy):
+        rel = os.path.relpath(root, copy)
+        for name in sorted(dirs + files):
+            path = os.path.normpath(os.path.join(rel, name))
+            full = os.path.join(root, name)
+            if name == caseRuns.MARKER or (
+                    name in dirs and not os.path.islink(full)):
+                continue
+            if not os.path.lexists(os.path.join(original, path)):
+                found.append(path)
+    return sorted(found)
 
 
 def pointFiles(folder):
