@@ -1,7 +1,7 @@
 #!/bin/bash
 # runOne.sh [-o DIR] PASS ID: adv42's runOne.sh (adv41's, adv40's) for adv43, with its own out/ folder and base-case prefix:
-# runs tests/badInput/PASS/cases/ID.sh unchanged from its own folder (PASS adv43: this folder; adv42: the copy
-# adv43/adv42/ of adv42's cases and lib.sh, branch adv42 74e63eb, whose lib.sh sources ../../adv41/lib.sh), with this
+# runs tests/badInput/PASS/cases/ID.sh unchanged from its own folder (PASS adv43: this folder; adv42: tests/badInput/adv42,
+# the pass's own cases and lib.sh; the runs of this report used a copy of them, adv42 74e63eb, since removed), with this
 # worktree's build, ADV=${ADVPREFIX:-/tmp/adv43-}PASS (base cases), nice -n 10, a 300 s KILL timeout, in a session of its
 # own (whatever the case leaves running is SIGKILLed by its group id after it); output tests/badInput/adv43/out/DIR/PASS_ID.txt
 here=$(cd "$(dirname "$0")" && pwd); d=A; [ "$1" = -o ] && { d=$2; shift 2; }

@@ -1,6 +1,0 @@
-#!/bin/bash
-# g10 (class 2, a user's files where a restart writes its log segments): finished to 2 ns; the user's postProcessing/fsi/2e-09/notes.md ("# My analysis ...", a Markdown note) and postProcessing/solidProbes/2e-09/plot.py ("#!/usr/bin/python3") made before a restart from 2e-09 to 3e-09: kept? the logs' series equal a clean restart's? then -overwrite from 0: refused naming both?
-. "$(dirname "$0")/../lib.sh"
-blastRef; blastDone; mkdir -p postProcessing/fsi/2e-09 postProcessing/solidProbes/2e-09; printf '# My analysis g10\n\nthe 2 ns peak\n' > postProcessing/fsi/2e-09/notes.md; printf '#!/usr/bin/python3\n# g10 plot script\nprint(1)\n' > postProcessing/solidProbes/2e-09/plot.py
-latest; blastEnd 3e-9 1e-9; tryf "restart 2 -> 3 ns with the user's files in the segment folders" cellBlastFoam; echo "   fsi/2e-09: $(ls postProcessing/fsi/2e-09 | tr '\n' ' '); solidProbes/2e-09: $(ls postProcessing/solidProbes/2e-09 | tr '\n' ' ')"; kept "My analysis g10" "g10 plot script"; cmpRef $W/r/ref
-sed -i 's/^startFrom .*/startFrom startTime;/' system/controlDict; blastEnd 2e-9 1e-9; sums > ../s; tryf "-overwrite from 0" cellBlastFoam -overwrite; nochange ../s; kept "My analysis g10" "g10 plot script"
