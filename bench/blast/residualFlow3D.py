@@ -70,6 +70,7 @@ centre on the cell (0 at the top, atan2(r/a, z/H), a = 8.4 um, H =
 """
 
 import argparse
+import contextlib
 import os
 import shutil
 import subprocess
@@ -81,9 +82,26 @@ import numpy as np
 
 from neuronFsi import cellRefinement
 from neuronFsi import foamField as ff
+from neuronFsi import scratch
 
 RHO = 1000.0
 A, H = 8.4e-6, 7.9e-6         # the cell's semi-axes (radius, height) [m]
+
+
+@contextlib.contextmanager
+def scratchCase(case, names, empty=()):
+    """A scratch copy of the entries names of case (and the empty folders
+    empty), removed afterwards: the utilities run there, the case is not
+    written to."""
+    tmp = tempfile.mkdtemp()
+    try:
+        dst = os.path.join(tmp, "case")
+        scratch.copyInputs(case, dst, names)
+        for e in empty:
+            os.makedirs(os.path.join(dst, e))
+        yield dst
+    finally:
+        shutil.rmtree(tmp)
 
 
 def hexVolumes(X, C):
@@ -187,17 +205,12 @@ def cellData(case, t):
     d = os.path.join(case, t)
     if not (os.path.exists(os.path.join(d, "C"))
             and os.path.exists(os.path.join(d, "V"))):
-        tmp = tempfile.mkdtemp()
-        try:
-            for s in ("constant", "system", t):
-                shutil.copytree(os.path.join(case, s), os.path.join(tmp, s))
+        with scratchCase(case, ("constant", "system", t)) as tmp:
             subprocess.run(["postProcess", "-case", tmp, "-time", t,
                             "-funcs", "(writeCellCentres writeCellVolumes)"],
                            check=True, capture_output=True)
             C = ff.internalField(os.path.join(tmp, t, "C"))
             V = ff.internalField(os.path.join(tmp, t, "V"))
-        finally:
-            shutil.rmtree(tmp)
     else:
         C = ff.internalField(os.path.join(d, "C"))
         V = ff.internalField(os.path.join(d, "V"))
@@ -236,33 +249,21 @@ def fluid(case, times):
 def postFields(case, t, funcs):
     """Cell centres, volumes and the fields of funcs at time t, from a
     scratch copy of the case (the case is not written to)."""
-    tmp = tempfile.mkdtemp()
-    try:
-        for s in ("constant", "system", t):
-            shutil.copytree(os.path.join(case, s), os.path.join(tmp, s))
+    with scratchCase(case, ("constant", "system", t)) as tmp:
         subprocess.run(["postProcess", "-case", tmp, "-time", t, "-funcs",
                         "(writeCellCentres writeCellVolumes %s)"
                         % " ".join(funcs)], check=True, capture_output=True)
-        out = {n: ff.internalField(os.path.join(tmp, t, n))
-               for n in ["C", "V"] + list(funcs) + ["p"]}
-    finally:
-        shutil.rmtree(tmp)
-    return out
+        return {n: ff.internalField(os.path.join(tmp, t, n))
+                for n in ["C", "V"] + list(funcs) + ["p"]}
 
 
 def nonOrthogonality(case):
-    tmp = tempfile.mkdtemp()
-    try:
-        for s in ("constant", "system"):
-            shutil.copytree(os.path.join(case, s), os.path.join(tmp, s))
-        os.makedirs(os.path.join(tmp, "0"))
+    with scratchCase(case, ("constant", "system"), ("0",)) as tmp:
         subprocess.run(["checkMesh", "-case", tmp, "-constant",
                         "-writeFields", "(nonOrthoAngle)"], check=True,
                        capture_output=True)
         return ff.internalField(os.path.join(tmp, "constant",
                                              "nonOrthoAngle"))
-    finally:
-        shutil.rmtree(tmp)
 
 
 def vorticity(case, times):
@@ -371,11 +372,7 @@ def front(case):
 
 
 def faces(case):
-    tmp = tempfile.mkdtemp()
-    try:
-        for s in ("constant", "system"):
-            shutil.copytree(os.path.join(case, s), os.path.join(tmp, s))
-        os.makedirs(os.path.join(tmp, "0"))
+    with scratchCase(case, ("constant", "system"), ("0",)) as tmp:
         subprocess.run(["surfaceMeshExtract", "-case", tmp, "-constant",
                         "-patches", "(cellInterface)", "ci.obj"],
                        check=True, capture_output=True)
@@ -386,8 +383,6 @@ def faces(case):
             elif line.startswith("f "):
                 F.append([int(x.split("/")[0]) - 1
                           for x in line.split()[1:]])
-    finally:
-        shutil.rmtree(tmp)
     P = np.array(V)
     rows = []
     for idx in F:

@@ -311,19 +311,14 @@ void Foam::fluidSolidInteraction::openLog()
     {
         return;
     }
-    const Time& runTime = mesh_.time();
-    const fileName dir
+    couplingLog_ = foamTools::runLogFiles::openLog
     (
-        runTime.globalPath()/"postProcessing"/"fsi"/runTime.timeName()
+        mesh_.time(),
+        "fsi",
+        foamTools::runLogFiles::couplingName(),
+        foamTools::runLogFiles::couplingHeader()
     );
-    mkDir(dir);
-    couplingLog_.reset
-    (
-        new OFstream(dir/foamTools::runLogFiles::couplingName())
-    );
-    couplingLog_().precision(10);
-    couplingLog_()
-        << foamTools::runLogFiles::couplingHeader() << coupling_->type()
+    couplingLog_() << coupling_->type()
         << ")" << nl
         << "# time [s]  dt [s]  iterations  residual [-]  converged"
         << "  interfaceForce (x y z) [N]  interfaceVelocityMax [m/s]"

@@ -818,20 +818,15 @@ void Foam::solidDomain::setupOutput()
     probeStrain_.setSize(2*nProbes, 0);
     if (nProbes && Pstream::master())
     {
-        const fileName dir
+        probeFile_ = foamTools::runLogFiles::openLog
         (
-            runTime_.globalPath()/"postProcessing"/"solidProbes"
-           /runTime_.timeName()
-        );
-        mkDir(dir);
-        probeFile_.reset
-        (
-            new OFstream(dir/foamTools::runLogFiles::solidProbesName())
+            runTime_,
+            "solidProbes",
+            foamTools::runLogFiles::solidProbesName(),
+            foamTools::runLogFiles::solidProbesHeader()
         );
         OFstream& os = probeFile_();
-        os.precision(10);
-        os  << foamTools::runLogFiles::solidProbesHeader()
-            << " of the reference configuration (each follows its material"
+        os  << " of the reference configuration (each follows its material"
             << " point), recovered from the elements of the probe's region around it: per "
             << "probe pressure (+ compression), von Mises, volumetric strain"
             << " ln J and its rate, temperature rise; then per probe the "
@@ -895,20 +890,15 @@ void Foam::solidDomain::setupOutput()
     }
     if (pairs.size() && Pstream::master())
     {
-        const fileName dir
+        interfaceFile_ = foamTools::runLogFiles::openLog
         (
-            runTime_.globalPath()/"postProcessing"/"solidInterfaces"
-           /runTime_.timeName()
-        );
-        mkDir(dir);
-        interfaceFile_.reset
-        (
-            new OFstream(dir/foamTools::runLogFiles::interfaceMaximaName())
+            runTime_,
+            "solidInterfaces",
+            foamTools::runLogFiles::interfaceMaximaName(),
+            foamTools::runLogFiles::interfaceMaximaHeader()
         );
         OFstream& os = interfaceFile_();
-        os.precision(10);
-        os  << foamTools::runLogFiles::interfaceMaximaHeader()
-            << " along each region interface"
+        os  << " along each region interface"
             << " (either side): pressure (+ compression) and von Mises"
             << nl << "# time [s]";
         forAll(pairs, i)
@@ -996,20 +986,15 @@ void Foam::solidDomain::openPatchFile()
     const scalar L = patchLength_;
     if (patches_.size() && Pstream::master())
     {
-        const fileName dir
+        patchFile_ = foamTools::runLogFiles::openLog
         (
-            runTime_.globalPath()/"postProcessing"/"solidInterfaces"
-           /runTime_.timeName()
-        );
-        mkDir(dir);
-        patchFile_.reset
-        (
-            new OFstream(dir/foamTools::runLogFiles::interfacePatchesName())
+            runTime_,
+            "solidInterfaces",
+            foamTools::runLogFiles::interfacePatchesName(),
+            foamTools::runLogFiles::interfacePatchesHeader()
         );
         OFstream& os = patchFile_();
-        os.precision(10);
-        os  << foamTools::runLogFiles::interfacePatchesHeader()
-            << " over a patch of fixed size (r-z: " << L << " m of arc along the interface;"
+        os  << " over a patch of fixed size (r-z: " << L << " m of arc along the interface;"
             << " 3D: a disc of diameter " << L << " m) of pressure (+ "
             << "compression), von Mises and shear traction (each side's "
             << "elements, the larger side), the von Mises patch's centre,"
