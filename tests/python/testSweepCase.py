@@ -43,5 +43,87 @@ class EditDuringTheSweep(TempDirTestCase):
         self.assertFalse(os.path.exists(case + ".sweep_value_base"))
 
 
+class Adv44Rows(TempDirTestCase):
+    """fix19za: what adv44 found in sweepCase (issue 19): an entry leaving
+    the case (a13), a linked dictionary (a36), a value set again by an
+    include (a15), the user's note in a run folder (a14)."""
+
+    def sweep(self, entry, run="grep -h radius constant/props > out.txt",
+              values="20e-6 25e-6", extra=()):
+        return subprocess.run(
+            [sys.executable, SWEEP, "-case", self.case, "-entry", entry,
+             "-values", values, "-run", run,
+             "-output", r"r=out.txt:/radius\s+(\S+);/"] + list(extra),
+            capture_output=True, text=True)
+
+    def setUp(self):
+        super().setUp()
+        self.case = os.path.join(self.tmp, "ind")
+        self.write("ind/system/controlDict", "application true;\n")
+        self.props = self.write("ind/constant/props", "radius 22e-6;\n")
+
+    def testEntryOutsideTheCaseRefused(self):
+        # a13: ../ind/constant/props is the case's own file from its copy
+        r = self.sweep("../ind/constant/props/radius")
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertIn("is outside the case", r.stderr)
+        self.assertIn("../ind/constant/props/radius", r.stderr)
+        with open(self.props) as f:
+            self.assertEqual(f.read(), "radius 22e-6;\n")
+        self.assertEqual(os.listdir(self.tmp), ["ind"])
+
+    def testLinkedFolderRefused(self):
+        # a folder on the way that is a link: outside the case too
+        shared = os.path.join(self.tmp, "shared")
+        os.rename(os.path.join(self.case, "constant"), shared)
+        os.symlink(shared, os.path.join(self.case, "constant"))
+        r = self.sweep("constant/props/radius")
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertIn("is a symbolic link", r.stderr)
+        with open(os.path.join(shared, "props")) as f:
+            self.assertEqual(f.read(), "radius 22e-6;\n")
+
+    def testLinkedDictionaryNotWrittenThrough(self):
+        # a36: the swept dictionary a link to the user's shared file
+        shared = os.path.join(self.tmp, "sharedProps")
+        os.rename(self.props, shared)
+        os.symlink(shared, self.props)
+        r = self.sweep("constant/props/radius")
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        with open(shared) as f:
+            self.assertEqual(f.read(), "radius 22e-6;\n")
+        self.assertTrue(os.path.islink(self.props))
+        rows = [l.split("|")[1:3] for l in r.stdout.splitlines()
+                if l.startswith("| ") and l[2].isdigit()]
+        self.assertEqual([[c.strip() for c in x] for x in rows],
+                         [["20e-6", "20e-6"], ["25e-6", "25e-6"]], r.stdout)
+
+    def testValueSetAgainByAnIncludeRefused(self):
+        # a15: the tutorials' '#sinclude "<dictionary>.allrun"' pattern
+        with open(self.props, "a") as f:
+            f.write('#sinclude "props.allrun"\n')
+        self.write("ind/constant/props.allrun", "radius 22.5e-6;\n")
+        r = self.sweep("constant/props/radius")
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertIn("props.allrun", r.stderr)
+        self.assertIn("Nothing was run", r.stderr)
+        self.assertEqual(sorted(os.listdir(self.tmp)), ["ind"])
+
+    def testUsersNoteInARunFolderKept(self):
+        # a14: the user saves a note into the first value's run folder
+        # while it runs; the folder is kept and named, the other removed
+        run = ("grep -h radius constant/props > out.txt; "
+               "test -f ../ind.sweep_radius_1/constant/props || "
+               "echo mine > ../ind.sweep_radius_0/notes.txt")
+        r = self.sweep("constant/props/radius", run=run)
+        self.assertEqual(r.returncode, 0, r.stdout + r.stderr)
+        note = os.path.join(self.tmp, "ind.sweep_radius_0", "notes.txt")
+        self.assertTrue(os.path.isfile(note), r.stdout)
+        self.assertIn("kept the run folder", r.stdout)
+        self.assertIn("notes.txt", r.stdout)
+        self.assertFalse(os.path.exists(
+            os.path.join(self.tmp, "ind.sweep_radius_1")))
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -57,6 +57,7 @@ import os
 import re
 import shutil
 import sys
+import time
 
 try:
     from neuronFsi import script
@@ -72,11 +73,79 @@ class SweepError(Exception):
     pass
 
 
+def _inTheCase(case, f, entry):
+    """f (a path relative to the case), normalised, if it names a file of
+    the case itself; a SweepError if it leaves the case: '..' out of it
+    (adv44 a13: -entry ../<case>/constant/... was the ORIGINAL case's file
+    for every run's copy, edited by each run while the copies ran
+    unchanged), or a folder on the way that is a symbolic link (its files
+    are outside the case, and every copy's link points to the same
+    ones). A link at the file itself is fine: each copy's link is
+    replaced by a file holding the swept value (run_one)."""
+    norm = os.path.normpath(f)
+    if os.path.isabs(norm) or norm == os.pardir or \
+            norm.startswith(os.pardir + os.sep):
+        raise SweepError(
+            "-entry %s: the file %s is outside the case %s: each run sets "
+            "the entry in its own copy of the case, and a path leaving the "
+            "copy would edit the original's file (or another one) while the"
+            " copies run unchanged. Nothing was run: give the path of a "
+            "file in the case (e.g. constant/indenterProperties/radius)"
+            % (entry, norm, case))
+    d = case
+    for part in norm.split(os.sep)[:-1]:
+        d = os.path.join(d, part)
+        if os.path.islink(d):
+            raise SweepError(
+                "-entry %s: the folder %s is a symbolic link (to %s): the "
+                "file is outside the case, the same for every run's copy, "
+                "which would edit it while the copies run unchanged. "
+                "Nothing was run: replace the link by a copy of the folder"
+                % (entry, d, os.readlink(d)))
+    return norm
+
+
+def _overridden(text, path, keys, value, entry):
+    """The message of a swept value that the dictionary text of path does
+    not carry once read as OpenFOAM reads it (its includes merged: adv44
+    a15, a '#sinclude "<dictionary>.allrun"' after the entry, the
+    tutorials' pattern for Allrun options, set the entry again and every
+    run ran with that value, the table listing two values with one
+    result), naming the included files that set it; None if it does."""
+    d = foamDict.parse(text, path, os.path.dirname(path) or ".")
+    for k in keys:
+        d = d.get(k) if isinstance(d, dict) else None
+    want = foamDict.parse("v %s;" % value, "-values")["v"]
+    if d == want:
+        return None
+    included, by = [], []
+    foamDict.parse(text, path, included=included)
+    for directive in included:
+        name = directive.split(None, 1)[1].strip('"')
+        f = os.path.join(os.path.dirname(path), os.path.expandvars(name))
+        if os.path.isfile(f):
+            e = foamDict.read(f)
+            for k in keys:
+                e = e.get(k) if isinstance(e, dict) else None
+            if e is not None:
+                by.append(f)
+    return ("-entry %s: set to %s in %s, the dictionary as read (its "
+            "includes merged, as OpenFOAM reads it) gives %s: the entry is "
+            "set again by %s, included after it. Every run would run with "
+            "that value, the table listing values that were not run. "
+            "Remove the entry from %s, or sweep it there"
+            % (entry, value, path, d, ", ".join(by) or
+               "an include directive (%s)" % ", ".join(included),
+               ", ".join(by) or "the included file"))
+
+
 def split_entry(case, entry):
     """(file, [keys]) of <file>/<key>/...: the longest existing file."""
     parts = entry.strip("/").split("/")
     for n in range(len(parts) - 1, 0, -1):
         f = os.path.join(*parts[:n])
+        if os.path.lexists(os.path.join(case, f)):
+            f = _inTheCase(case, f, entry)
         kind = options.notARegularFile(os.path.join(case, f))
         if kind and kind != "a directory":
             raise SweepError("-entry %s: %s is %s, not a file" % (
@@ -279,6 +348,36 @@ def _changedSince(case, base):
     return changed
 
 
+def _notTheRuns(copy, base, end, outputs=()):
+    """The files of the run folder copy (relative paths, sorted) that its
+    run did not write, as far as can be told: those not in the sweep's
+    copy of the case (base) that were written after the run ended
+    (end, s since the epoch), or that are plain files at the top of the
+    folder other than logs (log.*), the -output files (outputs: paths
+    relative to the case) and the markers of the run (the case lock,
+    caseRuns' marker): the user's notes (adv44 a14: a note saved
+    into the first value's folder while it ran was removed with it). A
+    file the user saves during the run into a folder the run writes
+    (postProcessing/...) is not told apart from the run's."""
+    found = []
+    for d, dirs, names in os.walk(copy):
+        rel = os.path.relpath(d, copy)
+        for n in names:
+            r = os.path.normpath(os.path.join(rel, n))
+            full = os.path.join(d, n)
+            if os.path.lexists(os.path.join(base, r)) or r in outputs:
+                continue
+            try:
+                late = os.lstat(full).st_mtime > end
+            except OSError:
+                continue
+            top = rel == "." and not n.startswith("log.") and n not in (
+                caseLock.FILE, caseRuns.MARKER)
+            if late or top:
+                found.append(r)
+    return sorted(found)
+
+
 def run_one(case, copy, f, keys, value, outputs, command):
     # case: the sweep's copy of the case taken at its start (adv37 w112:
     # each value copied the case when its run started, and an edit made
@@ -286,7 +385,16 @@ def run_one(case, copy, f, keys, value, outputs, command):
     _copyCase(case, copy)
     p = os.path.join(copy, f)
     text = foamDict.set_entry(open(p).read(), keys, value, p)
-    open(p, "w").write(text)
+    # by replacement: a link in the copy (to a file outside the case) is
+    # replaced by the file, never written through (adv44 a36: the user's
+    # shared dictionary outside the case was edited by every run)
+    with script.replacing(p) as out:
+        out.write(text)
+    # the value as the run reads it (adv44 a15: an include after the
+    # entry set it again); checked for every value before the first run
+    wrong = _overridden(open(p).read(), p, keys, value, "/".join(keys))
+    if wrong:
+        raise SweepError("value %s: %s" % (value, wrong))
     # The output files the copy holds before the run: the case's earlier
     # results (copytree keeps their times)
     before = {o.file: _stamp(os.path.join(copy, o.file)) for o in outputs}
@@ -349,6 +457,14 @@ def main():
         values = a.values.split()
         if not values:
             raise SweepError("-values: empty")
+        # every value carried by the dictionary as the runs read it
+        # (adv44 a15): checked before anything is copied or run
+        p = os.path.join(case, f)
+        for v in values:
+            wrong = _overridden(foamDict.set_entry(open(p).read(), keys, v,
+                                                   p), p, keys, v, a.entry)
+            if wrong:
+                raise SweepError(wrong + ". Nothing was run")
         command = a.run
         if not command:
             if os.path.isfile(os.path.join(case, "Allrun")):
@@ -402,9 +518,12 @@ def main():
               % ("/".join([f] + keys), " ".join(values), len(values),
                  command, a.nProcs), flush=True)
 
+        ends = {}
+
         def job(i):
             res = run_one(base, copies[i], f, keys, values[i], outputs,
                           command)
+            ends[copies[i]] = time.time()
             print("    %s = %s: %s (wall %.1f s)" % (name, values[i], ", ".join(
                 "%s %s" % (o.name, v) for o, v in zip(outputs, res[0])),
                 res[1]), flush=True)
@@ -420,7 +539,21 @@ def main():
                                          else [])), flush=True)
         if not a.keep:
             for c in copies:
-                shutil.rmtree(c, ignore_errors=True)
+                # a run folder holding a file the run did not write (the
+                # user's note saved there to look at a result: adv44 a14)
+                # is kept, and named with the files
+                theirs = _notTheRuns(
+                    c, base, ends.get(c, time.time()),
+                    {os.path.normpath(o.file) for o in outputs})
+                if theirs:
+                    print("sweepCase: note: kept the run folder %s: it "
+                          "holds files that are not the run's (%s); remove"
+                          " it once they are saved elsewhere"
+                          % (c, ", ".join(theirs[:10] + (
+                              ["..."] if len(theirs) > 10 else []))),
+                          flush=True)
+                else:
+                    shutil.rmtree(c, ignore_errors=True)
         cols = [name] + [o.name for o in outputs] + ["wall [s]"]
         rows = [[v] + r + ["%.1f" % w] for v, (r, w) in zip(values, results)]
         md = "| " + " | ".join(cols) + " |\n" + "|---" * len(cols) + "|\n" \
