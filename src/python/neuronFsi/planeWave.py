@@ -916,10 +916,8 @@ def writeInflow(path, wave, height, pulse, what, overwrite=False):
                    repr(old[k][:80]) if k < len(old) else "the end",
                    repr(new[k][:80]) if k < len(new) else "the end",
                    len(old), len(new)))
-    tmp = path + ".writing"
-    with script.writing(tmp) as f:
+    with script.replacing(path) as f:
         f.write("".join(text))
-    os.replace(tmp, path)
 
 
 def inflowDigest(rows):
