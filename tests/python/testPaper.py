@@ -531,3 +531,37 @@ class Command(TempDirTestCase):
             self.assertIn(msg, r.stderr)
             self.assertIn("paperDict", r.stderr)
         write(path, good)
+
+
+class UsersFilesInARunFolder(TempDirTestCase):
+    """The folder of a run of the comparison is replaced only when it is an
+    earlier run's (issue 19, adv44 a12; fix19za): a folder holding the
+    user's files only, or an earlier run's folder holding a note of the
+    user's, is refused naming the files, which are kept."""
+
+    def folder(self, files):
+        case = os.path.join(self.tmp, "paper")
+        for f in files:
+            self.write(os.path.join("paper", paperCases.RUNS, "averageCell",
+                                    f), "mine %s\n" % f)
+        run = {"name": "averageCell", "tutorial": os.path.join(
+            ROOT, "tutorials", "indentation", "averageCell")}
+        return case, run, os.path.join(case, paperCases.RUNS, "averageCell")
+
+    def testUsersFolderKept(self):
+        case, run, folder = self.folder(["notes.md", "myAnalysis/fit.py"])
+        with self.assertRaises(paperCases.PaperError) as e:
+            paperCases.make(run, case)
+        self.assertIn("notes.md", str(e.exception))
+        self.assertIn("myAnalysis/fit.py", str(e.exception))
+        with open(os.path.join(folder, "myAnalysis", "fit.py")) as f:
+            self.assertEqual(f.read(), "mine myAnalysis/fit.py\n")
+
+    def testNoteInAnEarlierRunKept(self):
+        case, run, folder = self.folder(["Allrun", "log.Allrun",
+                                         "log.cellIndentationFoam",
+                                         "notes.md"])
+        with self.assertRaises(paperCases.PaperError) as e:
+            paperCases.make(run, case)
+        self.assertIn("(notes.md)", str(e.exception))
+        self.assertTrue(os.path.isfile(os.path.join(folder, "notes.md")))

@@ -348,36 +348,6 @@ def _changedSince(case, base):
     return changed
 
 
-def _notTheRuns(copy, base, end, outputs=()):
-    """The files of the run folder copy (relative paths, sorted) that its
-    run did not write, as far as can be told: those not in the sweep's
-    copy of the case (base) that were written after the run ended
-    (end, s since the epoch), or that are plain files at the top of the
-    folder other than logs (log.*), the -output files (outputs: paths
-    relative to the case) and the markers of the run (the case lock,
-    caseRuns' marker): the user's notes (adv44 a14: a note saved
-    into the first value's folder while it ran was removed with it). A
-    file the user saves during the run into a folder the run writes
-    (postProcessing/...) is not told apart from the run's."""
-    found = []
-    for d, dirs, names in os.walk(copy):
-        rel = os.path.relpath(d, copy)
-        for n in names:
-            r = os.path.normpath(os.path.join(rel, n))
-            full = os.path.join(d, n)
-            if os.path.lexists(os.path.join(base, r)) or r in outputs:
-                continue
-            try:
-                late = os.lstat(full).st_mtime > end
-            except OSError:
-                continue
-            top = rel == "." and not n.startswith("log.") and n not in (
-                caseLock.FILE, caseRuns.MARKER)
-            if late or top:
-                found.append(r)
-    return sorted(found)
-
-
 def run_one(case, copy, f, keys, value, outputs, command):
     # case: the sweep's copy of the case taken at its start (adv37 w112:
     # each value copied the case when its run started, and an edit made
@@ -519,6 +489,7 @@ def main():
                  command, a.nProcs), flush=True)
 
         ends = {}
+        inputs = caseRuns.filesUnder(base)
 
         def job(i):
             res = run_one(base, copies[i], f, keys, values[i], outputs,
@@ -542,9 +513,9 @@ def main():
                 # a run folder holding a file the run did not write (the
                 # user's note saved there to look at a result: adv44 a14)
                 # is kept, and named with the files
-                theirs = _notTheRuns(
-                    c, base, ends.get(c, time.time()),
-                    {os.path.normpath(o.file) for o in outputs})
+                theirs = caseRuns.filesNotTheRuns(
+                    c, inputs, {os.path.normpath(o.file) for o in outputs},
+                    ends.get(c, time.time()))
                 if theirs:
                     print("sweepCase: note: kept the run folder %s: it "
                           "holds files that are not the run's (%s); remove"

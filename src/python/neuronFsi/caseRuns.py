@@ -151,6 +151,51 @@ def checkNoEarlierRun(folder):
         pass
 
 
+def filesNotTheRuns(folder, inputs, outputs=(), end=None):
+    """The files under a run's folder (relative paths, sorted) that the run
+    did not write, as far as can be told, before an application removes
+    the folder it made (sweepCase's run folders, paperFigures' runs;
+    issue 19, adv44 a14, a12: the user's notes saved there were removed
+    with it): not one of inputs (the files copied in before the run) or
+    outputs (files the run is known to write), and written after the run
+    ended (end: s since the epoch, if known), or a plain file at the top
+    of the folder other than a log (log.*) and the run's records (the
+    case lock, this module's marker, the Allrun options' record). A file
+    saved during the run into a folder the run writes (postProcessing/...)
+    is not told apart from the run's."""
+    from . import caseLock
+    records = {MARKER, caseLock.FILE, ".allrunOptions"}
+    found = []
+    for d, dirs, names in os.walk(folder):
+        rel = os.path.relpath(d, folder)
+        links = [n for n in dirs if os.path.islink(os.path.join(d, n))]
+        for n in names + links:
+            r = os.path.normpath(os.path.join(rel, n))
+            if r in inputs or r in outputs:
+                continue
+            try:
+                late = end is not None and \
+                    os.lstat(os.path.join(d, n)).st_mtime > end
+            except OSError:
+                continue
+            top = rel == "." and not n.startswith("log.") and \
+                n not in records
+            if late or top:
+                found.append(r)
+    return sorted(found)
+
+
+def filesUnder(folder):
+    """The files and links under folder: relative paths, a set."""
+    found = set()
+    for d, dirs, names in os.walk(folder):
+        rel = os.path.relpath(d, folder)
+        for n in names + [n for n in dirs
+                          if os.path.islink(os.path.join(d, n))]:
+            found.add(os.path.normpath(os.path.join(rel, n)))
+    return found
+
+
 def runIn(folder, command, log):
     """Run the shell command in folder, its stdout and stderr to
     folder/log (log itself if absolute); the wall time [s]. RunError if it

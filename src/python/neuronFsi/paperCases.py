@@ -294,6 +294,24 @@ def make(run, case):
             caseRuns.checkNoEarlierRun(folder)
         except caseRuns.RunError as err:
             raise PaperError("%s: %s" % (run["name"], err))
+        # only a folder of an earlier run of the comparison is replaced;
+        # the user's files there are kept (adv44 a12: a folder holding
+        # only the user's notes was removed to make the run's copy)
+        log = os.path.join(folder, "log.Allrun")
+        if os.path.isfile(log):
+            # (no time test: log.Allrun's last line comes before the
+            # files of its last step)
+            theirs = caseRuns.filesNotTheRuns(
+                folder, set(trackedFiles(run["tutorial"])))
+        else:
+            theirs = sorted(caseRuns.filesUnder(folder))
+        if theirs:
+            raise PaperError(
+                "%s: %s holds files that are not of a run of the comparison"
+                " (%s%s): it would be replaced by the run's copy. Nothing "
+                "was changed: move them (or the folder) away"
+                % (run["name"], folder, ", ".join(theirs[:10]),
+                   ", ..." if len(theirs) > 10 else ""))
         shutil.rmtree(folder)
     os.makedirs(folder)
     for f in trackedFiles(run["tutorial"]):
