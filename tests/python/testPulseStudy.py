@@ -78,6 +78,29 @@ class Dictionary(TempDirTestCase):
         self.assertEqual(pts[0]["options"][pts[0]["options"].index(
             "-amplitude") + 1], "10000000")
 
+    def testLabelsOfCloseValues(self):
+        # issue 19, adv44 a03 (fix19za): 30e6 and 30.0000001e6 both got
+        # p3e+07_T2e-09 (one folder, the first point's record replaced)
+        s = self.study(overpressure="(30e6 30.0000001e6)",
+                       duration="(2e-9 2.0000004e-9 5e-9)")
+        labels = [p["label"] for p in ps.points(s)]
+        self.assertEqual(len(set(labels)), 6, labels)
+        self.assertIn("p30000000_T2e-09", labels)
+        self.assertIn("p30000000.1_T2.0000004e-09", labels)
+        # a value far from the others keeps its six digits
+        self.assertIn("p30000000.1_T5e-09", labels)
+
+    def testLabelsOfEarlierStudiesKept(self):
+        # values that differ in six digits: the labels (folders) of the
+        # studies made before, found again
+        s = self.study()
+        self.assertEqual([p["label"] for p in ps.points(s)],
+                         ["p%.6g_T%.6g" % (A, T) for A in s["overpressure"]
+                          for T in s["duration"]])
+        self.assertEqual(ps.labelTexts([3e7, 3.5e7, 1e-9, 1.234567e7]),
+                         {3e7: "3e+07", 3.5e7: "3.5e+07", 1e-9: "1e-09",
+                          1.234567e7: "1.23457e+07"})
+
     def testEmptyGrid(self):
         self.refused("entry 'overpressure' is empty", overpressure="()")
 

@@ -336,10 +336,31 @@ def projectDir():
         os.path.dirname(os.path.abspath(__file__)), "..", "..", ".."))
 
 
+def labelTexts(values):
+    """{value: its text in the points' labels}: 6 significant digits (the
+    labels of the studies made so far), more where two distinct values of
+    the list would read the same (issue 19, adv44 a03: 30e6 and
+    30.0000001e6 both gave p3e+07_T2e-09, one folder for two points, the
+    first point's record replaced by the second's): the fewest digits, from
+    6 to 17, that tell the value apart from every other of the list."""
+    distinct = sorted(set(values))
+    out = {}
+    for v in distinct:
+        for n in range(6, 18):
+            text = "%.*g" % (n, v)
+            if all("%.*g" % (n, w) != text for w in distinct if w != v):
+                break
+        out[v] = text
+    return out
+
+
 def points(s):
-    """The grid's points: dicts of overpressure [Pa], duration [s], label,
+    """The grid's points: dicts of overpressure [Pa], duration [s], label
+    (p<overpressure>_T<duration>, labelTexts: unique for distinct values),
     and the Allrun options."""
     out = []
+    pText = labelTexts(s["overpressure"])
+    tText = labelTexts(s["duration"])
     for A in s["overpressure"]:
         for T in s["duration"]:
             opts = s["baseOptions"] + [
@@ -347,7 +368,7 @@ def points(s):
                 "-writeInterval", _text(s["sampleInterval"]),
                 "-noPlots", "-noVTK"]
             out.append({"overpressure": A, "duration": T,
-                        "label": "p%.6g_T%.6g" % (A, T),
+                        "label": "p%s_T%s" % (pText[A], tText[T]),
                         "options": opts})
     return out
 
