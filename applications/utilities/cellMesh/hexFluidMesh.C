@@ -153,8 +153,11 @@ Foam::hexFluidMesh::vec Foam::hexFluidMesh::rounded(const vec& P) const
     const scalar w = P[2]/B;
     const scalar rInf = std::max(u, w);
     // The blend: 1 on the inner box, 0 from rho1 on (the water's top and
-    // the side walls stay), smoothstep between
-    const scalar rho1 = std::min(s_.height/B, 0.5*s_.L/A);
+    // the side walls stay), smoothstep between; at most rhoMax_: farther
+    // out the lateral spacing grows towards farSize and the flat cells
+    // there (farSize x farSize x axialSize) fold under the move (a water
+    // column to 30 um, rho1 2.53: faces 140 deg non-orthogonal)
+    const scalar rho1 = std::min(std::min(s_.height/B, 0.5*s_.L/A), rhoMax_);
     const scalar q = std::min(1.0, std::max(0.0, (rInf - 1)/(rho1 - 1)));
     const scalar beta = 1 - q*q*(3 - 2*q);
     if (rInf == 0 || beta == 0)
