@@ -155,6 +155,14 @@ expect hexMarginBelowNear "$hx hexCoeffs { axialSize 2e-6; innerMargin 1e-6; }/"
     "innerMargin' = 1e-06 m is outside the valid range \[2e-06, 4.16"
 expect hexMarginOutsideBox "$hx hexCoeffs { axialSize 2e-6; innerMargin 45e-6; }/" \
     "innerMargin' = 4.5e-05 m is outside the valid range \[2e-06, 4.16"
+# The rounded top edges' exponent (issue 17 item 6, branch ogrid17):
+# below 5 the grid beyond the box's corner folds
+expect hexTopRoundingLow "$hx hexCoeffs { axialSize 2e-6; topRounding 4; }/" \
+    "entry 'topRounding' = 4 is outside the valid range \[5, 100\]"
+expect hexTopRoundingHigh "$hx hexCoeffs { axialSize 2e-6; topRounding 101; }/" \
+    "entry 'topRounding' = 101 is outside the valid range \[5, 100\]"
+expect hexTopRoundingWord "$hx hexCoeffs { axialSize 2e-6; topRounding round; }/" \
+    "entry 'topRounding' = 'round' is not a number"
 expect hexBoxTooTight "$hx hexCoeffs { axialSize 1e-6; }/; s/^boxSize .*/boxSize 20e-6;/; s/^farSize .*/farSize 4e-6;/; s/growthDistance 30e-6/growthDistance 10e-6/" \
     "boxSize 2e-05 m leaves 1.6e-06 m between the cell and the box"
 expect hexTooManyCells "$hx hexCoeffs { axialSize 0.1e-6; maxCells 100000; }/" \

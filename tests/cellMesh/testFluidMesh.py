@@ -59,8 +59,16 @@ column shortened for an inflow top): the checks above with that top (the
 top patch and the highest node at z = 20 um, the volume the box of that
 height minus the cell; hexahedra: the sides span z in [0, 20 um], the z
 layers those of the inner box plus ceil((20 um - B)/axialSize) above it).
+The mode quarter3DHexRounded meshes quarter3DHexShort twice, with the
+sharp inner box and with its top edges rounded (hexCoeffs topRounding 6):
+the checks above on both, and the largest face non-orthogonality of the
+cells above the cell's top (checkMesh -writeFields nonOrthoAngle) below
+NONORTHO_ROUNDED (40 deg) and at least 5 deg below the sharp box's
+(46.1 deg), checkMesh's largest over the mesh not above the sharp box's
+(issue 17 item 6; docs/results/blast3D.md, "An O-grid without the kink").
 Usage: testFluidMesh.py axisymmetric|quarter3D|full3D|quarter3DColumn|
-       quarter3DHex|full3DHex|quarter3DShort|quarter3DHexShort"""
+       quarter3DHex|full3DHex|quarter3DShort|quarter3DHexShort|
+       quarter3DHexRounded"""
 import os
 import re
 import subprocess
@@ -69,6 +77,7 @@ import tempfile
 
 import numpy as np
 
+from neuronFsi import foamField as ff
 from neuronFsi import msh
 from neuronFsi.checks import Checks
 
@@ -77,6 +86,7 @@ D, H, t = 16.8e-6, 7.9e-6, 200e-9
 a = D/2
 L, near, far, growth, wedgeDeg = 100e-6, 1e-6, 10e-6, 30e-6, 5.0
 SHORT = 20e-6   # [m] the water's top of the shortened quarters (height)
+NONORTHO_ROUNDED = 40  # [deg] cells above the cell, topRounding 6 (sharp: 46)
 check = Checks()
 
 
@@ -223,26 +233,32 @@ def hexVolumes(P):
     return J, V
 
 
-def hexWater(mode):
+def hexWater(mode, rounding=None):
     """The hexahedral water (fluid type hex); quarter3DHexShort: the
-    quarter with its water ending at height Z = 20 um"""
+    quarter with its water ending at height Z = 20 um; rounding: the
+    hexCoeffs topRounding exponent (None: the sharp inner box). Returns
+    checkMesh's largest non-orthogonality [deg]"""
     quarter = mode in ("quarter3DHex", "quarter3DHexShort")
     Z = SHORT if mode == "quarter3DHexShort" else L
     dz, dl, margin = 2e-6, 1.5e-6, 3e-6
+    label = mode + ("" if rounding is None
+                    else f" (topRounding {rounding})")
     patches = ["top", "bottom", "sides", "cellInterface"] \
         + (["symmetryX", "symmetryY"] if quarter else [])
     with tempfile.TemporaryDirectory() as case:
         writeCase(case, "quarter3D" if quarter else "full3D",
                   f"type hex; hexCoeffs {{ axialSize {dz}; lateralSize {dl};"
-                  f" innerMargin {margin}; }}"
+                  f" innerMargin {margin};"
+                  + ("" if rounding is None else f" topRounding {rounding};")
+                  + " }"
                   + (f" height {Z};" if Z < L else ""))
         X, elems = read2(os.path.join(case, "constant/fluid.msh"))
         check({e[1] for e in elems} == set(patches + ["water"]),
-              f"{mode}: groups {sorted({e[1] for e in elems})}")
+              f"{label}: groups {sorted({e[1] for e in elems})}")
         types = {}
         for typ, name, nodes in elems:
             types.setdefault(name == "water", set()).add(typ)
-        check(types == {True: {5}, False: {3}}, f"{mode}: element types"
+        check(types == {True: {5}, False: {3}}, f"{label}: element types"
               f" {types} (water: 5 hexahedra; patches: 3 quadrilaterals)")
         tags = sorted(X)
         row = {t: i for i, t in enumerate(tags)}
@@ -271,18 +287,18 @@ def hexWater(mode):
         count = nx**2*nz - nA**2*nB + nLayers*(nA**2 + (2 if quarter else 4)
                                                *nA*nB)
         check(min(abs(xs - A)) < eps and min(abs(zs - B)) < eps,
-              f"{mode}: x = A = {A*1e6:g} um and z = B = {B*1e6:g} um are"
+              f"{label}: x = A = {A*1e6:g} um and z = B = {B*1e6:g} um are"
               " grid lines (tensor grid and O-grid conform)")
         outerX = xs[xs > A - eps]
         check(np.diff(zs).max() <= dz*(1 + 1e-9)
               and np.diff(inner).max() <= dl*(1 + 1e-9)
               and np.diff(outerX).max() <= far*(1 + 1e-9),
-              f"{mode}: spacing z {np.diff(zs).max()*1e6:.3f} um (axialSize"
+              f"{label}: spacing z {np.diff(zs).max()*1e6:.3f} um (axialSize"
               f" {dz*1e6:g}), x inside {np.diff(inner).max()*1e6:.3f} um"
               f" (lateralSize {dl*1e6:g}), outside"
               f" {np.diff(outerX).max()*1e6:.3f} um (farSize {far*1e6:g})")
         check(len(hexes) == count and nLayers >= 1,
-              f"{mode}: {len(hexes)} hexahedra, {count} from the grid lines"
+              f"{label}: {len(hexes)} hexahedra, {count} from the grid lines"
               f" ({nx} x {nx} x {nz}, inner {nA} x {nA} x {nB}, {nLayers}"
               " O-grid layers)")
         # The water's top: z = Z, the column above the inner box in
@@ -298,7 +314,7 @@ def hexWater(mode):
               and abs(Y[sides, 2].max() - Z) < eps
               and abs(np.ptp(Y[list(top), 0]) - (L/2 if quarter else L))
               < eps,
-              f"{mode}: top patch at z = {zTop.min()*1e6:.6g} to"
+              f"{label}: top patch at z = {zTop.min()*1e6:.6g} to"
               f" {zTop.max()*1e6:.6g} um (Z = {Z*1e6:g} um), sides z"
               f" {Y[sides, 2].min()*1e6:.3g} to {Y[sides, 2].max()*1e6:.6g}"
               f" um, {nz} z layers = {nB} in the inner box + {nAbove} above")
@@ -313,7 +329,7 @@ def hexWater(mode):
                       if e[1] != "water"]
         check(counts.max() <= 2 and len(patchFaces) == len(set(patchFaces))
               and set(patchFaces) == once,
-              f"{mode}: {len(uniq)} faces, at most {counts.max()} hexahedra"
+              f"{label}: {len(uniq)} faces, at most {counts.max()} hexahedra"
               f" per face; {len(once)} faces of one hexahedron ="
               f" {len(patchFaces)} patch faces")
 
@@ -323,14 +339,14 @@ def hexWater(mode):
         Vcell = 2.0/3.0*np.pi*a**2*H
         e = (V.sum() - q*(L**2*Z - Vcell))/(q*Vcell)
         check(J.min() > 0 and abs(e) < 0.02,
-              f"{mode}: smallest corner Jacobian {J.min():.3e} m^3 (> 0),"
+              f"{label}: smallest corner Jacobian {J.min():.3e} m^3 (> 0),"
               f" volume {V.sum():.6e} m^3, error {e:.2e} of the cell's"
               " share")
 
         # Interface on the spheroid, planes exact
         c = Y[nodesOf("cellInterface")]
         level = (c[:, 0]**2 + c[:, 1]**2)/a**2 + c[:, 2]**2/H**2 - 1
-        check(abs(level).max() < 1e-9, f"{mode}: {len(c)} cellInterface"
+        check(abs(level).max() < 1e-9, f"{label}: {len(c)} cellInterface"
               f" nodes on the spheroid (largest |level| {abs(level).max():.1e})")
         # The box's grid spread evenly over the cell: azimuths of the
         # interface nodes on the substrate, chords of those of the side
@@ -341,24 +357,24 @@ def hexWater(mode):
                                        else [phi[0] + 2*np.pi]]))
         check(len(gaps) == (2 if quarter else 4)*nA
               and np.ptp(gaps) < 1e-9*gaps.mean(),
-              f"{mode}: {len(gaps)} azimuth gaps of the interface on the"
+              f"{label}: {len(gaps)} azimuth gaps of the interface on the"
               f" substrate from {gaps.min():.6f} to {gaps.max():.6f} rad"
               " (equal to 1e-9)")
         mer = c[(abs(c[:, 1]) < eps) & (c[:, 0] > 0)]
         mer = mer[np.argsort(mer[:, 2])][:nB + 1]
         chords = np.linalg.norm(np.diff(mer, axis=0), axis=1)
         check(len(chords) == nB and np.ptp(chords) < 0.01*chords.mean(),
-              f"{mode}: {len(chords)} chords of the side face's line on the"
+              f"{label}: {len(chords)} chords of the side face's line on the"
               f" cell from {chords.min()*1e6:.4f} to"
               f" {chords.max()*1e6:.4f} um (equal to 1 %)")
         planes = [("bottom", 2)] + ([("symmetryX", 0), ("symmetryY", 1)]
                                     if quarter else [])
         for name, k in planes:
             check(abs(Y[nodesOf(name), k]).max() == 0,
-                  f"{mode}: {name} nodes exactly on {'xyz'[k]} = 0")
+                  f"{label}: {name} nodes exactly on {'xyz'[k]} = 0")
 
         p = sh("gmshToFoam constant/fluid.msh", case)
-        check(p.returncode == 0, f"{mode}: gmshToFoam")
+        check(p.returncode == 0, f"{label}: gmshToFoam")
         p = sh("checkMesh", case)
         ortho = float(re.search(r"non-orthogonality Max: ([-+.eE\d]+)",
                                 p.stdout).group(1))
@@ -366,15 +382,50 @@ def hexWater(mode):
         aspect = re.search(r"Max aspect ratio = ([-+.eE\d]+)",
                            p.stdout).group(1)
         check(p.returncode == 0 and "\nMesh OK." in p.stdout and ortho < 60,
-              f"{mode}: checkMesh exit {p.returncode}, "
+              f"{label}: checkMesh exit {p.returncode}, "
               + ("Mesh OK" if "Mesh OK." in p.stdout else "FAILED")
               + f"; max non-orthogonality {ortho:.1f} deg (< 60), skewness"
               f" {float(skew):.3f}, aspect ratio {float(aspect):.2f}")
+        # The cells' largest face non-orthogonality, above the cell's
+        # top (where the plane pulse crosses the O-grid first)
+        p = sh("checkMesh -constant -writeFields '(nonOrthoAngle)'", case)
+        os.makedirs(os.path.join(case, "0"), exist_ok=True)
+        q = sh("postProcess -time 0 -func writeCellCentres", case)
+        check(p.returncode == 0 and q.returncode == 0,
+              f"{label}: checkMesh -writeFields, writeCellCentres")
+        angle = ff.internalField(os.path.join(case, "constant",
+                                              "nonOrthoAngle"))
+        C = ff.internalField(os.path.join(case, "0", "C"))
+        return ortho, angle[C[:, 2] > H].max()
+
+
+def roundedBox():
+    """The short quarter (water to 20 um, as the tutorial's) with the
+    inner box's top edges rounded (topRounding 6) against the sharp box:
+    every check of hexWater on both (the top, the side walls, the
+    symmetry planes, the substrate and the cell's nodes where they were),
+    and the largest non-orthogonality of the cells above the cell's top
+    (where the plane pulse crosses the O-grid before it reaches the cell)
+    below NONORTHO_ROUNDED and at least 5 deg below the sharp box's
+    (issue 17 item 6: the sharp box's top edges leave O-grid cells 40-48
+    deg non-orthogonal there); checkMesh's largest over the whole mesh
+    not above the sharp box's"""
+    sharp, sharpAbove = hexWater("quarter3DHexShort")
+    rounded, roundedAbove = hexWater("quarter3DHexShort", 6)
+    check(roundedAbove < NONORTHO_ROUNDED
+          and roundedAbove <= sharpAbove - 5 and rounded <= sharp,
+          f"rounded top edges: largest non-orthogonality above the cell"
+          f" {roundedAbove:.1f} deg (below {NONORTHO_ROUNDED:g} and 5 below"
+          f" the sharp box's {sharpAbove:.1f} deg), in the whole mesh"
+          f" {rounded:.1f} deg (the sharp box's {sharp:.1f} deg)")
 
 
 def main(mode):
     if mode == "quarter3DColumn":
         column()
+        return
+    if mode == "quarter3DHexRounded":
+        roundedBox()
         return
     if mode in ("quarter3DHex", "full3DHex", "quarter3DHexShort"):
         hexWater(mode)

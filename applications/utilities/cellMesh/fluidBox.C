@@ -293,12 +293,13 @@ void Foam::fluidBox::readHex(const dictionary& d)
     {
         FatalIOErrorInFunction(g_.fluidDict())
             << "type hex needs the sub-dictionary hexCoeffs (axialSize and "
-            << "the optional lateralSize, innerMargin, maxCells)"
+            << "the optional lateralSize, innerMargin, topRounding, maxCells)"
             << exit(FatalIOError);
     }
     foamTools::checkKeywords
     (
-        d, {"axialSize", "lateralSize", "innerMargin", "maxCells"}
+        d, {"axialSize", "lateralSize", "innerMargin", "topRounding",
+            "maxCells"}
     );
     const scalar a = g_.a(), H = g_.H();
     hexFluidMesh::sizes s;
@@ -360,6 +361,17 @@ void Foam::fluidBox::readHex(const dictionary& d)
             "inner box (cellHeight + innerMargin) plus one axialSize");
     }
     s.height = height_;
+    // The inner box's top edges rounded (hexFluidMesh): the superellipse's
+    // exponent; without the entry the sharp box. Below 5 the grid beyond
+    // the box's corner folds (docs/results/blast3D.md, "An O-grid without
+    // the kink")
+    if (d.found("topRounding"))
+    {
+        s.topRounding = foamTools::readInRange<scalar>
+        (
+            d, "topRounding", "", 5, 100, true
+        );
+    }
     const label maxCells = foamTools::readInRangeOrDefault<label>
     (
         d, "maxCells", "", 1, 1000000000, true, 1000000
@@ -791,6 +803,11 @@ void Foam::fluidBox::generate()
     {
         Info<< "; hexahedra " << hex_->input().axialSize << " m along z, "
             << hex_->input().lateralSize << " m across near the cell";
+        if (hex_->input().topRounding > 0)
+        {
+            Info<< ", inner box's top edges rounded (superellipse exponent "
+                << hex_->input().topRounding << ")";
+        }
     }
     if (columnRadius_ > 0)
     {

@@ -94,9 +94,10 @@ Foam::hexFluidMesh::hexFluidMesh(const sizes& s)
         if (outer(i, j, k))
         {
             const vec S = surfacePoint(i, j, k);
+            const vec P = rounded({x_[i], x_[j], z_[k]});
             const scalar l = std::sqrt
             (
-                sqr(x_[i] - S[0]) + sqr(x_[j] - S[1]) + sqr(z_[k] - S[2])
+                sqr(P[0] - S[0]) + sqr(P[1] - S[1]) + sqr(P[2] - S[2])
             );
             minRay_ = std::min(minRay_, l);
             maxRay_ = std::max(maxRay_, l);
@@ -137,6 +138,37 @@ bool Foam::hexFluidMesh::removed(label i, label j, label k) const
 {
     return i >= i0_ && i <= i1_ && j >= i0_ && j <= i1_ && k <= kB_
         && !outer(i, j, k);
+}
+
+
+Foam::hexFluidMesh::vec Foam::hexFluidMesh::rounded(const vec& P) const
+{
+    const scalar p = s_.topRounding;
+    if (p == 0)
+    {
+        return P;
+    }
+    const scalar A = s_.a + s_.margin, B = s_.H + s_.margin;
+    const scalar u = std::max(std::abs(P[0]), std::abs(P[1]))/A;
+    const scalar w = P[2]/B;
+    const scalar rInf = std::max(u, w);
+    // The blend: 1 on the inner box, 0 from rho1 on (the water's top and
+    // the side walls stay), smoothstep between; at most rhoMax_: farther
+    // out the lateral spacing grows towards farSize and the flat cells
+    // there (farSize x farSize x axialSize) fold under the move (a water
+    // column to 30 um, rho1 2.53: faces 140 deg non-orthogonal)
+    const scalar rho1 = std::min(std::min(s_.height/B, 0.5*s_.L/A), rhoMax_);
+    const scalar q = std::min(1.0, std::max(0.0, (rInf - 1)/(rho1 - 1)));
+    const scalar beta = 1 - q*q*(3 - 2*q);
+    if (rInf == 0 || beta == 0)
+    {
+        return P;
+    }
+    const scalar rP = std::pow(std::pow(u, p) + std::pow(w, p), 1/p);
+    // A scaling about the origin: exact zeros (the symmetry planes, the
+    // substrate) stay zeros; on the substrate rP = rInf, f = 1
+    const scalar f = std::pow(rInf/rP, beta);
+    return {P[0]*f, P[1]*f, P[2]*f};
 }
 
 
@@ -311,7 +343,7 @@ void Foam::hexFluidMesh::build()
         if (!removed(i, j, k))
         {
             id[t(i, j, k)] = nodes_.size();
-            nodes_.push_back({x_[i], x_[j], z_[k]});
+            nodes_.push_back(rounded({x_[i], x_[j], z_[k]}));
         }
     }
     std::vector<bool> onCell(nodes_.size(), false);
@@ -324,7 +356,7 @@ void Foam::hexFluidMesh::build()
     for (label i = i0_; i <= i1_; ++i)
     {
         if (!outer(i, j, k)) continue;
-        const vec P{x_[i], x_[j], z_[k]};
+        const vec P = nodes_[id[t(i, j, k)]];
         const vec S = surfacePoint(i, j, k);
         const vec d{P[0] - S[0], P[1] - S[1], P[2] - S[2]};
         const std::vector<scalar> f =
