@@ -33,6 +33,8 @@ trap 'rm -rf "$work"' EXIT
 bash "$here/runPreview.sh" "$work" -pulse "$pulse" -endTime 1.5e-7 \
     -noPlots > "$work.log" 2>&1 || { tail -30 "$work.log"; rm -f "$work.log"; exit 1; }
 rm -f "$work.log"
+# the time loop's CPU and its split (docs/benchmarks.md's preview row)
+grep "^CPU time of the time loop" "$work/axisymmetricPreview/log.cellBlastFoam" || true
 status=0
 /usr/bin/python3 "$here/checkLongRun.py" "$work/axisymmetricPreview" 1.5e-7 \
     || status=1
