@@ -3,8 +3,10 @@
 # preview (a copy in DIR, tests/blast/runPreview.sh) at mesh level xSCALE
 # (-h 0.25e-6 SCALE, -far 1e-6 SCALE, -dz 0.25e-6 SCALE, -cell 0.5e-6
 # SCALE: the ladder of docs/results/blastPlaneWave.md, "The default at
-# x0.7"; SCALE default: the tutorial's default sizes, none given), with
-# water probes at z = 10 um, r = 0.1, 1, 2, 4, 8 um, and LAW:
+# x0.7"; with -inflow 20e-6 and -outer 8 times -far unless given, the
+# tutorial's defaults when those ladders were run; SCALE default: the
+# tutorial's default sizes, none given), with water probes at z = 10 um,
+# r = 0.1, 1, 2, 4, 8 um, and LAW:
 #   water  the transparent cell: the membrane's quadratic law (paper eq. 2)
 #          replaced by water's Mie-Grueneisen law (nucleus and cytoplasm
 #          have it already, every region rho0 1000 kg/m^3): the whole
@@ -47,10 +49,18 @@ dir=$1; scale=$2; law=$3; shift 3
 case $law in water|posed) ;; *) echo "transparentCell.sh: LAW $law: water or posed" >&2; exit 1 ;; esac
 size() { /usr/bin/python3 -c "import sys; print('%.6g' % (float(sys.argv[1])*float(sys.argv[2])))" "$1" "${2:-$scale}"; }
 sizes=()
-# SCALE default: the tutorial's default sizes (no -h, -far, -dz, -cell)
-[ "$scale" = default ] || sizes=(-h "$(size 0.25e-6 "${SCALE_H:-}")" \
-    -far "$(size 1e-6 "${SCALE_FAR:-}")" -dz "$(size 0.25e-6 "${SCALE_DZ:-}")" \
-    -cell "$(size 0.5e-6 "${SCALE_CELL:-}")")
+# SCALE default: the tutorial's default sizes (no -h, -far, -dz, -cell);
+# a level: those sizes, and the water to 20 um with the ring graded to 8
+# -far (the tutorial's defaults before 2026-12-05, with which the ladders
+# of the docs were run) unless -inflow or -outer is given
+if [ "$scale" != default ]
+then
+    far=$(size 1e-6 "${SCALE_FAR:-}")
+    sizes=(-h "$(size 0.25e-6 "${SCALE_H:-}")" -far "$far" \
+        -dz "$(size 0.25e-6 "${SCALE_DZ:-}")" -cell "$(size 0.5e-6 "${SCALE_CELL:-}")")
+    case " $* " in *" -inflow "*) ;; *) sizes+=(-inflow 20e-6) ;; esac
+    case " $* " in *" -outer "*) ;; *) sizes+=(-outer "$(size 8 "$far")") ;; esac
+fi
 bash "$here/../../tests/blast/runPreview.sh" "$dir" "${sizes[@]}" \
     -noPlots -noVTK -noRun "$@" > "$dir.log" 2>&1 \
     || { tail -5 "$dir.log"; exit 1; }
