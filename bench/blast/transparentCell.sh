@@ -29,7 +29,9 @@
 #          cytoplasmSize 1.75e-7;': the cell's interior finer than -cell,
 #          its membrane's faces, which the water's -h must resolve, not)
 #   LIMITER   the fluid's reconstruct() limiter in system/fvSchemes: MUSCL
-#          (the tutorial's), vanLeer, vanAlbada, Minmod
+#          (the tutorial's), vanLeer, vanAlbada, Minmod (U: its V scheme),
+#          or a multidimensional one, BarthJespersen, venkatakrishnan (U
+#          the same name: per component)
 #   MAXCO     the fluid Courant number (system/controlDict maxCo; 0.9)
 #   SOLID_OVERRIDE '...'  appended to the copy's constant/
 #          solidProperties.allrun (as bench/blast/probeOvershoot3D.sh), e.g.
@@ -101,14 +103,16 @@ PY
 fi
 if [ -n "${LIMITER:-}" ]
 then
-    case $LIMITER in MUSCL|vanLeer|vanAlbada|Minmod) ;;
-        *) echo "transparentCell.sh: LIMITER $LIMITER: MUSCL, vanLeer, vanAlbada or Minmod" >&2; exit 1 ;;
+    case $LIMITER in
+        MUSCL|vanLeer|vanAlbada|Minmod) vector=${LIMITER}V ;;
+        BarthJespersen|venkatakrishnan) vector=$LIMITER ;;
+        *) echo "transparentCell.sh: LIMITER $LIMITER: MUSCL, vanLeer, vanAlbada, Minmod, BarthJespersen or venkatakrishnan" >&2; exit 1 ;;
     esac
     for v in rho p
     do
         foamDictionary -entry "interpolationSchemes/reconstruct($v)" -set "$LIMITER" system/fvSchemes > /dev/null
     done
-    foamDictionary -entry "interpolationSchemes/reconstruct(U)" -set "${LIMITER}V" system/fvSchemes > /dev/null
+    foamDictionary -entry "interpolationSchemes/reconstruct(U)" -set "$vector" system/fvSchemes > /dev/null
     foamDictionary -entry interpolationSchemes -value system/fvSchemes | grep reconstruct | tr -s ' ' | paste -sd' '
 fi
 if [ -n "${MAXCO:-}" ]

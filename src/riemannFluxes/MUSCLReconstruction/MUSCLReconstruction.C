@@ -17,6 +17,8 @@ Foam::MUSCLReconstruction::scalarNames
     { limiterType::vanLeer, "vanLeer" },
     { limiterType::Minmod, "Minmod" },
     { limiterType::vanAlbada, "vanAlbada" },
+    { limiterType::BarthJespersen, "BarthJespersen" },
+    { limiterType::venkatakrishnan, "venkatakrishnan" },
 });
 
 
@@ -28,7 +30,12 @@ Foam::MUSCLReconstruction::vectorNames
     { limiterType::vanLeer, "vanLeerV" },
     { limiterType::Minmod, "MinmodV" },
     { limiterType::vanAlbada, "vanAlbadaV" },
+    { limiterType::BarthJespersen, "BarthJespersen" },
+    { limiterType::venkatakrishnan, "venkatakrishnan" },
 });
+
+
+const Foam::scalar Foam::MUSCLReconstruction::venkatakrishnanK = 5;
 
 
 namespace
@@ -153,10 +160,21 @@ inline void internalFaceValues
     const typename NVD::gradPhiType& gradP,
     const typename NVD::gradPhiType& gradN,
     const vector& d,
+    const vector& dP,
+    const vector& dN,
     typename NVD::phiType& left,
     typename NVD::phiType& right
 )
 {
+    if (MUSCLReconstruction::multidimensional(type))
+    {
+        // At the face centre from the limited gradients: dP = x_f - x_P,
+        // dN = x_f - x_N
+        left = phiP + (dP & gradP);
+        right = phiN + (dN & gradN);
+        return;
+    }
+
     // upwind: the weights pos0(faceFlux) of OpenFOAM's upwind scheme
     scalar lambdaL = 1;
     scalar lambdaR = 0;
@@ -196,6 +214,22 @@ void coupledFaceValues
     left.setSize(patch.size());
     right.setSize(patch.size());
 
+    if (MUSCLReconstruction::multidimensional(type))
+    {
+        // At the face centre from the limited gradients of both sides:
+        // x_f - x_N = (x_f - x_P) - delta (delta from P to N)
+        const Field<GradType> gradP(gradPf.patchInternalField());
+        const Field<GradType> gradN(gradPf.patchNeighbourField());
+        const vectorField dP(patch.Cf() - patch.Cn());
+        const vectorField dN(dP - patch.delta());
+        forAll(w, facei)
+        {
+            left[facei] = phiP[facei] + (dP[facei] & gradP[facei]);
+            right[facei] = phiN[facei] + (dN[facei] & gradN[facei]);
+        }
+        return;
+    }
+
     const bool upwind = (type == MUSCLReconstruction::limiterType::upwind);
     Field<GradType> gradP;
     Field<GradType> gradN;
@@ -223,6 +257,91 @@ void coupledFaceValues
         left[facei] = lambdaL*phiP[facei] + (1.0 - lambdaL)*phiN[facei];
         right[facei] = lambdaR*phiP[facei] + (1.0 - lambdaR)*phiN[facei];
     }
+}
+
+//- The multidimensional limiter of one face of a cell, per component:
+//  psi = min(psi, f(Delta1, Delta2)) with Delta2 the unlimited increment
+//  to the face centre, Delta1 the room to the neighbourhood's max (Delta2
+//  > 0) or min (Delta2 < 0); eps2 [units of phi^2] Venkatakrishnan's eps^2.
+//  An increment at the rounding level of the cell's values (below 1e-12
+//  of |phi_P| + max - min: a face along which the variable does not
+//  change, whose Delta2 and Delta1 are both rounding noise) limits
+//  nothing: its noise ratio would cut the gradient of the other faces
+inline void limitFace
+(
+    const MUSCLReconstruction::limiterType type,
+    const scalar eps2,
+    const scalar phiP,
+    const scalar maxDelta,
+    const scalar minDelta,
+    const scalar delta2,
+    scalar& psi
+)
+{
+    if (mag(delta2) <= 1e-12*(mag(phiP) + maxDelta - minDelta))
+    {
+        return;
+    }
+    const scalar delta1 = delta2 > 0 ? maxDelta : minDelta;
+
+    if (type == MUSCLReconstruction::limiterType::BarthJespersen)
+    {
+        // delta1/delta2 >= 0 (delta1 has delta2's sign or is 0)
+        psi = min(psi, min(scalar(1), delta1/delta2));
+    }
+    else
+    {
+        // Venkatakrishnan (1995): a smooth min(1, delta1/delta2)
+        const scalar d11 = delta1*delta1;
+        const scalar d22 = delta2*delta2;
+        const scalar d12 = delta1*delta2;
+        psi = min
+        (
+            psi,
+            (d11 + eps2 + 2*d12)/(d11 + 2*d22 + d12 + eps2)
+        );
+    }
+}
+
+
+inline void limitFace
+(
+    const MUSCLReconstruction::limiterType type,
+    const scalar eps2,
+    const vector& phiP,
+    const vector& maxDelta,
+    const vector& minDelta,
+    const vector& delta2,
+    vector& psi
+)
+{
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        limitFace
+        (
+            type, eps2, phiP[d], maxDelta[d], minDelta[d], delta2[d],
+            psi[d]
+        );
+    }
+}
+
+
+//- The gradient times the limiter: per component for a vector's (the
+//  gradient's column of U_j, grad U = d_i U_j, scaled by psi_j)
+inline void scaleGradient(const scalar psi, vector& g)
+{
+    g *= psi;
+}
+
+
+inline void scaleGradient(const vector& psi, tensor& g)
+{
+    g = tensor
+    (
+        cmptMultiply(psi, g.x()),
+        cmptMultiply(psi, g.y()),
+        cmptMultiply(psi, g.z())
+    );
 }
 
 } // End anonymous namespace
@@ -334,6 +453,111 @@ void Foam::MUSCLReconstruction::gaussGrad
 }
 
 
+template<class Type>
+void Foam::MUSCLReconstruction::limitGradient
+(
+    const limiterType type,
+    const GeometricField<Type, fvPatchField, volMesh>& vf,
+    GeometricField
+    <
+        typename outerProduct<vector, Type>::type,
+        fvPatchField,
+        volMesh
+    >& grad
+) const
+{
+    typedef typename outerProduct<vector, Type>::type GradType;
+
+    const labelUList& owner = mesh_.owner();
+    const labelUList& neighbour = mesh_.neighbour();
+    const vectorField& C = mesh_.C();
+    const vectorField& Cf = mesh_.Cf();
+    const scalarField& V = mesh_.V();
+    const Field<Type>& v = vf;
+    Field<GradType>& g = grad.primitiveFieldRef();
+
+    // The max and min over the cell and its face neighbours, internal and
+    // coupled (the neighbour processor's or cyclic's cells)
+    Field<Type> maxV(v);
+    Field<Type> minV(v);
+    forAll(owner, facei)
+    {
+        const label own = owner[facei];
+        const label nei = neighbour[facei];
+        maxV[own] = max(maxV[own], v[nei]);
+        minV[own] = min(minV[own], v[nei]);
+        maxV[nei] = max(maxV[nei], v[own]);
+        minV[nei] = min(minV[nei], v[own]);
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatchField<Type>& pvf = vf.boundaryField()[patchi];
+        if (pvf.coupled())
+        {
+            const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+            const Field<Type> vN(pvf.patchNeighbourField());
+            forAll(faceCells, facei)
+            {
+                const label c = faceCells[facei];
+                maxV[c] = max(maxV[c], vN[facei]);
+                minV[c] = min(minV[c], vN[facei]);
+            }
+        }
+    }
+    maxV -= v;
+    minV -= v;
+
+    // Venkatakrishnan's eps^2 = (K h)^3, h = V^(1/3)
+    scalarField eps2(V.size(), 0);
+    if (type == limiterType::venkatakrishnan)
+    {
+        forAll(eps2, celli)
+        {
+            eps2[celli] = pow3(venkatakrishnanK*cbrt(V[celli]));
+        }
+    }
+
+    Field<Type> psi(v.size(), pTraits<Type>::one);
+    forAll(owner, facei)
+    {
+        const label own = owner[facei];
+        const label nei = neighbour[facei];
+        limitFace
+        (
+            type, eps2[own], v[own], maxV[own], minV[own],
+            (Cf[facei] - C[own]) & g[own], psi[own]
+        );
+        limitFace
+        (
+            type, eps2[nei], v[nei], maxV[nei], minV[nei],
+            (Cf[facei] - C[nei]) & g[nei], psi[nei]
+        );
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (vf.boundaryField()[patchi].coupled())
+        {
+            const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+            const vectorField& pCf = mesh_.Cf().boundaryField()[patchi];
+            forAll(faceCells, facei)
+            {
+                const label c = faceCells[facei];
+                limitFace
+                (
+                    type, eps2[c], v[c], maxV[c], minV[c],
+                    (pCf[facei] - C[c]) & g[c], psi[c]
+                );
+            }
+        }
+    }
+
+    forAll(g, celli)
+    {
+        scaleGradient(psi[celli], g[celli]);
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
 
 Foam::MUSCLReconstruction::MUSCLReconstruction(const fvMesh& mesh)
@@ -407,6 +631,10 @@ void Foam::MUSCLReconstruction::startCellGradients
     if (rhoLimiter_ != limiterType::upwind)
     {
         gaussGrad(rho, gradRho_);
+        if (multidimensional(rhoLimiter_))
+        {
+            limitGradient(rhoLimiter_, rho, gradRho_);
+        }
         if (coupled_)
         {
             gradientExchange_.start(gradRho_);
@@ -415,6 +643,10 @@ void Foam::MUSCLReconstruction::startCellGradients
     if (ULimiter_ != limiterType::upwind)
     {
         gaussGrad(U, gradU_);
+        if (multidimensional(ULimiter_))
+        {
+            limitGradient(ULimiter_, U, gradU_);
+        }
         if (coupled_)
         {
             gradientExchange_.start(gradU_);
@@ -423,6 +655,10 @@ void Foam::MUSCLReconstruction::startCellGradients
     if (pLimiter_ != limiterType::upwind)
     {
         gaussGrad(p, gradP_);
+        if (multidimensional(pLimiter_))
+        {
+            limitGradient(pLimiter_, p, gradP_);
+        }
         if (coupled_)
         {
             gradientExchange_.start(gradP_);
@@ -502,6 +738,7 @@ void Foam::MUSCLReconstruction::reconstruct
     const labelUList& neighbour = mesh_.neighbour();
     const scalarField& w = mesh_.weights();
     const vectorField& C = mesh_.C();
+    const vectorField& Cf = mesh_.Cf();
 
     const scalarField& rhoc = rho;
     const vectorField& Uc = U;
@@ -520,21 +757,23 @@ void Foam::MUSCLReconstruction::reconstruct
         const label nei = neighbour[facei];
         const scalar wf = w[facei];
         const vector d(C[nei] - C[own]);
+        const vector dP(Cf[facei] - C[own]);
+        const vector dN(Cf[facei] - C[nei]);
 
         internalFaceValues
         (
             sLim, rhoLimiter_, wf, rhoc[own], rhoc[nei], gradRho[own],
-            gradRho[nei], d, L.rho[i], R.rho[i]
+            gradRho[nei], d, dP, dN, L.rho[i], R.rho[i]
         );
         internalFaceValues
         (
             vLim, ULimiter_, wf, Uc[own], Uc[nei], gradU[own], gradU[nei],
-            d, L.U[i], R.U[i]
+            d, dP, dN, L.U[i], R.U[i]
         );
         internalFaceValues
         (
             sLim, pLimiter_, wf, pc[own], pc[nei], gradP[own], gradP[nei],
-            d, L.p[i], R.p[i]
+            d, dP, dN, L.p[i], R.p[i]
         );
     }
 }
