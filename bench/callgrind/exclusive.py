@@ -6,7 +6,8 @@ branch eff18e).
     exclusive.py SERIAL RANK0 [RANK1 ...] [--top N] [--min IR]
 
 SERIAL, RANKi: callgrind.out files of the same case and steps (e.g.
-bench/callgrind/loopProfile.sh's cg.serial, cg.rank0, cg.rank1).
+bench/callgrind/loopProfile.sh's cg.serial, cg.rank0, cg.rank1), of one
+build or of two (objects are compared by file name, not directory).
 Each function's exclusive Ir (its own instructions, not its callees') is
 summed over its object; functions of Open MPI's libraries and their
 components (libmpi, libopen-pal, libopen-rte, mca_*, libucs/libucp,
@@ -21,7 +22,7 @@ import re
 import sys
 from collections import defaultdict
 
-MPI_OBJ = re.compile(r'(libmpi|libopen-pal|libopen-rte|/mca_|libucs|libucp|'
+MPI_OBJ = re.compile(r'(libmpi|libopen-pal|libopen-rte|^mca_|libucs|libucp|'
                      r'libuct|libfabric|libhwloc|libevent|libpmix|'
                      r'libPstream|openmpi)')
 
@@ -57,7 +58,9 @@ def parse(path):
                 else:
                     name = val
                 if key == 'ob':
-                    ob = name
+                    # the file name only: two builds' copies of a library
+                    # compare as one
+                    ob = name.rsplit('/', 1)[-1]
                 elif key == 'fn':
                     fn = name
             elif key == 'calls':
