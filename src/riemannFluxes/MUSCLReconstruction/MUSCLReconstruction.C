@@ -626,7 +626,10 @@ void Foam::MUSCLReconstruction::startCellGradients
     }
 
     // The neighbour cells' gradients on processor and cyclic patches: the
-    // three fields' exchanges started together, waited for once
+    // three fields' exchanges started together, waited for once; only the
+    // coupled patches' gradient values are read (reconstructCoupled), so
+    // only they are evaluated (a symmetry plane's transform of gradU in
+    // every stage on 2 ranks, none serially: issue 18 item 5, eff18e)
     gradientExchange_ = foamTools::boundaryEvaluation();
     if (rhoLimiter_ != limiterType::upwind)
     {
@@ -637,7 +640,7 @@ void Foam::MUSCLReconstruction::startCellGradients
         }
         if (coupled_)
         {
-            gradientExchange_.start(gradRho_);
+            gradientExchange_.startCoupled(gradRho_);
         }
     }
     if (ULimiter_ != limiterType::upwind)
@@ -649,7 +652,7 @@ void Foam::MUSCLReconstruction::startCellGradients
         }
         if (coupled_)
         {
-            gradientExchange_.start(gradU_);
+            gradientExchange_.startCoupled(gradU_);
         }
     }
     if (pLimiter_ != limiterType::upwind)
@@ -661,7 +664,7 @@ void Foam::MUSCLReconstruction::startCellGradients
         }
         if (coupled_)
         {
-            gradientExchange_.start(gradP_);
+            gradientExchange_.startCoupled(gradP_);
         }
     }
     gradientsPending_ = true;
@@ -683,15 +686,15 @@ void Foam::MUSCLReconstruction::finishCellGradients()
     }
     if (rhoLimiter_ != limiterType::upwind)
     {
-        gradientExchange_.finish(gradRho_);
+        gradientExchange_.finishCoupled(gradRho_);
     }
     if (ULimiter_ != limiterType::upwind)
     {
-        gradientExchange_.finish(gradU_);
+        gradientExchange_.finishCoupled(gradU_);
     }
     if (pLimiter_ != limiterType::upwind)
     {
-        gradientExchange_.finish(gradP_);
+        gradientExchange_.finishCoupled(gradP_);
     }
 }
 

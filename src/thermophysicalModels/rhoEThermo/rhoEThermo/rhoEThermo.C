@@ -3,6 +3,7 @@
 #include "Time.H"
 #include "inputChecks.H"
 #include "boundaryEvaluation.H"
+#include "processorFvPatch.H"
 
 namespace Foam
 {
@@ -73,10 +74,18 @@ Foam::rhoEThermo::rhoEThermo(const fvMesh& mesh)
 }
 
 
-void Foam::rhoEThermo::correctBoundaryStates()
+void Foam::rhoEThermo::correctBoundaryStates(const bool processorStatesSet)
 {
     forAll(mesh_.boundary(), patchi)
     {
+        if
+        (
+            processorStatesSet
+         && isA<processorFvPatch>(mesh_.boundary()[patchi])
+        )
+        {
+            continue;
+        }
         const scalarField& pp = p_.boundaryField()[patchi];
         const scalarField& Tp = T_.boundaryField()[patchi];
         scalarField& rhop = rho_.boundaryFieldRef()[patchi];
@@ -170,9 +179,25 @@ void Foam::rhoEThermo::correct(volVectorField& U)
     bc.start(p_);
     bc.start(T_);
     bc.start(U);
+    // With the combined exchange (parallel): the neighbour cells' rho, e,
+    // c with them, on the coupled patches only (the others are set from p
+    // and T below); a cyclic patch's evaluate is overwritten there
+    const bool exchangeStates = bc.combined();
+    if (exchangeStates)
+    {
+        bc.startCoupled(rho_);
+        bc.startCoupled(e_);
+        bc.startCoupled(c_);
+    }
     bc.finish(p_);
     bc.finish(T_);
-    correctBoundaryStates();
+    if (exchangeStates)
+    {
+        bc.finishCoupled(rho_);
+        bc.finishCoupled(e_);
+        bc.finishCoupled(c_);
+    }
+    correctBoundaryStates(exchangeStates);
     bc.finish(U);
 }
 
