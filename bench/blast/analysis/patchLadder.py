@@ -27,7 +27,9 @@ observed order p, the Richardson value and the finest level's Grid
 Convergence Index (bench/blast/run.py richardson: Celik et al. 2008 for
 non-constant ratios; no order where the changes alternate in sign or do
 not shrink: then "no order" and the error bar is 3 times the largest
-change), with the deviation of --default (default x0.7) and of each --off
+change; each level's deviation from the Richardson value; an order above 2, the scheme's formal order, is flagged
+unreliable: the ratio of two changes of which the first is large, not an
+asymptotic order), with the deviation of --default (default x0.7) and of each --off
 setting from the Richardson value. With four levels or more the order
 from the three coarsest too (a stable order is the sign of the asymptotic
 range). Prints markdown tables.
@@ -134,12 +136,16 @@ def row(name, key, levels, default, off):
     if len(levels) >= 3:
         res = R.richardson(levels, key)
         if res["monotone"]:
-            order = "%.2f" % res["p"]
+            # above the scheme's formal order (2): the ratio of two
+            # changes of which the first is large, not an asymptotic order
+            order = "%.2f" % res["p"] + (" (> 2: unreliable)"
+                                          if res["p"] > 2 else "")
             ext = fmt(res["ext"])
             gci = "%.1f %%" % (100*res["gci"])
-            d = [r[key] for r in levels if r["label"] == default]
-            if d:
-                dev = "%+.1f %%" % (100*(d[0]/res["ext"] - 1))
+            dev = ", ".join(
+                ("**%s %+.1f %%**" if r["label"] == default else
+                 "%s %+.1f %%") % (r["label"], 100*(r[key]/res["ext"] - 1))
+                for r in levels)
             offs = ["%s %s (%+.1f %%)" % (o["label"], fmt(o[key]),
                                           100*(o[key]/res["ext"] - 1))
                     for o in off if key in o]
@@ -186,7 +192,8 @@ def main():
     print()
     head = ("| measure | " + " | ".join(labels) + " | changes | order "
             "(3 coarsest) | observed order (3 finest) | Richardson | GCI "
-            f"of the finest | {a.default} against it | off the ladder |")
+            f"of the finest | each level against it ({a.default} bold) | off the "
+            "ladder |")
     rule = "|---|" + "---:|"*len(labels) + "---|---|---|---|---|---|---|"
     print(head)
     print(rule)
