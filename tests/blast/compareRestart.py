@@ -48,6 +48,8 @@ LOGS = (
      lambda names: [j for j, n in enumerate(names)
                     if not n.startswith(("vonMisesPatchX", "vonMisesPatchY",
                                          "vonMisesPatchZ"))], (0,), True),
+    # the means at fixed places (solidProperties interfacePlaces)
+    ("solidInterfaces/interfacePlaces.dat", None, (0,), True),
 )
 
 

@@ -211,5 +211,50 @@ class Patches(TempDirTestCase):
         self.assertEqual(di.patchLength(case), 1e-6)
 
 
+IFACES = ("a-b", "a-fluid")
+PLACES = ("axis", "foot")
+
+
+class Places(TempDirTestCase):
+    """interfacePlaces.dat (the solver's interface means at fixed
+    places): per interface, place and quantity, over a restart; the
+    patches' centres from the header"""
+
+    HEAD = ("# per region interface and fixed place: the mean over a "
+            "patch of fixed size ...\n# time [s]" + "".join(
+                "  " + " ".join("%s_%s:%s[Pa]" % (q, pl, n)
+                                for pl in PLACES
+                                for q in di.PLACE_QUANTITIES)
+                for n in IFACES) + "\n" + "".join(
+                "# %s:%s: point (0 2e-05 0) m, patch centre (%g 7e-06 0) "
+                "m\n" % (pl, n, 1e-7*k)
+                for n in IFACES for k, pl in enumerate(PLACES)))
+
+    def row(self, t):
+        return " ".join("%g" % x for x in
+                        [t] + [10*t + k for k in range(12)]) + "\n"
+
+    def testRead(self):
+        case = os.path.join(self.tmp, "case")
+        self.assertFalse(di.hasInterfacePlaces(case))
+        log = "case/postProcessing/solidInterfaces/%s/interfacePlaces.dat"
+        self.write(log % "0", self.HEAD + self.row(0) + self.row(1)
+                   + self.row(2))
+        # a restart from 1: its rows replace the first start's from 1 on
+        self.write(log % "1", self.HEAD + self.row(1) + self.row(2)
+                   + self.row(3))
+        self.assertTrue(di.hasInterfacePlaces(case))
+        ip = di.interfacePlaces(case)
+        self.assertEqual(sorted(ip), ["a-b", "a-fluid"])
+        self.assertEqual(sorted(ip["a-b"]), ["axis", "foot"])
+        np.testing.assert_array_equal(ip["a-b"]["axis"]["t"], [0, 1, 2, 3])
+        # columns: a-b axis p, vM, shear; a-b foot p, vM, shear; a-fluid
+        np.testing.assert_array_equal(ip["a-b"]["foot"]["vonMisesAt"],
+                                      [4, 14, 24, 34])
+        np.testing.assert_array_equal(ip["a-fluid"]["axis"]["shearAt"],
+                                      [8, 18, 28, 38])
+        self.assertEqual(ip["a-fluid"]["foot"]["centre"], (1e-7, 7e-6, 0))
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -5,8 +5,11 @@
 // falling as h^2); a field piecewise constant on 1 um pieces the same mean
 // on meshes refined under the patch; the two sides and a boundary; 3D: a
 // uniform field, and a bump whose disc mean converges with refinement
-// (second order in the facet size).
-// Bad sizes and regions are parameter errors.
+// (second order in the facet size). Fixed places (issue 17 item 4): the
+// window around the interface's point nearest a given point, clamped to
+// the curve; the same mean on every mesh for a field piecewise constant
+// on coarse pieces; 3D: the disc around the nearest sub-cell centre.
+// Bad sizes, regions and places are parameter errors.
 #include "InterfacePatch.H"
 #include "PointProbe.H"
 #include "SolidError.H"
@@ -276,6 +279,131 @@ TEST(InterfacePatch, threeDimensionalDisc)
 }
 
 
+TEST(InterfacePatch, fixedPlacesOnAStraightInterface)
+{
+    // p = 3 Pa + g z along the interface r = 3 um, z in [0, 10] um,
+    // facets of 1 um, window L = 1 um; the inner side twice the outer
+    const double g = 1e6;
+    const Mesh m = strip(4, 10);
+    InterfacePatch ip(m, 0, 1, 1*um);
+    // On the interface, off it (nearest point (3, 4.3) um), below and
+    // above its ends (the end windows)
+    EXPECT_EQ(ip.addPlace(Vec3(3*um, 4.5*um, 0)), 0u);
+    EXPECT_EQ(ip.addPlace(Vec3(0, 4.3*um, 0)), 1u);
+    EXPECT_EQ(ip.addPlace(Vec3(3*um, -5*um, 0)), 2u);
+    EXPECT_EQ(ip.addPlace(Vec3(8*um, 50*um, 0)), 3u);
+    EXPECT_EQ(ip.nPlaces(), 4u);
+    const auto s = field(m, [&](const Vec3& c, int region)
+    {
+        ElementStress e = pressure((region == 1 ? 2 : 1)*(3 + g*c(1)));
+        e.sigma(1, 1) -= 2*e.p;     // von Mises 2 p
+        return e;
+    });
+    const InterfaceMeasures r = measure(ip, s);
+    ASSERT_EQ(r.pAt.size(), 4u);
+    // The window's mean of the facets' midpoint values: 3 + g z at its
+    // centre (whole facets or one of length L: exact for a linear field),
+    // the inner side's (twice)
+    const double centre[4] = {4.5, 4.3, 0.5, 9.5};
+    for (int i = 0; i < 4; ++i)
+    {
+        EXPECT_NEAR(r.pAt[i], 2*(3 + centre[i]), 1e-12) << i;
+        EXPECT_NEAR(r.vonMisesAt[i], 2*r.pAt[i], 1e-9) << i;
+        EXPECT_NEAR(r.shearAt[i], 0, 1e-9) << i;
+        EXPECT_NEAR(ip.placeCentre(i)(0), 3*um, 1e-15) << i;
+        EXPECT_NEAR(ip.placeCentre(i)(1), centre[i]*um, 1e-15) << i;
+        // never above the largest mean over places
+        EXPECT_LE(r.pAt[i], r.pPatch + 1e-12) << i;
+    }
+    EXPECT_NEAR(r.pPatch, r.pAt[3], 1e-12);
+    // A window longer than the curve: its whole mean
+    InterfacePatch whole(m, 0, 1, 20*um);
+    whole.addPlace(Vec3(3*um, 2*um, 0));
+    EXPECT_NEAR(measure(whole, s).pAt[0], 2*(3 + 5), 1e-12);
+}
+
+
+TEST(InterfacePatch, aFixedPlaceKeepsItsMeanUnderRefinement)
+{
+    // Values constant on 1 um pieces of z (random); a window of 1.7 um
+    // around z = 4.35 um (its ends inside pieces): the same mean on
+    // meshes of 1, 1/2, 1/3 and 1/4 um, the integral of the pieces; a
+    // linear profile: the window's mean within g h^2/(4 L)
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<double> d(0, 100);
+    std::vector<double> piece(10);
+    for (double& v : piece) v = d(gen);
+    const double L = 1.7*um, z0 = 4.35*um;
+    double exact = 0;
+    for (int i = 0; i < 10; ++i)
+    {
+        const double a = std::max(z0 - L/2, i*um);
+        const double b = std::min(z0 + L/2, (i + 1)*um);
+        if (b > a) exact += piece[i]*(b - a)/L;
+    }
+    const double g = 1e6;
+    for (const int nz : {10, 20, 30, 40})
+    {
+        const Mesh m = strip(2, nz);
+        InterfacePatch ip(m, 0, 1, L);
+        ip.addPlace(Vec3(2*um, z0, 0));
+        const auto s = field(m, [&](const Vec3& c, int)
+        {
+            return pressure(piece[std::min(9, int(c(1)/um))]);
+        });
+        EXPECT_NEAR(measure(ip, s).pAt[0], exact, 1e-12*exact) << nz;
+        const auto lin = field(m, [&](const Vec3& c, int)
+        {
+            return pressure(g*c(1));
+        });
+        const double h = 10*um/nz;
+        const double err = std::abs(measure(ip, lin).pAt[0] - g*z0);
+        // (the bound falls as h^2; the error itself with the window's
+        // ends' positions in their facets: 0.0088 Pa at h = 1 um, 0.0176
+        // Pa at 0.5 um)
+        EXPECT_LE(err, g*h*h/(4*L) + 1e-12) << nz;
+    }
+}
+
+
+TEST(InterfacePatch, aFixedPlaceIn3D)
+{
+    // The box of threeDimensionalDisc: the bump's disc mean 9.5 at its
+    // centre X0, given by a point off the interface (nearest: X0 to
+    // within the sub-cells' spacing h/6)
+    double previousErr = -1;
+    for (const int k : {1, 3, 5})
+    {
+        Mesh m = Mesh::box(4*k, 4*k, 8*k, Vec3(0, 0, 0),
+            Vec3(4*um, 4*um, 8*um));
+        m.regionNames = {"a", "b"};
+        for (int e = 0; e < m.nElements(); ++e)
+        {
+            m.region[e] = PointProbe::centroid(m, e)(0) < 2*um ? 1 : 0;
+        }
+        InterfacePatch ip(m, 0, 1, 2*um);
+        const Vec3 X0(2*um, 2.5*um, 4.5*um);
+        ip.addPlace(X0 + Vec3(0.7*um, 0, 0));
+        EXPECT_NEAR(ip.placeCentre(0)(0), 2*um, 1e-15);
+        EXPECT_LE((ip.placeCentre(0) - X0).norm(), 1.0/(6*k)*um) << k;
+        const auto u = field(m, [](const Vec3&, int) { return pressure(4); });
+        EXPECT_NEAR(measure(ip, u).pAt[0], 4, 1e-12);
+        const auto b = field(m, [&](const Vec3& c, int)
+        {
+            const Vec3 on(2*um, c(1), c(2));
+            return pressure(10 - (on - X0).squaredNorm()/(um*um));
+        });
+        const double err = std::abs(measure(ip, b).pAt[0] - 9.5);
+        EXPECT_LT(err, 0.3/(k*k)) << k;
+        if (previousErr >= 0)
+        {
+            EXPECT_LT(err, previousErr) << k;
+        }
+        previousErr = err;
+    }
+}
+
+
 TEST(InterfacePatch, badInputIsAParameterError)
 {
     const Mesh m = strip(4, 10);
@@ -308,5 +436,17 @@ TEST(InterfacePatch, badInputIsAParameterError)
         three.region[e] = r < 2.4*um ? 1 : (r < 3.7*um ? 2 : 0);
     }
     EXPECT_EQ(kind([&] { InterfacePatch(three, 0, 1, 1e-6); }),
+        SolidError::Kind::parameter);
+    // Places: a point not finite, an index beyond them, values of the
+    // wrong size
+    InterfacePatch ip(m, 0, 1, 1e-6);
+    EXPECT_EQ(kind([&] { ip.addPlace(Vec3(NAN, 0, 0)); }),
+        SolidError::Kind::parameter);
+    ip.addPlace(Vec3(3e-6, 1e-6, 0));
+    EXPECT_EQ(kind([&] { ip.placeCentre(1); }),
+        SolidError::Kind::parameter);
+    EXPECT_EQ(kind([&] { ip.meanAt(std::vector<double>(10, 0), 1); }),
+        SolidError::Kind::parameter);
+    EXPECT_EQ(kind([&] { ip.meanAt(std::vector<double>(3, 0), 0); }),
         SolidError::Kind::parameter);
 }

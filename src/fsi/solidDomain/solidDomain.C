@@ -88,7 +88,7 @@ Foam::solidDomain::solidDomain(const Time& runTime)
             "hourglassViscosityRegions", "shearViscosity",
             "shearViscosityFilter",
             "volumetricIntegration", "probes", "interfaceProbe", "interfaces",
-            "fluidInterfaces", "interfacePatchLength"
+            "fluidInterfaces", "interfacePatchLength", "interfacePlaces"
         }
     );
     model_.reset(new solid::Model(input.mesh()));
@@ -964,6 +964,45 @@ void Foam::solidDomain::setupPatches(const List<Pair<word>>& pairs)
         });
         patchNames_.append(r + "-fluid");
     }
+    // Fixed places of the means: the same points on every interface
+    if (dict_.found("interfacePlaces"))
+    {
+        if (!dict_.isDict("interfacePlaces"))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "entry 'interfacePlaces' is not a dictionary { NAME (x y"
+                << " z); ... } (points [m] of the reference configuration,"
+                << " r-z: (r z 0))" << exit(FatalIOError);
+        }
+        const dictionary& pd = dict_.subDict("interfacePlaces");
+        foamTools::checkDuplicates(pd);
+        if (patches_.empty())
+        {
+            FatalIOErrorInFunction(dict_)
+                << "entry 'interfacePlaces': no interface to place them on"
+                << " (entries 'interfaces' and 'fluidInterfaces' are empty)"
+                << exit(FatalIOError);
+        }
+        for (const entry& e : pd)
+        {
+            if (e.isDict())
+            {
+                FatalIOErrorInFunction(pd)
+                    << "interfacePlaces: entry " << e.keyword() << " is a "
+                    << "dictionary, not a point (x y z) [m]"
+                    << exit(FatalIOError);
+            }
+            const vector X(pd.get<vector>(e.keyword()));
+            for (solid::InterfacePatch& ip : patches_)
+            {
+                guarded(pd, "entry 'interfacePlaces'", [&]
+                {
+                    ip.addPlace(solid::Vec3(X.x(), X.y(), X.z()));
+                });
+            }
+            placeNames_.append(e.keyword());
+        }
+    }
     for (const solid::InterfacePatch& ip : patches_)
     {
         patchElements_.insert
@@ -1018,6 +1057,49 @@ void Foam::solidDomain::openPatchFile()
                 << " faces, " << ip.band().size() << " band elements, "
                 << (m.axisymmetric() ? ip.nChains() : ip.nPatches())
                 << (m.axisymmetric() ? " curves" : " patches") << nl;
+        }
+    }
+    if (placeNames_.size() && Pstream::master())
+    {
+        const fileName dir
+        (
+            runTime_.globalPath()/"postProcessing"/"solidInterfaces"
+           /runTime_.timeName()
+        );
+        placeFile_.reset
+        (
+            new OFstream(dir/foamTools::runLogFiles::interfacePlacesName())
+        );
+        OFstream& os = placeFile_();
+        os.precision(10);
+        os  << foamTools::runLogFiles::interfacePlacesHeader()
+            << " over a patch of fixed size (r-z: " << L << " m of arc along"
+            << " the interface; 3D: a disc of diameter " << L << " m) around "
+            << "the interface's point nearest the place's point, of pressure"
+            << " (+ compression), von Mises and shear traction (each side's"
+            << " elements, the larger side)" << nl << "# time [s]";
+        forAll(patchNames_, i)
+        {
+            for (const word& q : placeNames_)
+            {
+                const word n(q + ":" + patchNames_[i]);
+                os  << "  pAt_" << n << "[Pa] vonMisesAt_" << n
+                    << "[Pa] shearAt_" << n << "[Pa]";
+            }
+        }
+        os  << nl;
+        const dictionary& pd = dict_.subDict("interfacePlaces");
+        forAll(patchNames_, i)
+        {
+            forAll(placeNames_, k)
+            {
+                const vector X(pd.get<vector>(placeNames_[k]));
+                const solid::Vec3& c = patches_[i].placeCentre(k);
+                os  << "# " << placeNames_[k] << ":" << patchNames_[i]
+                    << ": point (" << X.x() << ' ' << X.y() << ' ' << X.z()
+                    << ") m, patch centre (" << c(0) << ' ' << c(1) << ' '
+                    << c(2) << ") m" << nl;
+            }
         }
     }
 }
@@ -1256,9 +1338,11 @@ void Foam::solidDomain::write
         };
         OFstream& os = patchFile_();
         os  << runTime_.value();
+        std::vector<solid::InterfaceMeasures> measures;
         for (const solid::InterfacePatch& ip : patches_)
         {
-            const solid::InterfaceMeasures r = ip.evaluate(of);
+            measures.push_back(ip.evaluate(of));
+            const solid::InterfaceMeasures& r = measures.back();
             os  << ' ' << r.pPatch << ' ' << r.vonMisesPatch << ' '
                 << r.shearPatch << ' ' << r.vonMisesPatchAt(0) << ' '
                 << r.vonMisesPatchAt(1) << ' ' << r.vonMisesPatchAt(2) << ' '
@@ -1267,6 +1351,22 @@ void Foam::solidDomain::write
         os  << nl;
         os.flush();
         foamTools::runLogFiles::checkWritten(os);
+        if (placeFile_.valid())
+        {
+            OFstream& ps = placeFile_();
+            ps  << runTime_.value();
+            for (const solid::InterfaceMeasures& r : measures)
+            {
+                for (std::size_t k = 0; k < r.pAt.size(); ++k)
+                {
+                    ps  << ' ' << r.pAt[k] << ' ' << r.vonMisesAt[k] << ' '
+                        << r.shearAt[k];
+                }
+            }
+            ps  << nl;
+            ps.flush();
+            foamTools::runLogFiles::checkWritten(ps);
+        }
     }
     if (runTime_.writeTime())
     {
@@ -1274,7 +1374,8 @@ void Foam::solidDomain::write
         // a run killed later restarts here and loses no row
         for
         (
-            autoPtr<OFstream>* f : {&probeFile_, &interfaceFile_, &patchFile_}
+            autoPtr<OFstream>* f :
+                {&probeFile_, &interfaceFile_, &patchFile_, &placeFile_}
         )
         {
             if (f->valid())

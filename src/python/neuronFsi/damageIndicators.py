@@ -288,6 +288,47 @@ def interfacePatches(case):
     return out
 
 
+PLACE_LOG = "solidInterfaces/interfacePlaces.dat"
+PLACE_QUANTITIES = ("pAt", "vonMisesAt", "shearAt")
+
+
+def hasInterfacePlaces(case):
+    """Whether the run wrote postProcessing/solidInterfaces/*/
+    interfacePlaces.dat (solidProperties interfacePlaces given)"""
+    try:
+        postProcessing.segments(case, PLACE_LOG)
+        return True
+    except postProcessing.ColumnFileError:
+        return False
+
+
+def interfacePlaces(case):
+    """{interface: {place: {quantity: array}}} of every step, from
+    postProcessing/solidInterfaces/interfacePlaces.dat (over restarts):
+    per interface and fixed place (solidProperties interfacePlaces) the
+    solver's mean over the patch around the interface's point nearest the
+    place's point: pAt, vonMisesAt, shearAt [Pa]; 't' [s] in each place's
+    dict, and 'centre' (the patch's centre (x, y, z) [m] the header
+    states)."""
+    d = postProcessing.series(case, PLACE_LOG)
+    names = postProcessing.names(case, PLACE_LOG)
+    out = {}
+    for k, n in enumerate(names):
+        m = re.match(r"(\w+)_(\w+):(\S+)$", n)
+        if not m or m.group(1) not in PLACE_QUANTITIES:
+            continue
+        q, place, iface = m.groups()
+        out.setdefault(iface, {}).setdefault(
+            place, {"t": d[:, 0]})[q] = d[:, k]
+    for line in postProcessing.header(case, PLACE_LOG):
+        m = re.match(r"(\w+):(\S+): point \(.*\) m, patch centre "
+                     r"\((\S+) (\S+) (\S+)\) m", line)
+        if m and m.group(2) in out and m.group(1) in out[m.group(2)]:
+            out[m.group(2)][m.group(1)]["centre"] = tuple(
+                float(m.group(k)) for k in (3, 4, 5))
+    return out
+
+
 def patchLength(case):
     """The patch length [m] interfacePatches.dat's header states"""
     for seg in postProcessing.segments(case, PATCH_LOG)[:1]:

@@ -308,10 +308,9 @@ void solid::InterfacePatch::buildBalls(const Mesh& m)
     // Each facet's 6 x 6 sub-cells (bilinear map, midpoint rule): their
     // centres and areas
     constexpr int n = 6;
-    const double radius = 0.5*size_;
-    std::vector<std::vector<Vec3>> sub(facets_.size());
-    std::vector<std::vector<double>> subArea(facets_.size());
-    std::vector<double> reach(facets_.size(), 0);
+    sub_.assign(facets_.size(), {});
+    subArea_.assign(facets_.size(), {});
+    reach_.assign(facets_.size(), 0);
     for (std::size_t f = 0; f < facets_.size(); ++f)
     {
         const std::vector<int>& nd = facets_[f].nodes;
@@ -328,42 +327,83 @@ void solid::InterfacePatch::buildBalls(const Mesh& m)
                 const Vec3 du((1 - v)*(X1 - X0) + v*(X2 - X3));
                 const Vec3 dv((1 - u)*(X3 - X0) + u*(X2 - X1));
                 const double A = du.cross(dv).norm()/(n*n);
-                sub[f].push_back(X);
-                subArea[f].push_back(A);
+                sub_[f].push_back(X);
+                subArea_[f].push_back(A);
                 total += A;
             }
         }
         facets_[f].size = total;
         for (const int k : nd)
         {
-            reach[f] = std::max(reach[f],
+            reach_[f] = std::max(reach_[f],
                 (m.X[k] - facets_[f].centroid).norm());
         }
     }
     for (std::size_t k = 0; k < facets_.size(); ++k)
     {
-        Ball b;
-        b.centre = int(k);
-        const Vec3& c = facets_[k].centroid;
-        for (std::size_t f = 0; f < facets_.size(); ++f)
-        {
-            if ((facets_[f].centroid - c).norm() > radius + reach[f])
-            {
-                continue;
-            }
-            double A = 0;
-            for (std::size_t s = 0; s < sub[f].size(); ++s)
-            {
-                if ((sub[f][s] - c).norm() <= radius) A += subArea[f][s];
-            }
-            if (A > 0)
-            {
-                b.facets.push_back(int(f));
-                b.areas.push_back(A);
-                b.area += A;
-            }
-        }
+        Ball b(ballAround(facets_[k].centroid, int(k)));
         if (b.area > 0) balls_.push_back(b);
+    }
+}
+
+
+solid::InterfacePatch::Ball solid::InterfacePatch::ballAround
+(
+    const Vec3& c,
+    int centre
+) const
+{
+    const double radius = 0.5*size_;
+    Ball b;
+    b.centre = centre;
+    for (std::size_t f = 0; f < facets_.size(); ++f)
+    {
+        if ((facets_[f].centroid - c).norm() > radius + reach_[f])
+        {
+            continue;
+        }
+        double A = 0;
+        for (std::size_t s = 0; s < sub_[f].size(); ++s)
+        {
+            if ((sub_[f][s] - c).norm() <= radius) A += subArea_[f][s];
+        }
+        if (A > 0)
+        {
+            b.facets.push_back(int(f));
+            b.areas.push_back(A);
+            b.area += A;
+        }
+    }
+    return b;
+}
+
+
+void solid::InterfacePatch::unroll
+(
+    const Chain& c,
+    const std::vector<double>& q,
+    std::vector<double>& b,
+    std::vector<double>& P,
+    std::vector<double>& v,
+    std::vector<Vec3>& pts
+) const
+{
+    const std::size_t n = c.facets.size();
+    const std::size_t rounds = c.closed ? 2 : 1;
+    b.assign(1, 0);
+    P.assign(1, 0);
+    v.clear();
+    pts.assign(1, c.points[0]);
+    for (std::size_t r = 0; r < rounds; ++r)
+    {
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            const Facet& f = facets_[c.facets[i]];
+            v.push_back(q[c.facets[i]]);
+            b.push_back(b.back() + f.size);
+            P.push_back(P.back() + q[c.facets[i]]*f.size);
+            pts.push_back(c.points[i + 1]);
+        }
     }
 }
 
@@ -377,20 +417,9 @@ double solid::InterfacePatch::chainMaximum
 {
     // The curve's pieces (a closed curve twice: windows across its start)
     const std::size_t n = c.facets.size();
-    const std::size_t rounds = c.closed ? 2 : 1;
-    std::vector<double> b{0}, P{0}, v;
-    std::vector<Vec3> pts{c.points[0]};
-    for (std::size_t r = 0; r < rounds; ++r)
-    {
-        for (std::size_t i = 0; i < n; ++i)
-        {
-            const Facet& f = facets_[c.facets[i]];
-            v.push_back(q[c.facets[i]]);
-            b.push_back(b.back() + f.size);
-            P.push_back(P.back() + q[c.facets[i]]*f.size);
-            pts.push_back(c.points[i + 1]);
-        }
-    }
+    std::vector<double> b, P, v;
+    std::vector<Vec3> pts;
+    unroll(c, q, b, P, v, pts);
     const double S = b[n];
     const double L = size_;
     if (S <= L)
@@ -471,6 +500,130 @@ double solid::InterfacePatch::largestMean
 }
 
 
+std::size_t solid::InterfacePatch::addPlace(const Vec3& X)
+{
+    if (!X.allFinite()) fail("a place's point is not finite");
+    Place pl;
+    if (axisymmetric_)
+    {
+        // The curves' point nearest X (in the r-z plane) and its arc
+        // length on its curve
+        double best = std::numeric_limits<double>::infinity();
+        double s = 0;
+        for (std::size_t k = 0; k < chains_.size(); ++k)
+        {
+            const Chain& c = chains_[k];
+            double b = 0;
+            for (std::size_t i = 0; i < c.facets.size(); ++i)
+            {
+                const Vec3 A(c.points[i](0), c.points[i](1), 0);
+                const Vec3 B(c.points[i + 1](0), c.points[i + 1](1), 0);
+                const Vec3 P(X(0), X(1), 0);
+                const double l2 = (B - A).squaredNorm();
+                const double t = l2 > 0
+                  ? std::min(1.0, std::max(0.0, (P - A).dot(B - A)/l2))
+                  : 0.0;
+                const double d = (A + t*(B - A) - P).norm();
+                const double len = facets_[c.facets[i]].size;
+                if (d < best)
+                {
+                    best = d;
+                    pl.chain = int(k);
+                    s = b + t*len;
+                }
+                b += len;
+            }
+        }
+        const Chain& c = chains_[pl.chain];
+        double S = 0;
+        for (const int f : c.facets) S += facets_[f].size;
+        if (S <= size_)
+        {
+            pl.start = 0;
+        }
+        else if (c.closed)
+        {
+            pl.start = s - 0.5*size_;
+            if (pl.start < 0) pl.start += S;
+        }
+        else
+        {
+            pl.start = std::min(std::max(s - 0.5*size_, 0.0), S - size_);
+        }
+        std::vector<double> b, P, v;
+        std::vector<Vec3> pts;
+        unroll(c, std::vector<double>(facets_.size(), 0), b, P, v, pts);
+        pl.centre = pointAt(b, pts, pl.start + 0.5*std::min(S, size_));
+    }
+    else
+    {
+        // The sub-cell centre nearest X, the ball around it
+        double best = std::numeric_limits<double>::infinity();
+        int centre = -1;
+        for (std::size_t f = 0; f < facets_.size(); ++f)
+        {
+            for (const Vec3& Y : sub_[f])
+            {
+                const double d = (Y - X).norm();
+                if (d < best)
+                {
+                    best = d;
+                    centre = int(f);
+                    pl.centre = Y;
+                }
+            }
+        }
+        pl.ball = ballAround(pl.centre, centre);
+    }
+    places_.push_back(pl);
+    return places_.size() - 1;
+}
+
+
+const solid::Vec3& solid::InterfacePatch::placeCentre(std::size_t i) const
+{
+    if (i >= places_.size())
+    {
+        fail("place " + std::to_string(i) + " of "
+            + std::to_string(places_.size()));
+    }
+    return places_[i].centre;
+}
+
+
+double solid::InterfacePatch::meanAt
+(
+    const std::vector<double>& q,
+    std::size_t i
+) const
+{
+    if (q.size() != facets_.size())
+    {
+        fail(std::to_string(q.size()) + " values for "
+            + std::to_string(facets_.size()) + " facets");
+    }
+    placeCentre(i);     // the index checked
+    const Place& pl = places_[i];
+    if (axisymmetric_)
+    {
+        std::vector<double> b, P, v;
+        std::vector<Vec3> pts;
+        unroll(chains_[pl.chain], q, b, P, v, pts);
+        const std::size_t n = chains_[pl.chain].facets.size();
+        const double S = b[n];
+        if (S <= size_) return P[n]/S;
+        return (integral(b, P, v, pl.start + size_)
+            - integral(b, P, v, pl.start))/size_;
+    }
+    double s = 0;
+    for (std::size_t k = 0; k < pl.ball.facets.size(); ++k)
+    {
+        s += pl.ball.areas[k]*q[pl.ball.facets[k]];
+    }
+    return s/pl.ball.area;
+}
+
+
 double solid::InterfacePatch::shear(const Mat3& sigma, const Vec3& n)
 {
     // Of the deviatoric part (the same value: the isotropic part's
@@ -498,6 +651,10 @@ solid::InterfaceMeasures solid::InterfacePatch::evaluate
     }
     r.pPatch = r.vonMisesPatch = r.shearPatch =
         -std::numeric_limits<double>::infinity();
+    const double lowest = -std::numeric_limits<double>::infinity();
+    r.pAt.assign(places_.size(), lowest);
+    r.vonMisesAt.assign(places_.size(), lowest);
+    r.shearAt.assign(places_.size(), lowest);
     const std::size_t nf = facets_.size();
     std::vector<double> p(nf), vm(nf), tau(nf);
     for (int side = 0; side < (twoSided_ ? 2 : 1); ++side)
@@ -518,6 +675,12 @@ solid::InterfaceMeasures solid::InterfacePatch::evaluate
         {
             r.vonMisesPatch = v;
             r.vonMisesPatchAt = at;
+        }
+        for (std::size_t i = 0; i < places_.size(); ++i)
+        {
+            r.pAt[i] = std::max(r.pAt[i], meanAt(p, i));
+            r.vonMisesAt[i] = std::max(r.vonMisesAt[i], meanAt(vm, i));
+            r.shearAt[i] = std::max(r.shearAt[i], meanAt(tau, i));
         }
     }
     return r;
