@@ -1061,19 +1061,15 @@ void Foam::solidDomain::openPatchFile()
     }
     if (placeNames_.size() && Pstream::master())
     {
-        const fileName dir
+        placeFile_ = foamTools::runLogFiles::openLog
         (
-            runTime_.globalPath()/"postProcessing"/"solidInterfaces"
-           /runTime_.timeName()
-        );
-        placeFile_.reset
-        (
-            new OFstream(dir/foamTools::runLogFiles::interfacePlacesName())
+            runTime_,
+            "solidInterfaces",
+            foamTools::runLogFiles::interfacePlacesName(),
+            foamTools::runLogFiles::interfacePlacesHeader()
         );
         OFstream& os = placeFile_();
-        os.precision(10);
-        os  << foamTools::runLogFiles::interfacePlacesHeader()
-            << " over a patch of fixed size (r-z: " << L << " m of arc along"
+        os  << " over a patch of fixed size (r-z: " << L << " m of arc along"
             << " the interface; 3D: a disc of diameter " << L << " m) around "
             << "the interface's point nearest the place's point, of pressure"
             << " (+ compression), von Mises and shear traction (each side's"
