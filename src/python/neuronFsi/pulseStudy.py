@@ -416,8 +416,13 @@ def outsideInputs(case):
           tableFile, the solid's mesh), relative paths from case
 
     A file inside case is a file of the case (its own digest)."""
+    import shutil
     import subprocess
     out = {}
+    # a #calc or #codeStream compiles its code into <case>/dynamicCode:
+    # removed again if this made it (the case's files are its inputs)
+    code = os.path.join(case, "dynamicCode")
+    hadCode = os.path.lexists(code)
 
     def foamDictionary(args, rel):
         r = subprocess.run(["foamDictionary", "-case", case] + args + [rel],
@@ -464,6 +469,8 @@ def outsideInputs(case):
                                 out["%s (included by %s)" % (path, rel)] = \
                                     hashlib.sha256(h.read()).hexdigest()
             named(text.decode("latin-1"), rel)
+    if not hadCode and os.path.isdir(code):
+        shutil.rmtree(code)
     return out
 
 
