@@ -711,8 +711,9 @@ def main():
                 raise ps.StudyError(
                     "%s: entry '%s' differs from that of the finished point "
                     "%s (%s): its result would not be that of this "
-                    "dictionary. Nothing was run: restore the entry, or "
-                    "move %s away to start the study over"
+                    "dictionary. Nothing was run: restore the entry (or "
+                    "the file named), or move %s away to start the study "
+                    "over"
                     % (s["dict"], diff[0][0], p["label"], diff[0][1],
                        os.path.join(out, "points")))
             records[p["label"]] = r
