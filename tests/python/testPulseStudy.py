@@ -294,6 +294,13 @@ boundaryField
                 self.assertIn(c, diff[0][1])
             self.write("outside/" + name, text)
             self.assertEqual(ps.outsideInputs(base), first)
+        # a comment, the layout or a number's spelling is no change, as
+        # in the solvers' record (adv44 a40 (b), (c))
+        text = self.read("outside/set")
+        self.write("outside/set", "// a comment\n" + text.replace(
+            "166.67", "1.6667e2").replace(";", " ;"))
+        self.assertEqual(ps.outsideInputs(base), first)
+        self.write("outside/set", text)
         # the etc file: as OpenFOAM reads the controlDict (to 17 digits)
         etc = ps.outsideInputs(base)
         self.write("base/system/controlDict", header % "controlDict"
