@@ -219,6 +219,22 @@ def read(case, dictionary=DICT):
     s = {"case": case, "dict": path, "base": base}
     s["overpressure"] = _grid(d, "overpressure", path, "Pa")
     s["duration"] = _grid(d, "duration", path, "s")
+    # two values of one label share one folder and record (adv44 a03: the
+    # second point's record replaced the first's, a table of two equal
+    # rows; a04: with nProcs 2 both failed on each other's lock)
+    for key, unit, letter in (("overpressure", "Pa", "p"),
+                              ("duration", "s", "T")):
+        seen = {}
+        for v in s[key]:
+            label = "%s%.6g" % (letter, v)
+            if label in seen:
+                raise StudyError(
+                    "%s: entry '%s': the values %r %s and %r %s are equal "
+                    "to 6 significant digits, the points' label (%s, one "
+                    "folder and one record for both): give values that "
+                    "differ within their first 6 digits"
+                    % (path, key, seen[label], unit, v, unit, label))
+            seen[label] = v
     s["sampleInterval"] = _number(d, "sampleInterval", path)
     s["window"] = _number(d, "strainRateWindow", path)
     th = d["thresholds"]
