@@ -47,10 +47,10 @@ class EntryTheRunsDoNotRead(TempDirTestCase):
     """an entry the runs' copies would not read as swept is refused before
     anything runs, the user's files unchanged (adv44 a13, a36, a15)"""
 
-    def sweep(self, entry):
+    def sweep(self, entry, values="1 2"):
         return subprocess.run(
             [sys.executable, SWEEP, "-case", os.path.join(self.tmp, "case"),
-             "-entry", entry, "-values", "1 2", "-run",
+             "-entry", entry, "-values", values, "-run",
              "grep -h '^value' constant/settings > out.txt",
              "-output", r"n=out.txt:/value (\d+)/"],
             capture_output=True, text=True)
@@ -87,6 +87,18 @@ class EntryTheRunsDoNotRead(TempDirTestCase):
         self.assertIn("through a link: it is %s" % os.path.realpath(
             os.path.join(self.tmp, "shared", "settings")), r.stderr)
         self.unchanged()
+
+    def testValueNotOneWord(self):
+        """nan, inf, a ';' or a brace in a value: refused before any run
+        (adv44 a26: the values before it ran, then its run failed)"""
+        for values, why in (("2 nan", "nan is not a number"),
+                            ("2 3;fixed", "the value '3;fixed' holds ';'"),
+                            ("2 }", "the value '}' holds '}'")):
+            r = self.sweep("constant/settings/value", values)
+            self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+            self.assertIn(why, r.stderr)
+            self.assertIn("Nothing was run", r.stderr)
+            self.unchanged()
 
     def testSetAgainByALaterInclude(self):
         self.write("case/constant/settings",
