@@ -140,6 +140,20 @@ class ScriptErrors(TempDirTestCase):
         self.assertEqual(script.message(c.exception),
                          "/dev/full: No space left on device")
 
+    def testWritingReplacesALink(self):
+        # adv44 a17: a link at an output's path was written through, the
+        # user's file it points to (outside the case) overwritten
+        shared = self.write("shared.md", "my shared notes\n")
+        out = os.path.join(self.tmp, "results.md")
+        os.symlink(shared, out)
+        with script.writing(out) as f:
+            f.write("results\n")
+        self.assertFalse(os.path.islink(out))
+        with open(out) as f:
+            self.assertEqual(f.read(), "results\n")
+        with open(shared) as f:
+            self.assertEqual(f.read(), "my shared notes\n")
+
     def testFullDiskOutsideWritingNamesTheFile(self):
         # adv38 x55 (still on fix19x): a write on a full disk outside
         # script.writing names no file; the file is found from the

@@ -105,7 +105,13 @@ def writing(path, mode="w"):
     ENOSPC comes from write() or the flush at close, which name no file)
     is raised again naming path, so that message() names the file that
     could not be written (adv38 x55: planeWave on a full disk said "a file
-    could not be written or read")."""
+    could not be written or read"). A symbolic link at path is replaced
+    by the file (the link removed first): its target, a file elsewhere
+    (the user's), is not written through (adv44 a17: calibrateCell wrote
+    its results over the user's shared files outside the case; planeWave
+    -inflow replaced such a link already)."""
+    if os.path.islink(path) and "w" in mode:
+        os.remove(path)
     try:
         with open(path, mode) as f:
             yield f
