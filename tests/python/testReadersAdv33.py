@@ -168,6 +168,25 @@ class ScriptErrors(TempDirTestCase):
         self.assertIn("bytes free on the device of '/dev')", r.stderr)
         self.assertNotIn("a file could not be written", r.stderr)
 
+    def testFullDiskStandardOutputNamed(self):
+        # adv38 x55 (still on fix19z's first version): planeWave's print to
+        # its log on a full file system raised ENOSPC; the log is the
+        # standard output, a regular file on a device with (here: said to
+        # have) no space left
+        log = os.path.join(self.tmp, "log.pw")
+        body = ("import os\nfrom neuronFsi import script\nscript.guard()\n"
+                "class Full:\n    f_bavail = 0\n    f_frsize = 4096\n"
+                "os.fstatvfs = lambda fd: Full\n"
+                "raise OSError(28, 'No space left on device')\n")
+        p = self.write("s.py", body)
+        with open(log, "w") as out:
+            r = subprocess.run([sys.executable, p], stdout=out,
+                               stderr=subprocess.PIPE, text=True)
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("error: the standard output (%s): No space left on "
+                      "device (" % log, r.stderr)
+        self.assertNotIn("a file could not be written", r.stderr)
+
     def testMessage(self):
         self.assertIsNone(script.message(ValueError("x")))
         self.assertIn("missing.dat", script.message(
