@@ -125,5 +125,46 @@ class Adv44Rows(TempDirTestCase):
             os.path.join(self.tmp, "ind.sweep_radius_1")))
 
 
+class ValuesOneWord(TempDirTestCase):
+    """fix19z: a value that is not one word of the entry is refused before
+    anything runs, the user's files unchanged (adv44 a26)"""
+
+    def sweep(self, entry, values="1 2"):
+        return subprocess.run(
+            [sys.executable, SWEEP, "-case", os.path.join(self.tmp, "case"),
+             "-entry", entry, "-values", values, "-run",
+             "grep -h '^value' constant/settings > out.txt",
+             "-output", r"n=out.txt:/value (\d+)/"],
+            capture_output=True, text=True)
+
+    def setUp(self):
+        super().setUp()
+        self.write("case/system/controlDict", "application true;\n")
+        self.write("case/constant/settings", "value 1;\nother a;\n")
+        self.write("other/constant/settings", "value 7;\n")
+        self.write("shared/settings", "value 5;\n")
+
+    def unchanged(self):
+        for name, text in (("case/constant/settings", "value 1;\nother a;\n"),
+                           ("other/constant/settings", "value 7;\n"),
+                           ("shared/settings", "value 5;\n")):
+            with open(os.path.join(self.tmp, name)) as f:
+                self.assertEqual(f.read(), text, name)
+        self.assertEqual(sorted(os.listdir(self.tmp)),
+                         ["case", "other", "shared"])
+
+    def testValueNotOneWord(self):
+        """nan, inf, a ';' or a brace in a value: refused before any run
+        (adv44 a26: the values before it ran, then its run failed)"""
+        for values, why in (("2 nan", "nan is not a number"),
+                            ("2 3;fixed", "the value '3;fixed' holds ';'"),
+                            ("2 }", "the value '}' holds '}'")):
+            r = self.sweep("constant/settings/value", values)
+            self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+            self.assertIn(why, r.stderr)
+            self.assertIn("Nothing was run", r.stderr)
+            self.unchanged()
+
+
 if __name__ == "__main__":
     unittest.main()

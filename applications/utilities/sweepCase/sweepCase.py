@@ -427,6 +427,22 @@ def main():
         values = a.values.split()
         if not values:
             raise SweepError("-values: empty")
+        # each value one token of the entry, checked before anything runs
+        # (adv44 a26: nan, "22e-6;fixed" and "}" ran the values before them
+        # and then failed at their own run)
+        for v in values:
+            if re.fullmatch(r"[+-]?(nan|inf|infinity)", v, re.I):
+                raise SweepError(
+                    "-values '%s': %s is not a number (OpenFOAM reads it as"
+                    " a word): give finite numbers. Nothing was run"
+                    % (a.values, v))
+            bad = sorted(set(c for c in v if c in ';{}"#\\'))
+            if bad:
+                raise SweepError(
+                    "-values '%s': the value '%s' holds %s: a value is one "
+                    "word of the entry (a number or a name), without ; { } "
+                    "\" # \\. Nothing was run"
+                    % (a.values, v, " ".join("'%s'" % c for c in bad)))
         # every value carried by the dictionary as the runs read it
         # (adv44 a15): checked before anything is copied or run
         p = os.path.join(case, f)
