@@ -11,7 +11,10 @@
 #    nucleus height; p above half its peak, which must exceed 25 MPa) at
 #    0.05 ns + (Z - z_probe)/Us,
 #    Us = C0 + s up = 1515.65 m/s (50 MPa Hugoniot of water), within 3 %;
-#  - every coupling step converged; fluid and solid VTK files exist.
+#  - every coupling step converged; fluid and solid VTK files exist;
+#  - a restart after the Allrun's post-processing (solidToFoam wrote
+#    constant/solid/polyMesh) continues to a later end time (adv40 z19:
+#    refused as "constant/solid/polyMesh/boundary (added)").
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 work=${TMPDIR:-/tmp}/blastSmoke.$$
@@ -33,3 +36,17 @@ for png in fig10 interfaceMaxima snapshot65.5ns
 do
     [ -s "$case/$png.png" ] || { echo "FAIL: no $png.png"; exit 1; }
 done
+# The documented restart (startFrom latestTime) after the whole chain
+ls -d "$case"/constant/solid/polyMesh > /dev/null
+sed -i 's/^startFrom .*/startFrom       latestTime;/' "$case/system/controlDict"
+foamDictionary -entry endTime -set 2.4e-8 "$case/system/controlDict.allrun" \
+    > /dev/null
+cellBlastFoam -case "$case" > "$work.log" 2>&1 \
+    || { echo "FAIL: the restart after solidToFoam"; cat "$work.log"; exit 1; }
+rm -f "$work.log"
+last=$(foamListTimes -case "$case" -latestTime 2>/dev/null | tail -1)
+# (its last time within a step before 2.4e-8 s: OpenFOAM's end)
+/usr/bin/python3 -c "import sys; t = float(sys.argv[1]); \
+assert 2.35e-8 < t <= 2.4e-8, t" "$last" \
+    || { echo "FAIL: the restart ended at $last s, not at 2.4e-8 s"; exit 1; }
+echo "restart after solidToFoam: continued to $last s"
