@@ -72,7 +72,13 @@ diff <(cut -d, -f1-$(( $(head -1 "$work/table1.csv" | tr ',' '\n' | wc -l) - 2 )
     || fail "the rerun point's indicators differ"
 [ ! -d "$study/postProcessing/pulseStudy/points/p5e+07_T3e-09/case" ] \
     || fail "the rerun point's case was kept without -keep"
-echo "ok   interrupted point run again alone, same indicators"
+# its earlier case copy (the first run's, -keep) moved aside, not removed
+# (adv43 k21: a user's file in it was removed with it)
+[ -f "$study/postProcessing/pulseStudy/points/p5e+07_T3e-09/case.interrupted/log.pulseStudy" ] \
+    || fail "the interrupted point's case copy was not moved aside"
+grep -q "p5e+07_T3e-09: run again from the start; the case copy of its interrupted run (and any file you put in it) moved to $study/postProcessing/pulseStudy/points/p5e+07_T3e-09/case.interrupted" "$work/run4.log" \
+    || { cat "$work/run4.log"; fail "the case copy moved aside not said"; }
+echo "ok   interrupted point run again alone, same indicators; its case copy moved aside"
 
 # the 'uncertainty' sub-dictionary (unc20): at 50 MPa a variant (Table 2's
 # nucleus: C10 13.33 Pa, mu1 862.22 Pa against textFactor4's 6.67 and

@@ -228,6 +228,86 @@ class Records(TempDirTestCase):
         self.assertEqual(ps.differences(now, ps.inputs(d, q))[0][0],
                          "sampleInterval")
 
+    def testOutsideInputs(self):
+        """what the base case reads from outside it, as OpenFOAM reads it,
+        is a point's input (adv43 k23: a material set #included from
+        outside the base case changed between two runs of a study; the
+        finished point kept, the new one run with the other set, one
+        table of two models): an #include'd file (to its 17th digit), a
+        file it #includes in turn, an #includeEtc'd one, a boundary
+        condition's table; a record without them (an earlier build's)
+        refused"""
+        header = ("FoamFile { version 2.0; format ascii; class dictionary;"
+                  " object %s; }\n")
+        out = os.path.join(self.tmp, "outside")
+        self.write("outside/set", "C10 166.67;\n#include \"%s/deeper\"\n"
+                   % out)
+        self.write("outside/deeper", "d0 9.5e-10;\n")
+        self.write("outside/pulse.dat", "(\n(0 1e5)\n(1e-9 3e7)\n)\n")
+        self.write("base/Allrun", "#include \"%s/set\"\n" % out)
+        self.write("base/constant/solidProperties", header % "solidProperties"
+                   + "materials { membrane { #include \"%s/set\" } }\n"
+                   "#sinclude \"solidProperties.allrun\"\n" % out)
+        self.write("base/system/controlDict", header % "controlDict"
+                   + "#includeEtc \"caseDicts/meshQualityDict\"\n")
+        self.write("base/0.orig/p", header % "volScalarField" + """
+dimensions [1 -1 -2 0 0 0 0];
+internalField uniform 1e5;
+boundaryField
+{
+    top { type uniformFixedValue; uniformValue tableFile;
+          uniformValueCoeffs { file "%s/pulse.dat"; } }
+    inner { type uniformFixedValue; uniformValue tableFile;
+          uniformValueCoeffs { file "$FOAM_CASE/constant/inner.dat"; } }
+}
+""" % out)
+        self.write("base/constant/inner.dat", "(\n(0 1e5)\n)\n")
+        base = os.path.join(self.tmp, "base")
+        first = ps.outsideInputs(base)
+        self.assertEqual(sorted(first), sorted([
+            "%s/set (included by constant/solidProperties)" % out,
+            "%s/deeper (included by constant/solidProperties)" % out,
+            "constant/solidProperties as OpenFOAM reads it (foamDictionary "
+            "-expand)",
+            "system/controlDict as OpenFOAM reads it (foamDictionary "
+            "-expand)",
+            "%s/pulse.dat (entry 'file' of 0.orig/p)" % out]))
+        p = {"options": ["-h", "1"]}
+        before = ps.inputs({}, p, first)
+        self.assertEqual(ps.outsideInputs(base), first)
+        self.assertEqual(ps.differences(before, ps.inputs({}, p, first)), [])
+        for name, old, new, changed in (
+                ("set", "166.67", "166.6700001", ["/set (included", "as "
+                                                  "OpenFOAM reads it"]),
+                ("deeper", "9.5e-10", "9.6e-10", ["/deeper (included"]),
+                ("pulse.dat", "3e7", "4e7", ["/pulse.dat (entry 'file' of "
+                                             "0.orig/p)"])):
+            text = self.read("outside/" + name)
+            self.write("outside/" + name, text.replace(old, new))
+            diff = ps.differences(before, ps.inputs({}, p, ps.outsideInputs(
+                base)))
+            self.assertEqual(diff[0][0], "baseCase")
+            self.assertIn("what it reads from outside its folder differs "
+                          "from what the point ran with: %s" % out,
+                          diff[0][1])
+            for c in changed:
+                self.assertIn(c, diff[0][1])
+            self.write("outside/" + name, text)
+            self.assertEqual(ps.outsideInputs(base), first)
+        # the etc file: as OpenFOAM reads the controlDict (to 17 digits)
+        etc = ps.outsideInputs(base)
+        self.write("base/system/controlDict", header % "controlDict"
+                   + "#includeEtc \"caseDicts/meshQualityDict\"\n"
+                   "maxNonOrtho 64.9999999;\n")
+        self.assertNotEqual(ps.outsideInputs(base), etc)
+        # a record of an earlier build (no 'outside'): refused
+        old = ps.inputs({}, p)
+        diff = ps.differences(old, before)
+        self.assertIn("(not in the point's record: a record of an earlier "
+                      "build)", diff[0][1])
+        # nothing read from outside: nothing to compare
+        self.assertEqual(ps.differences(old, ps.inputs({}, p, {})), [])
+
     def testRecord(self):
         path = os.path.join(self.tmp, "result.json")
         self.assertIsNone(ps.readRecord(path))
@@ -323,10 +403,12 @@ class Records(TempDirTestCase):
             self.assertEqual(f.read(), "# my notes\n")
 
     def testInterruptedPointKeepsTheUsersFiles(self):
-        """a point interrupted earlier is run again from the start: its case
-        copy and a record's temporary file are removed, a file of the
-        user's in the point's folder is kept (adv42 g13: the whole folder
-        was removed with the user's notes.md in it)"""
+        """a point interrupted earlier is run again from the start: a
+        record's temporary file is removed, its case copy moved aside
+        (case.interrupted, case.interrupted1, ...: adv43 k21, a file of the
+        user's in it was removed with it), a file of the user's in the
+        point's folder is kept (adv42 g13: the whole folder was removed
+        with the user's notes.md in it)"""
         import importlib.util
         import io
         import sys
@@ -347,6 +429,9 @@ class Records(TempDirTestCase):
         folder = os.path.join(self.tmp, "points", "p1")
         self.write("points/p1/case/constant/x", "the killed run's\n")
         self.write("points/p1/case/1e-09/p", "the killed run's\n")
+        self.write("points/p1/case/notes.txt", "my case notes\n")
+        self.write("points/p1/case/postProcessing/fsi/0/notes.txt",
+                   "my fsi notes\n")
         self.write("points/p1/result.json.tmp123", "{")
         self.write("points/p1/notes.md", "# my notes\n")
         os.makedirs(os.path.join(folder, "myPlots"))
@@ -357,7 +442,7 @@ class Records(TempDirTestCase):
             app.runPoint({}, staging, {"label": "p1", "options": []}, {},
                          folder, False)
         self.assertEqual(sorted(os.listdir(folder)),
-                         ["case", "myPlots", "notes.md"])
+                         ["case", "case.interrupted", "myPlots", "notes.md"])
         with open(os.path.join(folder, "notes.md")) as f:
             self.assertEqual(f.read(), "# my notes\n")
         self.assertTrue(os.path.isfile(
@@ -370,6 +455,28 @@ class Records(TempDirTestCase):
                       "study's): myPlots, notes.md" % folder, out.getvalue())
         self.assertEqual(app.pointFiles(folder),
                          ([], ["myPlots", "notes.md"]))
+        # the interrupted run's case copy moved aside whole with the user's
+        # files in it (adv43 k07, k20 (c), k21: removed with it)
+        aside = os.path.join(folder, "case.interrupted")
+        with open(os.path.join(aside, "postProcessing", "fsi", "0",
+                               "notes.txt")) as f:
+            self.assertEqual(f.read(), "my fsi notes\n")
+        with open(os.path.join(aside, "notes.txt")) as f:
+            self.assertEqual(f.read(), "my case notes\n")
+        self.assertTrue(os.path.isfile(os.path.join(aside, "1e-09", "p")))
+        self.assertIn("p1: run again from the start; the case copy of its "
+                      "interrupted run (and any file you put in it) moved "
+                      "to %s: the study does not read it again" % aside,
+                      out.getvalue())
+        # again: the next free name, the first copy kept
+        with redirect_stdout(out), self.assertRaisesRegex(
+                caseRuns.RunError, "exit 3"):
+            app.runPoint({}, staging, {"label": "p1", "options": []}, {},
+                         folder, False)
+        self.assertEqual(sorted(os.listdir(folder)),
+                         ["case", "case.interrupted", "case.interrupted1",
+                          "myPlots", "notes.md"])
+        self.assertTrue(os.path.isfile(os.path.join(aside, "notes.txt")))
 
 
 if __name__ == "__main__":

@@ -140,6 +140,20 @@ class ScriptErrors(TempDirTestCase):
         self.assertEqual(script.message(c.exception),
                          "/dev/full: No space left on device")
 
+    def testFullDiskOutsideWritingNamesTheFile(self):
+        # adv38 x55 (still on fix19x): a write on a full disk outside
+        # script.writing names no file; the file is found from the
+        # traceback (a file object open for writing)
+        r = self.run_("from neuronFsi import script\nscript.guard()\n"
+                      "def save(path):\n"
+                      "    with open(path, 'w') as f:\n"
+                      "        f.write('x' * 100000)\n"
+                      "save('/dev/full')\n")
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("/dev/full: No space left on device (", r.stderr)
+        self.assertIn("bytes free on the device of '/dev')", r.stderr)
+        self.assertNotIn("a file could not be written", r.stderr)
+
     def testMessage(self):
         self.assertIsNone(script.message(ValueError("x")))
         self.assertIn("missing.dat", script.message(

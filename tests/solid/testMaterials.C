@@ -571,6 +571,48 @@ TEST(SolidMaterial, ParameterEntriesAndValidation)
               .find("'tau1'"), std::string::npos);
     EXPECT_NE(errorOf({{"C10", "1"}, {"d0", "-1e-3"}}).find("'d0'"),
               std::string::npos);
+    // nan, inf: not a number, with the entry's valid range (adv42 g25: d0,
+    // C0, Gamma0 gave none); an entry the law does not read: none
+    const std::map<std::string, std::string> water
+    {
+        {"rho0", "1000"}, {"C10", "1"}, {"volumetric", "mieGruneisen"},
+        {"C0", "1450"}, {"s", "1.99"}, {"Gamma0", "0.1"}, {"Cv", "4184"},
+        {"T0", "293.15"}
+    };
+    for (const char* key : {"C0", "Gamma0", "s", "Cv", "T0", "rho0", "C10"})
+    {
+        for (const char* bad : {"nan", "inf", "soft"})
+        {
+            auto e = water;
+            e[key] = bad;
+            const std::string what(errorOf(e));
+            EXPECT_NE
+            (
+                what.find
+                (
+                    "entry '" + std::string(key) + "' = '" + bad
+                  + "' is not a number; valid range "
+                ),
+                std::string::npos
+            ) << what;
+            EXPECT_EQ(what.find("e+308"), std::string::npos) << what;
+        }
+    }
+    auto eNan = water;
+    eNan["Gamma0"] = "nan";
+    EXPECT_NE(errorOf(eNan).find("valid range (0, 10) -"), std::string::npos)
+        << errorOf(eNan);
+    EXPECT_NE
+    (
+        errorOf({{"C10", "1"}, {"volumetric", "quadratic"}, {"d0", "inf"}})
+       .find("entry 'd0' = 'inf' is not a number; valid range [0, "),
+        std::string::npos
+    ) << errorOf({{"C10", "1"}, {"volumetric", "quadratic"}, {"d0", "inf"}});
+    eNan = water;
+    eNan["d0"] = "nan";     // not read by mieGruneisen: no range
+    EXPECT_NE(errorOf(eNan).find("entry 'd0' = 'nan' is not a number"),
+              std::string::npos) << errorOf(eNan);
+    EXPECT_EQ(errorOf(eNan).find("valid range"), std::string::npos);
     // finite but beyond the physical bounds (physicalBounds.H; issue 19,
     // adv30 sp18b, hg01, hg02: a floating-point exception in the run)
     EXPECT_NE(errorOf({{"C10", "1e300"}}).find("'C10' = 1e+300 Pa is "

@@ -20,12 +20,15 @@ Description
     its inputs (the base case's files after its Allclean, its Allrun
     options, the strain-rate window) and is not run again; a point
     interrupted (a folder without a result) is run again from the start
-    (its case copy removed; a file of the user's in its folder is kept).
+    (its case copy moved aside to points/<label>/case.interrupted[N], kept
+    for the user; a file of the user's in its folder is kept).
     The record carries the digest of its own values and its point,
     verified on every read: a damaged record, or another point's, is
     refused naming the file (nothing runs; it is left for the user).
     A dictionary whose inputs differ from those of the finished points
-    (another base case or options) is refused with the entry named:
+    (another base case or options, or a file the base case reads from
+    outside it by an #include or a 'file' entry) is refused with the
+    entry and the file named:
     nothing is run (move postProcessing/pulseStudy/points away to start
     over). Thresholds may change between runs (no point runs again).
 
@@ -55,6 +58,7 @@ Usage
 import argparse
 import math
 import os
+import re
 import shlex
 import shutil
 import sys
@@ -91,7 +95,8 @@ def _shown(ind):
 
 def prepareBase(s, out):
     """A copy of the base case after its Allclean (out/base), from which
-    every point's case is copied; {file: digest} of its files."""
+    every point's case is copied; {file: digest} of its files (what they
+    read from outside it: pulseStudy.outsideInputs of the copy)."""
     staging = os.path.join(out, "base")
     if os.path.lexists(staging):
         caseRuns.checkNoEarlierRun(staging)
@@ -135,13 +140,15 @@ def filesNotIn(copy, original):
 
 
 def pointFiles(folder):
-    """The entries of a point's folder besides its case copy: (those the
-    study writes there: result.json and its temporary files
-    result.json.tmp<pid>; every other one, the user's), by name."""
+    """The entries of a point's folder besides its case copy and the
+    copies of interrupted runs moved aside (case.interrupted[N], named
+    when moved): (those the study writes there: result.json and its
+    temporary files result.json.tmp<pid>; every other one, the user's),
+    by name."""
     ours, others = [], []
     if os.path.isdir(folder) and not os.path.islink(folder):
         for f in sorted(os.listdir(folder)):
-            if f == "case":
+            if f == "case" or re.fullmatch(r"case\.interrupted\d*", f):
                 continue
             if f == "result.json" or (f.startswith("result.json.tmp")
                                       and f[15:].isdigit()):
@@ -151,18 +158,34 @@ def pointFiles(folder):
     return ours, others
 
 
+def caseAside(folder):
+    """The free name folder/case.interrupted, case.interrupted1, ...
+    that the case copy of a point's interrupted run is moved to."""
+    n = 0
+    while os.path.lexists(os.path.join(
+            folder, "case.interrupted" + (str(n) if n else ""))):
+        n += 1
+    return os.path.join(folder, "case.interrupted" + (str(n) if n else ""))
+
+
 def runPoint(s, staging, point, inputs, folder, keep):
     """Run one point in folder/case; its record."""
     case = os.path.join(folder, "case")
     # interrupted earlier: from scratch (a run left going: refused in
-    # main). Only what the study wrote is removed: the point's case copy
-    # and its record (and a record's temporary file); a file of the
-    # user's beside them is kept and named (adv42 g13: the point's folder
-    # was removed with the user's notes.md in it)
+    # main). Only what the study wrote is removed: the point's record (and
+    # a record's temporary file); the case copy is moved aside; a file of
+    # the user's beside them is kept and named (adv42 g13: the point's
+    # folder was removed with the user's notes.md in it)
     kept = pointFiles(folder)[1]
+    aside = None
     if os.path.lexists(case):
         if os.path.isdir(case) and not os.path.islink(case):
-            shutil.rmtree(case)
+            # the interrupted run's case copy may hold a file of the user's
+            # among the run's (adv43 k07, k20 (c), k21: a notes.txt in it
+            # and in its postProcessing/fsi/0/ were removed with it): moved
+            # aside whole, never removed
+            aside = caseAside(folder)
+            os.rename(case, aside)
         else:
             os.remove(case)
     for f in pointFiles(folder)[0]:
@@ -171,6 +194,11 @@ def runPoint(s, staging, point, inputs, folder, keep):
         print("    %s: run again from the start; kept in %s (not the "
               "study's): %s" % (point["label"], folder, ", ".join(kept)),
               flush=True)
+    if aside:
+        print("    %s: run again from the start; the case copy of its "
+              "interrupted run (and any file you put in it) moved to %s: "
+              "the study does not read it again, remove it when you no "
+              "longer need it" % (point["label"], aside), flush=True)
     os.makedirs(folder, exist_ok=True)
     shutil.copytree(staging, case, symlinks=True)
     # a variant or a finite-difference run of the uncertainty: its material
@@ -662,13 +690,14 @@ def main():
             caseRuns.checkNoEarlierRun(
                 os.path.join(out, "points", label, "case"))
         staging, digests = prepareBase(s, out)
+        outside = ps.outsideInputs(staging)
         pts = ps.points(s)
         upts = ps.uncertaintyPoints(s)
         todo, records = [], {}
         for p in pts + upts:
             folder = os.path.join(out, "points", p["label"])
             p["folder"] = folder
-            p["inputs"] = ps.inputs(digests, p)
+            p["inputs"] = ps.inputs(digests, p, outside)
             p["inputs"]["strainRateWindow"] = s["window"]
             r = ps.readRecord(os.path.join(folder, "result.json"), p)
             if r is None:
@@ -682,8 +711,9 @@ def main():
                 raise ps.StudyError(
                     "%s: entry '%s' differs from that of the finished point "
                     "%s (%s): its result would not be that of this "
-                    "dictionary. Nothing was run: restore the entry, or "
-                    "move %s away to start the study over"
+                    "dictionary. Nothing was run: restore the entry (or "
+                    "the file named), or move %s away to start the study "
+                    "over"
                     % (s["dict"], diff[0][0], p["label"], diff[0][1],
                        os.path.join(out, "points")))
             records[p["label"]] = r

@@ -716,14 +716,12 @@ void Foam::solidDomain::setupProbes()
         const dictionary& ip = foamTools::subDict(dict_, "interfaceProbe");
         foamTools::checkKeywords(ip, {"regions", "heightFraction", "side"});
         const Pair<word> regions(ip.get<Pair<word>>("regions"));
-        const scalar f = ip.get<scalar>("heightFraction");
-        if (!(f > 0 && f < 1))
-        {
-            FatalIOErrorInFunction(ip)
-                << "interfaceProbe: heightFraction " << f << " [-] out of "
-                << "range: 0 < heightFraction < 1 (of the inner region's "
-                << "height)" << exit(FatalIOError);
-        }
+        // The fraction of the inner region's height, in (0, 1); nan, inf
+        // named with the range (adv42 g25: OpenFOAM's "Wrong token type")
+        const scalar f = foamTools::readInRange<scalar>
+        (
+            ip, "heightFraction", "-", 0, 1, false, false
+        );
         const word side(ip.getOrDefault<word>("side", "outer"));
         if (side != "outer" && side != "inner")
         {

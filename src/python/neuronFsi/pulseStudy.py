@@ -383,10 +383,103 @@ def fileDigests(folder):
     return out
 
 
-def inputs(baseDigests, point):
-    """What a point's results depend on: the base case's files and the
-    Allrun command line."""
+# An include directive of OpenFOAM's dictionaries: #include, #sinclude,
+# #includeIfPresent, #includeEtc, #includeFunc
+_INCLUDE = re.compile(rb"#s?include\w*")
+# A 'file' entry (a tableFile's or csvFile's table, the solid's mesh)
+_FILE = re.compile(r'(?<![\w.])file\s+(?:"([^"]*)"|([^\s;"]+))\s*;')
+
+
+def _inside(path, folder):
+    path, folder = os.path.realpath(path), os.path.realpath(folder)
+    return path == folder or path.startswith(folder + os.sep)
+
+
+def outsideInputs(case):
+    """What the dictionaries of case (the files of its folders, e.g.
+    constant/, system/, 0.orig/) read from outside it, resolved as
+    OpenFOAM resolves it (adv43 k23: a material set #included from
+    outside the base case was changed between two runs of a study, and
+    the finished points were kept, the new ones run with the other set):
+    {key: sha256}, keys
+
+      "<file> as OpenFOAM reads it (foamDictionary -expand)": each file
+          with an include directive (#include, #sinclude, #includeEtc,
+          #includeFunc, ...), the dictionary it makes with every include
+          expanded, every number with 17 digits (foamDictionary
+          -precision 17 -expand; a file it cannot read: its message)
+      "<absolute path> (included by <file>)": the bytes of each file
+          outside case the #include and #sinclude directives name
+          (foamDictionary -includes), to name the file that changed
+      "<absolute path> (entry 'file' of <file>)": the bytes of each file
+          outside case a 'file' entry names (a boundary condition's
+          tableFile, the solid's mesh), relative paths from case
+
+    A file inside case is a file of the case (its own digest)."""
+    import shutil
+    import subprocess
+    out = {}
+    # a #calc or #codeStream compiles its code into <case>/dynamicCode:
+    # removed again if this made it (the case's files are its inputs)
+    code = os.path.join(case, "dynamicCode")
+    hadCode = os.path.lexists(code)
+
+    def foamDictionary(args, rel):
+        r = subprocess.run(["foamDictionary", "-case", case] + args + [rel],
+                           cwd=case, stdout=subprocess.PIPE,
+                           stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL)
+        return r.returncode, r.stdout
+
+    def named(text, rel):
+        for m in _FILE.finditer(text):
+            name = m.group(1) if m.group(1) is not None else m.group(2)
+            for var in ("$FOAM_CASE", "${FOAM_CASE}", "<case>"):
+                name = name.replace(var, case)
+            name = os.path.expanduser(os.path.expandvars(name))
+            path = os.path.normpath(os.path.join(case, name))
+            if os.path.isfile(path) and not _inside(path, case):
+                with open(path, "rb") as h:
+                    out["%s (entry 'file' of %s)" % (path, rel)] = \
+                        hashlib.sha256(h.read()).hexdigest()
+
+    for root, dirs, files in os.walk(case):
+        dirs.sort()
+        if root == case:
+            continue        # Allrun, Allclean, README: not dictionaries
+        for f in sorted(files):
+            full = os.path.join(root, f)
+            rel = os.path.relpath(full, case)
+            if not os.path.isfile(full):
+                continue
+            with open(full, "rb") as h:
+                data = h.read()
+            text = data
+            if _INCLUDE.search(data):
+                rc, text = foamDictionary(["-precision", "17", "-expand"],
+                                          rel)
+                out["%s as OpenFOAM reads it (foamDictionary -expand)"
+                    % rel] = hashlib.sha256(text).hexdigest()
+                if rc == 0:
+                    for line in foamDictionary(["-includes"], rel)[1] \
+                            .decode(errors="replace").splitlines():
+                        path = line.strip().strip('"')
+                        if os.path.isabs(path) and os.path.isfile(path) \
+                                and not _inside(path, case):
+                            with open(path, "rb") as h:
+                                out["%s (included by %s)" % (path, rel)] = \
+                                    hashlib.sha256(h.read()).hexdigest()
+            named(text.decode("latin-1"), rel)
+    if not hadCode and os.path.isdir(code):
+        shutil.rmtree(code)
+    return out
+
+
+def inputs(baseDigests, point, outside=None):
+    """What a point's results depend on: the base case's files, what they
+    read from outside it (outsideInputs) and the Allrun command line."""
     out = {"baseFiles": baseDigests, "options": point["options"]}
+    if outside is not None:
+        out["outside"] = outside
     if point.get("change"):
         out["materials"] = point["change"]
     return out
@@ -402,6 +495,21 @@ def differences(before, now):
         out.append(("baseCase", "its files differ from those the point ran "
                     "with: %s" % ", ".join(files[:5])
                     + (" ..." if len(files) > 5 else "")))
+    # what the base case reads from outside it: a record of an earlier
+    # build holds none (what it ran with is not known: refused as well)
+    ob, on = before.get("outside", {}), now.get("outside", {})
+    files = sorted((f for f in set(ob) | set(on) if ob.get(f) != on.get(f)),
+                   key=lambda f: (not f.startswith("/"), f))
+    if files:
+        out.append(("baseCase", "what it reads from outside its folder "
+                    "differs from what the point ran with: %s" % "; ".join(
+                        "%s%s" % (f, " (no longer read)" if f not in on
+                                  else "" if f in ob else
+                                  " (not in the point's record%s)" % (
+                                      "" if "outside" in before else
+                                      ": a record of an earlier build"))
+                        for f in files[:4])
+                    + (" ..." if len(files) > 4 else "")))
     ob, on = before.get("options", []), now["options"]
     if ob != on:
         key = "sampleInterval" if _option(ob, "-writeInterval") != \

@@ -26,6 +26,7 @@ A script run without the project's environment cannot import neuronFsi
 """
 
 import contextlib
+import errno
 import os
 import sys
 
@@ -36,9 +37,43 @@ def _ours(err):
                for c in type(err).__mro__)
 
 
-def message(err):
+def _writtenFile(tb):
+    """The file an OSError without a file name was raised on (a full disk:
+    write() or the flush at close name none; adv38 x55, a write outside
+    writing()): the innermost file object open for writing among the
+    locals of the frames of its traceback tb (a `with open(...) as f`
+    body, a writer's close); None if none is found."""
+    import io
+    frames = []
+    while tb is not None:
+        frames.append(tb.tb_frame)
+        tb = tb.tb_next
+    for frame in reversed(frames):
+        for v in list(frame.f_locals.values()):
+            if isinstance(v, (io.TextIOWrapper, io.BufferedWriter,
+                              io.BufferedRandom, io.FileIO)) \
+                    and isinstance(getattr(v, "name", None), str) \
+                    and any(m in getattr(v, "mode", "") for m in "wax+"):
+                return v.name
+    return None
+
+
+def _spaceNote(name):
+    """" (N bytes free on the device of '<dir>')" for the file name, "" if
+    not known."""
+    d = os.path.dirname(os.path.abspath(name))
+    try:
+        s = os.statvfs(d)
+    except OSError:
+        return ""
+    return " (%d bytes free on the device of '%s')" % (s.f_bavail*s.f_frsize,
+                                                       d)
+
+
+def message(err, tb=None):
     """The one-line message of an input's or environment's error, or None
-    for any other exception."""
+    for any other exception; tb: its traceback (names the file an OSError
+    without a file name was written to, _writtenFile)."""
     if _ours(err):
         return str(err)
     if isinstance(err, FileNotFoundError) and err.filename and \
@@ -50,7 +85,14 @@ def message(err):
     if isinstance(err, OSError) and err.filename:
         return "%s: %s" % (err.filename, err.strerror or err)
     if isinstance(err, OSError) and err.errno:
-        # no file named (adv33 x12: a full disk inside matplotlib's save)
+        # no file named (adv33 x12: a full disk inside matplotlib's save;
+        # adv38 x55: planeWave on a full disk): the file found from the
+        # traceback, with the space left on its device
+        name = _writtenFile(tb)
+        if name:
+            return "%s: %s%s" % (name, err.strerror or err,
+                                 _spaceNote(name) if err.errno in (
+                                     errno.ENOSPC, errno.EDQUOT) else "")
         return "a file could not be written or read: %s" \
             % (err.strerror or err)
     return None
@@ -75,7 +117,7 @@ def writing(path, mode="w"):
 
 def _hook(name):
     def hook(kind, err, tb):
-        text = message(err) if isinstance(err, Exception) else None
+        text = message(err, tb) if isinstance(err, Exception) else None
         if text is None:
             sys.__excepthook__(kind, err, tb)
         else:

@@ -5,6 +5,7 @@
 #include "SolidError.H"
 #include "physicalBounds.H"
 #include "closestKeyword.H"
+#include "eosStatus.H"
 
 #include <cstdlib>
 #include <limits>
@@ -21,6 +22,7 @@ solid::MaterialParameters solid::MaterialParameters::fromEntries
     par.name = name;
     const std::string ctx = "material '" + name + "'";
     std::map<int, double> mu, tau, eta;
+    std::string notNumber, notNumberWhy;
     const std::map<std::string, double*> scalars =
     {
         {"rho0", &par.rho0}, {"C10", &par.C10}, {"d0", &par.d0},
@@ -49,7 +51,22 @@ solid::MaterialParameters solid::MaterialParameters::fromEntries
         const auto it = scalars.find(key);
         if (it != scalars.end())
         {
-            *it->second = entries.real(key);
+            try
+            {
+                *it->second = entries.real(key);
+            }
+            catch (const SolidError& err)
+            {
+                // nan, inf, a word: refused below with the entry's valid
+                // range (adv42 g25: d0, C0, Gamma0 "is not a number", no
+                // range), a value outside every range in its place
+                if (notNumber.empty())
+                {
+                    notNumber = key;
+                    notNumberWhy = err.what();
+                }
+                *it->second = eos::outsideEveryRange();
+            }
             continue;
         }
         bool branch = false;
@@ -160,6 +177,26 @@ solid::MaterialParameters solid::MaterialParameters::fromEntries
             b.tau = eta[n]/b.mu;
         }
         par.branches.push_back(b);
+    }
+    // The first entry that is not a number, with its valid range: the one
+    // the law's check gives in its place (none for an entry the law does
+    // not read)
+    if (!notNumber.empty())
+    {
+        std::string range;
+        try
+        {
+            Material::create(par);
+        }
+        catch (const std::exception& err)
+        {
+            range = eos::validRangeOf(err.what(), notNumber);
+        }
+        throw SolidError
+        (
+            SolidError::Kind::parameter,
+            notNumberWhy + (range.empty() ? "" : "; valid range " + range)
+        );
     }
     // Validate now so that errors point at the dictionary
     Material::create(par);

@@ -10,12 +10,54 @@ Description
 #include "StiffenedGas.H"
 #include "IdealGas.H"
 #include "inputChecks.H"
+#include "DynamicList.H"
+#include "Pair.H"
 
 namespace Foam
 {
 
 namespace
 {
+    //- The coefficients read by readCoeff that are not numbers (name,
+    //  text), cleared by checkNumbers
+    DynamicList<Pair<word>>& notNumbers()
+    {
+        static DynamicList<Pair<word>> list;
+        return list;
+    }
+
+    //- A FatalIOError on dict naming the first coefficient read that is
+    //  not a number and the valid range the law gives it (its check of a
+    //  value outside every range in its place: eos::validRangeOf)
+    template<class Law>
+    void checkNumbers
+    (
+        const dictionary& dict,
+        const typename Law::Parameters& par
+    )
+    {
+        if (notNumbers().empty())
+        {
+            return;
+        }
+        const Pair<word> first(notNumbers().first());
+        notNumbers().clear();
+        std::string range;
+        try
+        {
+            Law law(par);
+        }
+        catch (const eos::ParameterError& err)
+        {
+            range = eos::validRangeOf(err.what(), first.first());
+        }
+        FatalIOErrorInFunction(dict)
+            << "entry '" << first.first() << "' = '" << first.second().c_str()
+            << "' is not a number"
+            << (range.empty() ? "" : "; valid range " + range).c_str()
+            << exit(FatalIOError);
+    }
+
     //- Read a coefficient [SI], optionally preceded by its dimensions,
     //  which must then match dims (a FatalIOError naming the entry, not
     //  the abort of dimensioned<Type>::initialize); nothing after it
@@ -39,7 +81,18 @@ namespace
                     << "; expected " << dims << exit(FatalIOError);
             }
         }
-        const scalar value = readScalar(is);
+        // nan, inf (words to OpenFOAM's reader: "Wrong token type", no
+        // range, adv42 g25) or another word: named by checkNumbers with
+        // the law's range, a value outside every range in its place
+        const token v(is);
+        if (!v.isNumber())
+        {
+            OStringStream text;
+            text << v;
+            notNumbers().append(Pair<word>(name, text.str()));
+            return eos::outsideEveryRange();
+        }
+        const scalar value = v.number();
         is.check(FUNCTION_NAME);
         OStringStream expected;
         expected
@@ -69,6 +122,7 @@ rhoEThermoModel<eos::MieGruneisen>::readParameters(const dictionary& dict)
     par.Gamma0 = readCoeff(dict, "Gamma0", dimless);
     par.Cv = readCoeff(dict, "Cv", dimEnergy/dimMass/dimTemperature);
     par.T0 = readCoeff(dict, "T0", dimTemperature);
+    checkNumbers<eos::MieGruneisen>(dict, par);
     // Inside the valid range but not a liquid's or solid's value: other
     // units, likely (adv37 w79); said now and in an invalid state's message
     rhoEThermo::implausibleNote() = eos::MieGruneisen::implausible(par);
@@ -97,6 +151,7 @@ rhoEThermoModel<eos::StiffenedGas>::readParameters(const dictionary& dict)
     par.gamma = readCoeff(dict, "gamma", dimless);
     par.pInf = readCoeff(dict, "pInf", dimPressure);
     par.Cv = readCoeff(dict, "Cv", dimEnergy/dimMass/dimTemperature);
+    checkNumbers<eos::StiffenedGas>(dict, par);
     return par;
 }
 
@@ -115,6 +170,7 @@ rhoEThermoModel<eos::IdealGas>::readParameters(const dictionary& dict)
     eos::IdealGas::Parameters par;
     par.gamma = readCoeff(dict, "gamma", dimless);
     par.Cv = readCoeff(dict, "Cv", dimEnergy/dimMass/dimTemperature);
+    checkNumbers<eos::IdealGas>(dict, par);
     return par;
 }
 
