@@ -74,4 +74,7 @@ V = {
  "adv40_z29": ("OK", "as w92: after solidToFoam the restart is now refused first for z19's reason ('constant/solid/polyMesh/boundary (added)'), no longer reaching the damaged dataset's digest64 (adv42); refused either way; solidToFoam and the Python reader as before"),
  "adv40_z39": ("OK", "interfacePatches.dat listed too"),
  "adv41_q12": ("OK", "rank 0's message printed this time, as adv41 out/M"),
+ "adv36_v56": ("OK", "the case's timeout reached while progressing (load; row B instead of C1), no signal, as adv42 noted"),
+ "adv40_z06": ("OK", "process id only"),
+ "adv40_z07": ("OK", "a line number of solidProperties (83 -> 89)"),
 }
