@@ -515,6 +515,19 @@ class Command(TempDirTestCase):
         with self.assertRaisesRegex(paperCases.PaperError,
                                     "blast10ns is a file, not a folder"):
             paperCases.make(cases["blast10ns"], self.case)
+        # a folder of the user's own there (no Allrun: not a run folder
+        # the comparison made): kept, refused (adv44 a12: removed)
+        os.remove(d10)
+        write(os.path.join(d10, "notes.md"), "# my notes\n")
+        write(os.path.join(d10, "myAnalysis", "fit.py"), "print(1)\n")
+        with self.assertRaisesRegex(paperCases.PaperError,
+                                    "blast10ns: .*blast10ns holds no Allrun"
+                                    ": it is not a run folder of the "
+                                    "comparison.*Nothing was changed"):
+            paperCases.make(cases["blast10ns"], self.case)
+        self.assertEqual(read(os.path.join(d10, "notes.md")), "# my notes\n")
+        self.assertTrue(os.path.isfile(os.path.join(d10, "myAnalysis",
+                                                    "fit.py")))
 
     def testBadDictionary(self):
         path = os.path.join(self.case, "system", "paperDict")

@@ -81,6 +81,18 @@ class Dictionary(TempDirTestCase):
     def testEmptyGrid(self):
         self.refused("entry 'overpressure' is empty", overpressure="()")
 
+    def testValuesOfOneLabel(self):
+        """two values equal to 6 digits share the points' label, folder and
+        record (adv44 a03: the first point's result replaced, a table of
+        two equal rows, rc 0)"""
+        self.refused("entry 'overpressure': the values 30000000.0 Pa and "
+                     "30000000.1 Pa are equal to 6 significant digits, the "
+                     "points' label \\(p3e\\+07, one folder",
+                     overpressure="(30e6 30.0000001e6)")
+        self.refused("entry 'duration': the values 2e-09 s and "
+                     "2.0000001e-09 s are equal to 6 significant digits",
+                     duration="(2e-9 2.0000001e-9)")
+
     def testValueTwice(self):
         self.refused("entry 'duration': the value 5e-09 s is given twice",
                      duration="(5e-9 2e-9 5e-9)")
@@ -294,6 +306,13 @@ boundaryField
                 self.assertIn(c, diff[0][1])
             self.write("outside/" + name, text)
             self.assertEqual(ps.outsideInputs(base), first)
+        # a comment, the layout or a number's spelling is no change, as
+        # in the solvers' record (adv44 a40 (b), (c))
+        text = self.read("outside/set")
+        self.write("outside/set", "// a comment\n" + text.replace(
+            "166.67", "1.6667e2").replace(";", " ;"))
+        self.assertEqual(ps.outsideInputs(base), first)
+        self.write("outside/set", text)
         # the etc file: as OpenFOAM reads the controlDict (to 17 digits)
         etc = ps.outsideInputs(base)
         self.write("base/system/controlDict", header % "controlDict"

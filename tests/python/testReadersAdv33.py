@@ -140,6 +140,20 @@ class ScriptErrors(TempDirTestCase):
         self.assertEqual(script.message(c.exception),
                          "/dev/full: No space left on device")
 
+    def testWritingReplacesALink(self):
+        # adv44 a17: a link at an output's path was written through, the
+        # user's file it points to (outside the case) overwritten
+        shared = self.write("shared.md", "my shared notes\n")
+        out = os.path.join(self.tmp, "results.md")
+        os.symlink(shared, out)
+        with script.writing(out) as f:
+            f.write("results\n")
+        self.assertFalse(os.path.islink(out))
+        with open(out) as f:
+            self.assertEqual(f.read(), "results\n")
+        with open(shared) as f:
+            self.assertEqual(f.read(), "my shared notes\n")
+
     def testFullDiskOutsideWritingNamesTheFile(self):
         # adv38 x55 (still on fix19x): a write on a full disk outside
         # script.writing names no file; the file is found from the
@@ -152,6 +166,25 @@ class ScriptErrors(TempDirTestCase):
         self.assertEqual(r.returncode, 1)
         self.assertIn("/dev/full: No space left on device (", r.stderr)
         self.assertIn("bytes free on the device of '/dev')", r.stderr)
+        self.assertNotIn("a file could not be written", r.stderr)
+
+    def testFullDiskStandardOutputNamed(self):
+        # adv38 x55 (still on fix19z's first version): planeWave's print to
+        # its log on a full file system raised ENOSPC; the log is the
+        # standard output, a regular file on a device with (here: said to
+        # have) no space left
+        log = os.path.join(self.tmp, "log.pw")
+        body = ("import os\nfrom neuronFsi import script\nscript.guard()\n"
+                "class Full:\n    f_bavail = 0\n    f_frsize = 4096\n"
+                "os.fstatvfs = lambda fd: Full\n"
+                "raise OSError(28, 'No space left on device')\n")
+        p = self.write("s.py", body)
+        with open(log, "w") as out:
+            r = subprocess.run([sys.executable, p], stdout=out,
+                               stderr=subprocess.PIPE, text=True)
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("error: the standard output (%s): No space left on "
+                      "device (" % log, r.stderr)
         self.assertNotIn("a file could not be written", r.stderr)
 
     def testMessage(self):

@@ -623,18 +623,23 @@ class Calibration:
         sp = self.model.solid_properties(cal)
         i = sp.find("\n", sp.find("\\*---"))
         sp = sp[:i + 1] + header + sp[i + 1:]
+        # script.writing: a symbolic link there is replaced, its target
+        # (a user's file elsewhere) not written through (adv44 a17)
         out = os.path.join(self.case, "constant/solidProperties.calibrated")
-        open(out, "w").write(sp)
+        with script.writing(out) as f:
+            f.write(sp)
         written = [out]
         if "delta0" in v:
             out = os.path.join(self.case,
                                "constant/indenterProperties.calibrated")
-            open(out, "w").write(self.model.indenter_properties(v["delta0"]))
+            with script.writing(out) as f:
+                f.write(self.model.indenter_properties(v["delta0"]))
             written.append(out)
         pp = os.path.join(self.case, "postProcessing/calibration")
         os.makedirs(pp, exist_ok=True)
-        open(os.path.join(pp, "results.md"), "w").write(text)
-        with open(os.path.join(pp, "evaluations.csv"), "w") as f:
+        with script.writing(os.path.join(pp, "results.md")) as f:
+            f.write(text)
+        with script.writing(os.path.join(pp, "evaluations.csv")) as f:
             f.write("evaluation,kind," + ",".join(
                 "%s [%s]" % (p.name, unit(p.name)) for p in self.free)
                 + ",residual norm,wall [s],cpu [s]\n")
@@ -645,7 +650,7 @@ class Calibration:
                     rec["n"], rec["kind"], ",".join(
                         "%.8g" % rec["values"][p.name] for p in self.free),
                     rec["norm"], rec["run"]["wall"], rec["run"]["cpu"]))
-        with open(os.path.join(pp, "parameters.csv"), "w") as f:
+        with script.writing(os.path.join(pp, "parameters.csv")) as f:
             f.write("parameter,unit,initial,fitted,standard error,"
                     "95% low,95% high\n")
             for p, value, se, lo, hi in self.fitted:

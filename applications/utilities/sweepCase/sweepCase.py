@@ -83,6 +83,25 @@ def split_entry(case, entry):
                 entry, os.path.join(case, f), kind))
         if os.path.isfile(os.path.join(case, f)):
             keys = parts[n:]
+            # a file outside the case (a path through '..', a link to a
+            # file elsewhere) is not copied into the runs' copies: each run
+            # set the entry in the user's file itself, the runs read it in
+            # turn (adv44 a13: the original case's indenterProperties
+            # edited, the copies unchanged, one result for two values;
+            # a36: a shared dictionary outside the case left edited)
+            full = os.path.realpath(os.path.join(case, f))
+            top = os.path.realpath(case)
+            if not full.startswith(top + os.sep):
+                raise SweepError(
+                    "-entry %s: %s lies outside the case %s (%s): sweepCase "
+                    "sets the entry in each run's copy of the case, and a "
+                    "file outside it would be edited in place for every "
+                    "run (your file changed, the runs racing on it). Nothing"
+                    " was run: sweep a case that holds the file itself (copy"
+                    " it in, in place of the link)" % (
+                        entry, os.path.join(case, f), case,
+                        "a path through '..'" if ".." in parts[:n] else
+                        "through a link: it is %s" % full))
             d = foamDict.read(os.path.join(case, f))
             for k in keys[:-1]:
                 if not isinstance(d.get(k), dict):
@@ -110,6 +129,25 @@ def split_entry(case, entry):
                         entry, "/".join(keys), os.path.join(case, f),
                         ", ".join(included) or "an include directive",
                         os.path.join(case, f)))
+            # an include after the entry that sets it again (the
+            # tutorials' <dictionary>.allrun pattern): the runs would read
+            # the include's value, not the swept one (adv44 a15: two
+            # values, one result, rc 0)
+            path = os.path.join(case, f)
+            probe = "sweepCaseProbeValue"
+            probed = foamDict.parse(
+                foamDict.set_entry(open(path).read(), keys, probe, path),
+                path, os.path.dirname(path))
+            for k in keys:
+                probed = probed.get(k) if isinstance(probed, dict) else None
+            if probed != probe:
+                raise SweepError(
+                    "-entry %s: the entry '%s' of %s is set again by a file "
+                    "it includes after it (%s): the runs would read that "
+                    "value, not the swept one. Nothing was run: remove the "
+                    "entry from the included file, or sweep the entry "
+                    "there" % (entry, "/".join(keys), path,
+                               ", ".join(included) or "an include directive"))
             return f, keys
     raise SweepError("-entry %s: no file of case %s in it" % (entry, case))
 
@@ -349,6 +387,22 @@ def main():
         values = a.values.split()
         if not values:
             raise SweepError("-values: empty")
+        # each value one token of the entry, checked before anything runs
+        # (adv44 a26: nan, "22e-6;fixed" and "}" ran the values before them
+        # and then failed at their own run)
+        for v in values:
+            if re.fullmatch(r"[+-]?(nan|inf|infinity)", v, re.I):
+                raise SweepError(
+                    "-values '%s': %s is not a number (OpenFOAM reads it as"
+                    " a word): give finite numbers. Nothing was run"
+                    % (a.values, v))
+            bad = sorted(set(c for c in v if c in ';{}"#\\'))
+            if bad:
+                raise SweepError(
+                    "-values '%s': the value '%s' holds %s: a value is one "
+                    "word of the entry (a number or a name), without ; { } "
+                    "\" # \\. Nothing was run"
+                    % (a.values, v, " ".join("'%s'" % c for c in bad)))
         command = a.run
         if not command:
             if os.path.isfile(os.path.join(case, "Allrun")):

@@ -294,6 +294,16 @@ def make(run, case):
             caseRuns.checkNoEarlierRun(folder)
         except caseRuns.RunError as err:
             raise PaperError("%s: %s" % (run["name"], err))
+        # a folder this function made holds the tutorial's Allrun; one
+        # without it is someone's own (adv44 a12: a folder of the user's
+        # notes and scripts was removed and made again, nothing said)
+        if not os.path.isfile(os.path.join(folder, "Allrun")):
+            raise PaperError(
+                "%s: %s holds no Allrun: it is not a run folder of the "
+                "comparison (its copies of the tutorial hold it), and "
+                "would be removed to run %s there. Nothing was changed: "
+                "move it away, then run again" % (
+                    run["name"], folder, run["name"]))
         shutil.rmtree(folder)
     os.makedirs(folder)
     for f in trackedFiles(run["tutorial"]):

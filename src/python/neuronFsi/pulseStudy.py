@@ -219,6 +219,22 @@ def read(case, dictionary=DICT):
     s = {"case": case, "dict": path, "base": base}
     s["overpressure"] = _grid(d, "overpressure", path, "Pa")
     s["duration"] = _grid(d, "duration", path, "s")
+    # two values of one label share one folder and record (adv44 a03: the
+    # second point's record replaced the first's, a table of two equal
+    # rows; a04: with nProcs 2 both failed on each other's lock)
+    for key, unit, letter in (("overpressure", "Pa", "p"),
+                              ("duration", "s", "T")):
+        seen = {}
+        for v in s[key]:
+            label = "%s%.6g" % (letter, v)
+            if label in seen:
+                raise StudyError(
+                    "%s: entry '%s': the values %r %s and %r %s are equal "
+                    "to 6 significant digits, the points' label (%s, one "
+                    "folder and one record for both): give values that "
+                    "differ within their first 6 digits"
+                    % (path, key, seen[label], unit, v, unit, label))
+            seen[label] = v
     s["sampleInterval"] = _number(d, "sampleInterval", path)
     s["window"] = _number(d, "strainRateWindow", path)
     th = d["thresholds"]
@@ -408,9 +424,12 @@ def outsideInputs(case):
           #includeFunc, ...), the dictionary it makes with every include
           expanded, every number with 17 digits (foamDictionary
           -precision 17 -expand; a file it cannot read: its message)
-      "<absolute path> (included by <file>)": the bytes of each file
-          outside case the #include and #sinclude directives name
-          (foamDictionary -includes), to name the file that changed
+      "<absolute path> (included by <file>)": each file outside case
+          the #include and #sinclude directives name (foamDictionary
+          -includes), to name the file that changed: as OpenFOAM reads it
+          (foamDictionary -precision 17 -expand: a comment, the layout or
+          a number's spelling is no change, as in the solvers' record),
+          its bytes if it cannot be read alone
       "<absolute path> (entry 'file' of <file>)": the bytes of each file
           outside case a 'file' entry names (a boundary condition's
           tableFile, the solid's mesh), relative paths from case
@@ -429,6 +448,16 @@ def outsideInputs(case):
                            cwd=case, stdout=subprocess.PIPE,
                            stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL)
         return r.returncode, r.stdout
+
+    def parsed(path):
+        """The file as OpenFOAM reads it, a comment or a number's spelling
+        not a change (as the solvers' record, foamTools::inputRecord; adv44
+        a40); its bytes if it is not a dictionary of its own"""
+        rc, text = foamDictionary(["-precision", "17", "-expand"], path)
+        if rc == 0:
+            return text
+        with open(path, "rb") as h:
+            return h.read()
 
     def named(text, rel):
         for m in _FILE.finditer(text):
@@ -465,9 +494,8 @@ def outsideInputs(case):
                         path = line.strip().strip('"')
                         if os.path.isabs(path) and os.path.isfile(path) \
                                 and not _inside(path, case):
-                            with open(path, "rb") as h:
-                                out["%s (included by %s)" % (path, rel)] = \
-                                    hashlib.sha256(h.read()).hexdigest()
+                            out["%s (included by %s)" % (path, rel)] = \
+                                hashlib.sha256(parsed(path)).hexdigest()
             named(text.decode("latin-1"), rel)
     if not hadCode and os.path.isdir(code):
         shutil.rmtree(code)

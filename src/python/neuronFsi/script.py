@@ -42,7 +42,7 @@ def _writtenFile(tb):
     write() or the flush at close name none; adv38 x55, a write outside
     writing()): the innermost file object open for writing among the
     locals of the frames of its traceback tb (a `with open(...) as f`
-    body, a writer's close); None if none is found."""
+    body, a writer's close), as (label, path); None if none is found."""
     import io
     frames = []
     while tb is not None:
@@ -54,7 +54,29 @@ def _writtenFile(tb):
                               io.BufferedRandom, io.FileIO)) \
                     and isinstance(getattr(v, "name", None), str) \
                     and any(m in getattr(v, "mode", "") for m in "wax+"):
-                return v.name
+                return v.name, v.name
+    return None
+
+
+def _fullOutput(err):
+    """(label, path) of the standard output or error when it is a regular
+    file on a device with less than 1 MiB free and err is a full disk's
+    (adv38 x55: planeWave's print to its log on a full file system raised
+    ENOSPC, no file named); None otherwise."""
+    import stat
+    if err.errno not in (errno.ENOSPC, errno.EDQUOT):
+        return None
+    for fd, what in ((1, "the standard output"), (2, "the standard error")):
+        try:
+            if not stat.S_ISREG(os.fstat(fd).st_mode):
+                continue
+            s = os.fstatvfs(fd)
+            if s.f_bavail*s.f_frsize >= 1 << 20:
+                continue
+            path = os.readlink("/proc/self/fd/%d" % fd)
+        except OSError:
+            continue
+        return "%s (%s)" % (what, path), path
     return None
 
 
@@ -88,10 +110,10 @@ def message(err, tb=None):
         # no file named (adv33 x12: a full disk inside matplotlib's save;
         # adv38 x55: planeWave on a full disk): the file found from the
         # traceback, with the space left on its device
-        name = _writtenFile(tb)
-        if name:
-            return "%s: %s%s" % (name, err.strerror or err,
-                                 _spaceNote(name) if err.errno in (
+        found = _writtenFile(tb) or _fullOutput(err)
+        if found:
+            return "%s: %s%s" % (found[0], err.strerror or err,
+                                 _spaceNote(found[1]) if err.errno in (
                                      errno.ENOSPC, errno.EDQUOT) else "")
         return "a file could not be written or read: %s" \
             % (err.strerror or err)
@@ -105,7 +127,13 @@ def writing(path, mode="w"):
     ENOSPC comes from write() or the flush at close, which name no file)
     is raised again naming path, so that message() names the file that
     could not be written (adv38 x55: planeWave on a full disk said "a file
-    could not be written or read")."""
+    could not be written or read"). A symbolic link at path is replaced
+    by the file (the link removed first): its target, a file elsewhere
+    (the user's), is not written through (adv44 a17: calibrateCell wrote
+    its results over the user's shared files outside the case; planeWave
+    -inflow replaced such a link already)."""
+    if os.path.islink(path) and "w" in mode:
+        os.remove(path)
     try:
         with open(path, mode) as f:
             yield f
