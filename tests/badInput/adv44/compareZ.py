@@ -8,7 +8,7 @@ verbose = '-v' in sys.argv; args = [a for a in sys.argv[1:] if a != '-v']; d = a
 files = ['%s/out/%s/%s.txt' % (here, d, a) for a in args] if args else sorted(glob.glob('%s/out/%s/*.txt' % (here, d)))
 for f in files:
     k = os.path.basename(f)[:-4]; now = n(open(f, errors='replace').read())
-    for p in ('A5', 'A3', 'A4', 'A2', 'A', 'P1b', 'P1', 'R'):
+    for p in ('Z', 'A5', 'A3', 'A4', 'A2', 'A', 'P1b', 'P1', 'R', 'ZR'):
         g = os.path.join(here, 'out', p, k + '.txt')
         if os.path.exists(g): break
     else: print(k, '(no phase-1 output)'); continue
