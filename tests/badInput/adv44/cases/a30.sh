@@ -1,0 +1,6 @@
+#!/bin/bash
+# a30 (class 5, a power loss's NUL-filled files in the restart's way): a blast finished to 2 ns; (a) solid/solid.xmf NUL-filled (its size kept), restart to 3 ns: solid.xmf rebuilt from solid.h5 (or refused naming it)? (b) in a fresh copy 2e-09/uniform/time NUL-filled: the time moved aside as damaged/incomplete and the restart from 1e-09, or refused naming it? (c) 2e-09/uniform/inputDigests NUL-filled: refused naming it (a damaged record), not continued as a time without a record?
+. "$(dirname "$0")/../lib.sh"
+blastDone; cd $W; cp -r blast b2; cp -r blast b3; cd blast; nul solid/solid.xmf; latest; blastEnd 3e-9 1e-9; tryf "(a) NUL solid.xmf, restart" cellBlastFoam; echo "   times $(ls -d [1-9]* | tr '\n' ' '); solid.h5 $(h5steps solid/solid.h5) steps, solid.xmf $(xmfsteps solid/solid.xmf), NULs in xmf: $(tr -cd '\0' < solid/solid.xmf | wc -c)"
+cd $W/b2; nul 2e-09/uniform/time; latest; blastEnd 3e-9 1e-9; tryf "(b) NUL 2e-09/uniform/time, restart" cellBlastFoam; echo "   times $(ls -d [1-9]* 2>/dev/null | tr '\n' ' ') $(ls -d 2e-09.* 2>/dev/null)"
+cd $W/b3; nul 2e-09/uniform/inputDigests; latest; blastEnd 3e-9 1e-9; sums > ../s3; tryf "(c) NUL 2e-09/uniform/inputDigests, restart" cellBlastFoam; echo "   times $(ls -d [1-9]* 2>/dev/null | tr '\n' ' ')"; nochange ../s3

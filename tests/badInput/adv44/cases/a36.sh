@@ -1,0 +1,6 @@
+#!/bin/bash
+# a36 (class 2, sweepCase on a case whose swept dictionary is a SYMBOLIC LINK to a shared file outside it): the smoke indentation with constant/indenterProperties a link to $W/shared/indenterProperties (the user's shared settings); sweepCase -entry constant/indenterProperties/radius -values "20e-6 25e-6": each run's copy edited (the link replaced by a file), or the shared file outside the case edited through the link (and the runs' radii mixed)?
+. "$(dirname "$0")/../lib.sh"
+ind; mkdir -p $W/shared; mv constant/indenterProperties $W/shared/indenterProperties; ln -s $W/shared/indenterProperties constant/indenterProperties; md5sum $W/shared/indenterProperties > ../m
+tryf "sweep radius (linked dictionary)" sweepCase -case . -entry constant/indenterProperties/radius -values "20e-6 25e-6" -run "cellIndentationFoam > log.run 2>&1" -output "F=postProcessing/indentation/peaks.dat:-1:1" -output "R=log.run:/Indenter: radius (\S+) m/"; grep -a '^|' $W/try.log | head -4
+echo "   the shared file: $(md5sum -c ../m 2>&1 | awk '{print $2}'), radius now: $(grep -a '^ *radius' $W/shared/indenterProperties | tr -s ' '); the case's: $(readlink constant/indenterProperties || echo 'not a link')"
