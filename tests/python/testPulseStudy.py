@@ -3,6 +3,7 @@ named), the grid's points and their Allrun options, the digests of a
 point's inputs and what differs, the records."""
 import math
 import os
+import sys
 import unittest
 
 from fixtures import TempDirTestCase
@@ -34,6 +35,22 @@ GOOD = {
                source "Bain and Meaney 2000, J Biomech Eng"; }
     }""",
 }
+
+
+def loadApp():
+    """The application applications/utilities/pulseStudy/pulseStudy.py as a
+    module (its functions tested directly), sys.excepthook kept as it was
+    (the application installs its own)"""
+    import importlib.util
+    hook = sys.excepthook
+    spec = importlib.util.spec_from_file_location(
+        "pulseStudyApp", os.path.join(
+            os.path.dirname(__file__), "..", "..", "applications",
+            "utilities", "pulseStudy", "pulseStudy.py"))
+    app = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(app)
+    sys.excepthook = hook
+    return app
 
 
 class Dictionary(TempDirTestCase):
@@ -401,21 +418,11 @@ boundaryField
                 "Pa, duration 2e-09 s\\)"):
             ps.readRecord(path, self.point())
 
-
     def testBaseCopyWithTheUsersFileRefused(self):
         """the study's copy of the base case (made again at every run)
         holding a file the base case does not is refused, nothing removed
         (adv43 k20: the user's notes.md in it was removed by every run)"""
-        import importlib.util
-        import sys
-        hook = sys.excepthook
-        spec = importlib.util.spec_from_file_location(
-            "pulseStudyApp", os.path.join(
-                os.path.dirname(__file__), "..", "..", "applications",
-                "utilities", "pulseStudy", "pulseStudy.py"))
-        app = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(app)
-        sys.excepthook = hook
+        app = loadApp()
         self.write("base/constant/x", "base\n")
         self.write("out/base/constant/x", "base\n")
         base = os.path.join(self.tmp, "base")
@@ -439,19 +446,10 @@ boundaryField
         user's in it was removed with it), a file of the user's in the
         point's folder is kept (adv42 g13: the whole folder was removed
         with the user's notes.md in it)"""
-        import importlib.util
         import io
-        import sys
         from contextlib import redirect_stdout
         from neuronFsi import caseRuns
-        hook = sys.excepthook
-        spec = importlib.util.spec_from_file_location(
-            "pulseStudyApp", os.path.join(
-                os.path.dirname(__file__), "..", "..", "applications",
-                "utilities", "pulseStudy", "pulseStudy.py"))
-        app = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(app)
-        sys.excepthook = hook
+        app = loadApp()
         staging = self.write("staging/Allrun", "#!/bin/sh\nexit 3\n")
         os.chmod(staging, 0o755)
         staging = os.path.dirname(staging)

@@ -17,16 +17,11 @@ root=$(cd "$here/../.." && pwd)
 . "$root/etc/bashrc"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-fails=0
-check() {
-    if eval "$2"; then echo "PASS: $1"; else echo "FAIL: $1"; fails=$((fails + 1)); fi
-}
+. "$root/tests/lib/checks.sh"
 md() { printf '# My analysis of %s\n\nThe peak at 1.2 ns is real; see plot.\n' "$1"; }
 # every file but the logs and the killed run's stale lock (.runLock, which
 # the next run takes over and removes at its end)
-sums() { find . -type f ! -name 'log.*' ! -name .runLock -print0 | sort -z | xargs -0 md5sum; }
-# waitFor SECONDS CMD...: until CMD succeeds
-waitFor() { local n=$(( $1 * 10 )); shift; while [ $n -gt 0 ]; do "$@" && return 0; sleep 0.1; n=$((n - 1)); done; return 1; }
+sums() { caseSums 'log.*' .runLock; }
 set_() { sed -i "s/^$1 .*/$1 $2;/" system/controlDict; }
 # killAfter FILE APP...: run APP, SIGKILL it once FILE exists (before the
 # first write time), and check that nothing was committed
@@ -91,5 +86,4 @@ md r > postProcessing/probes/0/notes.md
 set_ endTime 5e-9; set_ writeInterval 5e-9
 refusedThenRuns "rhoRiemannFoam, fresh run killed" postProcessing/probes/0/notes.md rhoRiemannFoam
 
-echo "$fails failed"
-[ $fails -eq 0 ]
+exit $fail

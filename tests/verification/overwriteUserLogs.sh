@@ -28,13 +28,9 @@ root=$(cd "$here/../.." && pwd)
 . "$root/etc/bashrc"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-fails=0
-check() {
-    if eval "$2"; then echo "PASS: $1"; else echo "FAIL: $1"; fails=$((fails + 1)); fi
-}
+. "$root/tests/lib/checks.sh"
 # every file but the logs and a stale lock
-sums() { find . -type f ! -name 'log.*' ! -name .runLock -print0 | sort -z | xargs -0 md5sum; }
-waitFor() { local n=$(( $1 * 10 )); shift; while [ $n -gt 0 ]; do "$@" && return 0; sleep 0.1; n=$((n - 1)); done; return 1; }
+sums() { caseSums 'log.*' .runLock; }
 set_() { sed -i "s/^$1 .*/$1 $2;/" system/controlDict; }
 # notRecorded LABEL FILE...: no commit marker of the case names the files
 notRecorded() {
@@ -143,5 +139,4 @@ notRecorded "rhoRiemannFoam" notes.txt
 set_ endTime 5e-9
 refusedThenRuns "rhoRiemannFoam" rhoRiemannFoam postProcessing/probes/0/notes.txt
 
-echo "$fails failed"
-[ $fails -eq 0 ]
+exit $fail

@@ -257,14 +257,19 @@ PATCH_QUANTITIES = ("pPatch", "vonMisesPatch", "shearPatch",
                     "pMax", "vonMisesMax", "shearMax")
 
 
-def hasInterfacePatches(case):
-    """Whether the run wrote postProcessing/solidInterfaces/*/
-    interfacePatches.dat (a run of a build or case before it: no)"""
+def _wrote(case, log):
+    """Whether the run wrote postProcessing/<log> (in any time segment)"""
     try:
-        postProcessing.segments(case, PATCH_LOG)
+        postProcessing.segments(case, log)
         return True
     except postProcessing.ColumnFileError:
         return False
+
+
+def hasInterfacePatches(case):
+    """Whether the run wrote postProcessing/solidInterfaces/*/
+    interfacePatches.dat (a run of a build or case before it: no)"""
+    return _wrote(case, PATCH_LOG)
 
 
 def interfacePatches(case):
@@ -295,11 +300,7 @@ PLACE_QUANTITIES = ("pAt", "vonMisesAt", "shearAt")
 def hasInterfacePlaces(case):
     """Whether the run wrote postProcessing/solidInterfaces/*/
     interfacePlaces.dat (solidProperties interfacePlaces given)"""
-    try:
-        postProcessing.segments(case, PLACE_LOG)
-        return True
-    except postProcessing.ColumnFileError:
-        return False
+    return _wrote(case, PLACE_LOG)
 
 
 def interfacePlaces(case):
