@@ -3,7 +3,7 @@
 Richardson estimates and error bars (issue 17 items 4 and 5; not a test).
 
     patchLadder.py [--pulse P] [--t1 T1] [--default LABEL]
-                   LABEL=CASE ... [--off LABEL=CASE ...]
+                   [--ifWindow W] LABEL=CASE ... [--off LABEL=CASE ...]
 
 LABEL: x<f> or x<f>L<n> (f the Allrun's size factor, every size scaled by
 it; n the membrane's layers, -membraneLayers: a label only). --off:
@@ -22,6 +22,11 @@ default 1.5e-8; or t <= T1 [ns]) of:
   places) and the element maxima (mesh-dependent);
 - per interface and fixed place (interfacePlaces.dat, when the run wrote
   it): the mean of von Mises and shear over the patch at that place.
+With --ifWindow W [ns] the interface series are first averaged over a
+running window of W (planeWave.runningMean, as the probes' 1 ns) before
+their largest value is taken: whether a measure without an order has one
+once its fastest part in time is averaged out (the probes are 1-ns means,
+the interface measures otherwise instantaneous).
 Then the change from level to level, and from the three finest levels the
 observed order p, the Richardson value and the finest level's Grid
 Convergence Index (bench/blast/run.py richardson: Celik et al. 2008 for
@@ -92,7 +97,15 @@ def probeMeasures(case, t1, out):
             out[f"probe:{pr['region']}:{q}"] = scale*pick(m[tc <= t1])
 
 
-def level(label, case, t1):
+def averaged(t, y, window):
+    """(t, y) as they are (window 0) or their running mean over window
+    [s] (planeWave.runningMean: the samples whose window lies inside)"""
+    return (t, y) if not window else planeWave.runningMean(t, y, window)
+
+
+def level(label, case, t1, window=0.0):
+    """The measures of one case; window [s]: the interface series'
+    running mean before their maximum (0: instantaneous)"""
     out = {"factor": factor(label), "label": label}
     probeMeasures(case, t1, out)
     ip = damageIndicators.interfacePatches(case)
@@ -100,20 +113,24 @@ def level(label, case, t1):
         if n not in ip:
             continue
         d = ip[n]
-        w = d["t"] <= t1
         for q, _ in QUANTITIES:
-            out[f"{q}:{n}"] = d[q][w].max()
+            t, y = averaged(d["t"], d[q], window)
+            out[f"{q}:{n}"] = y[t <= t1].max()
+        # the place of the instantaneous largest mean
+        w = d["t"] <= t1
         k = np.argmax(np.where(w, d["vonMisesPatch"], -np.inf))
         out[f"at:{n}"] = (d["vonMisesPatchX"][k], d["vonMisesPatchY"][k],
                           d["t"][k])
     if damageIndicators.hasInterfacePlaces(case):
         for n, places in damageIndicators.interfacePlaces(case).items():
             for pl, d in places.items():
-                w = d["t"] <= t1
                 for q, _ in PLACE_QUANTITIES:
-                    out[f"{q}_{pl}:{n}"] = d[q][w].max()
-                k = np.argmax(np.where(w, d["vonMisesAt"], -np.inf))
-                out[f"when_{pl}:{n}"] = d["t"][k]
+                    t, y = averaged(d["t"], d[q], window)
+                    w = t <= t1
+                    out[f"{q}_{pl}:{n}"] = y[w].max()
+                    if q == "vonMisesAt":
+                        out[f"when_{pl}:{n}"] = t[np.argmax(
+                            np.where(w, y, -np.inf))]
                 out[f"centre_{pl}:{n}"] = d.get("centre")
     return out
 
@@ -171,20 +188,29 @@ def main():
                     help="the level whose error is reported")
     ap.add_argument("--off", action="append", default=[],
                     help="LABEL=CASE of a setting off the ladder")
+    ap.add_argument("--ifWindow", type=float, default=0.0,
+                    help="running window [ns] of the interface series "
+                    "before their maximum (default 0: instantaneous)")
     ap.add_argument("cases", nargs="+")
     a = ap.parse_args()
+    if not 0 <= a.ifWindow < 100:
+        raise SystemExit(f"patchLadder: --ifWindow {a.ifWindow:g}: a window "
+                         "[ns] in [0, 100)")
     t1 = a.t1*1e-9 if a.t1 is not None else 80e-9 + a.pulse
-    levels = sorted((level(*c.split("=", 1), t1) for c in a.cases),
+    win = a.ifWindow*1e-9
+    levels = sorted((level(*c.split("=", 1), t1, win) for c in a.cases),
                     key=lambda r: -r["factor"])
     off = []
     for c in a.off:
         label, case = c.split("=", 1)
-        r = level("x0", case, t1)
+        r = level("x0", case, t1, win)
         r["label"] = label
         off.append(r)
     labels = [r["label"] for r in levels]
     first = a.cases[0].split("=", 1)[1]
-    print(f"Passage: t <= {t1*1e9:g} ns; patch length "
+    print(f"Passage: t <= {t1*1e9:g} ns; interface series "
+          + (f"averaged over {a.ifWindow:g} ns" if win else "instantaneous")
+          + "; patch length "
           f"{damageIndicators.patchLength(first)*1e6:g} um; levels "
           + ", ".join(labels) + (("; off the ladder: "
                                   + ", ".join(o["label"] for o in off))
