@@ -12,9 +12,9 @@
 # levels (-h 0.25F um -far F um -dz 0.25F um -cell 0.5F um: the membrane
 # 0.4F um along its interfaces) and N elements across the membrane
 # (-membraneLayers N: 200/N nm), -solidSubcycles 4 on every level: the
-# coupled step is the water's Courant step (the solid sub-steps; with
-# N = 4 the membrane's 50-nm elements' stable step, 1.8e-11 s, would
-# set it, about 3 times below the water's). A ladder with one refinement ratio r in
+# coupled step is the water's Courant step (the solid sub-steps; in lock
+# step the membrane's thin elements would set it: with N = 4 at F = 0.35
+# their stable step is 1.8e-11 s against the water's 2.6e-11 s). A ladder with one refinement ratio r in
 # every direction keeps F*N fixed: x1.4:L1, x0.7:L2, x0.35:L4 (r = 2) or
 # x1:L1, x0.5:L2, x0.25:L4. The case of PULSE:xF:LN is
 # OUT/xFLN_PULSEns/base_PULSEns/axisymmetricPreview (patchLadder.py's
