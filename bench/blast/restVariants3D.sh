@@ -11,7 +11,10 @@
 # EDITS: space-separated items, each
 #   FILE:ENTRY=VALUE   foamDictionary -entry ENTRY -set VALUE FILE in the
 #                      prepared case (e.g. constant/fsiProperties:
-#                      interface/load=mappedForces)
+#                      interface/load=mappedForces); a comma in VALUE
+#                      stands for a space (system/fvSchemes:
+#                      interpolationSchemes/reconstruct(U)=
+#                      normalTangential,MUSCL,upwind)
 #   amplitude=PA       the pulse's 50 MPa replaced by PA in 0.orig/p (and
 #                      in the Allrun's pulse edit) before Allrun
 #   membrane=water     the membrane's quadratic law (paper eq. 2) replaced
@@ -57,7 +60,8 @@ do
                 "$case/constant/solidProperties" || ok=no ;;
         *:*=*)
             file=${e%%:*} rest=${e#*:}
-            foamDictionary -entry "${rest%%=*}" -set "${rest#*=}" \
+            value=${rest#*=}
+            foamDictionary -entry "${rest%%=*}" -set "${value//,/ }" \
                 "$case/$file" > /dev/null || ok=no ;;
         *) echo "   bad edit $e"; ok=no ;;
         esac

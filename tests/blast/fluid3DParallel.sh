@@ -9,12 +9,15 @@
 # time step (probes: the quarter3D fluid probes + one at z = 78 um, below
 # the plane, reached at 14.6 ns) and
 # over the pressure field at the end time.
-# fluid3DParallel.sh [SCHEME]: reconstruct(rho), reconstruct(U) and
-# reconstruct(p) set to SCHEME (a multidimensional limiter of
+# fluid3DParallel.sh [SCHEME [USCHEME]]: reconstruct(rho), reconstruct(U)
+# and reconstruct(p) set to SCHEME (a multidimensional limiter of
 # MUSCLReconstruction, BarthJespersen or venkatakrishnan: its min/max takes
 # the processor neighbours' values); default: the tutorial's MUSCL/MUSCLV.
+# USCHEME, if given, replaces SCHEME for reconstruct(U) (e.g.
+# "normalTangential MUSCL upwind": the face frame on the processor faces).
 set -euo pipefail
 scheme=${1:-}
+uScheme=${2:-$scheme}
 here=$(cd "$(dirname "$0")" && pwd)
 root=$here/../..
 . "$root/etc/bashrc"
@@ -55,10 +58,12 @@ if [ -n "$scheme" ]
 then
     for v in rho U p
     do
+        s=$scheme
+        [ $v = U ] && s=$uScheme
         foamDictionary -entry "interpolationSchemes/reconstruct($v)" \
-            -set "$scheme" system/fvSchemes > /dev/null
+            -set "$s" system/fvSchemes > /dev/null
     done
-    grep -q "reconstruct(U) *$scheme;" system/fvSchemes
+    grep -q "reconstruct(U) *$uScheme;" system/fvSchemes
 fi
 cp -r 0.orig 0
 # processor 1: cells above z = 80 um
@@ -70,7 +75,7 @@ decomposePar > log.decompose 2>&1 || { tail log.decompose; exit 1; }
 mpirun -np 2 rhoRiemannFoam -parallel > log.solver 2>&1 || { tail log.solver; exit 1; }
 reconstructPar -latestTime > log.reconstruct 2>&1
 cd "$work"
-/usr/bin/python3 - serial parallel "${scheme:-MUSCL}" <<'PY'
+/usr/bin/python3 - serial parallel "${scheme:-MUSCL}, U ${uScheme:-MUSCLV}" <<'PY'
 import sys
 import numpy as np
 from neuronFsi.foamField import internalField

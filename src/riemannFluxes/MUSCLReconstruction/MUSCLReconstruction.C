@@ -259,6 +259,105 @@ void coupledFaceValues
     }
 }
 
+//- Owner-side and neighbour-side velocities of one face in its frame
+//  (normalTangential N T): the normal component u_n = U.n by the scalar
+//  limiter normalType on the cells' normal components with the gradients
+//  grad(U) & n, the tangential part U_t = U - u_n n by the vector limiter
+//  tangentialType on the cells' tangential parts with the gradients
+//  grad(U) & (I - n n); upwind: the cell's own part. n is the face's unit
+//  normal (owner to neighbour), d = x_N - x_P, w the face's linear weight
+inline void faceFrameValues
+(
+    const limiterFunctions<NVDTVD>& sLim,
+    const limiterFunctions<NVDVTVDV>& vLim,
+    const MUSCLReconstruction::limiterType normalType,
+    const MUSCLReconstruction::limiterType tangentialType,
+    const scalar w,
+    const vector& UP,
+    const vector& UN,
+    const tensor& gradP,
+    const tensor& gradN,
+    const vector& d,
+    const vector& n,
+    vector& left,
+    vector& right
+)
+{
+    typedef MUSCLReconstruction::limiterType limiterType;
+
+    const scalar unP = UP & n;
+    const scalar unN = UN & n;
+    scalar lambdaL = 1;
+    scalar lambdaR = 0;
+    if (normalType != limiterType::upwind)
+    {
+        sLim.weights
+        (
+            normalType, w, unP, unN, gradP & n, gradN & n, d,
+            lambdaL, lambdaR
+        );
+    }
+    const scalar unL = lambdaL*(unP - unN) + unN;
+    const scalar unR = lambdaR*(unP - unN) + unN;
+
+    const vector utP(UP - unP*n);
+    const vector utN(UN - unN*n);
+    lambdaL = 1;
+    lambdaR = 0;
+    if (tangentialType != limiterType::upwind)
+    {
+        const tensor T(I - sqr(n));
+        vLim.weights
+        (
+            tangentialType, w, utP, utN, gradP & T, gradN & T, d,
+            lambdaL, lambdaR
+        );
+    }
+    left = unL*n + lambdaL*(utP - utN) + utN;
+    right = unR*n + lambdaR*(utP - utN) + utN;
+}
+
+
+//- The faces of a coupled patch in their frames (faceFrameValues)
+void coupledFaceFrameValues
+(
+    const MUSCLReconstruction::vectorScheme& scheme,
+    const fvPatchField<vector>& pf,
+    const fvPatchField<tensor>& gradPf,
+    vectorField& left,
+    vectorField& right
+)
+{
+    const fvPatch& patch = pf.patch();
+    const scalarField& w =
+        patch.boundaryMesh().mesh().weights().boundaryField()[patch.index()];
+    const vectorField UP(pf.patchInternalField());
+    const vectorField UN(pf.patchNeighbourField());
+    const vectorField n(patch.nf());
+    tensorField gradP(patch.size(), Zero);
+    tensorField gradN(patch.size(), Zero);
+    vectorField d(patch.size(), Zero);
+    if (scheme.needsGradient())
+    {
+        gradP = gradPf.patchInternalField();
+        gradN = gradPf.patchNeighbourField();
+        d = patch.delta();
+    }
+
+    left.setSize(patch.size());
+    right.setSize(patch.size());
+    forAll(w, facei)
+    {
+        faceFrameValues
+        (
+            scalarLimiters(), vectorLimiters(), scheme.limiter,
+            scheme.tangential, w[facei], UP[facei], UN[facei], gradP[facei],
+            gradN[facei], d[facei], n[facei], left[facei], right[facei]
+        );
+    }
+}
+
+
 //- The multidimensional limiter of one face of a cell, per component:
 //  psi = min(psi, f(Delta1, Delta2)) with Delta2 the unlimited increment
 //  to the face centre, Delta1 the room to the neighbourhood's max (Delta2
@@ -365,15 +464,31 @@ Foam::MUSCLReconstruction::readLimiter
         FatalIOErrorInFunction(mesh.schemesDict())
             << "system/fvSchemes: interpolationSchemes/" << entry
             << " is '" << is.toString().c_str() << "'; the reconstruction"
-            << " of the Riemann fluxes takes " << names << nl
-            << exit(FatalIOError);
+            << " of the Riemann fluxes takes " << names
+            << (
+                   &names == &vectorNames
+                 ? " or normalTangential N T (N, T: upwind MUSCL vanLeer"
+                   " Minmod vanAlbada)"
+                 : ""
+               )
+            << nl << exit(FatalIOError);
     }
     const limiterType type = names.get(name);
-    if (type == limiterType::upwind)
+    if (type != limiterType::upwind)
     {
-        return type;
+        checkGradScheme(mesh, fieldName, name);
     }
+    return type;
+}
 
+
+void Foam::MUSCLReconstruction::checkGradScheme
+(
+    const fvMesh& mesh,
+    const word& fieldName,
+    const word& schemeName
+)
+{
     // The limiter's gradient: the one of OpenFOAM's limited schemes
     const word gradEntry("grad(" + fieldName + ')');
     ITstream& gis = mesh.gradScheme(gradEntry);
@@ -381,11 +496,59 @@ Foam::MUSCLReconstruction::readLimiter
     {
         FatalIOErrorInFunction(mesh.schemesDict())
             << "system/fvSchemes: gradSchemes/" << gradEntry << " is '"
-            << gis.toString().c_str() << "'; the " << name
+            << gis.toString().c_str() << "'; the " << schemeName
             << " reconstruction of the Riemann fluxes takes (Gauss linear)"
             << nl << exit(FatalIOError);
     }
-    return type;
+}
+
+
+Foam::MUSCLReconstruction::vectorScheme
+Foam::MUSCLReconstruction::readVectorScheme(const fvMesh& mesh)
+{
+    static const word frameName("normalTangential");
+    const word entry("reconstruct(U)");
+    ITstream& is = mesh.interpolationScheme(entry);
+
+    // Peek at the first word: the face frame's keyword or a limiter
+    const bool faceFrame =
+        is.size() > 0 && is[0].isWord() && is[0].wordToken() == frameName;
+    if (!faceFrame)
+    {
+        const limiterType type = readLimiter(mesh, "U", vectorNames);
+        return vectorScheme{type, type, false};
+    }
+
+    // normalTangential N T: N and T TVD limiters of the scalar names
+    limiterType parts[2] = {limiterType::upwind, limiterType::upwind};
+    bool valid = (is.size() == 3);
+    for (label i = 1; valid && i < 3; ++i)
+    {
+        valid =
+            is[i].isWord()
+         && scalarNames.found(is[i].wordToken())
+         && !multidimensional(scalarNames.get(is[i].wordToken()));
+        if (valid)
+        {
+            parts[i - 1] = scalarNames.get(is[i].wordToken());
+        }
+    }
+    if (!valid)
+    {
+        FatalIOErrorInFunction(mesh.schemesDict())
+            << "system/fvSchemes: interpolationSchemes/" << entry
+            << " is '" << is.toString().c_str() << "'; the face frame's"
+            << " reconstruction takes " << frameName
+            << " N T, the limiters N of the normal component and T of the"
+            << " tangential part each one of (upwind MUSCL vanLeer Minmod"
+            << " vanAlbada)" << nl << exit(FatalIOError);
+    }
+    const vectorScheme scheme{parts[0], parts[1], true};
+    if (scheme.needsGradient())
+    {
+        checkGradScheme(mesh, "U", frameName);
+    }
+    return scheme;
 }
 
 
@@ -564,7 +727,8 @@ Foam::MUSCLReconstruction::MUSCLReconstruction(const fvMesh& mesh)
 :
     mesh_(mesh),
     rhoLimiter_(readLimiter(mesh, "rho", scalarNames)),
-    ULimiter_(readLimiter(mesh, "U", vectorNames)),
+    UScheme_(readVectorScheme(mesh)),
+    ULimiter_(UScheme_.limiter),
     pLimiter_(readLimiter(mesh, "p", scalarNames)),
     coupled_
     (
@@ -643,7 +807,7 @@ void Foam::MUSCLReconstruction::startCellGradients
             gradientExchange_.startCoupled(gradRho_);
         }
     }
-    if (ULimiter_ != limiterType::upwind)
+    if (UScheme_.needsGradient())
     {
         gaussGrad(U, gradU_);
         if (multidimensional(ULimiter_))
@@ -688,7 +852,7 @@ void Foam::MUSCLReconstruction::finishCellGradients()
     {
         gradientExchange_.finishCoupled(gradRho_);
     }
-    if (ULimiter_ != limiterType::upwind)
+    if (UScheme_.needsGradient())
     {
         gradientExchange_.finishCoupled(gradU_);
     }
@@ -742,6 +906,8 @@ void Foam::MUSCLReconstruction::reconstruct
     const scalarField& w = mesh_.weights();
     const vectorField& C = mesh_.C();
     const vectorField& Cf = mesh_.Cf();
+    const vectorField& Sf = mesh_.Sf();
+    const scalarField& magSf = mesh_.magSf();
 
     const scalarField& rhoc = rho;
     const vectorField& Uc = U;
@@ -768,11 +934,23 @@ void Foam::MUSCLReconstruction::reconstruct
             sLim, rhoLimiter_, wf, rhoc[own], rhoc[nei], gradRho[own],
             gradRho[nei], d, dP, dN, L.rho[i], R.rho[i]
         );
-        internalFaceValues
-        (
-            vLim, ULimiter_, wf, Uc[own], Uc[nei], gradU[own], gradU[nei],
-            d, dP, dN, L.U[i], R.U[i]
-        );
+        if (UScheme_.faceFrame)
+        {
+            faceFrameValues
+            (
+                sLim, vLim, UScheme_.limiter, UScheme_.tangential, wf,
+                Uc[own], Uc[nei], gradU[own], gradU[nei], d,
+                Sf[facei]/magSf[facei], L.U[i], R.U[i]
+            );
+        }
+        else
+        {
+            internalFaceValues
+            (
+                vLim, ULimiter_, wf, Uc[own], Uc[nei], gradU[own],
+                gradU[nei], d, dP, dN, L.U[i], R.U[i]
+            );
+        }
         internalFaceValues
         (
             sLim, pLimiter_, wf, pc[own], pc[nei], gradP[own], gradP[nei],
@@ -811,11 +989,22 @@ void Foam::MUSCLReconstruction::reconstructCoupled
         scalarLimiters(), rhoLimiter_, rho.boundaryField()[patchi],
         gradRho_.boundaryField()[patchi], L.rho, R.rho
     );
-    coupledFaceValues
-    (
-        vectorLimiters(), ULimiter_, U.boundaryField()[patchi],
-        gradU_.boundaryField()[patchi], L.U, R.U
-    );
+    if (UScheme_.faceFrame)
+    {
+        coupledFaceFrameValues
+        (
+            UScheme_, U.boundaryField()[patchi],
+            gradU_.boundaryField()[patchi], L.U, R.U
+        );
+    }
+    else
+    {
+        coupledFaceValues
+        (
+            vectorLimiters(), ULimiter_, U.boundaryField()[patchi],
+            gradU_.boundaryField()[patchi], L.U, R.U
+        );
+    }
     coupledFaceValues
     (
         scalarLimiters(), pLimiter_, p.boundaryField()[patchi],
