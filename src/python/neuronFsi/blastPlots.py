@@ -100,16 +100,22 @@ def planeWaveAnswer(case):
         return None
     wave = planeWave.readReference(path)
     z = solid[0]["point"][1 if planeWave.isWedge(case) else 2]
+    # at the probe's material point (a reference of planeWave since
+    # g5ns); an older one has the probe's height only
     try:
-        p = wave.at(z)
+        p, rho = wave.solidAt(z), wave.solidDensityAt(z)
     except planeWave.PlaneWaveError:
-        return None
+        try:
+            p, rho = wave.at(z), wave.rho
+            rho = None if rho is None else wave.densityAt(z)
+        except planeWave.PlaneWaveError:
+            return None
     vm = ez = None
-    if wave.rho is not None:
+    if rho is not None:
         rho0, mu0, branches = planeWave.solidMaterial(case,
                                                       solid[0]["region"])
-        ez, vm = planeWave.uniaxialResponse(wave.t, wave.densityAt(z), rho0,
-                                            mu0, branches)
+        ez, vm = planeWave.uniaxialResponse(wave.t, rho, rho0, mu0,
+                                            branches)
     return wave.t, p, vm, ez
 
 

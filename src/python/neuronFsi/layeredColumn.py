@@ -540,6 +540,12 @@ def solve(case, heights, Z, endTime, dz=20e-9, r=0.0, material=(),
     T = T[:, idx]
     wave = planeWave.PlaneWave(heights, t, P[:, idx], dz, Z, RHO[:, idx],
                                U[:, idx], None if np.isnan(T).any() else T)
+    # the solid's probes are material points here (PlaneWave.solidAt)
+    for h in mats:
+        k = list(heights).index(h)
+        wave.material[h] = {"p": wave.p[:, k], "rho": wave.rho[:, k],
+                            "T": None if wave.T is None else wave.T[:, k],
+                            "z": None}
     wave.layers = [(z0, z1, name) for z0, z1, name in
                    ([] if water else cells)]
     wave.cells = col.N

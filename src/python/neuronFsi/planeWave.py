@@ -367,6 +367,10 @@ class PlaneWave:
         self.T = T
         self.dz = dz
         self.Z = Z
+        # the histories at material points (the solid's probes): reference
+        # height [m] -> {"p", "rho", "T" (None without temperatures), "z"
+        # (its height [m] at each time, or None)}; materialHistory()
+        self.material = {}
         # the digest of the column's constant/thermophysicalProperties as
         # rhoRiemannFoam recorded it (column(); None for a reference file)
         self.thermoDigest = None
@@ -401,6 +405,97 @@ class PlaneWave:
             raise PlaneWaveError("the reference has no velocities (a "
                                  "reference.dat: compute the column)")
         return self.u[:, self._column(z)]
+
+    def _material(self, z):
+        for h, m in self.material.items():
+            if abs(h - z) <= 1e-12:
+                return m
+        raise PlaneWaveError(
+            "the reference has no history at the material point of "
+            "reference height %g m (a solid probe follows its material, "
+            "which the wave moves by up to a few tenths of a um; a "
+            "reference.dat written before these were computed: compute it "
+            "again)" % z)
+
+    def solidAt(self, z):
+        """p(t) [Pa] at the material point of reference height z [m]"""
+        return self._material(z)["p"]
+
+    def solidDensityAt(self, z):
+        """rho(t) [kg/m^3] at the material point of reference height z"""
+        return self._material(z)["rho"]
+
+    def solidTemperatureAt(self, z):
+        """T(t) [K] at the material point of reference height z (None
+        without temperatures)"""
+        return self._material(z)["T"]
+
+
+def materialHistory(t, heights, p, rho, u, z0, T=None):
+    """The history of the material point at reference height z0 [m] (its
+    height at t[0]) in a 1D wave sampled at fixed heights [m] (sorted,
+    around z0) at times t [s]: p, rho, u, T arrays (time, height). Its path
+    dz/dt = u(z, t) by Heun's rule from sample to sample, u linear in z
+    between the heights; p, rho and T linear in z at the path. Returns
+    {"p", "rho", "T" (None if T is None), "z"}. A PlaneWaveError if the
+    path leaves the heights (the band was too narrow).
+
+    A solid probe is a material point (solid::PointProbe): it follows the
+    matter, which the wave moves down by about P T/(rho0 C0) (0.17 um for
+    50 MPa for 5 ns) and back with the echo; where the echo overlaps the
+    pulse's tail the 1-ns peak depends on the height (5 ns pulse at 4.1
+    um: +2.6 % at the material point; docs/results/blastPlaneWave.md,
+    "The layered reference" and "The 5 ns von Mises")."""
+    t = np.asarray(t, dtype=float)
+    H = np.asarray(heights, dtype=float)
+    z = np.empty(len(t))
+    z[0] = z0
+    for n in range(len(t) - 1):
+        dt = t[n + 1] - t[n]
+        a = np.interp(z[n], H, u[n])
+        b = np.interp(z[n] + dt*a, H, u[n + 1])
+        z[n + 1] = z[n] + 0.5*dt*(a + b)
+    if z.min() < H[0] - 1e-15 or z.max() > H[-1] + 1e-15:
+        k = int(np.argmax((z < H[0]) | (z > H[-1])))
+        raise PlaneWaveError(
+            "the material point of reference height %g m is at %g m at t = "
+            "%g s, outside the heights sampled around it [%g, %g] m"
+            % (z0, z[k], t[k], H[0], H[-1]))
+    # linear in z at the path: the bracketing heights' weights per time
+    k = np.clip(np.searchsorted(H, z) - 1, 0, len(H) - 2)
+    w = (z - H[k])/(H[k + 1] - H[k])
+    rows = np.arange(len(t))
+
+    def at(f):
+        return (None if f is None else
+                (1 - w)*f[rows, k] + w*f[rows, k + 1])
+
+    return {"p": at(p), "rho": at(rho), "T": at(T), "z": z}
+
+
+# the band of fixed heights sampled around a material point: its largest
+# displacement is about P T/(rho0 C0) (a pulse P for T down, the echo
+# back up): this many times that on either side, at least MATERIAL_SPACING
+# apart (cells of 25 nm: 50 nm; the paths' fronts span 3-4 cells)
+MATERIAL_MARGIN = 1.5
+MATERIAL_SPACING = 50e-9
+
+
+def materialBand(z0, amplitude, duration, impedance, dz, Z):
+    """Fixed heights [m] around the reference height z0 [m] that hold the
+    path of its material point in a pulse of amplitude [Pa] for duration
+    [s] in water of impedance rho0 C0 [kg/m^2/s] (column of cells dz [m],
+    height Z [m]): spaced max(dz, MATERIAL_SPACING) (a multiple of dz).
+    A PlaneWaveError for a pulse that is no compression."""
+    if not (amplitude > 0 and duration > 0 and impedance > 0):
+        raise PlaneWaveError(
+            "the material point's band needs a compressive pulse and a "
+            "positive impedance (pulse %g Pa for %g s, rho0 C0 %g kg/m^2/s)"
+            % (amplitude, duration, impedance))
+    step = dz*max(1, int(math.ceil(MATERIAL_SPACING/dz - 1e-9)))
+    reach = MATERIAL_MARGIN*amplitude*duration/impedance + 2*step
+    n = int(math.ceil(reach/step))
+    return [z0 + i*step for i in range(-n, n + 1) if 0 < z0 + i*step < Z]
 
 
 def uniaxialResponse(t, rho, rho0, mu0, branches=()):
@@ -476,6 +571,27 @@ def soundSpeedAtRest(case):
                          "stiffenedGas or idealGas" % (path, law))
 
 
+def impedanceAtRest(case):
+    """rho0 C0 [kg/m^2/s] of <case>'s water at rest (constant/
+    thermophysicalProperties, equationOfState mieGruneisen: the solid's
+    probes are in a Mie-Grueneisen water)."""
+    path = os.path.join(case, "constant", "thermophysicalProperties")
+    try:
+        d = foamDict.read(path)
+    except (OSError, foamDict.DictError) as err:
+        raise PlaneWaveError("%s: %s" % (path, err))
+    rho0 = (d.get("mieGruneisenCoeffs") or {}).get("rho0") \
+        if d.get("equationOfState") == "mieGruneisen" else None
+    if isinstance(rho0, bool) or not isinstance(rho0, (int, float)) \
+            or not (math.isfinite(rho0) and rho0 > 0):
+        raise PlaneWaveError(
+            "%s: the solid probes' material points need the water's "
+            "mieGruneisenCoeffs rho0 [kg/m^3], positive and finite (found "
+            "equationOfState %s, rho0 %s)"
+            % (path, d.get("equationOfState"), rho0))
+    return float(rho0)*soundSpeedAtRest(case)
+
+
 def estimatedSteps(case, endTime, dz, maxCo=0.5):
     """The time steps of the column of <case> to endTime [s] in cells of dz
     [m]: endTime/(maxCo dz/c), c the sound speed at rest (a lower bound: a
@@ -484,10 +600,13 @@ def estimatedSteps(case, endTime, dz, maxCo=0.5):
 
 
 def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
-           maxCells=100000, scene=False, maxSteps=1e6):
+           maxCells=100000, scene=False, maxSteps=1e6, material=()):
     """Run the 1D column of <case> (water column of height Z [m]; the
     patches top and bottom) to endTime [s] with cells of dz [m], probes at
-    heights [m]; returns a PlaneWave (p, rho and u at each height). The
+    heights [m]; returns a PlaneWave (p, rho and u at each height). With
+    material (reference heights [m], the solid's probes): the histories
+    at those material points as well (PlaneWave.material: the band of
+    materialBand() probed around each, materialHistory()). The
     top and bottom conditions are the case's; for a planeWaveInflow top
     (a scene shorter than the column), the classic top instead: p
     uniformFixedValue with its pulse table, U and T zeroGradient, and Z
@@ -522,10 +641,17 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
     if n < 1 or abs(n*dz - Z) > 1e-9*Z:
         raise PlaneWaveError("dz %g m does not divide the column height "
                              "%g m" % (dz, Z))
-    for z in heights:
+    for z in list(heights) + list(material):
         if not 0 <= z <= Z:
             raise PlaneWaveError("probe height %g m outside the column "
                                  "[0, %g] m" % (z, Z))
+    bands = {}
+    if material:
+        amp, T = pulseShape(appliedPressure(case))
+        imp = impedanceAtRest(case)
+        bands = {z: materialBand(z, amp, T, imp, dz, Z)
+                 for z in sorted(set(material))}
+    sampled = sorted(set(heights).union(*bands.values()))
     inflow = inflowColumnHeight(case) is not None and not scene
     if not scene:
         checkColumnHeight(case, Z)
@@ -552,7 +678,7 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
             with open(os.path.join(work, "system", "blockMeshDict"), "w") as f:
                 f.write(_BLOCK_MESH.format(w=dz, Z=Z, n=n))
             probes = " ".join("(%.17g %.17g %.17g)" % (0.5*dz, z, 0.5*dz)
-                              for z in heights)
+                              for z in sampled)
             with open(os.path.join(work, "system", "controlDict"), "w") as f:
                 f.write(_CONTROL.format(end=endTime, co=maxCo, probes=probes))
             for field, cls in (("p", "volScalarField"),
@@ -594,8 +720,14 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
             # the column's axis is y (_BLOCK_MESH): u is U's y component
             U = postProcessing.series(work, "probes/U", vectors=True)
             T = postProcessing.series(work, "probes/T")
-            wave = PlaneWave(heights, data[:, 0], data[:, 1:], dz, Z,
-                             rho[:, 1:], U[:, 2::3], T[:, 1:])
+            p, rho, U, T = data[:, 1:], rho[:, 1:], U[:, 2::3], T[:, 1:]
+            col = [sampled.index(z) for z in heights]
+            wave = PlaneWave(heights, data[:, 0], p[:, col], dz, Z,
+                             rho[:, col], U[:, col], T[:, col])
+            for z0, band in bands.items():
+                b = [sampled.index(z) for z in band]
+                wave.material[z0] = materialHistory(
+                    wave.t, band, p[:, b], rho[:, b], U[:, b], z0, T[:, b])
             wave.thermoDigest = _recordedThermo(work)
             wave.inputDigests = _recordedDigests(work)
             return wave
@@ -739,7 +871,9 @@ def writeReference(path, wave, what):
     """Write a PlaneWave as a column file: time [s], then p_z<height>[Pa]
     per height, then rho_z<height>[kg/m^3] per height when the wave has
     densities, then T_z<height>[K] when it has temperatures as well (what:
-    the description line)."""
+    the description line); then per material point (PlaneWave.material,
+    by its reference height) pM_z<height>[Pa], rhoM_z<height>[kg/m^3],
+    TM_z<height>[K] (with temperatures) and zM_z<height>[m], its height."""
     cols = ["p_z%.17g[Pa]" % z for z in wave.heights]
     data = wave.p
     if wave.rho is not None:
@@ -748,6 +882,13 @@ def writeReference(path, wave, what):
         if wave.T is not None:
             cols += ["T_z%.17g[K]" % z for z in wave.heights]
             data = np.hstack((data, wave.T))
+    for z0 in sorted(wave.material):
+        m = wave.material[z0]
+        for key, unit in (("p", "Pa"), ("rho", "kg/m^3"), ("T", "K"),
+                          ("z", "m")):
+            if m[key] is not None:
+                cols.append("%sM_z%.17g[%s]" % (key, z0, unit))
+                data = np.column_stack((data, m[key]))
     with script.writing(path) as f:
         f.write("# %s\n# time [s]  %s\n" % (what, " ".join(cols)))
         for k in range(len(wave.t)):
@@ -795,6 +936,29 @@ def readReference(path):
     table = postProcessing.readTable(path)
     d = table.data()
     names = table.names[1:]
+    # the material points' columns (after the heights' ones)
+    kinds = [re.match(r"(p|rho|T|z)M_z(.+)$", n) for n in names]
+    first = next((i for i, m in enumerate(kinds) if m), len(names))
+    material = {}
+    for i, m in enumerate(kinds[first:], first):
+        try:
+            z0 = float(m.group(2)) if m else None
+        except ValueError:
+            z0 = None
+        if z0 is None or m.group(1) in material.get(z0, {}):
+            raise PlaneWaveError("%s: column %s among the material points' "
+                                 "columns is not pM_z, rhoM_z, TM_z or "
+                                 "zM_z<height>" % (path, names[i]))
+        material.setdefault(z0, {})[m.group(1)] = d[:, 1 + i]
+    for z0, m in material.items():
+        if not {"p", "rho"} <= set(m):
+            raise PlaneWaveError("%s: the material point of height %g m has "
+                                 "columns %s, not pM_z and rhoM_z"
+                                 % (path, z0, sorted(m)))
+        m.setdefault("T", None)
+        m.setdefault("z", None)
+    names = names[:first]
+    d = d[:, :1 + first]
     nP = sum(1 for n in names if n.startswith("p_z"))
     nT = sum(1 for n in names if n.startswith("T_z"))
     try:
@@ -809,9 +973,11 @@ def readReference(path):
             or len(names) not in (nP, 2*nP, 3*nP) or nT != len(THeights):
         raise PlaneWaveError("%s: columns %s are not p_z<height> "
                              "[rho_z<height> [T_z<height>]]" % (path, names))
-    return PlaneWave(heights, d[:, 0], d[:, 1:1 + nP], None, None,
+    wave = PlaneWave(heights, d[:, 0], d[:, 1:1 + nP], None, None,
                      d[:, 1 + nP:1 + 2*nP] if rhoHeights else None,
                      T=d[:, 1 + 2*nP:] if THeights else None)
+    wave.material = material
+    return wave
 
 
 _INFLOW_HEADER = """FoamFile
