@@ -161,11 +161,7 @@ def pointFiles(folder):
 def caseAside(folder):
     """The free name folder/case.interrupted, case.interrupted1, ...
     that the case copy of a point's interrupted run is moved to."""
-    n = 0
-    while os.path.lexists(os.path.join(
-            folder, "case.interrupted" + (str(n) if n else ""))):
-        n += 1
-    return os.path.join(folder, "case.interrupted" + (str(n) if n else ""))
+    return caseRuns.asideName(os.path.join(folder, "case"))
 
 
 def runPoint(s, staging, point, inputs, folder, keep):

@@ -185,6 +185,18 @@ def filesNotTheRuns(folder, inputs, outputs=(), end=None):
     return sorted(found)
 
 
+def asideName(path, what="interrupted"):
+    """The free name path.<what>, path.<what>1, ... that a run's folder
+    (or case copy) is moved to, whole, instead of being removed: an
+    interrupted run's copy may hold a file of the user's among the run's
+    (pulseStudy's points, paperFigures' runs; adv43 k07, k21, adv44
+    a43)."""
+    n = 0
+    while os.path.lexists("%s.%s%s" % (path, what, n or "")):
+        n += 1
+    return "%s.%s%s" % (path, what, n or "")
+
+
 def filesUnder(folder):
     """The files and links under folder: relative paths, a set."""
     found = set()
