@@ -49,6 +49,41 @@ class FoamDict(TempDirTestCase):
         with self.assertRaisesRegex(foamDict.DictError, r"f, line 1: uncl"):
             foamDict.parse("s { a 1;", "f")
 
+    def testNotATextFileOrNotAFile(self):
+        # adv45 b16: a binary file given as a dictionary was a traceback
+        # (UnicodeDecodeError); b16, b26: a directory, a FIFO, /dev/null,
+        # /dev/zero were each "no such file"
+        path = os.path.join(self.tmp, "bin")
+        with open(path, "wb") as f:
+            f.write(b"a 1;\n\xd0\xff\x00 b 2;\n")
+        with self.assertRaisesRegex(foamDict.DictError,
+                                    r"bin is not a text dictionary: byte 5 "
+                                    r"\(0xd0\) is not UTF-8 text"):
+            foamDict.read(path)
+        inc = self.write("inc", '#include "bin"\n')
+        with self.assertRaisesRegex(foamDict.DictError,
+                                    r"bin is not a text dictionary"):
+            foamDict.read(inc)
+
+        class E(Exception):
+            pass
+        fifo = os.path.join(self.tmp, "fifo")
+        os.mkfifo(fifo)
+        empty = self.write("empty", "")
+        os.symlink(os.path.join(self.tmp, "gone"),
+                   os.path.join(self.tmp, "link"))
+        for p, why in ((path, r"is not a text dictionary"),
+                       (self.tmp, r": a directory, not a file"),
+                       (fifo, r": a FIFO \(named pipe\), not a file"),
+                       ("/dev/null", r": a device, not a file"),
+                       ("/dev/zero", r": a device, not a file"),
+                       (os.path.join(self.tmp, "link"),
+                        r": a symbolic link to .*gone, which is not there"),
+                       (os.path.join(self.tmp, "none"), r": no such file"),
+                       (empty, r": no entry 'a' \(the file is empty\)")):
+            with self.assertRaisesRegex(E, why):
+                foamDict.read_checked(p, ["a"], ["a"], E)
+
     def testSetEntryKeepsTheRest(self):
         s = foamDict.set_entry(TEXT, ["nucleus", "c0"], "6.67", "f")
         self.assertEqual(foamDict.parse(s)["nucleus"]["c0"], 6.67)

@@ -261,8 +261,21 @@ def read(path):
         raise DictError("%s is %s, not a file%s" % (
             path, kind, "" if kind == "a directory" else
             ": reading it would wait without end for a writer"))
-    with open(path) as f:
-        return parse(f.read(), path, os.path.dirname(path) or ".")
+    return parse(fileText(path), path, os.path.dirname(path) or ".")
+
+
+def fileText(path):
+    """The text of a dictionary file; DictError naming the file if it is
+    not UTF-8 text (a binary file given as a dictionary: a Python
+    traceback, UnicodeDecodeError, adv45 b16)."""
+    with open(path, "rb") as f:
+        data = f.read()
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as err:
+        raise DictError("%s is not a text dictionary: byte %d (0x%02x) is "
+                        "not UTF-8 text; expected an OpenFOAM dictionary"
+                        % (path, err.start, data[err.start]))
 
 
 def own_entry(path, keys):
@@ -271,8 +284,7 @@ def own_entry(path, keys):
     (True, []) if it does, else (False, the file's include directives).
     Only an entry of the file's own text can be set in it (set_entry)."""
     included = []
-    with open(path) as f:
-        d = parse(f.read(), path, included=included)
+    d = parse(fileText(path), path, included=included)
     for k in keys:
         if not isinstance(d, dict) or k not in d:
             return False, included
@@ -283,10 +295,11 @@ def own_entry(path, keys):
 def read_checked(path, valid, required, error):
     """read(path) with its keywords checked (check_keywords) and the
     required ones present; any fault raises error(message), the message
-    naming the file (a missing file, an unknown keyword with the closest
-    valid one, a missing entry)."""
-    if not os.path.isfile(path):
-        raise error("%s: no such file" % path)
+    naming the file (a missing file or what the path is instead, an
+    unknown keyword with the closest valid one, a missing entry)."""
+    why = options.fileProblem(path)
+    if why:
+        raise error("%s: %s" % (path, why))
     try:
         d = read(path)
         check_keywords(d, valid, path)
@@ -294,7 +307,9 @@ def read_checked(path, valid, required, error):
         raise error(str(err))
     for k in required:
         if k not in d:
-            raise error("%s: no entry '%s'" % (path, k))
+            raise error("%s: no entry '%s'%s" % (
+                path, k, " (the file is empty)"
+                if os.path.getsize(path) == 0 else ""))
     return d
 
 
