@@ -10,8 +10,8 @@ import shutil
 import subprocess
 import time
 
-from neuronFsi import (caseLock, foamDict, logs, postProcessing, scratch,
-                       signals)
+from neuronFsi import (caseLock, caseRuns, foamDict, logs, postProcessing,
+                       scratch, signals)
 
 MESH_SIZES = ("nucleusSize", "cytoplasmSize", "membraneSize", "contactSize")
 
@@ -90,6 +90,13 @@ class ForwardModel:
         for d in ("system", "constant"):
             if not os.path.isdir(os.path.join(self.case, d)):
                 raise ModelError("%s: no %s/ folder" % (self.case, d))
+        # a file the case reads from outside its folder by a path relative
+        # to it: the copies in the work folder read another one (adv45 b15)
+        problem = caseRuns.relativeOutsideProblem(
+            self.case, "The forward runs use copies of its system/ and "
+            "constant/ in %s" % self.work, ("system", "constant"))
+        if problem:
+            raise ModelError(problem)
         scratch.copyInputs(self.case, self.base, ("system", "constant"),
                            ("cell.msh", "*.calibrated"))
         self._edit_mesh_dict(mesh_factor)

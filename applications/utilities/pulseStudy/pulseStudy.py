@@ -685,6 +685,13 @@ def main():
         for label in sorted(os.listdir(os.path.join(out, "points"))):
             caseRuns.checkNoEarlierRun(
                 os.path.join(out, "points", label, "case"))
+        # a file the base case reads from outside its folder by a path
+        # relative to it: the points' copies read another one (adv45 b15)
+        problem = caseRuns.relativeOutsideProblem(
+            s["base"], "The study runs copies of the base case in %s"
+            % os.path.join(out, "points", "<label>", "case"))
+        if problem:
+            raise ps.StudyError(problem)
         staging, digests = prepareBase(s, out)
         outside = ps.outsideInputs(staging)
         pts = ps.points(s)
