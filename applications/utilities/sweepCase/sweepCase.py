@@ -412,6 +412,13 @@ def main():
         case = os.path.abspath(a.case)
         if not os.path.isdir(case):
             raise SweepError("-case %s: no such directory" % case)
+        # the case path once, before anything is copied: every run goes in
+        # a folder beside it, where OpenFOAM's applications refuse the
+        # character (adv45 b05 (b): a space in the path was found by the
+        # first run's solver, its run folder left)
+        problem = options.casePathProblem(case)
+        if problem:
+            raise SweepError(problem)
         # the solvers' run lock of the case (neuronFsi.caseLock): its
         # copies are taken from it, its report written into it
         lock = caseLock.held(case, "sweepCase").__enter__()
