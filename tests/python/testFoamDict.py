@@ -57,9 +57,17 @@ class FoamDict(TempDirTestCase):
         with open(path, "wb") as f:
             f.write(b"a 1;\n\xd0\xff\x00 b 2;\n")
         with self.assertRaisesRegex(foamDict.DictError,
-                                    r"bin is not a text dictionary: byte 5 "
-                                    r"\(0xd0\) is not UTF-8 text"):
+                                    r"bin is not a text dictionary: byte 7 "
+                                    r"\(0x00\) is a control character"):
             foamDict.read(path)
+        # adv45 b48: a Latin-1 byte in a comment (an ISO-8859-1 editor's
+        # "um" with a micro sign) was a traceback; OpenFOAM reads it
+        latin = os.path.join(self.tmp, "latin")
+        with open(latin, "wb") as f:
+            f.write(b"// a size in \xb5m\nradius 2e-5; // \xb5m\n")
+        self.assertEqual(foamDict.read(latin), {"radius": 2e-5})
+        self.assertEqual(foamDict.fileText(latin),
+                         "// a size in \u00b5m\nradius 2e-5; // \u00b5m\n")
         inc = self.write("inc", '#include "bin"\n')
         with self.assertRaisesRegex(foamDict.DictError,
                                     r"bin is not a text dictionary"):

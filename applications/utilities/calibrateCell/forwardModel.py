@@ -107,14 +107,14 @@ class ForwardModel:
                              or "cellMesh failed for %s (see %s)"
                              % (self.case, log))
         self.ip_path = os.path.join(self.base, "constant/indenterProperties")
-        self.ip_text = open(self.ip_path).read()
+        self.ip_text = foamDict.fileText(self.ip_path)
         if protocol is not None:
             self.ip_text = foamDict.set_entry(
                 self.ip_text, ["protocol"], protocol_text(protocol),
                 self.ip_path)
         self.ip = foamDict.parse(self.ip_text, self.ip_path)
         self.sp_path = os.path.join(self.base, "constant/solidProperties")
-        self.sp_text = open(self.sp_path).read()
+        self.sp_text = foamDict.fileText(self.sp_path)
         self.materials, self.elements = self._probe()
         self.count = 0
 
@@ -157,7 +157,7 @@ class ForwardModel:
         if factor == 1.0:
             return
         p = os.path.join(self.base, "system/cellMeshDict")
-        text = open(p).read()
+        text = foamDict.fileText(p)
         d = foamDict.parse(text, p)
         for k in MESH_SIZES:
             if k in d:

@@ -265,17 +265,25 @@ def read(path):
 
 
 def fileText(path):
-    """The text of a dictionary file; DictError naming the file if it is
-    not UTF-8 text (a binary file given as a dictionary: a Python
-    traceback, UnicodeDecodeError, adv45 b16)."""
+    """The text of a dictionary file as OpenFOAM reads it, byte by byte:
+    UTF-8, else Latin-1 (one character per byte: a comment written by an
+    ISO-8859-1 editor, "// a size in \\xb5m", is no error to OpenFOAM;
+    adv45 b48: a Python traceback, UnicodeDecodeError, in pulseStudy,
+    calibrateCell, sweepCase and paperFigures). A file with a NUL or
+    another control character (a binary file given as a dictionary,
+    adv45 b16: a traceback) is a DictError naming the file and the byte.
+    The one reader of a dictionary's text for our Python tools."""
     with open(path, "rb") as f:
         data = f.read()
+    bad = re.search(rb"[\x00-\x08\x0e-\x1f\x7f]", data)
+    if bad:
+        raise DictError("%s is not a text dictionary: byte %d (0x%02x) is a "
+                        "control character; expected an OpenFOAM dictionary"
+                        % (path, bad.start(), data[bad.start()]))
     try:
         return data.decode("utf-8")
-    except UnicodeDecodeError as err:
-        raise DictError("%s is not a text dictionary: byte %d (0x%02x) is "
-                        "not UTF-8 text; expected an OpenFOAM dictionary"
-                        % (path, err.start, data[err.start]))
+    except UnicodeDecodeError:
+        return data.decode("latin-1")
 
 
 def own_entry(path, keys):
