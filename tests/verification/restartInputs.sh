@@ -13,6 +13,9 @@
 #  - solid/solid.h5 of another run (another solid rho0), and solid.h5
 #    with a bit of step 0 flipped (the restart reads step 1): refused,
 #    naming the file (and the dataset), nothing changed;
+#  - the water's coefficients moved into constant/water/eos, which
+#    thermophysicalProperties #includes, are not a change (adv42 g07
+#    (a0)); C0 changed there is refused naming the entry and that file;
 #  - an edited comment and layout, and a changed end time, are not
 #    changes: the restart runs (the boundary conditions read from the
 #    written time equal those recorded from 0/);
@@ -130,6 +133,55 @@ status=0; cellBlastFoam > log.restart 2>&1 || status=$?
 check "cellBlastFoam: 0/p's table rewritten with its size and 17 digits (the same rows) is not a change" \
     "tr -s ' \n' ' ' < 0/p | grep -q 'uniformValue table 5((0 0) (1e-10 50000000) (5.0000000000000001e-09 50000000)' \
      && [ $status -eq 0 ] && grep -q '^End' log.restart && [ -d 1.5e-08 ]"
+# The water's coefficients moved into a file under constant/ that
+# thermophysicalProperties #includes (adv42 g07 (a0): the same numbers were
+# refused as "constant/water/eos (added)"): what the run reads is the same,
+# the restart runs; C0 changed there: refused naming the dictionary, the
+# entry and the file it is read from, nothing changed
+moveEos()
+{
+    mkdir -p constant/water
+    /usr/bin/python3 - <<'PY'
+import re
+p = "constant/thermophysicalProperties"; t = open(p).read()
+m = re.search(r"mieGruneisenCoeffs\s*\{[^{}]*\}", t)
+open("constant/water/eos", "w").write(m.group(0) + "\n")
+open(p, "w").write(t[:m.start()] + '#include "water/eos"' + t[m.end():])
+PY
+}
+rm -rf "$work/edit"; cp -r "$case" "$work/edit"; cd "$work/edit"
+moveEos
+sed -i 's/\(C0 *\)[0-9.e+-]*;/\11460;/' constant/water/eos
+caseSums > "$work/before"
+status=0; cellBlastFoam > log.restart 2>&1 || status=$?
+caseSums > "$work/after"
+check "cellBlastFoam, C0 changed in constant/water/eos (included): refused, naming the entry and the file, nothing changed" \
+    "[ $status -ne 0 ] && grep -q 'would continue the results with other inputs' log.restart \
+     && grep -qF \"    constant/thermophysicalProperties, entry 'mieGruneisenCoeffs/C0' (changed; read from constant/water/eos)\" log.restart \
+     && ! grep -q 'constant/water/eos (added)' log.restart && cmp -s '$work/before' '$work/after'"
+rm -rf "$work/edit"; cp -r "$case" "$work/edit"; cd "$work/edit"
+moveEos
+status=0; cellBlastFoam > log.restart 2>&1 || status=$?
+check "cellBlastFoam: the same coefficients moved into constant/water/eos (included) are not a change" \
+    "[ $status -eq 0 ] && grep -q '^End' log.restart && [ -d 1.5e-08 ]"
+# An optional include (the tutorials' #sinclude "fsiProperties.allrun")
+# of a file absent at the run, then there but empty: what the run reads is
+# the same, the restart runs (adv45 b38 (c): refused as
+# "constant/fsiProperties.allrun (added)"); with a coupling entry in it:
+# refused naming the entry and the file
+rm -rf "$work/edit"; cp -r "$case" "$work/edit"; cd "$work/edit"
+printf '\n#sinclude "fsiProperties.allrun"\n' >> constant/fsiProperties
+printf 'coupling\n{\n    tolerance 1e-5;\n}\n' > constant/fsiProperties.allrun
+caseSums > "$work/before"
+status=0; cellBlastFoam > log.restart 2>&1 || status=$?
+caseSums > "$work/after"
+check "cellBlastFoam, coupling/tolerance set in an #sincluded constant/fsiProperties.allrun: refused, naming the entry and the file, nothing changed" \
+    "[ $status -ne 0 ] && grep -qF \"    constant/fsiProperties, entry 'coupling/tolerance' (changed; read from constant/fsiProperties.allrun)\" log.restart \
+     && ! grep -q 'fsiProperties.allrun (added)' log.restart && cmp -s '$work/before' '$work/after'"
+: > constant/fsiProperties.allrun
+status=0; cellBlastFoam > log.restart 2>&1 || status=$?
+check "cellBlastFoam: an empty #sincluded constant/fsiProperties.allrun is not a change" \
+    "[ $status -eq 0 ] && grep -q '^End' log.restart && [ -d 1.5e-08 ]"
 cd "$case"
 sed -i 's#^\(materials\)#// a comment added before the restart\n\1#; s/rho0        1000;/rho0  1000 ;/' constant/solidProperties
 status=0; cellBlastFoam > log.restart 2>&1 || status=$?
