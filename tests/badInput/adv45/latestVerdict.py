@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """latestVerdict.py [PASS ID]...: for each case (default: queueN.txt), the verdict of the LATEST report that has a table
-row for it (adv43, adv42 (its phase-C table first), adv41, adv40, ...): the row's last cell's first word (OK, CRASH, HANG,
+row for it (adv44, adv43, adv42 (its phase-C table first), adv41, adv40, ...): the row's last cell's first word (OK, CRASH, HANG,
 SILENT, DATALOSS, UNCLEAR; "(low)" kept; its last such row in that report), with the report's name; a case judged only in a pass's verdict-count summary
 (adv35) or in phase-A "all OK" statements gets 'OK (no row)'."""
 import re, os, sys
@@ -13,14 +13,14 @@ def rows(P):
             c = [x.strip() for x in l.strip().strip('|').split('|')]
             out.append(c)
     return out
-order = ['adv43', 'adv42', 'adv41', 'adv40', 'adv39', 'adv38', 'adv37', 'adv36', 'adv35']
+order = ['adv44', 'adv43', 'adv42', 'adv41', 'adv40', 'adv39', 'adv38', 'adv37', 'adv36', 'adv35']
 R = {P: rows(P) for P in order}
 def verdict(p, i):
     for P in order:
         for c in reversed(R[P]):
             first = c[0].replace('*', '')
             cur, hit = P, False
-            for tok in re.findall(r'adv3[5-9]|adv4[0-3]|\b[a-z]\d{2,3}\b', first):
+            for tok in re.findall(r'adv3[5-9]|adv4[0-4]|\b[a-z]\d{2,3}\b', first):
                 if tok.startswith('adv'): cur = tok
                 elif cur == p and tok == i: hit = True
             if not hit: continue
