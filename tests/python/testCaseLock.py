@@ -260,5 +260,57 @@ class UnderItsAllrun(LiveLockTestCase):
             caseLock.checkFree(self.case, "planeWave")
 
 
+class LockCutShort(LiveLockTestCase):
+    """adv44 a29: a run lock cut after its first line (a power loss or a
+    full disk while it was written: "pid 484" alone) was read as a live
+    run of the host "" ("in use by another run (process 484 on host ,
+    started ;"): a lock lacking its host, executable or start time, or
+    whose last line is cut, is damaged - named as such with what to do,
+    never taken over nor removed; the same in inUse (planeWave's check)
+    and in the Allrun's lock (neuronFsi.allrunLock)."""
+
+    def cuts(self):
+        """The texts of a live process's lock cut after each of its first
+        four lines, and inside its last line."""
+        p = subprocess.Popen(["sleep", "60"], cwd=self.case)
+        self.addCleanup(lambda: (p.kill(), p.wait()))
+        text = caseLock.lockText(p.pid, "sleep", os.path.realpath(self.case))
+        lines = text.split("\n")
+        return p, ["\n".join(lines[:n]) + "\n" for n in range(1, 5)] + [
+            text[:-3]]
+
+    def testNamedDamagedNeverTakenOver(self):
+        from neuronFsi import allrunLock
+        p, cuts = self.cuts()
+        path = self.case + "/.runLock"
+        for text in cuts:
+            with open(path, "w") as f:
+                f.write(text)
+            with self.assertRaisesRegex(
+                    caseLock.CaseLockError,
+                    r"\.runLock of the case .* is damaged: cut short \(it "
+                    r"names process %d but (not its|its last line is cut)"
+                    r".*If no run of this case is going on" % p.pid):
+                with caseLock.held(self.case, "planeWave"):
+                    pass
+            self.assertRegex(caseLock.inUse(self.case),
+                             r"is damaged: cut short")
+            with self.assertRaisesRegex(allrunLock.LockError,
+                                        r"is damaged: cut short"):
+                allrunLock.take(self.case, os.getpid())
+            with open(path) as f:
+                self.assertEqual(f.read(), text)
+
+    def testWholeLockStillLive(self):
+        p = self.holdLock()
+        self.assertEqual(caseLock.damage(caseLock.read(
+            self.case + "/.runLock")), "")
+        with self.assertRaisesRegex(caseLock.CaseLockError,
+                                    r"is in use by sleep \(process %d"
+                                    % p.pid):
+            with caseLock.held(self.case, "planeWave"):
+                pass
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -121,5 +121,42 @@ class CaseRuns(TempDirTestCase):
         self.assertIn(caseRuns.MARKER, str(c.exception))
 
 
+class RelativeOutside(TempDirTestCase):
+    """adv45 b15: the base case's #sinclude "../../shared/override" (a
+    Maxwell branch) was not read by pulseStudy's point copies, rc 0: a
+    reference to a file outside the case by a path that depends on where
+    the case lies is named (caseRuns.relativeOutside), an absolute one or
+    one inside the case is not."""
+
+    def testNamed(self):
+        self.write("shared/override", "mu2 50;\n")
+        self.write("base/system/controlDict", "a 1;\n")
+        self.write("base/constant/sub/y", "b 2;\n")
+        sp = self.write("base/constant/solidProperties", (
+            'materials\n{\n    #sinclude "../../shared/override"\n}\n'
+            '#include "sub/y"\n#include "../constant/sub/y"\n'
+            '#include "%s/shared/override"\n#sinclude "$HOME/x"\n'
+            '#include "$FOAM_CASE/../missing"\n'
+            'top { file "$FOAM_CASE/constant/sub/y"; }\n'
+            'p { file "<case>/../t.dat"; }\n' % self.tmp))
+        base = os.path.dirname(os.path.dirname(sp))
+        found = caseRuns.relativeOutside(base)
+        self.assertEqual(found, [
+            ("constant/solidProperties", '#sinclude "../../shared/override"',
+             os.path.join(os.path.realpath(self.tmp), "shared", "override")),
+            ("constant/solidProperties", '#include "$FOAM_CASE/../missing"',
+             os.path.join(os.path.realpath(self.tmp), "missing")),
+            ("constant/solidProperties", 'file "<case>/../t.dat"',
+             os.path.join(os.path.realpath(self.tmp), "t.dat"))])
+        self.assertRegex(
+            caseRuns.relativeOutsideProblem(base, "The study runs copies"),
+            r"base reads files outside its folder by a path that depends on "
+            r"where the case lies: constant/solidProperties: #sinclude "
+            r"\"../../shared/override\" \(here .*/shared/override\);.*The "
+            r"study runs copies, where they would read another file or "
+            r"none. Nothing was run: give each path absolute")
+        self.assertEqual(caseRuns.relativeOutside(base, ("system",)), [])
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -49,6 +49,49 @@ class FoamDict(TempDirTestCase):
         with self.assertRaisesRegex(foamDict.DictError, r"f, line 1: uncl"):
             foamDict.parse("s { a 1;", "f")
 
+    def testNotATextFileOrNotAFile(self):
+        # adv45 b16: a binary file given as a dictionary was a traceback
+        # (UnicodeDecodeError); b16, b26: a directory, a FIFO, /dev/null,
+        # /dev/zero were each "no such file"
+        path = os.path.join(self.tmp, "bin")
+        with open(path, "wb") as f:
+            f.write(b"a 1;\n\xd0\xff\x00 b 2;\n")
+        with self.assertRaisesRegex(foamDict.DictError,
+                                    r"bin is not a text dictionary: byte 7 "
+                                    r"\(0x00\) is a control character"):
+            foamDict.read(path)
+        # adv45 b48: a Latin-1 byte in a comment (an ISO-8859-1 editor's
+        # "um" with a micro sign) was a traceback; OpenFOAM reads it
+        latin = os.path.join(self.tmp, "latin")
+        with open(latin, "wb") as f:
+            f.write(b"// a size in \xb5m\nradius 2e-5; // \xb5m\n")
+        self.assertEqual(foamDict.read(latin), {"radius": 2e-5})
+        self.assertEqual(foamDict.fileText(latin),
+                         "// a size in \u00b5m\nradius 2e-5; // \u00b5m\n")
+        inc = self.write("inc", '#include "bin"\n')
+        with self.assertRaisesRegex(foamDict.DictError,
+                                    r"bin is not a text dictionary"):
+            foamDict.read(inc)
+
+        class E(Exception):
+            pass
+        fifo = os.path.join(self.tmp, "fifo")
+        os.mkfifo(fifo)
+        empty = self.write("empty", "")
+        os.symlink(os.path.join(self.tmp, "gone"),
+                   os.path.join(self.tmp, "link"))
+        for p, why in ((path, r"is not a text dictionary"),
+                       (self.tmp, r": a directory, not a file"),
+                       (fifo, r": a FIFO \(named pipe\), not a file"),
+                       ("/dev/null", r": a device, not a file"),
+                       ("/dev/zero", r": a device, not a file"),
+                       (os.path.join(self.tmp, "link"),
+                        r": a symbolic link to .*gone, which is not there"),
+                       (os.path.join(self.tmp, "none"), r": no such file"),
+                       (empty, r": no entry 'a' \(the file is empty\)")):
+            with self.assertRaisesRegex(E, why):
+                foamDict.read_checked(p, ["a"], ["a"], E)
+
     def testSetEntryKeepsTheRest(self):
         s = foamDict.set_entry(TEXT, ["nucleus", "c0"], "6.67", "f")
         self.assertEqual(foamDict.parse(s)["nucleus"]["c0"], 6.67)

@@ -570,11 +570,56 @@ class UsersFilesInARunFolder(TempDirTestCase):
         with open(os.path.join(folder, "myAnalysis", "fit.py")) as f:
             self.assertEqual(f.read(), "mine myAnalysis/fit.py\n")
 
+    def cleared(self, folder, run):
+        """paperCases.clear(run, folder): (where it went, what it said)."""
+        import contextlib
+        import io
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out):
+            aside = paperCases.clear(run, folder)
+        return aside, out.getvalue()
+
     def testNoteInAnEarlierRunKept(self):
+        # an interrupted run (its solver's log without End) of the
+        # comparison, its Allrun's plots at its top and the user's note
+        # (adv44 a43: refused naming the run's own plots as the user's, the
+        # folder to be moved away by hand): moved aside whole, said
         case, run, folder = self.folder(["Allrun", "log.Allrun",
                                          "log.cellIndentationFoam",
+                                         "indentation.png", "results.md",
                                          "notes.md"])
-        with self.assertRaises(paperCases.PaperError) as e:
-            paperCases.make(run, case)
-        self.assertIn("(notes.md)", str(e.exception))
-        self.assertTrue(os.path.isfile(os.path.join(folder, "notes.md")))
+        run["kind"] = "indentation"
+        aside, said = self.cleared(folder, run)
+        self.assertEqual(aside, folder + ".interrupted")
+        self.assertFalse(os.path.lexists(folder))
+        for f in ("notes.md", "indentation.png", "log.Allrun"):
+            with open(os.path.join(aside, f)) as g:
+                self.assertEqual(g.read(), "mine %s\n" % f)
+        self.assertRegex(said, r"averageCell: the folder of an interrupted "
+                         r"run of the comparison, .*averageCell, holds files"
+                         r" that may not be the run's \(indentation.png, "
+                         r"notes.md, results.md\): moved whole to "
+                         r".*averageCell.interrupted .*remove it when")
+        # again: the next free name; a finished earlier run's: .earlier
+        self.folder(["Allrun", "log.Allrun", "notes.md"])
+        self.assertEqual(self.cleared(folder, run)[0],
+                         folder + ".interrupted1")
+        self.folder(["Allrun", "log.Allrun", "notes.md"])
+        self.write(os.path.join(folder, "log.cellIndentationFoam"),
+                   "Starting\nEnd\n")
+        self.assertEqual(self.cleared(folder, run)[0], folder + ".earlier")
+        for d in (".interrupted", ".interrupted1", ".earlier"):
+            self.assertTrue(os.path.isfile(os.path.join(folder + d,
+                                                        "notes.md")))
+
+    def testRunsOwnFolderRemoved(self):
+        # an earlier run's folder holding the tutorial's files and logs
+        # only: replaced as before, nothing moved aside
+        case, run, folder = self.folder(["Allrun", "log.Allrun",
+                                         "log.cellIndentationFoam"])
+        run["kind"] = "indentation"
+        aside, said = self.cleared(folder, run)
+        self.assertIsNone(aside)
+        self.assertEqual(said, "")
+        self.assertFalse(os.path.lexists(folder))
+        self.assertEqual(os.listdir(os.path.dirname(folder)), [])

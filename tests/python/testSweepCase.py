@@ -165,6 +165,24 @@ class ValuesOneWord(TempDirTestCase):
             self.assertIn("Nothing was run", r.stderr)
             self.unchanged()
 
+    def testCasePathWithASpace(self):
+        """adv45 b05 (b): a space in the case path was found by the first
+        run's solver, its run folder left beside the case: refused before
+        anything is copied, naming the path and the character"""
+        self.write("my case/system/controlDict", "application true;\n")
+        self.write("my case/constant/settings", "value 1;\n")
+        r = subprocess.run(
+            [sys.executable, SWEEP, "-case", os.path.join(self.tmp, "my case"),
+             "-entry", "constant/settings/value", "-values", "1 2", "-run",
+             "true", "-output", "n=out.txt:0:b"],
+            capture_output=True, text=True)
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertRegex(r.stderr, r"the case directory \".*/my case\" holds "
+                         r"a space(.|\n)*Nothing was read or written")
+        self.assertNotIn("Traceback", r.stderr)
+        self.assertEqual(sorted(os.listdir(self.tmp)),
+                         ["case", "my case", "other", "shared"])
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -10,8 +10,8 @@ import shutil
 import subprocess
 import time
 
-from neuronFsi import (caseLock, foamDict, logs, postProcessing, scratch,
-                       signals)
+from neuronFsi import (caseLock, caseRuns, foamDict, logs, postProcessing,
+                       scratch, signals)
 
 MESH_SIZES = ("nucleusSize", "cytoplasmSize", "membraneSize", "contactSize")
 
@@ -90,6 +90,13 @@ class ForwardModel:
         for d in ("system", "constant"):
             if not os.path.isdir(os.path.join(self.case, d)):
                 raise ModelError("%s: no %s/ folder" % (self.case, d))
+        # a file the case reads from outside its folder by a path relative
+        # to it: the copies in the work folder read another one (adv45 b15)
+        problem = caseRuns.relativeOutsideProblem(
+            self.case, "The forward runs use copies of its system/ and "
+            "constant/ in %s" % self.work, ("system", "constant"))
+        if problem:
+            raise ModelError(problem)
         scratch.copyInputs(self.case, self.base, ("system", "constant"),
                            ("cell.msh", "*.calibrated"))
         self._edit_mesh_dict(mesh_factor)
@@ -100,14 +107,14 @@ class ForwardModel:
                              or "cellMesh failed for %s (see %s)"
                              % (self.case, log))
         self.ip_path = os.path.join(self.base, "constant/indenterProperties")
-        self.ip_text = open(self.ip_path).read()
+        self.ip_text = foamDict.fileText(self.ip_path)
         if protocol is not None:
             self.ip_text = foamDict.set_entry(
                 self.ip_text, ["protocol"], protocol_text(protocol),
                 self.ip_path)
         self.ip = foamDict.parse(self.ip_text, self.ip_path)
         self.sp_path = os.path.join(self.base, "constant/solidProperties")
-        self.sp_text = open(self.sp_path).read()
+        self.sp_text = foamDict.fileText(self.sp_path)
         self.materials, self.elements = self._probe()
         self.count = 0
 
@@ -150,7 +157,7 @@ class ForwardModel:
         if factor == 1.0:
             return
         p = os.path.join(self.base, "system/cellMeshDict")
-        text = open(p).read()
+        text = foamDict.fileText(p)
         d = foamDict.parse(text, p)
         for k in MESH_SIZES:
             if k in d:

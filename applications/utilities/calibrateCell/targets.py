@@ -8,7 +8,7 @@ import re
 
 import numpy as np
 
-from neuronFsi import foamDict, ranges
+from neuronFsi import foamDict, options, ranges
 
 
 class TargetError(Exception):
@@ -39,8 +39,9 @@ def read_curve(path):
     """Times [s] and forces [N] of a CSV file with a header row naming the
     columns 'time' and 'force' (units in brackets allowed, other columns
     ignored). Times strictly increasing, forces finite and >= 0."""
-    if not os.path.isfile(path):
-        raise TargetError("%s: no such file" % path)
+    why = options.fileProblem(path)
+    if why:
+        raise TargetError("%s: %s" % (path, why))
     # utf-8-sig: a byte-order mark (spreadsheet exports) is not part of
     # the first column's name (adv32 k02: "missing column 'time'")
     try:

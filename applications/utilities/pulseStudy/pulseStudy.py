@@ -161,11 +161,7 @@ def pointFiles(folder):
 def caseAside(folder):
     """The free name folder/case.interrupted, case.interrupted1, ...
     that the case copy of a point's interrupted run is moved to."""
-    n = 0
-    while os.path.lexists(os.path.join(
-            folder, "case.interrupted" + (str(n) if n else ""))):
-        n += 1
-    return os.path.join(folder, "case.interrupted" + (str(n) if n else ""))
+    return caseRuns.asideName(os.path.join(folder, "case"))
 
 
 def runPoint(s, staging, point, inputs, folder, keep):
@@ -689,6 +685,13 @@ def main():
         for label in sorted(os.listdir(os.path.join(out, "points"))):
             caseRuns.checkNoEarlierRun(
                 os.path.join(out, "points", label, "case"))
+        # a file the base case reads from outside its folder by a path
+        # relative to it: the points' copies read another one (adv45 b15)
+        problem = caseRuns.relativeOutsideProblem(
+            s["base"], "The study runs copies of the base case in %s"
+            % os.path.join(out, "points", "<label>", "case"))
+        if problem:
+            raise ps.StudyError(problem)
         staging, digests = prepareBase(s, out)
         outside = ps.outsideInputs(staging)
         pts = ps.points(s)

@@ -252,7 +252,7 @@ class Output:
         if not os.path.isfile(path):
             raise SweepError("output '%s': no file %s" % (self.name, path))
         if self.regex:
-            found = self.regex.findall(open(path).read())
+            found = self.regex.findall(open(path, errors="replace").read())
             if not found:
                 raise SweepError("output '%s': no match of /%s/ in %s"
                                  % (self.name, self.regex.pattern, path))
@@ -354,7 +354,7 @@ def run_one(case, copy, f, keys, value, outputs, command):
     # during the sweep went into the later runs only)
     _copyCase(case, copy)
     p = os.path.join(copy, f)
-    text = foamDict.set_entry(open(p).read(), keys, value, p)
+    text = foamDict.set_entry(foamDict.fileText(p), keys, value, p)
     # by replacement: a link in the copy (to a file outside the case) is
     # replaced by the file, never written through (adv44 a36: the user's
     # shared dictionary outside the case was edited by every run)
@@ -362,7 +362,7 @@ def run_one(case, copy, f, keys, value, outputs, command):
         out.write(text)
     # the value as the run reads it (adv44 a15: an include after the
     # entry set it again); checked for every value before the first run
-    wrong = _overridden(open(p).read(), p, keys, value, "/".join(keys))
+    wrong = _overridden(foamDict.fileText(p), p, keys, value, "/".join(keys))
     if wrong:
         raise SweepError("value %s: %s" % (value, wrong))
     # The output files the copy holds before the run: the case's earlier
@@ -412,6 +412,13 @@ def main():
         case = os.path.abspath(a.case)
         if not os.path.isdir(case):
             raise SweepError("-case %s: no such directory" % case)
+        # the case path once, before anything is copied: every run goes in
+        # a folder beside it, where OpenFOAM's applications refuse the
+        # character (adv45 b05 (b): a space in the path was found by the
+        # first run's solver, its run folder left)
+        problem = options.casePathProblem(case)
+        if problem:
+            raise SweepError(problem)
         # the solvers' run lock of the case (neuronFsi.caseLock): its
         # copies are taken from it, its report written into it
         lock = caseLock.held(case, "sweepCase").__enter__()
@@ -447,8 +454,8 @@ def main():
         # (adv44 a15): checked before anything is copied or run
         p = os.path.join(case, f)
         for v in values:
-            wrong = _overridden(foamDict.set_entry(open(p).read(), keys, v,
-                                                   p), p, keys, v, a.entry)
+            wrong = _overridden(foamDict.set_entry(
+                foamDict.fileText(p), keys, v, p), p, keys, v, a.entry)
             if wrong:
                 raise SweepError(wrong + ". Nothing was run")
         command = a.run

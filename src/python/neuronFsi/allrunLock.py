@@ -33,8 +33,8 @@ import time
 # one lock, one implementation: the file, its reader and the stale and
 # ancestor rules are neuronFsi.caseLock's (the Python tools' side of
 # caseLock.H)
-from .caseLock import FILE, _notAFile, _running as comm, giveBack, \
-    holding, isAncestor, lockText, read, stale, takeOver
+from .caseLock import FILE, _notAFile, _running as comm, damage, \
+    giveBack, holding, isAncestor, lockText, read, stale, takeOver
 
 
 class LockError(Exception):
@@ -61,19 +61,16 @@ def take(case, pid):
                 f.write(lockText(pid, comm(pid) or "Allrun", real))
             return True
         h = read(path)
-        if h["readable"] and h["pid"] <= 0:
+        if h["readable"] and damage(h):
             time.sleep(0.5)         # a run starting: not written yet
             h = read(path)
-        what = _notAFile(path)
-        if what or not h["readable"] or h["pid"] <= 0:
+        what = _notAFile(path) or damage(h)
+        if what:
             raise LockError(
                 "The run lock %s of the case %s is %s, not a lock this run "
                 "can check. If no run of this case is going on (or "
                 "starting), remove it; otherwise wait for that run to end."
-                % (path, real, what or ("a file that cannot be read"
-                                        if not h["readable"] else
-                                        "empty or damaged (it names no "
-                                        "process)")))
+                % (path, real, what))
         h = holding(h)
         if h["host"] == socket.gethostname() and isAncestor(h["pid"], pid) \
                 and comm(h["pid"]):

@@ -76,7 +76,7 @@ def parse(text):
     process id); 'under': the text of the lock it took over (its lines
     "under <line>"), '' if none. caseLock.H's parse."""
     h = {"pid": -1, "host": "", "executable": "", "started": "", "case": "",
-         "under": "", "readable": True}
+         "under": "", "readable": True, "whole": text.endswith("\n")}
     for line in text.split("\n"):
         key, _, value = line.strip().partition(" ")
         value = value.strip()
@@ -90,6 +90,30 @@ def parse(text):
         elif key == "under":
             h["under"] += value + "\n"
     return h
+
+
+def damage(h):
+    """What makes lock h one that cannot be checked, '' if nothing:
+    unreadable, naming no process, or cut short (a power loss or a full
+    disk during its write: it must name its process, host, executable,
+    start time and case and end with a whole line; adv44 a29: a lock cut after its
+    first line was a live run "process 484 on host , started ;").
+    caseLock.H's damage."""
+    if not h["readable"]:
+        return "a file that cannot be read"
+    if h["pid"] <= 0:
+        return "empty or damaged (it names no process)"
+    missing = [what for key, what in (("host", "its host"),
+                                      ("executable", "its executable"),
+                                      ("started", "its start time"),
+                                      ("case", "its case"))
+               if not h[key]]
+    if not missing and h["whole"]:
+        return ""
+    return ("damaged: cut short (it names process %d but %s; a lock is cut "
+            "by a power loss or a full disk while it is written)"
+            % (h["pid"], "not " + ", ".join(missing) if missing
+               else "its last line is cut"))
 
 
 def readText(path):
@@ -245,7 +269,7 @@ def takeOver(path, pid, executable, case, ancestor):
     lock names pid, the one taken over kept as its "under" lines; False
     if the lock is gone or no longer that run's (caseLock.H's takeOver)."""
     text = readText(path)
-    if not text or parse(text)["pid"] <= 0 \
+    if not text or damage(parse(text)) \
             or holding(parse(text))["pid"] != ancestor:
         return False
     lock = lockText(pid, executable, case) + "".join(
@@ -296,15 +320,12 @@ def inUse(case):
     path = os.path.join(case, FILE)
     if os.path.lexists(path):
         h = read(path)
-        if h["pid"] > 0:
+        if not damage(h):
             h = holding(h)
-        what = _notAFile(path)
-        if what or not h["readable"] or h["pid"] <= 0:
+        what = _notAFile(path) or damage(h)
+        if what:
             return ("its run lock %s is %s, not a lock that can be checked"
-                    % (path, what or ("a file that cannot be read"
-                                      if not h["readable"] else
-                                      "empty or damaged (it names no "
-                                      "process)")))
+                    % (path, what))
         if not stale(h, case) and not ownRun(h):
             return "it is in use by " + _describe(h, path)
     m = caseRuns._marker(case)
@@ -405,11 +426,11 @@ class held:
                 atexit.register(self._release)
                 return self
             h = read(self.path)
-            if h["readable"] and h["pid"] <= 0:
+            if h["readable"] and damage(h):
                 time.sleep(0.5)        # a run starting: not written yet
                 h = read(self.path)
-            what = _notAFile(self.path)
-            if not what and h["readable"] and h["pid"] > 0:
+            what = _notAFile(self.path) or damage(h)
+            if not what:
                 h = holding(h)
             if ownRun(h):
                 if h["pid"] == os.getpid():
@@ -421,14 +442,12 @@ class held:
                 self.taken = True
                 atexit.register(self._release)
                 return self
-            if what or not h["readable"] or h["pid"] <= 0:
+            if what:
                 raise CaseLockError(
                     "the run lock %s of the case %s is %s, not a lock this "
                     "run can check. If no run of this case is going on (or"
                     " starting), remove it; otherwise wait for that run to "
-                    "end" % (self.path, self.case, what or (
-                        "a file that cannot be read" if not h["readable"]
-                        else "empty or damaged (it names no process)")))
+                    "end" % (self.path, self.case, what))
             if attempt > 0 or not stale(h, self.case):
                 raise CaseLockError(
                     "the case %s is in use by %s. One run per case: wait "

@@ -23,6 +23,7 @@ order; the first exception of a job is raised once the others are done.
 
 import concurrent.futures
 import os
+import re
 import socket
 import subprocess
 import time
@@ -183,6 +184,107 @@ def filesNotTheRuns(folder, inputs, outputs=(), end=None):
             if late or top:
                 found.append(r)
     return sorted(found)
+
+
+def asideName(path, what="interrupted"):
+    """The free name path.<what>, path.<what>1, ... that a run's folder
+    (or case copy) is moved to, whole, instead of being removed: an
+    interrupted run's copy may hold a file of the user's among the run's
+    (pulseStudy's points, paperFigures' runs; adv43 k07, k21, adv44
+    a43)."""
+    n = 0
+    while os.path.lexists("%s.%s%s" % (path, what, n or "")):
+        n += 1
+    return "%s.%s%s" % (path, what, n or "")
+
+
+_DIRECTIVES = ("#include", "#sinclude", "#includeIfPresent")
+
+
+def relativeOutside(case, folders=None):
+    """The references of case's dictionaries to files outside it by a
+    path that depends on where the case lies: an #include, #sinclude or
+    #includeIfPresent of a relative path (from the including file's
+    folder) or of one under $FOAM_CASE or <case>, and a 'file' entry (a
+    tableFile's table) under $FOAM_CASE or <case>, that resolve outside
+    case, whether the file is there or not. A copy of the case run
+    elsewhere (pulseStudy's points, calibrateCell's work folder) reads
+    another file there, or none (an #sinclude: silently; issue 19, adv45
+    b15: a Maxwell branch the base case read through
+    #sinclude "../../shared/override" was not read by the study's points,
+    exit 0). [(file relative to case, the directive and its name, the
+    path it resolves to from case)]; folders: those of case looked at
+    (default every folder but the top, whose Allrun, README are not
+    dictionaries)."""
+    from . import foamDict
+    real = os.path.realpath(case)
+    found = []
+    roots = [os.path.join(case, f) for f in folders] if folders else [
+        os.path.join(case, f) for f in sorted(os.listdir(case))
+        if os.path.isdir(os.path.join(case, f))
+        and not os.path.islink(os.path.join(case, f))]
+    for top in roots:
+        for root, dirs, files in os.walk(top):
+            dirs.sort()
+            for f in sorted(files):
+                full = os.path.join(root, f)
+                if not os.path.isfile(full) or os.path.getsize(full) > 1 << 22:
+                    continue
+                with open(full, "rb") as h:
+                    data = h.read()
+                if b"#s" not in data and b"#include" not in data \
+                        and b"file" not in data:
+                    continue
+                try:
+                    toks = [x[0] for x in foamDict.tokens(
+                        data.decode("utf-8"), full)]
+                except (UnicodeDecodeError, foamDict.DictError):
+                    continue        # not a dictionary we can read
+                rel = os.path.relpath(full, case)
+                for k in range(len(toks) - 1):
+                    name = toks[k + 1]
+                    if not (name.startswith('"') and name.endswith('"')):
+                        if toks[k] != "file":
+                            continue
+                    name = name.strip('"')
+                    caseVar = re.match(r"(\$\{?FOAM_CASE\}?|<case>)(/|$)",
+                                       name)
+                    if toks[k] in _DIRECTIVES:
+                        if caseVar:
+                            path = os.path.join(real, name[caseVar.end():])
+                        elif name.startswith(("/", "$", "~", "<")):
+                            continue            # absolute: the same file
+                        else:
+                            path = os.path.join(os.path.dirname(
+                                os.path.realpath(full)), name)
+                    elif toks[k] == "file" and caseVar:
+                        path = os.path.join(real, name[caseVar.end():])
+                    else:
+                        continue
+                    path = os.path.normpath(path)
+                    if path != real and not path.startswith(real + os.sep):
+                        found.append((rel, '%s "%s"' % (toks[k], name)
+                                      if toks[k] != "file" else
+                                      "file \"%s\"" % name, path))
+    return found
+
+
+def relativeOutsideProblem(case, copies, folders=None):
+    """A message naming the references of relativeOutside(case, folders),
+    '' if there are none; copies: where the tool runs its copies of the
+    case (for the message)."""
+    found = relativeOutside(case, folders)
+    if not found:
+        return ""
+    return ("%s reads %s outside its folder by a path that depends on where "
+            "the case lies: %s. %s, where %s another file or none. Nothing "
+            "was run: give %s absolute (or copy the file into the "
+            "case and include it from there)"
+            % (case, "a file" if len(found) == 1 else "files", "; ".join(
+                "%s: %s (here %s)" % f for f in found[:5])
+               + ("; ..." if len(found) > 5 else ""), copies,
+               "it would read" if len(found) == 1 else "they would read",
+               "its path" if len(found) == 1 else "each path"))
 
 
 def filesUnder(folder):

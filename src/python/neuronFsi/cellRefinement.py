@@ -90,9 +90,8 @@ def readDistance(case):
     the file, the entry and the valid range."""
     path = os.path.join(case, "system", "topoSetDict")
     try:
-        with open(path) as f:
-            d = foamDict.parse(_withoutActions(f.read()), path,
-                               os.path.dirname(path))
+        d = foamDict.parse(_withoutActions(foamDict.fileText(path)), path,
+                           os.path.dirname(path))
     except (OSError, foamDict.DictError) as e:
         raise RefinementError(f"{path}: {e}") from None
     if "refineDistance" not in d:

@@ -261,8 +261,29 @@ def read(path):
         raise DictError("%s is %s, not a file%s" % (
             path, kind, "" if kind == "a directory" else
             ": reading it would wait without end for a writer"))
-    with open(path) as f:
-        return parse(f.read(), path, os.path.dirname(path) or ".")
+    return parse(fileText(path), path, os.path.dirname(path) or ".")
+
+
+def fileText(path):
+    """The text of a dictionary file as OpenFOAM reads it, byte by byte:
+    UTF-8, else Latin-1 (one character per byte: a comment written by an
+    ISO-8859-1 editor, "// a size in \\xb5m", is no error to OpenFOAM;
+    adv45 b48: a Python traceback, UnicodeDecodeError, in pulseStudy,
+    calibrateCell, sweepCase and paperFigures). A file with a NUL or
+    another control character (a binary file given as a dictionary,
+    adv45 b16: a traceback) is a DictError naming the file and the byte.
+    The one reader of a dictionary's text for our Python tools."""
+    with open(path, "rb") as f:
+        data = f.read()
+    bad = re.search(rb"[\x00-\x08\x0e-\x1f\x7f]", data)
+    if bad:
+        raise DictError("%s is not a text dictionary: byte %d (0x%02x) is a "
+                        "control character; expected an OpenFOAM dictionary"
+                        % (path, bad.start(), data[bad.start()]))
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError:
+        return data.decode("latin-1")
 
 
 def own_entry(path, keys):
@@ -271,8 +292,7 @@ def own_entry(path, keys):
     (True, []) if it does, else (False, the file's include directives).
     Only an entry of the file's own text can be set in it (set_entry)."""
     included = []
-    with open(path) as f:
-        d = parse(f.read(), path, included=included)
+    d = parse(fileText(path), path, included=included)
     for k in keys:
         if not isinstance(d, dict) or k not in d:
             return False, included
@@ -283,10 +303,11 @@ def own_entry(path, keys):
 def read_checked(path, valid, required, error):
     """read(path) with its keywords checked (check_keywords) and the
     required ones present; any fault raises error(message), the message
-    naming the file (a missing file, an unknown keyword with the closest
-    valid one, a missing entry)."""
-    if not os.path.isfile(path):
-        raise error("%s: no such file" % path)
+    naming the file (a missing file or what the path is instead, an
+    unknown keyword with the closest valid one, a missing entry)."""
+    why = options.fileProblem(path)
+    if why:
+        raise error("%s: %s" % (path, why))
     try:
         d = read(path)
         check_keywords(d, valid, path)
@@ -294,7 +315,9 @@ def read_checked(path, valid, required, error):
         raise error(str(err))
     for k in required:
         if k not in d:
-            raise error("%s: no entry '%s'" % (path, k))
+            raise error("%s: no entry '%s'%s" % (
+                path, k, " (the file is empty)"
+                if os.path.getsize(path) == 0 else ""))
     return d
 
 

@@ -40,6 +40,22 @@ def notARegularFile(path):
     return "not a regular file"
 
 
+def fileProblem(path):
+    """Why a path the user gives as a file cannot be read as one, '' if
+    it can: "no such file", "a symbolic link to <target>, which is not
+    there", or what it is ("a directory, not a file", "a device, not a
+    file": /dev/null, /dev/zero; a FIFO, which would block the open). The
+    one check of a file given to our Python applications before it is
+    read (issue 19, adv45 b16, b26: a directory, a FIFO, /dev/zero and
+    /dev/null were each "no such file")."""
+    if not os.path.lexists(path):
+        return "no such file"
+    if not os.path.exists(path):
+        return "a symbolic link to %s, which is not there" % os.readlink(path)
+    kind = notARegularFile(path)
+    return kind + ", not a file" if kind else ""
+
+
 def _invalidCharacters(path):
     """The characters of path that OpenFOAM's file names drop (fileName::
     valid: white space, a quote) or change (a backslash, taken for a '/',

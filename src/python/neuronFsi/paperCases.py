@@ -271,6 +271,59 @@ def locate(run, case, results):
     return None, notes
 
 
+def clear(run, folder):
+    """Make room for the run's fresh copy at folder (postProcessing/runs/
+    <name>): a folder of an earlier run of the comparison (its log.Allrun)
+    holding only the run's files is removed; one holding other files -
+    the user's, or the run's own that cannot be told from them, e.g. the
+    plots an interrupted run's Allrun made at its top (adv44 a43: refused
+    naming them as the user's) - is moved aside whole, to <name>.
+    interrupted (its solver did not finish) or <name>.earlier (1, 2, ...
+    when taken; caseRuns.asideName), and said: never removed. A folder
+    that is not an earlier run's (no log.Allrun) holding any file is
+    refused naming them (adv44 a12: a folder of the user's notes was
+    removed). PaperError if it cannot be made room for; the path it was
+    moved to, or None."""
+    if not os.path.lexists(folder):
+        return None
+    try:                            # a killed comparison's run
+        caseRuns.checkNoEarlierRun(folder)
+    except caseRuns.RunError as err:
+        raise PaperError("%s: %s" % (run["name"], err))
+    log = os.path.join(folder, "log.Allrun")
+    if not os.path.isfile(log):
+        theirs = sorted(caseRuns.filesUnder(folder))
+        if theirs:
+            raise PaperError(
+                "%s: %s holds files that are not of a run of the comparison"
+                " (%s%s): it would be replaced by the run's copy. Nothing "
+                "was changed: move them (or the folder) away"
+                % (run["name"], folder, ", ".join(theirs[:10]),
+                   ", ..." if len(theirs) > 10 else ""))
+        shutil.rmtree(folder)
+        return None
+    # (no time test: log.Allrun's last line comes before the files of its
+    # last step)
+    theirs = caseRuns.filesNotTheRuns(folder, set(trackedFiles(
+        run["tutorial"])))
+    if not theirs:
+        shutil.rmtree(folder)
+        return None
+    solverLog = os.path.join(folder, "log." + SOLVER[run["kind"]])
+    finished = os.path.isfile(solverLog) and logs.completed(solverLog)
+    aside = caseRuns.asideName(folder, "earlier" if finished
+                               else "interrupted")
+    os.rename(folder, aside)
+    print("%s: the folder of %s run of the comparison, %s, holds files "
+          "that may not be the run's (%s%s): moved whole to %s (with any "
+          "file you put in it). The comparison does not read it again: "
+          "remove it when you no longer need it"
+          % (run["name"], "an earlier" if finished else "an interrupted",
+             folder, ", ".join(theirs[:10]),
+             ", ..." if len(theirs) > 10 else "", aside), flush=True)
+    return aside
+
+
 def make(run, case):
     """Run the tutorial with its options in a fresh copy <case>/
     postProcessing/runs/<name>; the folder. PaperError if it fails or its
@@ -289,30 +342,7 @@ def make(run, case):
         raise PaperError("%s: %s is %s, not a folder of the comparison's "
                          "runs: move it away (nothing was changed)"
                          % (run["name"], p, kind))
-    if os.path.lexists(folder):
-        try:                            # a killed comparison's run
-            caseRuns.checkNoEarlierRun(folder)
-        except caseRuns.RunError as err:
-            raise PaperError("%s: %s" % (run["name"], err))
-        # only a folder of an earlier run of the comparison is replaced;
-        # the user's files there are kept (adv44 a12: a folder holding
-        # only the user's notes was removed to make the run's copy)
-        log = os.path.join(folder, "log.Allrun")
-        if os.path.isfile(log):
-            # (no time test: log.Allrun's last line comes before the
-            # files of its last step)
-            theirs = caseRuns.filesNotTheRuns(
-                folder, set(trackedFiles(run["tutorial"])))
-        else:
-            theirs = sorted(caseRuns.filesUnder(folder))
-        if theirs:
-            raise PaperError(
-                "%s: %s holds files that are not of a run of the comparison"
-                " (%s%s): it would be replaced by the run's copy. Nothing "
-                "was changed: move them (or the folder) away"
-                % (run["name"], folder, ", ".join(theirs[:10]),
-                   ", ..." if len(theirs) > 10 else ""))
-        shutil.rmtree(folder)
+    clear(run, folder)
     os.makedirs(folder)
     for f in trackedFiles(run["tutorial"]):
         dst = os.path.join(folder, f)
