@@ -13,4 +13,9 @@ V = {
  "adv36_v77": ("OK", "timing: the -overwrite was killed after its first checkpoint this time (nothing left aside); the restart refused naming the changed maxDepthIncrement (adv44: killed before, the refusal named the .overwritten files)"),
  "adv37_w108": ("UNCLEAR (low)", "w86's pattern: only rank 1's refusal printed, '5 result files or folders that this run would replace:' followed by no file (they are rank 0's: solid.h5, the postProcessing folders); adv44 P1 printed rank 0's complete message"),
  "adv37_w112": ("OK", "timing: under load the user's edit (1.5 s after the start) landed before the sweep took its base copy: all three runs read holdGrowth 1.2, no note needed, the table of one case"),
+ "adv37_w109": ("OK", "the second calibrateCell refused (rc 1) while the orphaned forward run of the killed one went on (gone by t+16 s); the clean calibration then ran past the case's 300 s budget under load 20 (killed by runOne.sh, '[case exit 137]'): n/r for the fit's comparison, no hang of ours"),
+ "adv37_w113": ("OK", "n/r: under load the kill landed after the Allrun had finished (times to 8e-9, rc 0)"),
+ "adv37_w114": ("OK", "n/r: under load the kill landed after cellMesh had finished; the Allrun then ran to its end (rc 0)"),
+ "adv37_w29": ("OK", "the full tmpfs's numbers; interfacePlaces.dat (lad17's log) compared too, bitwise equal"),
+ "adv37_w86": ("OK", "rank 0's complete message printed this time (as adv42 out/C); adv44 Z2 had rank 1's incomplete one (UNCLEAR low, fix19b part 1)"),
 }
