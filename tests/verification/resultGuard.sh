@@ -206,4 +206,36 @@ check "rhoRiemannFoam -parallel over a serial run's times: refused, naming them 
     "[ $status -ne 0 ] && grep -q 'time directories of the case directory after the start time (5e-09 ... 1e-08 s in .*: written by a serial run of the case;' log.parallelOverSerial \
      && ! grep -q 'reconstructed by reconstructPar' log.parallelOverSerial"
 
+# A 2-rank -overwrite killed before its first write leaves each rank's
+# later times and the master's function-object folders moved aside; the
+# next run with nothing to continue from is refused, and the message is
+# the master's, printed once, naming every rank's times moved aside and
+# the master's folders (adv37 w86: only rank 1's part was printed, "moved
+# them aside as well:" followed by nothing, and the job stopped before the
+# master's message came out)
+mkdir "$work/parallelKilled"; cd "$work/parallelKilled"
+cp -r "$root/tutorials/verification/waterPulseWall"/{0.orig,system,constant} .
+rm -rf constant/polyMesh; cp -r 0.orig 0
+printf 'FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\nnumberOfSubdomains 2;\nmethod simple;\ncoeffs { n (2 1 1); }\n' > system/decomposeParDict
+sed -i 's/^startFrom .*/startFrom startTime;/; s/^endTime .*/endTime 1e-8;/; s/^writeInterval .*/writeInterval 5e-9;/' system/controlDict
+blockMesh > log.blockMesh 2>&1
+decomposePar > log.decomposePar 2>&1
+mpirun -np 2 rhoRiemannFoam -parallel > log.first 2>&1
+# as -overwrite leaves them when killed before its first write
+for p in processor0 processor1
+do
+    for t in 5e-09 1e-08; do mv $p/$t $p/.$t.overwritten; done
+done
+mv postProcessing/probes/0 postProcessing/probes/.0.overwritten
+sed -i 's/^startFrom .*/startFrom latestTime;/' system/controlDict
+status=0
+mpirun -np 2 rhoRiemannFoam -parallel > log.again 2>&1 || status=$?
+check "rhoRiemannFoam -parallel after a killed -overwrite: refused, one message naming both ranks' times and the master's folder" \
+    "[ $status -ne 0 ] && [ \$(grep -c 'FOAM FATAL' log.again) -eq 1 ] \
+     && [ \$(grep -c 'holds results of an earlier run' log.again) -eq 1 ] \
+     && grep -q '^ *[^ ]*/processor0: .1e-08.overwritten .5e-09.overwritten\$' log.again \
+     && grep -q '^ *[^ ]*/processor1: .1e-08.overwritten .5e-09.overwritten\$' log.again \
+     && grep -q 'postProcessing/probes/.0.overwritten' log.again \
+     && ! grep -q '^\\[1\\]' log.again"
+
 exit $fail

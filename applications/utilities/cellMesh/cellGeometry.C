@@ -91,6 +91,24 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     // curvature of the outer ellipse (at the equator H^2/a, on the axis
     // a^2/H)
     const scalar rhoMin = min(sqr(H_)/a_, sqr(a_)/H_);
+    // Not one number (a word, '0x1p-20' read as 2 tokens, a
+    // sub-dictionary): the message every entry gives, with the valid range
+    // (adv45 b33: OpenFOAM's "1 excess tokens in stream", no range); a
+    // number outside the range: the reason of the bound below
+    if (const entry* e = dict.findEntry("membraneThickness"))
+    {
+        if
+        (
+            e->isDict() || e->stream().size() != 1
+         || !e->stream()[0].isNumber()
+        )
+        {
+            foamTools::readInRange<scalar>
+            (
+                dict, "membraneThickness", "m", 0, rhoMin, false, false
+            );
+        }
+    }
     t_ = dict.getOrDefault<scalar>("membraneThickness", 200e-9);
     if (!(t_ > 0 && t_ < rhoMin))
     {
