@@ -1,0 +1,6 @@
+#!/bin/bash
+# b22 (class 2, paperFigures' run folder a SYMBOLIC LINK to the user's folder): postProcessing/runs/averageCell -> $W/myRuns/averageCell (the user's own indentation copy: notes.md, a result file); paperFigures, SIGTERMed once it has begun: the user's folder outside (and its files) untouched, the link refused and named, or replaced by a folder; never removed or written through?
+. "$(dirname "$0")/../lib.sh"
+cp -r "$ROOT/tutorials/paper" $W/paper; cd $W/paper; mkdir -p $W/myRuns/averageCell/postProcessing postProcessing/runs; echo "# b22 my notes" > $W/myRuns/averageCell/notes.md; echo "b22 my force" > $W/myRuns/averageCell/postProcessing/force.dat; ln -s $W/myRuns/averageCell postProcessing/runs/averageCell
+setsid paperFigures > ../log.p 2>&1 & p=$!; waitFor 60 bash -c "test -f $W/myRuns/averageCell/log.Allrun || test -f postProcessing/runs/averageCell/log.Allrun || ! kill -0 $p"; sleep 2; kill -TERM -- -$p 2>/dev/null; wait $p; echo "   paperFigures rc=$?"
+grep -a -i -m4 'error\|refus\|link\|running\|yours\|not current' ../log.p | cut -c1-240; echo "   runs/averageCell: $(test -L postProcessing/runs/averageCell && echo "link -> $(readlink postProcessing/runs/averageCell)" || echo 'not a link'); myRuns/averageCell: $(ls -a $W/myRuns/averageCell 2>/dev/null | tr '\n' ' ')"; where "# b22 my notes" "b22 my force"
