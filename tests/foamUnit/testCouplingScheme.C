@@ -142,6 +142,20 @@ const foamUnit::goldFile& gold()
     return g;
 }
 
+//- The passes of a step from x whose answer is xTilde whatever x is
+//  (converged at the second pass), before endStep
+void endWith
+(
+    couplingScheme& scheme,
+    const scalarField& x,
+    const scalarField& xTilde
+)
+{
+    scalarField xs(x);
+    while (!scheme.update(xs, xTilde, scalarField(x.size(), Zero))) {}
+    ASSERT_TRUE(scheme.converged());
+}
+
 //- A field of the given values
 scalarField values(std::initializer_list<scalar> list)
 {
@@ -487,11 +501,12 @@ TEST(couplingScheme, predictorsOnALinearAcceleration)
             }
             else
             {
+                // to round-off, where central difference misses by
+                // dt/4 (a_n+1 - a_n), 4.7e-7 m/s or more here
                 EXPECT_LT(max(mag(x - xTilde)), 1e-12*max(mag(xTilde)));
-                EXPECT_GT(max(mag(0.25*dt*(an1 - an))), 1e-6);
+                EXPECT_GT(max(mag(0.25*dt*(an1 - an))), 4e-7);
             }
-            scalarField xs(x);
-            scheme->update(xs, xTilde, scalarField(3, Zero));
+            endWith(scheme(), x, xTilde);
             scheme->endStep(t);
             v += 0.5*dt*(an + an1);
             t += dt;
@@ -511,7 +526,7 @@ TEST(couplingScheme, predictorHistoryRoundTrip)
     const scalarField a0 = values({1.0e6, 2.0e6});
     const scalarField a1 = values({1.5e6, 1.0e6});
     a->beginStep();
-    a->predict(v, a0, 3e-11);
+    endWith(a(), a->predict(v, a0, 3e-11), v);
     a->endStep(0);
     OStringStream os;
     a->writeState(os);
@@ -530,7 +545,7 @@ TEST(couplingScheme, predictorHistoryRoundTrip)
 
     autoPtr<couplingScheme> c(couplingScheme::New(schemeDict("robin")));
     c->beginStep();
-    c->predict(v, a0, 3e-11);
+    endWith(c(), c->predict(v, a0, 3e-11), v);
     c->endStep(0);
     OStringStream oc;
     c->writeState(oc);
