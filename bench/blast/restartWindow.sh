@@ -32,7 +32,11 @@ do
     cp -a "$ref/$f" "$c/"
 done
 cd "$c"
-foamDictionary -entry startFrom -set latestTime system/controlDict > /dev/null
+# (sed, not foamDictionary: that writes the dictionary with its #sinclude
+# of controlDict.allrun expanded, which the endTime below goes to)
+sed -i 's/^startFrom .*/startFrom       latestTime;/' system/controlDict
+grep -q '^#sinclude "controlDict.allrun"' system/controlDict \
+    || printf '\n#sinclude "controlDict.allrun"\n' >> system/controlDict
 echo "endTime $end;" >> system/controlDict.allrun
 echo "== $(date -u '+%F %H:%M UTC'), $(command -v cellBlastFoam), load $(cut -d' ' -f1-3 /proc/loadavg)"
 nice -n "${NICENESS:-5}" cellBlastFoam > log.cellBlastFoam 2>&1 \
