@@ -142,6 +142,26 @@ const foamUnit::goldFile& gold()
     return g;
 }
 
+//- The passes of a step from x whose answer is xTilde whatever x is
+//  (converged at the second pass), before endStep
+void endWith
+(
+    couplingScheme& scheme,
+    const scalarField& x,
+    const scalarField& xTilde
+)
+{
+    scalarField xs(x);
+    while (!scheme.update(xs, xTilde, scalarField(x.size(), Zero))) {}
+    ASSERT_TRUE(scheme.converged());
+}
+
+//- A field of the given values
+scalarField values(std::initializer_list<scalar> list)
+{
+    return scalarField(List<scalar>(list));
+}
+
 //- An added-mass-like map: eigenvalues of both signs, one below -1 (the
 //  plain fixed-point iteration diverges)
 const std::vector<scalar> lambda6{-2.5, -1.2, -0.6, 0.2, 0.5, 0.8};
@@ -442,6 +462,138 @@ TEST(couplingScheme, stateRoundTrip)
 }
 
 
+TEST(couplingScheme, predictorsOnALinearAcceleration)
+{
+    // A solid whose interface acceleration is linear in time, a(t) = a +
+    // b t, with unequal steps: the answer of a step is x~ = v_n + dt/4
+    // (a_n + a_n+1). centralDifference misses it by dt/4 (a_n+1 - a_n)
+    // at every step; extrapolated by that at the first step (no history)
+    // and hits it to round-off from the second
+    const scalarField a = values({2.0e6, -1.0e6, 5.0e5});
+    const scalarField b = values({3.0e15, 1.0e15, -2.0e15});
+    const scalarField dts = values({4.0e-11, 3.0e-11, 5.0e-11, 2.5e-11});
+    for (const word predictor : {"centralDifference", "extrapolated"})
+    {
+        SCOPED_TRACE(predictor);
+        autoPtr<couplingScheme> scheme
+        (
+            couplingScheme::New
+            (
+                schemeDict("robin", "predictor " + predictor + ";")
+            )
+        );
+        EXPECT_EQ(scheme->extrapolated(), predictor == "extrapolated");
+        scalar t = 1e-9;
+        scalarField v = values({1.0, -2.0, 0.5});
+        forAll(dts, step)
+        {
+            const scalar dt = dts[step];
+            const scalarField an(a + b*t);
+            const scalarField an1(a + b*(t + dt));
+            const scalarField xTilde(v + 0.25*dt*(an + an1));
+            scheme->beginStep();
+            const scalarField x(scheme->predict(v, an, dt));
+            if (predictor == "centralDifference" || step == 0)
+            {
+                // bitwise the former solver expression
+                EXPECT_EQ(x, scalarField(v + 0.5*dt*an));
+                EXPECT_LT(max(mag(x - xTilde - 0.25*dt*(an - an1))), 1e-12);
+            }
+            else
+            {
+                // to round-off, where central difference misses by
+                // dt/4 (a_n+1 - a_n), 4.7e-7 m/s or more here
+                EXPECT_LT(max(mag(x - xTilde)), 1e-12*max(mag(xTilde)));
+                EXPECT_GT(max(mag(0.25*dt*(an1 - an))), 4e-7);
+            }
+            endWith(scheme(), x, xTilde);
+            scheme->endStep(t);
+            v += 0.5*dt*(an + an1);
+            t += dt;
+        }
+    }
+}
+
+
+TEST(couplingScheme, predictorHistoryRoundTrip)
+{
+    // The extrapolated predictor's history is restart state: the scheme
+    // read back predicts the same bits; a centralDifference state has none
+    // (the first step after it takes central difference)
+    const dictionary dict(schemeDict("robin", "predictor extrapolated;"));
+    autoPtr<couplingScheme> a(couplingScheme::New(dict));
+    const scalarField v = values({0.3, -0.2});
+    const scalarField a0 = values({1.0e6, 2.0e6});
+    const scalarField a1 = values({1.5e6, 1.0e6});
+    a->beginStep();
+    endWith(a(), a->predict(v, a0, 3e-11), v);
+    a->endStep(0);
+    OStringStream os;
+    a->writeState(os);
+    IStringStream is(os.str());
+    const dictionary state(is);
+    EXPECT_TRUE(state.found("previousAcceleration"));
+
+    autoPtr<couplingScheme> b(couplingScheme::New(dict));
+    b->readState(state);
+    a->beginStep();
+    b->beginStep();
+    const scalarField xa(a->predict(v, a1, 4e-11));
+    const scalarField xb(b->predict(v, a1, 4e-11));
+    EXPECT_EQ(xa, xb);
+    EXPECT_NE(xa, scalarField(v + 0.5*4e-11*a1));
+
+    autoPtr<couplingScheme> c(couplingScheme::New(schemeDict("robin")));
+    c->beginStep();
+    endWith(c(), c->predict(v, a0, 3e-11), v);
+    c->endStep(0);
+    OStringStream oc;
+    c->writeState(oc);
+    EXPECT_EQ(oc.str().find("previousAcceleration"), std::string::npos);
+    IStringStream ic(oc.str());
+    autoPtr<couplingScheme> d(couplingScheme::New(dict));
+    d->readState(dictionary(ic));
+    d->beginStep();
+    EXPECT_EQ
+    (
+        scalarField(d->predict(v, a1, 4e-11)), scalarField(v + 0.5*4e-11*a1)
+    );
+
+    // A history of another interface (restart state of another mesh) or
+    // a bad time step
+    autoPtr<couplingScheme> e(couplingScheme::New(dict));
+    e->readState(state);
+    e->beginStep();
+    try
+    {
+        e->predict(scalarField(3, Zero), scalarField(3, Zero), 1e-11);
+        ADD_FAILURE() << "3 dofs accepted for a history of 2";
+    }
+    catch (const Foam::error& err)
+    {
+        EXPECT_NE(err.message().find("have 2 values, the interface 3"),
+            std::string::npos) << err.message();
+    }
+    try
+    {
+        e->readState
+        (
+            couplingDict
+            (
+                "couplingStatistics (1 1 1 0); previousAcceleration"
+                " 2(1 2); previousDeltaT 0;"
+            )
+        );
+        ADD_FAILURE() << "previousDeltaT 0 accepted";
+    }
+    catch (const Foam::IOerror& err)
+    {
+        EXPECT_NE(err.message().find("previousDeltaT must be > 0 s"),
+            std::string::npos) << err.message();
+    }
+}
+
+
 TEST(couplingScheme, badDictionariesNameTheEntry)
 {
     struct badCase
@@ -479,7 +631,15 @@ TEST(couplingScheme, badDictionariesNameTheEntry)
             "scheme IQNILS; initialRelaxation 0;",
             {"entry 'initialRelaxation' = 0", "(0, 1]"}
         },
-        {"scheme IQNILS; reuse -1;", {"entry 'reuse' = -1", "[0, inf)"}}
+        {"scheme IQNILS; reuse -1;", {"entry 'reuse' = -1", "[0, inf)"}},
+        {
+            "scheme robin; predictor quadratic;",
+            {"quadratic", "(centralDifference extrapolated)"}
+        },
+        {
+            "scheme explicitStaggered; predictor extrapolated;",
+            {"predictor extrapolated needs an iterative scheme"}
+        }
     };
     for (const badCase& c : cases)
     {

@@ -511,27 +511,41 @@ Foam::scalar Foam::conservativeFluid::aleStep
         fluxes();
         divergences(divPhi, divPhiU, divPhiE);
 
+        // In place, cell by cell: the arithmetic of the field expressions
+        // (a V0 q0 + (1 - a)(Vk q - dt V divF))/Vnew in their order, and
+        // the swirl removed, without their temporary fields (seven per
+        // stage)
+        const scalar b = 1 - a;
         const scalarField& V = mesh_.V().field();
-        const scalarField Vnew(a*V0_ + (1 - a)*(Vk + dV));
-
-        rho.primitiveFieldRef() =
-            (a*V0_*rho0_ + (1 - a)*(Vk*rho.primitiveField() - dt*V*divPhi))
-           /Vnew;
-        rhoU_.primitiveFieldRef() =
-            (
-                a*V0_*rhoU0_
-              + (1 - a)*(Vk*rhoU_.primitiveField() - dt*V*divPhiU)
-            )/Vnew;
-        rhoE_.primitiveFieldRef() =
-            (
-                a*V0_*rhoE0_
-              + (1 - a)*(Vk*rhoE_.primitiveField() - dt*V*divPhiE)
-            )/Vnew;
-        Vk = Vnew;
-        if (mag(swirlDirection_) > 0)
+        scalarField& rhoc = rho.primitiveFieldRef();
+        vectorField& rhoUc = rhoU_.primitiveFieldRef();
+        scalarField& rhoEc = rhoE_.primitiveFieldRef();
+        const bool swirl = mag(swirlDirection_) > 0;
+        forAll(rhoc, celli)
         {
-            rhoU_.primitiveFieldRef() -=
-                (rhoU_.primitiveField() & swirlDirection_)*swirlDirection_;
+            const scalar V0 = V0_[celli];
+            const scalar Vkc = Vk[celli];
+            const scalar Vnew = a*V0 + b*(Vkc + dV[celli]);
+            const scalar dtV = dt*V[celli];
+            rhoc[celli] =
+                (a*V0*rho0_[celli] + b*(Vkc*rhoc[celli] - dtV*divPhi[celli]))
+               /Vnew;
+            vector rhoUi =
+                (
+                    a*V0*rhoU0_[celli]
+                  + b*(Vkc*rhoUc[celli] - dtV*divPhiU[celli])
+                )/Vnew;
+            if (swirl)
+            {
+                rhoUi -= (rhoUi & swirlDirection_)*swirlDirection_;
+            }
+            rhoUc[celli] = rhoUi;
+            rhoEc[celli] =
+                (
+                    a*V0*rhoE0_[celli]
+                  + b*(Vkc*rhoEc[celli] - dtV*divPhiE[celli])
+                )/Vnew;
+            Vk[celli] = Vnew;
         }
 
         correctPrimitives();

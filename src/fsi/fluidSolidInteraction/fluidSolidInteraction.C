@@ -582,9 +582,6 @@ void Foam::fluidSolidInteraction::step()
 
     const scalarField v0(map.interfaceDofs(solid.velocity()));
 
-    // Central-difference predictor: x = v_n + dt/2 a_n
-    scalarField x(v0 + 0.5*dt*map.interfaceDofs(solid.acceleration()));
-
     const string hint
     (
         "FSI: coupling scheme " + coupling_->type()
@@ -594,6 +591,12 @@ void Foam::fluidSolidInteraction::step()
     );
 
     coupling_->beginStep();
+    // The first guess (coupling{} predictor): central difference, x = v_n
+    // + dt/2 a_n, or the acceleration extrapolated in time
+    scalarField x
+    (
+        coupling_->predict(v0, map.interfaceDofs(solid.acceleration()), dt)
+    );
     scalar gclError = 0;
     bool done = false;
     while (!done)

@@ -138,6 +138,14 @@ void Foam::riemannFlux::patchStates
             R.rho = L.rho;
             R.U = L.U - 2*qRel*n;
             R.p = L.p;
+
+            // The mirror state's e and c are the inner state's (the law
+            // of the same rho and p: the same bits, half the evaluations
+            // on the wedge and wall patches)
+            L.complete(thermo);
+            R.e = L.e;
+            R.c = L.c;
+            return;
         }
         else
         {

@@ -2,6 +2,8 @@
 #include "error.H"
 #include "inputChecks.H"
 
+#include <cmath>
+
 namespace Foam
 {
     defineTypeNameAndDebug(couplingScheme, 0);
@@ -43,7 +45,10 @@ Foam::couplingScheme::couplingScheme(const dictionary& dict)
     nSteps_(0),
     nNonConverged_(0),
     nIterations_(0),
-    maxIterUsed_(0)
+    maxIterUsed_(0),
+    extrapolate_(false),
+    previousDeltaT_(0),
+    startDeltaT_(0)
 {
     const word action(dict.getOrDefault<word>("onNonConvergence", "warn"));
     if (action == "stop")
@@ -56,6 +61,21 @@ Foam::couplingScheme::couplingScheme(const dictionary& dict)
             << "onNonConvergence " << action << " is not valid; valid:"
             << " (warn stop)" << exit(FatalIOError);
     }
+
+    const word predictor
+    (
+        dict.getOrDefault<word>("predictor", "centralDifference")
+    );
+    if (predictor == "extrapolated")
+    {
+        extrapolate_ = true;
+    }
+    else if (predictor != "centralDifference")
+    {
+        FatalIOErrorInFunction(dict)
+            << "predictor " << predictor << " is not valid; valid:"
+            << " (centralDifference extrapolated)" << exit(FatalIOError);
+    }
 }
 
 
@@ -65,6 +85,46 @@ void Foam::couplingScheme::beginStep()
     residual_ = 0;
     converged_ = false;
     newStep();
+}
+
+
+Foam::tmp<Foam::scalarField> Foam::couplingScheme::predict
+(
+    const scalarField& v0,
+    const scalarField& a0,
+    const scalar dt
+)
+{
+    if (extrapolate_)
+    {
+        startAcceleration_ = a0;
+        startDeltaT_ = dt;
+    }
+    if (!extrapolate_ || previousAcceleration_.empty())
+    {
+        // v_n + dt/2 a_n, the arithmetic of the solver's former predictor
+        return v0 + 0.5*dt*a0;
+    }
+    if (previousAcceleration_.size() != a0.size())
+    {
+        FatalErrorInFunction
+            << "predictor extrapolated: the previous step's interface"
+            << " accelerations (previousAcceleration of the restart state"
+            << " uniform/fsiState) have " << previousAcceleration_.size()
+            << " values, the interface " << a0.size() << " dofs"
+            << exit(FatalError);
+    }
+
+    // a_n+1 = a_n + (a_n - a_n-1) dt/dt_n-1; x = v_n + dt/4 (a_n + a_n+1)
+    const scalar ratio = dt/previousDeltaT_;
+    tmp<scalarField> tx(new scalarField(v0.size()));
+    scalarField& x = tx.ref();
+    forAll(x, i)
+    {
+        const scalar aNext = a0[i] + ratio*(a0[i] - previousAcceleration_[i]);
+        x[i] = v0[i] + 0.25*dt*(a0[i] + aNext);
+    }
+    return tx;
 }
 
 
@@ -103,6 +163,11 @@ void Foam::couplingScheme::endStep(const scalar time)
 {
     ++nSteps_;
     nIterations_ += iter_;
+    if (extrapolate_)
+    {
+        previousAcceleration_.transfer(startAcceleration_);
+        previousDeltaT_ = startDeltaT_;
+    }
     maxIterUsed_ = max(maxIterUsed_, iter_);
     if (!converged_)
     {
@@ -139,6 +204,11 @@ void Foam::couplingScheme::writeState(Ostream& os) const
         "couplingStatistics",
         labelList({nSteps_, nIterations_, maxIterUsed_, nNonConverged_})
     );
+    if (extrapolate_ && !previousAcceleration_.empty())
+    {
+        os.writeEntry("previousAcceleration", previousAcceleration_);
+        os.writeEntry("previousDeltaT", previousDeltaT_);
+    }
 }
 
 
@@ -156,4 +226,28 @@ void Foam::couplingScheme::readState(const dictionary& dict)
     nIterations_ = s[1];
     maxIterUsed_ = s[2];
     nNonConverged_ = s[3];
+
+    // The extrapolated predictor's history (a state written with the
+    // centralDifference predictor has none: the first step after the
+    // restart takes centralDifference)
+    previousAcceleration_.clear();
+    previousDeltaT_ = 0;
+    if (extrapolate_ && dict.found("previousAcceleration"))
+    {
+        previousAcceleration_ = dict.get<scalarField>("previousAcceleration");
+        previousDeltaT_ = dict.get<scalar>("previousDeltaT");
+        bool finite = std::isfinite(previousDeltaT_) && previousDeltaT_ > 0;
+        for (const scalar a : previousAcceleration_)
+        {
+            finite = finite && std::isfinite(a);
+        }
+        if (!finite)
+        {
+            FatalIOErrorInFunction(dict)
+                << "previousDeltaT must be > 0 s and previousAcceleration"
+                << " finite (the extrapolated predictor's history); got"
+                << " previousDeltaT = " << previousDeltaT_ << " s"
+                << exit(FatalIOError);
+        }
+    }
 }

@@ -15,7 +15,7 @@ Foam::autoPtr<Foam::couplingScheme> Foam::couplingScheme::New
         dict,
         {
             "scheme", "maxIter", "tolerance", "velocityScale",
-            "onNonConvergence",
+            "onNonConvergence", "predictor",
             "solidSubcycles",       // fluidSolidInteraction
             "initialRelaxation",    // aitken, IQNILS
             "reuse"                 // IQNILS
@@ -54,5 +54,15 @@ Foam::autoPtr<Foam::couplingScheme> Foam::couplingScheme::New
     }
 
     Info<< "FSI coupling scheme " << name << endl;
-    return autoPtr<couplingScheme>(cstrIter()(dict));
+    autoPtr<couplingScheme> scheme(cstrIter()(dict));
+    if (!scheme->iterative() && scheme->extrapolated())
+    {
+        FatalIOErrorInFunction(dict)
+            << "predictor extrapolated needs an iterative scheme (aitken,"
+            << " IQNILS, robin): " << name << " takes one pass with the"
+            << " centralDifference predictor v_n + dt/2 a_n, which keeps"
+            << " the fluid wall on the solid's displacement"
+            << exit(FatalIOError);
+    }
+    return scheme;
 }
