@@ -22,6 +22,9 @@
 #       platforms/linux64GccDPInt32Opt), as for mpiWait.sh
 #   VGOPTS="...": more valgrind options (e.g. --cache-sim=yes)
 #   NICENESS=N (default 10)
+#   CONCURRENT=1: the serial and the parallel run at the same time (the
+#       counts are the same; on a shared machine the pair gets more of
+#       the cores than one run after the other)
 #
 # Takes about 50x the native run's CPU time per rank: 110 steps of the
 # quarter are about 10 min serial and 10 min on 2 ranks on 2 idle cores.
@@ -60,16 +63,33 @@ do
         -endTime "$end" > log.prepare 2>&1) || { tail -20 "$c/log.prepare"; exit 1; }
 done
 echo "== $(date -u '+%F %H:%M UTC'), $(command -v cellBlastFoam), load $(cut -d' ' -f1-3 /proc/loadavg)"
-cd "$dir/s/quarter3D"
-nice -n "${NICENESS:-10}" "${vg[@]}" --callgrind-out-file="$PWD/cg.serial" \
-    cellBlastFoam > log.cellBlastFoam 2>&1
-echo "== serial done $(date -u '+%H:%M UTC'): $(grep -c '^Time =' log.cellBlastFoam) steps"
-cd "$dir/p/quarter3D"
-nice -n "${NICENESS:-10}" mpirun -np "$np" --bind-to none -x PATH \
-    -x LD_LIBRARY_PATH "${vg[@]}" \
-    --callgrind-out-file="$PWD/cg.rank%q{OMPI_COMM_WORLD_RANK}" \
-    cellBlastFoam -parallel > log.cellBlastFoam 2>&1
-echo "== $np ranks done $(date -u '+%H:%M UTC'): $(grep -c '^Time =' log.cellBlastFoam) steps"
+serialRun()
+{
+    cd "$dir/s/quarter3D"
+    nice -n "${NICENESS:-10}" "${vg[@]}" \
+        --callgrind-out-file="$PWD/cg.serial" \
+        cellBlastFoam > log.cellBlastFoam 2>&1
+    echo "== serial done $(date -u '+%H:%M UTC'): $(grep -c '^Time =' log.cellBlastFoam) steps"
+}
+parallelRun()
+{
+    cd "$dir/p/quarter3D"
+    nice -n "${NICENESS:-10}" mpirun -np "$np" --bind-to none -x PATH \
+        -x LD_LIBRARY_PATH "${vg[@]}" \
+        --callgrind-out-file="$PWD/cg.rank%q{OMPI_COMM_WORLD_RANK}" \
+        cellBlastFoam -parallel > log.cellBlastFoam 2>&1
+    echo "== $np ranks done $(date -u '+%H:%M UTC'): $(grep -c '^Time =' log.cellBlastFoam) steps"
+}
+if [ "${CONCURRENT:-0}" = 1 ]
+then
+    serialRun &
+    serialPid=$!
+    (parallelRun)
+    wait "$serialPid"
+else
+    (serialRun)
+    (parallelRun)
+fi
 ranks=()
 for ((r = 0; r < np; ++r)); do ranks+=("$dir/p/quarter3D/cg.rank$r"); done
 /usr/bin/python3 "$here/exclusive.py" "$dir/s/quarter3D/cg.serial" \

@@ -263,6 +263,42 @@ TEST(interfaceMap, projection3DRigidTranslation)
 }
 
 
+TEST(interfaceMap, pointValuesOfListedPointsAsOfAll)
+{
+    // The motion's points only (a rank's share, interfaceMotion::
+    // usedPatchPoints): each listed point has the bits of the whole
+    // patch's values, the others are zero; with pinned components too
+    case3D c(3, 4, 5, 3);
+    for (const bool symmetry : {false, true})
+    {
+        SCOPED_TRACE(symmetry ? "y prescribed on ymin" : "free");
+        const interfaceMap map
+        (
+            c.patch(), c.solid, usageDict(),
+            symmetry ? c.fixedOnYmin() : boolList()
+        );
+        scalarField dofs(map.nDofs());
+        forAll(dofs, i) dofs[i] = 1e-6*std::sin(0.7*i + 0.3);
+        const vectorField all(map.pointValues(dofs));
+        labelList listed;
+        for (label p = 1; p < all.size(); p += 3) listed.append(p);
+        const vectorField some(map.pointValues(dofs, listed));
+        ASSERT_EQ(some.size(), all.size());
+        label nonZero = 0;
+        forAll(all, p)
+        {
+            const bool isListed = p % 3 == 1;
+            for (direction d = 0; d < 3; ++d)
+            {
+                EXPECT_EQ(some[p][d], isListed ? all[p][d] : 0.0) << p;
+            }
+            nonZero += isListed && mag(all[p]) > 0;
+        }
+        EXPECT_GT(nonZero, 0);
+    }
+}
+
+
 TEST(interfaceMap, projection3DUniformPressureGivesConsistentForces)
 {
     // Both loads the tutorials may use: the projection map's forces and

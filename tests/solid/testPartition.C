@@ -12,6 +12,7 @@
 // probe recovered from its patch elements' samples packed by their owners
 // has the bits of the probe evaluated from the shared histories.
 #include "ExplicitSolver.H"
+#include "ModelSnapshot.H"
 #include "Partition.H"
 #include "PointProbe.H"
 #include "SolidError.H"
@@ -733,4 +734,170 @@ TEST(partition, probeFromOwnersSamplesAsFromSharedStates)
     EXPECT_NE(fromSamples[0].theta, 1.0);
     // The samples must match the patch
     EXPECT_THROW(probe.recover(std::vector<ProbeValues>(1)), SolidError);
+}
+
+
+TEST(partition, stateRangesOfSomeItems)
+{
+    // Blocks of listed items as offset ranges, adjacent ones merged,
+    // empty ones left out; commit and revert of those ranges only
+    StateArray s;
+    s.resize({2, 0, 3, 1, 2, 0, 4});
+    using R = StateArray::Range;
+    EXPECT_EQ(s.ranges({0, 1, 2, 3, 4, 5, 6}), std::vector<R>({R(0, 12)}));
+    EXPECT_EQ(s.ranges({0, 2, 3, 6}), std::vector<R>({R(0, 6), R(8, 12)}));
+    EXPECT_EQ(s.ranges({1, 5}), std::vector<R>());
+    EXPECT_EQ(s.ranges({}), std::vector<R>());
+    for (std::size_t i = 0; i < 12; ++i) s.currentData()[i] = i + 1.0;
+    s.commit(s.ranges({2, 6}));
+    for (std::size_t i = 0; i < 12; ++i)
+    {
+        const bool in = (i >= 2 && i < 5) || i >= 8;
+        EXPECT_EQ(s.oldData()[i], in ? i + 1.0 : 0.0) << i;
+    }
+    s.revert(s.ranges({0, 6}));
+    for (std::size_t i = 0; i < 12; ++i)
+    {
+        const bool reverted = i < 2 || i >= 8;
+        EXPECT_EQ(s.currentData()[i], reverted ? s.oldData()[i] : i + 1.0)
+            << i;
+    }
+}
+
+
+namespace
+{
+
+//- n steps of two parts in two threads (their elements shared out by
+//  firstThird), each part's body(part, model, solver) run after them
+template<class Body>
+void twoParts(std::vector<std::unique_ptr<Model>>& m, Body body)
+{
+    ThreadGather g(2);
+    m.resize(2);
+    for (int p = 0; p < 2; ++p)
+    {
+        m[p] = bar();
+        Partition part(p, 2, g.of(p));
+        part.shareOut(firstThird(m[p]->mesh().nElements()));
+        m[p]->setPartition(std::move(part));
+        start(*m[p]);
+    }
+    std::vector<std::thread> threads;
+    for (int p = 0; p < 2; ++p)
+    {
+        threads.emplace_back([&, p]
+        {
+            ExplicitSolver solver(*m[p], settings());
+            body(p, *m[p], solver);
+        });
+    }
+    for (auto& t : threads) t.join();
+}
+
+} // namespace
+
+
+TEST(partition, ownedSnapshotRestoresAStepBitwise)
+{
+    // What the FSI solver's ranks save and restore within a step: the
+    // owned histories only (about half of them on each of 2 parts); steps
+    // after a restore repeat the first attempt's bits, on both parts, and
+    // the other elements' histories are left as they were; serial: the
+    // owned snapshot is the whole one
+    std::vector<std::unique_ptr<Model>> m;
+    std::vector<Eigen::VectorXd> u1(2), v1(2);
+    std::vector<std::vector<double>> ps1(2), es1(2), psBefore(2);
+    std::vector<std::size_t> held(2);
+    twoParts(m, [&](int p, Model& model, ExplicitSolver& solver)
+    {
+        for (int i = 0; i < 20; ++i) solver.step();
+        const ModelSnapshot saved(model, ModelSnapshot::Histories::owned);
+        const ExplicitState state = solver.state();
+        held[p] = saved.part(ModelSnapshot::pointState).size();
+        psBefore[p] = model.pointState().oldData();
+        for (int i = 0; i < 5; ++i) solver.step();
+        u1[p] = model.u;
+        v1[p] = model.v;
+        ps1[p] = model.pointState().oldData();
+        es1[p] = model.elementState().oldData();
+        saved.restore(model);
+        solver.setState(state);
+        // The owned histories restored, the others (stale copies) as they
+        // were: the steps did not write them
+        EXPECT_EQ(model.pointState().oldData(), psBefore[p]);
+        for (int i = 0; i < 5; ++i) solver.step();
+    });
+    const std::size_t whole = m[0]->pointState().oldData().size();
+    for (int p = 0; p < 2; ++p)
+    {
+        EXPECT_EQ(m[p]->u, u1[p]) << p;
+        EXPECT_EQ(m[p]->v, v1[p]) << p;
+        EXPECT_EQ(m[p]->pointState().oldData(), ps1[p]) << p;
+        EXPECT_EQ(m[p]->elementState().oldData(), es1[p]) << p;
+        // About half of the histories held
+        EXPECT_GT(held[p], whole/4) << p;
+        EXPECT_LT(held[p], 3*whole/4) << p;
+    }
+    EXPECT_EQ(held[0] + held[1], whole);
+    EXPECT_EQ(m[0]->u, m[1]->u);
+
+    // A snapshot of another partition's owned histories is refused
+    auto serial = bar();
+    start(*serial);
+    const ModelSnapshot part0(*m[0], ModelSnapshot::Histories::owned);
+    EXPECT_THROW(part0.restore(*serial), SolidError);
+    // Serial: the owned snapshot is the whole one
+    const ModelSnapshot all(*serial), owned
+    (
+        *serial, ModelSnapshot::Histories::owned
+    );
+    for (int i = 0; i < ModelSnapshot::nParts; ++i)
+    {
+        const auto part = ModelSnapshot::Part(i);
+        EXPECT_EQ(owned.part(part), all.part(part)) << i;
+    }
+}
+
+
+TEST(partition, partialFilteredShearForcesSumToSerial)
+{
+    // Each part's hourglass force (its dampers and the filtered shear
+    // viscosity of its own elements, from the rates and slot averages of
+    // their neighbourhood only) with an exchange that gives every part
+    // its own values twice (so its combined force is twice its partial
+    // one, exactly): the parts' partial forces sum to the serial force to
+    // round-off, in the default blocks and shared out by firstThird
+    auto serial = bar();
+    start(*serial);
+    const ExplicitSolver s(*serial, settings());
+    const Eigen::VectorXd& fs = s.state().fhg;
+    ASSERT_GT(fs.lpNorm<Eigen::Infinity>(), 0);
+    for (const bool sharedOut : {false, true})
+    {
+        Eigen::VectorXd sum(Eigen::VectorXd::Zero(fs.size()));
+        for (int p = 0; p < 2; ++p)
+        {
+            auto m = bar();
+            Partition part
+            (
+                p, 2, [](const double* mine, std::size_t n, double* all)
+                {
+                    std::copy(mine, mine + n, all);
+                    std::copy(mine, mine + n, all + n);
+                }
+            );
+            if (sharedOut) part.shareOut(firstThird(m->mesh().nElements()));
+            m->setPartition(std::move(part));
+            start(*m);
+            const ExplicitSolver solver(*m, settings());
+            const Eigen::VectorXd partial = 0.5*solver.state().fhg;
+            EXPECT_GT(relDiff(partial, fs), 1e-3);
+            sum += partial;
+        }
+        std::printf("parts' hourglass and filtered shear force sum (%s) "
+            "against serial: %.3e relative\n",
+            sharedOut ? "shared out" : "blocks", relDiff(sum, fs));
+        EXPECT_LT(relDiff(sum, fs), 1e-13);
+    }
 }

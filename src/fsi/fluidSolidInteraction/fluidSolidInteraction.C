@@ -218,6 +218,7 @@ void Foam::fluidSolidInteraction::createMotion
             )
         );
         bandMotion_.reset(new bandMeshMotion(mesh_, motion_->movedPoints()));
+        wallPoints_ = motion_->usedPatchPoints();
         // The probes follow the mesh once per step, after its last pass
         // (step()), not in every pass
         bandMotion_->deferFunctionObjects();
@@ -240,6 +241,7 @@ void Foam::fluidSolidInteraction::createMotion
     }
     pointDisplacement_ =
         &mesh_.lookupObjectRef<pointVectorField>("pointDisplacement");
+    wallPoints_ = fsiPatch_.localToGlobal();
     if (!pointDisplacement_->boundaryField()[patchi_].fixesValue())
     {
         FatalErrorInFunction
@@ -328,7 +330,9 @@ void Foam::fluidSolidInteraction::openLog()
 
 void Foam::fluidSolidInteraction::moveWall(const scalarField& d)
 {
-    const vectorField wallDisplacement(map_->pointValues(d));
+    // At the points the motion reads (on 2 ranks about half of them and
+    // their neighbourhood, not the whole interface on each)
+    const vectorField wallDisplacement(map_->pointValues(d, wallPoints_));
     if (motion_.valid())
     {
         bandMotion_->movePoints(motion_->newPoints(wallDisplacement));

@@ -1093,63 +1093,85 @@ Foam::scalarField Foam::interfaceMap::interfaceDofs(const Eigen::VectorXd& full)
 }
 
 
+Foam::vector Foam::interfaceMap::pointValue
+(
+    const scalarField& dofs,
+    const label pointi
+) const
+{
+    const label dim = solidMesh_.dim();
+    vector val(Zero);
+    if (mapType_ == "projection")
+    {
+        for (label d = 0; d < dim; ++d)
+        {
+            exactSum a;
+            for
+            (
+                label i = pointStart_[pointi];
+                i < pointStart_[pointi + 1];
+                ++i
+            )
+            {
+                a.addProduct(pointWeight_[i], dofs[dim*pointNode_[i] + d]);
+            }
+            val[d] = a.value();
+        }
+    }
+    else
+    for (label i = pointStart_[pointi]; i < pointStart_[pointi + 1]; ++i)
+    {
+        for (label d = 0; d < dim; ++d)
+        {
+            val[d] += pointWeight_[i]*dofs[dim*pointNode_[i] + d];
+        }
+    }
+    const label pinned =
+        pointPinned_.size() ? pointPinned_[pointi] : label(0);
+    for (label d = 0; pinned && d < dim; ++d)
+    {
+        if (pinned & (1 << d))
+        {
+            const stencil& s = pointStencil_[pointi];
+            val[d] = 0;
+            for (label k = 0; k < 4; ++k)
+            {
+                val[d] += s.weight[k]*dofs[dim*s.node[k] + d];
+            }
+        }
+    }
+    return axisymmetric_
+        ? val.x()*pointRadial_[pointi] + val.y()*axisDirection_
+        : val;
+}
+
+
 Foam::tmp<Foam::vectorField> Foam::interfaceMap::pointValues
 (
     const scalarField& dofs
 ) const
 {
-    const label dim = solidMesh_.dim();
+    tmp<vectorField> tv(new vectorField(pointStencil_.size()));
+    vectorField& v = tv.ref();
+    forAll(v, pointi)
+    {
+        v[pointi] = pointValue(dofs, pointi);
+    }
+    return tv;
+}
+
+
+Foam::tmp<Foam::vectorField> Foam::interfaceMap::pointValues
+(
+    const scalarField& dofs,
+    const labelUList& points
+) const
+{
     tmp<vectorField> tv(new vectorField(pointStencil_.size(), Zero));
     vectorField& v = tv.ref();
-    const bool compensated = mapType_ == "projection";
-    forAll(pointStencil_, pointi)
+    for (const label pointi : points)
     {
-        vector val(Zero);
-        if (compensated)
-        {
-            for (label d = 0; d < dim; ++d)
-            {
-                exactSum a;
-                for
-                (
-                    label i = pointStart_[pointi];
-                    i < pointStart_[pointi + 1];
-                    ++i
-                )
-                {
-                    a.addProduct
-                    (
-                        pointWeight_[i], dofs[dim*pointNode_[i] + d]
-                    );
-                }
-                val[d] = a.value();
-            }
-        }
-        else
-        for (label i = pointStart_[pointi]; i < pointStart_[pointi + 1]; ++i)
-        {
-            for (label d = 0; d < dim; ++d)
-            {
-                val[d] += pointWeight_[i]*dofs[dim*pointNode_[i] + d];
-            }
-        }
-        const label pinned =
-            pointPinned_.size() ? pointPinned_[pointi] : label(0);
-        for (label d = 0; pinned && d < dim; ++d)
-        {
-            if (pinned & (1 << d))
-            {
-                const stencil& s = pointStencil_[pointi];
-                val[d] = 0;
-                for (label k = 0; k < 4; ++k)
-                {
-                    val[d] += s.weight[k]*dofs[dim*s.node[k] + d];
-                }
-            }
-        }
-        v[pointi] = axisymmetric_
-            ? val.x()*pointRadial_[pointi] + val.y()*axisDirection_
-            : val;
+        v[pointi] = pointValue(dofs, pointi);
     }
     return tv;
 }

@@ -280,6 +280,19 @@ Foam::tmp<Foam::pointField> Foam::interfaceMotion::newPoints
 }
 
 
+Foam::labelList Foam::interfaceMotion::usedPatchPoints() const
+{
+    bitSet used(patch_.localPoints().size());
+    used.set(patch_.localToGlobal());
+    forAll(stencil_, i) used.set(stencil_[i]);
+    for (const labelPair& pk : sharedPoints_)
+    {
+        used.set(pk.second());
+    }
+    return used.sortedToc();
+}
+
+
 Foam::labelList Foam::interfaceMotion::movedPoints() const
 {
     const labelList& ipPoints = mesh_.boundaryMesh()[patchi_].meshPoints();

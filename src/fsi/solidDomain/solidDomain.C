@@ -1101,7 +1101,10 @@ void Foam::solidDomain::openPatchFile()
 
 void Foam::solidDomain::save()
 {
-    saved_.model = solid::ModelSnapshot(*model_);
+    // The histories of this rank's own elements only (the only ones it
+    // writes; the others are stale copies until shareStates at a write
+    // time, after the step), into the storage of the last save
+    saved_.model.take(*model_, solid::ModelSnapshot::Histories::owned);
     saved_.solver = solver_->state();
     startForces_ = force_->forces();
     startTime_ = model_->time;

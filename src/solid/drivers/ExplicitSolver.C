@@ -243,6 +243,53 @@ void solid::ExplicitSolver::buildShearSlots()
 }
 
 
+void solid::ExplicitSolver::buildShearNeighbourhood()
+{
+    const Mesh& mesh = model_.mesh();
+    const int nen = mesh.nen(), ne = mesh.nElements();
+    const int* slot = shearSlot_.data();
+    // Elements with a slot in marked, in increasing order
+    auto touching = [&](const std::vector<bool>& marked)
+    {
+        std::vector<int> elements;
+        for (int e = 0; e < ne; ++e)
+        {
+            for (int a = 0; a < nen; ++a)
+            {
+                if (marked[slot[nen*e + a]])
+                {
+                    elements.push_back(e);
+                    break;
+                }
+            }
+        }
+        return elements;
+    };
+    // Slots of elements
+    auto slotsOf = [&](const std::vector<int>& elements)
+    {
+        std::vector<bool> marked(shearSlots_, false);
+        for (const int e : elements)
+        {
+            for (int a = 0; a < nen; ++a) marked[slot[nen*e + a]] = true;
+        }
+        return marked;
+    };
+    shearMeanElements_ = touching(slotsOf(model_.ownedElements()));
+    shearRateElements_ = touching(slotsOf(shearMeanElements_));
+    const std::vector<bool> used = slotsOf(shearRateElements_);
+    shearUsedSlots_.clear();
+    for (int k = 0; k < shearSlots_; ++k)
+    {
+        if (used[k]) shearUsedSlots_.push_back(k);
+    }
+    const int ns = shearRate_[0].rows();
+    shearD_.resize(ns, ne);
+    shearNodal_.resize(ns, shearSlots_);
+    shearBack_.resize(ns, shearSlots_);
+}
+
+
 void solid::ExplicitSolver::addFilteredShearForce
 (
     const Eigen::VectorXd& v,
@@ -250,7 +297,7 @@ void solid::ExplicitSolver::addFilteredShearForce
 ) const
 {
     const Mesh& mesh = model_.mesh();
-    const int nen = mesh.nen(), dim = mesh.dim(), ne = mesh.nElements();
+    const int nen = mesh.nen(), dim = mesh.dim();
     const int ns = shearRate_[0].rows();
     Eigen::VectorXd ve(nen*dim);
     // Per-element rate vectors (ns <= 6): on the stack, not allocated in
@@ -258,11 +305,19 @@ void solid::ExplicitSolver::addFilteredShearForce
     using Rate = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
 
     // Element rates d_e and their w-weighted averages at the nodes
-    // (the averages per slot: a node, or a node and region pair)
+    // (the averages per slot: a node, or a node and region pair), of
+    // the elements the own elements' forces need (buildShearNeighbourhood:
+    // the slots read below get all their terms, in the serial order)
     const int* slot = shearSlot_.data();
-    Eigen::MatrixXd d(ns, ne);
-    Eigen::MatrixXd nodal(Eigen::MatrixXd::Zero(ns, shearSlots_));
-    for (int e = 0; e < ne; ++e)
+    Eigen::MatrixXd& d = shearD_;
+    Eigen::MatrixXd& nodal = shearNodal_;
+    Eigen::MatrixXd& back = shearBack_;
+    for (const int k : shearUsedSlots_)
+    {
+        nodal.col(k).setZero();
+        back.col(k).setZero();
+    }
+    for (const int e : shearRateElements_)
     {
         const int* en = mesh.element(e);
         for (int a = 0; a < nen; ++a)
@@ -273,15 +328,14 @@ void solid::ExplicitSolver::addFilteredShearForce
             nodal.col(slot[nen*e + a]) += shearWeight_[e]*d.col(e);
         }
     }
-    for (int k = 0; k < shearSlots_; ++k)
+    for (const int k : shearUsedSlots_)
     {
         if (shearNodeWeight_[k] > 0) nodal.col(k) /= shearNodeWeight_[k];
     }
 
     // s = W (I - A) d, and the slot sums of s/(nen W_a) for A^T s
     Eigen::MatrixXd& s = d;
-    Eigen::MatrixXd back(Eigen::MatrixXd::Zero(ns, shearSlots_));
-    for (int e = 0; e < ne; ++e)
+    for (const int e : shearMeanElements_)
     {
         Rate mean(Rate::Zero(ns));
         for (int a = 0; a < nen; ++a) mean += nodal.col(slot[nen*e + a]);
@@ -293,8 +347,7 @@ void solid::ExplicitSolver::addFilteredShearForce
         }
     }
 
-    // g = (I - A)^T s, f_e = -Bd_e^T g_e: this part's elements (the
-    // rates and averages above over all elements, the same on every part)
+    // g = (I - A)^T s, f_e = -Bd_e^T g_e: this part's elements
     for (const int e : model_.ownedElements())
     {
         const int* en = mesh.element(e);
@@ -480,6 +533,7 @@ solid::ExplicitSolver::ExplicitSolver
     fixed_ = m.prescribedDofs();
     invMass_ = m.lumpedMass().cwiseInverse();
     if (anyHourglass) buildHourglass();
+    if (!shearRate_.empty()) buildShearNeighbourhood();
     forces(m.time, 0, m.v, fhg_);
     m.commit();
     fint_ = asm_.fint;

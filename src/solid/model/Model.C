@@ -142,6 +142,8 @@ void solid::Model::initialise()
     }
     pointState_.revert();
     elementState_.revert();
+    ownedPointRanges_ = pointState_.ranges(owned_);
+    ownedElementRanges_ = elementState_.ranges(owned_);
 
     u = Eigen::VectorXd::Zero(nDisplacementDofs());
     v = Eigen::VectorXd::Zero(nDisplacementDofs());
@@ -564,15 +566,15 @@ solid::ElementOutput solid::Model::evaluateElement(int e, double dt)
 
 void solid::Model::commit()
 {
-    pointState_.commit();
-    elementState_.commit();
+    pointState_.commit(ownedPointRanges_);
+    elementState_.commit(ownedElementRanges_);
     for (const auto& c : contributions_) c->commit(*this, u, time);
 }
 
 
 void solid::Model::revert()
 {
-    pointState_.revert();
-    elementState_.revert();
+    pointState_.revert(ownedPointRanges_);
+    elementState_.revert(ownedElementRanges_);
     for (const auto& c : contributions_) c->revert();
 }

@@ -2,17 +2,54 @@
 #include "Model.H"
 #include "SolidError.H"
 
+#include <algorithm>
+
 namespace
 {
 
-std::vector<double> copy(const Eigen::VectorXd& x)
+void copy(const Eigen::VectorXd& x, std::vector<double>& y)
 {
-    return std::vector<double>(x.data(), x.data() + x.size());
+    y.assign(x.data(), x.data() + x.size());
 }
 
 Eigen::VectorXd copy(const std::vector<double>& x)
 {
     return Eigen::Map<const Eigen::VectorXd>(x.data(), x.size());
+}
+
+using Ranges = std::vector<solid::StateArray::Range>;
+
+std::size_t count(const Ranges& r)
+{
+    std::size_t n = 0;
+    for (const auto& x : r) n += x.second - x.first;
+    return n;
+}
+
+//- The values of x in ranges r, packed in their order, into y
+void gather(const std::vector<double>& x, const Ranges& r,
+    std::vector<double>& y)
+{
+    y.resize(count(r));
+    auto out = y.begin();
+    for (const auto& i : r)
+    {
+        out = std::copy(x.begin() + i.first, x.begin() + i.second, out);
+    }
+}
+
+//- The inverse: y's values into the ranges r of x (and of z)
+void scatter(const std::vector<double>& y, const Ranges& r,
+    std::vector<double>& x, std::vector<double>& z)
+{
+    auto in = y.begin();
+    for (const auto& i : r)
+    {
+        const auto next = in + (i.second - i.first);
+        std::copy(in, next, x.begin() + i.first);
+        std::copy(in, next, z.begin() + i.first);
+        in = next;
+    }
 }
 
 } // namespace
@@ -42,23 +79,56 @@ solid::ModelSnapshot::sizes(const Model& model)
 }
 
 
-solid::ModelSnapshot::ModelSnapshot(const Model& model)
-:
-    parts_
+solid::ModelSnapshot::ModelSnapshot
+(
+    const Model& model,
+    const Histories histories
+)
+{
+    take(model, histories);
+}
+
+
+void solid::ModelSnapshot::take
+(
+    const Model& model,
+    const Histories histories
+)
+{
+    copy(model.u, parts_[u]);
+    copy(model.v, parts_[v]);
+    copy(model.pressure, parts_[pressure]);
+    if (histories == Histories::owned)
     {
-        copy(model.u),
-        copy(model.v),
-        copy(model.pressure),
-        model.pointState().oldData(),
-        model.elementState().oldData()
-    },
-    time_(model.time)
-{}
+        gather
+        (
+            model.pointState().oldData(), model.ownedPointRanges(),
+            parts_[pointState]
+        );
+        gather
+        (
+            model.elementState().oldData(), model.ownedElementRanges(),
+            parts_[elementState]
+        );
+    }
+    else
+    {
+        parts_[pointState] = model.pointState().oldData();
+        parts_[elementState] = model.elementState().oldData();
+    }
+    time_ = model.time;
+    histories_ = histories;
+}
 
 
 void solid::ModelSnapshot::restore(Model& model) const
 {
-    const auto expected = sizes(model);
+    auto expected = sizes(model);
+    if (histories_ == Histories::owned)
+    {
+        expected[pointState] = count(model.ownedPointRanges());
+        expected[elementState] = count(model.ownedElementRanges());
+    }
     for (int p = 0; p < nParts; ++p)
     {
         if (parts_[p].size() != expected[p])
@@ -79,6 +149,20 @@ void solid::ModelSnapshot::restore(Model& model) const
     model.time = time_;
     StateArray& ps = model.pointState();
     StateArray& es = model.elementState();
+    if (histories_ == Histories::owned)
+    {
+        scatter
+        (
+            parts_[pointState], model.ownedPointRanges(), ps.oldData(),
+            ps.currentData()
+        );
+        scatter
+        (
+            parts_[elementState], model.ownedElementRanges(),
+            es.oldData(), es.currentData()
+        );
+        return;
+    }
     ps.oldData() = parts_[pointState];
     ps.currentData() = parts_[pointState];
     es.oldData() = parts_[elementState];
