@@ -67,7 +67,8 @@ check "the next run removes the stale lock and runs" \
      && [ ! -e .runLock ]"
 
 # 3. A lock of another host
-printf 'pid 1\nhost another-host\nexecutable cellBlastFoam\nstarted 2026-01-01T00:00:00\n' > .runLock
+printf 'pid 1\nhost another-host\nexecutable cellBlastFoam\nstarted 2026-01-01T00:00:00\ncase %s\n' \
+    "$PWD" > .runLock
 status=0; cellBlastFoam > log.otherHost 2>&1 || status=$?
 check "a lock of another host is refused, the file to remove named" \
     "[ $status -ne 0 ] && grep -q 'on host another-host' log.otherHost \
@@ -76,8 +77,8 @@ check "a lock of another host is refused, the file to remove named" \
 # 4. A reused process id (a live process of another executable)
 sleep 60 &
 sleeper=$!; pids+=("$sleeper")
-printf 'pid %s\nhost %s\nexecutable cellBlastFoam\nstarted 2026-01-01T00:00:00\n' \
-    "$sleeper" "$(hostname)" > .runLock
+printf 'pid %s\nhost %s\nexecutable cellBlastFoam\nstarted 2026-01-01T00:00:00\ncase %s\n' \
+    "$sleeper" "$(hostname)" "$PWD" > .runLock
 status=0; cellBlastFoam -overwrite > log.reused 2>&1 || status=$?
 check "a lock whose process runs another executable is stale" \
     "[ $status -eq 0 ] && grep -q 'Removing the stale run lock' log.reused"
