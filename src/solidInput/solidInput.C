@@ -15,6 +15,42 @@
 #include "inputChecks.H"
 #include "subDict.H"
 
+namespace
+{
+
+// The nodes of a region's elements (empty: no region of that name)
+std::vector<char> regionNodes
+(
+    const solid::Mesh& mesh,
+    const std::string& name
+)
+{
+    std::vector<char> in;
+    for (std::size_t r = 0; r < mesh.regionNames.size(); ++r)
+    {
+        if (mesh.regionNames[r] != name)
+        {
+            continue;
+        }
+        in.assign(mesh.nNodes(), 0);
+        const int nen = mesh.nen();
+        for (int e = 0; e < mesh.nElements(); ++e)
+        {
+            if (mesh.region[e] == int(r))
+            {
+                for (int a = 0; a < nen; ++a)
+                {
+                    in[mesh.element(e)[a]] = 1;
+                }
+            }
+        }
+    }
+    return in;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
 
 Foam::solidInput::solidInput
@@ -228,6 +264,70 @@ std::vector<solid::MaterialParameters> Foam::solidInput::materials
     // Every entry must name a region of the mesh: a misspelt region would
     // otherwise be ignored silently
     foamTools::checkKeywords(mats, regions);
+
+    // The cell's regions by name must fit its geometry: the nucleus lies
+    // inside the cytoplasm, the membrane outside it and on the cell's
+    // outer surface. A mesh whose names of the nucleus and the cytoplasm
+    // were swapped ran to its end with each region's material on the
+    // other (adv46b d40; issue 19's "swapped physical-group names")
+    {
+        const std::vector<char> nucleus(regionNodes(mesh, "nucleus"));
+        const std::vector<char> membrane(regionNodes(mesh, "membrane"));
+        const std::vector<char> cytoplasm(regionNodes(mesh, "cytoplasm"));
+        const std::vector<char>& outer =
+            membrane.size() ? membrane : cytoplasm;
+        const char* outerName = membrane.size() ? "membrane" : "cytoplasm";
+        std::string why;
+        if (nucleus.size() && membrane.size())
+        {
+            for (int n = 0; n < mesh.nNodes() && why.empty(); ++n)
+            {
+                if (nucleus[n] && membrane[n])
+                {
+                    why = "the region 'nucleus' touches the region"
+                        " 'membrane' (they share nodes; the cytoplasm lies"
+                        " between them)";
+                }
+            }
+        }
+        const auto surface = mesh.faceSets.find("outerSurface");
+        if (why.empty() && outer.size() && surface != mesh.faceSets.end())
+        {
+            for (const std::vector<int>& f : surface->second)
+            {
+                bool all = true;
+                for (const int n : f)
+                {
+                    all = all && outer[n];
+                }
+                if (!all)
+                {
+                    why = std::string("a face of 'outerSurface' is not on")
+                        + " the region '" + outerName + "' (the cell's"
+                        + " outermost region)";
+                    break;
+                }
+            }
+        }
+        if (!why.empty())
+        {
+            const dictionary& meshDict = foamTools::subDict(dict_, "mesh");
+            FatalIOErrorInFunction(mats)
+                << "the regions of the solid mesh";
+            if (meshDict.found("file"))
+            {
+                FatalIOError
+                    << " '" << meshDict.get<fileName>("file").c_str() << "'";
+            }
+            FatalIOError
+                << " do not fit their names: " << why.c_str()
+                << ". Are the names of the physical groups swapped"
+                << " ($PhysicalNames: " << wordList(regions) << ")? Each"
+                << " region would get the other's material: nothing was"
+                << " run. Name the groups as the geometry has them"
+                << exit(FatalIOError);
+        }
+    }
 
     std::vector<solid::MaterialParameters> result;
     for (const word& region : regions)
