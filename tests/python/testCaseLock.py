@@ -135,6 +135,41 @@ class PythonLock(TempDirTestCase):
                              os.getpid())
         self.assertFalse(os.path.exists(case + "/.runLock"))
 
+    def testStaleLockTakenByOneOfTwoAtOnce(self):
+        # Two tools that find the same stale lock at the same instant:
+        # exactly one takes the case (adv46b d67, d77: both removed the
+        # stale lock, the second removing the first's new one, and both
+        # ran). Eight trials, the two starting at one wall-clock instant,
+        # each reading the lock slowly (0.2 s after each read: the window
+        # between judging the lock stale and removing it made wide).
+        case = self.tmp
+        code = ("import sys, time\nfrom neuronFsi import caseLock\n"
+                "read = caseLock.read\n"
+                "def slowRead(path):\n"
+                "    h = read(path); time.sleep(0.2); return h\n"
+                "caseLock.read = slowRead\n"
+                "t0 = float(sys.argv[2])\n"
+                "while time.time() < t0: pass\n"
+                "try:\n"
+                "    with caseLock.held(sys.argv[1], 'sweepCase'):\n"
+                "        print('held', flush=True); time.sleep(1.0)\n"
+                "except caseLock.CaseLockError:\n"
+                "    print('refused', flush=True)\n")
+        for trial in range(8):
+            dead = subprocess.Popen(["true"])
+            dead.wait()
+            with open(case + "/.runLock", "w") as f:
+                f.write(caseLock.lockText(dead.pid, "planeWave", case))
+            t0 = "%.6f" % (time.time() + 0.5)
+            runs = [subprocess.Popen([sys.executable, "-c", code, case, t0],
+                                     stdout=subprocess.PIPE,
+                                     stderr=subprocess.DEVNULL, text=True,
+                                     cwd=case) for _ in range(2)]
+            said = sorted(r.communicate(timeout=60)[0].strip() for r in runs)
+            self.assertEqual(said, ["held", "refused"],
+                             "trial %d: %s" % (trial, said))
+            self.assertFalse(os.path.exists(case + "/.runLock"))
+
     def testSolverRefusesIt(self):
         # a solver's caseLock (C++) sees the lock of a Python tool as live:
         # "in use by planeWave", not taken over as stale

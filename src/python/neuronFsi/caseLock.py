@@ -39,6 +39,7 @@ cannot take this lock: docs/reliability.md says so."""
 import atexit
 import ctypes
 import errno
+import fcntl
 import os
 import socket
 import stat
@@ -420,6 +421,21 @@ class held:
             raise CaseLockError("the case %s is in use: %s. One run per "
                                 "case: wait for it to end" % (self.case,
                                                               why))
+        # Read, judge, remove and create under an exclusive flock(2) on
+        # the case directory (caseLock.H's directoryMutex): two runs that
+        # find the same stale lock at once both removed it, the second
+        # removing the first's new lock, and both ran (adv46b d67, d77).
+        # The kernel releases it when the descriptor closes or the
+        # process ends.
+        mutex = os.open(self.case, os.O_RDONLY | os.O_DIRECTORY
+                        | os.O_CLOEXEC)
+        try:
+            fcntl.flock(mutex, fcntl.LOCK_EX)
+            return self._enterLocked()
+        finally:
+            os.close(mutex)
+
+    def _enterLocked(self):
         for attempt in range(2):
             if self._create():
                 self.taken = True
