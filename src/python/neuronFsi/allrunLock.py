@@ -34,7 +34,7 @@ import time
 # ancestor rules are neuronFsi.caseLock's (the Python tools' side of
 # caseLock.H)
 from .caseLock import FILE, _notAFile, _running as comm, damage, \
-    giveBack, holding, isAncestor, lockText, read, stale, takeOver
+    directoryMutex, giveBack, holding, isAncestor, lockText, read, stale, takeOver
 
 
 class LockError(Exception):
@@ -46,6 +46,13 @@ def take(case, pid):
     holds it. A lock of pid or of an ancestor of pid is kept (an Allrun
     started by another Allrun of the same case)."""
     real = os.path.realpath(case)
+    with directoryMutex(real):
+        return _takeLocked(real, pid)
+
+
+def _takeLocked(real, pid):
+    """take's read, judge, remove and create, under the case directory's
+    mutex."""
     path = os.path.join(real, FILE)
     for attempt in range(2):
         try:

@@ -37,6 +37,7 @@ OpenFOAM's own utilities (blockMesh, decomposePar, foamListTimes, ...)
 cannot take this lock: docs/reliability.md says so."""
 
 import atexit
+import contextlib
 import ctypes
 import errno
 import fcntl
@@ -217,6 +218,22 @@ def stale(h, case):
         return True
     its = _runningCase(h["pid"])
     return bool(its) and its != os.path.realpath(case)
+
+
+@contextlib.contextmanager
+def directoryMutex(case):
+    """An exclusive flock(2) on the case directory for the with-block
+    (caseLock.H's directoryMutex): a lock is read, judged, removed and
+    created under it, else two runs that find the same stale lock at once
+    both remove it, the second removing the first's new lock, and both run
+    (adv46b d67, d77). The kernel releases it when the descriptor closes
+    or the process ends."""
+    fd = os.open(case, os.O_RDONLY | os.O_DIRECTORY | os.O_CLOEXEC)
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX)
+        yield
+    finally:
+        os.close(fd)
 
 
 def lockText(pid, executable, case, started=None):
@@ -421,19 +438,8 @@ class held:
             raise CaseLockError("the case %s is in use: %s. One run per "
                                 "case: wait for it to end" % (self.case,
                                                               why))
-        # Read, judge, remove and create under an exclusive flock(2) on
-        # the case directory (caseLock.H's directoryMutex): two runs that
-        # find the same stale lock at once both removed it, the second
-        # removing the first's new lock, and both ran (adv46b d67, d77).
-        # The kernel releases it when the descriptor closes or the
-        # process ends.
-        mutex = os.open(self.case, os.O_RDONLY | os.O_DIRECTORY
-                        | os.O_CLOEXEC)
-        try:
-            fcntl.flock(mutex, fcntl.LOCK_EX)
+        with directoryMutex(self.case):
             return self._enterLocked()
-        finally:
-            os.close(mutex)
 
     def _enterLocked(self):
         for attempt in range(2):
