@@ -211,17 +211,22 @@ class ColumnFiles(TempDirTestCase):
     def testProbesOfTheHeader(self):
         self.write("postProcessing/solidProbes/0/solidProbes.dat",
                    "# solid probes at points\n"
-                   "# time [s]  p0[Pa]  p1[Pa]\n"
+                   "# time [s]  p0[Pa]  p1[Pa]  p2[Pa]\n"
                    "# probe 0 fig10 at (5.04e-06 5.32e-06 0) m in cytoplasm:"
                    " element 295, patch of 7 elements\n"
                    "# probe 1 top at (1e-06 2e-06 3e-06) m in nucleus: "
                    "element 7, patch of 9 elements\n"
-                   "1e-10 1 2\n")
+                   "# probe 2 ball at (1e-06 2e-06 0) m in nucleus: "
+                   "element 7, patch of 40 elements: the mean over the "
+                   "region within radius 5e-07 m of the point "
+                   "(9.8e-18 m^3)\n"
+                   "1e-10 1 2 3\n")
         p = pp.probes(self.tmp)
-        self.assertEqual([(q["name"], q["element"], q["region"], q["patch"])
-                          for q in p],
-                         [("fig10", 295, "cytoplasm", 7),
-                          ("top", 7, "nucleus", 9)])
+        self.assertEqual([(q["name"], q["element"], q["region"], q["patch"],
+                           q["radius"]) for q in p],
+                         [("fig10", 295, "cytoplasm", 7, 0),
+                          ("top", 7, "nucleus", 9, 0),
+                          ("ball", 7, "nucleus", 40, 5e-7)])
         np.testing.assert_array_equal(p[0]["point"], [5.04e-6, 5.32e-6, 0])
         np.testing.assert_array_equal(p[1]["point"], [1e-6, 2e-6, 3e-6])
         self.write("postProcessing/fsi/0/coupling.dat", HEADER + row(1e-10))

@@ -658,14 +658,18 @@ void Foam::solidDomain::addProbe
     const point& X,
     const word& region,
     const dictionary& dict,
-    const word& entry
+    const word& entry,
+    const scalar radius
 )
 {
     const std::string context(entry + ": probe '" + name + "'");
     guarded(dict, context.c_str(), [&]
     {
         const int r = region.empty() ? -1 : mesh().regionId(region);
-        probes_.emplace_back(mesh(), solid::Vec3(X.x(), X.y(), X.z()), r);
+        probes_.emplace_back
+        (
+            mesh(), solid::Vec3(X.x(), X.y(), X.z()), r, radius
+        );
     });
     probeNames_.append(name);
 }
@@ -686,17 +690,27 @@ void Foam::solidDomain::setupProbes()
                     << "probes: entry " << e.keyword() << " is not a "
                     << "dictionary { point (x y z); region <name>; } (point"
                     << " [m] in the reference configuration, r-z: (r z 0);"
-                    << " region optional)" << exit(FatalIOError);
+                    << " region optional; radius <R>; [m] optional: the"
+                    << " mean over the region within R of the point)"
+                    << exit(FatalIOError);
             }
             const dictionary& d = e.dict();
-            foamTools::checkKeywords(d, {"point", "region"});
+            foamTools::checkKeywords(d, {"point", "region", "radius"});
+            // A ball probe's radius: the mean over the region within it
+            // (0, the default: the point's recovered value)
+            const scalar radius = foamTools::readInRangeOrDefault<scalar>
+            (
+                d, "radius", "m", 0, foamTools::noUpperBound<scalar>(),
+                true, 0
+            );
             addProbe
             (
                 e.keyword(),
                 d.get<point>("point"),
                 d.getOrDefault<word>("region", word::null),
                 d,
-                "probes"
+                "probes",
+                radius
             );
         }
     }
@@ -848,7 +862,14 @@ void Foam::solidDomain::setupOutput()
                 << p.point()(2) << ") m in "
                 << word(m.regionNames[p.region()]) << ": element "
                 << p.element()
-                << ", patch of " << p.patch().size() << " elements" << nl;
+                << ", patch of " << p.patch().size() << " elements";
+            if (p.radius() > 0)
+            {
+                os  << ": the mean over the region within radius "
+                    << p.radius() << " m of the point (" << p.volume()
+                    << " m^3)";
+            }
+            os  << nl;
         }
     }
 

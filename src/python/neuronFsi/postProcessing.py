@@ -329,17 +329,21 @@ def probes(case, log="solidProbes/solidProbes.dat"):
     """The probes the header of the solid probes file names, in order:
     each a dict of name, point [m] (its reference coordinates, 3
     components), region, element (the one containing the point) and patch
-    (the number of elements its value is recovered from)."""
+    (the number of elements its value is recovered from), and radius [m]:
+    a ball probe's (the mean over the region within it), 0 for a point."""
     out = []
     for line in header(case, log):
         m = re.match(r"probe \d+ (\S+) at \((\S+) (\S+) (\S+)\) m in (\w+): "
-                     r"element (\d+), patch of (\d+) elements", line)
+                     r"element (\d+), patch of (\d+) elements"
+                     r"(?:: the mean over the region within radius (\S+) m)?",
+                     line)
         if m:
             out.append(dict(name=m.group(1),
                             point=np.array([float(m.group(k))
                                             for k in (2, 3, 4)]),
                             region=m.group(5), element=int(m.group(6)),
-                            patch=int(m.group(7))))
+                            patch=int(m.group(7)),
+                            radius=float(m.group(8) or 0)))
     return out
 
 

@@ -280,3 +280,111 @@ solid::ProbeValues solid::PointProbe::recover
     }
     return v;
 }
+
+
+solid::PointProbe::PointProbe
+(
+    const Mesh& mesh,
+    const Vec3& X,
+    int region,
+    double radius,
+    int subCells
+)
+:
+    PointProbe(mesh, X, region)
+{
+    if (!(std::isfinite(radius) && radius >= 0))
+    {
+        std::ostringstream os;
+        os.precision(10);
+        os  << "probe at " << pointName(X_, dim_) << ": radius " << radius
+            << " m: a ball probe's radius must be finite and >= 0 (0: the"
+            << " point)";
+        throw SolidError(SolidError::Kind::parameter, os.str());
+    }
+    if (radius == 0) return;
+    radius_ = radius;
+    const int n = subCells > 0 ? subCells : (dim_ == 2 ? 16 : 8);
+    const bool axi = mesh.axisymmetric();
+    const int nen = mesh.nen();
+    const double R2 = radius*radius;
+    const double cell = std::pow(2.0/n, dim_);
+    std::vector<int> patch;
+    std::vector<double> volumes;
+    Eigen::VectorXd N;
+    Eigen::MatrixXd dN;
+    for (int e = 0; e < mesh.nElements(); ++e)
+    {
+        if (mesh.region[e] != region_) continue;
+        const int* en = mesh.element(e);
+        // Nearest and farthest node distances from X: an element whose
+        // box misses the ball is out, one whose nodes all lie inside is in
+        // whole (a quad4 or hex8 lies in its nodes' convex hull)
+        Vec3 lo = mesh.X[en[0]], hi = mesh.X[en[0]];
+        bool allIn = true;
+        for (int a = 0; a < nen; ++a)
+        {
+            lo = lo.cwiseMin(mesh.X[en[a]]);
+            hi = hi.cwiseMax(mesh.X[en[a]]);
+            allIn = allIn && (mesh.X[en[a]] - X_).squaredNorm() <= R2;
+        }
+        const Vec3 nearest = X_.cwiseMax(lo).cwiseMin(hi);
+        if ((nearest - X_).squaredNorm() > R2) continue;
+        double v = 0;
+        if (allIn)
+        {
+            ElementGeometry g;
+            g.build(mesh, e);
+            v = g.V;
+        }
+        else
+        {
+            // Midpoint rule on n^dim sub-cells of [-1, 1]^dim
+            const int nz = dim_ == 3 ? n : 1;
+            for (int k = 0; k < nz; ++k)
+            for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+            {
+                const Vec3 xi
+                (
+                    -1 + (2*i + 1.0)/n,
+                    -1 + (2*j + 1.0)/n,
+                    dim_ == 3 ? -1 + (2*k + 1.0)/n : 0.0
+                );
+                shapeAt(mesh.type, xi, N, dN);
+                Vec3 Xq(Vec3::Zero());
+                Eigen::MatrixXd J = Eigen::MatrixXd::Zero(dim_, dim_);
+                for (int a = 0; a < nen; ++a)
+                {
+                    Xq += N(a)*mesh.X[en[a]];
+                    J += head(mesh.X[en[a]], dim_)*dN.row(a);
+                }
+                if ((Xq - X_).squaredNorm() > R2) continue;
+                v += std::abs(J.determinant())*cell
+                    *(axi ? 2*M_PI*Xq(0) : 1.0);
+            }
+        }
+        if (v > 0)
+        {
+            patch.push_back(e);
+            volumes.push_back(v);
+        }
+    }
+    // X lies in an element of the region: the ball meets it
+    for (const double v : volumes) volume_ += v;
+    if (!(volume_ > 0))
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter,
+            "probe at " + pointName(X_, dim_) + ": its ball meets no volume"
+            " of region '" + mesh.regionNames[region_] + "'"
+        );
+    }
+    patch_ = patch;
+    weights_.resize(volumes.size());
+    for (std::size_t i = 0; i < volumes.size(); ++i)
+    {
+        weights_[i] = volumes[i]/volume_;
+    }
+}
