@@ -75,6 +75,34 @@ MaterialParameters water(const std::string& name, double C10, double mu1,
     return p;
 }
 
+//- The element that sets the stable step (the assembly's minimum, dt = 0:
+//  zeta = b1): its step, region, centre and characteristic length
+void smallestStep(Model& model, const char* when)
+{
+    const Mesh& mesh = model.mesh();
+    int eMin = -1;
+    double dtMin = 1e300, lenMin = 0;
+    for (int e = 0; e < mesh.nElements(); ++e)
+    {
+        const ElementOutput o = model.evaluateElement(e, 0);
+        const double dtE = o.length/std::sqrt(o.c2)
+           *(std::sqrt(1 + o.zeta*o.zeta) - o.zeta);
+        if (dtE < dtMin)
+        {
+            dtMin = dtE;
+            eMin = e;
+            lenMin = o.length;
+        }
+    }
+    Vec3 c = Vec3::Zero();
+    const int* en = mesh.element(eMin);
+    for (int a = 0; a < mesh.nen(); ++a) c += mesh.X[en[a]]/mesh.nen();
+    std::printf("# %s: the smallest element step %.6e s, element %d in %s "
+        "at (%.3f, %.3f) um, characteristic length %.4e m\n", when, dtMin,
+        eMin, mesh.regionNames[mesh.region[eMin]].c_str(), c(0)*1e6,
+        c(1)*1e6, lenMin);
+}
+
 } // namespace
 
 
@@ -128,33 +156,13 @@ int main(int argc, char** argv)
         ExplicitSolver solver(model, set);
         std::printf("# %d elements, %d nodes; stable step at start %.6e s\n",
             mesh.nElements(), mesh.nNodes(), solver.stableTimeStep());
+        smallestStep(model, "at the start");
         for (long s = 0; s < steps; ++s) solver.step();
-
-        // The element that sets the stable step (the assembly's minimum)
-        int eMin = -1;
-        double dtMin = 1e300, lenMin = 0;
-        for (int e = 0; e < mesh.nElements(); ++e)
-        {
-            const ElementOutput o = model.evaluateElement(e, 0);
-            const double dtE = o.length/std::sqrt(o.c2)
-               *(std::sqrt(1 + o.zeta*o.zeta) - o.zeta);
-            if (dtE < dtMin)
-            {
-                dtMin = dtE;
-                eMin = e;
-                lenMin = o.length;
-            }
-        }
-        Vec3 c = Vec3::Zero();
-        const int* en = mesh.element(eMin);
-        for (int a = 0; a < mesh.nen(); ++a) c += mesh.X[en[a]]/mesh.nen();
         std::printf("# after %ld steps to %.6e s: stable step %.6e s (x "
-            "safety %.6e s); the smallest element step %.6e s (at rest "
-            "zeta = b1), element %d in %s at (%.3f, %.3f) um, length "
-            "%.4e m\n", steps, model.time, solver.stableTimeStep(),
-            solver.timeStep(), dtMin, eMin,
-            mesh.regionNames[mesh.region[eMin]].c_str(), c(0)*1e6,
-            c(1)*1e6, lenMin);
+            "safety %.6e s)\n", steps, model.time, solver.stableTimeStep(),
+            solver.timeStep());
+        smallestStep(model, "then");
+
         digest("u", model.u.data(), model.u.size());
         digest("v", model.v.data(), model.v.size());
         const ExplicitState st = solver.state();
