@@ -97,6 +97,97 @@ TEST(SolidElement, TangentAgainstFiniteDifferences)
 }
 
 
+// The explicit evaluation (no tangent: MixedElement.C's fixed-size path)
+// against the general path (with the tangent): the same forces, volume,
+// stresses, lengths and histories; they differ only where the material
+// computes J^(-2/3) (cbrt in stress, pow in evaluate), a few ulps
+TEST(SolidElement, ExplicitPathMatchesGeneralPath)
+{
+    Mesh hex = Mesh::box(1, 1, 1, Vec3(0, 0, 0), Vec3(1e-6, 1.2e-6, 0.9e-6));
+    hex.X[6] += Vec3(0.1e-6, -0.05e-6, 0.08e-6);
+    Mesh quad = Mesh::rectangle(1, 1, 0.5e-6, 1.5e-6, 0, 1e-6);
+    quad.X[2] += Vec3(0.1e-6, 0.15e-6, 0);
+    MaterialParameters mg;
+    mg.volumetric = "mieGruneisen";
+    mg.C10 = 1.67;
+    mg.branches = {{107.78, 0.01}};
+    const auto mats =
+    {
+        material(166.67, 1e-3),                     // compressible NH
+        material(13.33, 1e-4, {{862.22, 0.5}}),     // NH + Maxwell
+        std::shared_ptr<const Material>(Material::create(mg))
+    };
+    const auto rel = [](const auto& a, const auto& b)
+    {
+        const double n = std::max(a.norm(), b.norm());
+        return n > 0 ? (a - b).norm()/n : 0.0;
+    };
+    const auto relS = [](double a, double b)
+    {
+        const double n = std::max(std::abs(a), std::abs(b));
+        return n > 0 ? std::abs(a - b)/n : 0.0;
+    };
+    int seed = 11;
+    for (const auto& mat : mats)
+    {
+        for (const Mesh* m : {&hex, &quad})
+        {
+            ElementGeometry geo;
+            geo.build(*m, 0);
+            const int nhq = mat->isochoric().nHistory();
+            const int nh = nhq*int(geo.w.size());
+            std::vector<double> po(nh + 1), eo(8);
+            for (std::size_t q = 0; q < geo.w.size(); ++q)
+            {
+                mat->isochoric().initHistory(po.data() + q*nhq);
+            }
+            mat->volumetric().initHistory(eo.data());
+            // A history that is not the initial one: one step first
+            std::vector<double> p1(nh + 1), e1(8), pa(nh + 1), pb(nh + 1),
+                ea(8), eb(8);
+            ElementOutput a, b;
+            const Eigen::VectorXd u0 = randomDisplacement(*m, 0.02e-6, seed++);
+            MixedElement::evaluate(*m, 0, geo, *mat, u0, false, 0, 1e-9,
+                po.data(), p1.data(), eo.data(), e1.data(), false, a);
+            // Compressed, so the bulk viscosity's quadratic term acts
+            const Eigen::VectorXd ue =
+                0.97*u0 + randomDisplacement(*m, 0.04e-6, seed++);
+            MixedElement::evaluate(*m, 0, geo, *mat, ue, false, 0, 1e-9,
+                p1.data(), pa.data(), e1.data(), ea.data(), false, a, true);
+            MixedElement::evaluate(*m, 0, geo, *mat, ue, false, 0, 1e-9,
+                p1.data(), pb.data(), e1.data(), eb.data(), true, b, true);
+            const std::string what = elementTypeName(m->type);
+            const double tol = 1e-12;
+            EXPECT_LT(rel(a.f, b.f), tol) << what;
+            EXPECT_LT(rel(a.g, b.g), tol) << what;
+            EXPECT_LT(rel(a.sigma, b.sigma), tol) << what;
+            EXPECT_LT(rel(a.F, b.F), tol) << what;
+            EXPECT_EQ(a.v, b.v) << what;
+            EXPECT_EQ(a.theta, b.theta) << what;
+            EXPECT_EQ(a.Jmin, b.Jmin) << what;
+            EXPECT_EQ(a.length, b.length) << what;
+            EXPECT_LT(relS(a.p, b.p), tol) << what;
+            EXPECT_LT(relS(a.q, b.q), tol) << what;
+            EXPECT_LT(relS(a.energy, b.energy), tol) << what;
+            EXPECT_LT(relS(a.dissipated, b.dissipated), tol) << what;
+            EXPECT_LT(relS(a.c2, b.c2), tol) << what;
+            EXPECT_LT(relS(a.zeta, b.zeta), tol) << what;
+            EXPECT_LT
+            (
+                rel(Eigen::Map<Eigen::VectorXd>(pa.data(), nh),
+                    Eigen::Map<Eigen::VectorXd>(pb.data(), nh)), tol
+            ) << what;
+            EXPECT_LT
+            (
+                rel(Eigen::Map<Eigen::VectorXd>(ea.data(), 8),
+                    Eigen::Map<Eigen::VectorXd>(eb.data(), 8)), tol
+            ) << what;
+            EXPECT_GT(a.f.norm(), 0) << what;
+        }
+    }
+}
+
+
 TEST(SolidElement, VolumeGradientAndMultiplierTangent)
 {
     // Incompressible law: f = f_iso - p g; K = K_iso - p d2v/du2

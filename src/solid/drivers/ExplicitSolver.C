@@ -290,6 +290,7 @@ void solid::ExplicitSolver::buildShearNeighbourhood()
 }
 
 
+template<int NS, int NEN, int DIM>
 void solid::ExplicitSolver::addFilteredShearForce
 (
     const Eigen::VectorXd& v,
@@ -297,11 +298,12 @@ void solid::ExplicitSolver::addFilteredShearForce
 ) const
 {
     const Mesh& mesh = model_.mesh();
-    const int nen = mesh.nen(), dim = mesh.dim();
-    const int ns = shearRate_[0].rows();
+    constexpr int nen = NEN, dim = DIM, ns = NS;
     Eigen::VectorXd ve(nen*dim);
     // Per-element rate vectors (ns <= 6): on the stack, not allocated in
-    // the element loops of every step
+    // the element loops of every step; the column operations below are
+    // element-wise (each entry the same arithmetic as Eigen's column
+    // expressions), the two products Eigen's (noalias: no temporary)
     using Rate = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
 
     // Element rates d_e and their w-weighted averages at the nodes
@@ -312,55 +314,151 @@ void solid::ExplicitSolver::addFilteredShearForce
     Eigen::MatrixXd& d = shearD_;
     Eigen::MatrixXd& nodal = shearNodal_;
     Eigen::MatrixXd& back = shearBack_;
+    double* const dp = d.data();
+    double* const np = nodal.data();
+    double* const bp = back.data();
     for (const int k : shearUsedSlots_)
     {
-        nodal.col(k).setZero();
-        back.col(k).setZero();
+        for (int i = 0; i < ns; ++i)
+        {
+            np[ns*k + i] = 0;
+            bp[ns*k + i] = 0;
+        }
     }
     for (const int e : shearRateElements_)
     {
         const int* en = mesh.element(e);
         for (int a = 0; a < nen; ++a)
             for (int i = 0; i < dim; ++i) ve(dim*a + i) = v(dim*en[a] + i);
-        d.col(e) = shearRate_[e]*ve;
+        d.col(e).noalias() = shearRate_[e]*ve;
+        const double w = shearWeight_[e];
+        const double* de = dp + ns*e;
         for (int a = 0; a < nen; ++a)
         {
-            nodal.col(slot[nen*e + a]) += shearWeight_[e]*d.col(e);
+            double* nk = np + ns*slot[nen*e + a];
+            for (int i = 0; i < ns; ++i) nk[i] += w*de[i];
         }
     }
     for (const int k : shearUsedSlots_)
     {
-        if (shearNodeWeight_[k] > 0) nodal.col(k) /= shearNodeWeight_[k];
+        const double W = shearNodeWeight_[k];
+        if (W > 0)
+        {
+            for (int i = 0; i < ns; ++i) np[ns*k + i] /= W;
+        }
     }
 
     // s = W (I - A) d, and the slot sums of s/(nen W_a) for A^T s
-    Eigen::MatrixXd& s = d;
+    double* const sp = dp;     // s overwrites d, element by element
+    double mean[NS];
     for (const int e : shearMeanElements_)
     {
-        Rate mean(Rate::Zero(ns));
-        for (int a = 0; a < nen; ++a) mean += nodal.col(slot[nen*e + a]);
-        s.col(e) = shearWeight_[e]*(d.col(e) - mean/nen);
+        for (int i = 0; i < ns; ++i) mean[i] = 0;
+        for (int a = 0; a < nen; ++a)
+        {
+            const double* nk = np + ns*slot[nen*e + a];
+            for (int i = 0; i < ns; ++i) mean[i] += nk[i];
+        }
+        const double w = shearWeight_[e];
+        double* se = sp + ns*e;
+        for (int i = 0; i < ns; ++i) se[i] = w*(se[i] - mean[i]/nen);
         for (int a = 0; a < nen; ++a)
         {
             const int k = slot[nen*e + a];
-            back.col(k) += s.col(e)/(nen*shearNodeWeight_[k]);
+            const double den = nen*shearNodeWeight_[k];
+            double* bk = bp + ns*k;
+            for (int i = 0; i < ns; ++i) bk[i] += se[i]/den;
         }
     }
 
     // g = (I - A)^T s, f_e = -Bd_e^T g_e: this part's elements
+    Rate g(ns);
     for (const int e : model_.ownedElements())
     {
         const int* en = mesh.element(e);
-        Rate g = s.col(e);
+        const double* se = sp + ns*e;
+        for (int i = 0; i < ns; ++i) g(i) = se[i];
+        const double w = shearWeight_[e];
         for (int a = 0; a < nen; ++a)
         {
-            g -= shearWeight_[e]*back.col(slot[nen*e + a]);
+            const double* bk = bp + ns*slot[nen*e + a];
+            for (int i = 0; i < ns; ++i) g(i) -= w*bk[i];
         }
-        ve = shearRate_[e].transpose()*g;
+        ve.noalias() = shearRate_[e].transpose()*g;
         for (int a = 0; a < nen; ++a)
             for (int i = 0; i < dim; ++i) f(dim*en[a] + i) -= ve(dim*a + i);
     }
 }
+
+
+void solid::ExplicitSolver::addFilteredShearForce
+(
+    const Eigen::VectorXd& v,
+    Eigen::VectorXd& f
+) const
+{
+    if (model_.mesh().axisymmetric())
+    {
+        addFilteredShearForce<4, 4, 2>(v, f);
+    }
+    else
+    {
+        addFilteredShearForce<6, 8, 3>(v, f);
+    }
+}
+
+
+namespace
+{
+
+// The viscous hourglass and (unfiltered) shear damping forces of the own
+// elements, f -= D_e v_e, on fixed-size data; the arithmetic of the
+// general loops, in their order
+template<int NEN, int DIM>
+void addDampingForces
+(
+    const solid::Mesh& mesh,
+    const std::vector<int>& elements,
+    const std::vector<Eigen::MatrixXd>& hourglass,
+    const std::vector<Eigen::MatrixXd>& shear,
+    const Eigen::VectorXd& v,
+    Eigen::VectorXd& f
+)
+{
+    double ve[NEN][DIM];
+    for (const int e : elements)
+    {
+        const int* en = mesh.element(e);
+        for (int a = 0; a < NEN; ++a)
+            for (int i = 0; i < DIM; ++i) ve[a][i] = v(DIM*en[a] + i);
+        const double* DP = hourglass[e].data();     // NEN x NEN
+        for (int a = 0; a < NEN; ++a)
+        {
+            for (int i = 0; i < DIM; ++i)
+            {
+                double s = 0;
+                for (int k = 0; k < NEN; ++k) s += DP[k*NEN + a]*ve[k][i];
+                f(DIM*en[a] + i) -= s;
+            }
+        }
+        if (shear.empty()) continue;
+        const double* C = shear[e].data();          // NEN DIM square
+        constexpr int nd = NEN*DIM;
+        for (int a = 0; a < NEN; ++a)
+        {
+            for (int i = 0; i < DIM; ++i)
+            {
+                double s = 0;
+                for (int k = 0; k < NEN; ++k)
+                    for (int j = 0; j < DIM; ++j)
+                        s += C[(DIM*k + j)*nd + DIM*a + i]*ve[k][j];
+                f(DIM*en[a] + i) -= s;
+            }
+        }
+    }
+}
+
+} // namespace
 
 
 Eigen::VectorXd solid::ExplicitSolver::hourglassForce
@@ -372,36 +470,21 @@ Eigen::VectorXd solid::ExplicitSolver::hourglassForce
     if (hourglassDamping_.empty()) return f;
     if (!shearRate_.empty()) addFilteredShearForce(v, f);
     const Mesh& mesh = model_.mesh();
-    const int nen = mesh.nen(), dim = mesh.dim();
-    Eigen::Matrix<double, 8, 3> ve;
-    for (const int e : model_.ownedElements())
+    if (mesh.axisymmetric())
     {
-        const int* en = mesh.element(e);
-        for (int a = 0; a < nen; ++a)
-            for (int i = 0; i < dim; ++i) ve(a, i) = v(dim*en[a] + i);
-        const Eigen::MatrixXd& DP = hourglassDamping_[e];
-        for (int a = 0; a < nen; ++a)
-        {
-            for (int i = 0; i < dim; ++i)
-            {
-                double s = 0;
-                for (int k = 0; k < nen; ++k) s += DP(a, k)*ve(k, i);
-                f(dim*en[a] + i) -= s;
-            }
-        }
-        if (shearDamping_.empty()) continue;
-        const Eigen::MatrixXd& C = shearDamping_[e];
-        for (int a = 0; a < nen; ++a)
-        {
-            for (int i = 0; i < dim; ++i)
-            {
-                double s = 0;
-                for (int k = 0; k < nen; ++k)
-                    for (int j = 0; j < dim; ++j)
-                        s += C(dim*a + i, dim*k + j)*ve(k, j);
-                f(dim*en[a] + i) -= s;
-            }
-        }
+        addDampingForces<4, 2>
+        (
+            mesh, model_.ownedElements(), hourglassDamping_, shearDamping_,
+            v, f
+        );
+    }
+    else
+    {
+        addDampingForces<8, 3>
+        (
+            mesh, model_.ownedElements(), hourglassDamping_, shearDamping_,
+            v, f
+        );
     }
     return f;
 }

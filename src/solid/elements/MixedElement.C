@@ -4,6 +4,50 @@
 #include <cmath>
 #include <sstream>
 
+namespace
+{
+
+// Largest face measure of an element: the longest edge (r-z) or the
+// largest face area (3D); the arithmetic of the general loop over
+// elementFaces, on fixed-size data (x: node coordinates, node major)
+double longestEdge(const double* x)
+{
+    static const int q[4][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+    double amax = 0;
+    for (int k = 0; k < 4; ++k)
+    {
+        const solid::Vec3 d
+        (
+            x[2*q[k][1]] - x[2*q[k][0]], x[2*q[k][1] + 1] - x[2*q[k][0] + 1],
+            0
+        );
+        amax = std::max(amax, d.norm());
+    }
+    return amax;
+}
+
+double largestFace(const double* x)
+{
+    static const int h[6][4] =
+        {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5},
+         {2, 3, 7, 6}, {3, 0, 4, 7}};
+    const auto p = [&](int a)
+    {
+        return solid::Vec3(x[3*a], x[3*a + 1], x[3*a + 2]);
+    };
+    double amax = 0;
+    for (int k = 0; k < 6; ++k)
+    {
+        const solid::Vec3 d1 = p(h[k][2]) - p(h[k][0]);
+        const solid::Vec3 d2 = p(h[k][3]) - p(h[k][1]);
+        amax = std::max(amax, 0.5*d1.cross(d2).norm());
+    }
+    return amax;
+}
+
+} // namespace
+
+
 double solid::characteristicLength
 (
     ElementType type,
@@ -12,31 +56,15 @@ double solid::characteristicLength
 )
 {
     const bool axi = type == ElementType::quad4Axi;
-    const int dim = axi ? 2 : 3;
-    auto x = [&](int a)
-    {
-        Vec3 p = Vec3::Zero();
-        for (int i = 0; i < dim; ++i) p(i) = xe(a*dim + i);
-        return p;
-    };
-    double amax = 0;
-    for (const auto& f : elementFaces(type))
-    {
-        if (axi)
-        {
-            amax = std::max(amax, (x(f[1]) - x(f[0])).norm());
-        }
-        else
-        {
-            const Vec3 d1 = x(f[2]) - x(f[0]), d2 = x(f[3]) - x(f[1]);
-            amax = std::max(amax, 0.5*d1.cross(d2).norm());
-        }
-    }
+    const double* x = xe.data();
     if (axi)
     {
-        const Vec3 d1 = x(2) - x(0), d2 = x(3) - x(1);
-        return 0.5*std::abs(d1(0)*d2(1) - d1(1)*d2(0))/amax;
+        const double amax = longestEdge(x);
+        const double d10 = x[4] - x[0], d11 = x[5] - x[1];
+        const double d20 = x[6] - x[2], d21 = x[7] - x[3];
+        return 0.5*std::abs(d10*d21 - d11*d20)/amax;
     }
+    const double amax = largestFace(x);
     double vol = volume;
     if (!(vol > 0))
     {
@@ -46,7 +74,10 @@ double solid::characteristicLength
         {
             Mat3 Jm = Mat3::Zero();
             for (int a = 0; a < rule.nen; ++a)
-                Jm += x(a)*rule.dNdxi[q].row(a);
+            {
+                Jm += Vec3(x[3*a], x[3*a + 1], x[3*a + 2])
+                   *rule.dNdxi[q].row(a);
+            }
             vol += rule.w[q]*Jm.determinant();
         }
     }
@@ -82,6 +113,209 @@ double cornerJacobian
     const auto x = [&](int n) { return solid::Vec3(xe.segment<3>(3*n)); };
     const solid::Vec3 o = x(a);
     return (x(hex[a][0]) - o).dot((x(hex[a][1]) - o).cross(x(hex[a][2]) - o));
+}
+
+} // namespace
+
+
+namespace
+{
+
+// The explicit evaluation (no tangent, the volumetric law on the element
+// dilatation): the arithmetic of the general path of
+// MixedElement::evaluate below, operation for operation in the same
+// order, on fixed-size data (NEN nodes, DIM coordinates), so the results
+// are bitwise those of the general path (tests/solid/testElements.C)
+template<int NEN, int DIM>
+void evaluateExplicit
+(
+    const solid::Mesh& mesh,
+    const int e,
+    const solid::ElementGeometry& geo,
+    const solid::Material& mat,
+    const Eigen::VectorXd& uev,
+    const bool useMultiplier,
+    const double pMultiplier,
+    const double dt,
+    const double* pointOld,
+    double* pointNew,
+    const double* elemOld,
+    double* elemNew,
+    solid::ElementOutput& out,
+    const bool checkCorners
+)
+{
+    using namespace solid;
+    constexpr int nd = NEN*DIM;
+    constexpr bool axi = DIM == 2;
+    const IsochoricModel& iso = mat.isochoric();
+    const VolumetricLaw& vol = mat.volumetric();
+    const int nh = iso.nHistory();
+    const double mu = iso.instantaneousShearModulus();
+    const double* ue = uev.data();
+
+    Eigen::Matrix<double, nd, 1> f = Eigen::Matrix<double, nd, 1>::Zero();
+    Eigen::Matrix<double, nd, 1> g = Eigen::Matrix<double, nd, 1>::Zero();
+    out.v = 0;
+    out.energy = 0;
+    out.dissipated = 0;
+    out.shockHeat = 0;
+    out.viscousHeat = 0;
+    double heatStep = 0;
+    out.Jmin = 1e300;
+    out.sigma.setZero();
+    out.F.setZero();
+
+    const std::size_t nqp = geo.w.size();
+    for (std::size_t q = 0; q < nqp; ++q)
+    {
+        // dNdX: NEN x 3, column major; r-z: its third column is zero (the
+        // general path adds u_a x 0 to F_i2 and P_i2 x 0 to f_ai, which
+        // leaves F_i2 = +0 and f_ai as they are: sums that start at +0
+        // are never -0), so the loops over it stop at DIM
+        const double* G = geo.dNdX[q].data();
+        const double* Nq = axi ? geo.N[q].data() : nullptr;
+        const double Nr = axi ? 1.0/geo.R[q] : 0.0;
+        Mat3 F = Mat3::Identity();
+        for (int a = 0; a < NEN; ++a)
+        {
+            for (int i = 0; i < DIM; ++i)
+            {
+                const double ua = ue[a*DIM + i];
+                for (int Jc = 0; Jc < DIM; ++Jc) F(i, Jc) += ua*G[Jc*NEN + a];
+            }
+            if (axi) F(2, 2) += ue[a*DIM]*Nq[a]*Nr;
+        }
+        const double J = F.determinant();
+        out.Jmin = std::min(out.Jmin, J);
+        if (!(J > 0))
+        {
+            std::ostringstream os;
+            os  << "element " << e << " (region '"
+                << mesh.regionNames.at(mesh.region[e])
+                << "') inverted during the solve: J = " << J
+                << " at Gauss point " << q;
+            throw SolidError(SolidError::Kind::invertedElement, os.str());
+        }
+        const Mat3 Fi = F.inverse();
+        const double wq = geo.w[q];
+
+        IsoResponse r;
+        iso.stress
+        (
+            F.transpose()*F, dt, pointOld + q*nh, pointNew + q*nh, r
+        );
+        const Mat3 P = F*r.S;
+        const Mat3 JFiT = J*Fi.transpose();
+        for (int a = 0; a < NEN; ++a)
+        {
+            for (int i = 0; i < DIM; ++i)
+            {
+                double fa = 0, ga = 0;
+                for (int Jc = 0; Jc < DIM; ++Jc)
+                {
+                    fa += P(i, Jc)*G[Jc*NEN + a];
+                    ga += JFiT(i, Jc)*G[Jc*NEN + a];
+                }
+                f(a*DIM + i) += wq*fa;
+                g(a*DIM + i) += wq*ga;
+            }
+            if (axi)
+            {
+                f(a*DIM) += wq*P(2, 2)*Nq[a]*Nr;
+                g(a*DIM) += wq*JFiT(2, 2)*Nq[a]*Nr;
+            }
+        }
+        out.v += J*wq;
+        out.F += wq*F;
+        out.energy += r.psi*wq;
+        const double dNew = iso.dissipated(pointNew + q*nh);
+        const double dOld = iso.dissipated(pointOld + q*nh);
+        out.dissipated += dNew*wq;
+        heatStep += (dNew - dOld)*wq;
+        out.sigma += wq*(P*F.transpose());     // J sigma_iso dV
+    }
+    out.theta = out.v/geo.V;
+    out.F /= geo.V;
+
+    {
+        Eigen::Matrix<double, nd, 1> xe;
+        const int* en = mesh.element(e);
+        for (int a = 0; a < NEN; ++a)
+            for (int i = 0; i < DIM; ++i)
+                xe(a*DIM + i) = mesh.X[en[a]](i) + ue[a*DIM + i];
+        out.length = characteristicLength
+        (
+            mesh.type, Eigen::Map<const Eigen::VectorXd>(xe.data(), nd),
+            axi ? 0 : out.v
+        );
+        for (int a = 0; checkCorners && a < NEN; ++a)
+        {
+            const Eigen::Map<const Eigen::VectorXd> xm(xe.data(), nd);
+            const double jc = cornerJacobian(mesh.type, xm, a);
+            if (jc > 0) continue;
+            Eigen::Matrix<double, nd, 1> x0;
+            for (int b = 0; b < NEN; ++b)
+                for (int i = 0; i < DIM; ++i)
+                    x0(b*DIM + i) = mesh.X[en[b]](i);
+            const double j0 = cornerJacobian
+            (
+                mesh.type, Eigen::Map<const Eigen::VectorXd>(x0.data(), nd), a
+            );
+            if (!(j0 > 0)) continue;
+            std::ostringstream os;
+            os  << "element " << e << " (region '"
+                << mesh.regionNames.at(mesh.region[e])
+                << "') inverted during the solve: its corner at node "
+                << en[a] << " is folded (corner Jacobian " << jc
+                << " m^" << DIM << " against " << j0 << " in the"
+                " reference) while every Gauss point has J > 0"
+                " (smallest " << out.Jmin << ")";
+            throw SolidError(SolidError::Kind::invertedElement, os.str());
+        }
+    }
+
+    const double rho = mat.rho0()/out.theta;
+    if (vol.isConstraint())
+    {
+        out.p = pMultiplier;
+        out.q = 0;
+        out.c2 = 0;
+        out.zeta = 0;
+        out.temperatureRise = 0;
+    }
+    else
+    {
+        VolumetricInput in;
+        in.theta = out.theta;
+        in.dt = dt;
+        in.length = geo.length;
+        if (vol.absorbsHeat())
+        {
+            in.heat = heatStep/geo.V;
+            out.viscousHeat = out.dissipated;
+            out.dissipated = 0;
+        }
+        const VolumetricResponse vr = vol.evaluate(in, elemOld, elemNew);
+        out.energy += vr.energy*geo.V;
+        out.shockHeat = vol.dissipated(elemNew)*geo.V;
+        out.temperatureRise = vr.temperatureRise;
+        out.c2 = vr.c2 + 4.0/3.0*mu/rho;
+        out.zeta = vr.zeta;
+        if (useMultiplier)
+        {
+            out.p = pMultiplier;
+        }
+        else
+        {
+            out.p = vr.p;
+            out.q = vr.q;
+        }
+    }
+    f -= out.p*g;
+    out.f = f;
+    out.g = g;
+    out.sigma = out.sigma/out.v - out.p*Mat3::Identity();
 }
 
 } // namespace
@@ -177,6 +411,26 @@ void solid::MixedElement::evaluate
             "the point-wise volumetric integration is explicit only (no "
             "tangent, no pressure unknown)"
         );
+    }
+    if (!tangent && !pointVolumetric)
+    {
+        if (mesh.type == ElementType::quad4Axi)
+        {
+            evaluateExplicit<4, 2>
+            (
+                mesh, e, geo, mat, ue, useMultiplier, pMultiplier, dt,
+                pointOld, pointNew, elemOld, elemNew, out, checkCorners
+            );
+        }
+        else
+        {
+            evaluateExplicit<8, 3>
+            (
+                mesh, e, geo, mat, ue, useMultiplier, pMultiplier, dt,
+                pointOld, pointNew, elemOld, elemNew, out, checkCorners
+            );
+        }
+        return;
     }
     const double mu = iso.instantaneousShearModulus();
     // Point-wise volumetric response: sums over the Gauss points

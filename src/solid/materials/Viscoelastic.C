@@ -114,11 +114,22 @@ double solid::Viscoelastic::update
     double gSum = 0;
     double dissipation = hOld[offsetD()];
     Vec6 Qsum = Vec6::Zero();
+    if (!(dt == cacheDt_))
+    {
+        cacheExp_.resize(branches_.size());
+        cacheG_.resize(branches_.size());
+        for (std::size_t a = 0; a < branches_.size(); ++a)
+        {
+            const double x = dt > 0 ? dt/branches_[a].tau : 0.0;
+            cacheExp_[a] = std::exp(-x);
+            cacheG_[a] = relaxationFactor(x);
+        }
+        cacheDt_ = dt;
+    }
     for (std::size_t a = 0; a < branches_.size(); ++a)
     {
-        const double x = dt > 0 ? dt/branches_[a].tau : 0.0;
-        const double ex = std::exp(-x);
-        const double g = relaxationFactor(x);
+        const double ex = cacheExp_[a];
+        const double g = cacheG_[a];
         const double* qo = hOld + offsetQ(a);
         double* qn = hNew + offsetQ(a);
         Vec6 Qo, Qn;
