@@ -208,6 +208,22 @@ class ForwardModel:
         shutil.copytree(os.path.join(self.base, "system"),
                         os.path.join(d, "system"))
         os.makedirs(os.path.join(d, "constant"))
+        # the case's other files of constant/ as well: a dictionary may
+        # include one ("$FOAM_CASE/constant/set", the OpenFOAM idiom; adv45
+        # c05 (c): "Cannot open include file .../probe/constant/set", and
+        # the case's own parameters were said not to run)
+        written = ("cell.msh", "solidProperties", "indenterProperties")
+        src = os.path.join(self.base, "constant")
+        for n in sorted(os.listdir(src)):
+            if n in written:
+                continue
+            f = os.path.join(src, n)
+            if os.path.isdir(f) and not os.path.islink(f):
+                shutil.copytree(f, os.path.join(d, "constant", n),
+                                symlinks=True)
+            else:
+                shutil.copy2(f, os.path.join(d, "constant", n),
+                             follow_symlinks=False)
         os.symlink(self.mesh(), os.path.join(d, "constant/cell.msh"))
         open(os.path.join(d, "constant/solidProperties"), "w").write(sp_text)
         open(os.path.join(d, "constant/indenterProperties"), "w").write(
