@@ -4,4 +4,4 @@
 bd; n=0; for t in $(seq 20); do rm -rf constant/solid [0-9]*/solid; bash -c "exit 0" & dead=$!; wait $dead
   printf "pid %s\nhost %s\nexecutable solidToFoam\nstarted 2026-12-05T10:00:00\ncase %s\n" $dead $(hostname) $PWD > .runLock
   solidToFoam solid/solid.h5 > ../a 2>&1 & a=$!; solidToFoam solid/solid.h5 > ../b 2>&1 & b=$!; wait $a; ra=$?; wait $b; rb=$?
-  k=$(grep -l "Removing the stale" ../a ../b | wc -l); [ $k -ge 2 ] && n=$((n+1)); echo "trial $t: rc $ra $rb, stale taken over by $k"; done; echo "both took the stale lock over in $n of 20 trials"
+  k=$(grep -l "Removing the stale" ../a ../b | wc -l); [ $k -ge 2 ] && { n=$((n+1)); echo "   both: $(grep -a -h -A1 "FATAL" ../a ../b | tail -1 | cut -c1-200)"; }; echo "trial $t: rc $ra $rb, stale taken over by $k"; done; echo "both took the stale lock over in $n of 20 trials"
