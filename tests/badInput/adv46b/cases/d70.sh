@@ -1,0 +1,7 @@
+#!/bin/bash
+# d70 (class 4, calibrationDict odd, one at a time, 90 s each, the target peak endX last with 240 s; the edits corrected after the first run: its sed turned three of them into a sed c/r command that broke the file): min above max; value outside [min, max]; log yes with min 0; a target peak endX (no such peak); a target value 0; parameter cytoplasm.C11 (no such entry); covariance auto2; relativeError 0; maxIterations 1e308: each refused before any forward run naming the entry and the valid range.
+. "$(dirname "$0")/../lib.sh"
+cal; cp system/calibrationDict ../c
+for e in "min     0.01;/min     30;" "value   1.67; /value   25; " "min     0.01;/min     0;" "value 0.3e-9;/value 0;" "cytoplasm.C10/cytoplasm.C11" "covariance           auto;/covariance auto2;" "relativeError        0.05;/relativeError 0;" "maxIterations        20;/maxIterations 1e308;"; do cp ../c system/calibrationDict; a=${e%%/*}; b=${e#*/}; sed -i "0,/$a/s//$b/" system/calibrationDict
+  tryt 90 "${e#*/} ($(grep -c "${e#*/}" system/calibrationDict))" calibrateCell; [ -d postProcessing ] && echo "      (wrote: $(find postProcessing -type f | head -3 | tr "\n" " "))"; rm -rf postProcessing constant/solidProperties.calibrated; killIn $W; done
+cp ../c system/calibrationDict; sed -i "0,/peak endB;/s//peak endX;/" system/calibrationDict; tryt 240 "peak endX; ($(grep -c "peak endX;" system/calibrationDict)), 240 s" calibrateCell; rm -rf postProcessing; killIn $W
