@@ -240,6 +240,10 @@ TEST(writeGuard, commitMarkerCutShortIsNoCommit)
     EXPECT_TRUE(recorded(head + files + "end\n"));
     EXPECT_TRUE(recorded(head + files + "log 5e6f 30 postProcessing/x\nend\n"));
     EXPECT_TRUE(recorded("1e-09\ndigest fnv1a64\n" + files));
+    // cut inside its digest line (adv46a e01): no file line after it
+    EXPECT_FALSE(recorded("1e-09\ndigest fnv1a64"));
+    EXPECT_FALSE(recorded("1e-09\ndigest fnv1a64\n"));
+    EXPECT_FALSE(recorded("1e-09\ndigest fnv1a64 end"));
 }
 
 
