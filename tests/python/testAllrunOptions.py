@@ -58,6 +58,16 @@ class Parse(unittest.TestCase):
             self.assertIn("option -h = '%s' is not a decimal number" % v,
                           self.error(["-h", v]))
 
+    def testDigitsOfOtherScripts(self):
+        # adv46b d35: Python's \d and float() take the digits of any
+        # script: -endTime '\u0661e-\u0669' (Arabic-Indic) was accepted and
+        # written into controlDict.allrun, refused there by the solver
+        for v in ("\u0661e-\u0669", "\uff11e-6", "1e-\u0669", "\u0969"):
+            self.assertIn("option -h = '%s' is not a decimal number" % v,
+                          self.error(["-h", v]))
+        self.assertIn("option -np = '\u0662' is not a whole number",
+                      self.error(["-np", "\u0662"]))
+
     def testRanges(self):
         self.assertEqual(self.error(["-pulse", "0"]), "option -pulse = 0 s "
                          "is outside the valid range (1e-10, 0.9] s")

@@ -104,6 +104,21 @@ class ToolsTakeTheLock(LiveLockTestCase):
         self.assertRegex(r.stderr, r"in use by sleep \(process %d" % p.pid)
 
 
+    def testPulseStudy(self):
+        # adv46b d34: a second study in the folder of a running one took
+        # the first's point for interrupted and moved its case copy aside
+        p = self.holdLock()
+        os.makedirs(self.case + "/postProcessing/pulseStudy/points/p1/case")
+        r = subprocess.run(tool("pulseStudy") + ["-case", self.case],
+                           capture_output=True, text=True)
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertRegex(r.stderr, r"pulseStudy: error: the case .*/case is "
+                         r"in use by sleep \(process %d.*Nothing was run or "
+                         r"moved" % p.pid)
+        self.assertEqual(os.listdir(self.case + "/postProcessing/pulseStudy/"
+                                    "points/p1"), ["case"])
+
+
 class PythonLock(TempDirTestCase):
 
     def testHeldReleasedAndSeenLiveBySolverRule(self):

@@ -92,6 +92,36 @@ class FoamDict(TempDirTestCase):
             with self.assertRaisesRegex(E, why):
                 foamDict.read_checked(p, ["a"], ["a"], E)
 
+    def testByteOrderMarkRefused(self):
+        # adv45 c02: a UTF-8 byte-order mark at the start of pulseStudyDict
+        # was "line 9: unexpected '{' in entry '\ufeff/*---'"; OpenFOAM
+        # reads the mark as part of the first keyword (a banner comment
+        # after it: the header and the first entry became its value), so
+        # every reader of ours refuses it naming the file and the mark,
+        # in the file itself and in a file it includes
+        for text in (b"/*--- banner ---*/\nradius 2e-5;\n",
+                     b"FoamFile\n{\n    version 2.0;\n}\nradius 2e-5;\n",
+                     b"radius 2e-5;\n"):
+            path = os.path.join(self.tmp, "bom")
+            with open(path, "wb") as f:
+                f.write(b"\xef\xbb\xbf" + text)
+            with self.assertRaisesRegex(foamDict.DictError,
+                                        r"bom, line 1: the file begins with "
+                                        r"a UTF-8 byte-order mark"):
+                foamDict.read(path)
+            # without the mark the same text is read
+            with open(path, "wb") as f:
+                f.write(text)
+            self.assertEqual(foamDict.read(path)["radius"], 2e-5)
+        with open(path, "wb") as f:
+            f.write(b"\xef\xbb\xbfradius 2e-5;\n")
+        inc = self.write("incBom", '#include "bom"\n')
+        with self.assertRaisesRegex(foamDict.DictError, r"byte-order mark"):
+            foamDict.read(inc)
+        # a mark later in the file is a character of a word, as in OpenFOAM
+        later = self.write("later", "// \ufeff\nradius 2e-5;\n")
+        self.assertEqual(foamDict.read(later), {"radius": 2e-5})
+
     def testSetEntryKeepsTheRest(self):
         s = foamDict.set_entry(TEXT, ["nucleus", "c0"], "6.67", "f")
         self.assertEqual(foamDict.parse(s)["nucleus"]["c0"], 6.67)

@@ -122,6 +122,20 @@ class NumbersOutsideTheReader(unittest.TestCase):
         self.assertEqual(options.numbersOutsideReader(
             parser(), ["-dz", "2e-300", "-values", "0 1e300 abc"]), [])
 
+    def testNotPlainNumbers(self):
+        # adv46b d35: float() reads the digits of any script and '_'
+        # between digits; OpenFOAM's reader does not: a usage error naming
+        # the option, before anything is written
+        self.assertEqual(options.numbersNotPlain(
+            parser(), ["-dz", "\u0661e-\u0669", "-values", "1 2_000 3_0",
+                       "-check", "\u0662"]),
+            [("-dz", "\u0661e-\u0669", "\u0661e-\u0669"),
+             ("-values", "1 2_000 3_0", "2_000")])
+        self.assertEqual(options.numbersNotPlain(
+            parser(), ["-dz", "1e-9", "-values", "caf\u00e9 1 -2e3"]), [])
+        with self.assertRaises(SystemExit):
+            options.parse(parser(), ["-dz", "\uff11e-6"])
+
     def testPlaneWaveDzDenormal(self):
         r = subprocess.run([sys.executable, os.path.join(
             ROOT, "applications/utilities/planeWave/planeWave.py"),

@@ -237,6 +237,22 @@ class Dictionary(TempDirTestCase):
         self.assertEqual(self.study(nProcs="6")["nProcs"], 6)
         self.assertEqual(self.study(nProcs="2.0")["nProcs"], 2)
 
+    def testMaxPoints(self):
+        """adv46b d52: a grid of 1000 x 1000 values was accepted and
+        started (about 140 days of runs, its memory growing): more runs
+        than maxPoints (default 1000) are refused before anything runs"""
+        over = "(%s)" % " ".join("%de5" % (i + 1) for i in range(1001))
+        self.refused(r"the study has 3003 runs \(entry 'overpressure': 1001 "
+                     r"values x entry 'duration': 3 values\), more than entry"
+                     r" 'maxPoints' = 1000 \(its default\).*Nothing was run",
+                     overpressure=over, nProcs="1")
+        self.refused(r"the study has 6 runs .*more than entry 'maxPoints' = "
+                     r"5: ", maxPoints="5")
+        for v in ("0", "1.5", "inf", "many"):
+            self.refused(r"entry 'maxPoints' = \S+ is not valid: a whole "
+                         r"number in \[1, inf\)", maxPoints=v)
+        self.assertEqual(self.study(maxPoints="6")["nProcs"], 2)
+
     def testNoBase(self):
         self.refused(r"entry 'baseCase': .*absent has no Allrun",
                      baseCase='"absent"')

@@ -238,4 +238,44 @@ check "rhoRiemannFoam -parallel after a killed -overwrite: refused, one message 
      && grep -q 'postProcessing/probes/.0.overwritten' log.again \
      && ! grep -q '^\\[1\\]' log.again"
 
+
+# A serial -overwrite killed before its first write leaves the earlier
+# times and the function objects' folder moved aside (.<name>.overwritten)
+# and its own partial outputs; a plain new start (startFrom startTime) is
+# refused, and the message names both the partial outputs and the
+# results kept aside, and how to get them back and continue (adv45 b36:
+# it named only the partial files and advised -overwrite). Without
+# partial outputs the new start runs and says that the names moved aside
+# are kept, untouched
+mkdir "$work/serialKilled"; cd "$work/serialKilled"
+cp -r "$root/tutorials/verification/waterPulseWall"/{0.orig,system,constant} .
+rm -rf constant/polyMesh; cp -r 0.orig 0
+sed -i 's/^startFrom .*/startFrom startTime;/; s/^endTime .*/endTime 1e-8;/; s/^writeInterval .*/writeInterval 5e-9;/' system/controlDict
+blockMesh > log.blockMesh 2>&1
+rhoRiemannFoam > log.first 2>&1
+# as -overwrite leaves them when killed before its first write: the
+# earlier run's aside, the killed run's probe file begun anew
+for t in 5e-09 1e-08; do mv $t .$t.overwritten; done
+mv postProcessing/probes/0 postProcessing/probes/.0.overwritten
+mkdir postProcessing/probes/0
+printf '# Probe 0 (0.0001 0 0)\n' > postProcessing/probes/0/p
+caseSums 'log.*' > "$work/serialKilled.before"
+status=0
+rhoRiemannFoam > log.again 2>&1 || status=$?
+check "rhoRiemannFoam startFrom startTime after a killed -overwrite: refused, naming the partial outputs and the results kept aside, and how to continue them" \
+    "[ $status -ne 0 ] && grep -q 'holds results of an earlier run' log.again \
+     && grep -q 'postProcessing/probes/0\$' log.again \
+     && grep -q '^ *[^ ]*/serialKilled: .1e-08.overwritten .5e-09.overwritten\$' log.again \
+     && grep -q 'postProcessing/probes/.0.overwritten' log.again \
+     && grep -q 'set startFrom latestTime in system/controlDict and run again to continue them' log.again"
+caseSums 'log.*' > "$work/serialKilled.after"
+check "rhoRiemannFoam startFrom startTime after a killed -overwrite: no file of the case changed" \
+    "cmp -s '$work/serialKilled.before' '$work/serialKilled.after'"
+rm -rf postProcessing/probes/0
+status=0
+rhoRiemannFoam > log.new 2>&1 || status=$?
+check "rhoRiemannFoam new start beside results moved aside: runs, says they are kept, leaves them" \
+    "[ $status -eq 0 ] && grep -q 'Note: earlier results moved aside by an -overwrite run stopped before its first write are kept as they are' log.new \
+     && [ -d .5e-09.overwritten ] && [ -d .1e-08.overwritten ] && [ -d postProcessing/probes/.0.overwritten ] && [ -d 1e-08 ]"
+
 exit $fail

@@ -10,8 +10,8 @@ import shutil
 import subprocess
 import time
 
-from neuronFsi import (caseLock, caseRuns, foamDict, logs, postProcessing,
-                       scratch, signals)
+from neuronFsi import (caseLock, caseRuns, foamDict, logs, options,
+                       postProcessing, scratch, signals)
 
 MESH_SIZES = ("nucleusSize", "cytoplasmSize", "membraneSize", "contactSize")
 
@@ -61,6 +61,18 @@ class ForwardModel:
         # Only a folder this class made (its marker) is cleaned: a -work
         # folder holding a user's files is refused, nothing removed
         marker = os.path.join(self.work, ".calibrateCellWork")
+        # a -work that is not a folder (a file, a FIFO, a dangling link):
+        # named with the option (adv46b d24: "File exists"; adv45 b27)
+        kind = options.notARegularFile(self.work) \
+            if os.path.exists(self.work) else (
+                "a symbolic link to %s, which is not there"
+                % os.readlink(self.work) if os.path.islink(self.work)
+                else "")
+        if os.path.lexists(self.work) and not os.path.isdir(self.work):
+            raise ModelError(
+                "-work %s is %s, not a folder: give -work a new or empty "
+                "folder (nothing was written)"
+                % (self.work, kind or "a file"))
         if os.path.isdir(self.work) and os.listdir(self.work) \
                 and not os.path.isfile(marker):
             raise ModelError(
@@ -196,6 +208,22 @@ class ForwardModel:
         shutil.copytree(os.path.join(self.base, "system"),
                         os.path.join(d, "system"))
         os.makedirs(os.path.join(d, "constant"))
+        # the case's other files of constant/ as well: a dictionary may
+        # include one ("$FOAM_CASE/constant/set", the OpenFOAM idiom; adv45
+        # c05 (c): "Cannot open include file .../probe/constant/set", and
+        # the case's own parameters were said not to run)
+        written = ("cell.msh", "solidProperties", "indenterProperties")
+        src = os.path.join(self.base, "constant")
+        for n in sorted(os.listdir(src)):
+            if n in written:
+                continue
+            f = os.path.join(src, n)
+            if os.path.isdir(f) and not os.path.islink(f):
+                shutil.copytree(f, os.path.join(d, "constant", n),
+                                symlinks=True)
+            else:
+                shutil.copy2(f, os.path.join(d, "constant", n),
+                             follow_symlinks=False)
         os.symlink(self.mesh(), os.path.join(d, "constant/cell.msh"))
         open(os.path.join(d, "constant/solidProperties"), "w").write(sp_text)
         open(os.path.join(d, "constant/indenterProperties"), "w").write(

@@ -73,7 +73,8 @@ except ImportError:
     sys.exit("pulseStudy.py: error: the project's Python package neuronFsi "
              "is not found: source the project's etc/bashrc first")
 script.guard()  # an input's error: one line, exit 1 (adv33)
-from neuronFsi import (caseRuns, damageIndicators as di, logs, options,
+from neuronFsi import (caseLock, caseRuns, damageIndicators as di, logs,
+                       options,
                        postProcessing, pulseStudy as ps, signals,
                        uncertainty as unc)
 
@@ -676,6 +677,15 @@ def main():
         problem = options.casePathProblem(case)
         if problem:
             raise ps.StudyError(problem)
+        # one study per folder: the run lock of the study's folder (the
+        # solvers' .runLock, neuronFsi.caseLock), held to the end. A
+        # second study started beside a running one took the first's
+        # point for interrupted and moved its running case copy aside
+        # (adv46b d34); an Allrun that runs the study holds it already
+        try:
+            caseLock.held(case, "pulseStudy").__enter__()
+        except caseLock.CaseLockError as err:
+            raise ps.StudyError("%s. Nothing was run or moved" % err)
         s = ps.read(case, a.dict)
         OUT = ps.output(a.dict)
         out = os.path.join(case, OUT)

@@ -55,8 +55,11 @@ import sys
 
 from . import foamDict, options, ranges
 
-NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\Z")
-INTEGER = re.compile(r"[+-]?\d+\Z")
+# ASCII digits only: Python's \d (and float()) take any script's digits,
+# '\u0661e-\u0669' was accepted and written into controlDict.allrun, where
+# the solver refused it naming the file, not the option (adv46b d35)
+NUMBER = re.compile(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?\Z", re.ASCII)
+INTEGER = re.compile(r"[+-]?\d+\Z", re.ASCII)
 
 
 class OptionError(Exception):

@@ -269,12 +269,24 @@ def fileText(path):
     UTF-8, else Latin-1 (one character per byte: a comment written by an
     ISO-8859-1 editor, "// a size in \\xb5m", is no error to OpenFOAM;
     adv45 b48: a Python traceback, UnicodeDecodeError, in pulseStudy,
-    calibrateCell, sweepCase and paperFigures). A file with a NUL or
+    calibrateCell, sweepCase and paperFigures). A file beginning with a
+    UTF-8 byte-order mark is a DictError naming it (OpenFOAM reads the mark
+    as part of the first keyword; the C++ tools refuse it alike). A file with a NUL or
     another control character (a binary file given as a dictionary,
     adv45 b16: a traceback) is a DictError naming the file and the byte.
     The one reader of a dictionary's text for our Python tools."""
     with open(path, "rb") as f:
         data = f.read()
+    if data.startswith(b"\xef\xbb\xbf"):
+        # OpenFOAM v1912 reads the mark as part of the first keyword (the
+        # header, or the first entry, lost without a word); the solvers'
+        # scan refuses it too (foamTools::checkNumbers; adv45 c02: "line
+        # 9: unexpected '{' in entry '\ufeff/*---'")
+        raise DictError("%s, line 1: the file begins with a UTF-8 byte-order "
+                        "mark (bytes EF BB BF, as some Windows editors "
+                        "save), which OpenFOAM reads as part of the first "
+                        "keyword: save it as UTF-8 without a byte-order "
+                        "mark" % path)
     bad = re.search(rb"[\x00-\x08\x0e-\x1f\x7f]", data)
     if bad:
         raise DictError("%s is not a text dictionary: byte %d (0x%02x) is a "

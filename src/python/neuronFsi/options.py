@@ -166,14 +166,10 @@ def repeatedOptions(parser, argv):
     return [seen[a] for a in order if len(seen[a][1]) > 1]
 
 
-def numbersOutsideReader(parser, argv):
-    """[(option, value, why)] for each option value of argv holding a
-    number outside what OpenFOAM's reader takes (ranges.
-    readerRangeProblem: 5e-324 or 1e308; issue 19, pv02: planeWave
-    -dz 5e-324 was an OverflowError), as the C++ applications'
-    checkOptions. Each whitespace, comma or colon separated word of the
-    value is looked at."""
-    out = []
+def _optionNumbers(parser, argv):
+    """(option, value, word, float(word)) for each word of each option
+    value of argv that Python's float() reads (words: separated by
+    whitespace, commas, colons, semicolons, brackets)."""
     i = 0
     while i < len(argv):
         a = argv[i]
@@ -192,10 +188,38 @@ def numbersOutsideReader(parser, argv):
                 v = float(word)
             except ValueError:
                 continue
-            why = ranges.readerRangeProblem(word, v)
-            if why:
-                out.append((name, value, why))
-                break
+            yield name, value, word, v
+
+
+def numbersOutsideReader(parser, argv):
+    """[(option, value, why)] for each option value of argv holding a
+    number outside what OpenFOAM's reader takes (ranges.
+    readerRangeProblem: 5e-324 or 1e308; issue 19, pv02: planeWave
+    -dz 5e-324 was an OverflowError), as the C++ applications'
+    checkOptions. Each whitespace, comma or colon separated word of the
+    value is looked at."""
+    out = []
+    for name, value, word, v in _optionNumbers(parser, argv):
+        why = ranges.readerRangeProblem(word, v)
+        if why and (not out or out[-1][:2] != (name, value)):
+            out.append((name, value, why))
+    return out
+
+
+def numbersNotPlain(parser, argv):
+    """[(option, value, word)] for each option value of argv holding a
+    word that Python's float() reads as a number but that is no plain
+    decimal number: a digit other than ASCII 0-9 (Arabic-Indic
+    '\u0661e-\u0669', full-width digits) or an underscore ('1_000').
+    OpenFOAM's reader and the C++ applications take neither as a number:
+    the value was accepted and written into a dictionary, which the
+    solver then refused naming the dictionary, not the option (adv46b
+    d35). The first such word of each value."""
+    out = []
+    for name, value, word, v in _optionNumbers(parser, argv):
+        if (not word.isascii() or "_" in word) \
+                and (not out or out[-1][:2] != (name, value)):
+            out.append((name, value, word))
     return out
 
 
@@ -215,6 +239,10 @@ def parse(parser, argv=None):
         parser.error("option %s '%s': %s: give 0 or a value with 1e-300 < "
                      "|x| <= 1e+300 in the option's valid range"
                      % (name, value, why))
+    for name, value, word in numbersNotPlain(parser, argv):
+        parser.error("option %s '%s': '%s' is not a plain decimal number "
+                     "(digits 0-9 only, no '_': OpenFOAM would not read it "
+                     "as a number)" % (name, value, word))
     for name, values in repeatedOptions(parser, argv):
         given = ", ".join("'%s'" % v for v in values if v)
         parser.error("option %s is given %d times%s: give it once (it "

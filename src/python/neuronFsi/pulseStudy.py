@@ -47,8 +47,14 @@ from . import (allrunOptions, damageIndicators, foamDict, options, ranges,
 DICT = "system/pulseStudyDict"
 KEYWORDS = ("baseCase", "baseOptions", "overpressure", "duration",
             "sampleInterval", "strainRateWindow", "nProcs", "thresholds",
-            "uncertainty")
-OPTIONAL = ("uncertainty",)
+            "uncertainty", "maxPoints")
+OPTIONAL = ("uncertainty", "maxPoints")
+# The most runs of a study (its grid's points and the uncertainty's runs)
+# unless its entry maxPoints raises it: each is a whole blast run (a point
+# of the 20 um preview about 12 s of CPU; a point of the paper's case
+# hours), and a grid of 1000 x 1000 values was accepted and started, about
+# 140 days of runs, its memory growing (adv46b d52)
+MAX_POINTS = 1000
 THRESHOLD_KEYWORDS = ("indicator", "value", "source")
 # the options the study sets per point (not in baseOptions)
 STUDY_OPTIONS = ("-amplitude", "-pulse", "-writeInterval", "-noPlots",
@@ -303,6 +309,23 @@ def read(case, dictionary=DICT):
     extra = len(s["uncertainty"]["pulses"])*len(uncertainty.runs(
         s["uncertainty"])) if s["uncertainty"] else 0
     most = grid + extra
+    limit = d.get("maxPoints", MAX_POINTS)
+    if isinstance(limit, bool) or not isinstance(limit, (int, float)) \
+            or not (math.isfinite(limit) and limit == int(limit)
+                    and limit >= 1):
+        raise StudyError("%s: entry 'maxPoints' = %s is not valid: a whole "
+                         "number in [1, inf) (the most runs of the study; "
+                         "default %d)" % (path, foamDict.format_value(limit),
+                                          MAX_POINTS))
+    if most > limit:
+        raise StudyError(
+            "%s: the study has %d runs (entry 'overpressure': %d values x "
+            "entry 'duration': %d values%s), more than entry 'maxPoints' = "
+            "%d%s: each is a whole run of the base case. Nothing was run: "
+            "give fewer values, or raise maxPoints if the runs are meant"
+            % (path, most, len(s["overpressure"]), len(s["duration"]),
+               ", and %d runs of the uncertainty" % extra if extra else "",
+               int(limit), " (its default)" if "maxPoints" not in d else ""))
     if isinstance(n, bool) or not isinstance(n, (int, float)) \
             or not (math.isfinite(n) and n == int(n) and 1 <= n <= most):
         raise StudyError("%s: entry 'nProcs' = %s is not valid: a whole "
