@@ -29,4 +29,7 @@ V = {
  "adv38_x60": ('OK', "duration (0.9) (valid: the Allrun's -pulse maximum) n/r: the point still running at the case's own 50 s timeout under load 21 (adv44 Z: rc 0 within it); the other entries refused naming entry and range as before"),
  "adv38_x73": ('OK', "planeWave accepts the unchanged decomposed run and the reconstructed one as adv44; the digests' list now names entries (format), the header's wording changed"),
  "adv38_x77": ('OK', 'the changed fixedValue refused naming 0/T boundaryField/.* as before; the written 2e-09/T one line longer (format)'),
+ "adv39_y12": ('OK', "as adv44 P1: each damaged/emptied marker named by writeGuard; the field files are larger than adv44's base case (24059 bytes T), the lines' cut differs"),
+ "adv39_y16": ('OK', 'as adv44 P1 (sizes differ); but its third variant (marker cut to 20 bytes, p damaged) restarts from 2e-09 (rc 0): the cut marker is taken as committed and only the damaged p, which the restart does not read, keeps it correct: with rho damaged instead it crashes (my variant adv46a e01: CRASH)'),
+ "adv46a_e01": ('CRASH', "(new variant of adv39 y16, run on main 878f89a's build: /work/main's bashrc) the control (marker cut after its T line, rho damaged) moved aside as 2e-09.incomplete; the marker cut to 20 bytes ('2e-09|digest fnv1a64', no end line) taken as committed: 'Restarting from the conservative state rho, rhoU, rhoE of time 2e-09 s', sigFpe in conservativeFluid::correctPrimitives, rc 136"),
 }
