@@ -1,0 +1,20 @@
+# verdictsZ.py (adv46a): my verdict of every phase-2 output (out/Z: the fix19c merge 8e773ed5 on branch adv46a, rebuilt)
+VZ = {
+ "adv46a_e01": ('CRASH', "unchanged on the merge (not in fix19c's list: found at 16:38): the marker cut to 20 bytes taken as committed, sigFpe (rc 136) in conservativeFluid::correctPrimitives; the control moved aside"),
+ "adv45_c05": ('OK', '(c) FIXED (4cd122f6): #include "$FOAM_CASE/constant/set" runs (the forward runs start, SIGTERMed at 45 s); (a) refused naming the include, (b) runs; (a)\'s refusal still leaves an empty /tmp/calibrateCell.X folder (noted, not a verdict)'),
+ "adv45_b36": ('OK', 'FIXED (deefba93): the startTime refusal after the killed -overwrite now says the earlier results are not lost and names the kept .force.dat.overwritten, .peaks.dat.overwritten, ...; nothing lost'),
+ "adv45_c02": ('OK', "FIXED (3c2e7c57, deefba93): the leading BOM refused naming the file, line 1, 'a UTF-8 byte-order mark (bytes EF BB BF ...)'; UTF-16 refused, µ/Latin-1 read, CRLF runs"),
+ "adv45_b44": ('OK', "FIXED (deefba93): deltaT, maxDeltaT, maxCo = 0x1p-30 refused as 'not a number [s] (read as 2 tokens ...); valid range (0, inf) s' (maxCo (0, 1]) with the file, like writeInterval and endTime"),
+ "adv44_a32": ('OK', "as before, and -work a file now named as such ('-work W/afile is a file, not a folder ... nothing was written'; 7694a2b6) instead of 'File exists'"),
+ "adv37_w63": ('OK', "the second study now refused by the study folder's lock (5f02f96a: 'the case .../study is in use by pulseStudy (process N ...)'), before: by the point's case; the first completes rc 0, its table and maps"),
+ "adv45_b06": ('OK', "as phase 1 (-values' odd numbers refused naming the option; -0, hex refused by the solver; a value twice runs twice)"),
+ "adv45_b16": ('OK', "as phase 1: every odd kind named; the random file's first control character another byte (11, 0x1c)"),
+ "adv45_b11": ('OK', "unchanged (each grid value written two ways refused 'given twice')"),
+ "adv45_b48": ('OK', 'unchanged (the Latin-1 comment read by pulseStudy, calibrateCell, sweepCase, paperFigures)'),
+ "adv45_b29": ('OK', "unchanged (output equal to adv45's judged OK one)"),
+ "adv45_b12": ('OK', "unchanged (output equal to adv45's judged OK one)"),
+ "adv45_b13": ('OK', "unchanged (output equal to adv45's judged OK one)"),
+ "adv45_b14": ('OK', 'unchanged (each odd nProcs refused naming nProcs and [1, 1]; 1.0 runs)'),
+ "adv38_x60": ('OK', "as phase 1: the other entries refused naming entry and range; duration (0.9) (valid) n/r: the point still running at the case's own 50 s timeout (load 13-16)"),
+ "adv44_a03": ('OK', "as adv44's last: the two values get two labels (p30000000_T2e-09, p30000000.1_T2e-09), two points, two rows (only the base case's path differs: the worktree's tutorial)"),
+}
