@@ -17,4 +17,8 @@ VZ = {
  "adv45_b14": ('OK', 'unchanged (each odd nProcs refused naming nProcs and [1, 1]; 1.0 runs)'),
  "adv38_x60": ('OK', "as phase 1: the other entries refused naming entry and range; duration (0.9) (valid) n/r: the point still running at the case's own 50 s timeout (load 13-16)"),
  "adv44_a03": ('OK', "as adv44's last: the two values get two labels (p30000000_T2e-09, p30000000.1_T2e-09), two points, two rows (only the base case's path differs: the worktree's tutorial)"),
+ "adv45_b15": ('OK', 'unchanged (the relative include leaving the base case refused before anything ran, naming it and where it resolves)'),
+ "adv45_b18": ('OK', "unchanged (the retargeted baseCase link refused naming baseCase and the finished point's solidProperties)"),
+ "adv45_b20": ('OK', "unchanged (read-only folders named, the finished point's record kept)"),
+ "adv45_b26": ('OK', 'unchanged (as adv45 out/Z: FIFO, link to /dev/zero, /dev/null, directory named as what they are)'),
 }
