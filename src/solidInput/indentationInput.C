@@ -262,20 +262,78 @@ std::vector<solid::ProtocolRow> Foam::indentationInput::readProtocol() const
         {
             bad("a row must start with '('");
         }
+        // The row's items up to its ')', named in the message: a number
+        // written 0x1p-22 or +3e-6 is two tokens to OpenFOAM's reader,
+        // and the row was "more than four items" without a word why
+        // (adv46b d37; readInRange's wording for a single entry)
+        DynamicList<token> items;
+        while (true)
+        {
+            token x(is);
+            if
+            (
+                !x.good()
+             || (x.isPunctuation() && x.pToken() == token::BEGIN_LIST)
+            )
+            {
+                bad("a row must end with ')' after its four items");
+            }
+            if (x.isPunctuation() && x.pToken() == token::END_LIST)
+            {
+                break;
+            }
+            items.append(x);
+        }
+        OStringStream text;
+        text.precision(12);     // 1e-06, not 9.9999999999999995e-07
+        forAll(items, i)
+        {
+            text << (i ? " " : "") << items[i];
+        }
+        const std::string given("(" + std::string(text.str()) + ")");
+        if (items.size() != 4)
+        {
+            bool split = false;
+            for (label i = 1; i < items.size(); ++i)
+            {
+                split = split
+                 || (
+                        items[i - 1].isNumber() && items[i].isWord()
+                     && items[i].wordToken().size()
+                     && (items[i].wordToken()[0] == 'x'
+                      || items[i].wordToken()[0] == 'X')
+                    );
+            }
+            for (const token& x : items)
+            {
+                split = split || x.isPunctuation();
+            }
+            bad
+            (
+                given + " has " + std::to_string(items.size()) + " items, not"
+                " four"
+              + (
+                    split
+                  ? std::string(" (a number written with a prefix such as 0x"
+                    " or a '+' sign is read as 2 tokens: write each number"
+                    " as a plain decimal number)")
+                  : std::string()
+                )
+            );
+        }
+        if
+        (
+            !items[0].isWord() || !items[1].isWord()
+         || !items[2].isNumber() || !items[3].isNumber()
+        )
+        {
+            bad(given + ": wrong types (two words, then two numbers)");
+        }
         solid::ProtocolRow row;
-        token s(is), m(is), v(is), a(is), e(is);
-        if (!s.isWord() || !m.isWord() || !v.isNumber() || !a.isNumber())
-        {
-            bad("wrong types");
-        }
-        if (!e.isPunctuation() || e.pToken() != token::END_LIST)
-        {
-            bad("more than four items");
-        }
-        row.stage = s.wordToken();
-        row.motion = m.wordToken();
-        row.rate = v.number();
-        row.amount = a.number();
+        row.stage = items[0].wordToken();
+        row.motion = items[1].wordToken();
+        row.rate = items[2].number();
+        row.amount = items[3].number();
         rows.push_back(row);
     }
     foamTools::checkEntryEnd

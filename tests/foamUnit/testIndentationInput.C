@@ -230,9 +230,18 @@ TEST(indentationInput, badEntries)
         {"forceTarget -0.5;", {"'forceTarget' = -0.5 N", "[0, 1] N"}},
         {"forceTargetTolerance 0;", {"'forceTargetTolerance' = 0", "(0, 1]"}},
         {"protocol ((A load fast 1e-6));",
-            {"entry 'protocol', row 1", "wrong types"}},
+            {"entry 'protocol', row 1", "(A load fast 1e-06): wrong types"}},
         {"protocol ((A load 1e-6 1e-6) (B hold 0 1 2));",
-            {"entry 'protocol', row 2", "more than four items"}},
+            {"entry 'protocol', row 2", "(B hold 0 1 2) has 5 items, not "
+            "four\"; expected"}},
+        // a hex number is two tokens (adv46b d37: "more than four items")
+        {"protocol ((A load 1e-6 0x1p-22));",
+            {"entry 'protocol', row 1", "(A load 1e-06 0 x1p-22) has 5 "
+            "items, not four (a number written with a prefix such as 0x or"
+            " a '+' sign is read as 2 tokens"}},
+        {"protocol ((A load 1e-6));",
+            {"entry 'protocol', row 1", "(A load 1e-06) has 3 items, not "
+            "four"}},
         {"protocol (A load 1e-6 1e-6);",
             {"entry 'protocol', row 1", "a row must start with '('"}},
         {"protocol A;",
