@@ -5,9 +5,10 @@
 # only) Allrun -noRun prepares the case (meshes, 0/ with the inflow top,
 # constant/inflowWave from planeWave -inflow; with -np N the decomposed
 # case), then cellBlastFoam runs niced under /usr/bin/time -v, on one rank
-# or on N (mpirun -np N --bind-to none cellBlastFoam -parallel), then, on
-# one rank, planeWave as the tutorial's plots stage runs it (the full
-# column's 1D answer, 50 nm cells) against the probes.
+# or on N (mpirun -np N --bind-to none cellBlastFoam -parallel), then
+# planeWave as the tutorial's plots stage runs it (the full
+# column's 1D answer, 50 nm cells) against the probes (on one rank or
+# on N).
 #
 #   bench/blast/inflow3D.sh DIR NP [Allrun options...]
 #       DIR   scratch folder (created; must not exist): the case is
@@ -28,9 +29,10 @@
 # (rank 0; on N ranks also the largest of each part over the ranks and
 # every rank's split),
 # wall time and peak resident memory of the run (/usr/bin/time -v: the
-# largest of the processes it waited for, i.e. one rank), and on
-# one rank planeWave's measures (postProcessing/planeWave/0/measures.dat,
-# solidMeasures.dat).
+# largest of the processes it waited for, i.e. one rank), and
+# planeWave's measures (postProcessing/planeWave/0/measures.dat,
+# solidMeasures.dat; on N ranks too since branch q3dG: planeWave reads
+# the master's probe files in the case, no reconstructPar needed).
 set -euo pipefail
 [ $# -ge 2 ] || { sed -n 2,27p "$0"; exit 1; }
 dir=$1; np=$2; shift 2
@@ -85,14 +87,13 @@ echo "wall (time -v): $(awk -F': ' '/Elapsed \(wall clock\)/ {print $2}' log.tim
     "peak RSS $(awk -F': ' '/Maximum resident/ {printf "%.0f MB", $2/1024}' log.time)," \
     "load at the end $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "ExecutionTime/ClockTime: $(grep '^ExecutionTime' log.cellBlastFoam | tail -1)"
-if [ "$np" -le 1 ]
-then
-    Z=$(foamDictionary -entry boundaryField/top/columnHeight -value 0/p 2>/dev/null \
-        || foamDictionary -entry fluid/boxSize -value system/cellMeshDict)
-    echo "== planeWave -Z $Z -dz 50e-9 (the tutorial's plots stage)"
-    /usr/bin/time -v -o log.time.planeWave planeWave -Z "$Z" -dz 50e-9 \
-        > log.planeWave 2>&1 || { tail -5 log.planeWave; exit 1; }
-    cat postProcessing/planeWave/0/measures.dat \
-        postProcessing/planeWave/0/solidMeasures.dat
-fi
+# On N ranks too: the probes' files are the master's, in the case's own
+# postProcessing/ (no reconstructPar needed), 0/p is the undecomposed one
+Z=$(foamDictionary -entry boundaryField/top/columnHeight -value 0/p 2>/dev/null \
+    || foamDictionary -entry fluid/boxSize -value system/cellMeshDict)
+echo "== planeWave -Z $Z -dz 50e-9 (the tutorial's plots stage)"
+/usr/bin/time -v -o log.time.planeWave planeWave -Z "$Z" -dz 50e-9 \
+    > log.planeWave 2>&1 || { tail -5 log.planeWave; exit 1; }
+cat postProcessing/planeWave/0/measures.dat \
+    postProcessing/planeWave/0/solidMeasures.dat
 echo "case: $c"
