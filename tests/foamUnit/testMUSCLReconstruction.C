@@ -25,9 +25,20 @@ Description
       oblique velocity step the normal component bounded by the two
       cells' and first order at its extrema, a purely normal velocity
       reconstructed as by MUSCLV; a malformed entry refused;
+    - the least-squares cell gradients (gradSchemes leastSquares,
+      pointCellsLeastSquares): a linear field's gradient exact on a
+      skewed, non-affine mesh (leastSquares in the cells without a
+      boundary face) where Gauss linear's is not;
+    - the characteristic reconstruction (characteristic N T): a linear
+      field's states those of the primitive MUSCL on a sheared mesh; on a
+      1D Riemann problem's data (a step in the wave along n and in the
+      tangential velocity), along x and on a row turned to the normal, the
+      wave against n second order across the step where the primitive
+      limiter cuts it, the jumping waves bounded by their cells' values;
+      mismatched schemes and a missing sound speed refused;
     - a scheme it does not reproduce (a scalar limiter for U, a central
       scheme, a limiter with a coefficient, a gradient scheme other than
-      Gauss linear) stops with an error naming system/fvSchemes, the entry
+      Gauss linear and the least-squares ones) stops with an error naming system/fvSchemes, the entry
       and the valid names.
 
 \*---------------------------------------------------------------------------*/
@@ -598,6 +609,90 @@ TEST(MUSCLReconstruction, multidimensionalLimitersBoundAStepOnASkewedMesh)
 }
 
 
+TEST(MUSCLReconstruction, leastSquaresGradientsAreExactOnASkewedMesh)
+{
+    // The non-affine map of the step test (cells of different shapes,
+    // faces skewed and non-orthogonal) with linear fields: the least-
+    // squares cell gradients are the fields' gradients (to rounding),
+    // pointCellsLeastSquares' in every cell, leastSquares' in the cells
+    // without a boundary face (at a boundary face OpenFOAM v1912's
+    // fvPatch::delta is the normal projection of x_f - x_P, so its
+    // gradient there is not exact where the boundary is skewed); Gauss
+    // linear's are not, interior cells included (its face value is the
+    // field where P-N crosses the face, not at the face centre)
+    const auto map = [](const vector& s)
+    {
+        return 1e-6*point
+        (
+            6*s.x() + 1.2*std::sin(3.0*s.y())*(0.5 + s.x()) + 0.5*s.z(),
+            5*s.y() + 0.9*s.x()*s.x() + 0.4*std::sin(4.0*s.x())*s.y(),
+            3*s.z() + 0.5*s.x()*s.y()
+        );
+    };
+    const vector gRho(3e7, -2e7, 1e7);
+    const tensor gU(4e6, 0, -1e6, 1e6, 0, 5e6, 0, 2e6, 0);
+    const vector gP(1e12, 4e12, 0);
+    const auto fRho = [&gRho](const point& x) { return 1000 + (gRho & x); };
+    const auto fU = [&gU](const point& x)
+    {
+        return vector(10, -3, 0) + (x & gU);
+    };
+    const auto fP = [&gP](const point& x) { return 1e5 + (gP & x); };
+
+    // Largest relative gradient error of rho, U, p over the cells
+    // without a boundary face (interior) and over all cells
+    struct errors { scalar interior, all; };
+    const auto run = [&](const std::string& grad)
+    {
+        foamUnit::testCase tc("MUSCLReconstruction");
+        writeSchemes(tc, "MUSCL", "MUSCLV", grad);
+        autoPtr<fvMesh> mesh = micrometreBlock(tc, map);
+        calculatedFields f(mesh());
+        f.set(fRho, fU, fP);
+        MUSCLReconstruction r(mesh());
+        MUSCLReconstruction::states L, R;
+        r.reconstruct(f.rho, f.U, f.p, L, R);
+
+        boolList boundaryCell(mesh().nCells(), false);
+        for (label facei = mesh().nInternalFaces();
+            facei < mesh().nFaces(); ++facei)
+        {
+            boundaryCell[mesh().faceOwner()[facei]] = true;
+        }
+        errors e{0, 0};
+        label nInterior = 0;
+        forAll(mesh().C(), celli)
+        {
+            const scalar ec = max
+            (
+                max
+                (
+                    mag(r.gradRho()[celli] - gRho)/mag(gRho),
+                    mag(r.gradU()[celli] - gU)/mag(gU)
+                ),
+                mag(r.gradP()[celli] - gP)/mag(gP)
+            );
+            e.all = max(e.all, ec);
+            if (!boundaryCell[celli])
+            {
+                e.interior = max(e.interior, ec);
+                ++nInterior;
+            }
+        }
+        EXPECT_EQ(nInterior, 4*3*1);
+        return e;
+    };
+
+    const errors ls = run("leastSquares");
+    EXPECT_LT(ls.interior, 1e-12);
+    const errors pc = run("pointCellsLeastSquares");
+    EXPECT_LT(pc.interior, 1e-12);
+    EXPECT_LT(pc.all, 1e-12);
+    const errors gauss = run("Gauss linear");
+    EXPECT_GT(gauss.interior, 0.02);
+}
+
+
 TEST(MUSCLReconstruction, refusedSchemeNamesTheFileEntryAndValidNames)
 {
     {
@@ -625,9 +720,11 @@ TEST(MUSCLReconstruction, refusedSchemeNamesTheFileEntryAndValidNames)
         EXPECT_NE(m.find("'limitedLinear 1'"), std::string::npos) << m;
     }
     {
-        const std::string m = refusal("MUSCL", "MUSCLV", "leastSquares");
+        const std::string m =
+            refusal("MUSCL", "MUSCLV", "cellLimited Gauss linear 1");
         for (const std::string s : {"system/fvSchemes", "grad(rho)",
-            "leastSquares", "Gauss linear"})
+            "'cellLimited Gauss linear 1'", "(Gauss linear)",
+            "(leastSquares)", "(pointCellsLeastSquares)"})
         {
             EXPECT_NE(m.find(s), std::string::npos)
                 << "no '" << s << "' in: " << m;
@@ -871,6 +968,231 @@ TEST(MUSCLReconstruction, faceFrameBoundsAnObliqueStep)
 }
 
 
+TEST(MUSCLReconstruction, characteristicReconstructsALinearFieldAsMUSCL)
+{
+    // The sheared (affine) mesh of the multidimensional test, where the
+    // Gauss-linear gradient of a linear field is exact and every limiter's
+    // r is 1: the characteristic variables, a linear map of the
+    // primitive ones, are linear too, so characteristic MUSCL MUSCL gives
+    // the primitive MUSCL / MUSCLV states (to rounding), with a sound
+    // speed that varies from cell to cell
+    const auto map = [](const vector& s)
+    {
+        return 1e-6*point(6*s.x() + 2.5*s.y() + 0.8*s.z(), 5*s.y(), 3*s.z());
+    };
+    const auto fRho = [](const point& x)
+    {
+        return 1000 + 3e7*x.x() - 2e7*x.y() + 1e7*x.z();
+    };
+    const auto fU = [](const point& x)
+    {
+        return vector
+        (
+            10 + 4e6*x.x() + 1e6*x.y(), -3 + 2e6*x.z(), 5e6*x.y() - 1e6*x.x()
+        );
+    };
+    const auto fP = [](const point& x)
+    {
+        return 1e5 + 4e12*x.y() + 1e12*x.x();
+    };
+
+    MUSCLReconstruction::states L[2], R[2];
+    const std::string schemes[2][2] =
+    {
+        {"MUSCL", "MUSCLV"}, {"MUSCL", "characteristic MUSCL MUSCL"}
+    };
+    for (label k = 0; k < 2; ++k)
+    {
+        foamUnit::testCase tc("MUSCLReconstruction");
+        writeSchemes(tc, schemes[k][0], schemes[k][1]);
+        autoPtr<fvMesh> mesh = micrometreBlock(tc, map);
+        calculatedFields f(mesh());
+        f.set(fRho, fU, fP);
+        volScalarField c
+        (
+            primitiveFields::io(mesh(), "c"), mesh(),
+            dimensionedScalar("c", dimVelocity, 1500)
+        );
+        forAll(c, celli)
+        {
+            c[celli] = 1480 + 2e7*mesh().C()[celli].x();
+        }
+        MUSCLReconstruction r(mesh());
+        r.soundSpeed(c);
+        r.reconstruct(f.rho, f.U, f.p, L[k], R[k]);
+    }
+    ASSERT_EQ(L[0].rho.size(), L[1].rho.size());
+    forAll(L[0].rho, facei)
+    {
+        EXPECT_NEAR(L[1].rho[facei], L[0].rho[facei], 1e-10) << facei;
+        EXPECT_NEAR(R[1].rho[facei], R[0].rho[facei], 1e-10) << facei;
+        EXPECT_NEAR(L[1].p[facei], L[0].p[facei], 1e-6) << facei;
+        EXPECT_NEAR(R[1].p[facei], R[0].p[facei], 1e-6) << facei;
+        EXPECT_LT(mag(L[1].U[facei] - L[0].U[facei]), 1e-11) << facei;
+        EXPECT_LT(mag(R[1].U[facei] - R[0].U[facei]), 1e-11) << facei;
+    }
+}
+
+
+TEST(MUSCLReconstruction, characteristicLimitsOnlyTheJumpingWaves)
+{
+    // A 1D Riemann problem's data on a uniform row of 12 cells, along x
+    // and turned so that the face normals are n = (2, 1, 2)/3: rho 1000
+    // kg/m^3, c 1500 m/s (Z = 1.5e6 kg/m^2/s), the wave against n w1 = p -
+    // Z u_n linear, the wave along n w2 = p + Z u_n linear with a 50 MPa
+    // step (a captured shock), so that p, u_n and w3 = rho - p/c^2 jump
+    // too, and a tangential velocity with a step. With characteristic
+    // MUSCL upwind: w1 is second order across the step (its face states
+    // the linear interpolant, at every face whose cells have interior
+    // neighbours), w2 and w3 between their two cells' values (TVD on a
+    // uniform row), the tangential part the cell's own. The primitive
+    // limiter (MUSCL, normalTangential MUSCL upwind) cuts w1 at the step
+    const scalar rho0 = 1000;
+    const scalar c0 = 1500;
+    const scalar Z = rho0*c0;
+    const vector n(vector(2, 1, 2)/3);
+    const vector t1(vector(1, 2, -2)/3);
+    const vector t2(n ^ t1);
+    const label nCells = 12;
+    const auto w1 = [](const label i) { return 2e6 + 3e5*(i + 0.5); };
+    const auto w2 = [](const label i)
+    {
+        return 1e6 - 1e5*(i + 0.5) + (i >= 6 ? 5e7 : 0.0);
+    };
+
+    for (const bool turned : {false, true})
+    {
+        const vector e1(turned ? n : vector(1, 0, 0));
+        const vector e2(turned ? t1 : vector(0, 1, 0));
+        const vector e3(turned ? t2 : vector(0, 0, 1));
+        scalarList w1Jump(2, Zero);
+        for (const word scheme :
+            {"characteristic MUSCL upwind", "normalTangential MUSCL upwind"})
+        {
+            const bool characteristic = (scheme == "characteristic MUSCL upwind");
+            foamUnit::testCase tc("MUSCLReconstruction");
+            writeSchemes(tc, "MUSCL", scheme);
+            autoPtr<fvMesh> mesh = tc.blockMesh
+            (
+                {nCells, 1, 1},
+                [&](const vector& s)
+                {
+                    return nCells*s.x()*e1 + s.y()*e2 + s.z()*e3;
+                },
+                {"left", "right", "sides", "sides", "sides", "sides"},
+                {"patch", "patch", "patch", "patch", "patch", "patch"}
+            );
+            primitiveFields f(mesh());
+            volScalarField c
+            (
+                primitiveFields::io(mesh(), "c"), mesh(),
+                dimensionedScalar("c", dimVelocity, c0)
+            );
+            for (label i = 0; i < nCells; ++i)
+            {
+                f.rho[i] = rho0;
+                f.p[i] = 0.5*(w1(i) + w2(i));
+                f.U[i] =
+                    (w2(i) - w1(i))/(2*Z)*e1 + (i < 6 ? 3.0 : -8.0)*e2;
+            }
+            f.rho.correctBoundaryConditions();
+            f.U.correctBoundaryConditions();
+            f.p.correctBoundaryConditions();
+
+            MUSCLReconstruction r(mesh());
+            r.soundSpeed(c);
+            MUSCLReconstruction::states L, R;
+            r.reconstruct(f.rho, f.U, f.p, L, R);
+            ASSERT_EQ(L.rho.size(), nCells - 1);
+
+            // The face states' characteristic variables (Z, c uniform)
+            const auto w = [&](const scalar rho, const vector& U, const scalar p)
+            {
+                return vector(p - Z*(U & e1), p + Z*(U & e1), rho - p/sqr(c0));
+            };
+            for (label facei = 0; facei < nCells - 1; ++facei)
+            {
+                const vector nf(mesh().Sf()[facei]/mesh().magSf()[facei]);
+                ASSERT_LT(mag(nf - e1), 1e-12);
+                const vector a(w(f.rho[facei], f.U[facei], f.p[facei]));
+                const vector b
+                (
+                    w(f.rho[facei + 1], f.U[facei + 1], f.p[facei + 1])
+                );
+                const vector sL(w(L.rho[facei], L.U[facei], L.p[facei]));
+                const vector sR(w(R.rho[facei], R.U[facei], R.p[facei]));
+                const scalar w1Face = 2e6 + 3e5*(facei + 1);
+                if (facei == 5)
+                {
+                    w1Jump[characteristic] = mag(sL.x() - w1Face);
+                }
+                if (!characteristic)
+                {
+                    continue;
+                }
+                // w1: second order where the gradients are the interior
+                // ones (faces 1 to 9); w2, w3: bounded (Pa, kg/m^3)
+                if (facei >= 1 && facei <= nCells - 3)
+                {
+                    EXPECT_NEAR(sL.x(), w1Face, 1e-6) << turned << facei;
+                    EXPECT_NEAR(sR.x(), w1Face, 1e-6) << turned << facei;
+                }
+                for (const vector& s : {sL, sR})
+                {
+                    EXPECT_GE(s.y(), min(a.y(), b.y()) - 1e-6) << facei;
+                    EXPECT_LE(s.y(), max(a.y(), b.y()) + 1e-6) << facei;
+                    EXPECT_GE(s.z(), min(a.z(), b.z()) - 1e-10) << facei;
+                    EXPECT_LE(s.z(), max(a.z(), b.z()) + 1e-10) << facei;
+                }
+                // The tangential part: the cell's own (T upwind)
+                const tensor T(I - sqr(e1));
+                EXPECT_LT(mag((L.U[facei] - f.U[facei]) & T), 1e-12) << facei;
+                EXPECT_LT(mag((R.U[facei] - f.U[facei + 1]) & T), 1e-12)
+                    << facei;
+            }
+        }
+        // At the step the primitive limiter cuts w1 (off its interpolant
+        // by 5e4 Pa here, a sixth of its increment per cell, 3e5 Pa); the
+        // characteristic one does not
+        EXPECT_LT(w1Jump[1], 1e-6) << turned;
+        EXPECT_GT(w1Jump[0], 2.5e4) << turned;
+    }
+}
+
+
+TEST(MUSCLReconstruction, characteristicRefusesMismatchedSchemes)
+{
+    {
+        const std::string m = refusal("vanLeer", "characteristic MUSCL upwind");
+        for (const std::string s : {"system/fvSchemes", "reconstruct(rho)",
+            "reconstruct(p)", "characteristic MUSCL upwind", "vanLeer"})
+        {
+            EXPECT_NE(m.find(s), std::string::npos)
+                << "no '" << s << "' in: " << m;
+        }
+    }
+    {
+        const std::string m = refusal("MUSCL", "characteristic MUSCL");
+        for (const std::string s : {"system/fvSchemes", "reconstruct(U)",
+            "'characteristic MUSCL'", "characteristic N T", "vanAlbada"})
+        {
+            EXPECT_NE(m.find(s), std::string::npos)
+                << "no '" << s << "' in: " << m;
+        }
+    }
+    {
+        // No sound speed given: an error, not a reconstruction with c = 0
+        foamUnit::testCase tc("MUSCLReconstruction");
+        writeSchemes(tc, "MUSCL", "characteristic MUSCL MUSCL");
+        autoPtr<fvMesh> mesh = tc.wedgeMesh();
+        const primitiveFields f(mesh());
+        MUSCLReconstruction r(mesh());
+        MUSCLReconstruction::states L, R;
+        EXPECT_THROW(r.reconstruct(f.rho, f.U, f.p, L, R), Foam::error);
+    }
+}
+
+
 TEST(MUSCLReconstruction, faceFrameRefusesAMalformedEntry)
 {
     for
@@ -900,7 +1222,11 @@ TEST(MUSCLReconstruction, faceFrameRefusesAMalformedEntry)
     }
     {
         const std::string m =
-            refusal("upwind", "normalTangential upwind MUSCL", "leastSquares");
+            refusal
+            (
+                "upwind", "normalTangential upwind MUSCL",
+                "cellLimited Gauss linear 1"
+            );
         for (const std::string s : {"gradSchemes/grad(U)", "leastSquares",
             "Gauss linear"})
         {

@@ -35,6 +35,12 @@ Foam::MUSCLReconstruction::vectorNames
 });
 
 
+const Foam::wordList Foam::MUSCLReconstruction::gradientNames
+({
+    "Gauss linear", "leastSquares", "pointCellsLeastSquares"
+});
+
+
 const Foam::scalar Foam::MUSCLReconstruction::venkatakrishnanK = 5;
 
 
@@ -358,6 +364,189 @@ void coupledFaceFrameValues
 }
 
 
+//- Owner-side and neighbour-side rho, U, p of one face limited in the
+//  characteristic variables of the 1D problem normal to the face
+//  (characteristic N T), frozen at the face's mean state (rho_f =
+//  (rho_P + rho_N)/2, c_f = (c_P + c_N)/2, Z = rho_f c_f):
+//      w1 = p - Z u_n,  w2 = p + Z u_n,  w3 = rho - p/c_f^2,  U_t
+//  (the acoustic waves running against and along n, the entropy wave, the
+//  shear). w1, w2, w3 of both cells and their gradients (the same linear
+//  map of the primitive ones) are limited one by one by the scalar
+//  limiter waveType, U_t as faceFrameValues' tangential part by
+//  shearType; the face state is the inverse map
+//      p = (w1 + w2)/2,  u_n = (w2 - w1)/(2 Z),  rho = w3 + p/c_f^2,
+//      U = u_n n + U_t
+//  n is the face's unit normal (owner to neighbour), d = x_N - x_P, w the
+//  face's linear weight
+inline void characteristicValues
+(
+    const limiterFunctions<NVDTVD>& sLim,
+    const limiterFunctions<NVDVTVDV>& vLim,
+    const MUSCLReconstruction::limiterType waveType,
+    const MUSCLReconstruction::limiterType shearType,
+    const scalar w,
+    const scalar rhoP,
+    const scalar rhoN,
+    const vector& UP,
+    const vector& UN,
+    const scalar pP,
+    const scalar pN,
+    const scalar cP,
+    const scalar cN,
+    const vector& gradRhoP,
+    const vector& gradRhoN,
+    const tensor& gradUP,
+    const tensor& gradUN,
+    const vector& gradPP,
+    const vector& gradPN,
+    const vector& d,
+    const vector& n,
+    scalar& rhoL,
+    scalar& rhoR,
+    vector& UL,
+    vector& UR,
+    scalar& pL,
+    scalar& pR
+)
+{
+    typedef MUSCLReconstruction::limiterType limiterType;
+
+    const scalar c = 0.5*(cP + cN);
+    const scalar Z = 0.5*(rhoP + rhoN)*c;
+    const scalar rc2 = 1/sqr(c);
+
+    const scalar unP = UP & n;
+    const scalar unN = UN & n;
+    const vector gradUnP(gradUP & n);
+    const vector gradUnN(gradUN & n);
+
+    const scalar wP[3] = {pP - Z*unP, pP + Z*unP, rhoP - rc2*pP};
+    const scalar wN[3] = {pN - Z*unN, pN + Z*unN, rhoN - rc2*pN};
+    const vector gradWP[3] =
+    {
+        gradPP - Z*gradUnP, gradPP + Z*gradUnP, gradRhoP - rc2*gradPP
+    };
+    const vector gradWN[3] =
+    {
+        gradPN - Z*gradUnN, gradPN + Z*gradUnN, gradRhoN - rc2*gradPN
+    };
+
+    scalar wL[3];
+    scalar wR[3];
+    for (label k = 0; k < 3; ++k)
+    {
+        scalar lambdaL = 1;
+        scalar lambdaR = 0;
+        if (waveType != limiterType::upwind)
+        {
+            sLim.weights
+            (
+                waveType, w, wP[k], wN[k], gradWP[k], gradWN[k], d,
+                lambdaL, lambdaR
+            );
+        }
+        wL[k] = lambdaL*(wP[k] - wN[k]) + wN[k];
+        wR[k] = lambdaR*(wP[k] - wN[k]) + wN[k];
+    }
+
+    pL = 0.5*(wL[0] + wL[1]);
+    pR = 0.5*(wR[0] + wR[1]);
+    const scalar unL = (wL[1] - wL[0])/(2*Z);
+    const scalar unR = (wR[1] - wR[0])/(2*Z);
+    rhoL = wL[2] + rc2*pL;
+    rhoR = wR[2] + rc2*pR;
+
+    const vector utP(UP - unP*n);
+    const vector utN(UN - unN*n);
+    scalar lambdaL = 1;
+    scalar lambdaR = 0;
+    if (shearType != limiterType::upwind)
+    {
+        const tensor T(I - sqr(n));
+        vLim.weights
+        (
+            shearType, w, utP, utN, gradUP & T, gradUN & T, d,
+            lambdaL, lambdaR
+        );
+    }
+    UL = unL*n + lambdaL*(utP - utN) + utN;
+    UR = unR*n + lambdaR*(utP - utN) + utN;
+}
+
+
+//- The faces of a coupled patch limited in characteristic variables
+//  (characteristicValues)
+void coupledCharacteristicValues
+(
+    const MUSCLReconstruction::vectorScheme& scheme,
+    const label patchi,
+    const volScalarField& rho,
+    const volVectorField& U,
+    const volScalarField& p,
+    const volScalarField& c,
+    const volVectorField& gradRho,
+    const volTensorField& gradU,
+    const volVectorField& gradP,
+    MUSCLReconstruction::states& L,
+    MUSCLReconstruction::states& R
+)
+{
+    const fvPatch& patch = rho.mesh().boundary()[patchi];
+    const scalarField& w = rho.mesh().weights().boundaryField()[patchi];
+    const fvPatchScalarField& rhop = rho.boundaryField()[patchi];
+    const fvPatchVectorField& Up = U.boundaryField()[patchi];
+    const fvPatchScalarField& pp = p.boundaryField()[patchi];
+    const fvPatchScalarField& cp = c.boundaryField()[patchi];
+    const scalarField rhoP(rhop.patchInternalField());
+    const scalarField rhoN(rhop.patchNeighbourField());
+    const vectorField UP(Up.patchInternalField());
+    const vectorField UN(Up.patchNeighbourField());
+    const scalarField pP(pp.patchInternalField());
+    const scalarField pN(pp.patchNeighbourField());
+    const scalarField cP(cp.patchInternalField());
+    const scalarField cN(cp.patchNeighbourField());
+    const vectorField n(patch.nf());
+
+    vectorField gRhoP(patch.size(), Zero);
+    vectorField gRhoN(patch.size(), Zero);
+    tensorField gUP(patch.size(), Zero);
+    tensorField gUN(patch.size(), Zero);
+    vectorField gPP(patch.size(), Zero);
+    vectorField gPN(patch.size(), Zero);
+    vectorField d(patch.size(), Zero);
+    if (scheme.needsGradient())
+    {
+        gRhoP = gradRho.boundaryField()[patchi].patchInternalField();
+        gRhoN = gradRho.boundaryField()[patchi].patchNeighbourField();
+        gUP = gradU.boundaryField()[patchi].patchInternalField();
+        gUN = gradU.boundaryField()[patchi].patchNeighbourField();
+        gPP = gradP.boundaryField()[patchi].patchInternalField();
+        gPN = gradP.boundaryField()[patchi].patchNeighbourField();
+        d = patch.delta();
+    }
+
+    for (MUSCLReconstruction::states* s : {&L, &R})
+    {
+        s->rho.setSize(patch.size());
+        s->U.setSize(patch.size());
+        s->p.setSize(patch.size());
+    }
+    forAll(w, facei)
+    {
+        characteristicValues
+        (
+            scalarLimiters(), vectorLimiters(), scheme.limiter,
+            scheme.tangential, w[facei], rhoP[facei], rhoN[facei],
+            UP[facei], UN[facei], pP[facei], pN[facei], cP[facei],
+            cN[facei], gRhoP[facei], gRhoN[facei], gUP[facei], gUN[facei],
+            gPP[facei], gPN[facei], d[facei], n[facei],
+            L.rho[facei], R.rho[facei], L.U[facei], R.U[facei],
+            L.p[facei], R.p[facei]
+        );
+    }
+}
+
+
 //- The multidimensional limiter of one face of a cell, per component:
 //  psi = min(psi, f(Delta1, Delta2)) with Delta2 the unlimited increment
 //  to the face centre, Delta1 the room to the neighbourhood's max (Delta2
@@ -489,17 +678,46 @@ void Foam::MUSCLReconstruction::checkGradScheme
     const word& schemeName
 )
 {
-    // The limiter's gradient: the one of OpenFOAM's limited schemes
+    // The limiter's gradient: the one of OpenFOAM's limited schemes, or
+    // a least-squares one
     const word gradEntry("grad(" + fieldName + ')');
     ITstream& gis = mesh.gradScheme(gradEntry);
-    if (gis.toString() != "Gauss linear")
+    if (!gradientNames.found(gis.toString()))
     {
         FatalIOErrorInFunction(mesh.schemesDict())
             << "system/fvSchemes: gradSchemes/" << gradEntry << " is '"
             << gis.toString().c_str() << "'; the " << schemeName
-            << " reconstruction of the Riemann fluxes takes (Gauss linear)"
-            << nl << exit(FatalIOError);
+            << " reconstruction of the Riemann fluxes takes one of ("
+            << gradientNames[0].c_str() << ')';
+        for (label i = 1; i < gradientNames.size(); ++i)
+        {
+            FatalIOError<< " (" << gradientNames[i].c_str() << ')';
+        }
+        FatalIOError<< nl << exit(FatalIOError);
     }
+}
+
+
+template<class Type>
+Foam::tmp<Foam::fv::gradScheme<Type>>
+Foam::MUSCLReconstruction::leastSquaresScheme
+(
+    const fvMesh& mesh,
+    const word& fieldName,
+    const bool needed
+)
+{
+    if (!needed)
+    {
+        return tmp<fv::gradScheme<Type>>();
+    }
+    ITstream& gis = mesh.gradScheme("grad(" + fieldName + ')');
+    if (gis.toString() == gradientNames[0])
+    {
+        return tmp<fv::gradScheme<Type>>();
+    }
+    gis.rewind();
+    return fv::gradScheme<Type>::New(mesh, gis);
 }
 
 
@@ -507,19 +725,26 @@ Foam::MUSCLReconstruction::vectorScheme
 Foam::MUSCLReconstruction::readVectorScheme(const fvMesh& mesh)
 {
     static const word frameName("normalTangential");
+    static const word characteristicName("characteristic");
     const word entry("reconstruct(U)");
     ITstream& is = mesh.interpolationScheme(entry);
 
-    // Peek at the first word: the face frame's keyword or a limiter
-    const bool faceFrame =
-        is.size() > 0 && is[0].isWord() && is[0].wordToken() == frameName;
+    // Peek at the first word: the face frame's or the characteristic
+    // keyword, or a limiter
+    const word first
+    (
+        is.size() > 0 && is[0].isWord() ? is[0].wordToken() : word::null
+    );
+    const bool characteristic = (first == characteristicName);
+    const bool faceFrame = characteristic || (first == frameName);
     if (!faceFrame)
     {
         const limiterType type = readLimiter(mesh, "U", vectorNames);
-        return vectorScheme{type, type, false};
+        return vectorScheme{type, type, false, false};
     }
 
-    // normalTangential N T: N and T TVD limiters of the scalar names
+    // normalTangential N T, characteristic N T: N and T TVD limiters of
+    // the scalar names
     limiterType parts[2] = {limiterType::upwind, limiterType::upwind};
     bool valid = (is.size() == 3);
     for (label i = 1; valid && i < 3; ++i)
@@ -539,16 +764,44 @@ Foam::MUSCLReconstruction::readVectorScheme(const fvMesh& mesh)
             << "system/fvSchemes: interpolationSchemes/" << entry
             << " is '" << is.toString().c_str() << "'; the face frame's"
             << " reconstruction takes " << frameName
-            << " N T, the limiters N of the normal component and T of the"
-            << " tangential part each one of (upwind MUSCL vanLeer Minmod"
+            << " N T (N: the normal component, T: the tangential part) or "
+            << characteristicName
+            << " N T (N: the acoustic and entropy waves, T: the tangential"
+            << " part), N and T each one of (upwind MUSCL vanLeer Minmod"
             << " vanAlbada)" << nl << exit(FatalIOError);
     }
-    const vectorScheme scheme{parts[0], parts[1], true};
+    const vectorScheme scheme{parts[0], parts[1], true, characteristic};
     if (scheme.needsGradient())
     {
-        checkGradScheme(mesh, "U", frameName);
+        checkGradScheme(mesh, "U", first);
     }
     return scheme;
+}
+
+
+template<class Type>
+void Foam::MUSCLReconstruction::cellGradient
+(
+    const tmp<fv::gradScheme<Type>>& scheme,
+    const GeometricField<Type, fvPatchField, volMesh>& vf,
+    GeometricField
+    <
+        typename outerProduct<vector, Type>::type,
+        fvPatchField,
+        volMesh
+    >& grad
+) const
+{
+    if (scheme.valid())
+    {
+        grad.primitiveFieldRef() =
+            scheme().calcGrad(vf, "grad(" + vf.name() + ')')()
+           .primitiveField();
+    }
+    else
+    {
+        gaussGrad(vf, grad);
+    }
 }
 
 
@@ -730,6 +983,21 @@ Foam::MUSCLReconstruction::MUSCLReconstruction(const fvMesh& mesh)
     UScheme_(readVectorScheme(mesh)),
     ULimiter_(UScheme_.limiter),
     pLimiter_(readLimiter(mesh, "p", scalarNames)),
+    rhoGradScheme_
+    (
+        leastSquaresScheme<scalar>
+        (
+            mesh, "rho", rhoLimiter_ != limiterType::upwind
+        )
+    ),
+    UGradScheme_
+    (
+        leastSquaresScheme<vector>(mesh, "U", UScheme_.needsGradient())
+    ),
+    pGradScheme_
+    (
+        leastSquaresScheme<scalar>(mesh, "p", pLimiter_ != limiterType::upwind)
+    ),
     coupled_
     (
         returnReduce
@@ -769,11 +1037,44 @@ Foam::MUSCLReconstruction::MUSCLReconstruction(const fvMesh& mesh)
         dimensionedVector(dimPressure/dimLength, Zero),
         calculatedFvPatchField<vector>::typeName
     ),
-    gradientsPending_(false)
-{}
+    gradientsPending_(false),
+    c_(nullptr)
+{
+    // The characteristic reconstruction limits rho, U and p together with
+    // N: reconstruct(rho) and reconstruct(p) must name it (so that their
+    // gradients are computed and no other limiter is implied)
+    if
+    (
+        UScheme_.characteristic
+     && (rhoLimiter_ != UScheme_.limiter || pLimiter_ != UScheme_.limiter)
+    )
+    {
+        FatalIOErrorInFunction(mesh.schemesDict())
+            << "system/fvSchemes: interpolationSchemes/reconstruct(U) is"
+            << " 'characteristic " << scalarNames[UScheme_.limiter]
+            << ' ' << scalarNames[UScheme_.tangential]
+            << "', which limits rho, U and p together: reconstruct(rho)"
+            << " and reconstruct(p) must be "
+            << scalarNames[UScheme_.limiter] << " too (they are "
+            << scalarNames[rhoLimiter_] << " and "
+            << scalarNames[pLimiter_] << ')' << nl << exit(FatalIOError);
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+const Foam::volScalarField& Foam::MUSCLReconstruction::soundSpeedField() const
+{
+    if (!c_)
+    {
+        FatalErrorInFunction
+            << "the characteristic reconstruction needs the sound speed"
+            << " (soundSpeed(c) before reconstruct)" << abort(FatalError);
+    }
+    return *c_;
+}
+
 
 void Foam::MUSCLReconstruction::startCellGradients
 (
@@ -797,7 +1098,7 @@ void Foam::MUSCLReconstruction::startCellGradients
     gradientExchange_ = foamTools::boundaryEvaluation();
     if (rhoLimiter_ != limiterType::upwind)
     {
-        gaussGrad(rho, gradRho_);
+        cellGradient(rhoGradScheme_, rho, gradRho_);
         if (multidimensional(rhoLimiter_))
         {
             limitGradient(rhoLimiter_, rho, gradRho_);
@@ -809,7 +1110,7 @@ void Foam::MUSCLReconstruction::startCellGradients
     }
     if (UScheme_.needsGradient())
     {
-        gaussGrad(U, gradU_);
+        cellGradient(UGradScheme_, U, gradU_);
         if (multidimensional(ULimiter_))
         {
             limitGradient(ULimiter_, U, gradU_);
@@ -821,7 +1122,7 @@ void Foam::MUSCLReconstruction::startCellGradients
     }
     if (pLimiter_ != limiterType::upwind)
     {
-        gaussGrad(p, gradP_);
+        cellGradient(pGradScheme_, p, gradP_);
         if (multidimensional(pLimiter_))
         {
             limitGradient(pLimiter_, p, gradP_);
@@ -919,6 +1220,12 @@ void Foam::MUSCLReconstruction::reconstruct
     const limiterFunctions<NVDTVD>& sLim = scalarLimiters();
     const limiterFunctions<NVDVTVDV>& vLim = vectorLimiters();
 
+    const scalarField* cc = nullptr;
+    if (UScheme_.characteristic)
+    {
+        cc = &soundSpeedField().primitiveField();
+    }
+
     for (label i = 0; i < size; ++i)
     {
         const label facei = start + i;
@@ -928,6 +1235,20 @@ void Foam::MUSCLReconstruction::reconstruct
         const vector d(C[nei] - C[own]);
         const vector dP(Cf[facei] - C[own]);
         const vector dN(Cf[facei] - C[nei]);
+
+        if (UScheme_.characteristic)
+        {
+            characteristicValues
+            (
+                sLim, vLim, UScheme_.limiter, UScheme_.tangential, wf,
+                rhoc[own], rhoc[nei], Uc[own], Uc[nei], pc[own], pc[nei],
+                (*cc)[own], (*cc)[nei], gradRho[own], gradRho[nei],
+                gradU[own], gradU[nei], gradP[own], gradP[nei], d,
+                Sf[facei]/magSf[facei], L.rho[i], R.rho[i], L.U[i],
+                R.U[i], L.p[i], R.p[i]
+            );
+            continue;
+        }
 
         internalFaceValues
         (
@@ -984,6 +1305,16 @@ void Foam::MUSCLReconstruction::reconstructCoupled
     states& R
 ) const
 {
+    if (UScheme_.characteristic)
+    {
+        coupledCharacteristicValues
+        (
+            UScheme_, patchi, rho, U, p, soundSpeedField(), gradRho_,
+            gradU_, gradP_, L, R
+        );
+        return;
+    }
+
     coupledFaceValues
     (
         scalarLimiters(), rhoLimiter_, rho.boundaryField()[patchi],

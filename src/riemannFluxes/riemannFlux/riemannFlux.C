@@ -119,6 +119,7 @@ void Foam::riemannFlux::patchStates
 
     if (patch.coupled() && !firstOrder)
     {
+        reconstruction_.soundSpeed(thermo.c());
         reconstruction_.reconstructCoupled(patchi, rho, U, p, L, R);
     }
     else
@@ -203,6 +204,7 @@ void Foam::riemannFlux::fluxes
     // Internal faces, a block at a time: the cell gradients once (their
     // processor exchange started, overlapping the internal faces), then
     // per block the face states, the law on them and the Riemann solver
+    reconstruction_.soundSpeed(thermo.c());
     reconstruction_.startCellGradients(thermo.rho(), U, thermo.p());
     const label nFaces = mesh_.nInternalFaces();
     for (label start = 0; start < nFaces; start += blockSize)
