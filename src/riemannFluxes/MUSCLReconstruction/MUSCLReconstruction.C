@@ -265,6 +265,48 @@ void coupledFaceValues
     }
 }
 
+//- The face's left and right velocities from their normal components unL,
+//  unR and the cells' tangential parts U_t = U - u_n n limited by the
+//  vector limiter tangentialType with the gradients grad(U) & (I - n n)
+//  (upwind: the cell's own part); shared by faceFrameValues and the
+//  characteristic reconstruction
+inline void tangentialValues
+(
+    const limiterFunctions<NVDVTVDV>& vLim,
+    const MUSCLReconstruction::limiterType tangentialType,
+    const scalar w,
+    const vector& UP,
+    const vector& UN,
+    const scalar unP,
+    const scalar unN,
+    const scalar unL,
+    const scalar unR,
+    const tensor& gradP,
+    const tensor& gradN,
+    const vector& d,
+    const vector& n,
+    vector& left,
+    vector& right
+)
+{
+    const vector utP(UP - unP*n);
+    const vector utN(UN - unN*n);
+    scalar lambdaL = 1;
+    scalar lambdaR = 0;
+    if (tangentialType != MUSCLReconstruction::limiterType::upwind)
+    {
+        const tensor T(I - sqr(n));
+        vLim.weights
+        (
+            tangentialType, w, utP, utN, gradP & T, gradN & T, d,
+            lambdaL, lambdaR
+        );
+    }
+    left = unL*n + lambdaL*(utP - utN) + utN;
+    right = unR*n + lambdaR*(utP - utN) + utN;
+}
+
+
 //- Owner-side and neighbour-side velocities of one face in its frame
 //  (normalTangential N T): the normal component u_n = U.n by the scalar
 //  limiter normalType on the cells' normal components with the gradients
@@ -306,21 +348,11 @@ inline void faceFrameValues
     const scalar unL = lambdaL*(unP - unN) + unN;
     const scalar unR = lambdaR*(unP - unN) + unN;
 
-    const vector utP(UP - unP*n);
-    const vector utN(UN - unN*n);
-    lambdaL = 1;
-    lambdaR = 0;
-    if (tangentialType != limiterType::upwind)
-    {
-        const tensor T(I - sqr(n));
-        vLim.weights
-        (
-            tangentialType, w, utP, utN, gradP & T, gradN & T, d,
-            lambdaL, lambdaR
-        );
-    }
-    left = unL*n + lambdaL*(utP - utN) + utN;
-    right = unR*n + lambdaR*(utP - utN) + utN;
+    tangentialValues
+    (
+        vLim, tangentialType, w, UP, UN, unP, unN, unL, unR, gradP, gradN,
+        d, n, left, right
+    );
 }
 
 
@@ -456,21 +488,11 @@ inline void characteristicValues
     rhoL = wL[2] + rc2*pL;
     rhoR = wR[2] + rc2*pR;
 
-    const vector utP(UP - unP*n);
-    const vector utN(UN - unN*n);
-    scalar lambdaL = 1;
-    scalar lambdaR = 0;
-    if (shearType != limiterType::upwind)
-    {
-        const tensor T(I - sqr(n));
-        vLim.weights
-        (
-            shearType, w, utP, utN, gradUP & T, gradUN & T, d,
-            lambdaL, lambdaR
-        );
-    }
-    UL = unL*n + lambdaL*(utP - utN) + utN;
-    UR = unR*n + lambdaR*(utP - utN) + utN;
+    tangentialValues
+    (
+        vLim, shearType, w, UP, UN, unP, unN, unL, unR, gradUP, gradUN,
+        d, n, UL, UR
+    );
 }
 
 
@@ -983,21 +1005,6 @@ Foam::MUSCLReconstruction::MUSCLReconstruction(const fvMesh& mesh)
     UScheme_(readVectorScheme(mesh)),
     ULimiter_(UScheme_.limiter),
     pLimiter_(readLimiter(mesh, "p", scalarNames)),
-    rhoGradScheme_
-    (
-        leastSquaresScheme<scalar>
-        (
-            mesh, "rho", rhoLimiter_ != limiterType::upwind
-        )
-    ),
-    UGradScheme_
-    (
-        leastSquaresScheme<vector>(mesh, "U", UScheme_.needsGradient())
-    ),
-    pGradScheme_
-    (
-        leastSquaresScheme<scalar>(mesh, "p", pLimiter_ != limiterType::upwind)
-    ),
     coupled_
     (
         returnReduce
@@ -1036,6 +1043,21 @@ Foam::MUSCLReconstruction::MUSCLReconstruction(const fvMesh& mesh)
         mesh,
         dimensionedVector(dimPressure/dimLength, Zero),
         calculatedFvPatchField<vector>::typeName
+    ),
+    rhoGradScheme_
+    (
+        leastSquaresScheme<scalar>
+        (
+            mesh, "rho", rhoLimiter_ != limiterType::upwind
+        )
+    ),
+    UGradScheme_
+    (
+        leastSquaresScheme<vector>(mesh, "U", UScheme_.needsGradient())
+    ),
+    pGradScheme_
+    (
+        leastSquaresScheme<scalar>(mesh, "p", pLimiter_ != limiterType::upwind)
     ),
     gradientsPending_(false),
     c_(nullptr)
