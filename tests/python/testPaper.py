@@ -176,7 +176,9 @@ ALLRUN = {
     "quarter": "#!/bin/bash\nallrunOptions \"\" \"$@\" <<'OPTIONS'\n"
                "-np  np  integer[1,4096]  -\n"
                "-lateral  lateral  number(0,1)  m\n"
-               "-far  far  number(0,1)  m\nOPTIONS\n",
+               "-far  far  number(0,1)  m\n"
+               "-cell  cell  number(0,1)  m\n"
+               "-inflow  inflow  number(0,1)|none  m\nOPTIONS\n",
 }
 TUTORIALS = {"indentation/averageCell": "indentation",
              "indentation/validationCell": "indentation",
@@ -231,7 +233,8 @@ class Command(TempDirTestCase):
         self.blast(os.path.join(self.results, "blast",
                                 "axisymmetricPreview"), 5e-9, {})
         self.blast(os.path.join(self.results, "blast", "quarter3D"), 5e-9,
-                   {"-np": "2", "-lateral": "2e-6", "-far": "10e-6"}, True)
+                   {"-np": "2", "-cell": "0.7e-6", "-lateral": "2e-6",
+                    "-far": "10e-6", "-inflow": "14e-6"}, True)
         for T in (10e-9, 15e-9):
             d = os.path.join(self.case, "postProcessing", "runs",
                              "blast%dns" % round(T*1e9))
@@ -291,8 +294,8 @@ class Command(TempDirTestCase):
         writeMsh(os.path.join(d, "constant", "cell.msh"), 3 if threeD else 2)
         # the mesh sizes as the Allruns leave them in the case
         write(os.path.join(d, "system", "cellMeshDict"),
-              "nucleusSize 1.4e-6;\ncytoplasmSize 1.4e-6;\n"
-              "membraneSize 1e-6;\nfluid\n{\n    nearSize 0.5e-6;\n"
+              "nucleusSize 0.7e-6;\ncytoplasmSize 0.7e-6;\n"
+              "membraneSize 0.5e-6;\nfluid\n{\n    nearSize 0.5e-6;\n"
               "    farSize 10e-6;\n    hexCoeffs { axialSize 0.5e-6; "
               "lateralSize 2e-6; }\n}\n" if threeD else
               "nucleusSize 3.5e-7;\ncytoplasmSize 3.5e-7;\n"
@@ -431,8 +434,8 @@ class Command(TempDirTestCase):
                       "0.175 along z; cell 0.35 / 0.35 (membrane 0.28) |",
                       text)
         self.assertIn("| water 0.5 at the cell, 2 in the inner box, 10 at "
-                      "the side walls, 0.5 along z; cell 1.4 / 1.4 "
-                      "(membrane 1) |", text)
+                      "the side walls, 0.5 along z; cell 0.7 / 0.7 "
+                      "(membrane 0.5) |", text)
 
     def testStaleAndChangedRunsAreNotUsed(self):
         # an input of the tutorial edited after the run
@@ -469,8 +472,10 @@ class Command(TempDirTestCase):
         folder = os.path.join(self.results, "blast", "quarter3D")
         self.assertIsNone(paperCases.why(run, folder))
         write(os.path.join(folder, ".allrunOptions"), json.dumps(
-            {"program": "Allrun", "options": {"-np": "2", "-lateral": "2e-6",
-                                              "-far": "5e-6"}}))
+            {"program": "Allrun", "options": {"-np": "2", "-cell": "0.7e-6",
+                                              "-lateral": "2e-6",
+                                              "-far": "5e-6",
+                                              "-inflow": "14e-6"}}))
         self.assertIn("-far 5e-6 then, 1e-05 now",
                       paperCases.why(run, folder))
 
