@@ -12,6 +12,7 @@
 #include "subDict.H"
 
 #include <cmath>
+#include <cstdio>
 #include <mpi.h>
 #include "keywordCheck.H"
 
@@ -864,14 +865,22 @@ void Foam::fluidSolidInteraction::report()
 
     // The parts of the time loop; "other": the time-step control, the
     // state checks and the function objects (probes)
+    // (to 0.01 s: the clock's resolution, not the stream's 17 digits)
+    const auto sec = [](const scalar x)
+    {
+        char buf[32];
+        std::snprintf(buf, sizeof(buf), "%.2f", x);
+        return word(buf);
+    };
     const scalar total = mesh_.time().elapsedCpuTime() - cpuStart_;
     const scalar other = total - cpuMotion_ - cpuFluid_ - cpuSolid_;
-    Info<< "CPU time of the time loop " << total << " s: mesh motion "
-        << cpuMotion_ << " s, fluid " << cpuFluid_ << " s, solid "
-        << cpuSolid_ << " s, other " << other << " s (coupling "
-        << cpuCoupling_ << " s, restore " << cpuRestore_ << " s, output "
-        << cpuOutput_ << " s, time-step control, checks and function"
-        << " objects " << other - cpuCoupling_ - cpuRestore_ - cpuOutput_
+    Info<< "CPU time of the time loop " << sec(total) << " s: mesh motion "
+        << sec(cpuMotion_) << " s, fluid " << sec(cpuFluid_) << " s, solid "
+        << sec(cpuSolid_) << " s, other " << sec(other) << " s (coupling "
+        << sec(cpuCoupling_) << " s, restore " << sec(cpuRestore_)
+        << " s, output " << sec(cpuOutput_) << " s, time-step control,"
+        << " checks and function objects "
+        << sec(other - cpuCoupling_ - cpuRestore_ - cpuOutput_)
         << " s)" << endl;
     if (Pstream::parRun())
     {
@@ -883,11 +892,12 @@ void Foam::fluidSolidInteraction::report()
             return returnReduce(x, maxOp<scalar>());
         };
         Info<< "    largest over the " << Pstream::nProcs() << " ranks:"
-            << " time loop " << largest(total) << " s, mesh motion "
-            << largest(cpuMotion_) << " s, fluid " << largest(cpuFluid_)
-            << " s, solid " << largest(cpuSolid_) << " s, other "
-            << largest(total - cpuMotion_ - cpuFluid_ - cpuSolid_) << " s"
-            << endl;
+            << " time loop " << sec(largest(total)) << " s, mesh motion "
+            << sec(largest(cpuMotion_)) << " s, fluid "
+            << sec(largest(cpuFluid_)) << " s, solid "
+            << sec(largest(cpuSolid_)) << " s, other "
+            << sec(largest(total - cpuMotion_ - cpuFluid_ - cpuSolid_))
+            << " s" << endl;
         // Every rank's split (the imbalance of a part: one rank's work
         // against the other's waiting in it)
         List<scalarList> split(Pstream::nProcs());
@@ -901,13 +911,14 @@ void Foam::fluidSolidInteraction::report()
         {
             const scalarList& x = split[proci];
             if (x.size() != 7) continue;
-            Info<< "    rank " << proci << ": time loop " << x[0]
-                << " s: mesh motion " << x[1] << " s, fluid " << x[2]
-                << " s, solid " << x[3] << " s, other "
-                << x[0] - x[1] - x[2] - x[3] << " s (coupling " << x[4]
-                << " s, restore " << x[5] << " s, output " << x[6]
-                << " s, the rest " << x[0] - x[1] - x[2] - x[3] - x[4]
-                 - x[5] - x[6] << " s)" << endl;
+            Info<< "    rank " << proci << ": time loop " << sec(x[0])
+                << " s: mesh motion " << sec(x[1]) << " s, fluid "
+                << sec(x[2]) << " s, solid " << sec(x[3]) << " s, other "
+                << sec(x[0] - x[1] - x[2] - x[3]) << " s (coupling "
+                << sec(x[4]) << " s, restore " << sec(x[5]) << " s, output "
+                << sec(x[6]) << " s, the rest "
+                << sec(x[0] - x[1] - x[2] - x[3] - x[4] - x[5] - x[6])
+                << " s)" << endl;
         }
     }
 
