@@ -42,6 +42,17 @@
 //
 // Usage:
 //   exactTraction MESH TABLE OUTDIR [options]
+//     MESH               a gmsh file (the cell), or block:R:H:h:KIND, a
+//                        column r in [0, R], z in [0, H] [m] of elements
+//                        of h (rounded to fit), one region "cytoplasm",
+//                        loaded on its top and its side r = R (the exact
+//                        traction: a plane wave in an unbounded body),
+//                        fixed at the bottom, the axis at r = 0: KIND
+//                        aligned (the structured grid), smooth (interior
+//                        nodes moved by a smooth field, lines tilted up to
+//                        about 20 degrees, bench/solid/planeShockColumn.H)
+//                        or random (interior nodes moved by up to h/4,
+//                        seed 1: irregular quadrilaterals, like gmsh's)
 //     -probes FILE       one probe per line: NAME REGION r z [R] (metres;
 //                        R > 0 a ball probe); '#' comments
 //     -end T             end time [s] (default the table's last time)
@@ -64,6 +75,7 @@
 #include "SolidError.H"
 #include "Tensor.H"
 #include "previewCell.H"
+#include "../../tests/solid/SolidTestUtils.H"
 
 #include <algorithm>
 #include <cerrno>
@@ -294,6 +306,57 @@ Vec3 centroid(const Mesh& m, int e)
     return c/m.nen();
 }
 
+//- The mesh of MESH: a gmsh file or block:R:H:h:KIND (see the usage)
+Mesh buildMesh(const std::string& spec)
+{
+    if (spec.rfind("block:", 0) != 0) return readGmsh(spec);
+    std::vector<std::string> w;
+    std::stringstream ss(spec.substr(6));
+    std::string x;
+    while (std::getline(ss, x, ':')) w.push_back(x);
+    if (w.size() != 4)
+    {
+        throw InputError("mesh " + spec + ": block:R:H:h:KIND");
+    }
+    const double R = inRange("block R", w[0], 1e-9, 1e-3, false);
+    const double H = inRange("block H", w[1], 1e-9, 1e-3, false);
+    const double h = inRange("block h", w[2], 1e-9, 1e-3, false);
+    const std::string kind = w[3];
+    if (kind != "aligned" && kind != "smooth" && kind != "random")
+    {
+        throw InputError("mesh " + spec + ": KIND " + kind + ": aligned, "
+            "smooth or random");
+    }
+    const int nr = std::max(1, int(std::lround(R/h)));
+    const int nz = std::max(1, int(std::lround(H/h)));
+    Mesh m = Mesh::rectangle(nr, nz, 0, R, 0, H);
+    if (kind == "random")
+    {
+        solidTest::distortInterior(m, h, 0.25, 1);
+    }
+    else if (kind == "smooth")
+    {
+        std::vector<bool> onSet(m.nNodes(), false);
+        for (const auto& s : m.nodeSets)
+            for (int n : s.second) onSet[n] = true;
+        for (int n = 0; n < m.nNodes(); ++n)
+        {
+            if (onSet[n]) continue;
+            Vec3& X = m.X[n];
+            X(1) += 0.36*(X(0) - 0.5*R)*std::sin(M_PI*X(1)/H)
+                   *std::sin(M_PI*X(0)/R);
+        }
+    }
+    m.regionNames[0] = "cytoplasm";
+    m.nodeSets["fixedBottom"] = m.nodeSets.at("bottom");
+    m.nodeSets["axis"] = m.nodeSets.at("left");
+    std::vector<std::vector<int>> outer = m.faceSets.at("top");
+    const auto& right = m.faceSets.at("right");
+    outer.insert(outer.end(), right.begin(), right.end());
+    m.faceSets["outerSurface"] = outer;
+    return m;
+}
+
 //- The point nearest X on the edges of region's elements (r-z)
 Vec3 nearestEdgePoint(const Mesh& m, int region, const Vec3& X)
 {
@@ -454,7 +517,7 @@ int main(int argc, char** argv)
             throw InputError(m.str());
         }
 
-        Model model(readGmsh(meshPath));
+        Model model(buildMesh(meshPath));
         const Mesh& mesh = model.mesh();
         if (!mesh.axisymmetric())
         {
@@ -490,6 +553,8 @@ int main(int argc, char** argv)
         {
             if (b1 >= 0) p.b1 = b1;
             if (b2 >= 0) p.b2 = b2;
+            if (std::find(mesh.regionNames.begin(), mesh.regionNames.end(),
+                p.name) == mesh.regionNames.end()) continue;
             model.setMaterial(p.name, Material::create(p));
         }
         model.fix("fixedBottom", 0);

@@ -5,7 +5,7 @@ blastPlaneWave.md, "The solid alone under the exact traction"; not a
 test).
 
 Usage: exactTraction.py CASE OUT [-dz 10e-9] [-spacing 25e-9]
-                        [-endTime 9e-8] [-probes FILE]
+                        [-endTime 9e-8] [-probes FILE] [-top H]
 
 CASE: a prepared axisymmetric preview (tests/blast/runPreview.sh DIR
 -noRun, or a run of it: its constant/cell.msh, constant/
@@ -19,7 +19,8 @@ recorded every 4 steps (about 11 ps at 10 nm). Writes in OUT:
 
   table.dat  p_1D(Z, t) [Pa]: the column's pressure p + q at the material
       points of reference heights Z = 0, -spacing, ... up to the cell's
-      top (cell.msh's largest z) and one more, from 1 ns before the wave
+      top (cell.msh's largest z, or -top H [m] for a case without it: the
+      tutorial's inputs and a block of the driver) and one more, from 1 ns before the wave
       reaches the top (the first record with |p| > 1 kPa there) to
       -endTime; the driver's TABLE.
   probes  the probes of CASE's postProcessing/solidProbes (a run's header:
@@ -91,6 +92,7 @@ def main():
     dz = option(args, "-dz", 10e-9)
     spacing = option(args, "-spacing", 25e-9)
     endTime = option(args, "-endTime", 9e-8)
+    top = option(args, "-top", None)
     probesFile = None
     if "-probes" in args:
         k = args.index("-probes")
@@ -103,9 +105,11 @@ def main():
     case, out = args
     if not os.path.isdir(os.path.join(case, "constant")):
         case = os.path.join(case, "axisymmetricPreview")
-    cell = os.path.join(case, "constant", "cell.msh")
-    X, _ = msh.read(cell)
-    zTop = max(x[1] for x in X.values())
+    if top is None:
+        X, _ = msh.read(os.path.join(case, "constant", "cell.msh"))
+        zTop = max(x[1] for x in X.values())
+    else:
+        zTop = top
     Z = planeWave.caseColumnHeight(case)
     if probesFile:
         probes = readProbes(probesFile)
