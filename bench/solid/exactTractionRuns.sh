@@ -24,6 +24,15 @@ py=/usr/bin/python3
 out=$1; shift
 declare -A scene=([c07]=$1 [c05]=$2 [c035]=$3)
 fields=6.6e-8,7e-8,9e-8
+# cellMsh SCENE: a scene's cell mesh (the run's case or its folder)
+cellMsh() {
+    if [ -f "$1/constant/cell.msh" ]
+    then
+        echo "$1/constant/cell.msh"
+    else
+        echo "$1/axisymmetricPreview/constant/cell.msh"
+    fi
+}
 # run DIR MESH TABLEDIR PROBES [options]: the driver into DIR with
 # TABLEDIR's reference and solidProperties (for ballLadder.py)
 run() {
@@ -48,7 +57,7 @@ for l in c07 c05 c035
 do
     s=${scene[$l]}
     nice -n 10 $py "$root/bench/solid/exactTraction.py" "$s" "$out/$l"
-    mesh=$(ls "$s"/constant/cell.msh "$s"/axisymmetricPreview/constant/cell.msh 2>/dev/null | head -1)
+    mesh=$(cellMsh "$s")
     run "$out/$l" "$mesh" "$out/$l" "$out/$l/probes"
     for v in "${VARIANTS[@]}"
     do
@@ -57,7 +66,7 @@ do
         run "$out/$l-$name" "$mesh" "$out/$l" "$out/$l/probes" "$@"
     done
 done
-mesh=$(ls "${scene[c035]}"/constant/cell.msh "${scene[c035]}"/axisymmetricPreview/constant/cell.msh 2>/dev/null | head -1)
+mesh=$(cellMsh "${scene[c035]}")
 nice -n 10 $py "$root/bench/solid/exactTraction.py" "${scene[c035]}" \
     "$out/c035-t20" -dz 20e-9
 run "$out/c035-t20" "$mesh" "$out/c035-t20" "$out/c035-t20/probes"
