@@ -52,7 +52,8 @@
 //                        nodes moved by a smooth field, lines tilted up to
 //                        about 20 degrees, bench/solid/planeShockColumn.H)
 //                        or random (interior nodes moved by up to h/4,
-//                        seed 1: irregular quadrilaterals, like gmsh's)
+//                        seed 1: irregular quadrilaterals, like gmsh's;
+//                        block:R:H:h:random:F by up to F h, F in [0, 0.3])
 //     -probes FILE       one probe per line: NAME REGION r z [R] (metres;
 //                        R > 0 a ball probe); '#' comments
 //     -end T             end time [s] (default the table's last time)
@@ -314,10 +315,13 @@ Mesh buildMesh(const std::string& spec)
     std::stringstream ss(spec.substr(6));
     std::string x;
     while (std::getline(ss, x, ':')) w.push_back(x);
-    if (w.size() != 4)
+    if (w.size() != 4 && !(w.size() == 5 && w[3] == "random"))
     {
-        throw InputError("mesh " + spec + ": block:R:H:h:KIND");
+        throw InputError("mesh " + spec + ": block:R:H:h:KIND or "
+            "block:R:H:h:random:FRACTION");
     }
+    const double frac = w.size() == 5
+        ? inRange("block random FRACTION", w[4], 0, 0.3, false) : 0.25;
     const double R = inRange("block R", w[0], 1e-9, 1e-3, false);
     const double H = inRange("block H", w[1], 1e-9, 1e-3, false);
     const double h = inRange("block h", w[2], 1e-9, 1e-3, false);
@@ -332,7 +336,7 @@ Mesh buildMesh(const std::string& spec)
     Mesh m = Mesh::rectangle(nr, nz, 0, R, 0, H);
     if (kind == "random")
     {
-        solidTest::distortInterior(m, h, 0.25, 1);
+        solidTest::distortInterior(m, h, frac, 1);
     }
     else if (kind == "smooth")
     {

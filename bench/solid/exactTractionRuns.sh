@@ -14,6 +14,8 @@
 #                        aligned / smooth / random, H 0.35 ... 0.125 um
 #                        (random also with gaussPoints, gp, and without
 #                        the shear viscosity, sv0)
+#   blk-randomF-H        random meshes with nodes moved by up to F h, F =
+#                        0.0625, 0.125, 0.25, H 0.35 and 0.175 um
 # Every run writes fields at 66, 70 and 90 ns. About 2 min CPU.
 set -euo pipefail
 [ $# -eq 4 ] || { sed -n 2,20p "$0"; exit 1; }
@@ -86,4 +88,12 @@ do
     run "$out/blk-random-$h-sv0" "block:4e-6:7.9e-6:${h}e-6:random" \
         "$out/c07" "$root/tests/blast/exactTraction.probes" \
         -shearViscosity 0
+done
+for f in 0.0625 0.125 0.25
+do
+    for h in 0.35 0.175
+    do
+        run "$out/blk-random$f-$h" "block:4e-6:7.9e-6:${h}e-6:random:$f" \
+            "$out/c07" "$root/tests/blast/exactTraction.probes"
+    done
 done
