@@ -67,6 +67,11 @@
 //     -oneMaterial R     every region with region R's parameters
 //     -faceSamples N     points per face for p_f [1, 16] (default 4)
 //     -fields T1,T2,...  times [s] of the element fields
+//     -smooth N          N Laplacian sweeps over the mesh before the run:
+//                        each node off the mesh's boundary, the face
+//                        sets, fixedBottom, axis and the region interfaces
+//                        moved to the mean of its edge neighbours
+//                        (Jacobi) [0, 1000] (default 0)
 //   cmake --build build --target exactTraction
 #include "ExplicitSolver.H"
 #include "GmshReader.H"
@@ -86,6 +91,7 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -361,6 +367,76 @@ Mesh buildMesh(const std::string& spec)
     return m;
 }
 
+//- N Jacobi sweeps of Laplacian smoothing over the free interior nodes
+void smooth(Mesh& m, int sweeps)
+{
+    if (sweeps <= 0) return;
+    const int nn = m.nNodes(), nen = m.nen();
+    // fixed: the mesh's boundary (edges of one element), the face sets,
+    // the fixed sets and the region interfaces (the probes' points on
+    // them stay where they were)
+    std::vector<bool> fixed(nn, false);
+    for (const char* set : {"fixedBottom", "axis"})
+    {
+        const auto it = m.nodeSets.find(set);
+        if (it == m.nodeSets.end()) continue;
+        for (const int n : it->second) fixed[n] = true;
+    }
+    for (const auto& s : m.faceSets)
+        for (const auto& f : s.second)
+            for (const int n : f) fixed[n] = true;
+    std::map<std::pair<int, int>, int> edges;
+    for (int e = 0; e < m.nElements(); ++e)
+    {
+        const int* c = m.element(e);
+        for (int a = 0; a < nen; ++a)
+        {
+            const int i = c[a], j = c[(a + 1) % nen];
+            ++edges[{std::min(i, j), std::max(i, j)}];
+        }
+    }
+    for (const auto& kv : edges)
+    {
+        if (kv.second == 1)
+        {
+            fixed[kv.first.first] = true;
+            fixed[kv.first.second] = true;
+        }
+    }
+    std::vector<int> region(nn, -1);
+    std::vector<std::vector<int>> nb(nn);
+    for (int e = 0; e < m.nElements(); ++e)
+    {
+        const int* c = m.element(e);
+        for (int a = 0; a < nen; ++a)
+        {
+            const int n = c[a];
+            if (region[n] >= 0 && region[n] != m.region[e]) fixed[n] = true;
+            region[n] = m.region[e];
+            nb[n].push_back(c[(a + 1) % nen]);
+            nb[n].push_back(c[(a + nen - 1) % nen]);
+        }
+    }
+    for (auto& v : nb)
+    {
+        std::sort(v.begin(), v.end());
+        v.erase(std::unique(v.begin(), v.end()), v.end());
+    }
+    for (int it = 0; it < sweeps; ++it)
+    {
+        std::vector<Vec3> X = m.X;
+        for (int n = 0; n < nn; ++n)
+        {
+            if (fixed[n] || nb[n].empty()) continue;
+            Vec3 c = Vec3::Zero();
+            for (const int k : nb[n]) c += m.X[k];
+            X[n] = c/double(nb[n].size());
+        }
+        m.X = X;
+    }
+    m.check();
+}
+
 //- The point nearest X on the edges of region's elements (r-z)
 Vec3 nearestEdgePoint(const Mesh& m, int region, const Vec3& X)
 {
@@ -454,7 +530,7 @@ int main(int argc, char** argv)
         "[-probes FILE] [-end T] [-law water|posed] [-hourglass K] "
         "[-shearViscosity B] [-filter yes|no|region] [-volumetric "
         "element|gaussPoints] [-b1 X] [-b2 Y] [-oneMaterial REGION] "
-        "[-faceSamples N] [-fields T1,T2,...]";
+        "[-faceSamples N] [-fields T1,T2,...] [-smooth N]";
     if (argc < 4)
     {
         std::fprintf(stderr, "%s\n", usage.c_str());
@@ -468,7 +544,7 @@ int main(int argc, char** argv)
             volumetric = "element", oneMaterial, fieldTimes;
         ExplicitSettings set = previewCell::settings();
         double end = -1, b1 = -1, b2 = -1;
-        int nSamples = 4;
+        int nSamples = 4, sweeps = 0;
         for (int i = 4; i < argc; ++i)
         {
             const std::string opt = argv[i];
@@ -492,6 +568,8 @@ int main(int argc, char** argv)
             else if (opt == "-faceSamples")
                 nSamples = int(inRange(opt, val, 1, 16, false));
             else if (opt == "-fields") fieldTimes = val;
+            else if (opt == "-smooth")
+                sweeps = int(inRange(opt, val, 0, 1000, false));
             else throw InputError("unknown option " + opt + " (" + usage
                 + ")");
         }
@@ -521,7 +599,9 @@ int main(int argc, char** argv)
             throw InputError(m.str());
         }
 
-        Model model(buildMesh(meshPath));
+        Mesh built = buildMesh(meshPath);
+        smooth(built, sweeps);
+        Model model(std::move(built));
         const Mesh& mesh = model.mesh();
         if (!mesh.axisymmetric())
         {

@@ -54,7 +54,7 @@ run() {
 VARIANTS=("sv0 -shearViscosity 0" "hg0 -hourglass 0" "b1z -b1 0"
     "b2h -b2 0.6" "one -oneMaterial cytoplasm"
     "gp -volumetric gaussPoints" "gp0 -volumetric gaussPoints -hourglass 0"
-    "fs1 -faceSamples 1" "fs16 -faceSamples 16")
+    "fs1 -faceSamples 1" "fs16 -faceSamples 16" "sm20 -smooth 20")
 for l in c07 c05 c035
 do
     s=${scene[$l]}
