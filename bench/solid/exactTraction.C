@@ -36,7 +36,9 @@
 //       reference centroid, ln J, ln|F e_z|, the lateral strain
 //       ln J - ln|F e_z|, von Mises, pressure and its bulk-viscosity part
 //       q, the mean nodal radial velocity
-//   exactTraction.log  the settings, the faces' height range, the steps,
+//   exactTraction.log  the settings, the faces' height range, the interior
+//       nodes by their number of elements (4 at every one of a structured
+//       grid), the steps,
 //       the energy balance, the largest |lateral strain| over the
 //       elements at each field time and at the end.
 //
@@ -437,6 +439,40 @@ void smooth(Mesh& m, int sweeps)
     m.check();
 }
 
+//- The interior nodes (on no edge of one element) by the number of
+//  elements at them: counts of 3, 4, 5 and other (r-z quadrilaterals; a
+//  structured grid has 4 at every one)
+std::vector<int> valences(const Mesh& m)
+{
+    const int nen = m.nen();
+    std::map<std::pair<int, int>, int> edges;
+    std::vector<int> count(m.nNodes(), 0);
+    for (int e = 0; e < m.nElements(); ++e)
+    {
+        const int* c = m.element(e);
+        for (int a = 0; a < nen; ++a)
+        {
+            ++count[c[a]];
+            const int i = c[a], j = c[(a + 1) % nen];
+            ++edges[{std::min(i, j), std::max(i, j)}];
+        }
+    }
+    std::vector<bool> boundary(m.nNodes(), false);
+    for (const auto& kv : edges)
+    {
+        if (kv.second != 1) continue;
+        boundary[kv.first.first] = true;
+        boundary[kv.first.second] = true;
+    }
+    std::vector<int> out(4, 0);
+    for (int n = 0; n < m.nNodes(); ++n)
+    {
+        if (boundary[n]) continue;
+        ++out[count[n] >= 3 && count[n] <= 5 ? count[n] - 3 : 3];
+    }
+    return out;
+}
+
 //- The point nearest X on the edges of region's elements (r-z)
 Vec3 nearestEdgePoint(const Mesh& m, int region, const Vec3& X)
 {
@@ -770,6 +806,14 @@ int main(int argc, char** argv)
             " per face\n", meshPath.c_str(), tablePath.c_str(),
             outDir.c_str(), mesh.nElements(), mesh.nNodes(), faces.size(),
             zMin, zMax, nSamples);
+        {
+            const std::vector<int> v = valences(mesh);
+            const double n = std::max(v[0] + v[1] + v[2] + v[3], 1);
+            both("# interior nodes %d: at 3 / 4 / 5 / other numbers of "
+                "elements %.1f / %.1f / %.1f / %.1f %%\n",
+                v[0] + v[1] + v[2] + v[3], 100*v[0]/n, 100*v[1]/n,
+                100*v[2]/n, 100*v[3]/n);
+        }
         both("# table: %zu heights (%.6g to %.6g m), %zu times (%.6g to "
             "%.6g s); largest |p| in its first row %.3g Pa\n", tab.Z.size(),
             tab.Z.front(), tab.Z.back(), tab.t.size(), tab.t.front(),
