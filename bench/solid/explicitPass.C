@@ -26,6 +26,7 @@
 #include "ExplicitSolver.H"
 #include "GmshReader.H"
 #include "MixedElement.H"
+#include "previewCell.H"
 
 #include <cstdint>
 #include <cstdio>
@@ -55,24 +56,6 @@ void digest(const char* name, const double* x, std::size_t n)
     for (std::size_t i = 0; i < n; ++i) s += x[i];
     std::printf("%-10s n %8zu sum %-24a fnv %016llx\n", name, n, s,
         (unsigned long long)fnv(x, n, 14695981039346656037ull));
-}
-
-MaterialParameters water(const std::string& name, double C10, double mu1,
-    double tau1)
-{
-    MaterialParameters p;
-    p.name = name;
-    p.rho0 = 1000;
-    p.C10 = C10;
-    p.volumetric = "mieGruneisen";
-    p.branches = {{mu1, tau1}};
-    p.eos.rho0 = 1000;
-    p.eos.C0 = 1450;
-    p.eos.s = 1.99;
-    p.eos.Gamma0 = 0.1;
-    p.eos.Cv = 4184;
-    p.eos.T0 = 293.15;
-    return p;
 }
 
 //- The element that sets the stable step (the assembly's minimum, dt = 0:
@@ -123,21 +106,7 @@ int main(int argc, char** argv)
     try
     {
         Model model(readGmsh(argv[1]));
-        MaterialParameters mem;
-        mem.name = "membrane";
-        mem.rho0 = 1000;
-        mem.C10 = 166.67;
-        mem.volumetric = "quadratic";
-        mem.d0 = 9.5125e-10;
-        mem.branches = {{13.89, 3000}};
-        model.setMaterial("membrane", Material::create(mem));
-        model.setMaterial("cytoplasm",
-            Material::create(water("cytoplasm", 1.67, 107.78, 0.01)));
-        model.setMaterial("nucleus",
-            Material::create(water("nucleus", 6.67, 431.12, 0.5)));
-        model.fix("fixedBottom", 0);
-        model.fix("fixedBottom", 1);
-        model.fix("axis", 0);
+        previewCell::setUp(model);
         model.initialise();
         const Mesh& mesh = model.mesh();
         const int dim = mesh.dim();
@@ -148,11 +117,7 @@ int main(int argc, char** argv)
             model.v(dim*n + 1) = -20.0*mesh.X[n](1)/zmax;
         for (const int d : model.prescribedDofs()) model.v(d) = 0;
 
-        ExplicitSettings set;
-        set.safety = 0.8;
-        set.hourglass = 0.1;
-        set.shearViscosity = 0.2;
-        set.shearViscosityFilter = true;
+        const ExplicitSettings set = previewCell::settings();
         ExplicitSolver solver(model, set);
         std::printf("# %d elements, %d nodes; stable step at start %.6e s\n",
             mesh.nElements(), mesh.nNodes(), solver.stableTimeStep());

@@ -1,0 +1,101 @@
+#!/usr/bin/python3
+"""The lateral strain of bench/solid/exactTraction runs along a ladder of
+solid meshes (issue 17 item 4; docs/results/blastPlaneWave.md, "The solid
+alone under the exact traction"; not a test).
+
+Usage: exactTractionLadder.py [-depth D] H=DIR [H=DIR ...]
+
+Each DIR a run of build/bin/exactTraction with -fields (and its probes,
+after bench/solid/exactTraction.py); H its solid element size [m]. The
+exact answer is uniaxial strain: the lateral strain ln J - ln|F e_z| is 0
+everywhere. Per run and field time: the rms and the largest |lateral
+strain| over the elements whose centroid lies deeper than D (default
+1e-6 m) below the loaded surface (the fields' depth column), and the
+observed order of the rms between successive runs. Then, per probe of
+bench/blast/ballLadder.py (the same measures as for a coupled run): the
+von Mises 1-ns peak's error against the exact answer and its non-uniaxial
+part (b) per run, and the largest |error| and |(b)| over the point probes
+(the band* probes left out, as ballLadder.py does).
+"""
+import glob
+import math
+import os
+import sys
+
+import numpy as np
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, "..", "blast"))
+import ballLadder   # noqa: E402
+
+
+def fields(d, depth):
+    """{time [s]: (rms, largest |lateral|, elements)} over depth > D"""
+    out = {}
+    for f in glob.glob(os.path.join(d, "fields", "*.dat")):
+        with open(f) as fh:
+            t = float(fh.readline().split()[3])
+        a = np.genfromtxt(f, comments="#", usecols=(6, 11))
+        lat, dep = a[:, 0], a[:, 1]
+        m = dep > depth
+        if not m.any():
+            sys.exit("exactTractionLadder.py: %s: no element deeper than %g"
+                     " m" % (f, depth))
+        out[t] = (math.sqrt((lat[m]**2).mean()), abs(lat[m]).max(),
+                  int(m.sum()))
+    if not out:
+        sys.exit("exactTractionLadder.py: %s: no fields/*.dat (run "
+                 "exactTraction with -fields)" % d)
+    return out
+
+
+def main():
+    args = sys.argv[1:]
+    depth = 1e-6
+    if args[:1] == ["-depth"] and len(args) > 1:
+        depth, args = float(args[1]), args[2:]
+    if not args:
+        sys.exit(__doc__)
+    runs = []
+    for a in args:
+        h, d = a.split("=", 1)
+        runs.append((float(h), d, fields(d, depth)))
+    runs.sort(key=lambda r: -r[0])
+    times = sorted(runs[0][2])
+    print("| field time [ns] | " + " | ".join(
+        "H %g um: rms / largest |lateral strain| (elements)" % (h*1e6)
+        for h, _, _ in runs) + " | observed order of the rms |")
+    print("|---:|" + "---:|"*len(runs) + "---|")
+    for t in times:
+        cells, rms = [], []
+        for h, _, f in runs:
+            k = min(f, key=lambda x: abs(x - t))
+            r, m, n = f[k]
+            cells.append("%.2e / %.2e (%d)" % (r, m, n))
+            rms.append(r)
+        orders = ["%.2f" % (math.log(rms[i]/rms[i + 1])
+                            / math.log(runs[i][0]/runs[i + 1][0]))
+                  for i in range(len(rms) - 1)]
+        print("| %.1f | %s | %s |" % (t*1e9, " | ".join(cells),
+                                      ", ".join(orders)))
+    print()
+    res = [(h, ballLadder.run("%g=%s" % (h, d))[1]) for h, d, _ in runs]
+    names = [k for k in res[0][1] if not k.startswith("band")]
+    print("| probe | " + " | ".join("H %g um: error; (b)" % (h*1e6)
+                                    for h, _ in res) + " |")
+    print("|---|" + "---:|"*len(res))
+    for k in names:
+        print("| %s | %s |" % (k, " | ".join(
+            "%+.2f %%; %+.2f %%" % (100*(o[k]["vm"]/o[k]["ref"] - 1),
+                                    100*(o[k]["vm"]/o[k]["vmJ"] - 1))
+            for _, o in res)))
+    points = [k for k in names if not k.startswith("ball")]
+    print("| largest over the point probes | %s |" % " | ".join(
+        "%.2f %%; %.2f %%" % (
+            max(abs(100*(o[k]["vm"]/o[k]["ref"] - 1)) for k in points),
+            max(abs(100*(o[k]["vm"]/o[k]["vmJ"] - 1)) for k in points))
+        for _, o in res))
+
+
+if __name__ == "__main__":
+    main()
