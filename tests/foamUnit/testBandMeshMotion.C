@@ -376,4 +376,63 @@ TEST(bandMeshMotion, aPointLeftOutOfTheBandIsFound)
 }
 
 
+TEST(bandMeshMotion, cellsWithinFaceLayersOfTheBand)
+{
+    // One interior point of the 5 x 4 x 3 block, the grid point (2, 2, 1):
+    // the band's cells are the 2 x 2 x 2 around it, and the cells within
+    // n face layers those whose grid distance |di| + |dj| + |dk| to that
+    // box is at most n (counted here on the grid, not through the mesh's
+    // faces; a point-neighbour stencil would count more)
+    foamUnit::testCase tc("bandMeshMotionLayers");
+    autoPtr<fvMesh> mesh = blockMesh3D(tc);
+    const vector s(2.0/5, 2.0/4, 1.0/3);
+    const point target
+    (
+        5e-6*s.x() + 0.5e-6*s.y()*s.z(),
+        4e-6*s.y()*(1 + 0.2*s.x()),
+        3e-6*s.z() + 0.3e-6*s.x()*s.y()
+    );
+    label nearest = -1;
+    scalar dMin = GREAT;
+    forAll(mesh->points(), pointi)
+    {
+        const scalar d = mag(mesh->points()[pointi] - target);
+        if (d < dMin)
+        {
+            dMin = d;
+            nearest = pointi;
+        }
+    }
+    ASSERT_LT(dMin, 1e-12);
+
+    const bandMeshMotion motion(mesh(), labelList(1, nearest));
+    EXPECT_EQ(motion.nCells(), 8);
+
+    auto gap = [](const label i, const label lo, const label hi)
+    {
+        return max(label(0), max(lo - i, i - hi));
+    };
+    for (label n = 0; n <= 7; ++n)
+    {
+        label expected = 0;
+        for (label i = 0; i < 5; ++i)
+        {
+            for (label j = 0; j < 4; ++j)
+            {
+                for (label k = 0; k < 3; ++k)
+                {
+                    if (gap(i, 1, 2) + gap(j, 1, 2) + gap(k, 0, 1) <= n)
+                    {
+                        ++expected;
+                    }
+                }
+            }
+        }
+        EXPECT_EQ(motion.nCellsWithin(n), expected) << n << " layers";
+    }
+    // Far enough: the whole block
+    EXPECT_EQ(motion.nCellsWithin(7), mesh->nCells());
+}
+
+
 // ************************************************************************* //

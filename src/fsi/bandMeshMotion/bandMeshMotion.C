@@ -553,6 +553,31 @@ void Foam::bandMeshMotion::movePoints(const pointField& newPoints)
 }
 
 
+Foam::label Foam::bandMeshMotion::nCellsWithin(const label nLayers) const
+{
+    bitSet within(mesh_.nCells());
+    within.set(cells_);
+    const labelUList& own = mesh_.owner();
+    const labelUList& nei = mesh_.neighbour();
+    for (label layer = 0; layer < nLayers; ++layer)
+    {
+        // One layer: the cells across an internal face from the set
+        bitSet next(within);
+        forAll(nei, facei)
+        {
+            const label o = own[facei];
+            const label n = nei[facei];
+            if (within.test(o) != within.test(n))
+            {
+                next.set(within.test(o) ? n : o);
+            }
+        }
+        within.transfer(next);
+    }
+    return label(within.count());
+}
+
+
 void Foam::bandMeshMotion::notifyFunctionObjects()
 {
     if (functionObjectsPending_)

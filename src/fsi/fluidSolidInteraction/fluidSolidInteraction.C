@@ -228,6 +228,16 @@ void Foam::fluidSolidInteraction::createMotion
             << mesh_.nFaces() << " and " << mesh_.nCells()
             << (bandMotion_->banded() ? "" : " (whole mesh: a coupled patch"
                 " touches them)") << endl;
+        {
+            // What a coupling pass after the first of a step can change
+            // (issue 18 item 5: passes 2+ on these cells only)
+            const label nStages = fluid_.rk().nStages();
+            Info<< "FSI mesh motion: a repeated coupling pass can change "
+                << bandMotion_->nCellsWithin(2*nStages) << " of "
+                << mesh_.nCells() << " cells (the band's and "
+                << 2*nStages << " face layers: " << nStages
+                << " Runge-Kutta stages of a two-layer stencil)" << endl;
+        }
         return;
     }
 
