@@ -5,4 +5,4 @@
 mkdir -p $W/rotmp; ro $W/rotmp; touch $W/rotmp/x 2>/dev/null && echo "   (rotmp writable!)"; cal; sums > ../s0
 TMPDIR=$W/rotmp tryt 60 "(a) calibrateCell, TMPDIR read-only" calibrateCell; echo "   changed: $(changed ../s0)"; grep -a -c Traceback $W/try.log; head -3 $W/try.log | cut -c1-200; killIn $W/cal
 bd; TMPDIR=$W/rotmp tryt 120 "(b) planeWave, TMPDIR read-only" planeWave; grep -a -c Traceback $W/try.log; tail -2 $W/try.log | cut -c1-200
-sod; TMPDIR=$W/rotmp tryt 120 "(c) sweepCase, TMPDIR read-only" sweepCase -entry system/controlDict/maxCo -values "0.4 0.45" -run rhoRiemannFoam -output "co=system/controlDict:/maxCo +([0-9.]+)/"; grep -a -c Traceback $W/try.log; tail -4 $W/try.log | cut -c1-200
+sod; TMPDIR=$W/rotmp tryt 120 "(c) sweepCase, TMPDIR read-only" sweepCase -entry system/controlDict/maxCo -values "0.4 0.45" -run rhoRiemannFoam -output "t=0.007/uniform/time:/value +([0-9.e+-]+);/"; grep -a -c Traceback $W/try.log; tail -4 $W/try.log | cut -c1-200
