@@ -11,5 +11,5 @@ for line in open(sys.argv[1]):
     head = open(os.path.join(here, 'cases', cid + '.sh')).read().splitlines()[1]
     m = re.search(r'\((class [^,;)]*|environment)', head)
     cls = m.group(1).replace('class ', '') if m else '?'
-    note = re.sub(r'^(class [^:]*|environment): ', '', note)
+    note = re.sub(r'^(\([^)]*\) )?(class [^:]*|environment): ', r'\1', note)
     print("| %s | %s | %s | %s |" % (cid, cls, verdict.replace('(low)', ' low'), note.replace('|', '/')))
