@@ -165,6 +165,26 @@ class ValuesOneWord(TempDirTestCase):
             self.assertIn("Nothing was run", r.stderr)
             self.unchanged()
 
+    def testValueNotAPlainNumber(self):
+        """fix19d (adv46b d42): a hexadecimal number, a comma list, a
+        leading '+' and zero with a minus sign were copied and run, the
+        solver failing: refused before anything is copied, naming -values
+        and the value; a word and plain numbers still run"""
+        for values, why in (("2 0x1p-23", "'0x1p-23' is a hexadecimal"),
+                            ("1e-7,2e-7", "'1e-7,2e-7' is a list joined by"
+                                          " commas"),
+                            ("2 +3", "'+3' is a number with a '+' sign"),
+                            ("2 -0", "'-0' is zero written with a minus"),
+                            ("2 -0.0e1", "'-0.0e1' is zero written with")):
+            r = self.sweep("constant/settings/value", values)
+            self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+            self.assertIn("-values '%s'" % values, r.stderr)
+            self.assertIn(why, r.stderr)
+            self.assertIn("Nothing was copied or run", r.stderr)
+            self.unchanged()
+        r = self.sweep("constant/settings/other", "b 0")
+        self.assertNotIn("Nothing was copied", r.stderr)
+
     def testCasePathWithASpace(self):
         """adv45 b05 (b): a space in the case path was found by the first
         run's solver, its run folder left beside the case: refused before

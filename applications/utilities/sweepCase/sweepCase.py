@@ -450,6 +450,11 @@ def main():
                     "word of the entry (a number or a name), without ; { } "
                     "\" # \\. Nothing was run"
                     % (a.values, v, " ".join("'%s'" % c for c in bad)))
+            why = options.valueWordProblem(v)
+            if why:
+                raise SweepError(
+                    "-values '%s': the value '%s' is %s. Nothing was copied"
+                    " or run" % (a.values, v, why))
         # every value carried by the dictionary as the runs read it
         # (adv44 a15): checked before anything is copied or run
         p = os.path.join(case, f)
