@@ -166,6 +166,27 @@ class Dictionary(Study):
         self.refused(r"entry 'step' = 0 is outside the valid range "
                      r"\(0, inf\)", ("step        0.2", "step 0"))
 
+    def testStepThatMovesNoParameter(self):
+        """fix19d (adv47b f25): a step that leaves a parameter's value
+        unchanged in double precision (p e^1e-17 == p) was accepted, its
+        runs the 'about' run and the half-width 0: refused naming the
+        entry, the parameter and a step that moves it"""
+        self.refused(r"entry 'step' = 1e-17 does not move parameter "
+                     r"cytoplasm.C10 = 0.1788 Pa: 0.1788 e\^\(\+-1e-17\) is "
+                     r"0.1788 in double precision(.|\n)*Give a step of at "
+                     r"least [0-9.e-]+",
+                     ("step        0.2", "step 1e-17"),
+                     ("checkStep   0.1", "checkStep 2e-17"))
+        self.refused(r"entry 'checkStep' = 1e-17 does not move parameter",
+                     ("checkStep   0.1", "checkStep 1e-17"))
+        # the smallest step named moves it
+        s = self.study()
+        u = dict(s["uncertainty"], step=1e-17)
+        import re
+        least = float(re.search(r"at least (\S+)",
+                                unc.stepProblem(u)).group(1))
+        self.assertIsNone(unc.stepProblem(dict(u, step=least)))
+
     def testSameSteps(self):
         self.refused(r"entry 'checkStep' = step = 0.2",
                      ("checkStep   0.1", "checkStep 0.2"))
