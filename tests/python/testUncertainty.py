@@ -123,6 +123,16 @@ class Dictionary(Study):
         self.assertEqual(u["parameters"][0]["value"], 1.67)
         self.assertEqual(len(unc.runs(u)), 2 + 2*2)
 
+    def testCorrelationNone(self):
+        """fix19d (adv47b f64): 'correlation none;', the user guide's
+        words for independent parameters, was refused as not a row"""
+        u = self.study(("((cytoplasm.C10 nucleus.C10 -0.60))", "none"))[
+            "uncertainty"]
+        self.assertTrue(u["independent"])
+        self.assertEqual(u["correlation"].tolist(), [[1, 0], [0, 1]])
+        self.refused(r"'none' or no entry: independent",
+                     ("((cytoplasm.C10 nucleus.C10 -0.60))", "nothing"))
+
     def testVariantsOnly(self):
         text = """{ pulses ((30e6 2e-9) (10e6 5e-9));
                     variants { text { materials text; } } }"""

@@ -324,6 +324,10 @@ def read(d, where, base, grid, project):
         n = len(names)
         R = np.eye(n)
         corr = d.get("correlation", [])
+        # 'none': independent, as leaving the entry out (the user guide's
+        # example; adv47b f64: refused as not a row)
+        if corr == "none":
+            corr = []
         if not isinstance(corr, list):
             corr = [corr]
         for c in corr:
@@ -335,7 +339,8 @@ def read(d, where, base, grid, project):
                 raise UncertaintyError(
                     "%s: entry 'correlation': %s is not (<parameter> "
                     "<another parameter> <correlation in [-1, 1]>) "
-                    "(parameters: %s)" % (w, foamDict.format_value(c),
+                    "(parameters: %s; 'none' or no entry: independent)"
+                    % (w, foamDict.format_value(c),
                                           " ".join(names)))
             i, j = names.index(c[0]), names.index(c[1])
             if R[i, j] != 0:
