@@ -185,6 +185,27 @@ class ValuesOneWord(TempDirTestCase):
         r = self.sweep("constant/settings/other", "b 0")
         self.assertNotIn("Nothing was copied", r.stderr)
 
+    def testTooManyRuns(self):
+        """fix19d (adv47b f55): 10000 values were accepted and run, every
+        run's folder kept to the end: above -maxRuns (default 1000)
+        refused before anything is copied; -maxRuns raises it"""
+        many = " ".join(str(i) for i in range(1, 1002))
+        r = self.sweep("constant/settings/value", many)
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertIn("-values gives 1001 values, 1001 runs of the case",
+                      r.stderr)
+        self.assertIn("more than -maxRuns 1000", r.stderr)
+        self.assertIn("Nothing was copied or run", r.stderr)
+        self.unchanged()
+        r = subprocess.run(
+            [sys.executable, SWEEP, "-case", os.path.join(self.tmp, "case"),
+             "-entry", "constant/settings/value", "-values", "1 2 3",
+             "-maxRuns", "2", "-run", "true", "-output", "n=out.txt:0:b"],
+            capture_output=True, text=True)
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertIn("more than -maxRuns 2", r.stderr)
+        self.unchanged()
+
     def testCasePathWithASpace(self):
         """adv45 b05 (b): a space in the case path was found by the first
         run's solver, its run folder left beside the case: refused before
