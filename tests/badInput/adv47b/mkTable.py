@@ -8,7 +8,7 @@ for line in open(sys.argv[1]):
     if line.startswith('#') or not line.strip():
         continue
     cid, verdict, note = (line.rstrip('\n').split(None, 2) + [''])[:3]
-    head = open(os.path.join(here, 'cases', cid + '.sh')).read().splitlines()[1]
+    head = next(l for l in open(os.path.join(here, 'cases', cid + '.sh')) if l.startswith('# ' + cid + ' '))
     m = re.search(r'\((class [^,;)]*|environment)', head)
     cls = m.group(1).replace('class ', '') if m else '?'
     note = re.sub(r'^(\([^)]*\) )?(class [^:]*|environment): ', r'\1', note)
