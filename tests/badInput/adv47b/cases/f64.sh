@@ -1,5 +1,5 @@
 #!/bin/bash
-# f64 (class 4/SILENT check of f25): the uncertainty with one parameter (cytoplasm.C10, forward differences), step 1e-17 and checkStep 2e-17 in ln p, the small preview (2 ns), -keep: the linearisation runs' material values equal the 'about' variant's to every digit (p e^(1e-17) == p), so their indicators equal it and every half-width is 0. Correct: refused before running (a step that moves no parameter), or a warning/error after; wrong: uncertainty.csv with half-widths 0 and exit 0.
+# f64 (class 4, the SILENT check of f25): the uncertainty with one parameter (cytoplasm.C10, forward differences), step 1e-17 and checkStep 2e-17 in ln p, the small preview (2 ns), -keep: the linearisation runs' material values equal the 'about' variant's to every digit (p e^(1e-17) == p), so their indicators equal it and every half-width is 0. Correct: refused before running (a step that moves no parameter), or a warning/error after; wrong: uncertainty.csv with half-widths 0 and exit 0.
 # (corrected after its first run: "correlation none;" (the user guide's comment "none: independent") is refused; the entry is left out instead)
 . "$(dirname "$0")/../lib.sh"
 study; setStudy nProcs 2; cp $ROOT/tutorials/blast/pulseStudy/system/pulseStudyDict.uncertainty system/; /usr/bin/python3 - system/pulseStudyDict.uncertainty <<'P'
