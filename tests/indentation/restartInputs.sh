@@ -48,8 +48,11 @@ rm -f .runLock
 # The checkpoint's row (from 1): rows after it have not run
 row=$(/usr/bin/python3 -c "import h5py; print(int(h5py.File('$out/restart.h5')['row'][0]) + 1)")
 echo "killed in stage C1; checkpoint in row $row"
+# (the record read whole: h5dump wraps a long text attribute across lines,
+# and the record with the materials by entry, fix19d, is cut inside
+# "row 1" where the test looked for it)
 check "the checkpoint records its inputs and lies before row 5" \
-    "[ $row -lt 5 ] && h5dump -a inputDigests $out/restart.h5 | grep -q \"entry 'protocol', row 1\""
+    "[ $row -lt 5 ] && /usr/bin/python3 -c \"import h5py, sys; t = h5py.File('$out/restart.h5', 'r').attrs['inputDigests']; t = t.decode() if isinstance(t, bytes) else str(t); sys.exit(\\\"entry 'protocol', row 1\\\" not in t)\""
 
 # refusedAfter NAME FILE EXPECTED COMMAND: run COMMAND in a copy of the
 # killed case, restart, expect the refusal with the line EXPECTED (the
