@@ -1,4 +1,5 @@
 #include "indentationInput.H"
+#include "solidInput.H"
 #include "inputChecks.H"
 #include "keywordCheck.H"
 #include "resultGuard.H"
@@ -73,9 +74,15 @@ Foam::indentationInput::indentationInput
     if (settings_.holdDeltaT0 > settings_.maxDeltaT)
     {
         FatalIOErrorInFunction(d)
-            << "entry 'holdDeltaT0' = " << settings_.holdDeltaT0 << " s is "
-            << "outside the valid range (0, " << settings_.maxDeltaT
-            << "] s: at most maxDeltaT (" << settings_.maxDeltaT << " s), "
+            << "entry 'holdDeltaT0' = "
+            << foamTools::numberText(settings_.holdDeltaT0).c_str()
+            << " s is outside the valid range "
+            << foamTools::rangeText
+               (
+                   0.0, settings_.maxDeltaT, false,
+                   foamTools::numberText(settings_.holdDeltaT0)
+               ).c_str()
+            << " s: at most maxDeltaT (" << settings_.maxDeltaT << " s), "
             << "the largest step" << exit(FatalIOError);
     }
 
@@ -88,8 +95,15 @@ Foam::indentationInput::indentationInput
         if (sphere_.tolerance > hi)
         {
             FatalIOErrorInFunction(d)
-                << "entry 'tolerance' = " << sphere_.tolerance << " m is "
-                << "outside the valid range (0, " << hi << "] m: at most a "
+                << "entry 'tolerance' = "
+                << foamTools::numberText(sphere_.tolerance).c_str()
+                << " m is outside the valid range "
+                << foamTools::rangeText
+                   (
+                       0.0, hi, false,
+                       foamTools::numberText(sphere_.tolerance)
+                   ).c_str()
+                << " m: at most a "
                 << "tenth of maxDepthIncrement (" << settings_.maxDepthIncrement
                 << " m); a larger penetration lets the sphere sink into the "
                 << "cell without its contact force" << exit(FatalIOError);
@@ -408,7 +422,8 @@ Foam::label Foam::indentationInput::rowOf(const std::string& name)
 void Foam::indentationInput::checkRestart
 (
     const fileName& checkpoint,
-    const foamTools::inputRecord::digestMap& inputs
+    const foamTools::inputRecord::digestMap& inputs,
+    const std::map<std::string, std::string>& sources
 ) const
 {
     using foamTools::inputRecord;
@@ -448,7 +463,8 @@ void Foam::indentationInput::checkRestart
     {
         it = rowOf(it->first) > lastRow ? was.erase(it) : std::next(it);
     }
-    const std::string list(inputRecord::differences(now, was));
+    solidInput::sameVersion(now, was);
+    const std::string list(inputRecord::differences(now, was, sources));
     if (!list.empty())
     {
         FatalErrorInFunction
@@ -683,11 +699,12 @@ std::unique_ptr<solid::IndentationDriver> Foam::indentationInput::driver
     solid::Model& model,
     const std::shared_ptr<solid::RigidSphereContact>& contact,
     const fileName& outDir,
-    const foamTools::inputRecord::digestMap& inputs
+    const foamTools::inputRecord::digestMap& inputs,
+    const std::map<std::string, std::string>& sources
 ) const
 {
     const bool resume = resumes(outDir);
-    checkRestart(outDir/"restart.h5", inputs);
+    checkRestart(outDir/"restart.h5", inputs, sources);
     solid::IndentationSettings settings(settings_);
     settings.inputDigests = foamTools::inputRecord::format(inputs);
     // The identity of a new run: its inputs and what decides the steps of

@@ -557,7 +557,112 @@ Foam::foamTools::inputRecord::digestMap Foam::solidInput::digests
         record[file + "'materials', region '" + region + "'"] =
             inputRecord::digest(foamTools::subDict(mats, region));
     }
+    // Since fix19d (byEntryKey): the rows of 'fixed' as a set (the same
+    // constraints in another order are the same input: adv46b d10 (a))
+    // and each material entry on its own, named by its path (adv46b d02
+    // (b): "region 'nucleus' (changed)" named neither mu1 nor the file
+    // it was read from). The keys above stay for the checkpoints of
+    // earlier builds (sameVersion)
+    record[byEntryKey()] = inputRecord::sha1(byEntryKey());
+    std::set<std::string> rows;
+    for
+    (
+        const Tuple2<word, label>& row
+      : dict_.get<List<Tuple2<word, label>>>("fixed")
+    )
+    {
+        rows.insert(row.first() + " " + std::to_string(row.second()));
+    }
+    std::string rowsText;
+    for (const std::string& row : rows)
+    {
+        rowsText += row + "\n";
+    }
+    record[fixedSetKey()] = inputRecord::sha1(rowsText);
+    for (const std::string& region : mesh.regionNames)
+    {
+        for
+        (
+            const auto& leaf
+          : inputRecord::leaves
+            (
+                foamTools::subDict(mats, region), "materials/" + region + "/"
+            )
+        )
+        {
+            record[file + "'" + leaf.first + "'"] = leaf.second;
+        }
+    }
     return record;
+}
+
+
+const char* Foam::solidInput::byEntryKey()
+{
+    return "constant/solidProperties (fixed as a set, the materials by"
+        " entry)";
+}
+
+
+std::string Foam::solidInput::fixedSetKey()
+{
+    return "constant/solidProperties, entry 'fixed' (its rows as a set)";
+}
+
+
+void Foam::solidInput::sameVersion
+(
+    foamTools::inputRecord::digestMap& now,
+    foamTools::inputRecord::digestMap& was
+)
+{
+    const std::string file("constant/solidProperties, entry ");
+    const std::string region(file + "'materials', region '");
+    const std::string material(file + "'materials/");
+    const bool byEntry = was.count(byEntryKey());
+    const auto legacy = [&](const std::string& k)
+    {
+        return k == file + "'fixed'" || k.compare(0, region.size(), region)
+         == 0;
+    };
+    const auto since = [&](const std::string& k)
+    {
+        return k == byEntryKey() || k == fixedSetKey()
+         || k.compare(0, material.size(), material) == 0;
+    };
+    for (foamTools::inputRecord::digestMap* m : {&now, &was})
+    {
+        for (auto it = m->begin(); it != m->end();)
+        {
+            const bool drop = byEntry ? legacy(it->first) : since(it->first);
+            it = drop ? m->erase(it) : std::next(it);
+        }
+    }
+}
+
+
+std::map<std::string, std::string> Foam::solidInput::sources() const
+{
+    std::map<std::string, std::string> found;
+    const std::string prefix(caseDir_ + "/");
+    for
+    (
+        const auto& item
+      : foamTools::inputRecord::entrySources
+        (
+            caseDir_/"constant"/"solidProperties"
+        )
+    )
+    {
+        std::string shown(item.second);
+        if (shown.compare(0, prefix.size(), prefix) == 0)
+        {
+            shown.erase(0, prefix.size());
+        }
+        found["constant/solidProperties, entry '" + item.first + "'"] =
+            shown;
+    }
+    return found;
 }
 
 

@@ -217,6 +217,60 @@ TEST(Hdf5, DamagedBytesAreErrorsNotValues)
 }
 
 
+// A changed byte inside an object header (a group's, a dataset's: HDF5
+// checksums each) makes the object unreadable: the error says the file is
+// damaged (fix19d, adv46b d49 (b): "cannot open dataset ... (missing?)",
+// "cannot list the members of ...", no word of damage). Each header of the
+// file ("OHDR") damaged in turn, read as solidToFoam reads a step
+TEST(Hdf5, DamagedObjectHeaderIsCalledDamaged)
+{
+    std::vector<double> x(100, 1.5);
+    {
+        Hdf5File f("header.h5", Hdf5File::Mode::create);
+        Hdf5Group steps(f, "steps", true);
+        Hdf5Group step(steps, "1", true);
+        step.write("displacement", x.data(), 50, 2);
+        step.writeAttribute("time", 1e-9);
+    }
+    std::string bytes;
+    {
+        std::ifstream is("header.h5", std::ios::binary);
+        bytes.assign(std::istreambuf_iterator<char>(is), {});
+    }
+    int failures = 0;
+    for
+    (
+        std::size_t at = bytes.find("OHDR"); at != std::string::npos;
+        at = bytes.find("OHDR", at + 4)
+    )
+    {
+        // a byte of the header's messages (its signature and version are
+        // checked before the checksum)
+        std::string damaged(bytes);
+        ASSERT_LT(at + 24, damaged.size());
+        damaged[at + 24] = char(damaged[at + 24] ^ 0x10);
+        {
+            std::ofstream os("headerDamaged.h5", std::ios::binary);
+            os << damaged;
+        }
+        const std::string msg = errorOf([] {
+            const Hdf5File f("headerDamaged.h5", Hdf5File::Mode::readOnly);
+            f.read("/steps/1/displacement");
+            Hdf5Group steps(f, "steps", false);
+            steps.members();
+            Hdf5Group(steps, "1", false).members();
+        });
+        if (!msg.empty())
+        {
+            ++failures;
+            EXPECT_NE(msg.find("damaged"), std::string::npos)
+                << "OHDR at byte " << at << ": " << msg;
+        }
+    }
+    EXPECT_GE(failures, 2);
+}
+
+
 // Fletcher-32 sums 16-bit words modulo 65535: a word 0x0000 turned into
 // 0xffff (and one 0xffff into 0x0000, a swap) leaves it unchanged, and such
 // damage was read as values (a zero displacement became a denormal, or a

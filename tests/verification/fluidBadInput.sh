@@ -61,7 +61,7 @@ expect zeroEndTime setRiemannProblem "entry 'endTime' = 0 s is outside the valid
 fresh; (cd "$work/case" && setRiemannProblem > /dev/null); sed -i 's/riemannSolver .*/riemannSolver   Roe;/' "$work/case/system/fvSolution"
 expect unknownRiemannSolver rhoRiemannFoam "Unknown riemannSolver type Roe" "HLL HLLC rusanov"
 fresh; (cd "$work/case" && setRiemannProblem > /dev/null); sed -i 's/timeScheme .*/timeScheme      RK4;/' "$work/case/system/fvSolution"
-expect unknownTimeScheme rhoRiemannFoam "RK4 is not in enumeration" "Euler SSPRK2 SSPRK3"
+expect unknownTimeScheme rhoRiemannFoam "entry 'timeScheme' in 'riemann' = 'RK4' is not one of the valid values" "(Euler SSPRK2 SSPRK3)"
 fresh; sed -i 's/^internalField .*/internalField   uniform nan;/' "$work/case/0/T"
 expect nanInitialField rhoRiemannFoam "FATAL IO ERROR" "case/0/T"
 fresh; sed -i '0,/^    rho .*/s//    rho     2100;/' "$work/case/system/riemannProblemDict"

@@ -28,6 +28,8 @@
 #  - the pulse read by tableFile from constant/tables/pulse.dat or from
 #    tables/pulse.dat (outside constant/), edited: refused naming the file
 #    (adv42 g05); unchanged: the restart runs.
+#  - rhoRiemannFoam, mieGruneisenCoeffs' entries reordered: refused, the
+#    order named as what differs (fix19d, adv46b d14 (a)).
 set -euo pipefail
 . "$(dirname "$0")/../lib/restartTools.sh"
 . "$(dirname "$0")/../lib/checks.sh"
@@ -288,6 +290,19 @@ refusedAfter "rhoRiemannFoam, water C0" rhoRiemannFoam constant/thermophysicalPr
     's/\(C0 *\)[0-9.e+-]*;/\11460;/'
 refusedAfter "rhoRiemannFoam, the Riemann solver" rhoRiemannFoam system/fvSolution \
     's/riemannSolver *HLLC;/riemannSolver HLL;/'
+# The same entries in another order (fix19d, adv46b d14 (a): refused as
+# "constant/thermophysicalProperties (changed)", nothing else named): the
+# order named as what differs, nothing changed
+rm -rf "$work/edit"; cp -r "$case" "$work/edit"; cd "$work/edit"
+sed -i '/^mieGruneisenCoeffs/,/^}/{/rho0/{h;d};/T0/{G}}' \
+    constant/thermophysicalProperties
+caseSums > "$work/before"
+status=0; rhoRiemannFoam > log.restart 2>&1 || status=$?
+caseSums > "$work/after"
+check "rhoRiemannFoam, mieGruneisenCoeffs reordered: refused, naming the order as what differs, nothing changed" \
+    "[ $status -ne 0 ] && grep -qF '    constant/thermophysicalProperties (changed: each of its entries has its recorded value; what differs is their order or an empty sub-dictionary)' log.restart \
+     && cmp -s '$work/before' '$work/after'"
+cd "$case"
 status=0; rhoRiemannFoam > log.restart 2>&1 || status=$?
 check "rhoRiemannFoam: the unchanged restart runs" \
     "[ $status -eq 0 ] && grep -q '^End' log.restart && [ -d 1.5e-08 ]"

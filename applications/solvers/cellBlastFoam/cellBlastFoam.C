@@ -130,6 +130,10 @@ int main(int argc, char *argv[])
         );
     }
 
+    // the start time's fields (but p, U, T: the record names an edited
+    // boundary condition) as the run wrote them, before they are read: a
+    // damaged rho ended in a floating-point exception (adv47a f07)
+    foamTools::writeGuard::verifyStateFields(args, runTime);
     autoPtr<dynamicFvMesh> meshPtr
     (
         fluidSolidInteraction::newMesh(args, runTime)

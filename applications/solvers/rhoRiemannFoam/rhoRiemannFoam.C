@@ -93,6 +93,10 @@ int main(int argc, char *argv[])
     // The boundary conditions' tables (a pulse): not empty, times
     // increasing, or an error naming file and patch
     foamTools::checkTables(runTime.timePath());
+    // the start time's fields (but p, U, T: the record names an edited
+    // boundary condition) as the run wrote them, before they are read: a
+    // damaged rho ended in a floating-point exception (adv47a f07)
+    foamTools::writeGuard::verifyStateFields(args, runTime);
     #include "createMesh.H"
     foamTools::checkCellVolumes(mesh);
 

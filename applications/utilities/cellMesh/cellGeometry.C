@@ -5,6 +5,9 @@
 #include "subDict.H"
 #include "keywordCheck.H"
 
+#include <cmath>
+#include <cstdlib>
+
 using Foam::constant::mathematical::pi;
 
 const Foam::Enum<Foam::cellGeometry::meshMode>
@@ -49,10 +52,10 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
         }
     );
 
-    mode_ = meshModeNames.get("mode", dict);
-    shape_ = nucleusShapeNames.getOrDefault
+    mode_ = foamTools::readEnum(meshModeNames, dict, "mode");
+    shape_ = foamTools::readEnumOrDefault
     (
-        "nucleusShape", dict, nucleusShape::centredSpheroid
+        nucleusShapeNames, dict, "nucleusShape", nucleusShape::centredSpheroid
     );
     // `fluid 5;` is an error, not "no fluid" (adv32 y01: no fluid.msh,
     // an older one left beside the new cell.msh)
@@ -200,9 +203,15 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
             if (e.second < contactSize_)
             {
                 FatalIOErrorInFunction(dict)
-                    << "entry '" << e.first << "' = " << e.second << " m is"
-                    << " outside the valid range [" << contactSize_ << ", "
-                    << (e.first[7] == 'R' ? a_ : H_) << "] m (0 for no "
+                    << "entry '" << e.first << "' = "
+                    << foamTools::numberText(e.second).c_str() << " m is"
+                    << " outside the valid range "
+                    << foamTools::rangeText
+                       (
+                           contactSize_, e.first[7] == 'R' ? a_ : H_, true,
+                           foamTools::numberText(e.second)
+                       ).c_str()
+                    << " m (0 for no "
                     << "refined zone): the zone under the contact is at "
                     << "least one of its elements (contactSize "
                     << contactSize_ << " m) wide and deep"
@@ -217,9 +226,18 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     );
     if (minimumElements() > maxElements)
     {
+        // 3 digits, or the least whole count when those would not read
+        // more than maxElements (adv47b f46: 183.4 printed "at least 183
+        // elements, more than maxElements 183")
+        const double least = std::ceil(minimumElements());
+        word count(word::printf("%.3g", least));
+        if (!(std::strtod(count.c_str(), nullptr) > maxElements))
+        {
+            count = word::printf("%.0f", least);
+        }
         FatalIOErrorInFunction(dict)
             << "The element sizes ask for at least "
-            << word::printf("%.3g", minimumElements()) << " elements, more"
+            << count.c_str() << " elements, more"
             << " than maxElements " << maxElements << " (nucleusSize "
             << nucleusSize_ << " m, cytoplasmSize " << cytoplasmSize_
             << " m, membraneSize " << membraneSize_ << " m, membraneLayers "

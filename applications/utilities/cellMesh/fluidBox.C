@@ -418,8 +418,11 @@ Foam::scalar Foam::fluidBox::readHeight
     if (!(Z > lo && Z <= L_))
     {
         FatalIOErrorInFunction(d)
-            << "entry 'height' = " << Z << " m is outside the valid range ("
-            << lo << ", " << L_ << "] m: above " << lowerBound << " ("
+            << "entry 'height' = " << foamTools::numberText(Z).c_str()
+            << " m is outside the valid range "
+            << foamTools::rangeText(lo, L_, false, foamTools::numberText(Z))
+               .c_str()
+            << " m: above " << lowerBound << " ("
             << lo << " m), at most boxSize (" << L_ << " m)"
             << exit(FatalIOError);
     }

@@ -211,6 +211,25 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
             ),
             mesh
         );
+        // A density that is no state of the fluid (0, negative, not a
+        // number: an edited or damaged rho used with -acceptEdited) ended
+        // in a floating-point exception in correctPrimitives (adv47a f07)
+        forAll(rhoWritten, celli)
+        {
+            const scalar r = rhoWritten[celli];
+            if (!(r > 0) || !std::isfinite(r))
+            {
+                FatalErrorInFunction
+                    << "the density of the restart time, "
+                    << rhoWritten.objectPath() << ", is " << r
+                    << " kg/m^3 in cell " << celli << " (at "
+                    << mesh.C()[celli] << " m): no state of the fluid"
+                    << " (valid range (0, inf) kg/m^3; the file was edited"
+                    << " or damaged after the run wrote it). Nothing was"
+                    << " run: restart from an earlier time, or start anew"
+                    << exit(FatalError);
+            }
+        }
         thermo_->rho().primitiveFieldRef() = rhoWritten.primitiveField();
         correctPrimitives();
     }

@@ -1,4 +1,5 @@
 #include "rungeKuttaScheme.H"
+#include "keywordCheck.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -15,7 +16,8 @@ Foam::rungeKuttaScheme::names
 
 Foam::rungeKuttaScheme::rungeKuttaScheme(const dictionary& dict)
 {
-    const type t = names.getOrDefault("timeScheme", dict, type::SSPRK3);
+    const type t =
+        foamTools::readEnumOrDefault(names, dict, "timeScheme", type::SSPRK3);
     switch (t)
     {
         case type::Euler: a_ = {0}; break;

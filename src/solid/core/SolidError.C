@@ -1,4 +1,5 @@
 #include "SolidError.H"
+#include "numberText.H"
 
 #include <cmath>
 #include <sstream>
@@ -18,7 +19,8 @@ void solid::checkParameter
     if (!(okLo && value < hi) || !std::isfinite(value))
     {
         std::ostringstream os;
-        os  << context << ": entry '" << entry << "' = " << value << " "
+        os  << context << ": entry '" << entry << "' = "
+            << numberText::shortest(value) << " "
             << unit << " is outside the valid range "
             << (loInclusive ? "[" : "(") << lo << ", " << hi << ")";
         throw SolidError(SolidError::Kind::parameter, os.str());

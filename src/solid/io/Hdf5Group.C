@@ -18,6 +18,31 @@ static_assert
 namespace
 {
 
+//- Whether HDF5's error stack (of the call that failed last) holds a
+//  failed checksum: a damaged object header, group index or superblock
+//  (HDF5: "incorrect metadata checksum ...")
+herr_t findChecksum(unsigned, const H5E_error2_t* e, void* out)
+{
+    if (e && e->desc && std::string(e->desc).find("checksum")
+     != std::string::npos)
+    {
+        *static_cast<bool*>(out) = true;
+    }
+    return 0;
+}
+
+bool checksumFailed()
+{
+    bool found = false;
+    H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, findChecksum, &found);
+    return found;
+}
+
+//- The words a failure whose error stack holds a failed checksum adds
+const char* const damagedNote =
+    " (a checksum of the file's structure (an object header, a group's"
+    " index) does not match: the file is damaged)";
+
 herr_t collectLink(hid_t, const char* name, const H5L_info_t*, void* out)
 {
     static_cast<std::vector<std::string>*>(out)->emplace_back(name);
@@ -131,10 +156,12 @@ solid::Hdf5Group::Hdf5Group
         : H5Gopen2(parent.id_, name.c_str(), H5P_DEFAULT);
     if (id_ < 0)
     {
+        const bool damaged = checksumFailed();
         throw SolidError
         (
             SolidError::Kind::io, "HDF5 file '" + file_ + "': cannot "
           + (create ? "create" : "open") + " group " + path_
+          + (damaged ? damagedNote : "")
         );
     }
 }
@@ -161,10 +188,15 @@ void solid::Hdf5Group::check(bool ok, const std::string& what) const
 {
     if (!ok)
     {
+        // A failed checksum of the file's structure said as damage (adv46b
+        // d49 (b): a flipped bit in an object header was "cannot open
+        // dataset ... (missing?)", "cannot list the members of ...")
+        const bool damaged =
+            what.find("damaged") == std::string::npos && checksumFailed();
         throw SolidError
         (
             SolidError::Kind::io, "HDF5 file '" + file_ + "': cannot " + what
-          + spaceNote(file_)
+          + (damaged ? damagedNote : "") + spaceNote(file_)
         );
     }
 }
@@ -308,7 +340,24 @@ std::vector<double> solid::Hdf5Group::read
 ) const
 {
     const hid_t d = H5Dopen2(id_, name.c_str(), H5P_DEFAULT);
-    check(d >= 0, "open dataset " + where(name) + " (missing?)");
+    if (d < 0)
+    {
+        // damage first (has() clears the error stack); a dataset its group
+        // lists but that cannot be opened is damaged too
+        const bool damaged = checksumFailed();
+        check
+        (
+            false,
+            "open dataset " + where(name)
+          + (
+                damaged ? damagedNote
+              : has(name)
+              ? " (its group lists it, but it cannot be opened: the file"
+                " is damaged)"
+              : " (missing?)"
+            )
+        );
+    }
     const hid_t space = H5Dget_space(d);
     hsize_t dims[2] = {0, 1};
     const int rank = space < 0 ? -1
