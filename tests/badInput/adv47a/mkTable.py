@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """mkTable.py DIR...: the table of adv47a's outputs in out/DIR (several DIRs: one table over them). An output's verdict:
 mine in verdicts.txt ("DIR PASS_ID | VERDICT | note"), else, if compare.py finds it equal to an earlier output, the
-earlier verdict: adv46b's verdictsP2.txt then verdictsP1.txt (adv46b cases), adv46a's verdicts.py, then adv46a's
+earlier verdict: adv46a's verdictsZ.py if the equal output is adv46a's out/Z, else adv46b's verdictsP2.txt then verdictsP1.txt (adv46b cases), adv46a's verdicts.py, then adv46a's
 latestVerdict.py (the latest report adv35-adv45 with a row for it). -t: also list the outputs still to judge (TODO).
 Prints counts per pass and verdict, then one row per case that is not OK or has a note of mine."""
 import sys, os, re, subprocess, collections
@@ -15,9 +15,10 @@ def b46(i):
     for f in ('verdictsP2.txt', 'verdictsP1.txt'):
         for l in reversed(open(os.path.join(bi, 'adv46b', f)).read().splitlines()):
             if l.split()[:1] == [i]: return l.split()[1].replace('-low', ' (low)') + ' [adv46b %s]' % f[8:10]
-V = {}; exec(open(os.path.join(bi, 'adv46a', 'verdicts.py')).read())
-def prior(k):
+V = {}; exec(open(os.path.join(bi, 'adv46a', 'verdicts.py')).read()); VZ = {}; exec(open(os.path.join(bi, 'adv46a', 'verdictsZ.py')).read())
+def prior(k, src=''):
     p, i = k.split('_', 1)
+    if src == 'adv46a:Z' and k in VZ: return VZ[k][0] + ' [adv46a Z]'
     if p == 'adv46b': return b46(i) or '?'
     if k in V: return V[k][0] + ' [adv46a]'
     r = subprocess.run(['/usr/bin/python3', os.path.join(bi, 'adv46a', 'latestVerdict.py'), p, i], capture_output=True, text=True).stdout
@@ -29,7 +30,7 @@ for d in args:
         if '(running)' in l or k.endswith(('.broken', '.firstTry')): continue
         if (d, k) in mine: v, n = mine[(d, k)]
         elif ' same as ' in ' ' + l + ' ' and 'NOT the latest' not in l:
-            pv = prior(k); v = pv.split(' [')[0].split(' (')[0].strip() + (' (low)' if '(low' in pv else ''); n = 'unchanged: %s; verdict there %s' % (l.split('same as ')[1], pv)
+            pv = prior(k, l.split('same as ')[1].split()[0]); v = pv.split(' [')[0].split(' (')[0].strip() + (' (low)' if '(low' in pv else ''); n = 'unchanged: %s; verdict there %s' % (l.split('same as ')[1], pv)
         else: left.append('%s %s' % (d, l)); continue
         cnt[k.split('_')[0]][v.split(' ')[0]] += 1
         if not v.startswith('OK') or (d, k) in mine: rows.append((d, k, v, n))
