@@ -163,7 +163,8 @@ def bad_targets(work):
         (PARAMS, peak % "-0.3e-9", 1, "'value' = -3e-10 N"),
         (PARAMS, peak % "0.3e-9", 1, "underdetermined"),
         ("    cytoplasm.C10 { value 1.2; min 0.1; max 20; log yes; }\n",
-         "    F { peak endX; value 0.3e-9; }\n", 1, "no peak 'endX'"),
+         "    F { peak endX; value 0.3e-9; }\n", 1,
+         "peak 'endX' is not a peak of the protocol"),
         ("    cytoplasm.c0 { value 1.2; min 0.1; max 20; log yes; }\n",
          peak % "0.3e-9", 1, "entry 'c0' is now 'C10'"),
         ("    cytoplasm.C10 { value 1.2; min 0.1; max 20; log yes; }\n",
@@ -177,6 +178,13 @@ def bad_targets(work):
               "exit %d (want %d), '%s' in: %s"
               % (rc, want, expect, out.strip().splitlines()[-1]
                  if want == 1 else expect in out))
+        # fix19d (adv46b d70): a peak the protocol does not give is
+        # refused before the forward model is set up (was: after the
+        # first forward runs): nothing written in the work folder
+        if "endX" in targets:
+            check(not os.path.exists(os.path.join(work, "c%d" % n)),
+                  "unknown peak refused before any run: no work folder %s"
+                  % os.path.join(work, "c%d" % n))
 
 
 if __name__ == "__main__":

@@ -59,3 +59,38 @@ class RunFolder(TempDirTestCase):
             self.assertEqual(f.read(), "sp\n")
         self.assertTrue(os.path.isfile(os.path.join(c, "more", "inner")))
         self.assertTrue(os.path.islink(os.path.join(c, "cell.msh")))
+
+
+class ScratchFolder(TempDirTestCase):
+
+    def testRefusedCaseLeavesNoTemporaryFolder(self):
+        """fix19d (adv46a, adv45 c05 (a)): calibrateCell refusing a case
+        before anything ran (a relative #include leaving it) left its
+        temporary work folder, empty, in the temporary directory"""
+        import subprocess
+        root = os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                            "..", "..")
+        case = os.path.join(self.tmp, "cal", "c")
+        import shutil
+        shutil.copytree(os.path.join(root, "tutorials", "calibration",
+                                     "averageCell"), case)
+        self.write("shared/set", "nucleus { C10 13.33; }\n")
+        p = os.path.join(case, "constant", "solidProperties")
+        with open(p) as f:
+            text = f.read()
+        with open(p, "w") as f:
+            f.write(text.replace(
+                '#include "$PROJECT_DIR/etc/caseDicts/cellMaterials/table"',
+                '#include "../../../shared/set"'))
+        tmpdir = os.path.join(self.tmp, "tmpdir")
+        os.makedirs(tmpdir)
+        env = dict(os.environ, TMPDIR=tmpdir)
+        r = subprocess.run(
+            [sys.executable, os.path.join(root, "applications", "utilities",
+                                          "calibrateCell",
+                                          "calibrateCell.py"),
+             "-case", case, "-nProcs", "1"],
+            capture_output=True, text=True, env=env)
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertIn("shared/set", r.stderr)
+        self.assertEqual(os.listdir(tmpdir), [])

@@ -15,7 +15,7 @@ import unittest
 import numpy as np
 
 from fixtures import TempDirTestCase
-from neuronFsi import foamDict
+from neuronFsi import foamDict, ranges
 from neuronFsi import planeWave as pw
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
@@ -343,8 +343,21 @@ class ColumnRefusesBeforeRunning(TempDirTestCase):
                                     r"takes about 1.16e\+11 time steps .*"
                                     r"c = 1450 m/s.*above the limit of 1e\+06"):
             pw.column(case, [50e-6], 100e-6, 1.0, dz=25e-9)
-        with self.assertRaisesRegex(pw.PlaneWaveError, r"limit of 1e\+03"):
+        with self.assertRaisesRegex(pw.PlaneWaveError, r"limit of 1000 "):
             pw.column(case, [50e-6], 100e-6, 1e-7, dz=25e-9, maxSteps=1000)
+        # fix19d (adv47b f47): the count printed is above the limit it is
+        # compared with (was "about 232 time steps ... above the limit of
+        # 232" for an estimate 232.x): -maxSteps set to it passes the check
+        steps = pw.estimatedSteps(case, 1e-8, 25e-9)
+        self.assertNotEqual(steps, int(steps))
+        with self.assertRaises(pw.PlaneWaveError) as cm:
+            pw.column(case, [50e-6], 100e-6, 1e-8, dz=25e-9,
+                      maxSteps=int(steps))
+        shown = re.search(r"takes about (\S+) time steps",
+                          str(cm.exception)).group(1)
+        self.assertGreater(float(shown), int(steps), str(cm.exception))
+        self.assertEqual(ranges.countAbove(232.4, 232), "233")
+        self.assertEqual(ranges.countAbove(2.5e7, 1e6), "2.5e+07")
         self.assertEqual(os.listdir(case), ["constant"])
 
 

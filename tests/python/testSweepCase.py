@@ -165,6 +165,47 @@ class ValuesOneWord(TempDirTestCase):
             self.assertIn("Nothing was run", r.stderr)
             self.unchanged()
 
+    def testValueNotAPlainNumber(self):
+        """fix19d (adv46b d42): a hexadecimal number, a comma list, a
+        leading '+' and zero with a minus sign were copied and run, the
+        solver failing: refused before anything is copied, naming -values
+        and the value; a word and plain numbers still run"""
+        for values, why in (("2 0x1p-23", "'0x1p-23' is a hexadecimal"),
+                            ("1e-7,2e-7", "'1e-7,2e-7' is a list joined by"
+                                          " commas"),
+                            ("2 +3", "'+3' is a number with a '+' sign"),
+                            ("2 -0", "'-0' is zero written with a minus"),
+                            ("2 -0.0e1", "'-0.0e1' is zero written with")):
+            r = self.sweep("constant/settings/value", values)
+            self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+            self.assertIn("-values '%s'" % values, r.stderr)
+            self.assertIn(why, r.stderr)
+            self.assertIn("Nothing was copied or run", r.stderr)
+            self.unchanged()
+        r = self.sweep("constant/settings/other", "b 0")
+        self.assertNotIn("Nothing was copied", r.stderr)
+
+    def testTooManyRuns(self):
+        """fix19d (adv47b f55): 10000 values were accepted and run, every
+        run's folder kept to the end: above -maxRuns (default 1000)
+        refused before anything is copied; -maxRuns raises it"""
+        many = " ".join(str(i) for i in range(1, 1002))
+        r = self.sweep("constant/settings/value", many)
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertIn("-values gives 1001 values, 1001 runs of the case",
+                      r.stderr)
+        self.assertIn("more than -maxRuns 1000", r.stderr)
+        self.assertIn("Nothing was copied or run", r.stderr)
+        self.unchanged()
+        r = subprocess.run(
+            [sys.executable, SWEEP, "-case", os.path.join(self.tmp, "case"),
+             "-entry", "constant/settings/value", "-values", "1 2 3",
+             "-maxRuns", "2", "-run", "true", "-output", "n=out.txt:0:b"],
+            capture_output=True, text=True)
+        self.assertEqual(r.returncode, 1, r.stdout + r.stderr)
+        self.assertIn("more than -maxRuns 2", r.stderr)
+        self.unchanged()
+
     def testCasePathWithASpace(self):
         """adv45 b05 (b): a space in the case path was found by the first
         run's solver, its run folder left beside the case: refused before

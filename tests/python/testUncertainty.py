@@ -123,6 +123,16 @@ class Dictionary(Study):
         self.assertEqual(u["parameters"][0]["value"], 1.67)
         self.assertEqual(len(unc.runs(u)), 2 + 2*2)
 
+    def testCorrelationNone(self):
+        """fix19d (adv47b f64): 'correlation none;', the user guide's
+        words for independent parameters, was refused as not a row"""
+        u = self.study(("((cytoplasm.C10 nucleus.C10 -0.60))", "none"))[
+            "uncertainty"]
+        self.assertTrue(u["independent"])
+        self.assertEqual(u["correlation"].tolist(), [[1, 0], [0, 1]])
+        self.refused(r"'none' or no entry: independent",
+                     ("((cytoplasm.C10 nucleus.C10 -0.60))", "nothing"))
+
     def testVariantsOnly(self):
         text = """{ pulses ((30e6 2e-9) (10e6 5e-9));
                     variants { text { materials text; } } }"""
@@ -165,6 +175,27 @@ class Dictionary(Study):
     def testStepZero(self):
         self.refused(r"entry 'step' = 0 is outside the valid range "
                      r"\(0, inf\)", ("step        0.2", "step 0"))
+
+    def testStepThatMovesNoParameter(self):
+        """fix19d (adv47b f25): a step that leaves a parameter's value
+        unchanged in double precision (p e^1e-17 == p) was accepted, its
+        runs the 'about' run and the half-width 0: refused naming the
+        entry, the parameter and a step that moves it"""
+        self.refused(r"entry 'step' = 1e-17 does not move parameter "
+                     r"cytoplasm.C10 = 0.1788 Pa: 0.1788 e\^\(\+-1e-17\) is "
+                     r"0.1788 in double precision(.|\n)*Give a step of at "
+                     r"least [0-9.e-]+",
+                     ("step        0.2", "step 1e-17"),
+                     ("checkStep   0.1", "checkStep 2e-17"))
+        self.refused(r"entry 'checkStep' = 1e-17 does not move parameter",
+                     ("checkStep   0.1", "checkStep 1e-17"))
+        # the smallest step named moves it
+        s = self.study()
+        u = dict(s["uncertainty"], step=1e-17)
+        import re
+        least = float(re.search(r"at least (\S+)",
+                                unc.stepProblem(u)).group(1))
+        self.assertIsNone(unc.stepProblem(dict(u, step=least)))
 
     def testSameSteps(self):
         self.refused(r"entry 'checkStep' = step = 0.2",

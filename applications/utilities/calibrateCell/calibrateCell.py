@@ -270,6 +270,7 @@ class Calibration:
             raise InputError("%s: 'protocol' must be a list of rows "
                              "(stage motion rate amount)" % where)
         self._check_curve_times(protocol, where)
+        self._check_peak_labels(protocol, where)
         print("Forward model: cellIndentationFoam in %s" % args.work)
         self.model = ForwardModel(self.case, args.work,
                                   setting(d, "meshSizeFactor", 1.0, where,
@@ -315,6 +316,25 @@ class Calibration:
                     "s" % (it["file"], it["time"][-1], src, end,
                            " with delta0 at its min %g m" % first
                            if delta0 and delta0[0].fit else "", end))
+
+    def _check_peak_labels(self, protocol, where):
+        """Each peak target's label one of those the protocol's rows give
+        peaks.dat (the dictionary's protocol, else the case's), before
+        any forward run (adv46b d70)."""
+        src = "%s: entry 'protocol'" % where
+        if protocol is None:
+            ip_path = os.path.join(self.case, "constant",
+                                   "indenterProperties")
+            try:
+                protocol = foamDict.read(ip_path).get("protocol")
+            except (OSError, foamDict.DictError):
+                return          # the forward model's set-up names it
+            src = "%s: entry 'protocol'" % ip_path
+        if not isinstance(protocol, list):
+            return              # cellIndentationFoam names it
+        labels = indenterProperties.protocolPeakLabels(protocol)
+        if labels is not None:
+            self.targets.check_peaks(labels, src)
 
     def _check_names(self, where):
         regions = self.model.materials
@@ -702,9 +722,14 @@ def main():
         args.work = args.work or tempfile.mkdtemp(prefix="calibrateCell.")
         return Calibration(args.case, dict_path, args).run()
     except ModelError as err:
-        # the scratch folder stays: the message points into it
+        # the scratch folder stays when the message may point into it:
+        # when it holds more than the forward model's marker (adv45 c05
+        # (a): a case refused before anything was written left an empty
+        # /tmp/calibrateCell.X)
         print("calibrateCell: error: %s" % err, file=sys.stderr)
-        own = False
+        own = own and args.work is not None and os.path.isdir(args.work) \
+            and not [n for n in os.listdir(args.work)
+                     if n != ".calibrateCellWork"]
         return 1
     except (InputError, TargetError, foamDict.DictError) as err:
         print("calibrateCell: error: %s" % err, file=sys.stderr)

@@ -275,6 +275,23 @@ class Targets:
     def size(self):
         return sum(len(it["value"]) for it in self.items)
 
+    def check_peaks(self, labels, src):
+        """TargetError naming the first peak target whose label is not one
+        of labels, the peaks.dat labels of the protocol src (neuronFsi.
+        indenterProperties.protocolPeakLabels), before any forward run
+        (adv46b d70: 'endX' was refused after the first runs, ~2.5 min)."""
+        for it in self.items:
+            if it["kind"] == "peak" and it["peak"] not in labels:
+                raise TargetError(
+                    "target '%s': peak '%s' is not a peak of the protocol "
+                    "(%s), whose peaks.dat labels are: %s%s (a load row "
+                    "followed by an unload row of its stage is '<stage>,i', "
+                    "',ii', ...; a hold row ending its stage 'end<stage>'). "
+                    "Nothing was run"
+                    % (it["name"], it["peak"], src,
+                       ", ".join(labels) or "none",
+                       foamDict.did_you_mean(it["peak"], labels)))
+
     def model_values(self, run):
         """Model forces [N] at the targets from a forward run (dict with
         'peaks': label -> force, 'time', 'force' arrays)."""

@@ -25,6 +25,7 @@ Usage
     sweepCase -entry <file>/<key>[/<key>...] -values "<v1> <v2> ..."
               -output <name>=<file>:<row>:<column> [-output ...]
               [-case dir] [-run "<command>"] [-nProcs N] [-name n] [-keep]
+              [-maxRuns N]
 
     -entry   the entry to vary, e.g.
              constant/solidProperties/materials/nucleus/C10 or
@@ -39,6 +40,9 @@ Usage
              last match (e.g. log.cellIndentationFoam:/CPU time (\\S+) s/)
     -run     command run in each copy (default ./Allrun, else the
              controlDict application)
+    -maxRuns the most values (runs) of a sweep (default 1000, pulseStudy's
+             maxPoints): each run is a copy of the case, kept until the
+             sweep ends, and a whole run of its command
 
     Example (the load step of the indentation, F_B and the CPU time):
         sweepCase -case tutorials/indentation/averageCell \\
@@ -390,6 +394,11 @@ def run_one(case, copy, f, keys, value, outputs, command):
     return values, wall
 
 
+# The most runs of a sweep unless -maxRuns raises it (pulseStudy's
+# MAX_POINTS, its maxPoints entry)
+MAX_RUNS = 1000
+
+
 def main():
     ap = argparse.ArgumentParser(prog="sweepCase", description="Run a case "
                                  "over values of one entry and tabulate "
@@ -402,6 +411,7 @@ def main():
     ap.add_argument("-nProcs", type=int, default=1)
     ap.add_argument("-name")
     ap.add_argument("-keep", action="store_true")
+    ap.add_argument("-maxRuns", type=int, default=MAX_RUNS)
     a = options.parse(ap)
     lock = None
     base, made_base = None, False
@@ -409,6 +419,9 @@ def main():
         if a.nProcs < 1:
             raise SweepError("-nProcs %d is outside the valid range [1, inf)"
                              " (runs at a time)" % a.nProcs)
+        if a.maxRuns < 1:
+            raise SweepError("-maxRuns %d is outside the valid range [1, "
+                             "inf) (the most values of a sweep)" % a.maxRuns)
         case = os.path.abspath(a.case)
         if not os.path.isdir(case):
             raise SweepError("-case %s: no such directory" % case)
@@ -434,6 +447,16 @@ def main():
         values = a.values.split()
         if not values:
             raise SweepError("-values: empty")
+        # the runs counted before anything is copied (adv47b f55: 10000
+        # values accepted, ~4.4 h of runs, every run's folder kept to the
+        # end, ~5 GB), as pulseStudy's maxPoints
+        if len(values) > a.maxRuns:
+            raise SweepError(
+                "-values gives %d values, %d runs of the case (each a copy "
+                "of it kept until the sweep ends, and a whole run of its "
+                "command), more than -maxRuns %d: give fewer values, or "
+                "raise -maxRuns if that many is meant. Nothing was copied "
+                "or run" % (len(values), len(values), a.maxRuns))
         # each value one token of the entry, checked before anything runs
         # (adv44 a26: nan, "22e-6;fixed" and "}" ran the values before them
         # and then failed at their own run)
@@ -450,6 +473,11 @@ def main():
                     "word of the entry (a number or a name), without ; { } "
                     "\" # \\. Nothing was run"
                     % (a.values, v, " ".join("'%s'" % c for c in bad)))
+            why = options.valueWordProblem(v)
+            if why:
+                raise SweepError(
+                    "-values '%s': the value '%s' is %s. Nothing was copied"
+                    " or run" % (a.values, v, why))
         # every value carried by the dictionary as the runs read it
         # (adv44 a15): checked before anything is copied or run
         p = os.path.join(case, f)

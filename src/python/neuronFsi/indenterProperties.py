@@ -50,3 +50,34 @@ def protocolDuration(rows, firstAmount=None):
         else:
             return None
     return total
+
+
+_ROMAN = ("i", "ii", "iii", "iv", "v", "vi", "vii", "viii", "ix", "x")
+
+
+def protocolPeakLabels(rows):
+    """The labels of peaks.dat that cellIndentationFoam writes for a
+    protocol's rows (stage, kind, rate, amount), in order, as
+    src/solid/drivers/IndentationProtocol.C (peaks) and IndentationDriver.C
+    give them: a load row followed by an unload row of its stage is a peak
+    '<stage>,i', ',ii', ... (counted while the peaks' stage stays the
+    same; from the 11th '<stage>,11'), a hold row that ends its stage
+    (the last row, or the next row of another stage) 'end<stage>'. None
+    when a row is not such a row (its reader names it)."""
+    labels = []
+    try:
+        rows = [(str(r[0]), str(r[1])) for r in rows]
+    except (IndexError, TypeError):
+        return None
+    stage, count = None, 0
+    for i, (st, kind) in enumerate(rows):
+        nxt = rows[i + 1] if i + 1 < len(rows) else None
+        if kind == "load" and nxt is not None and nxt[1] == "unload" \
+                and nxt[0] == st:
+            count = count + 1 if st == stage else 0
+            stage = st
+            labels.append("%s,%s" % (st, _ROMAN[count] if count < 10
+                                     else str(count + 1)))
+        elif kind == "hold" and (nxt is None or nxt[0] != st):
+            labels.append("end" + st)
+    return labels

@@ -223,6 +223,37 @@ def numbersNotPlain(parser, argv):
     return out
 
 
+def valueWordProblem(word):
+    """Why word, one value of an option that gives an entry's value (a
+    number or a name; sweepCase -values), is not one OpenFOAM reads as the
+    number it looks like, or None: a word beginning as a number must be a
+    plain decimal number: a hexadecimal one ('0x1p-23', read as the tokens
+    0 and x1p-23), one with a leading '+' (a token of its own), a list
+    joined by commas ('1e-7,2e-7', read as 1e-07 followed by a word) are
+    not; nor is zero with a minus sign ('-0', the same value as 0, read as
+    -0: refused by an entry whose range begins above 0, accepted as 0
+    otherwise). adv46b d42: each was copied and run, and the solver
+    failed."""
+    if not re.match(r"[+-]?\.?\d", word):
+        return None
+    if re.fullmatch(r"-?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?", word):
+        if word.startswith("-") and float(word) == 0:
+            return ("zero written with a minus sign (the same value as 0, "
+                    "which OpenFOAM reads as -0): write 0")
+        return None
+    if "," in word:
+        return ("a list joined by commas (OpenFOAM reads one number and "
+                "then a word): give the values separated by spaces")
+    if re.match(r"[+-]?0[xX]", word):
+        return ("a hexadecimal number (OpenFOAM reads the prefix 0x as the "
+                "end of the number 0): write it in decimal")
+    if word.startswith("+"):
+        return ("a number with a '+' sign (OpenFOAM reads the sign as a "
+                "token of its own): write it without the sign")
+    return ("not a plain decimal number (digits 0-9, one '.', an exponent "
+            "e<digits>): OpenFOAM would not read it as one number")
+
+
 def parse(parser, argv=None):
     """parser.parse_args of argv (default: the command line) with negative
     values taken as values, each option given at most once (a usage error

@@ -58,7 +58,7 @@ import tempfile
 
 import numpy as np
 
-from . import foamDict
+from . import foamDict, ranges
 from . import foamField
 from . import postProcessing
 from . import script
@@ -626,17 +626,19 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
                              % endTime)
     if Z/dz > maxCells:
         raise PlaneWaveError(
-            "a column of %g m in cells of %g m has %.3g cells, above the "
+            "a column of %g m in cells of %g m has %s cells, above the "
             "limit of %d (-maxCells raises it; the run's cost grows as the "
-            "square of the cell count)" % (Z, dz, Z/dz, maxCells))
+            "square of the cell count)"
+            % (Z, dz, ranges.countAbove(Z/dz, maxCells), maxCells))
     steps = estimatedSteps(case, endTime, dz, maxCo)
     if not steps <= maxSteps:
         raise PlaneWaveError(
-            "a column to %g s in cells of %g m takes about %.3g time steps "
+            "a column to %g s in cells of %g m takes about %s time steps "
             "(end time / (maxCo %g x dz / c), c = %g m/s the sound speed at "
-            "rest), above the limit of %.3g (-maxSteps raises it; a shorter "
+            "rest), above the limit of %g (-maxSteps raises it; a shorter "
             "-endTime or a coarser -dz takes fewer)"
-            % (endTime, dz, steps, maxCo, soundSpeedAtRest(case), maxSteps))
+            % (endTime, dz, ranges.countAbove(steps, maxSteps), maxCo,
+               soundSpeedAtRest(case), maxSteps))
     n = int(round(Z/dz))
     if n < 1 or abs(n*dz - Z) > 1e-9*Z:
         raise PlaneWaveError("dz %g m does not divide the column height "

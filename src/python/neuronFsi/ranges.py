@@ -71,3 +71,14 @@ def readerRangeProblem(token, v):
         return ("is below the smallest magnitude OpenFOAM reads (1e-300): "
                 "it would be read as 0")
     return ""
+
+
+def countAbove(x, limit):
+    """The text of an estimated count x compared with the limit it exceeds:
+    3 significant digits, or the least whole count (ceil) when those would
+    not read above the limit (adv47b f47: "about 232 time steps ... above
+    the limit of 232" for an estimate 232.x), so that the limit set to the
+    number printed is no longer refused."""
+    least = math.ceil(x)
+    text = "%.3g" % least
+    return text if float(text) > limit else "%d" % least

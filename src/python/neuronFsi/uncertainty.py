@@ -324,6 +324,10 @@ def read(d, where, base, grid, project):
         n = len(names)
         R = np.eye(n)
         corr = d.get("correlation", [])
+        # 'none': independent, as leaving the entry out (the user guide's
+        # example; adv47b f64: refused as not a row)
+        if corr == "none":
+            corr = []
         if not isinstance(corr, list):
             corr = [corr]
         for c in corr:
@@ -335,7 +339,8 @@ def read(d, where, base, grid, project):
                 raise UncertaintyError(
                     "%s: entry 'correlation': %s is not (<parameter> "
                     "<another parameter> <correlation in [-1, 1]>) "
-                    "(parameters: %s)" % (w, foamDict.format_value(c),
+                    "(parameters: %s; 'none' or no entry: independent)"
+                    % (w, foamDict.format_value(c),
                                           " ".join(names)))
             i, j = names.index(c[0]), names.index(c[1])
             if R[i, j] != 0:
@@ -363,6 +368,9 @@ def read(d, where, base, grid, project):
             raise UncertaintyError("%s: entry 'checkStep' = step = %g: a "
                                    "second, other step checks the first"
                                    % (w, s["step"]))
+        why = stepProblem(s)
+        if why:
+            raise UncertaintyError("%s: %s" % (w, why))
     else:
         for k in ("about", "correlation", "difference", "step",
                   "checkStep"):
@@ -406,6 +414,37 @@ def runs(u):
                                            "+" if sgn > 0 else "-",
                                            _tag(h)), change))
     return out
+
+
+def stepProblem(u):
+    """Why a finite-difference step of u (its 'step' or 'checkStep') does
+    not move every parameter, or None: a run of a parameter moved by the
+    step whose value is the parameter's own in double precision (p e^(+-
+    step) == p, p (1 +- step) == p) is the 'about' run again, its
+    derivative 0 and the indicators' half-width 0, without a word (adv47b
+    f25: step 1e-17). Names the entry, the parameter and the smallest step
+    (a power of 2) that moves it both ways."""
+    signs = (1, -1) if u["difference"] == "central" else (1,)
+    for k in ("step", "checkStep"):
+        h = u[k]
+        for p in u["parameters"]:
+            if all(perturbed(p, sgn*h) != p["value"] for sgn in signs):
+                continue
+            least = 2.0**-60
+            while not all(perturbed(p, sgn*least) != p["value"]
+                          for sgn in signs):
+                least *= 2
+            return ("entry '%s' = %g does not move parameter %s = %r %s: "
+                    "%s is %r in double precision, so that run would be the "
+                    "'about' run and the derivative 0 (the half-width 0). "
+                    "Give a step of at least %r (a step much larger than "
+                    "that: the derivative is a difference of the runs' "
+                    "indicators, each known to some digits)"
+                    % (k, h, p["name"], p["value"], p["unit"],
+                       "%r e^(+-%g)" % (p["value"], h) if p["log"]
+                       else "%r (1 +- %g)" % (p["value"], h),
+                       p["value"], least))
+    return None
 
 
 def perturbed(p, dx):
