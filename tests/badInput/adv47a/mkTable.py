@@ -18,6 +18,7 @@ def b46(i):
 V = {}; exec(open(os.path.join(bi, 'adv46a', 'verdicts.py')).read()); VZ = {}; exec(open(os.path.join(bi, 'adv46a', 'verdictsZ.py')).read())
 def prior(k, src=''):
     p, i = k.split('_', 1)
+    if src.startswith('adv47a:') and (src[7:], k) in mine: return mine[(src[7:], k)][0] + ' [adv47a %s]' % src[7:]
     if src == 'adv46a:Z' and k in VZ: return VZ[k][0] + ' [adv46a Z]'
     if p == 'adv46b': return b46(i) or '?'
     if k in V: return V[k][0] + ' [adv46a]'
