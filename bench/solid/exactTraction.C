@@ -348,16 +348,7 @@ Mesh buildMesh(const std::string& spec)
     }
     else if (kind == "smooth")
     {
-        std::vector<bool> onSet(m.nNodes(), false);
-        for (const auto& s : m.nodeSets)
-            for (int n : s.second) onSet[n] = true;
-        for (int n = 0; n < m.nNodes(); ++n)
-        {
-            if (onSet[n]) continue;
-            Vec3& X = m.X[n];
-            X(1) += 0.36*(X(0) - 0.5*R)*std::sin(M_PI*X(1)/H)
-                   *std::sin(M_PI*X(0)/R);
-        }
+        solidTest::distortSmoothly(m, R, H);
     }
     m.regionNames[0] = "cytoplasm";
     m.nodeSets["fixedBottom"] = m.nodeSets.at("bottom");
