@@ -43,9 +43,13 @@ def caseData(case, times):
         late = t >= t[-1] - 40e-9
         slope = np.polyfit(t[late], vm[late], 1)[0]
         out["probe%d" % i] = dict(
-            rest=s["restVonMises"]/s["vonMises1ns"],
-            restVM=s["restVonMises"], peak=s["vonMises1ns"],
-            restStrain=s["restStrain"], slope=slope,
+            # None: the run ends before 145 ns (still running)
+            rest=(s["restVonMises"]/s["vonMises1ns"]
+                  if s["restVonMises"] is not None else np.nan),
+            restVM=(s["restVonMises"] if s["restVonMises"] is not None
+                    else np.nan), peak=s["vonMises1ns"],
+            restStrain=(s["restStrain"] if s["restStrain"] is not None
+                        else np.nan), slope=slope,
             vm=at(t, vm, times), t=t, series=vm)
     if os.path.isdir(os.path.join(case, "postProcessing", "solidInterfaces")):
         d = postProcessing.series(case, PATCHES)
