@@ -78,7 +78,7 @@ def main():
               "[Pa/ns]; von Mises [Pa] at t [ns] = %s" % (i, side, tt))
         for c, d in zip(a.cases, data):
             q = d["probe%d" % i]
-            print("  %-40s %.3f  %.3f  %.3f  %.2e  %+.4f | %s"
+            print("  %-40s %.4f  %.3f  %.3f  %.2e  %+.4f | %s"
                   % (c[-40:], q["rest"], q["restVM"], q["peak"],
                      q["restStrain"], q["slope"]*1e-9,
                      "  ".join("%7.3f" % v for v in q["vm"])))
