@@ -2,6 +2,7 @@
 """The flow left behind by the pulse in the blast preview (not a test).
 
     bench/blast/residualFlow.py CASE [--time T] [--bin B] [--extent E]
+                                [--energy AFTER]
 
 CASE: a finished axisymmetric preview case. In the exact answer (the 1D
 plane wave) every particle is at rest once the pulse and its echo have
@@ -9,7 +10,12 @@ passed, so any velocity left at T (default the latest time directory) is
 error. Prints the largest water speed |U| [cm/s] in r-z bins of B [m]
 (default 2e-6) up to E [m] (default 22e-6) in r and z, then the solid's
 nodal speeds (largest and rms per region, m/s) at the write of solid.h5
-nearest T. The water's cell centres come from `postProcess -func
+nearest T. --energy AFTER: instead, the solid's kinetic energy [J] (the
+whole cell: lumped ring masses 2 pi r A rho0/4 per quadrilateral and
+node, rho0 = 1000 kg/m^3, every region's in the tutorial) at every write
+of solid.h5 from AFTER [s] on, and its ratio to the previous write's (as
+residualFlow3D.py prints it for the quarter; docs/results/blast3D.md,
+"What keeps the 3D cell flowing"). The water's cell centres come from `postProcess -func
 writeCellCentres` in a scratch copy of the case (the case itself is not
 written to). docs/results/blastPlaneWave.md, "The default at x0.7".
 """
@@ -52,13 +58,39 @@ def cellCentres(case, time):
         shutil.rmtree(work, ignore_errors=True)
 
 
+def solidEnergy(case, after):
+    with SolidResults(os.path.join(case, "solid", "solid.h5")) as s:
+        X, C = s.mesh("coordinates"), s.mesh("connectivity")
+        x, y = X[C][:, :, 0], X[C][:, :, 1]
+        area = 0.5*np.abs((x[:, 0] - x[:, 2])*(y[:, 1] - y[:, 3])
+                          - (x[:, 1] - x[:, 3])*(y[:, 0] - y[:, 2]))
+        m = np.zeros(len(X))
+        np.add.at(m, C.ravel(),
+                  np.repeat(1000.0*2*np.pi*x.mean(1)*area/4, 4))
+        print(f"solid: {len(X)} nodes, mass {m.sum():.4g} kg (whole cell)")
+        prev = None
+        for step in s.steps():
+            t = s.time(step)
+            if t < after:
+                continue
+            v = s.field(step, "velocity")
+            K = 0.5*(m*(v*v).sum(1)).sum()
+            ratio = f"{K/prev:.3f}" if prev else "-"
+            print(f"{t*1e9:7.2f} ns: kinetic energy {K:.4g} J, ratio to "
+                  f"the previous write {ratio}")
+            prev = K
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("case")
     ap.add_argument("--time", default=None)
     ap.add_argument("--bin", type=float, default=2e-6)
     ap.add_argument("--extent", type=float, default=22e-6)
+    ap.add_argument("--energy", type=float, default=None)
     a = bench.parse(ap)
+    if a.energy is not None:
+        return solidEnergy(a.case, a.energy)
     time = a.time or latestTime(a.case)
     U = foamField.internalField(os.path.join(a.case, time, "U"))
     C = cellCentres(a.case, time)

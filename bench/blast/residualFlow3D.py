@@ -5,6 +5,7 @@ docs/results/blast3D.md, "What makes the rest flow in 3D"); not a test.
     bench/blast/residualFlow3D.py CASE [--after 7.5e-8] [--fluid T ...]
                                        [--vorticity T ...] [--faces]
                                        [--zones T ...] [--front]
+                                       [--drive T T ...]
 
 CASE: a finished run of tutorials/blast/quarter3D (hexahedral cell,
 solid/solid.h5 with the states at the case's write times). In the exact
@@ -63,6 +64,20 @@ pressure within 3 ns of the first 5 %), its 10-90 % rise time and that
 largest pressure; a captured shock and a linear front of equal width
 differ in shape, not in this number.
 
+--drive T T ...: what acts on the water around the cell after the pulse
+(docs/results/blast3D.md, "What keeps the 3D cell flowing"). At each
+time, over the zones by the ellipsoidal distance d from the cell's centre
+(d < 1.2, 1.2-2, d >= 2 below z = 12 um, z >= 12 um: the column up to the
+inflow top): the gauge pressure's volume mean, its rms about the mean and
+its extremes, the acoustic speed that rms would carry (p_rms / (rho0 c),
+c from the case's water law at rest), the rms speed, the mean v_z, and
+the rms of |grad p| and of |curl U|;
+between consecutive times: the rms of rho dU/dt (the change over the
+interval) against the rms of -grad p (the mean of the two times), and
+the mean change of v_z; then the work the water does on the cell in
+each interval (fsi/coupling.dat's fluidWallWork; negative: the cell
+gives energy to the water). T: OpenFOAM time names, at least two.
+
 --faces: the water's faces on the cell (patch cellInterface, from
 `surfaceMeshExtract` in a scratch copy) by the polar angle of their
 centre on the cell (0 at the top, atan2(r/a, z/H), a = 8.4 um, H =
@@ -82,6 +97,7 @@ import numpy as np
 
 from neuronFsi import cellRefinement
 from neuronFsi import foamField as ff
+from neuronFsi import postProcessing
 from neuronFsi import scratch
 
 RHO = 1000.0
@@ -355,6 +371,80 @@ def zoneFlow(case, times):
                 for zl in range(0, 20, 4))))
 
 
+def drive(case, times):
+    from neuronFsi import planeWave
+    c0 = planeWave.soundSpeedAtRest(case)
+    F = []
+    for t in times:
+        f = postFields(case, t, ["grad(p)", "vorticity"])
+        f["U"] = ff.internalField(os.path.join(case, t, "U"))
+        f["rho"] = ff.internalField(os.path.join(case, t, "rho"))
+        F.append(f)
+    C, V = F[0]["C"], F[0]["V"]
+    d = np.sqrt((C[:, 0]**2 + C[:, 1]**2)/A**2 + C[:, 2]**2/H**2)
+    sets = [("d < 1.2", d < 1.2), ("d 1.2-2", (d >= 1.2) & (d < 2)),
+            ("d >= 2, z < 12 um", (d >= 2) & (C[:, 2] < 12e-6)),
+            ("z >= 12 um", C[:, 2] >= 12e-6)]
+    print("zones (cells): %s; water's sound speed at rest %.1f m/s"
+          % (", ".join("%s (%d)" % (n, s.sum()) for n, s in sets), c0))
+
+    def rms(w, x):
+        return np.sqrt((w*(x*x if x.ndim == 1 else (x*x).sum(1))).sum())
+    for t, f in zip(times, F):
+        curl = f["vorticity"]
+        print("t %s s: gauge p mean, rms about it, min, max [Pa]; p_rms/"
+              "(rho0 c) [m/s]; rms speed, mean v_z [m/s]; rms |grad p| "
+              "[Pa/m], |curl U| [1/s]" % t)
+        for n, s in sets:
+            w = V[s]/V[s].sum()
+            p = f["p"][s]
+            m = (w*p).sum()
+            sd = rms(w, p - m)
+            print("   %-18s %+.3e %.3e %+.3e %+.3e; %.2e; %.4f %+.4f; "
+                  "%.3e %.3e" % (
+                      n, m, sd, p.min(), p.max(), sd/(RHO*c0),
+                      rms(w, f["U"][s]), (w*f["U"][s][:, 2]).sum(),
+                      rms(w, f["grad(p)"][s]), rms(w, curl[s])))
+    for (ta, fa), (tb, fb) in zip(zip(times, F), zip(times[1:], F[1:])):
+        dt = float(tb) - float(ta)
+        print("%s to %s s: rms rho dU/dt, rms -grad p, rms of their "
+              "difference [Pa/m]; mean change of v_z [m/s]" % (ta, tb))
+        for n, s in sets:
+            w = V[s]/V[s].sum()
+            acc = (0.5*(fa["rho"][s] + fb["rho"][s])[:, None]
+                   * (fb["U"][s] - fa["U"][s])/dt)
+            gp = -0.5*(fa["grad(p)"][s] + fb["grad(p)"][s])
+            print("   %-18s %.3e %.3e %.3e; %+.4f" % (
+                n, rms(w, acc), rms(w, gp), rms(w, acc - gp),
+                (w*(fb["U"][s][:, 2] - fa["U"][s][:, 2])).sum()))
+    # the inflow top's layer: the planeWaveInflow top passes a wave going
+    # up (w_up = p + rho0 c v_z) and takes the 1D column's incoming one
+    # (w_down = p - rho0 c v_z), which is zero once the 1D pulse's echo
+    # has left (the 1D answer at the top is at rest until the echo of the
+    # physical column's top returns); for a wave meeting the top head-on
+    # w_down in its layer is then what the top reflects
+    ztop = C[:, 2].max()
+    top = C[:, 2] > ztop - 0.3e-6
+    w = V[top]/V[top].sum()
+    print("the top layer (%d cells, z > %.2f um): rms of w_up = p + rho0 c "
+          "v_z and of w_down = p - rho0 c v_z [Pa], their ratio"
+          % (top.sum(), 1e6*(ztop - 0.3e-6)))
+    for t, f in zip(times, F):
+        up = f["p"][top] + RHO*c0*f["U"][top][:, 2]
+        down = f["p"][top] - RHO*c0*f["U"][top][:, 2]
+        print("   %s s: %.3e %.3e %.3f" % (t, rms(w, up), rms(w, down),
+                                          rms(w, down)/rms(w, up)))
+    log = "fsi/coupling.dat"
+    if os.path.isdir(os.path.join(case, "postProcessing", "fsi")):
+        d = postProcessing.series(case, log)
+        k = postProcessing.names(case, log).index("fluidWallWork")
+        W = np.interp([float(x) for x in times], d[:, 0], d[:, k])
+        print("work of the water on the cell (fsi/coupling.dat "
+              "fluidWallWork) per interval [J]: %s" % ", ".join(
+                  "%s-%s: %+.3e" % (a, b, wb - wa) for a, b, wa, wb in zip(
+                      times, times[1:], W, W[1:])))
+
+
 def front(case):
     d = np.loadtxt(os.path.join(case, "postProcessing", "fluidProbes", "0",
                                 "p"))
@@ -416,6 +506,7 @@ def main():
     a.add_argument("--faces", action="store_true")
     a.add_argument("--zones", nargs="+", default=None)
     a.add_argument("--front", action="store_true")
+    a.add_argument("--drive", nargs="+", default=None)
     o = a.parse_args()
     case = os.path.abspath(o.case)
     if o.fluid:
@@ -428,6 +519,10 @@ def main():
         return zoneFlow(case, o.zones)
     if o.front:
         return front(case)
+    if o.drive:
+        if len(o.drive) < 2:
+            a.error("--drive: at least two times")
+        return drive(case, o.drive)
     return solid(case, o.after)
 
 
