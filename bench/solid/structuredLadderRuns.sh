@@ -15,7 +15,12 @@
 #   TYPE-CELL             the driver's run (probes: bench/solid/
 #                         cellProbes.py on that mesh), fields at 66, 70,
 #                         90 ns
+#   structured-CELL-V     one setting of the driver changed on the
+#                         structured mesh: sm20 (-smooth 20) at every
+#                         CELL; sm500 (-smooth 500) and one (-oneMaterial
+#                         cytoplasm) at 0.35e-6 and 0.175e-6 if given
 # Then bench/solid/exactTractionLadder.py CELL=OUT/structured-CELL ...
+# About 3 min CPU with the default sizes.
 set -euo pipefail
 [ $# -ge 1 ] || { sed -n 2,20p "$0"; exit 1; }
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -68,4 +73,29 @@ do
             || { tail -5 "$d/log"; exit 1; }
         tail -1 "$d/log" | cut -c1-160
     done
+done
+# run DIR MESH PROBES [options]: a variant on a mesh made above
+variant() {
+    local d=$1 m=$2 probes=$3
+    shift 3
+    rm -rf "$d"
+    mkdir -p "$d"
+    cp -r "$out/tab/constant" "$out/tab/postProcessing" "$d/"
+    nice -n 10 "$exe" "$m" "$out/tab/table.dat" "$d" -probes "$probes" \
+        -fields 6.6e-8,7e-8,9e-8 "$@" > "$d/log" 2>&1 \
+        || { tail -5 "$d/log"; exit 1; }
+    tail -1 "$d/log" | cut -c1-160
+}
+for c in "${sizes[@]}"
+do
+    m=$out/mesh-structured-$c/constant/cell.msh
+    p=$out/structured-$c/probes
+    echo "== structured $c m, variants"
+    variant "$out/structured-$c-sm20" "$m" "$p" -smooth 20
+    case $c in
+        0.35e-6|0.175e-6)
+            variant "$out/structured-$c-sm500" "$m" "$p" -smooth 500
+            variant "$out/structured-$c-one" "$m" "$p" -oneMaterial cytoplasm
+            ;;
+    esac
 done
