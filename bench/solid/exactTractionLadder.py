@@ -3,7 +3,8 @@
 solid meshes (issue 17 item 4; docs/results/blastPlaneWave.md, "The solid
 alone under the exact traction"; not a test).
 
-Usage: exactTractionLadder.py [-depth D] H=DIR [H=DIR ...]
+Usage: exactTractionLadder.py [-depth D] [-nucleus AN,CN,E] H=DIR
+                              [H=DIR ...]
 
 Each DIR a run of build/bin/exactTraction with -fields (and its probes,
 after bench/solid/exactTraction.py); H its solid element size [m]. The
@@ -11,7 +12,11 @@ exact answer is uniaxial strain: the lateral strain ln J - ln|F e_z| is 0
 everywhere. Per run and field time: the rms and the largest |lateral
 strain| over the elements whose centroid lies deeper than D (default
 1e-6 m) below the loaded surface (the fields' depth column), and the
-observed order of the rms between successive runs. Then, per probe of
+observed order of the rms between successive runs; with -nucleus also
+leaving out the elements whose centroid lies within E [m] of the
+nucleus surface (r/AN)^2 + (z/CN)^2 = 1 (the scaled cell's: AN 5.82405e-6,
+CN 5.47737e-6; the distance |f|/|grad f| of that level function). Then,
+per probe of
 bench/blast/ballLadder.py (the same measures as for a coupled run): the
 von Mises 1-ns peak's error against the exact answer and its non-uniaxial
 part (b) per run, and the largest |error| and |(b)| over the point probes
@@ -29,15 +34,20 @@ sys.path.insert(0, os.path.join(here, "..", "blast"))
 import ballLadder   # noqa: E402
 
 
-def fields(d, depth):
-    """{time [s]: (rms, largest |lateral|, elements)} over depth > D"""
+def fields(d, depth, nucleus=None):
+    """{time [s]: (rms, largest |lateral|, elements)} over depth > D (and
+    farther than E from the nucleus surface, nucleus = (AN, CN, E))"""
     out = {}
     for f in glob.glob(os.path.join(d, "fields", "*.dat")):
         with open(f) as fh:
             t = float(fh.readline().split()[3])
-        a = np.genfromtxt(f, comments="#", usecols=(6, 11))
-        lat, dep = a[:, 0], a[:, 1]
+        a = np.genfromtxt(f, comments="#", usecols=(2, 3, 6, 11))
+        r, z, lat, dep = a[:, 0], a[:, 1], a[:, 2], a[:, 3]
         m = dep > depth
+        if nucleus:
+            an, cn, e = nucleus
+            level = (r/an)**2 + (z/cn)**2 - 1
+            m &= abs(level)/(2*np.hypot(r/an**2, z/cn**2)) > e
         if not m.any():
             sys.exit("exactTractionLadder.py: %s: no element deeper than %g"
                      " m" % (f, depth))
@@ -52,14 +62,22 @@ def fields(d, depth):
 def main():
     args = sys.argv[1:]
     depth = 1e-6
-    if args[:1] == ["-depth"] and len(args) > 1:
-        depth, args = float(args[1]), args[2:]
+    nucleus = None
+    while args[:1] in (["-depth"], ["-nucleus"]) and len(args) > 1:
+        if args[0] == "-depth":
+            depth = float(args[1])
+        else:
+            nucleus = tuple(float(x) for x in args[1].split(","))
+            if len(nucleus) != 3 or not all(x > 0 for x in nucleus):
+                sys.exit("exactTractionLadder.py: -nucleus AN,CN,E: three "
+                         "positive lengths [m]")
+        args = args[2:]
     if not args:
         sys.exit(__doc__)
     runs = []
     for a in args:
         h, d = a.split("=", 1)
-        runs.append((float(h), d, fields(d, depth)))
+        runs.append((float(h), d, fields(d, depth, nucleus)))
     runs.sort(key=lambda r: -r[0])
     times = sorted(runs[0][2])
     print("| field time [ns] | " + " | ".join(

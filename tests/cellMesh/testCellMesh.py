@@ -27,6 +27,16 @@ independent reader of the .msh file:
   scaledNucleus: nucleusShape scaledCell, axisymmetric.
   coarseContact: a contactSize above the regions' sizes meshes (adv33
     cm16: was SIGABRT).
+  structuredSection: axisymmetric meshType structured (structuredCell's
+    r-z section), nucleusShape scaledCell and centredSpheroid at h = 0.5
+    and 0.25 um: the groups and element types of axisymmetric, every
+    quadrilateral counter-clockwise with scaled Jacobian > 0.3, area and
+    revolved volume to 1e-3, nucleus fraction to 0.5 %, nodes of the outer
+    surface, the membrane's inner surface and the nucleus surface on the
+    exact curves; halving h multiplies the element count by 3.4-4.6 and
+    keeps the number of interior nodes not at 4 elements (block corners)
+    fixed, at most 4 (gmsh's quads: 8-9 % of the interior nodes at 3 and
+    8-9 % at 5).
   scaledQuarter3D (the blast tutorial's 1.4/1.4/1 um, 1 layer, and
     0.7/0.7/0.5 um, 2 layers), scaledFull3D (0.8/0.8/0.6 um, 1 layer):
     nucleusShape scaledCell in 3D, the checks of quarter3D/full3D plus
@@ -35,8 +45,8 @@ independent reader of the .msh file:
     semi-spheroid touching its top and rim, its base (area pi a_n^2 to
     1 %) in fixedBottom.
 Usage: testCellMesh.py axisymmetric|quarter3D|full3D|shapes3D|docExample|
-    scaledNucleus|scaledQuarter3D|scaledFull3D|coarseContact
-    [solidReadCheck]"""
+    scaledNucleus|scaledQuarter3D|scaledFull3D|coarseContact|
+    structuredSection [solidReadCheck]"""
 import os
 import subprocess
 import sys
@@ -416,6 +426,91 @@ def scaledNucleus():
               f"up to r = {max(onBottom):.4e} m)")
 
 
+def structuredSection():
+    """meshType structured in the axisymmetric mode (see the module)"""
+    exactA = np.pi*a*H/4
+    exactV = 2.0/3.0*np.pi*a**2*H
+    with tempfile.TemporaryDirectory() as tmp:
+        for shape in ("scaledCell", "centredSpheroid"):
+            s = f**(1.0/3.0)
+            an = s*a
+            cn, zn = (s*H, 0.0) if shape == "scaledCell" else (s*H/2, H/2)
+            counts = {}
+            for h0, layers in ((0.5e-6, 1), (0.25e-6, 2)):
+                name = f"{shape} {h0*1e6:g} um"
+                X, g = run(os.path.join(tmp, f"{shape}{h0}"), {
+                    "mode": "axisymmetric", "meshType": "structured",
+                    "nucleusShape": shape, "cellDiameter": D,
+                    "cellHeight": H, "nucleusVolumeFraction": f,
+                    "membraneThickness": t, "membraneLayers": layers,
+                    "nucleusSize": h0, "cytoplasmSize": h0,
+                    "membraneSize": 0.8*h0, "contactRadius": 5e-6,
+                    "contactSize": 0.4*h0, "contactDepth": 1.5e-6})
+                check(sorted(g) == sorted(["nucleus", "cytoplasm",
+                                           "membrane", "fixedBottom",
+                                           "axis", "outerSurface"]),
+                      f"{name}: groups {sorted(g)}")
+                types = {e[2] for r in ("nucleus", "cytoplasm", "membrane")
+                         for e in g[r][1]}
+                btypes = {e[2] for r in ("fixedBottom", "axis",
+                                         "outerSurface") for e in g[r][1]}
+                check(types == {3} and btypes == {1},
+                      f"{name}: element types {types}, boundary {btypes}")
+                quads = {r: [e[3][k:k + 4] for e in g[r][1]
+                             for k in range(0, len(e[3]), 4)]
+                         for r in ("nucleus", "cytoplasm", "membrane")}
+                sj = 1.0
+                for q in (q for r in quads.values() for q in r):
+                    x = np.array([X[n][:2] for n in q])
+                    for i in range(4):
+                        e1 = x[(i + 1) % 4] - x[i]
+                        e2 = x[(i + 3) % 4] - x[i]
+                        sj = min(sj, (e1[0]*e2[1] - e1[1]*e2[0])
+                                 / (np.hypot(*e1)*np.hypot(*e2)))
+                check(sj > 0.3, f"{name}: counter-clockwise, smallest "
+                      f"scaled Jacobian {sj:.3f} (> 0.3)")
+                A = {r: quadMeasures(X, g[r][1]) for r in quads}
+                areaA = sum(v[0] for v in A.values())
+                volV = sum(v[1] for v in A.values())
+                eA, eV = abs(areaA/exactA - 1), abs(volV/exactV - 1)
+                check(eA < 1e-3 and eV < 1e-3, f"{name}: area error "
+                      f"{eA:.2e}, revolved volume error {eV:.2e} (< 1e-3)")
+                frac = A["nucleus"][1]/volV
+                check(abs(frac/f - 1) < 5e-3,
+                      f"{name}: nucleus volume fraction {frac:.5f}")
+                nodes = {r: {n for q in quads[r] for n in q} for r in quads}
+                outer = [X[n][:2] for e in g["outerSurface"][1] for n in e[3]]
+                dOut = np.max(ellipseDistance(outer))
+                nucSurf = np.array([X[n][:2] for n in
+                                    nodes["nucleus"] & nodes["cytoplasm"]])
+                qn = (nucSurf[:, 0]/an)**2 + ((nucSurf[:, 1] - zn)/cn)**2
+                memIn = [X[n][:2] for n in
+                         nodes["membrane"] & nodes["cytoplasm"]]
+                dIn = ellipseDistance(memIn)
+                check(dOut < 1e-3*t and np.max(abs(qn - 1)) < 1e-9
+                      and np.max(abs(dIn - t)) < 1e-3*t,
+                      f"{name}: nodes on the outer surface (distance "
+                      f"{dOut:.1e} m), the nucleus (|q - 1| "
+                      f"{np.max(abs(qn - 1)):.1e}), the membrane's inner "
+                      f"surface (|d - t| {np.max(abs(dIn - t)):.1e} m)")
+                valence = {}
+                for q in (q for r in quads.values() for q in r):
+                    for n in q:
+                        valence[n] = valence.get(n, 0) + 1
+                boundary = {n for r in ("fixedBottom", "axis",
+                                        "outerSurface")
+                            for e in g[r][1] for n in e[3]}
+                irregular = sum(1 for n, v in valence.items()
+                                if n not in boundary and v != 4)
+                counts[h0] = (sum(len(q) for q in quads.values()), irregular)
+                print(f"{name}: {counts[h0][0]} quadrilaterals, "
+                      f"{irregular} interior nodes not at 4 elements")
+            (n1, i1), (n2, i2) = counts[0.5e-6], counts[0.25e-6]
+            check(3.4 < n2/n1 < 4.6 and i1 == i2 and i2 <= 4,
+                  f"{shape}: halving h: elements x{n2/n1:.2f} (3.4-4.6), "
+                  f"irregular interior nodes {i1} -> {i2} (equal, <= 4)")
+
+
 def scaledAxisymmetricVolumes(h):
     """Region volumes of revolution of the axisymmetric scaledCell mesh at
     the size h [m] (the 3D meshes' reference)"""
@@ -482,6 +577,7 @@ def coarseContact():
  "coarseContact": coarseContact,
  "scaledQuarter3D": scaledQuarter3D, "scaledFull3D": scaledFull3D,
  "full3D": full3D, "shapes3D": shapes3D,
- "docExample": docExample, "scaledNucleus": scaledNucleus}[sys.argv[1]]()
+ "docExample": docExample, "scaledNucleus": scaledNucleus,
+ "structuredSection": structuredSection}[sys.argv[1]]()
 print(f"testCellMesh {sys.argv[1]}: {len(check.failed)} failed")
 sys.exit(check.exitStatus())

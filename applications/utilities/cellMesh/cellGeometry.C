@@ -19,6 +19,14 @@ Foam::cellGeometry::meshModeNames
 });
 
 
+const Foam::Enum<Foam::cellGeometry::meshType>
+Foam::cellGeometry::meshTypeNames
+({
+    { meshType::unstructured, "unstructured" },
+    { meshType::structured, "structured" },
+});
+
+
 const Foam::Enum<Foam::cellGeometry::nucleusShape>
 Foam::cellGeometry::nucleusShapeNames
 ({
@@ -44,7 +52,7 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     (
         dict,
         {
-            "mode", "nucleusShape", "cellDiameter", "cellHeight",
+            "mode", "meshType", "nucleusShape", "cellDiameter", "cellHeight",
             "nucleusVolumeFraction", "membraneThickness", "membraneLayers",
             "nucleusSize", "cytoplasmSize", "membraneSize", "azimuthSize",
             "contactRadius", "contactSize", "contactDepth", "maxElements",
@@ -53,6 +61,23 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     );
 
     mode_ = foamTools::readEnum(meshModeNames, dict, "mode");
+    // The 3D modes are structured only (structuredCell); the axisymmetric
+    // section gmsh's unstructured quadrilaterals by default
+    meshType_ = foamTools::readEnumOrDefault
+    (
+        meshTypeNames, dict, "meshType",
+        mode_ == meshMode::axisymmetric
+      ? meshType::unstructured : meshType::structured
+    );
+    if (mode_ != meshMode::axisymmetric && !structured())
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'meshType' = " << meshTypeNames[meshType_] << " is not"
+            << " available in mode " << meshModeNames[mode_] << ": the 3D "
+            << "modes are structured only (valid value: structured; "
+            << "unstructured is the axisymmetric mode's gmsh section)"
+            << exit(FatalIOError);
+    }
     shape_ = foamTools::readEnumOrDefault
     (
         nucleusShapeNames, dict, "nucleusShape", nucleusShape::centredSpheroid
@@ -419,7 +444,7 @@ Foam::scalar Foam::cellGeometry::minimumElements() const
     // along the membrane's contact patch (was not counted: contactSize
     // 1e-10 m meshed without end; issue 19, adversarial pass)
     scalar contact = 0;
-    if (contactRadius_ > 0)
+    if (contactRadius_ > 0 && !(axisymmetric() && structured()))
     {
         const scalar rc = contactRadius_;
         const scalar depth = min(contactDepth_, outer(thetaContact()).second());

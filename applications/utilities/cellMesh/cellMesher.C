@@ -366,11 +366,37 @@ Foam::cellMesher::cellMesher(const cellGeometry& geom)
     cytoplasmBottom_(-1)
 {
     gmsh::model::add("cell");
-    if (geom_.axisymmetric())
+    if (geom_.axisymmetric() && !geom_.structured())
     {
         buildSection();
         physicalGroups2D();
         sizeFields();
+    }
+    else if (geom_.axisymmetric())
+    {
+        const structuredCell cell(geom_);
+        cell.toGmsh(L_);
+        Info<< "Structured r-z section (meshType structured): quadrilaterals "
+            << cell.quads().size() << ", nodes " << cell.nodes().size()
+            << ", column r <= " << 0.5*geom_.an() << " m in "
+            << cell.nColumn() << " radial elements; boundary edges:";
+        for (const auto& kv : cell.edges())
+        {
+            Info<< " " << kv.first.c_str() << " " << kv.second.size();
+        }
+        Info<< nl << "Interior nodes by elements sharing them:";
+        for (const auto& kv : cell.interiorValences())
+        {
+            Info<< " " << kv.first << ": " << kv.second;
+        }
+        Info<< nl;
+        if (geom_.contactRadius() > 0)
+        {
+            Info<< "contactRadius, contactSize, contactDepth are not used by"
+                << " the structured section (no local refinement; sizes "
+                << "nucleusSize, cytoplasmSize, membraneSize)" << nl;
+        }
+        Info<< endl;
     }
     else
     {
@@ -390,7 +416,7 @@ Foam::cellMesher::cellMesher(const cellGeometry& geom)
 void Foam::cellMesher::generate()
 {
     const bool axi = geom_.axisymmetric();
-    if (axi)
+    if (axi && !geom_.structured())
     {
         // Frontal-Delaunay for quads (algorithm 8) crashes in gmsh 4.8 with
         // a background size field; Blossom on the other triangulations

@@ -306,10 +306,9 @@ void Foam::structuredCell::column()
         disc.push_back(r);
     }
 
-    // Vertical lines: level index ranges of the three regions
-    const label nNuc = nRingBottom_ + nCoreV_ + nRingN_;
-    const label k1 = nGapBottom_, k2 = k1 + nNuc, k3 = k2 + nGap_;
-    const label k4 = k3 + g_.layers();
+    // Vertical lines: every level interval
+    const label k4 =
+        nGapBottom_ + nRingBottom_ + nCoreV_ + nRingN_ + nGap_ + g_.layers();
     for (const block2D& b : disc)
     {
         std::vector<std::vector<scalar>> z(b.p.size());
@@ -342,14 +341,190 @@ void Foam::structuredCell::column()
                     x[m] = {p[0], p[1], z[c[m]][k]};
                     x[m + 4] = {p[0], p[1], z[c[m]][k + 1]};
                 }
-                const int r = k < k1 || (k >= k2 && k < k3)
-                    ? cytoplasmRegion
-                    : k < k2 ? nucleusRegion : membraneRegion;
-                h[r].push_back(x);
+                h[levelRegion(k)].push_back(x);
             }
         }
         for (int r = 0; r < 3; ++r) addBlock(h[r], r);
     }
+}
+
+
+int Foam::structuredCell::levelRegion(label k) const
+{
+    // Level index ranges of the regions: cytoplasm gap under the nucleus,
+    // nucleus, cytoplasm gap above it, membrane
+    const label nNuc = nRingBottom_ + nCoreV_ + nRingN_;
+    const label k1 = nGapBottom_, k2 = k1 + nNuc, k3 = k2 + nGap_;
+    return k < k1 || (k >= k2 && k < k3)
+        ? cytoplasmRegion
+        : k < k2 ? nucleusRegion : membraneRegion;
+}
+
+
+void Foam::structuredCell::addQuads(const block2D& b, int region)
+{
+    std::vector<std::array<vec2, 4>> q;
+    double sum = 0;
+    for (label j = 0; j < b.nj; ++j)
+    for (label i = 0; i < b.ni; ++i)
+    {
+        const std::array<vec2, 4> x
+        {
+            b.at(i, j), b.at(i + 1, j), b.at(i + 1, j + 1), b.at(i, j + 1)
+        };
+        // Twice the area of the quadrilateral (its diagonals' product)
+        sum +=
+            (x[2][0] - x[0][0])*(x[3][1] - x[1][1])
+          - (x[2][1] - x[0][1])*(x[3][0] - x[1][0]);
+        q.push_back(x);
+    }
+    // One block has one orientation; a single inverted element stays
+    // inverted and is reported by the quality check
+    const bool flip = sum < 0;
+    for (const auto& x : q)
+    {
+        quad e;
+        for (int k = 0; k < 4; ++k)
+        {
+            const vec2& p = x[flip ? (4 - k) % 4 : k];
+            e[k] = node({p[0], p[1], 0});
+        }
+        quads_.push_back(e);
+        region_.push_back(region);
+    }
+}
+
+
+void Foam::structuredCell::sectionBlock(const block2D& b, int region)
+{
+    if (section_)
+    {
+        addQuads(b, region);
+    }
+    else
+    {
+        revolve(b, region);
+    }
+}
+
+
+void Foam::structuredCell::sectionColumn()
+{
+    // Vertical node lines at r_i = i r_c/nCol with the column's levels:
+    // one r-z block per region's range of level intervals
+    nCol_ = max(label(1), label(std::round(rc_/firstWidth_)));
+    std::vector<std::vector<scalar>> z(nCol_ + 1);
+    for (label i = 0; i <= nCol_; ++i)
+    {
+        z[i] = levels(rc_*i/nCol_);
+    }
+    const label nLevels = label(z[0].size()) - 1;
+    label k0 = 0;
+    while (k0 < nLevels)
+    {
+        const int r = levelRegion(k0);
+        label k1 = k0 + 1;
+        while (k1 < nLevels && levelRegion(k1) == r) ++k1;
+        block2D b;
+        b.ni = nCol_;
+        b.nj = k1 - k0;
+        b.p.resize((b.ni + 1)*(b.nj + 1));
+        for (label j = 0; j <= b.nj; ++j)
+        for (label i = 0; i <= b.ni; ++i)
+        {
+            b.at(i, j) = {rc_*i/nCol_, z[i][k0 + j]};
+        }
+        addQuads(b, r);
+        k0 = k1;
+    }
+}
+
+
+void Foam::structuredCell::classifyEdges()
+{
+    std::map<edge, std::pair<int, edge>> count;
+    for (const quad& q : quads_)
+    {
+        for (int k = 0; k < 4; ++k)
+        {
+            const edge e{q[k], q[(k + 1) % 4]};
+            const edge key{std::min(e[0], e[1]), std::max(e[0], e[1])};
+            auto it = count.find(key);
+            if (it == count.end()) count[key] = {1, e};
+            else ++it->second.first;
+        }
+    }
+    const scalar a = g_.a(), H = g_.H();
+    label bad = 0;
+    for (const auto& kv : count)
+    {
+        if (kv.second.first > 2)
+        {
+            FatalErrorInFunction
+                << "An edge is shared by " << kv.second.first
+                << " quadrilaterals" << exit(FatalError);
+        }
+        if (kv.second.first != 1) continue;
+        const edge& e = kv.second.second;
+        bool onZ = true, onAxis = true, onOuter = true;
+        for (const std::size_t n : e)
+        {
+            const vec& x = nodes_[n];
+            onAxis = onAxis && x[0] == 0;
+            onZ = onZ && x[1] == 0;
+            const scalar s = sqr(x[0]/a) + sqr(x[1]/H);
+            onOuter = onOuter && std::abs(s - 1) < 1e-9;
+        }
+        const char* name =
+            onZ ? "fixedBottom"
+          : onAxis ? "axis"
+          : onOuter ? "outerSurface" : nullptr;
+        if (name) edges_[name].push_back(e);
+        else ++bad;
+    }
+    if (bad)
+    {
+        FatalErrorInFunction
+            << bad << " boundary edges of the r-z section are neither on "
+            << "the substrate, the axis nor the outer surface: the blocks "
+            << "are not conformal" << exit(FatalError);
+    }
+}
+
+
+std::map<Foam::label, Foam::label>
+Foam::structuredCell::interiorValences() const
+{
+    std::vector<label> n(nodes_.size(), 0);
+    std::vector<bool> boundary(nodes_.size(), false);
+    for (const quad& q : quads_)
+    {
+        for (const std::size_t k : q) ++n[k];
+    }
+    for (const hex& h : hexes_)
+    {
+        for (const std::size_t k : h) ++n[k];
+    }
+    for (const auto& kv : edges_)
+    {
+        for (const edge& e : kv.second)
+        {
+            boundary[e[0]] = boundary[e[1]] = true;
+        }
+    }
+    for (const auto& kv : faces_)
+    {
+        for (const quad& q : kv.second)
+        {
+            for (const std::size_t k : q) boundary[k] = true;
+        }
+    }
+    std::map<label, label> v;
+    for (std::size_t k = 0; k < n.size(); ++k)
+    {
+        if (!boundary[k]) ++v[n[k]];
+    }
+    return v;
 }
 
 
@@ -537,6 +712,7 @@ void Foam::structuredCell::centredSections()
     // arc length, and the matched outer points
     std::vector<vec2> In, Out;
     membraneCurves(nM, In, Out);
+    firstWidth_ = std::hypot(In[1][0] - In[0][0], In[1][1] - In[0][1]);
 
     // Gamma: substrate P0 -> R, then the inner curve R -> P3
     std::vector<vec2> Gamma = segment({rc_, 0}, {a - t, 0}, nB);
@@ -638,7 +814,7 @@ void Foam::structuredCell::centredSections()
     (
         Lambda.rbegin(), Lambda.rbegin() + mB + 1
     );
-    revolve
+    sectionBlock
     (
         coons
         (
@@ -647,7 +823,7 @@ void Foam::structuredCell::centredSections()
         ),
         nucleusRegion
     );
-    revolve
+    sectionBlock
     (
         coons
         (
@@ -656,7 +832,7 @@ void Foam::structuredCell::centredSections()
         ),
         nucleusRegion
     );
-    revolve
+    sectionBlock
     (
         coons
         (
@@ -665,7 +841,7 @@ void Foam::structuredCell::centredSections()
         ),
         nucleusRegion
     );
-    revolve
+    sectionBlock
     (
         coons
         (
@@ -677,10 +853,10 @@ void Foam::structuredCell::centredSections()
 
     // Cytoplasm C-block: straight node lines from Lambda(i) to Gamma(i)
     // (a ruled block; its ends are the column's vertical lines)
-    revolve(ruled(Lambda, Gamma, nGap_), cytoplasmRegion);
+    sectionBlock(ruled(Lambda, Gamma, nGap_), cytoplasmRegion);
 
     // Membrane: straight node lines between matched inner/outer points
-    revolve(ruled(In, Out, g_.layers()), membraneRegion);
+    sectionBlock(ruled(In, Out, g_.layers()), membraneRegion);
 }
 
 
@@ -728,6 +904,7 @@ void Foam::structuredCell::scaledSections()
     );
     std::vector<vec2> In, Out;
     membraneCurves(T, In, Out);
+    firstWidth_ = std::hypot(In[1][0] - In[0][0], In[1][1] - In[0][1]);
 
     // Nucleus curve Lambda (column -> J -> base rim (a_n, 0)): node i at
     // the nucleus point closest to In(i) (cytoplasm node lines along the
@@ -808,12 +985,12 @@ void Foam::structuredCell::scaledSections()
         Lambda.rbegin(), Lambda.rbegin() + nCoreV_ + 1
     );
     const std::vector<vec2> lamT(Lambda.begin(), Lambda.begin() + mB + 1);
-    revolve
+    sectionBlock
     (
         coons(coreBottom, coreTop, colSide(0, nCoreV_), coreRight),
         nucleusRegion
     );
-    revolve
+    sectionBlock
     (
         coons
         (
@@ -821,7 +998,7 @@ void Foam::structuredCell::scaledSections()
         ),
         nucleusRegion
     );
-    revolve
+    sectionBlock
     (
         coons(lamT, coreTop, colSide(nNuc, nCoreV_), ringSide),
         nucleusRegion
@@ -829,17 +1006,20 @@ void Foam::structuredCell::scaledSections()
 
     // Cytoplasm: straight node lines from Lambda(i) to In(i) (its ends:
     // the column's vertical line and the substrate from a_n to a - t)
-    revolve(ruled(Lambda, In, nGap_), cytoplasmRegion);
+    sectionBlock(ruled(Lambda, In, nGap_), cytoplasmRegion);
 
     // Membrane: straight node lines between matched inner/outer points
-    revolve(ruled(In, Out, g_.layers()), membraneRegion);
+    sectionBlock(ruled(In, Out, g_.layers()), membraneRegion);
 }
 
 
 Foam::structuredCell::structuredCell(const cellGeometry& geom)
 :
     g_(geom),
-    quarter_(geom.mode() == cellGeometry::meshMode::quarter3D)
+    quarter_(geom.mode() == cellGeometry::meshMode::quarter3D),
+    section_(geom.axisymmetric()),
+    nCol_(0),
+    firstWidth_(0)
 {
     const scalar a = g_.a(), an = g_.an();
     rc_ = columnFraction*an;
@@ -861,14 +1041,70 @@ Foam::structuredCell::structuredCell(const cellGeometry& geom)
     {
         centredSections();
     }
-    column();
-    classifyBoundary();
+    if (section_)
+    {
+        sectionColumn();
+        classifyEdges();
+    }
+    else
+    {
+        column();
+        classifyBoundary();
+    }
 }
 
 
 void Foam::structuredCell::toGmsh(scalar unit) const
 {
     const char* regionNames[3] = {"nucleus", "cytoplasm", "membrane"};
+    if (section_)
+    {
+        // The r-z section as the gmsh r-z mesh is: surfaces (regions) of
+        // quadrilaterals, curves (boundary groups) of lines, x = r, y = z
+        for (int r = 0; r < 3; ++r)
+        {
+            gmsh::model::addDiscreteEntity(2, r + 1);
+        }
+        std::vector<std::size_t> tags(nodes_.size());
+        std::vector<double> xyz;
+        xyz.reserve(3*nodes_.size());
+        for (std::size_t n = 0; n < nodes_.size(); ++n)
+        {
+            tags[n] = n + 1;
+            for (int k = 0; k < 3; ++k) xyz.push_back(nodes_[n][k]/unit);
+        }
+        gmsh::model::mesh::addNodes(2, 1, tags, xyz);
+
+        std::size_t next = 1;
+        for (int r = 0; r < 3; ++r)
+        {
+            std::vector<std::size_t> et, nt;
+            for (std::size_t e = 0; e < quads_.size(); ++e)
+            {
+                if (region_[e] != r) continue;
+                et.push_back(next++);
+                for (const std::size_t n : quads_[e]) nt.push_back(n + 1);
+            }
+            gmsh::model::mesh::addElementsByType(r + 1, 3, et, nt);
+            const int g = gmsh::model::addPhysicalGroup(2, {r + 1});
+            gmsh::model::setPhysicalName(2, g, regionNames[r]);
+        }
+        int curve = 0;
+        for (const auto& kv : edges_)
+        {
+            gmsh::model::addDiscreteEntity(1, ++curve);
+            std::vector<std::size_t> et, nt;
+            for (const edge& e : kv.second)
+            {
+                et.push_back(next++);
+                for (const std::size_t n : e) nt.push_back(n + 1);
+            }
+            gmsh::model::mesh::addElementsByType(curve, 1, et, nt);
+            const int g = gmsh::model::addPhysicalGroup(1, {curve});
+            gmsh::model::setPhysicalName(1, g, kv.first);
+        }
+        return;
+    }
     for (int r = 0; r < 3; ++r)
     {
         gmsh::model::addDiscreteEntity(3, r + 1);
