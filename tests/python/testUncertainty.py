@@ -174,7 +174,18 @@ class Dictionary(Study):
 
     def testStepZero(self):
         self.refused(r"entry 'step' = 0 is outside the valid range "
-                     r"\(0, inf\)", ("step        0.2", "step 0"))
+                     r"\(0, 1\)", ("step        0.2", "step 0"))
+
+    def testStepTooLarge(self):
+        """adv48a h10: step 1e3 (or 710) overflowed e^step in stepProblem,
+        an OverflowError traceback: refused naming the range"""
+        for step in ("1e3", "710", "1"):
+            self.refused(r"entry 'step' = %s is outside the valid range "
+                         r"\(0, 1\) \[-\] \(the finite difference's step "
+                         r"in ln p" % ("1000.0" if step == "1e3" else step),
+                         ("step        0.2", "step %s" % step))
+        self.refused(r"entry 'checkStep' = 710 is outside the valid range "
+                     r"\(0, 1\)", ("checkStep   0.1", "checkStep 710"))
 
     def testStepThatMovesNoParameter(self):
         """fix19d (adv47b f25): a step that leaves a parameter's value

@@ -59,7 +59,7 @@ import re
 
 import numpy as np
 
-from . import foamDict
+from . import foamDict, ranges
 
 KEYWORDS = ("pulses", "variants", "about", "parameters", "correlation",
             "difference", "step", "checkStep")
@@ -197,13 +197,22 @@ def _variant(name, v, mats, project, where):
     return out
 
 
-def _positive(d, key, where):
+# The valid range of a finite-difference step (step, checkStep) [-], in ln p
+# (log yes) or p/|p0|: a step of 1 moves a parameter by a factor e (log)
+# or to 0 (central, linear), far from the linearisation; 1e3 overflowed
+# e^step (adv48a h10: an OverflowError traceback)
+STEP_RANGE = "(0, 1)"
+
+
+def _step(d, key, where):
     v = d[key]
     if isinstance(v, bool) or not isinstance(v, (int, float)) \
-            or not math.isfinite(v) or not v > 0:
+            or v not in ranges.Interval(STEP_RANGE):
         raise UncertaintyError("%s: entry '%s' = %s is outside the valid "
-                               "range (0, inf) [-]"
-                               % (where, key, foamDict.format_value(v)))
+                               "range %s [-] (the finite difference's step "
+                               "in ln p with log yes, else in p/|p0|)"
+                               % (where, key, foamDict.format_value(v),
+                                  STEP_RANGE))
     return float(v)
 
 
@@ -363,7 +372,7 @@ def read(d, where, base, grid, project):
                 raise UncertaintyError("%s: no entry '%s' (the finite "
                                        "difference's step in ln p or p/|p0|"
                                        " [-])" % (w, k))
-            s[k] = _positive(d, k, w)
+            s[k] = _step(d, k, w)
         if s["step"] == s["checkStep"]:
             raise UncertaintyError("%s: entry 'checkStep' = step = %g: a "
                                    "second, other step checks the first"
