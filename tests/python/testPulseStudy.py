@@ -225,6 +225,13 @@ class Dictionary(TempDirTestCase):
                      thresholds=GOOD["thresholds"].replace(
                          "value 0.21 [-]", "value 1e-300 [-]"))
 
+    def testSampleIntervalNotFinite(self):
+        # adv48a h09: "inf is not a positive number": the range and unit
+        for v in ("inf", "-inf", "nan", "0"):
+            self.refused(r"entry 'sampleInterval' = %s is not a number in "
+                         r"the valid range \(0, inf\) s" % v.replace(
+                             "+", r"\+"), sampleInterval=v)
+
     def testSamplesBoundedByTheRun(self):
         # a point's writes at most the solvers' maxWrites (adv pass ps09:
         # sampleInterval 1e-15 s wrote without end); tiny or huge numbers

@@ -238,6 +238,12 @@ class Dictionary(Study):
     def testPulseNotOnGrid(self):
         self.refused(r"entry 'pulses': \(5e\+07 Pa, 5e-09 s\) is not a "
                      r"point of the grid", ("((10e6 5e-9))", "((50e6 5e-9))"))
+        # one ulp above a grid value: printed with the digits that show it
+        # (adv48b g46: "(3e+07 Pa, ...) is not a point of the grid
+        # (overpressure 3e+07 ...)")
+        self.refused(r"entry 'pulses': \(10000000.000000002 Pa, 5e-09 s\) "
+                     r"is not a point of the grid \(overpressure 1e\+07 ",
+                     ("((10e6 5e-9))", "((10000000.000000002 5e-9))"))
 
     def testAboutUnknown(self):
         self.refused(r"entry 'about' = calibrate: neither base nor a "

@@ -81,15 +81,18 @@ class StudyError(Exception):
     pass
 
 
-def _number(d, key, where, positive=True):
+def _number(d, key, where, unit):
+    """Entry key of d: a finite number above 0 [unit]; its tighter range
+    is checked by read. inf, nan, -0 named with that range and the unit
+    (adv48a h09: "inf is not a positive number")."""
     v = d[key]
     if isinstance(v, foamDict.BelowReader):
         return v            # refused naming its range by read
     if isinstance(v, bool) or not isinstance(v, (int, float)) \
-            or not math.isfinite(v) or (positive and not v > 0):
-        raise StudyError("%s: entry '%s' = %s is not a %snumber"
-                         % (where, key, foamDict.format_value(v),
-                            "positive " if positive else ""))
+            or not math.isfinite(v) or not v > 0:
+        raise StudyError("%s: entry '%s' = %s is not a number in the valid "
+                         "range (0, inf) %s"
+                         % (where, key, foamDict.format_value(v), unit))
     return float(v)
 
 
@@ -234,8 +237,8 @@ def read(case, dictionary=DICT):
     s = {"case": case, "dict": path, "base": base}
     s["overpressure"] = _grid(d, "overpressure", path, "Pa")
     s["duration"] = _grid(d, "duration", path, "s")
-    s["sampleInterval"] = _number(d, "sampleInterval", path)
-    s["window"] = _number(d, "strainRateWindow", path)
+    s["sampleInterval"] = _number(d, "sampleInterval", path, "s")
+    s["window"] = _number(d, "strainRateWindow", path, "s")
     th = d["thresholds"]
     if not isinstance(th, dict):
         raise StudyError("%s: entry 'thresholds' is not a sub-dictionary"

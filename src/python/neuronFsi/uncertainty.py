@@ -251,15 +251,19 @@ def read(d, where, base, grid, project):
                                    % (w, foamDict.format_value(p)))
         A, T = float(p[0]), float(p[1])
         if A not in grid["overpressure"] or T not in grid["duration"]:
+            # the digits that tell the values apart (_tag: %g unless it
+            # reads back otherwise; adv48b g46: 30000000.000000004 and the
+            # grid's 3e7 both printed 3e+07)
             raise UncertaintyError(
-                "%s: entry 'pulses': (%g Pa, %g s) is not a point of the "
+                "%s: entry 'pulses': (%s Pa, %s s) is not a point of the "
                 "grid (overpressure %s Pa, duration %s s): the intervals are"
                 " drawn on the study's own points" % (
-                    w, A, T, " ".join("%g" % x for x in grid["overpressure"]),
-                    " ".join("%g" % x for x in grid["duration"])))
+                    w, _tag(A), _tag(T),
+                    " ".join(_tag(x) for x in grid["overpressure"]),
+                    " ".join(_tag(x) for x in grid["duration"])))
         if (A, T) in s["pulses"]:
-            raise UncertaintyError("%s: entry 'pulses': (%g Pa, %g s) is "
-                                   "given twice" % (w, A, T))
+            raise UncertaintyError("%s: entry 'pulses': (%s Pa, %s s) is "
+                                   "given twice" % (w, _tag(A), _tag(T)))
         s["pulses"].append((A, T))
     variants = d.get("variants", {})
     if not isinstance(variants, dict):
