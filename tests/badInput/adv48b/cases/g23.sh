@@ -1,0 +1,7 @@
+#!/bin/bash
+# g23 (class 2/environment, the Allrun scripts run from another directory or as 'bash Allrun') in a copy of the project tree (tutorials copied, the rest linked): (a) 'cd tutorials && bash Allrun' ($0 without a slash), (b) the preview's 'cd case && bash Allrun $PREV -noRun', (c) the preview's Allrun run from / by its full path: each runs in its own folder or stops with a message naming the problem; never a bare "cd: Allrun: Not a directory", never work in the wrong folder. (a) and (c) killed after 60 s (the main job is long): what they started is shown.
+. "$(dirname "$0")/../lib.sh"
+mkdir $W/root; for f in $ROOT/*; do [ "${f##*/}" = tutorials ] || ln -s $f $W/root/; done; cp -r $ROOT/tutorials $W/root/tutorials; cd $W/root/tutorials; rm -rf blast/*/[1-9]* 2>/dev/null
+tryt 60 "(a) cd tutorials && bash Allrun" bash Allrun; head -3 $W/try.log | cut -c1-200
+cd $W/root/tutorials/blast/axisymmetricPreview; tryt 200 "(b) bash Allrun $PREV -noRun" bash Allrun $PREV -endTime 2e-9 -noRun; tail -2 $W/try.log | cut -c1-200; echo "   made here: $(ls -d constant/polyMesh log.* 2>/dev/null | tr '\n' ' ')"
+cd /; tryt 200 "(c) from /, by full path" $W/root/tutorials/blast/quarter3D/Allrun -noRun -np 1 -box 30e-6 -h 1e-6 -dz 1e-6 -lateral 2e-6 -far 5e-6 -endTime 1e-9 -noPlots; tail -2 $W/try.log | cut -c1-200; echo "   in /: $(ls -d /log.* /constant 2>/dev/null | tr '\n' ' ')"; cd $W/root; git -C $ROOT status --short | head -5

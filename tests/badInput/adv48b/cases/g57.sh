@@ -1,0 +1,6 @@
+#!/bin/bash
+# g57 (class 3, planeWave -inflow -overwrite while the run reads the wave) the inflow preview prepared to 1e-8 (iblast 1e-8: planeWaveInflow top, its constant/inflowWave to 1e-8), cellBlastFoam from 0 in the background; while it runs, planeWave -inflow 20e-6 -Z 40e-6 -dz 25e-9 -overwrite (another valid wave: 25 nm cells): refused naming the run (the case in use, as planeWave -check is), constant/inflowWave unchanged; the run finishes on the wave it started with. (Rewritten after its first run, P1b: ibd's wave ends at 3e-9, so its restart to 1e-8 died for that reason and may have ended before planeWave wrote.)
+. "$(dirname "$0")/../lib.sh"
+iblast 1e-8; cp constant/inflowWave ../iw0; cellBlastFoam > ../run.log 2>&1 & p=$!; waitFor 60 test -s .runLock; sleep 2; echo "   run alive before planeWave: $(kill -0 $p 2>/dev/null && echo yes || echo no), lock: $(lk | cut -c1-60)"
+tryt 200 "planeWave -inflow -overwrite during the run" planeWave -inflow 20e-6 -Z 40e-6 -dz 25e-9 -overwrite; echo "   run alive after planeWave: $(kill -0 $p 2>/dev/null && echo yes || echo no)"; cmp -s constant/inflowWave ../iw0 && echo "   inflowWave unchanged" || echo "   inflowWave REWRITTEN"
+wait $p; echo "   run rc=$? $(grep -a -m1 -A1 'FATAL' ../run.log | tr '\n' ' ' | cut -c1-200)"; after

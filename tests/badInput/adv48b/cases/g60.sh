@@ -1,0 +1,7 @@
+#!/bin/bash
+# g60 (class 3, a lock that is a hard link to a live run's lock) case A (bd) runs to 1e-8 holding its .runLock; case B (another bd copy) gets .runLock as a hard link to A's, and B's restart starts while A runs: B refused (a lock naming another case), or B makes its own lock without writing through the link; A's lock keeps A's bytes, and A's run finishes. (Rewritten after P1/P1b: A had ended before B was judged, and my md5sum -c looked at B's lock.)
+. "$(dirname "$0")/../lib.sh"
+bd; mv $W/blast $W/A; cd $W/A; rs; blastEnd 1e-8 1e-9; cellBlastFoam > ../runA.log 2>&1 & p=$!; waitFor 60 test -s .runLock; cp $W/A/.runLock $W/lockA0; echo "   A's lock: $(tr '\n' ';' < $W/lockA0 | cut -c1-80), inode $(stat -c %i $W/A/.runLock)"
+bd; rs; blastEnd 1e-8 1e-9; ln $W/A/.runLock .runLock; cellBlastFoam > $W/runB.log 2>&1 & q=$!; sleep 4
+echo "   4 s after B's start: A alive $(kill -0 $p 2>/dev/null && echo yes || echo no), B alive $(kill -0 $q 2>/dev/null && echo yes || echo no); A's lock $(cmp -s $W/A/.runLock $W/lockA0 && echo "unchanged" || echo "CHANGED: $(tr '\n' ';' < $W/A/.runLock 2>/dev/null | cut -c1-80)"), links $(stat -c %h $W/A/.runLock 2>/dev/null); B's lock inode $(stat -c %i .runLock 2>/dev/null)"
+wait $q; echo "   B rc=$? $(grep -a -m1 -A1 'FATAL' $W/runB.log | tr '\n' ' ' | cut -c1-250)"; wait $p; echo "   A's run rc=$? $(grep -a -m1 FATAL $W/A/../runA.log)"; echo "   A: $(cd $W/A; after)"
