@@ -1,4 +1,5 @@
 #!/bin/bash
+# CASETIMEOUT=900
 # h01 (class 5, adv47a f07 varied: one value of a committed restart field damaged in a parse-valid way, binary fields (the
 # preview writes binary), the marker intact; the finished preview, startFrom latestTime, endTime 3e-9): (a) rho[5] NaN,
 # (b) rho[5] -1000, (c) rho[5] 0 (one cell), (d) rho cut to half its size, (e) rhoE[5] inf, (f) rhoU[15] 1e308, (g) rho[5]

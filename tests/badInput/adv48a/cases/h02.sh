@@ -1,4 +1,5 @@
 #!/bin/bash
+# CASETIMEOUT=900
 # h02 (class 5, adv47a f07 varied: the files of the restart time that fix19d's early check leaves out (p, U, T) and the
 # mesh/state files; the finished preview, startFrom latestTime, endTime 3e-9, the marker intact): (a) p[5] 1.23e5 (internal
 # value), (b) the pulse table of 2e-09/p's top patch: its second row's pressure doubled (text), (c) U 64 B zeroed, (d) T 64 B

@@ -1,4 +1,5 @@
 #!/bin/bash
+# CASETIMEOUT=900
 # h03 (class 5, adv47a f08 (a) varied: the sod tube's ascii fields (rhoRiemannFoam, writeFormat ascii), one value of the
 # last time changed as text, endTime 1.5x): (a) rho: nan, (b) rho: -1, (c) rho: 0, (d) rho: -0, (e) rho: 4.9e-324,
 # (f) rho cut in the middle of its list, (g) rhoE: inf, (h) rhoU: 1e400, (i) p: -1e308, (j) T: nan, (k) rho: -1 with

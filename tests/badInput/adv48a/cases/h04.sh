@@ -1,4 +1,5 @@
 #!/bin/bash
+# CASETIMEOUT=900
 # h04 (class 5, adv47a f08 (b) varied, 2 ranks): the preview decomposed (pblastDone), startFrom latestTime, endTime 3e-9:
 # (a) processor0/2e-09/rhoE[3] -1, (b) processor1/2e-09/rho[7] NaN, (c) processor1/2e-09/rho cut to half, (d)
 # processor0/2e-09/uniform/inputDigests emptied, (e) processor1/2e-09/.writeCommitted removed (processor0's intact);

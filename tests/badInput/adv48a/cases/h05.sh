@@ -1,4 +1,5 @@
 #!/bin/bash
+# CASETIMEOUT=900
 # h05 (class 5, the indentation's restart.h5 damaged: the killed smoke indentation (ik, 10x finer steps, killed 1 s after
 # its first checkpoint), startFrom latestTime): (a) 64 B zeroed in the middle of restart.h5, (b) one bit flipped 100 B
 # before its end, (c) cut to half, (d) emptied, (e) replaced by the finished run's (idn) restart.h5 (another run's

@@ -1,4 +1,5 @@
 #!/bin/bash
+# CASETIMEOUT=900
 # h07 (class 4, adv47b f16/f73 varied: -parallel where there is one process): the preview decomposed for 2 ranks (pblast,
 # not run): (a) mpirun -np 1 cellBlastFoam -parallel, (b) cellBlastFoam -parallel (no launcher), (c) SLURM_NTASKS=2 in the
 # environment (a batch job of 2 tasks) and cellBlastFoam -parallel without srun/mpirun, (d) PMI_SIZE=2 the same, (e)

@@ -1,4 +1,5 @@
 #!/bin/bash
+# CASETIMEOUT=900
 # h08 (class 4, numberText's edges, fix19d/804c109d: every C++ tool that prints a refused number, given -DBL_MAX, DBL_MAX,
 # 1e308, -1e308, 1e309, inf, -inf, nan, -0, 4.9e-324, 1e-310): rhoRiemannFoam maxCo (sod controlDict), cellBlastFoam
 # coupling tolerance (constant/fsiProperties) and endTime (system/controlDict.allrun), cellIndentationFoam tolerance

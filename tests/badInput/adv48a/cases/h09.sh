@@ -1,4 +1,5 @@
 #!/bin/bash
+# CASETIMEOUT=900
 # h09 (class 4, numberText's edges in the Python tools: -DBL_MAX, DBL_MAX, 1e308, -1e308, 1e309, inf, -inf, nan, -0,
 # 4.9e-324, 1e-310): planeWave -maxSteps (the finished preview), sweepCase -maxRuns and -values (sod's maxCo), pulseStudy
 # sampleInterval (with maxPoints 1 appended: nothing may run), calibrateCell relativeError. Each refused (rc != 0, no

@@ -1,4 +1,5 @@
 #!/bin/bash
+# CASETIMEOUT=900
 # h10 (class 4, adv47b f25/f64 varied: the uncertainty's step and checkStep at and past their edges; the tutorial's
 # pulseStudyDict.uncertainty on the small study, maxPoints 1 appended so that nothing runs): step 2.220446049250313e-16
 # (the least step f25's message suggests), 1.1e-16, 0, -1e-3, nan, inf, 1e308, 1e3 (exp overflow in ln p: e^1000), 710;

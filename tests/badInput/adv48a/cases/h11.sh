@@ -1,4 +1,5 @@
 #!/bin/bash
+# CASETIMEOUT=900
 # h11 (class 4, adv47b f42/f46/f50 varied: a value one ulp outside the valid range that a refusal names, in other entries
 # and tools): for each entry, 1e308 (or -1) gives the valid range in the refusal; then the bound itself (if closed:
 # accepted, cut at 30 s) and the next double outside it: refused, printed with the digits that put it outside (never as

@@ -1,4 +1,5 @@
 #!/bin/bash
+# CASETIMEOUT=900
 # h12 (class 6, adv47b f55 varied: sweepCase -maxRuns at its edge; sod's maxCo, -run rhoRiemannFoam): 3 values with
 # -maxRuns 2 (refused before anything is copied), 2 values with -maxRuns 2 (run), the same value 3 times with -maxRuns 2,
 # -maxRuns 0, -1, 1.5, 0x10, 2abc, empty, given twice (2 then 5), 1001 values with the default (refused). Each refusal

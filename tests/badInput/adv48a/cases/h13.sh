@@ -1,4 +1,5 @@
 #!/bin/bash
+# CASETIMEOUT=900
 # h13 (classes 1, 4, 5: adv46b's low rows that fix19d closed, varied): (a) d02 (b): the killed indentation restarted with
 # the materials from a copy included as constant/mats whose membrane C10 changed: refused naming materials/membrane/C10
 # and constant/mats; (b) the same copy unchanged but a comment added: continues; (c) d10 (a): 'fixed' with a row given

@@ -1,4 +1,5 @@
 #!/bin/bash
+# CASETIMEOUT=900
 # h14 (classes 4, 5: adv46b d41 (a), d49 (b), d57 varied): (a) the decomposed preview (finished on 2 ranks) with processor0
 # missing, (b) with processor1/2e-09 removed only (its other times there), restarted on 2 ranks: each refused naming the
 # rank's directory/time, no hang; (c) solid.h5 of the finished preview with one byte changed at 1/4 and (d) 3/4 of its
