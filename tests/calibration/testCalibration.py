@@ -162,6 +162,18 @@ def bad_targets(work):
     cases = [
         (PARAMS, peak % "-0.3e-9", 1, "'value' = -3e-10 N"),
         (PARAMS, peak % "0.3e-9", 1, "underdetermined"),
+        # adv47b f30: a number OpenFOAM reads as 0 named with the entry's
+        # own range, 0 not advised where the range refuses it (was: "give
+        # 0 or a value ... in the entry's valid range")
+        (PARAMS, peak % "4.9e-324", 1, "entry 'targets/F/value' = "
+         "4.9e-324 N is below the smallest magnitude OpenFOAM reads "
+         "(1e-300): it would be read as 0; the entry's valid range is "
+         "[1e-15, 1e-3] N: give a value in it"),
+        (PARAMS, "    F { peak endB; value 0.3e-9; sigma 1e-300; }\n", 1,
+         "entry 'targets/F/sigma' = 1e-300 N is below the smallest "
+         "magnitude OpenFOAM reads (1e-300): it would be read as 0; the "
+         "entry's valid range is (0, 1] N: give a value in it above "
+         "1e-300"),
         ("    cytoplasm.C10 { value 1.2; min 0.1; max 20; log yes; }\n",
          "    F { peak endX; value 0.3e-9; }\n", 1,
          "peak 'endX' is not a peak of the protocol"),
@@ -170,9 +182,29 @@ def bad_targets(work):
         ("    cytoplasm.C10 { value 1.2; min 0.1; max 20; log yes; }\n",
          peak % "0.3e-9", 2, "NOT CONVERGED"),
     ]
-    for n, (params, targets, want, expect) in enumerate(cases):
+    # the dictionary's settings: their ranges named too (adv47b f30)
+    cases += [
+        (PARAMS, peak % "0.3e-9", 1, "entry 'tolerance' = 1e-300 is below "
+         "the smallest magnitude OpenFOAM reads (1e-300): it would be read "
+         "as 0; the entry's valid range is (0, 1): give a value in it "
+         "above 1e-300", "tolerance 1e-300;"),
+        (PARAMS, peak % "0.3e-9", 1, "entry 'relativeError' = 4.9e-324 is "
+         "below the smallest magnitude OpenFOAM reads (1e-300): it would "
+         "be read as 0; the entry's valid range is [1e-6, 10]: give a "
+         "value in it", "relativeError 4.9e-324;"),
+        # an entry whose reader holds no range: the generic words, no 0
+        # advised as such
+        (PARAMS.replace("value 1050", "value 1e-300"), peak % "0.3e-9", 1,
+         "entry 'parameters/nucleus.mu1/value' = 1e-300 is below the "
+         "smallest magnitude OpenFOAM reads (1e-300): it would be read as "
+         "0: give a value with 1e-300 < |x| <= 1e+300 in the entry's valid"
+         " range (or 0, if the range holds 0)"),
+    ]
+    for n, case_ in enumerate(cases):
+        params, targets, want, expect = case_[:4]
+        extra = case_[4] if len(case_) > 4 else ""
         write_dict(case, params, targets,
-                   "maxIterations 1;" if want == 2 else "")
+                   "maxIterations 1;" if want == 2 else extra)
         rc, out, _ = calibrate(case, os.path.join(work, "c%d" % n))
         check(rc == want and expect in out,
               "exit %d (want %d), '%s' in: %s"

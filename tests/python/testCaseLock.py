@@ -351,6 +351,24 @@ class LockCutShort(LiveLockTestCase):
             with open(path) as f:
                 self.assertEqual(f.read(), text)
 
+    def testFarLargerThanALockNotRead(self):
+        """adv48b g14: a .runLock of 8 GB was read whole (the run sat until
+        killed): a file above MAX_LOCK_BYTES is refused as no lock, naming
+        its size, without reading it; left as it is"""
+        from neuronFsi import allrunLock
+        path = self.case + "/.runLock"
+        with open(path, "w") as f:
+            f.truncate(1 << 20)
+        why = (r"is far larger than a lock \(1048576 bytes; a lock is a few "
+               r"lines, at most 65536 bytes\): damaged or not a lock")
+        with self.assertRaisesRegex(caseLock.CaseLockError, why):
+            with caseLock.held(self.case, "planeWave"):
+                pass
+        self.assertRegex(caseLock.inUse(self.case), why)
+        with self.assertRaisesRegex(allrunLock.LockError, why):
+            allrunLock.take(self.case, os.getpid())
+        self.assertEqual(os.path.getsize(path), 1 << 20)
+
     def testWholeLockStillLive(self):
         p = self.holdLock()
         self.assertEqual(caseLock.damage(caseLock.read(

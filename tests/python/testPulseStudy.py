@@ -193,6 +193,45 @@ class Dictionary(TempDirTestCase):
         self.refused(r"entry 'baseOptions': unknown option '-hh'",
                      baseOptions="(-hh 1)")
 
+    def testBelowTheReaderNamesTheRange(self):
+        # adv47b f22: 4.9e-324 and 1e-300 were refused with "give 0 or a
+        # value ... in the entry's valid range": the range unnamed, and 0
+        # advised where the entry refuses it
+        for tiny in ("4.9e-324", "1e-300", "1e-400"):
+            self.refused(r"line 3: entry 'overpressure' = %s Pa is below "
+                         r"the smallest magnitude OpenFOAM reads "
+                         r"\(1e-300\): it would be read as 0; the entry's "
+                         r"valid range is \(0, 1e9\] Pa: give a value in "
+                         r"it above 1e-300 \(option -amplitude of "
+                         % tiny.replace("+", r"\+"),
+                         overpressure="(10e6 %s)" % tiny)
+        self.refused(r"entry 'duration' = 1e-300 s is below the smallest "
+                     r"magnitude OpenFOAM reads \(1e-300\): it would be "
+                     r"read as 0; the entry's valid range is "
+                     r"\(1e-10, 0.9\] s: give a value in it \(option "
+                     r"-pulse", duration="1e-300")
+        self.refused(r"entry 'strainRateWindow' = 1e-300 s is below the "
+                     r"smallest magnitude OpenFOAM reads \(1e-300\): it "
+                     r"would be read as 0; the entry's valid range is "
+                     r"\[5e-10, 1.5e-07\] s: give a value in it$",
+                     strainRateWindow="1e-300")
+        # an entry whose range the study does not hold: no 0 advised as
+        # such, the range not invented
+        self.refused(r"entry 'thresholds/axon/value' = 1e-300 is below the "
+                     r"smallest magnitude OpenFOAM reads \(1e-300\): it "
+                     r"would be read as 0: give a value with 1e-300 < \|x\|"
+                     r" <= 1e\+300 in the entry's valid range \(or 0, if "
+                     r"the range holds 0\)",
+                     thresholds=GOOD["thresholds"].replace(
+                         "value 0.21 [-]", "value 1e-300 [-]"))
+
+    def testSampleIntervalNotFinite(self):
+        # adv48a h09: "inf is not a positive number": the range and unit
+        for v in ("inf", "-inf", "nan", "0"):
+            self.refused(r"entry 'sampleInterval' = %s is not a number in "
+                         r"the valid range \(0, inf\) s" % v.replace(
+                             "+", r"\+"), sampleInterval=v)
+
     def testSamplesBoundedByTheRun(self):
         # a point's writes at most the solvers' maxWrites (adv pass ps09:
         # sampleInterval 1e-15 s wrote without end); tiny or huge numbers
@@ -201,8 +240,11 @@ class Dictionary(TempDirTestCase):
                      r"valid range \[1.5e-11, 1.5e-07\] s: a point's run to "
                      r"endTime 1.5e-07 s would write 1.5e\+08 times",
                      sampleInterval="1e-15")
-        self.refused(r"entry 'sampleInterval' = 5e-324 is below the "
-                     r"smallest magnitude OpenFOAM reads",
+        self.refused(r"entry 'sampleInterval' = 5e-324 s is below the "
+                     r"smallest magnitude OpenFOAM reads \(1e-300\): it "
+                     r"would be read as 0; the entry's valid range is "
+                     r"\(0, inf\) s: give a value in it above 1e-300 "
+                     r"\(option -writeInterval",
                      sampleInterval="5e-324")
         self.refused(r"entry 'strainRateWindow' = 1e\+300 s is outside the "
                      r"valid range \[5e-10, 1.5e-07\] s",
@@ -433,6 +475,23 @@ boundaryField
                 "2e-09 s\\), not of p3e\\+07_T2e-09 \\(overpressure 3e\\+07 "
                 "Pa, duration 2e-09 s\\)"):
             ps.readRecord(path, self.point())
+
+    def testTemporaryTablesOfAKilledStudyRemoved(self):
+        """a study killed while writing its tables left table.h5.tmp (and
+        table.csv.tmp, uncertainty.csv.tmp) for good: the next study
+        removes them, and only them"""
+        app = loadApp()
+        out = os.path.join(self.tmp, "out")
+        for name in ("table.h5.tmp", "table.csv.tmp", "uncertainty.csv.tmp",
+                     "table.h5", "notes.tmp", "table.h5.tmp1"):
+            self.write("out/" + name, "x\n")
+        removed = app.removeTemporaryFiles(out)
+        self.assertEqual(sorted(os.path.basename(p) for p in removed),
+                         ["table.csv.tmp", "table.h5.tmp",
+                          "uncertainty.csv.tmp"])
+        self.assertEqual(sorted(os.listdir(out)),
+                         ["notes.tmp", "table.h5", "table.h5.tmp1"])
+        self.assertEqual(app.removeTemporaryFiles(out), [])
 
     def testBaseCopyWithTheUsersFileRefused(self):
         """the study's copy of the base case (made again at every run)

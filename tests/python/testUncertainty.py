@@ -174,7 +174,18 @@ class Dictionary(Study):
 
     def testStepZero(self):
         self.refused(r"entry 'step' = 0 is outside the valid range "
-                     r"\(0, inf\)", ("step        0.2", "step 0"))
+                     r"\(0, 1\)", ("step        0.2", "step 0"))
+
+    def testStepTooLarge(self):
+        """adv48a h10: step 1e3 (or 710) overflowed e^step in stepProblem,
+        an OverflowError traceback: refused naming the range"""
+        for step in ("1e3", "710", "1"):
+            self.refused(r"entry 'step' = %s is outside the valid range "
+                         r"\(0, 1\) \[-\] \(the finite difference's step "
+                         r"in ln p" % ("1000.0" if step == "1e3" else step),
+                         ("step        0.2", "step %s" % step))
+        self.refused(r"entry 'checkStep' = 710 is outside the valid range "
+                     r"\(0, 1\)", ("checkStep   0.1", "checkStep 710"))
 
     def testStepThatMovesNoParameter(self):
         """fix19d (adv47b f25): a step that leaves a parameter's value
@@ -227,6 +238,12 @@ class Dictionary(Study):
     def testPulseNotOnGrid(self):
         self.refused(r"entry 'pulses': \(5e\+07 Pa, 5e-09 s\) is not a "
                      r"point of the grid", ("((10e6 5e-9))", "((50e6 5e-9))"))
+        # one ulp above a grid value: printed with the digits that show it
+        # (adv48b g46: "(3e+07 Pa, ...) is not a point of the grid
+        # (overpressure 3e+07 ...)")
+        self.refused(r"entry 'pulses': \(10000000.000000002 Pa, 5e-09 s\) "
+                     r"is not a point of the grid \(overpressure 1e\+07 ",
+                     ("((10e6 5e-9))", "((10000000.000000002 5e-9))"))
 
     def testAboutUnknown(self):
         self.refused(r"entry 'about' = calibrate: neither base nor a "

@@ -87,7 +87,7 @@ sys.path.insert(0, os.path.dirname(os.path.realpath(__file__)))
 from neuronFsi import caseLock, foamDict, indenterProperties, options, \
     ranges, signals  # noqa: E402
 from forwardModel import ForwardModel, ModelError  # noqa: E402
-from targets import Targets, TargetError  # noqa: E402
+from targets import RELATIVE_ERROR_RANGE, Targets, TargetError  # noqa: E402
 
 UNITS = {"C10": "Pa", "d0": "1/Pa", "mu": "Pa", "tau": "s", "eta": "Pa s",
          "delta0": "m"}
@@ -195,6 +195,8 @@ def setting(d, key, default, where, interval, integer=False):
     mathematics, inf for no bound); InputError naming the dictionary, the
     entry, the value and the range otherwise."""
     v = d.get(key, default)
+    if isinstance(v, foamDict.BelowReader) and not integer:
+        raise InputError(v.problem(interval))
     kind = "a whole number" if integer else "a number"
     if isinstance(v, bool) or not isinstance(v, (int, float)) \
             or (integer and not isinstance(v, int)):
@@ -211,9 +213,16 @@ class Calibration:
         self.case = os.path.abspath(case)
         self.dict_path = dict_path
         try:
-            d = foamDict.read(dict_path)
+            d = foamDict.read(dict_path, belowReader=True)
         except (OSError, foamDict.DictError) as err:
             raise InputError(str(err))
+        # a number OpenFOAM reads as 0: refused naming the entry's range by
+        # the readers of the entries kept here (adv47b f30), any other now
+        foamDict.refuseBelowReader(d, InputError, keep=(
+            "tolerance", "finiteDifferenceStep", "relativeError",
+            "meshSizeFactor",
+            "targets/*/value", "targets/*/sigma", "targets/*/weight",
+            "targets/*/relativeError"))
         self.d = d
         where = dict_path
         try:
@@ -252,6 +261,8 @@ class Calibration:
         if not self.free:
             raise InputError("%s: no parameter has 'fit yes'" % where)
         rel = d.get("relativeError", 0.05)
+        if isinstance(rel, foamDict.BelowReader):
+            raise InputError(rel.problem(RELATIVE_ERROR_RANGE))
         self.targets = Targets(d.get("targets"), self.case, rel, where)
         if self.targets.size() < len(self.free):
             raise InputError("%s: %d target values for %d fitted "

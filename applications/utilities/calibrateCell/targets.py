@@ -29,6 +29,8 @@ def _header_name(cell):
 # crush it
 FORCE_RANGE = "[1e-15, 1e-3]"
 FORCE_MAX = 1e-3
+# a target's relativeError (and the dictionary's default of it)
+RELATIVE_ERROR_RANGE = "[1e-6, 10]"
 
 # the units of the columns read: SI only (a curve in ms and nN was read as
 # s and N without a word, adv32 k01, k01b)
@@ -208,6 +210,8 @@ class Targets:
             v = e.get(key, default)
             if v is None:
                 return None
+            if isinstance(v, foamDict.BelowReader):
+                raise TargetError(v.problem(interval, unit))
             if isinstance(v, bool) or not isinstance(v, (int, float)):
                 raise TargetError("%s: '%s' must be a number, not '%s'"
                                   % (at, key, v))
@@ -225,7 +229,7 @@ class Targets:
         # or 1e300 overflowed in the fit (adv pass k33, k34, k36)
         weight = positive("weight", 1.0, "[1e-6, 1e6]")
         sigma = positive("sigma", None, "(0, 1]", " N")
-        rel = positive("relativeError", relative_error, "[1e-6, 10]")
+        rel = positive("relativeError", relative_error, RELATIVE_ERROR_RANGE)
         if "file" in e:
             if "peak" in e or "value" in e:
                 raise TargetError("%s: give either 'file' (a curve) or "
@@ -248,6 +252,8 @@ class Targets:
             raise TargetError("%s: give 'peak' (a label of peaks.dat) and "
                               "'value' [N], or 'file' (a CSV curve)" % at)
         v = e["value"]
+        if isinstance(v, foamDict.BelowReader):
+            raise TargetError(v.problem(FORCE_RANGE, " N"))
         if isinstance(v, bool) or not isinstance(v, (int, float)):
             raise TargetError("%s: 'value' must be a force [N], not '%s'"
                               % (at, v))

@@ -278,6 +278,26 @@ def rowOf(s, record):
     return row, atEnd
 
 
+# The temporary files of the study's own outputs in its folder, each
+# replacing its output when whole (writeTable, the uncertainty's table)
+TEMPORARY = ("table.csv.tmp", "table.h5.tmp", "uncertainty.csv.tmp")
+
+
+def removeTemporaryFiles(out):
+    """Remove the temporary files (TEMPORARY) a study killed while writing
+    its tables left in its folder out, a file or a symbolic link of that
+    name (a folder is left, and named by the write); the paths removed.
+    Called with the study's lock held: no other study writes them (was: a
+    killed study left postProcessing/pulseStudy/table.h5.tmp for good)."""
+    removed = []
+    for name in TEMPORARY:
+        path = os.path.join(out, name)
+        if os.path.islink(path) or os.path.isfile(path):
+            os.remove(path)
+            removed.append(path)
+    return removed
+
+
 def writeTable(s, out, rows):
     cols = list(rows[0])
     tmp = os.path.join(out, "table.csv.tmp")
@@ -690,6 +710,10 @@ def main():
         OUT = ps.output(a.dict)
         out = os.path.join(case, OUT)
         os.makedirs(os.path.join(out, "points"), exist_ok=True)
+        for path in removeTemporaryFiles(out):
+            print("pulseStudy: removed %s, the temporary file of an earlier "
+                  "study stopped while it wrote its tables"
+                  % os.path.relpath(path, case), flush=True)
         # a run left going by a study killed with SIGKILL: refused before
         # anything is removed or started (adv33 x07)
         for label in sorted(os.listdir(os.path.join(out, "points"))):

@@ -73,6 +73,12 @@ def _notAFile(path):
     return ""
 
 
+# The largest lock file read [B]: a lock is a few lines per run taken over
+# (a few hundred bytes); a larger file is no lock and is not read (adv48b
+# g14: a .runLock of 8 GB was read whole). caseLock.H's maxLockBytes
+MAX_LOCK_BYTES = 65536
+
+
 def parse(text):
     """The fields of a lock's text as a dict (pid -1 if missing or not a
     process id); 'under': the text of the lock it took over (its lines
@@ -101,6 +107,10 @@ def damage(h):
     start time and case and end with a whole line; adv44 a29: a lock cut after its
     first line was a live run "process 484 on host , started ;").
     caseLock.H's damage."""
+    if h.get("tooLarge"):
+        return ("far larger than a lock (%d bytes; a lock is a few lines, at "
+                "most %d bytes): damaged or not a lock, not read"
+                % (h["tooLarge"], MAX_LOCK_BYTES))
     if not h["readable"]:
         return "a file that cannot be read"
     if h["pid"] <= 0:
@@ -124,8 +134,10 @@ def readText(path):
     if _notAFile(path):
         return None
     try:
+        if os.path.getsize(path) > MAX_LOCK_BYTES:
+            return None
         with open(path, errors="replace") as f:
-            return f.read()
+            return f.read(MAX_LOCK_BYTES + 1)
     except OSError:
         return None
 
@@ -137,6 +149,12 @@ def read(path):
     if text is None:
         h = parse("")
         h["readable"] = False
+        try:
+            if not _notAFile(path) \
+                    and os.path.getsize(path) > MAX_LOCK_BYTES:
+                h["tooLarge"] = os.path.getsize(path)
+        except OSError:
+            pass
         return h
     return parse(text)
 

@@ -19,6 +19,7 @@ the closest valid one when it is close (closest: the C++ readers' rule of
 src/foamTools/closestKeyword.H, the same distance and threshold).
 """
 
+import fnmatch
 import math
 import os
 import re
@@ -36,6 +37,82 @@ _TOKEN = re.compile(r'''
 
 class DictError(Exception):
     """A dictionary that cannot be read; the message names file and place."""
+
+
+class BelowReader(float):
+    """A number of a dictionary that OpenFOAM's reader takes as 0: not zero
+    as written, of magnitude at most 1e-300 (4.9e-324, 1e-300, 1e-400).
+    Its value is 0.0, what the solvers would read; text is the number as
+    written, where the file and line, entry the entry's path. Returned by
+    parse (read, read_checked) with belowReader=True, for a reader that
+    names the entry's own valid range (problem); refuseBelowReader refuses
+    the others (adv47b f22, f30: "give 0 or a value ... in the entry's valid
+    range" without the range, and 0 advised where the entry refuses it)."""
+
+    def __new__(cls, text, where, entry):
+        self = float.__new__(cls, 0.0)
+        self.text, self.where, self.entry = text, where, entry
+        return self
+
+    def __repr__(self):
+        return self.text
+
+    __str__ = __repr__
+
+    def problem(self, interval, unit=""):
+        """The message's text naming the entry's valid range interval (a
+        ranges.Interval or its text; unit with its leading space): 0
+        suggested only when the range holds it."""
+        if not isinstance(interval, ranges.Interval):
+            interval = ranges.Interval(interval)
+        if 0.0 in interval:
+            give = "give 0, or a value of magnitude above 1e-300 in it"
+        else:
+            give = "give a value in it" + (
+                " above 1e-300" if interval.low <= ranges.READER_SMALLEST
+                else "")
+        return ("%s: %s = %s%s %s; the entry's valid range is %s%s: %s"
+                % (self.where, self.what(), self.text, unit,
+                   ranges.readerRangeProblem(self.text, float(self.text)),
+                   interval, unit, give))
+
+    def what(self):
+        return "a value of the list" if self.entry is None \
+            else "entry '%s'" % self.entry
+
+
+def belowReaderLeft(d, keep=()):
+    """The BelowReader values of d (a parsed dictionary, a list or a
+    value) whose entry path matches none of the fnmatch patterns keep,
+    in the file's order."""
+    out = []
+    if isinstance(d, BelowReader):
+        if not any(fnmatch.fnmatchcase(d.entry or "", k) for k in keep):
+            out.append(d)
+    elif isinstance(d, dict):
+        for v in d.values():
+            out += belowReaderLeft(v, keep)
+    elif isinstance(d, list):
+        for v in d:
+            out += belowReaderLeft(v, keep)
+    return out
+
+
+def refuseBelowReader(d, error, keep=()):
+    """error(message) for the first BelowReader value of d outside the
+    entries keep (fnmatch patterns of entry paths, e.g. "targets/*/value"),
+    those whose reader names their range (BelowReader.problem): the range of
+    any other entry is not known here, and 0 is advised only as one value
+    among those the entry may take."""
+    left = belowReaderLeft(d, keep)
+    if left:
+        v = left[0]
+        raise error("%s: %s = %s %s: give a value with 1e-300 < |x| <= "
+                    "1e+300 in the entry's valid range (or 0, if the range "
+                    "holds 0)"
+                    % (v.where, v.what(), v.text,
+                       ranges.readerRangeProblem(v.text, float(v.text))))
+
 
 
 def tokens(text, name="<text>"):
@@ -128,13 +205,16 @@ def _merge(d, new):
             d[k] = v
 
 
-def parse(text, name="<text>", base=None, included=None):
+def parse(text, name="<text>", base=None, included=None, belowReader=False):
     """Nested dict of the file. An entry of one token is that value (int,
     float, bool for yes/no/true/false/on/off, or str); of several tokens or
     a list, a Python list; the FoamFile header is dropped. Include
     directives name files relative to the directory base. With a list
     `included`, include directives are not followed: the text's own
-    entries only, the directives' file names appended to the list."""
+    entries only, the directives' file names appended to the list.
+    A number OpenFOAM reads as 0 (not zero, magnitude at most 1e-300) is a
+    DictError, or with belowReader a BelowReader value (its reader names
+    the entry's range; refuseBelowReader the others)."""
     toks = tokens(text, name)
     i = [0]
 
@@ -152,11 +232,15 @@ def parse(text, name="<text>", base=None, included=None):
             return t            # a word, as OpenFOAM reads it
         why = ranges.readerRangeProblem(t, v) if not t.startswith('"') \
             else ""
+        if why and belowReader and abs(v) <= ranges.READER_SMALLEST:
+            return BelowReader(t, "%s, line %d" % (name, _line(
+                text, toks[k][1])), entry[0])
         if why:
             what = "a value of the list" if entry[0] is None \
                 else "entry '%s'" % entry[0]
-            err("%s = %s %s: give 0 or a value with 1e-300 < |x| <= 1e+300"
-                " in the entry's valid range" % (what, t, why), k)
+            err("%s = %s %s: give a value with 1e-300 < |x| <= 1e+300 in "
+                "the entry's valid range (or 0, if the range holds 0)"
+                % (what, t, why), k)
         return v
 
     def parse_list():
@@ -193,7 +277,7 @@ def parse(text, name="<text>", base=None, included=None):
             if key == "#include":
                 err("%s: no file %s" % (key, path), i[0] - 1)
             return {}
-        return read(path)
+        return read(path, belowReader)
 
     def parse_dict(closing, scope):
         d = {}
@@ -252,7 +336,7 @@ def parse(text, name="<text>", base=None, included=None):
     return d
 
 
-def read(path):
+def read(path, belowReader=False):
     """Nested dict of a dictionary file (see parse), includes merged. A path
     that is not a regular file (a FIFO would block the open) is a
     DictError naming what it is."""
@@ -261,7 +345,8 @@ def read(path):
         raise DictError("%s is %s, not a file%s" % (
             path, kind, "" if kind == "a directory" else
             ": reading it would wait without end for a writer"))
-    return parse(fileText(path), path, os.path.dirname(path) or ".")
+    return parse(fileText(path), path, os.path.dirname(path) or ".",
+                 belowReader=belowReader)
 
 
 def fileText(path):
@@ -312,16 +397,18 @@ def own_entry(path, keys):
     return True, []
 
 
-def read_checked(path, valid, required, error):
+def read_checked(path, valid, required, error, belowReader=False):
     """read(path) with its keywords checked (check_keywords) and the
     required ones present; any fault raises error(message), the message
     naming the file (a missing file or what the path is instead, an
-    unknown keyword with the closest valid one, a missing entry)."""
+    unknown keyword with the closest valid one, a missing entry).
+    belowReader: as in parse (the caller refuses what remains with
+    refuseBelowReader)."""
     why = options.fileProblem(path)
     if why:
         raise error("%s: %s" % (path, why))
     try:
-        d = read(path)
+        d = read(path, belowReader)
         check_keywords(d, valid, path)
     except DictError as err:
         raise error(str(err))

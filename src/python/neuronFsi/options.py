@@ -267,9 +267,9 @@ def parse(parser, argv=None):
         argv = ["--help" if a == "-help" else a for a in argv]
     argv = joinNegativeValues(parser, argv)
     for name, value, why in numbersOutsideReader(parser, argv):
-        parser.error("option %s '%s': %s: give 0 or a value with 1e-300 < "
-                     "|x| <= 1e+300 in the option's valid range"
-                     % (name, value, why))
+        parser.error("option %s '%s': %s: give a value with 1e-300 < |x| "
+                     "<= 1e+300 in the option's valid range (or 0, if the "
+                     "range holds 0)" % (name, value, why))
     for name, value, word in numbersNotPlain(parser, argv):
         parser.error("option %s '%s': '%s' is not a plain decimal number "
                      "(digits 0-9 only, no '_': OpenFOAM would not read it "

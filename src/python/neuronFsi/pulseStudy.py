@@ -81,13 +81,18 @@ class StudyError(Exception):
     pass
 
 
-def _number(d, key, where, positive=True):
+def _number(d, key, where, unit):
+    """Entry key of d: a finite number above 0 [unit]; its tighter range
+    is checked by read. inf, nan, -0 named with that range and the unit
+    (adv48a h09: "inf is not a positive number")."""
     v = d[key]
+    if isinstance(v, foamDict.BelowReader):
+        return v            # refused naming its range by read
     if isinstance(v, bool) or not isinstance(v, (int, float)) \
-            or not math.isfinite(v) or (positive and not v > 0):
-        raise StudyError("%s: entry '%s' = %s is not a %snumber"
-                         % (where, key, foamDict.format_value(v),
-                            "positive " if positive else ""))
+            or not math.isfinite(v) or not v > 0:
+        raise StudyError("%s: entry '%s' = %s is not a number in the valid "
+                         "range (0, inf) %s"
+                         % (where, key, foamDict.format_value(v), unit))
     return float(v)
 
 
@@ -100,6 +105,9 @@ def _grid(d, key, where, unit):
                          "[%s]" % (where, key, unit))
     out = []
     for x in v:
+        if isinstance(x, foamDict.BelowReader):
+            out.append(x)   # refused naming its range by read
+            continue
         if isinstance(x, bool) or not isinstance(x, (int, float)) \
                 or not math.isfinite(x):
             raise StudyError("%s: entry '%s': '%s' is not a number [%s]"
@@ -202,7 +210,11 @@ def read(case, dictionary=DICT):
     path = os.path.join(case, dictionary)
     d = foamDict.read_checked(
         path, KEYWORDS, [k for k in KEYWORDS if k not in OPTIONAL],
-        StudyError)
+        StudyError, belowReader=True)
+    # a number OpenFOAM reads as 0: the entries with a range below name it
+    # (adv47b f22), any other is refused now
+    foamDict.refuseBelowReader(d, StudyError, keep=(
+        "overpressure", "duration", "sampleInterval", "strainRateWindow"))
     base = d["baseCase"]
     if not isinstance(base, str):
         raise StudyError("%s: entry 'baseCase' is not a folder name" % path)
@@ -225,8 +237,8 @@ def read(case, dictionary=DICT):
     s = {"case": case, "dict": path, "base": base}
     s["overpressure"] = _grid(d, "overpressure", path, "Pa")
     s["duration"] = _grid(d, "duration", path, "s")
-    s["sampleInterval"] = _number(d, "sampleInterval", path)
-    s["window"] = _number(d, "strainRateWindow", path)
+    s["sampleInterval"] = _number(d, "sampleInterval", path, "s")
+    s["window"] = _number(d, "strainRateWindow", path, "s")
     th = d["thresholds"]
     if not isinstance(th, dict):
         raise StudyError("%s: entry 'thresholds' is not a sub-dictionary"
@@ -257,6 +269,10 @@ def read(case, dictionary=DICT):
                      ("sampleInterval", "-writeInterval")):
         values = s[key] if isinstance(s[key], list) else [s[key]]
         for v in values:
+            if isinstance(v, foamDict.BelowReader):
+                raise StudyError("%s (option %s of %s/Allrun)" % (
+                    v.problem(decl[opt].range, decl[opt].unitText()), opt,
+                    base))
             try:
                 decl[opt].check(_text(v))
             except allrunOptions.OptionError as err:
@@ -284,6 +300,9 @@ def read(case, dictionary=DICT):
             "directory of the point's case)"
             % (path, sample, end/MAX_WRITES, end, end, "%.3g" % (end/sample)
                if sample < end else "no", MAX_WRITES))
+    if isinstance(s["window"], foamDict.BelowReader):
+        raise StudyError(s["window"].problem(
+            "[%s, %s]" % (repr(sample), repr(end)), " s"))
     if not sample <= s["window"] <= end:
         raise StudyError(
             "%s: entry 'strainRateWindow' = %g s is outside the valid range"

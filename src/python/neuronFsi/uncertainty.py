@@ -59,7 +59,7 @@ import re
 
 import numpy as np
 
-from . import foamDict
+from . import foamDict, ranges
 
 KEYWORDS = ("pulses", "variants", "about", "parameters", "correlation",
             "difference", "step", "checkStep")
@@ -197,13 +197,22 @@ def _variant(name, v, mats, project, where):
     return out
 
 
-def _positive(d, key, where):
+# The valid range of a finite-difference step (step, checkStep) [-], in ln p
+# (log yes) or p/|p0|: a step of 1 moves a parameter by a factor e (log)
+# or to 0 (central, linear), far from the linearisation; 1e3 overflowed
+# e^step (adv48a h10: an OverflowError traceback)
+STEP_RANGE = "(0, 1)"
+
+
+def _step(d, key, where):
     v = d[key]
     if isinstance(v, bool) or not isinstance(v, (int, float)) \
-            or not math.isfinite(v) or not v > 0:
+            or v not in ranges.Interval(STEP_RANGE):
         raise UncertaintyError("%s: entry '%s' = %s is outside the valid "
-                               "range (0, inf) [-]"
-                               % (where, key, foamDict.format_value(v)))
+                               "range %s [-] (the finite difference's step "
+                               "in ln p with log yes, else in p/|p0|)"
+                               % (where, key, foamDict.format_value(v),
+                                  STEP_RANGE))
     return float(v)
 
 
@@ -242,15 +251,19 @@ def read(d, where, base, grid, project):
                                    % (w, foamDict.format_value(p)))
         A, T = float(p[0]), float(p[1])
         if A not in grid["overpressure"] or T not in grid["duration"]:
+            # the digits that tell the values apart (_tag: %g unless it
+            # reads back otherwise; adv48b g46: 30000000.000000004 and the
+            # grid's 3e7 both printed 3e+07)
             raise UncertaintyError(
-                "%s: entry 'pulses': (%g Pa, %g s) is not a point of the "
+                "%s: entry 'pulses': (%s Pa, %s s) is not a point of the "
                 "grid (overpressure %s Pa, duration %s s): the intervals are"
                 " drawn on the study's own points" % (
-                    w, A, T, " ".join("%g" % x for x in grid["overpressure"]),
-                    " ".join("%g" % x for x in grid["duration"])))
+                    w, _tag(A), _tag(T),
+                    " ".join(_tag(x) for x in grid["overpressure"]),
+                    " ".join(_tag(x) for x in grid["duration"])))
         if (A, T) in s["pulses"]:
-            raise UncertaintyError("%s: entry 'pulses': (%g Pa, %g s) is "
-                                   "given twice" % (w, A, T))
+            raise UncertaintyError("%s: entry 'pulses': (%s Pa, %s s) is "
+                                   "given twice" % (w, _tag(A), _tag(T)))
         s["pulses"].append((A, T))
     variants = d.get("variants", {})
     if not isinstance(variants, dict):
@@ -363,7 +376,7 @@ def read(d, where, base, grid, project):
                 raise UncertaintyError("%s: no entry '%s' (the finite "
                                        "difference's step in ln p or p/|p0|"
                                        " [-])" % (w, k))
-            s[k] = _positive(d, k, w)
+            s[k] = _step(d, k, w)
         if s["step"] == s["checkStep"]:
             raise UncertaintyError("%s: entry 'checkStep' = step = %g: a "
                                    "second, other step checks the first"
