@@ -6,7 +6,7 @@
 # row (default 4) whose application is 'false' and whose edit is 'true'
 # (names, bases and regexes as committed), and runs OLD's and NEW's
 # runCorpus.sh on it (each in a scratch tree under OUT linking the
-# checkout's etc, tutorials, tests/lib and tests/verification) at the same
+# checkout's etc, tutorials, tests/lib, tests/verification and tests/fsi) at the same
 # time, nice -n 10: every row then fails at 'the message does not name the
 # file' after the same steps as a real row (copy of the base, edit, md5 of
 # the case, the run, the message's checks). Prints wall and CPU
@@ -23,6 +23,7 @@ do
     ln -s "$src/etc" "$t/etc"; ln -s "$src/tutorials" "$t/tutorials"
     ln -s "$src/tests/lib" "$t/tests/lib"
     ln -s "$src/tests/verification" "$t/tests/verification"
+    ln -s "$src/tests/fsi" "$t/tests/fsi"
     cp "$src/tests/badInput/runCorpus.sh" "$src/tests/badInput/cellMeshDict" \
         "$t/tests/badInput/"
     grep -v '^[[:space:]]*\(#\|$\)' "$src/tests/badInput/corpus" \
@@ -41,7 +42,7 @@ do
 done
 wait
 echo "corpusHarness: end $(date -u +%H:%M:%S) UTC, load $(cut -d' ' -f1-3 /proc/loadavg)"
-cat "$out/old.time" "$out/new.time" | awk '{ printf "  %s: wall %.1f s, CPU %.1f s\n", $1, $2, $3 + $4 }'
+cat "$out/old.time" "$out/new.time" | awk '/^(old|new) / { printf "  %s: wall %.1f s, CPU %.1f s\n", $1, $2, $3 + $4 }'
 for s in old new
 do
     echo "  $s: $(tail -1 "$out/$s.log"); $(grep -c 'does not name the file' "$out/$s.log") rows failed at the file check"
