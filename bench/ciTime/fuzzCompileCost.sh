@@ -22,8 +22,12 @@ then
 else
     for n in "$@"
     do
-        s=$(ls "$root"/src/solid/*/"$n.C" 2>/dev/null) \
-            || { echo "fuzzCompileCost: no source $n.C in src/solid" >&2; exit 1; }
+        s=""
+        for f in core materials elements model loads contact io drivers
+        do
+            [ -f "$root/src/solid/$f/$n.C" ] && s=$root/src/solid/$f/$n.C
+        done
+        [ -n "$s" ] || { echo "fuzzCompileCost: no source $n.C in src/solid" >&2; exit 1; }
         sources+=("$s")
     done
 fi
