@@ -25,7 +25,7 @@ echo "coldBuild: $(git rev-parse --short HEAD) in $dir, -j $jobs, load $(cut -d'
 # Allwmake in the background, its output read line by line: at each header
 # the CPU of the children it has waited for so far
 start=$(now)
-coproc AW { nice -n 10 ./Allwmake -j "$jobs" 2>&1; }
+coproc AW { exec nice -n 10 ./Allwmake -j "$jobs" 2>&1; }
 pid=$AW_PID
 cpu() { awk -v t="$tick" '{ printf "%.1f", ($16 + $17) / t }' "/proc/$pid/stat" 2>/dev/null || echo "?"; }
 lastT=$start lastC=0 part="(start)"
