@@ -8,7 +8,16 @@
 #   - leave every file that existed before the run unchanged (md5 of each
 #     file of the case, logs excepted: the good results stay good).
 # Usage: runCorpus.sh [-l | --list] [NAME-REGEX]
-#   -l  print the listing (name, base, application, what is broken)
+#        runCorpus.sh --prepare DIR
+#        runCorpus.sh --bases DIR [--shard K/N] [NAME-REGEX]
+#   -l         print the listing (name, base, application, what is broken)
+#   --prepare  build the good cases (the bases) into DIR (new or empty) and
+#              exit: ctest's fixture badInputBases, shared by the shards
+#   --bases    the rows on the bases of an earlier --prepare DIR (by
+#              default they are built into a temporary folder first)
+#   --shard    of the selected rows, the K-th of every N (rows K, K+N, ...
+#              in the corpus' order; K in [1, N]): the ctest tests
+#              badInput.corpus.K run the corpus in N parts
 set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -28,13 +37,57 @@ then
     done
     exit 0
 fi
+prepare="" bases="" shard=1 shards=1
+while [ $# -gt 0 ]
+do
+    case "$1" in
+        --prepare|--bases)
+            [ $# -ge 2 ] && [ -n "$2" ] \
+                || { echo "badInput: $1 needs a folder" >&2; exit 1; }
+            if [ "$1" = --prepare ]; then prepare=$2; else bases=$2; fi
+            shift 2 ;;
+        --shard)
+            [[ "${2:-}" =~ ^([1-9][0-9]*)/([1-9][0-9]*)$ ]] \
+                && [ "${BASH_REMATCH[1]}" -le "${BASH_REMATCH[2]}" ] \
+                || { echo "badInput: --shard '${2:-}': give K/N with" \
+                     "1 <= K <= N (e.g. --shard 2/3)" >&2; exit 1; }
+            shard=${BASH_REMATCH[1]} shards=${BASH_REMATCH[2]}
+            shift 2 ;;
+        -*) echo "badInput: unknown option $1 (valid: -l, --list," \
+                "--prepare DIR, --bases DIR, --shard K/N)" >&2; exit 1 ;;
+        *) break ;;
+    esac
+done
+[ -z "$prepare" ] || [ -z "$bases" ] \
+    || { echo "badInput: --prepare and --bases exclude each other" >&2; exit 1; }
 select=${1:-.}
 
 . "$root/etc/bashrc"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-bases=$work/bases
-mkdir -p "$bases"
+if [ -n "$prepare" ]
+then
+    # nothing good overwritten: a new or empty folder only
+    if [ -e "$prepare" ] && [ -n "$(ls -A "$prepare" 2>/dev/null)" ]
+    then
+        echo "badInput: --prepare $prepare exists and is not empty (give a" \
+            "new folder, or remove it)" >&2
+        exit 1
+    fi
+    mkdir -p "$prepare" || exit 1
+    bases=$(cd "$prepare" && pwd)
+    build=yes
+elif [ -n "$bases" ]
+then
+    [ -d "$bases" ] || { echo "badInput: --bases $bases is not a folder" \
+        "(made by runCorpus.sh --prepare)" >&2; exit 1; }
+    bases=$(cd "$bases" && pwd)
+    build=no
+else
+    bases=$work/bases
+    mkdir -p "$bases"
+    build=yes
+fi
 
 # --- the good cases -------------------------------------------------------
 # fluid: the 50 MPa water shock tube, meshed and initialised
@@ -141,24 +194,46 @@ makePaper() {
     mkdir -p "$c"
     cp -r "$t"/{system,Allrun,Allclean} "$c"/
 }
-for b in Fluid Solid Mesh Fsi H5 Blast Inflow Preview Quarter Study Paper
-do
-    make$b
-done
+if [ $build = yes ]
+then
+    for b in Fluid Solid Mesh Fsi H5 Blast Inflow Preview Quarter Study Paper
+    do
+        make$b
+    done
+fi
 for b in fluid solid mesh fsi h5 blast inflow preview quarter study paper
 do
-    [ -d "$bases/$b" ] || { echo "badInput: base case $b not built"; exit 1; }
+    [ -d "$bases/$b" ] || { echo "badInput: base case $b not built" \
+        "(in $bases)"; exit 1; }
 done
+if [ -n "$prepare" ]
+then
+    echo "badInput: the base cases are in $bases"
+    exit 0
+fi
 
 # --- the rows -------------------------------------------------------------
 crash='Segmentation|sigFpe|sigSegv|sigAbrt|Aborted|core dumped|printStack|terminate called|AddressSanitizer|runtime error:|Traceback \(most recent call last\)'
 failures=0
 n=0
-while IFS= read -r row
+# The rows' six fields split once (those of field(), joined by the unit
+# separator), and the names the regex selects (grep -E on the name, as
+# each row was filtered before): no process per row and field
+us=$'\x1f'
+rows | awk -F ' [|] ' -v OFS="$us" \
+    '{ for (i = 1; i <= 6; i++) gsub(/^ +| +$/, "", $i); print $1, $2, $3, $4, $5, $6 }' \
+    > "$work/rows"
+declare -A selected=()
+while IFS= read -r name
 do
-    name=$(field "$row" 1); base=$(field "$row" 2); app=$(field "$row" 3)
-    fileRe=$(field "$row" 4); entryRe=$(field "$row" 5); edit=$(field "$row" 6)
-    grep -Eq "$select" <<< "$name" || continue
+    selected[$name]=1
+done < <(cut -d "$us" -f1 "$work/rows" | grep -E -- "$select")
+k=0
+while IFS="$us" read -r name base app fileRe entryRe edit
+do
+    [ -n "${selected[$name]:-}" ] || continue
+    k=$((k + 1))
+    [ $(( (k - 1) % shards + 1 )) -eq "$shard" ] || continue
     n=$((n + 1))
     c=$work/case
     rm -rf "$c"
@@ -176,12 +251,13 @@ do
         echo "FAIL $name: the edit failed: $(head -3 "$work/edit.log")"
         failures=$((failures + 1)); continue
     fi
-    (cd "$c" && find . -type f ! -name 'log*' -print0 | sort -z \
-        | xargs -0 md5sum) > "$work/before"
-    start=$(date +%s.%N)
+    (cd "$c" && find . -type f ! -name 'log*' -exec md5sum {} +) \
+        > "$work/before"
+    start=${EPOCHREALTIME/[.,]/}
     (cd "$c" && eval "timeout -k 5 120 $app") < /dev/null > "$work/out" 2>&1
     code=$?
-    secs=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN{printf "%.1f", b-a}')
+    secs=$(( (${EPOCHREALTIME/[.,]/} - start + 50000)/100000 ))
+    secs=$((secs/10)).$((secs%10))
     # the message: from the first error line on (the banner echoes the
     # command line and the case, which must not count as naming them)
     sed -n '/FATAL\|[Ee]rror\|ERROR/,$p' "$work/out" > "$work/msg"
@@ -206,8 +282,10 @@ do
         msg=$(grep -Eh -- "$entryRe" "$work/msg" | head -1 | tr -s ' ' | cut -c1-110)
         printf 'ok   %-28s %5s s exit %d: %s\n' "$name" "$secs" "$code" "$msg"
     fi
-done < <(rows)
+done < "$work/rows"
 
-[ $n -gt 0 ] || { echo "badInput: no case matches '$select'"; exit 1; }
-echo "badInput corpus: $((n - failures)) of $n cases passed"
+[ $n -gt 0 ] || { echo "badInput: no case matches '$select'" \
+    "$([ "$shards" -eq 1 ] || echo "in shard $shard/$shards")"; exit 1; }
+echo "badInput corpus: $((n - failures)) of $n cases passed$(
+    [ "$shards" -eq 1 ] || echo " (shard $shard/$shards of the $k selected)")"
 [ $failures -eq 0 ]
