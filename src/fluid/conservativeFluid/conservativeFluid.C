@@ -300,13 +300,46 @@ void Foam::conservativeFluid::divergences
     scalarField& divPhiE
 ) const
 {
-    // surfaceIntegrate accumulates into its first argument
+    // fvc::surfaceIntegrate of the three fluxes in one face loop: each
+    // cell's sums in its order (the internal faces, then the patches),
+    // then divided by the cell volume: the same bits
     divPhi = Zero;
     divPhiU = Zero;
     divPhiE = Zero;
-    fvc::surfaceIntegrate(divPhi, phi_);
-    fvc::surfaceIntegrate(divPhiU, phiU_);
-    fvc::surfaceIntegrate(divPhiE, phiE_);
+    const labelUList& owner = mesh_.owner();
+    const labelUList& neighbour = mesh_.neighbour();
+    const scalarField& phi = phi_.primitiveField();
+    const vectorField& phiU = phiU_.primitiveField();
+    const scalarField& phiE = phiE_.primitiveField();
+    forAll(owner, facei)
+    {
+        const label own = owner[facei];
+        const label nei = neighbour[facei];
+        divPhi[own] += phi[facei];
+        divPhi[nei] -= phi[facei];
+        divPhiU[own] += phiU[facei];
+        divPhiU[nei] -= phiU[facei];
+        divPhiE[own] += phiE[facei];
+        divPhiE[nei] -= phiE[facei];
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+        const scalarField& pPhi = phi_.boundaryField()[patchi];
+        const vectorField& pPhiU = phiU_.boundaryField()[patchi];
+        const scalarField& pPhiE = phiE_.boundaryField()[patchi];
+        forAll(mesh_.boundary()[patchi], facei)
+        {
+            const label celli = faceCells[facei];
+            divPhi[celli] += pPhi[facei];
+            divPhiU[celli] += pPhiU[facei];
+            divPhiE[celli] += pPhiE[facei];
+        }
+    }
+    const scalarField& V = mesh_.V().field();
+    divPhi /= V;
+    divPhiU /= V;
+    divPhiE /= V;
 
     if (viscous_)
     {
