@@ -458,6 +458,8 @@ void Foam::conservativeFluid::storeOldState()
     rhoU0_ = rhoU_.primitiveField();
     rhoE0_ = rhoE_.primitiveField();
     V0_ = mesh_.V().field();
+    thermo_->storeBoundaryState();
+    UBoundary0_.store(U_);
 }
 
 
@@ -466,11 +468,13 @@ void Foam::conservativeFluid::restoreOldState()
     thermo_->rho().primitiveFieldRef() = rho0_;
     rhoU_.primitiveFieldRef() = rhoU0_;
     rhoE_.primitiveFieldRef() = rhoE0_;
-    correctPrimitives();
+    primitiveCells();
+    thermo_->restoreBoundaryState();
+    UBoundary0_.restore(U_);
 }
 
 
-void Foam::conservativeFluid::correctPrimitives()
+void Foam::conservativeFluid::primitiveCells()
 {
     const scalarField& rho = thermo_->rho().primitiveField();
     const vectorField& rhoU = rhoU_.primitiveField();
@@ -485,6 +489,12 @@ void Foam::conservativeFluid::correctPrimitives()
         U[celli] = rhoU[celli]/rho[celli];
         e[celli] = rhoE[celli]/rho[celli] - 0.5*magSqr(U[celli]);
     }
+}
+
+
+void Foam::conservativeFluid::correctPrimitives()
+{
+    primitiveCells();
 
     // The thermo first: a characteristic boundary (planeWaveInflow) sets
     // U there from the cells' new p as well as their U; the processor
