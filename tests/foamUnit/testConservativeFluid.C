@@ -12,7 +12,13 @@ Description
     - moving mesh (the geometric conservation law): water at rest in a box
       whose interior points move arbitrarily stays at rest and uniform to
       round-off, the stage volumes match the mesh (gclError ~ 1e-16);
-    - restoreOldState gives back the stored state bitwise.
+    - restoreOldState gives back the stored state bitwise;
+    - a repeated coupling pass with the first pass's mesh motion gives the
+      first pass's state bitwise, on a wedge whose top pressure rises in
+      time and whose inner patch takes the moving faces' velocity
+      (restoreOldState puts back the boundary values of the step's start
+      instead of evaluating the conditions at the step's end time and on
+      the last pass's mesh; issue 18, fluid18).
 \*---------------------------------------------------------------------------*/
 
 #include "conservativeFluid.H"
@@ -282,6 +288,140 @@ TEST(conservativeFluid, restoreOldStateIsBitwise)
     EXPECT_EQ(fluid.rhoU().primitiveField(), rhoU);
     EXPECT_EQ(fluid.rhoE().primitiveField(), rhoE);
     EXPECT_EQ(thermo.p().primitiveField(), p);
+}
+
+
+TEST(conservativeFluid, repeatedPassWithTheSameMotionIsBitwiseTheFirst)
+{
+    // tests/foamUnit's wedge (r 2-18 um, y 0-8 um): p on the top rising in
+    // time (1e15 Pa/s: +1e4 Pa over the step), the inner patch (type
+    // patch: its boundary values are the Riemann flux's outer state) with
+    // the velocity of its moving faces
+    foamUnit::testCase tc("conservativeFluid", 1e-10);
+    tc.writeThermophysicalProperties("mieGruneisen");
+    tc.writeFile
+    (
+        "system/fvSolution",
+        "FoamFile { version 2.0; format ascii; class dictionary;"
+        " object fvSolution; }\n"
+        "riemann { riemannSolver HLLC; timeScheme SSPRK3; }\n"
+    );
+    const std::string head =
+        "FoamFile { version 2.0; format ascii; class vol";
+    const std::string constraints =
+        " bottom { type symmetryPlane; }"
+        " \"(front|back)\" { type wedge; } }\n";
+    tc.writeFile
+    (
+        "0/p",
+        head + "ScalarField; object p; }\n"
+        "dimensions [1 -1 -2 0 0 0 0];\n"
+        "internalField uniform 1e5;\n"
+        "boundaryField { top { type uniformFixedValue;"
+        " uniformValue table ((0 1e5) (1e-9 1.1e6)); }"
+        " \"(inner|outer)\" { type zeroGradient; }" + constraints
+    );
+    tc.writeFile
+    (
+        "0/T",
+        head + "ScalarField; object T; }\n"
+        "dimensions [0 0 0 1 0 0 0];\n"
+        "internalField uniform 300;\n"
+        "boundaryField { \"(top|inner|outer)\" { type zeroGradient; }"
+      + constraints
+    );
+    tc.writeFile
+    (
+        "0/U",
+        head + "VectorField; object U; }\n"
+        "dimensions [0 1 -1 0 0 0 0];\n"
+        "internalField uniform (0 0 0);\n"
+        "boundaryField { top { type zeroGradient; }"
+        " inner { type movingWallVelocity; value uniform (0 0 0); }"
+        " outer { type slip; }" + constraints
+    );
+    autoPtr<fvMesh> meshPtr = tc.wedgeMesh();
+    fvMesh& mesh = meshPtr();
+    conservativeFluid fluid(mesh);
+    const rhoEThermo& thermo = fluid.thermo();
+
+    // The points off the top and bottom patches move along y (in the
+    // wedge planes, along the inner and outer patches), by up to 1 % of
+    // a cell: motion A and motion B
+    bitSet fixed(mesh.nPoints());
+    for (const word name : {"top", "bottom"})
+    {
+        const label patchi = mesh.boundaryMesh().findPatchID(name);
+        ASSERT_GE(patchi, 0);
+        fixed.set(mesh.boundaryMesh()[patchi].meshPoints());
+    }
+    const pointField points0(mesh.points());
+    auto moved = [&](const scalar phase)
+    {
+        pointField newPoints(points0);
+        forAll(newPoints, pointi)
+        {
+            if (!fixed.test(pointi))
+            {
+                const point& x = points0[pointi];
+                newPoints[pointi].y() +=
+                    0.013e-6*std::sin(3.1e5*x.x() + 7.3e5*x.y() + phase);
+            }
+        }
+        return newPoints;
+    };
+
+    // The cells' primitive variables from the conservative state, as a
+    // run has them at the start of every step but the first (the ones
+    // read from 0/ differ from them by round-off)
+    fluid.storeOldState();
+    fluid.restoreOldState();
+
+    Time& runTime = tc.time();
+    runTime.setDeltaT(1e-11);
+    ++runTime;
+    const scalar dt = runTime.deltaTValue();
+    const label top = mesh.boundaryMesh().findPatchID("top");
+    const label inner = mesh.boundaryMesh().findPatchID("inner");
+
+    // The patch values as fields (fvPatchField's == is an assignment)
+    auto pTop = [&]() { return scalarField(thermo.p().boundaryField()[top]); };
+    auto UInner = [&]() { return vectorField(fluid.U().boundaryField()[inner]); };
+
+    fluid.storeOldState();
+    const scalarField pTop0(thermo.p().boundaryField()[top]);
+    const scalarField rhoTop0(thermo.rho().boundaryField()[top]);
+    const vectorField UInner0(fluid.U().boundaryField()[inner]);
+
+    // First pass, motion A
+    mesh.movePoints(moved(0));
+    fluid.aleStep(dt, "");
+    const scalarField rhoA(fluid.rho().primitiveField());
+    const vectorField rhoUA(fluid.rhoU().primitiveField());
+    const scalarField rhoEA(fluid.rhoE().primitiveField());
+    // The pass did change the state and the boundary values (the top's
+    // pressure is that of the step's end, the inner patch moved)
+    ASSERT_NE(pTop(), pTop0);
+    ASSERT_NE(UInner(), UInner0);
+
+    // Second pass, motion B: another state
+    fluid.restoreOldState();
+    EXPECT_EQ(pTop(), pTop0);
+    EXPECT_EQ(scalarField(thermo.rho().boundaryField()[top]), rhoTop0);
+    EXPECT_EQ(UInner(), UInner0);
+    mesh.movePoints(moved(1));
+    fluid.aleStep(dt, "");
+    ASSERT_NE(fluid.rho().primitiveField(), rhoA);
+
+    // Third pass, motion A again: the first pass's state, bit for bit
+    fluid.restoreOldState();
+    EXPECT_EQ(pTop(), pTop0);
+    EXPECT_EQ(UInner(), UInner0);
+    mesh.movePoints(moved(0));
+    fluid.aleStep(dt, "");
+    EXPECT_EQ(fluid.rho().primitiveField(), rhoA);
+    EXPECT_EQ(fluid.rhoU().primitiveField(), rhoUA);
+    EXPECT_EQ(fluid.rhoE().primitiveField(), rhoEA);
 }
 
 

@@ -300,13 +300,46 @@ void Foam::conservativeFluid::divergences
     scalarField& divPhiE
 ) const
 {
-    // surfaceIntegrate accumulates into its first argument
+    // fvc::surfaceIntegrate of the three fluxes in one face loop: each
+    // cell's sums in its order (the internal faces, then the patches),
+    // then divided by the cell volume: the same bits
     divPhi = Zero;
     divPhiU = Zero;
     divPhiE = Zero;
-    fvc::surfaceIntegrate(divPhi, phi_);
-    fvc::surfaceIntegrate(divPhiU, phiU_);
-    fvc::surfaceIntegrate(divPhiE, phiE_);
+    const labelUList& owner = mesh_.owner();
+    const labelUList& neighbour = mesh_.neighbour();
+    const scalarField& phi = phi_.primitiveField();
+    const vectorField& phiU = phiU_.primitiveField();
+    const scalarField& phiE = phiE_.primitiveField();
+    forAll(owner, facei)
+    {
+        const label own = owner[facei];
+        const label nei = neighbour[facei];
+        divPhi[own] += phi[facei];
+        divPhi[nei] -= phi[facei];
+        divPhiU[own] += phiU[facei];
+        divPhiU[nei] -= phiU[facei];
+        divPhiE[own] += phiE[facei];
+        divPhiE[nei] -= phiE[facei];
+    }
+    forAll(mesh_.boundary(), patchi)
+    {
+        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+        const scalarField& pPhi = phi_.boundaryField()[patchi];
+        const vectorField& pPhiU = phiU_.boundaryField()[patchi];
+        const scalarField& pPhiE = phiE_.boundaryField()[patchi];
+        forAll(mesh_.boundary()[patchi], facei)
+        {
+            const label celli = faceCells[facei];
+            divPhi[celli] += pPhi[facei];
+            divPhiU[celli] += pPhiU[facei];
+            divPhiE[celli] += pPhiE[facei];
+        }
+    }
+    const scalarField& V = mesh_.V().field();
+    divPhi /= V;
+    divPhiU /= V;
+    divPhiE /= V;
 
     if (viscous_)
     {
@@ -425,6 +458,8 @@ void Foam::conservativeFluid::storeOldState()
     rhoU0_ = rhoU_.primitiveField();
     rhoE0_ = rhoE_.primitiveField();
     V0_ = mesh_.V().field();
+    thermo_->storeBoundaryState();
+    UBoundary0_.store(U_);
 }
 
 
@@ -433,11 +468,13 @@ void Foam::conservativeFluid::restoreOldState()
     thermo_->rho().primitiveFieldRef() = rho0_;
     rhoU_.primitiveFieldRef() = rhoU0_;
     rhoE_.primitiveFieldRef() = rhoE0_;
-    correctPrimitives();
+    primitiveCells();
+    thermo_->restoreBoundaryState();
+    UBoundary0_.restore(U_);
 }
 
 
-void Foam::conservativeFluid::correctPrimitives()
+void Foam::conservativeFluid::primitiveCells()
 {
     const scalarField& rho = thermo_->rho().primitiveField();
     const vectorField& rhoU = rhoU_.primitiveField();
@@ -452,6 +489,12 @@ void Foam::conservativeFluid::correctPrimitives()
         U[celli] = rhoU[celli]/rho[celli];
         e[celli] = rhoE[celli]/rho[celli] - 0.5*magSqr(U[celli]);
     }
+}
+
+
+void Foam::conservativeFluid::correctPrimitives()
+{
+    primitiveCells();
 
     // The thermo first: a characteristic boundary (planeWaveInflow) sets
     // U there from the cells' new p as well as their U; the processor

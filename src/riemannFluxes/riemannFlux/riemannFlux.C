@@ -25,6 +25,62 @@ bool reflecting(const Foam::fvPatch& patch)
      || isA<wedgeFvPatch>(patch);
 }
 
+
+//- The states of the cells next to the faces of patch (the left side of
+//  its faces): patchInternalField's values, without its temporaries
+void cellSideStates
+(
+    const Foam::fvPatch& patch,
+    const Foam::scalarField& rho,
+    const Foam::vectorField& U,
+    const Foam::scalarField& p,
+    Foam::MUSCLReconstruction::states& L
+)
+{
+    const Foam::labelUList& faceCells = patch.faceCells();
+    L.rho.setSize(faceCells.size());
+    L.U.setSize(faceCells.size());
+    L.p.setSize(faceCells.size());
+    forAll(faceCells, facei)
+    {
+        const Foam::label celli = faceCells[facei];
+        L.rho[facei] = rho[celli];
+        L.U[facei] = U[celli];
+        L.p[facei] = p[celli];
+    }
+}
+
+
+//- The mirror image R of the states L on a reflecting patch: the normal
+//  velocity relative to the face (speed w, if wPtr) reflected. The
+//  arithmetic of R.U = L.U - 2 ((L.U & n) - w) n with n = patch.nf(),
+//  face by face without the temporary fields
+void mirrorStates
+(
+    const Foam::fvPatch& patch,
+    const Foam::scalarField* wPtr,
+    const Foam::MUSCLReconstruction::states& L,
+    Foam::MUSCLReconstruction::states& R
+)
+{
+    using namespace Foam;
+    const vectorField& Sf = patch.Sf();
+    const scalarField& magSf = patch.magSf();
+    R.rho = L.rho;
+    R.p = L.p;
+    R.U.setSize(L.U.size());
+    forAll(Sf, facei)
+    {
+        const vector n = Sf[facei]/magSf[facei];
+        scalar qRel = L.U[facei] & n;
+        if (wPtr)
+        {
+            qRel -= (*wPtr)[facei];
+        }
+        R.U[facei] = L.U[facei] - 2*qRel*n;
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -63,9 +119,15 @@ void Foam::riemannFlux::toFaceFrame
     const UList<scalar>& w
 )
 {
-    const vectorField n(Sf/magSf);
-    L.U -= w*n;
-    R.U -= w*n;
+    // The arithmetic of L.U -= w*n, R.U -= w*n with n = Sf/magSf, face by
+    // face without the temporary fields (the same bits)
+    forAll(Sf, facei)
+    {
+        const vector n = Sf[facei]/magSf[facei];
+        const vector wn = w[facei]*n;
+        L.U[facei] -= wn;
+        R.U[facei] -= wn;
+    }
 }
 
 
@@ -124,21 +186,11 @@ void Foam::riemannFlux::patchStates
     }
     else
     {
-        L.rho = rho.boundaryField()[patchi].patchInternalField();
-        L.U = U.boundaryField()[patchi].patchInternalField();
-        L.p = p.boundaryField()[patchi].patchInternalField();
+        cellSideStates(patch, rho, U, p, L);
 
         if (reflecting(patch))
         {
-            const vectorField n(patch.nf());
-            scalarField qRel(L.U & n);
-            if (wPtr)
-            {
-                qRel -= *wPtr;
-            }
-            R.rho = L.rho;
-            R.U = L.U - 2*qRel*n;
-            R.p = L.p;
+            mirrorStates(patch, wPtr, L, R);
 
             // The mirror state's e and c are the inner state's (the law
             // of the same rho and p: the same bits, half the evaluations
@@ -245,18 +297,91 @@ void Foam::riemannFlux::fluxes
     // The neighbour cells' gradients for the coupled patches
     reconstruction_.finishCellGradients();
 
-    // Boundary faces
+    // Boundary faces. On a non-coupled patch the inner state is the
+    // cell's (rho, U, p) and its e and c the law's at the cell's rho and
+    // p: evaluated once per cell (the same function of the same bits as
+    // face by face: on a wedge mesh every cell has a front and a back
+    // face; issue 18, fluid18), slot[celli] its index in the cells' lists
+    const scalarField& rhoc = thermo.rho().primitiveField();
+    const vectorField& Uc = U.primitiveField();
+    const scalarField& pc = thermo.p().primitiveField();
+    labelList slot(mesh_.nCells(), -1);
+    DynamicList<label> cells;
     forAll(mesh_.boundary(), patchi)
     {
-        if (mesh_.boundary()[patchi].size() > 0)
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        if (patch.coupled())
+        {
+            continue;
+        }
+        for (const label celli : patch.faceCells())
+        {
+            if (slot[celli] < 0)
+            {
+                slot[celli] = cells.size();
+                cells.append(celli);
+            }
+        }
+    }
+    const scalarField cellRho(rhoc, cells);
+    const scalarField cellP(pc, cells);
+    scalarField cellE(cells.size()), cellC(cells.size());
+    thermo.eFromRhoP(cellRho, cellP, cellE);
+    thermo.cFromRhoE(cellRho, cellE, cellC);
+
+    faceStates L, R;
+    forAll(mesh_.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh_.boundary()[patchi];
+        if (patch.size() == 0)
+        {
+            continue;
+        }
+        const scalarField* wPtr =
+            tw.valid() ? &tw().boundaryField()[patchi] : nullptr;
+        if (patch.coupled())
         {
             patchFluxes
             (
-                thermo, U, patchi,
-                tw.valid() ? &tw().boundaryField()[patchi] : nullptr,
+                thermo, U, patchi, wPtr,
                 massFlux, momentumFlux, energyFlux, amaxSf
             );
+            continue;
         }
+
+        // patchStates' states, the cells' e and c taken from their slots
+        cellSideStates(patch, rhoc, Uc, pc, L);
+        const labelUList& faceCells = patch.faceCells();
+        L.e.setSize(faceCells.size());
+        L.c.setSize(faceCells.size());
+        forAll(faceCells, facei)
+        {
+            const label i = slot[faceCells[facei]];
+            L.e[facei] = cellE[i];
+            L.c[facei] = cellC[i];
+        }
+        if (reflecting(patch))
+        {
+            mirrorStates(patch, wPtr, L, R);
+            R.e = L.e;
+            R.c = L.c;
+        }
+        else
+        {
+            R.rho = thermo.rho().boundaryField()[patchi];
+            R.U = U.boundaryField()[patchi];
+            R.p = thermo.p().boundaryField()[patchi];
+            R.complete(thermo);
+        }
+
+        faceFluxes F
+        {
+            massFlux.boundaryFieldRef()[patchi],
+            momentumFlux.boundaryFieldRef()[patchi],
+            energyFlux.boundaryFieldRef()[patchi],
+            amaxSf.boundaryFieldRef()[patchi]
+        };
+        solveMoving(L, R, patch.Sf(), patch.magSf(), wPtr, F);
     }
 }
 

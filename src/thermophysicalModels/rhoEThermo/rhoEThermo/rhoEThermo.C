@@ -5,6 +5,9 @@
 #include "boundaryEvaluation.H"
 #include "processorFvPatch.H"
 
+#include <cstdint>
+#include <cstring>
+
 namespace Foam
 {
     defineTypeNameAndDebug(rhoEThermo, 0);
@@ -36,6 +39,16 @@ Foam::IOobject fieldIO
 )
 {
     return Foam::IOobject(name, mesh.time().timeName(), mesh, r, w);
+}
+
+//- Whether a and b are the same double, bit for bit (a signed zero or a
+//  NaN's payload included: == would take -0 for +0)
+inline bool sameBits(const Foam::scalar a, const Foam::scalar b)
+{
+    std::uint64_t ia, ib;
+    std::memcpy(&ia, &a, sizeof ia);
+    std::memcpy(&ib, &b, sizeof ib);
+    return ia == ib;
 }
 
 } // End anonymous namespace
@@ -76,13 +89,64 @@ Foam::rhoEThermo::rhoEThermo(const fvMesh& mesh)
 
 void Foam::rhoEThermo::correctBoundaryStates(const bool processorStatesSet)
 {
+    const scalarField& pc = p_.primitiveField();
+    const scalarField& Tc = T_.primitiveField();
+
+    // The patches whose states are set here (processor patches whose
+    // neighbour states came with the exchange are not)
+    auto evaluated = [&](const label patchi)
+    {
+        return
+            !processorStatesSet
+         || !isA<processorFvPatch>(mesh_.boundary()[patchi]);
+    };
+
+    // A face of a non-coupled patch whose p and T are its cell's, bit for
+    // bit (zeroGradient, wedge, slip, symmetry: on a wedge mesh every cell
+    // has two such faces, front and back), has the law's state at the
+    // cell's p and T: evaluated once per cell (the same function of the
+    // same bits, so the same state as face by face; issue 18, fluid18);
+    // slot[celli] its index in the cells' lists, -1 if none
+    labelList slot(mesh_.nCells(), -1);
+    DynamicList<label> slotCells;
     forAll(mesh_.boundary(), patchi)
     {
-        if
-        (
-            processorStatesSet
-         && isA<processorFvPatch>(mesh_.boundary()[patchi])
-        )
+        if (!evaluated(patchi) || p_.boundaryField()[patchi].coupled())
+        {
+            continue;
+        }
+        const scalarField& pp = p_.boundaryField()[patchi];
+        const scalarField& Tp = T_.boundaryField()[patchi];
+        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+        forAll(pp, facei)
+        {
+            const label celli = faceCells[facei];
+            if
+            (
+                slot[celli] < 0
+             && sameBits(pp[facei], pc[celli])
+             && sameBits(Tp[facei], Tc[celli])
+            )
+            {
+                slot[celli] = slotCells.size();
+                slotCells.append(celli);
+            }
+        }
+    }
+    const scalarField slotP(pc, slotCells), slotT(Tc, slotCells);
+    scalarField slotRho(slotP.size()), slotE(slotP.size());
+    scalarField slotC(slotP.size());
+    rhoEFromPT(slotP, slotT, slotRho, slotE);
+    cFromRhoE(slotRho, slotE, slotC);
+    boolList slotValid(slotP.size());
+    forAll(slotValid, i)
+    {
+        slotValid[i] = valid(slotRho[i], slotE[i]);
+    }
+
+    forAll(mesh_.boundary(), patchi)
+    {
+        if (!evaluated(patchi))
         {
             continue;
         }
@@ -92,17 +156,67 @@ void Foam::rhoEThermo::correctBoundaryStates(const bool processorStatesSet)
         scalarField& ep = e_.boundaryFieldRef()[patchi];
         scalarField& cp = c_.boundaryFieldRef()[patchi];
 
-        rhoEFromPT(pp, Tp, rhop, ep);
-        cFromRhoE(rhop, ep, cp);
-
         if (p_.boundaryField()[patchi].coupled())
         {
+            rhoEFromPT(pp, Tp, rhop, ep);
+            cFromRhoE(rhop, ep, cp);
             continue;
         }
+
+        // The faces of the cells' states copied, the others evaluated
+        // together
         const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+        labelList fromCell(pp.size(), -1);
+        DynamicList<label> own;
+        forAll(pp, facei)
+        {
+            const label celli = faceCells[facei];
+            if
+            (
+                slot[celli] >= 0
+             && sameBits(pp[facei], pc[celli])
+             && sameBits(Tp[facei], Tc[celli])
+            )
+            {
+                const label i = slot[celli];
+                fromCell[facei] = i;
+                rhop[facei] = slotRho[i];
+                ep[facei] = slotE[i];
+                cp[facei] = slotC[i];
+            }
+            else
+            {
+                own.append(facei);
+            }
+        }
+        if (own.size() == pp.size())
+        {
+            rhoEFromPT(pp, Tp, rhop, ep);
+            cFromRhoE(rhop, ep, cp);
+        }
+        else if (own.size())
+        {
+            const scalarField ownP(pp, own), ownT(Tp, own);
+            scalarField ownRho(own.size()), ownE(own.size());
+            scalarField ownC(own.size());
+            rhoEFromPT(ownP, ownT, ownRho, ownE);
+            cFromRhoE(ownRho, ownE, ownC);
+            forAll(own, i)
+            {
+                rhop[own[i]] = ownRho[i];
+                ep[own[i]] = ownE[i];
+                cp[own[i]] = ownC[i];
+            }
+        }
+
         forAll(rhop, facei)
         {
-            if (valid(rhop[facei], ep[facei]))
+            if
+            (
+                fromCell[facei] >= 0
+              ? slotValid[fromCell[facei]]
+              : valid(rhop[facei], ep[facei])
+            )
             {
                 continue;
             }
@@ -199,6 +313,27 @@ void Foam::rhoEThermo::correct(volVectorField& U)
     }
     correctBoundaryStates(exchangeStates);
     bc.finish(U);
+}
+
+
+void Foam::rhoEThermo::storeBoundaryState()
+{
+    pBoundary0_.store(p_);
+    TBoundary0_.store(T_);
+    rhoBoundary0_.store(rho_);
+    eBoundary0_.store(e_);
+    cBoundary0_.store(c_);
+}
+
+
+void Foam::rhoEThermo::restoreBoundaryState()
+{
+    correctCells();
+    pBoundary0_.restore(p_);
+    TBoundary0_.restore(T_);
+    rhoBoundary0_.restore(rho_);
+    eBoundary0_.restore(e_);
+    cBoundary0_.restore(c_);
 }
 
 
