@@ -458,8 +458,6 @@ void Foam::conservativeFluid::storeOldState()
     rhoU0_ = rhoU_.primitiveField();
     rhoE0_ = rhoE_.primitiveField();
     V0_ = mesh_.V().field();
-    thermo_->storeBoundaryState();
-    UBoundary0_.store(U_);
 }
 
 
@@ -468,13 +466,11 @@ void Foam::conservativeFluid::restoreOldState()
     thermo_->rho().primitiveFieldRef() = rho0_;
     rhoU_.primitiveFieldRef() = rhoU0_;
     rhoE_.primitiveFieldRef() = rhoE0_;
-    primitiveCells();
-    thermo_->restoreBoundaryState();
-    UBoundary0_.restore(U_);
+    correctPrimitives();
 }
 
 
-void Foam::conservativeFluid::primitiveCells()
+void Foam::conservativeFluid::correctPrimitives()
 {
     const scalarField& rho = thermo_->rho().primitiveField();
     const vectorField& rhoU = rhoU_.primitiveField();
@@ -489,12 +485,6 @@ void Foam::conservativeFluid::primitiveCells()
         U[celli] = rhoU[celli]/rho[celli];
         e[celli] = rhoE[celli]/rho[celli] - 0.5*magSqr(U[celli]);
     }
-}
-
-
-void Foam::conservativeFluid::correctPrimitives()
-{
-    primitiveCells();
 
     // The thermo first: a characteristic boundary (planeWaveInflow) sets
     // U there from the cells' new p as well as their U; the processor

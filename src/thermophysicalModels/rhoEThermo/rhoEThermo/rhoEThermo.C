@@ -316,27 +316,6 @@ void Foam::rhoEThermo::correct(volVectorField& U)
 }
 
 
-void Foam::rhoEThermo::storeBoundaryState()
-{
-    pBoundary0_.store(p_);
-    TBoundary0_.store(T_);
-    rhoBoundary0_.store(rho_);
-    eBoundary0_.store(e_);
-    cBoundary0_.store(c_);
-}
-
-
-void Foam::rhoEThermo::restoreBoundaryState()
-{
-    correctCells();
-    pBoundary0_.restore(p_);
-    TBoundary0_.restore(T_);
-    rhoBoundary0_.restore(rho_);
-    eBoundary0_.restore(e_);
-    cBoundary0_.restore(c_);
-}
-
-
 void Foam::rhoEThermo::correctFromPT()
 {
     rhoEFromPT
