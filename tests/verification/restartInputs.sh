@@ -231,19 +231,6 @@ status=0; cellBlastFoam > log.serial 2>&1 || status=$?
 check "cellBlastFoam: the reconstructed run restarts serially" \
     "[ $status -eq 0 ] && grep -q '^End' log.serial && [ -d 1.5e-08 ]"
 
-# The serial run continued on 2 ranks split by hand (method manual: its map
-# constant/cellDecomposition, which the serial run did not have): a
-# decomposition map is no input of the results (adv47b f63: refused as
-# "constant/cellDecomposition (added)")
-. "$root/tests/lib/splitAtPlane.sh"
-rm -rf "$work/manual"; cp -r "$work/fsi" "$work/manual"; cd "$work/manual"
-splitAtPlane . x 25e-6
-decomposePar -latestTime > log.decomposePar 2>&1
-sed -i 's/^endTime .*/endTime 2e-8;/' system/controlDict
-status=0; mpirun -np 2 cellBlastFoam -parallel > log.manual 2>&1 || status=$?
-check "cellBlastFoam -parallel: a serial run continues on ranks split by hand (constant/cellDecomposition is not an input)" \
-    "[ $status -eq 0 ] && grep -q '^End' log.manual && [ -d processor1/2e-08 ]"
-
 # The pulse read by OpenFOAM's tableFile from a file (adv42 g05: a table in
 # constant/tables/, a sub-folder of constant/, edited after the run: the
 # restart went on with the new pulse, exit 0). Every file in constant/ and
