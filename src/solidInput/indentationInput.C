@@ -42,7 +42,7 @@ Foam::indentationInput::indentationInput
     // Our entries of system/controlDict (OpenFOAM's are the Time's)
     foamTools::checkDuplicates
     (
-        controlDict, {"fieldWriteInterval", "checkpointInterval"}
+        controlDict, {"fieldWriteInterval", "checkpointInterval", "maxSteps"}
     );
 
     sphere_.radius = readInRange<scalar>(d, "radius", "m", 0, 1, false);
@@ -149,6 +149,93 @@ Foam::indentationInput::indentationInput
                 << " s is longer than the longest hold row of entry "
                 << "'protocol' (" << holdMax << " s): each hold would be "
                 << "one step; valid range (0, " << holdMax << "] s"
+                << exit(FatalIOError);
+        }
+    }
+
+    // The steps of the whole table, estimated from the step settings: a
+    // hold at a constant holdDeltaT0 of 1e-299 s (holdGrowth 1) ran
+    // without end (adv48b g44 (b): 1e299 steps). At most controlDict's
+    // maxSteps (default 1e8, valid range [1, inf); the fluid solvers'
+    // limit, foamTools::checkStepCount), counted per row as the driver
+    // steps (solid::IndentationDriver::run): a load or unload row in steps
+    // of min(maxDepthIncrement/rate, maxDeltaT), a hold from holdDeltaT0
+    // growing by holdGrowth up to maxDeltaT
+    {
+        const scalar maxSteps = readInRangeOrDefault<scalar>
+        (
+            controlDict, "maxSteps", "", 1, foamTools::noUpperBound<scalar>(),
+            true, 1e8
+        );
+        const scalar cap = 1e300;
+        scalar total = 0;
+        label worst = -1;
+        scalar worstSteps = 0;
+        const auto& rows = protocol_->rows();
+        for (label i = 0; i < label(rows.size()) && total <= maxSteps; ++i)
+        {
+            const solid::ProtocolRow& row = rows[i];
+            scalar n = 0;
+            if (row.motion == "hold")
+            {
+                const scalar T = row.amount;
+                const scalar dt0 =
+                    min(settings_.holdDeltaT0, settings_.maxDeltaT);
+                const scalar g = settings_.holdGrowth;
+                const scalar dtMax = settings_.maxDeltaT;
+                if (g == 1 || dt0 >= dtMax)
+                {
+                    n = std::ceil(T/dt0);
+                }
+                else
+                {
+                    // k growing steps reach dtMax, covering S
+                    const scalar k =
+                        std::ceil(std::log(dtMax/dt0)/std::log(g));
+                    const scalar S = dt0*(std::pow(g, k) - 1)/(g - 1);
+                    n = S >= T
+                      ? std::ceil(std::log1p(T*(g - 1)/dt0)/std::log(g))
+                      : k + std::ceil((T - S)/dtMax);
+                }
+            }
+            else if (row.rate > 0)
+            {
+                const scalar dt = min
+                (
+                    settings_.maxDepthIncrement/row.rate, settings_.maxDeltaT
+                );
+                n = std::ceil((row.amount/row.rate)/dt);
+            }
+            n = std::isfinite(n) ? min(n, cap) : cap;
+            if (n > worstSteps)
+            {
+                worstSteps = n;
+                worst = i;
+            }
+            total = min(total + n, cap);
+        }
+        if (total > maxSteps)
+        {
+            const solid::ProtocolRow& row = rows[worst];
+            FatalIOErrorInFunction(d)
+                << "the loading table would take at least "
+                << foamTools::countAboveText(total, maxSteps).c_str()
+                << " steps, more than entry 'maxSteps' = "
+                << foamTools::numberText(maxSteps).c_str()
+                << " of system/controlDict (default 1e+08): row "
+                << worst + 1 << " of entry 'protocol' (" << row.motion.c_str()
+                << ") alone takes about "
+                << foamTools::countAboveText(worstSteps, 0).c_str()
+                << " steps (holdDeltaT0 = "
+                << foamTools::numberText(settings_.holdDeltaT0).c_str()
+                << " s, holdGrowth = "
+                << foamTools::numberText(settings_.holdGrowth).c_str()
+                << ", maxDeltaT = "
+                << foamTools::numberText(settings_.maxDeltaT).c_str()
+                << " s, maxDepthIncrement = "
+                << foamTools::numberText(settings_.maxDepthIncrement).c_str()
+                << " m). Nothing was run: lengthen the steps, or raise "
+                << "'maxSteps' (valid range [1, inf)) if so many are meant"
                 << exit(FatalIOError);
         }
     }
@@ -370,9 +457,16 @@ std::vector<solid::ProtocolRow> Foam::indentationInput::readProtocol() const
 
 void Foam::indentationInput::checkFactorisation(solid::Model& model) const
 {
+    // The count goes on past the limits (it stopped just above them:
+    // maxFactorMemory 1 refused "at least 17880 B", then 17880 refused "at
+    // least 17952 B", adv47b f71) to 4 times them, and at least to the
+    // default limits' size (2e9 B, 4e11 flop: a few seconds of counting),
+    // so that the figure printed is the whole estimate unless far above
+    // both, and a limit set to it is accepted
     const solid::FactorisationEstimate e = solid::estimateFactorisation
     (
-        model.tangentPattern(), maxFactorMemory_, maxFactorFlops_
+        model.tangentPattern(), std::max(4*maxFactorMemory_, 2e9),
+        std::max(4*maxFactorFlops_, 4e11)
     );
     const bool memory = e.memory > maxFactorMemory_;
     const bool flops = e.operations > maxFactorFlops_;
@@ -396,7 +490,10 @@ void Foam::indentationInput::checkFactorisation(solid::Model& model) const
         << (mesh.axisymmetric() ? "axisymmetric" : "3D") << ": " << e.n
         << " unknowns) needs a sparse factorisation of the Newton matrix "
         << (e.complete ? "of about " : "of at least ")
-        << (memory ? e.memory : e.operations) << ' ' << unit
+        << foamTools::countAboveText
+           (
+               memory ? e.memory : e.operations, limit
+           ).c_str() << ' ' << unit
         << (memory ? " of memory" : " per Newton iteration")
         << " (estimate from its sparsity pattern: minimum-degree ordering, "
         << "the factor's non-zeros), more than entry '" << entry << "' = "

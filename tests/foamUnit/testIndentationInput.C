@@ -401,6 +401,41 @@ TEST(indentationInput, factorisationAboveItsLimits)
 }
 
 
+TEST(indentationInput, factorisationFigureAcceptedAsTheLimit)
+{
+    // The figure a refusal prints is the estimate compared: the limit set
+    // to it is accepted (adv47b f71: maxFactorMemory 1 refused "at least
+    // 17880 B", then maxFactorMemory 17880 "at least 17952 B")
+    for (const std::string entry : {"maxFactorMemory", "maxFactorFlops"})
+    {
+        std::string figure;
+        {
+            foamUnit::testCase tc("indentationInput");
+            const dictionary ip(indenterProperties(tc, entry + " 1;"));
+            const indentationInput in(ip, controlDict(tc));
+            std::unique_ptr<solid::Model> model = block();
+            const std::string msg =
+                ioError([&]() { in.addContact(*model); });
+            const std::string about("factorisation of the Newton matrix of "
+                "about ");
+            const auto at = msg.find(about);
+            ASSERT_NE(at, std::string::npos) << msg;
+            figure = msg.substr(at + about.size());
+            figure = figure.substr(0, figure.find(' '));
+        }
+        foamUnit::testCase tc("indentationInput");
+        const dictionary ip
+        (
+            indenterProperties(tc, entry + " " + figure + ";")
+        );
+        const indentationInput in(ip, controlDict(tc));
+        std::unique_ptr<solid::Model> model = block();
+        EXPECT_EQ(ioError([&]() { in.addContact(*model); }), "")
+            << entry << " " << figure;
+    }
+}
+
+
 TEST(indentationInput, sphereTooSmallForTheMesh)
 {
     // The block's top faces are 10/6 um wide; the Usage example's table

@@ -293,3 +293,48 @@ TEST(inputChecks, readInRangeOrDefault)
     EXPECT_NE(msg.find("entry 'g' = 20 is outside the valid range [1, 10]"),
         std::string::npos) << msg;
 }
+
+
+TEST(inputChecks, wholeCountAndCountAbove)
+{
+    // 0.007 s in steps of 1e-6 s: 7000.000000000001 as a double ratio, 7000
+    // steps (adv47b f70)
+    EXPECT_EQ(foamTools::wholeCount(0.007/1e-6), 7000);
+    EXPECT_EQ(foamTools::wholeCount(7000.4), 7001);
+    EXPECT_EQ(foamTools::wholeCount(1), 1);
+    EXPECT_EQ(foamTools::wholeCount(0.5), 1);
+    // printed above the limit: 3 digits, or all where those would not be
+    EXPECT_EQ(foamTools::countAboveText(233, 1), "233");
+    EXPECT_EQ(foamTools::countAboveText(15000000, 10000), "15000000");
+    EXPECT_EQ(foamTools::countAboveText(1e24, 1e8), "1e+24");
+    EXPECT_EQ(foamTools::countAboveText(1234567, 1000, 3), "1.23e+06");
+    EXPECT_EQ(foamTools::countAboveText(1234567, 1234000, 3), "1234567");
+    EXPECT_EQ(foamTools::countAboveText(17952, 17880), "17952");
+}
+
+
+TEST(inputChecks, stepCountAtTheLimit)
+{
+    // The run's whole steps compared with maxSteps and printed so: a
+    // limit set to the count printed is accepted (adv47b f70: "about 7000
+    // time steps, more than maxSteps = 7000", and the run takes 7000)
+    foamUnit::testCase tc("inputChecks", 1e-6);
+    Time& runTime = tc.time();
+    runTime.setEndTime(0.007);
+    dictionary& dict = const_cast<dictionary&>(runTime.controlDict());
+    dict.set("maxSteps", 7000);
+    EXPECT_NO_THROW(foamTools::checkStepCount(runTime, 1e-6, "deltaT"));
+    dict.set("maxSteps", 6999);
+    try
+    {
+        foamTools::checkStepCount(runTime, 1e-6, "deltaT");
+        ADD_FAILURE() << "7000 steps ran with maxSteps 6999";
+    }
+    catch (const Foam::IOerror& err)
+    {
+        EXPECT_NE(err.message().find("about 7000 time steps, more than "
+            "maxSteps = 6999"), std::string::npos) << err.message();
+        EXPECT_NE(err.message().find("(valid range [1, inf))"),
+            std::string::npos) << err.message();
+    }
+}

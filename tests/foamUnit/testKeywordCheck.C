@@ -306,6 +306,66 @@ TEST(keywordCheck, numbersBeyondDouble)
         EXPECT_NE(msg.find(c.second), std::string::npos)
             << c.first << ": " << msg;
     }
+
+    // A number below the reader: named with the entry's own range where
+    // the scan holds it (system/controlDict's top level and what it
+    // includes there), 0 advised only where that range holds it; else the
+    // reader's limits, 0 not advised as such (adv47b f43: "give 0 or a
+    // value ... in the entry's valid range" for deltaT, whose range
+    // (0, inf) s refuses 0)
+    for
+    (
+        const auto& c
+      : std::vector<std::pair<std::string, std::string>>
+        {
+            {"deltaT 1e-300;", "entry 'deltaT' = 1e-300 s is below the "
+             "smallest magnitude OpenFOAM reads (1e-300): it would be read "
+             "as 0; the entry's valid range is (0, inf) s: give a value in "
+             "it above 1e-300"},
+            {"endTime 4.9e-324;", "entry 'endTime' = 4.9e-324 s is below "
+             "the smallest magnitude OpenFOAM reads (1e-300): it would be "
+             "read as 0; the entry's valid range is [0, inf) s: give 0, or "
+             "a value of magnitude above 1e-300 in it"},
+            {"maxSteps 1e-300;", "entry 'maxSteps' = 1e-300 is below the "
+             "smallest magnitude OpenFOAM reads (1e-300): it would be read "
+             "as 0; the entry's valid range is [1, inf): give a value in "
+             "it"},
+            {"maxCo 1e999;", "entry 'maxCo' = 1e999 is beyond the range of"
+             " a number (OpenFOAM reads |x| <= 1e+300; a double holds |x| <="
+             " 1.79769e+308); the entry's valid range is (0, 1]: give a "
+             "value in it"},
+            {"#include \"allrun\"", "entry 'deltaT' = 1e-310 s is below "
+             "the smallest magnitude OpenFOAM reads (1e-300): it would be "
+             "read as 0; the entry's valid range is (0, inf) s"},
+            // a function object's entry: not controlDict's own
+            {"functions { p { type probes; deltaT 1e-300; } }", "entry "
+             "'deltaT' = 1e-300 is below the smallest magnitude OpenFOAM "
+             "reads (1e-300): it would be read as 0: give a value with "
+             "1e-300 < |x| <= 1e+300 in the entry's valid range (or 0, if "
+             "the range holds 0)"}
+        }
+    )
+    {
+        tc.writeFile("system/allrun", "deltaT 1e-310;\n");
+        tc.writeFile("system/controlDict", c.first + "\n");
+        const std::string msg = errorOf
+        (
+            [&]{ foamTools::checkNumbers(tc.dir()/"system/controlDict"); }
+        );
+        EXPECT_NE(msg.find(c.second), std::string::npos)
+            << c.first << ": " << msg;
+        EXPECT_EQ(msg.find("give 0 or"), std::string::npos) << msg;
+    }
+    // another dictionary: the reader's limits, whatever the keyword
+    tc.writeFile("constant/reader", "deltaT 1e-300;\n");
+    const std::string other = errorOf
+    (
+        [&]{ foamTools::checkNumbers(tc.dir()/"constant/reader"); }
+    );
+    EXPECT_NE(other.find("entry 'deltaT' = 1e-300 is below the smallest "
+        "magnitude OpenFOAM reads (1e-300): it would be read as 0: give a "
+        "value with 1e-300 < |x| <= 1e+300 in the entry's valid range (or "
+        "0, if the range holds 0)"), std::string::npos) << other;
 }
 
 

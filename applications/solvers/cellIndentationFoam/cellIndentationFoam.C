@@ -65,7 +65,7 @@ int main(int argc, char *argv[])
     // controlDict: OpenFOAM's keywords and ours, each given once
     foamTools::checkControlDict
     (
-        args, {"fieldWriteInterval", "checkpointInterval"}
+        args, {"fieldWriteInterval", "checkpointInterval", "maxSteps"}
     );
     const foamTools::caseLock lock(args);    // one run per case
     #include "createTime.H"

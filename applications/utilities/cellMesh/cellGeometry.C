@@ -254,12 +254,13 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
         // 3 digits, or the least whole count when those would not read
         // more than maxElements (adv47b f46: 183.4 printed "at least 183
         // elements, more than maxElements 183")
-        const double least = std::ceil(minimumElements());
-        word count(word::printf("%.3g", least));
-        if (!(std::strtod(count.c_str(), nullptr) > maxElements))
-        {
-            count = word::printf("%.0f", least);
-        }
+        const std::string count
+        (
+            foamTools::countAboveText
+            (
+                std::ceil(minimumElements()), maxElements, 3
+            )
+        );
         FatalIOErrorInFunction(dict)
             << "The element sizes ask for at least "
             << count.c_str() << " elements, more"

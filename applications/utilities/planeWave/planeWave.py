@@ -200,6 +200,11 @@ def main():
     if not 1 <= a.maxSteps < float("inf"):
         p.error("-maxSteps %g is outside the valid range [1, inf)"
                 % a.maxSteps)
+    # adv48b g49: -maxCells -1 was taken as a limit ("800 cells, above
+    # -maxCells -1")
+    if not a.maxCells >= 1:
+        p.error("-maxCells %d is outside the valid range [1, inf)"
+                % a.maxCells)
     if a.endTime is not None and not (a.endTime > 0
                                       and math.isfinite(a.endTime)):
         p.error("-endTime %g s: must be positive and finite" % a.endTime)

@@ -150,6 +150,23 @@ int main(int argc, char *argv[])
     // is named and nothing is written (adv33 lk10: setRiemannProblem
     // -overwrite removed a running solver's time directories)
     const foamTools::caseLock lock(args);
+    // -wedgeAngle's valid range, named also for a value OpenFOAM's reader
+    // would take as 0 (4.9e-324, 1e-300: was checkOptions' reader limits
+    // without the range, adv47b f62), before checkOptions
+    const char* const wedgeRange = "(0, 180) degrees";
+    if
+    (
+        args.found("wedgeAngle")
+     && foamTools::outsideReaderRange(args.opt("wedgeAngle")) < 0
+    )
+    {
+        FatalErrorInFunction
+            << "option -wedgeAngle '" << args.opt("wedgeAngle").c_str()
+            << "' " << foamTools::readerRangeText(-1).c_str()
+            << "; its valid range is " << wedgeRange << ": give a value in "
+            << "it" << nl << "    Nothing was read or written."
+            << exit(FatalError);
+    }
     foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
     #include "createTime.H"
 
@@ -166,7 +183,7 @@ int main(int argc, char *argv[])
     if (!(angle > 0 && angle < constant::mathematical::pi))
     {
         FatalErrorInFunction
-            << "-wedgeAngle must be in (0, 180) degrees" << exit(FatalError);
+            << "-wedgeAngle must be in " << wedgeRange << exit(FatalError);
     }
 
     const h5File h5(h5Name);

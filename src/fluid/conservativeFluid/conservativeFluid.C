@@ -6,6 +6,7 @@
 #include "subDict.H"
 #include "physicalBounds.H"
 
+#include <cfenv>
 #include <cmath>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
@@ -211,25 +212,7 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
             ),
             mesh
         );
-        // A density that is no state of the fluid (0, negative, not a
-        // number: an edited or damaged rho used with -acceptEdited) ended
-        // in a floating-point exception in correctPrimitives (adv47a f07)
-        forAll(rhoWritten, celli)
-        {
-            const scalar r = rhoWritten[celli];
-            if (!(r > 0) || !std::isfinite(r))
-            {
-                FatalErrorInFunction
-                    << "the density of the restart time, "
-                    << rhoWritten.objectPath() << ", is " << r
-                    << " kg/m^3 in cell " << celli << " (at "
-                    << mesh.C()[celli] << " m): no state of the fluid"
-                    << " (valid range (0, inf) kg/m^3; the file was edited"
-                    << " or damaged after the run wrote it). Nothing was"
-                    << " run: restart from an earlier time, or start anew"
-                    << exit(FatalError);
-            }
-        }
+        checkRestartState(rhoWritten);
         thermo_->rho().primitiveFieldRef() = rhoWritten.primitiveField();
         correctPrimitives();
     }
@@ -267,6 +250,105 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::conservativeFluid::checkRestartState
+(
+    const volScalarField& rhoWritten
+) const
+{
+    // A state that is none of the fluid's (an edited or damaged rho, rhoU
+    // or rhoE used with -acceptEdited): a density not in (0, inf) (was: a
+    // floating-point exception in correctPrimitives, adv47a f07; a NaN
+    // passed the ordered comparison's trap only after it, adv48a h01 (i)),
+    // or primitives that are not finite or outside the law's domain (rho
+    // 1e-290: rhoE/rho overflowed in correctPrimitives, adv48a h01 (h)).
+    // The arithmetic of correctPrimitives with the floating-point traps
+    // held, so that an overflow is found here, not trapped: a FatalError
+    // naming the time, the cell, the state and why, before anything uses
+    // it
+    const scalarField& rho = rhoWritten.primitiveField();
+    const vectorField& rhoU = rhoU_.primitiveField();
+    const scalarField& rhoE = rhoE_.primitiveField();
+    scalarField e(rho.size(), Zero);
+    label bad = -1;
+    std::string why;
+    vector Ubad(Zero);
+    {
+        std::fenv_t env;
+        std::feholdexcept(&env);
+        const scalar uMax = physicalBounds::velocityMax;
+        forAll(rho, celli)
+        {
+            const scalar r = rho[celli];
+            // finiteness first: an ordered comparison with a NaN traps
+            if (!std::isfinite(r) || !(r > 0))
+            {
+                bad = celli;
+                why = "the density rho is no state of the fluid (valid "
+                    "range (0, inf) kg/m^3)";
+                break;
+            }
+            const vector U(rhoU[celli]/r);
+            const scalar magU =
+                std::sqrt(U.x()*U.x() + U.y()*U.y() + U.z()*U.z());
+            if (!std::isfinite(magU) || !(magU < uMax))
+            {
+                bad = celli;
+                Ubad = U;
+                why = "the velocity rhoU/rho is not finite or not below "
+                    "the bound of every reader (physicalBounds::velocityMax,"
+                    " 1e+05 m/s)";
+                break;
+            }
+            e[celli] = rhoE[celli]/r - 0.5*magU*magU;
+            if (!std::isfinite(e[celli]))
+            {
+                bad = celli;
+                Ubad = U;
+                why = "the specific internal energy rhoE/rho - |U|^2/2 is "
+                    "not finite";
+                break;
+            }
+        }
+        if (bad < 0)
+        {
+            string reason;
+            bad = thermo_->firstInvalid(rho, e, reason);
+            if (bad >= 0)
+            {
+                Ubad = rhoU[bad]/rho[bad];
+                why = "no state of the equation of state (" + reason + ")";
+            }
+        }
+        std::feclearexcept(FE_ALL_EXCEPT);
+        std::fesetenv(&env);
+    }
+    if (bad < 0)
+    {
+        return;
+    }
+    FatalErrorInFunction
+        << "the conservative state of the restart time "
+        << mesh_.time().timeName() << " s in cell " << bad << " (at "
+        << mesh_.C()[bad] << " m): rho = " << rho[bad] << " kg/m^3 ("
+        << rhoWritten.objectPath() << "), rhoU = " << rhoU[bad]
+        << " kg/(m^2 s), rhoE = " << rhoE[bad] << " J/m^3";
+    if (why.compare(0, 15, "the density rho") != 0)
+    {
+        FatalError << " (U = " << Ubad << " m/s";
+        if (why.compare(0, 16, "the velocity rho") != 0)
+        {
+            FatalError << ", e = " << e[bad] << " J/kg";
+        }
+        FatalError << ")";
+    }
+    FatalError
+        << ": " << why.c_str() << "; the files rho, rhoU, rhoE of the time"
+        << " were edited or damaged after the run wrote them. Nothing was "
+        << "run: restart from an earlier time, or start anew"
+        << exit(FatalError);
+}
+
 
 void Foam::conservativeFluid::addViscousTerms
 (

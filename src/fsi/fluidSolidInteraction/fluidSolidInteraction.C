@@ -105,6 +105,53 @@ Foam::autoPtr<Foam::dynamicFvMesh> Foam::fluidSolidInteraction::newMesh
         const fileName timeFile(runTime.timePath()/"uniform"/"time");
         if (!isFile(timeFile))
         {
+            // A time directory holding only a region's folders (solidToFoam
+            // writes <time>/solid/ for viewing, also at a time the fluid
+            // run did not write or whose fluid state was removed): not a
+            // damaged time of the run but no time of it at all; said so,
+            // with the earlier time the run would continue from (was
+            // "Restore the time's uniform/ directory, or start from the
+            // initial fields", adv48b g16)
+            const fileNameList files
+            (
+                readDir(runTime.timePath(), fileName::FILE)
+            );
+            const fileNameList dirs
+            (
+                readDir(runTime.timePath(), fileName::DIRECTORY)
+            );
+            if (files.empty() && !dirs.empty() && !dirs.found("uniform"))
+            {
+                std::string names;
+                for (const fileName& d : dirs)
+                {
+                    names += (names.empty() ? "" : ", ") + d + "/";
+                }
+                word earlier;
+                for (const instant& i : TimePaths::findTimes(runTime.path()))
+                {
+                    if (i.value() < runTime.value() && i.name() != "constant")
+                    {
+                        earlier = i.name();
+                    }
+                }
+                FatalErrorInFunction
+                    << "The run starts at t = " << runTime.timeName()
+                    << " s (startFrom latestTime), but that time directory"
+                    << " holds only the folder(s) " << names.c_str()
+                    << " (a region's files, e.g. solidToFoam's solid/ for "
+                    << "viewing), no fluid state (no fields, no uniform/): "
+                    << "it is not a time the run wrote. Move "
+                    << runTime.timePath() << " away (keep what you need of"
+                    << " it)";
+                if (!earlier.empty())
+                {
+                    FatalError
+                        << " to continue from " << earlier << ", the"
+                        << " latest time before it";
+                }
+                FatalError << ". Nothing was run" << exit(FatalError);
+            }
             // A time directory without the state OpenFOAM writes with it
             // (was OpenFOAM's "Istream not OK for reading dictionary";
             // issue 19, adv28 qk05: uniform/ removed from a restart time)

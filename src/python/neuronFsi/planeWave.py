@@ -339,6 +339,7 @@ deltaT 1e-13; writeControl adjustableRunTime; writeInterval {end};
 purgeWrite 0; writeFormat binary; writePrecision 17;
 writeCompression off; timeFormat general; timePrecision 8;
 runTimeModifiable false; adjustTimeStep yes; maxCo {co}; maxDeltaT 1e-9;
+maxSteps {steps};
 functions
 {{
     probes
@@ -682,7 +683,11 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
             probes = " ".join("(%.17g %.17g %.17g)" % (0.5*dz, z, 0.5*dz)
                               for z in sampled)
             with open(os.path.join(work, "system", "controlDict"), "w") as f:
-                f.write(_CONTROL.format(end=endTime, co=maxCo, probes=probes))
+                # the run's step limit is planeWave's -maxSteps (adv48b
+                # g49: -maxSteps 1e15 accepted, then the 1D run refused by
+                # its default maxSteps 1e8, an entry the user cannot set)
+                f.write(_CONTROL.format(end=endTime, co=maxCo, probes=probes,
+                                        steps="%.17g" % maxSteps))
             for field, cls in (("p", "volScalarField"),
                                ("T", "volScalarField"),
                                ("U", "volVectorField")):
