@@ -1054,98 +1054,86 @@ Foam::structuredCell::structuredCell(const cellGeometry& geom)
 }
 
 
-void Foam::structuredCell::toGmsh(scalar unit) const
+namespace
+{
+
+// The mesh as gmsh discrete entities of dimension dim: the nodes, the
+// elements of each region (gmsh element type elementType) as a physical
+// group named after the region, and each boundary group (elements of
+// dimension dim - 1, gmsh type boundaryType) as a physical group of its
+// name. The r-z section (dim 2: quadrilaterals, lines, x = r, y = z) and
+// the 3D cell (dim 3: hexahedra, quadrilaterals) are written alike.
+template<class Element, class BoundaryElement>
+void addToGmsh
+(
+    const int dim,
+    const int elementType,
+    const int boundaryType,
+    const std::vector<std::array<double, 3>>& nodes,
+    const std::vector<Element>& elements,
+    const std::vector<int>& region,
+    const std::map<std::string, std::vector<BoundaryElement>>& groups,
+    const double unit
+)
 {
     const char* regionNames[3] = {"nucleus", "cytoplasm", "membrane"};
-    if (section_)
-    {
-        // The r-z section as the gmsh r-z mesh is: surfaces (regions) of
-        // quadrilaterals, curves (boundary groups) of lines, x = r, y = z
-        for (int r = 0; r < 3; ++r)
-        {
-            gmsh::model::addDiscreteEntity(2, r + 1);
-        }
-        std::vector<std::size_t> tags(nodes_.size());
-        std::vector<double> xyz;
-        xyz.reserve(3*nodes_.size());
-        for (std::size_t n = 0; n < nodes_.size(); ++n)
-        {
-            tags[n] = n + 1;
-            for (int k = 0; k < 3; ++k) xyz.push_back(nodes_[n][k]/unit);
-        }
-        gmsh::model::mesh::addNodes(2, 1, tags, xyz);
-
-        std::size_t next = 1;
-        for (int r = 0; r < 3; ++r)
-        {
-            std::vector<std::size_t> et, nt;
-            for (std::size_t e = 0; e < quads_.size(); ++e)
-            {
-                if (region_[e] != r) continue;
-                et.push_back(next++);
-                for (const std::size_t n : quads_[e]) nt.push_back(n + 1);
-            }
-            gmsh::model::mesh::addElementsByType(r + 1, 3, et, nt);
-            const int g = gmsh::model::addPhysicalGroup(2, {r + 1});
-            gmsh::model::setPhysicalName(2, g, regionNames[r]);
-        }
-        int curve = 0;
-        for (const auto& kv : edges_)
-        {
-            gmsh::model::addDiscreteEntity(1, ++curve);
-            std::vector<std::size_t> et, nt;
-            for (const edge& e : kv.second)
-            {
-                et.push_back(next++);
-                for (const std::size_t n : e) nt.push_back(n + 1);
-            }
-            gmsh::model::mesh::addElementsByType(curve, 1, et, nt);
-            const int g = gmsh::model::addPhysicalGroup(1, {curve});
-            gmsh::model::setPhysicalName(1, g, kv.first);
-        }
-        return;
-    }
     for (int r = 0; r < 3; ++r)
     {
-        gmsh::model::addDiscreteEntity(3, r + 1);
+        gmsh::model::addDiscreteEntity(dim, r + 1);
     }
-    std::vector<std::size_t> tags(nodes_.size());
+    std::vector<std::size_t> tags(nodes.size());
     std::vector<double> xyz;
-    xyz.reserve(3*nodes_.size());
-    for (std::size_t n = 0; n < nodes_.size(); ++n)
+    xyz.reserve(3*nodes.size());
+    for (std::size_t n = 0; n < nodes.size(); ++n)
     {
         tags[n] = n + 1;
-        for (int k = 0; k < 3; ++k) xyz.push_back(nodes_[n][k]/unit);
+        for (int k = 0; k < 3; ++k) xyz.push_back(nodes[n][k]/unit);
     }
-    gmsh::model::mesh::addNodes(3, 1, tags, xyz);
+    gmsh::model::mesh::addNodes(dim, 1, tags, xyz);
 
     std::size_t next = 1;
     for (int r = 0; r < 3; ++r)
     {
         std::vector<std::size_t> et, nt;
-        for (std::size_t e = 0; e < hexes_.size(); ++e)
+        for (std::size_t e = 0; e < elements.size(); ++e)
         {
-            if (region_[e] != r) continue;
+            if (region[e] != r) continue;
             et.push_back(next++);
-            for (const std::size_t n : hexes_[e]) nt.push_back(n + 1);
+            for (const std::size_t n : elements[e]) nt.push_back(n + 1);
         }
-        gmsh::model::mesh::addElementsByType(r + 1, 5, et, nt);
-        const int g = gmsh::model::addPhysicalGroup(3, {r + 1});
-        gmsh::model::setPhysicalName(3, g, regionNames[r]);
+        gmsh::model::mesh::addElementsByType(r + 1, elementType, et, nt);
+        const int g = gmsh::model::addPhysicalGroup(dim, {r + 1});
+        gmsh::model::setPhysicalName(dim, g, regionNames[r]);
     }
-    int surface = 0;
-    for (const auto& kv : faces_)
+    int entity = 0;
+    for (const auto& kv : groups)
     {
-        gmsh::model::addDiscreteEntity(2, ++surface);
+        gmsh::model::addDiscreteEntity(dim - 1, ++entity);
         std::vector<std::size_t> et, nt;
-        for (const quad& q : kv.second)
+        for (const BoundaryElement& b : kv.second)
         {
             et.push_back(next++);
-            for (const std::size_t n : q) nt.push_back(n + 1);
+            for (const std::size_t n : b) nt.push_back(n + 1);
         }
-        gmsh::model::mesh::addElementsByType(surface, 3, et, nt);
-        const int g = gmsh::model::addPhysicalGroup(2, {surface});
-        gmsh::model::setPhysicalName(2, g, kv.first);
+        gmsh::model::mesh::addElementsByType(entity, boundaryType, et, nt);
+        const int g = gmsh::model::addPhysicalGroup(dim - 1, {entity});
+        gmsh::model::setPhysicalName(dim - 1, g, kv.first);
+    }
+}
+
+} // End anonymous namespace
+
+
+void Foam::structuredCell::toGmsh(scalar unit) const
+{
+    // gmsh element types: 1 line, 3 quadrilateral, 5 hexahedron
+    if (section_)
+    {
+        addToGmsh(2, 3, 1, nodes_, quads_, region_, edges_, unit);
+    }
+    else
+    {
+        addToGmsh(3, 5, 3, nodes_, hexes_, region_, faces_, unit);
     }
 }
 
