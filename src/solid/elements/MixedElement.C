@@ -121,6 +121,118 @@ double cornerJacobian
 namespace
 {
 
+// An element inverted during the solve: J <= 0 at Gauss point q
+[[noreturn]] void throwInverted
+(
+    const solid::Mesh& mesh,
+    const int e,
+    const double J,
+    const std::size_t q
+)
+{
+    std::ostringstream os;
+    os  << "element " << e << " (region '"
+        << mesh.regionNames.at(mesh.region[e])
+        << "') inverted during the solve: J = " << J
+        << " at Gauss point " << q;
+    throw solid::SolidError
+    (
+        solid::SolidError::Kind::invertedElement, os.str()
+    );
+}
+
+
+// An element whose corner at node `node` is folded (corner Jacobian jc,
+// reference j0 > 0) while every Gauss point keeps J > 0 (smallest Jmin)
+[[noreturn]] void throwFoldedCorner
+(
+    const solid::Mesh& mesh,
+    const int e,
+    const int node,
+    const double jc,
+    const int dim,
+    const double j0,
+    const double Jmin
+)
+{
+    std::ostringstream os;
+    os  << "element " << e << " (region '"
+        << mesh.regionNames.at(mesh.region[e])
+        << "') inverted during the solve: its corner at node "
+        << node << " is folded (corner Jacobian " << jc
+        << " m^" << dim << " against " << j0 << " in the"
+        " reference) while every Gauss point has J > 0"
+        " (smallest " << Jmin << ")";
+    throw solid::SolidError
+    (
+        solid::SolidError::Kind::invertedElement, os.str()
+    );
+}
+
+
+// The volumetric part of an element's response, on its dilatation
+// theta = v/V (out.theta) and the Maxwell heat of the step (heatStep,
+// J): p, q, c^2 (the law's K/rho plus 4/3 mu/rho), zeta, the temperature
+// rise, the volumetric energy and the shock heat into out. A constraint
+// (d0 = 0) or the two-field u-p multiplier (useMultiplier) takes p from
+// pMultiplier. One function for the general and the explicit path, so
+// the two stay bitwise equal. Returns the law's response (zero for a
+// constraint): the general path's tangent takes dp/dtheta from it
+solid::VolumetricResponse volumetricPart
+(
+    const solid::VolumetricLaw& vol,
+    const solid::ElementGeometry& geo,
+    const double mu,
+    const double rho,
+    const bool useMultiplier,
+    const double pMultiplier,
+    const double dt,
+    const double heatStep,
+    const double* elemOld,
+    double* elemNew,
+    solid::ElementOutput& out
+)
+{
+    using namespace solid;
+    if (vol.isConstraint())
+    {
+        out.p = pMultiplier;
+        out.q = 0;
+        out.c2 = 0;
+        out.zeta = 0;
+        out.temperatureRise = 0;
+        return VolumetricResponse();
+    }
+    VolumetricInput in;
+    in.theta = out.theta;
+    in.dt = dt;
+    in.length = geo.length;
+    if (vol.absorbsHeat())
+    {
+        // Adiabatic: the Maxwell dissipation heats the EOS energy
+        in.heat = heatStep/geo.V;
+        out.viscousHeat = out.dissipated;
+        out.dissipated = 0;
+    }
+    const VolumetricResponse vr = vol.evaluate(in, elemOld, elemNew);
+    out.energy += vr.energy*geo.V;
+    out.shockHeat = vol.dissipated(elemNew)*geo.V;
+    out.temperatureRise = vr.temperatureRise;
+    out.c2 = vr.c2 + 4.0/3.0*mu/rho;
+    out.zeta = vr.zeta;
+    if (useMultiplier)
+    {
+        out.p = pMultiplier;
+    }
+    else
+    {
+        out.p = vr.p;
+        out.q = vr.q;
+    }
+    return vr;
+}
+
+
 // The explicit evaluation (no tangent, the volumetric law on the element
 // dilatation): the arithmetic of the general path of
 // MixedElement::evaluate below, operation for operation in the same
@@ -190,12 +302,7 @@ void evaluateExplicit
         out.Jmin = std::min(out.Jmin, J);
         if (!(J > 0))
         {
-            std::ostringstream os;
-            os  << "element " << e << " (region '"
-                << mesh.regionNames.at(mesh.region[e])
-                << "') inverted during the solve: J = " << J
-                << " at Gauss point " << q;
-            throw SolidError(SolidError::Kind::invertedElement, os.str());
+            throwInverted(mesh, e, J, q);
         }
         const Mat3 Fi = F.inverse();
         const double wq = geo.w[q];
@@ -263,55 +370,15 @@ void evaluateExplicit
                 mesh.type, Eigen::Map<const Eigen::VectorXd>(x0.data(), nd), a
             );
             if (!(j0 > 0)) continue;
-            std::ostringstream os;
-            os  << "element " << e << " (region '"
-                << mesh.regionNames.at(mesh.region[e])
-                << "') inverted during the solve: its corner at node "
-                << en[a] << " is folded (corner Jacobian " << jc
-                << " m^" << DIM << " against " << j0 << " in the"
-                " reference) while every Gauss point has J > 0"
-                " (smallest " << out.Jmin << ")";
-            throw SolidError(SolidError::Kind::invertedElement, os.str());
+            throwFoldedCorner(mesh, e, en[a], jc, DIM, j0, out.Jmin);
         }
     }
 
-    const double rho = mat.rho0()/out.theta;
-    if (vol.isConstraint())
-    {
-        out.p = pMultiplier;
-        out.q = 0;
-        out.c2 = 0;
-        out.zeta = 0;
-        out.temperatureRise = 0;
-    }
-    else
-    {
-        VolumetricInput in;
-        in.theta = out.theta;
-        in.dt = dt;
-        in.length = geo.length;
-        if (vol.absorbsHeat())
-        {
-            in.heat = heatStep/geo.V;
-            out.viscousHeat = out.dissipated;
-            out.dissipated = 0;
-        }
-        const VolumetricResponse vr = vol.evaluate(in, elemOld, elemNew);
-        out.energy += vr.energy*geo.V;
-        out.shockHeat = vol.dissipated(elemNew)*geo.V;
-        out.temperatureRise = vr.temperatureRise;
-        out.c2 = vr.c2 + 4.0/3.0*mu/rho;
-        out.zeta = vr.zeta;
-        if (useMultiplier)
-        {
-            out.p = pMultiplier;
-        }
-        else
-        {
-            out.p = vr.p;
-            out.q = vr.q;
-        }
-    }
+    volumetricPart
+    (
+        vol, geo, mu, mat.rho0()/out.theta, useMultiplier, pMultiplier, dt,
+        heatStep, elemOld, elemNew, out
+    );
     f -= out.p*g;
     out.f = f;
     out.g = g;
@@ -484,12 +551,7 @@ void solid::MixedElement::evaluate
         out.Jmin = std::min(out.Jmin, J);
         if (!(J > 0))
         {
-            std::ostringstream os;
-            os  << "element " << e << " (region '"
-                << mesh.regionNames.at(mesh.region[e])
-                << "') inverted during the solve: J = " << J
-                << " at Gauss point " << q;
-            throw SolidError(SolidError::Kind::invertedElement, os.str());
+            throwInverted(mesh, e, J, q);
         }
         const Mat3 Fi = F.inverse();
         const double wq = geo.w[q];
@@ -599,15 +661,7 @@ void solid::MixedElement::evaluate
                     x0(b*dim + i) = mesh.X[en[b]](i);
             const double j0 = cornerJacobian(mesh.type, x0, a);
             if (!(j0 > 0)) continue;
-            std::ostringstream os;
-            os  << "element " << e << " (region '"
-                << mesh.regionNames.at(mesh.region[e])
-                << "') inverted during the solve: its corner at node "
-                << en[a] << " is folded (corner Jacobian " << jc
-                << " m^" << dim << " against " << j0 << " in the"
-                " reference) while every Gauss point has J > 0"
-                " (smallest " << out.Jmin << ")";
-            throw SolidError(SolidError::Kind::invertedElement, os.str());
+            throwFoldedCorner(mesh, e, en[a], jc, dim, j0, out.Jmin);
         }
     }
 
@@ -624,49 +678,16 @@ void solid::MixedElement::evaluate
         out.sigma = out.sigma/out.v;
         return;
     }
-    if (vol.isConstraint())
+    // Two-field u-p (useMultiplier): p is an unknown, theta(p) = v/V is
+    // the element equation (assembled by Model)
+    const VolumetricResponse vr = volumetricPart
+    (
+        vol, geo, mu, rho, useMultiplier, pMultiplier, dt, heatStep,
+        elemOld, elemNew, out
+    );
+    if (tangent && !vol.isConstraint() && !useMultiplier)
     {
-        out.p = pMultiplier;
-        out.q = 0;
-        out.c2 = 0;
-        out.zeta = 0;
-        out.temperatureRise = 0;
-    }
-    else
-    {
-        VolumetricInput in;
-        in.theta = out.theta;
-        in.dt = dt;
-        in.length = geo.length;
-        if (vol.absorbsHeat())
-        {
-            // Adiabatic: the Maxwell dissipation heats the EOS energy
-            in.heat = heatStep/geo.V;
-            out.viscousHeat = out.dissipated;
-            out.dissipated = 0;
-        }
-        const VolumetricResponse vr = vol.evaluate(in, elemOld, elemNew);
-        out.energy += vr.energy*geo.V;
-        out.shockHeat = vol.dissipated(elemNew)*geo.V;
-        out.temperatureRise = vr.temperatureRise;
-        out.c2 = vr.c2 + 4.0/3.0*mu/rho;
-        out.zeta = vr.zeta;
-        if (useMultiplier)
-        {
-            // Two-field u-p: p is an unknown, theta(p) = v/V is the
-            // element equation (assembled by Model)
-            out.p = pMultiplier;
-        }
-        else
-        {
-            out.p = vr.p;
-            out.q = vr.q;
-            if (tangent)
-            {
-                out.K.noalias() -=
-                    (vr.dpdtheta/geo.V)*out.g*out.g.transpose();
-            }
-        }
+        out.K.noalias() -= (vr.dpdtheta/geo.V)*out.g*out.g.transpose();
     }
     out.f -= out.p*out.g;
     if (tangent) out.K.noalias() -= out.p*H;
