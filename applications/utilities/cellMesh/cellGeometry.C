@@ -27,6 +27,14 @@ Foam::cellGeometry::meshTypeNames
 });
 
 
+const Foam::Enum<Foam::cellGeometry::structuredSmoothing>
+Foam::cellGeometry::structuredSmoothingNames
+({
+    { structuredSmoothing::none, "none" },
+    { structuredSmoothing::elliptic, "elliptic" },
+});
+
+
 const Foam::Enum<Foam::cellGeometry::nucleusShape>
 Foam::cellGeometry::nucleusShapeNames
 ({
@@ -52,9 +60,10 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     (
         dict,
         {
-            "mode", "meshType", "nucleusShape", "cellDiameter", "cellHeight",
-            "nucleusVolumeFraction", "membraneThickness", "membraneLayers",
-            "nucleusSize", "cytoplasmSize", "membraneSize", "azimuthSize",
+            "mode", "meshType", "structuredSmoothing", "nucleusShape",
+            "cellDiameter", "cellHeight", "nucleusVolumeFraction",
+            "membraneThickness", "membraneLayers", "nucleusSize",
+            "cytoplasmSize", "membraneSize", "azimuthSize",
             "contactRadius", "contactSize", "contactDepth", "maxElements",
             "fluid"
         }
@@ -76,6 +85,20 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
             << " available in mode " << meshModeNames[mode_] << ": the 3D "
             << "modes are structured only (valid value: structured; "
             << "unstructured is the axisymmetric mode's gmsh section)"
+            << exit(FatalIOError);
+    }
+    smoothing_ = foamTools::readEnumOrDefault
+    (
+        structuredSmoothingNames, dict, "structuredSmoothing",
+        structuredSmoothing::none
+    );
+    if (smoothing_ != structuredSmoothing::none && !structured())
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'structuredSmoothing' = "
+            << structuredSmoothingNames[smoothing_] << " needs a structured "
+            << "mesh (meshType structured; here unstructured: gmsh's "
+            << "section); valid value with meshType unstructured: none"
             << exit(FatalIOError);
     }
     shape_ = foamTools::readEnumOrDefault
