@@ -3,7 +3,7 @@
 solid meshes (issue 17 item 4; docs/results/blastPlaneWave.md, "The solid
 alone under the exact traction"; not a test).
 
-Usage: exactTractionLadder.py [-depth D] [-nucleus AN,CN,E] H=DIR
+Usage: exactTractionLadder.py [-depth D] [-nucleus AN,CN,E[,E1]] H=DIR
                               [H=DIR ...]
 
 Each DIR a run of build/bin/exactTraction with -fields (and its probes,
@@ -15,7 +15,9 @@ strain| over the elements whose centroid lies deeper than D (default
 observed order of the rms between successive runs; with -nucleus also
 leaving out the elements whose centroid lies within E [m] of the
 nucleus surface (r/AN)^2 + (z/CN)^2 = 1 (the scaled cell's: AN 5.82405e-6,
-CN 5.47737e-6; the distance |f|/|grad f| of that level function). Then,
+CN 5.47737e-6; the distance |f|/|grad f| of that level function); with
+-nucleus AN,CN,E,E1 only the elements whose centroid lies between E and
+E1 [m] from it (a band: E 0 includes the surface's own elements). Then,
 per probe of
 bench/blast/ballLadder.py (the same measures as for a coupled run): the
 von Mises 1-ns peak's error against the exact answer and its non-uniaxial
@@ -45,9 +47,12 @@ def fields(d, depth, nucleus=None):
         r, z, lat, dep = a[:, 0], a[:, 1], a[:, 2], a[:, 3]
         m = dep > depth
         if nucleus:
-            an, cn, e = nucleus
+            an, cn, e = nucleus[:3]
             level = (r/an)**2 + (z/cn)**2 - 1
-            m &= abs(level)/(2*np.hypot(r/an**2, z/cn**2)) > e
+            dist = abs(level)/(2*np.hypot(r/an**2, z/cn**2))
+            m &= dist >= e if len(nucleus) == 4 else dist > e
+            if len(nucleus) == 4:
+                m &= dist < nucleus[3]
         if not m.any():
             sys.exit("exactTractionLadder.py: %s: no element deeper than %g"
                      " m" % (f, depth))
@@ -68,9 +73,12 @@ def main():
             depth = float(args[1])
         else:
             nucleus = tuple(float(x) for x in args[1].split(","))
-            if len(nucleus) != 3 or not all(x > 0 for x in nucleus):
-                sys.exit("exactTractionLadder.py: -nucleus AN,CN,E: three "
-                         "positive lengths [m]")
+            if not (len(nucleus) in (3, 4) and all(x > 0 for x in
+                                                   nucleus[:2])
+                    and all(x >= 0 for x in nucleus[2:])
+                    and (len(nucleus) == 3 or nucleus[3] > nucleus[2])):
+                sys.exit("exactTractionLadder.py: -nucleus AN,CN,E[,E1]: "
+                         "positive lengths AN, CN [m], E >= 0 m, E1 > E")
         args = args[2:]
     if not args:
         sys.exit(__doc__)

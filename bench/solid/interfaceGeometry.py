@@ -28,6 +28,11 @@ interface). Per mesh it prints, lengths in nm:
                edge's nodes: the angle [deg] between the cytoplasm
                element's side and the nucleus element's side through each
                node (0: a straight grid line across the interface)
+
+Then per mesh, over the whole nucleus surface (its interior nodes with
+one edge into each region): the largest and the median kink [deg] of the
+grid line crossing it, and the range of the ratio of those two edges'
+lengths (cytoplasm over nucleus: 1 where the spacing is continuous).
 """
 import math
 import os
@@ -127,6 +132,50 @@ def main():
                  thick(en)*1e9, len(patch), 1e9*sum(cd)/len(cd),
                  1e9*max(cd), angles[0], angles[1]))
         del r0
+        kinks.append((h, surfaceKinks(X, groups, outer, inner)))
+    print()
+    print("| H [um] | nodes | largest kink [deg] (at r, z [um]) | median "
+          "kink [deg] | edge ratio cytoplasm/nucleus: min..max |")
+    print("|---:|---:|---:|---:|---:|")
+    for h, (k, ratio, where) in kinks:
+        print("| %g | %d | %.2f (%.2f, %.2f) | %.2f | %.2f..%.2f |"
+              % (float(h)*1e6, len(k), max(k), where[0]*1e6, where[1]*1e6,
+                 sorted(k)[len(k)//2], min(ratio), max(ratio)))
+
+
+def surfaceKinks(X, groups, outer, inner):
+    """kinks [deg], edge ratios and the place [m] of the largest kink over
+    the interior nodes of the outer-inner interface"""
+    q = {r: regionElements(groups, r) for r in (outer, inner)}
+    N = {r: {n for e in q[r] for n in e} for r in q}
+    bnd = {n for g in ("fixedBottom", "axis", "outerSurface") if g in groups
+           for (_, _, _, nodes) in groups[g][1] for n in nodes}
+    iface = (N[outer] & N[inner]) - bnd
+    off = {}
+    for r in q:
+        for e in q[r]:
+            for k in range(4):
+                for x, y in ((e[k], e[(k + 1) % 4]), (e[(k + 1) % 4], e[k])):
+                    if x in iface and y not in iface:
+                        off.setdefault((x, r), set()).add(y)
+    kinks, ratios, worst = [], [], (0.0, None)
+    for n in iface:
+        c, m = off.get((n, outer), ()), off.get((n, inner), ())
+        if len(c) != 1 or len(m) != 1:
+            continue
+        c, m = next(iter(c)), next(iter(m))
+        u = (X[c][0] - X[n][0], X[c][1] - X[n][1])
+        v = (X[n][0] - X[m][0], X[n][1] - X[m][1])
+        cs = (u[0]*v[0] + u[1]*v[1])/(math.hypot(*u)*math.hypot(*v))
+        k = math.degrees(math.acos(max(-1.0, min(1.0, cs))))
+        kinks.append(k)
+        ratios.append(math.hypot(*u)/math.hypot(*v))
+        if k > worst[0]:
+            worst = (k, (X[n][0], X[n][1]))
+    return kinks, ratios, worst[1]
+
+
+kinks = []
 
 
 if __name__ == "__main__":

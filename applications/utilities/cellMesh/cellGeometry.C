@@ -105,6 +105,23 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     (
         nucleusShapeNames, dict, "nucleusShape", nucleusShape::centredSpheroid
     );
+    // The centred spheroid's cytoplasm is one C-shaped block around the
+    // nucleus: smoothed, its nucleus-surface nodes slide away from the
+    // equator (the smallest scaled Jacobian 0.09 at 0.25 um; branch
+    // conv17, session 44)
+    if
+    (
+        smoothing_ == structuredSmoothing::elliptic
+     && shape_ != nucleusShape::scaledCell
+    )
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'structuredSmoothing' = elliptic is available for "
+            << "nucleusShape scaledCell only (here "
+            << nucleusShapeNames[shape_] << ": its C-shaped cytoplasm block"
+            << " distorts when smoothed); valid value here: none"
+            << exit(FatalIOError);
+    }
     // `fluid 5;` is an error, not "no fluid" (adv32 y01: no fluid.msh,
     // an older one left beside the new cell.msh)
     if (const dictionary* fluid = foamTools::findSubDict(dict, "fluid"))
