@@ -3,8 +3,8 @@
 solid meshes (issue 17 item 4; docs/results/blastPlaneWave.md, "The solid
 alone under the exact traction"; not a test).
 
-Usage: exactTractionLadder.py [-depth D] [-nucleus AN,CN,E[,E1]] H=DIR
-                              [H=DIR ...]
+Usage: exactTractionLadder.py [-depth D] [-nucleus AN,CN,E[,E1]]
+                              [-exclude R,Z,E] H=DIR [H=DIR ...]
 
 Each DIR a run of build/bin/exactTraction with -fields (and its probes,
 after bench/solid/exactTraction.py); H its solid element size [m]. The
@@ -17,7 +17,10 @@ leaving out the elements whose centroid lies within E [m] of the
 nucleus surface (r/AN)^2 + (z/CN)^2 = 1 (the scaled cell's: AN 5.82405e-6,
 CN 5.47737e-6; the distance |f|/|grad f| of that level function); with
 -nucleus AN,CN,E,E1 only the elements whose centroid lies between E and
-E1 [m] from it (a band: E 0 includes the surface's own elements). Then,
+E1 [m] from it (a band: E 0 includes the surface's own elements); with
+-exclude R,Z,E also leaving out the elements whose centroid lies within
+E [m] of the point (R, Z) [m] (e.g. the nucleus O-grid's node of 3
+elements). Then,
 per probe of
 bench/blast/ballLadder.py (the same measures as for a coupled run): the
 von Mises 1-ns peak's error against the exact answer and its non-uniaxial
@@ -36,7 +39,7 @@ sys.path.insert(0, os.path.join(here, "..", "blast"))
 import ballLadder   # noqa: E402
 
 
-def fields(d, depth, nucleus=None):
+def fields(d, depth, nucleus=None, exclude=None):
     """{time [s]: (rms, largest |lateral|, elements)} over depth > D (and
     farther than E from the nucleus surface, nucleus = (AN, CN, E))"""
     out = {}
@@ -53,6 +56,8 @@ def fields(d, depth, nucleus=None):
             m &= dist >= e if len(nucleus) == 4 else dist > e
             if len(nucleus) == 4:
                 m &= dist < nucleus[3]
+        if exclude:
+            m &= np.hypot(r - exclude[0], z - exclude[1]) > exclude[2]
         if not m.any():
             sys.exit("exactTractionLadder.py: %s: no element deeper than %g"
                      " m" % (f, depth))
@@ -68,9 +73,16 @@ def main():
     args = sys.argv[1:]
     depth = 1e-6
     nucleus = None
-    while args[:1] in (["-depth"], ["-nucleus"]) and len(args) > 1:
+    exclude = None
+    while args[:1] in (["-depth"], ["-nucleus"], ["-exclude"]) \
+            and len(args) > 1:
         if args[0] == "-depth":
             depth = float(args[1])
+        elif args[0] == "-exclude":
+            exclude = tuple(float(x) for x in args[1].split(","))
+            if len(exclude) != 3 or exclude[2] <= 0:
+                sys.exit("exactTractionLadder.py: -exclude R,Z,E: a point "
+                         "[m] and a positive distance E [m]")
         else:
             nucleus = tuple(float(x) for x in args[1].split(","))
             if not (len(nucleus) in (3, 4) and all(x > 0 for x in
@@ -85,7 +97,7 @@ def main():
     runs = []
     for a in args:
         h, d = a.split("=", 1)
-        runs.append((float(h), d, fields(d, depth, nucleus)))
+        runs.append((float(h), d, fields(d, depth, nucleus, exclude)))
     runs.sort(key=lambda r: -r[0])
     times = sorted(runs[0][2])
     print("| field time [ns] | " + " | ".join(
