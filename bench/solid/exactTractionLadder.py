@@ -4,7 +4,7 @@ solid meshes (issue 17 item 4; docs/results/blastPlaneWave.md, "The solid
 alone under the exact traction"; not a test).
 
 Usage: exactTractionLadder.py [-depth D] [-nucleus AN,CN,E[,E1]]
-                              [-exclude R,Z,E] H=DIR [H=DIR ...]
+                              [-exclude R,Z,E] [-where] H=DIR [H=DIR ...]
 
 Each DIR a run of build/bin/exactTraction with -fields (and its probes,
 after bench/solid/exactTraction.py); H its solid element size [m]. The
@@ -20,7 +20,8 @@ CN 5.47737e-6; the distance |f|/|grad f| of that level function); with
 E1 [m] from it (a band: E 0 includes the surface's own elements); with
 -exclude R,Z,E also leaving out the elements whose centroid lies within
 E [m] of the point (R, Z) [m] (e.g. the nucleus O-grid's node of 3
-elements). Then,
+elements); with -where each largest |lateral strain| with its element's
+centroid (r, z) [um]. Then,
 per probe of
 bench/blast/ballLadder.py (the same measures as for a coupled run): the
 von Mises 1-ns peak's error against the exact answer and its non-uniaxial
@@ -61,8 +62,9 @@ def fields(d, depth, nucleus=None, exclude=None):
         if not m.any():
             sys.exit("exactTractionLadder.py: %s: no element deeper than %g"
                      " m" % (f, depth))
+        k = np.argmax(np.where(m, abs(lat), -1))
         out[t] = (math.sqrt((lat[m]**2).mean()), abs(lat[m]).max(),
-                  int(m.sum()))
+                  int(m.sum()), (r[k], z[k]))
     if not out:
         sys.exit("exactTractionLadder.py: %s: no fields/*.dat (run "
                  "exactTraction with -fields)" % d)
@@ -74,6 +76,8 @@ def main():
     depth = 1e-6
     nucleus = None
     exclude = None
+    where = "-where" in args
+    args = [a for a in args if a != "-where"]
     while args[:1] in (["-depth"], ["-nucleus"], ["-exclude"]) \
             and len(args) > 1:
         if args[0] == "-depth":
@@ -108,8 +112,10 @@ def main():
         cells, rms = [], []
         for h, _, f in runs:
             k = min(f, key=lambda x: abs(x - t))
-            r, m, n = f[k]
-            cells.append("%.2e / %.2e (%d)" % (r, m, n))
+            r, m, n, at = f[k]
+            cells.append("%.2e / %.2e (%d)" % (r, m, n) if not where else
+                         "%.2e / %.2e (%d; at %.2f, %.2f)"
+                         % (r, m, n, at[0]*1e6, at[1]*1e6))
             rms.append(r)
         orders = ["%.2f" % (math.log(rms[i]/rms[i + 1])
                             / math.log(runs[i][0]/runs[i + 1][0]))
