@@ -40,7 +40,7 @@ sys.path.insert(0, os.path.join(here, "..", "blast"))
 import ballLadder   # noqa: E402
 
 
-def fields(d, depth, nucleus=None, exclude=None):
+def fields(d, depth, nucleus=None, exclude=None, where=False):
     """{time [s]: (rms, largest |lateral|, elements)} over depth > D (and
     farther than E from the nucleus surface, nucleus = (AN, CN, E))"""
     out = {}
@@ -62,9 +62,12 @@ def fields(d, depth, nucleus=None, exclude=None):
         if not m.any():
             sys.exit("exactTractionLadder.py: %s: no element deeper than %g"
                      " m" % (f, depth))
-        k = np.argmax(np.where(m, abs(lat), -1))
         out[t] = (math.sqrt((lat[m]**2).mean()), abs(lat[m]).max(),
-                  int(m.sum()), (r[k], z[k]))
+                  int(m.sum()))
+        if where:
+            # and the largest's element centroid
+            k = np.argmax(np.where(m, abs(lat), -1))
+            out[t] += ((r[k], z[k]),)
     if not out:
         sys.exit("exactTractionLadder.py: %s: no fields/*.dat (run "
                  "exactTraction with -fields)" % d)
@@ -101,7 +104,8 @@ def main():
     runs = []
     for a in args:
         h, d = a.split("=", 1)
-        runs.append((float(h), d, fields(d, depth, nucleus, exclude)))
+        runs.append((float(h), d, fields(d, depth, nucleus, exclude,
+                                         where)))
     runs.sort(key=lambda r: -r[0])
     times = sorted(runs[0][2])
     print("| field time [ns] | " + " | ".join(
@@ -112,10 +116,10 @@ def main():
         cells, rms = [], []
         for h, _, f in runs:
             k = min(f, key=lambda x: abs(x - t))
-            r, m, n, at = f[k]
+            r, m, n = f[k][:3]
             cells.append("%.2e / %.2e (%d)" % (r, m, n) if not where else
                          "%.2e / %.2e (%d; at %.2f, %.2f)"
-                         % (r, m, n, at[0]*1e6, at[1]*1e6))
+                         % (r, m, n, f[k][3][0]*1e6, f[k][3][1]*1e6))
             rms.append(r)
         orders = ["%.2f" % (math.log(rms[i]/rms[i + 1])
                             / math.log(runs[i][0]/runs[i + 1][0]))
