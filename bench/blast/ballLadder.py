@@ -105,12 +105,13 @@ def run(arg, reference=None):
             w = np.sqrt(np.maximum(R*R - (np.array(zs) - z0)**2, 0))
             w[1:-1] *= 2          # trapezoid: ends half
             w /= w.sum()
-            vmRef = sum(wk*planeWave.uniaxialResponse(
-                ref.t, material(ref, z)["rho"], rho0, mu0, br)[1]
-                for wk, z in zip(w, zs))
+            resp = [planeWave.uniaxialResponse(
+                ref.t, material(ref, z)["rho"], rho0, mu0, br) for z in zs]
+            vmRef = sum(wk*rk[1] for wk, rk in zip(w, resp))
+            ezRef = sum(wk*rk[0] for wk, rk in zip(w, resp))
         else:
-            vmRef = planeWave.uniaxialResponse(
-                ref.t, material(ref, z0)["rho"], rho0, mu0, br)[1]
+            ezRef, vmRef = planeWave.uniaxialResponse(
+                ref.t, material(ref, z0)["rho"], rho0, mu0, br)
         # the lateral strain at the von Mises 1-ns peak
         tc, mv = planeWave.runningMean(t, vm, 1e-9)
         tp = tc[np.argmax(mv)]
@@ -121,6 +122,7 @@ def run(arg, reference=None):
         out[q["name"]] = dict(region=region, point=q["point"], R=R, vm=v,
                               ref=vr, vmJ=vj, lateral=lat,
                               strain=peak1ns(t, ez, -1),
+                              strainRef=peak1ns(ref.t, ezRef, -1),
                               lnJ=peak1ns(t, lnJ, -1))
     return float(h), out
 

@@ -21,6 +21,13 @@
 #                         cytoplasm) at 0.35e-6 and 0.175e-6 if given
 # Then bench/solid/exactTractionLadder.py CELL=OUT/structured-CELL ...
 # About 3 min CPU with the default sizes.
+# Environment (default: the runs above):
+#   TYPES="structured unstructured"  the meshes; smooth: meshType
+#                         structured with structuredSmoothing elliptic
+#                         (docs: "A map smooth across the nucleus surface")
+#   VARIANTS=1            0: no variant runs
+#   PROBE_OPTIONS=""      more options of bench/solid/cellProbes.py (e.g.
+#                         "-along 5e-8,4 -normal 2.5e-8,5e-8,1e-7")
 set -euo pipefail
 [ $# -ge 1 ] || { sed -n 2,20p "$0"; exit 1; }
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -40,24 +47,31 @@ mesh() {
     cp "$tut/system/cellMeshDict" "$tut/system/controlDict" "$d/system/"
     local m
     m=$($py -c "import sys; print('%.10g' % (0.8*float(sys.argv[1])))" "$2")
-    printf '%s\n' "meshType $1;" "nucleusSize $2;" "cytoplasmSize $2;" \
-        "membraneSize $m;" "contactSize $m;" > "$d/system/cellMeshDict.allrun"
+    case $1 in
+        smooth) printf '%s\n' "meshType structured;" \
+            "structuredSmoothing elliptic;" ;;
+        *) printf '%s\n' "meshType $1;" ;;
+    esac > "$d/system/cellMeshDict.allrun"
+    printf '%s\n' "nucleusSize $2;" "cytoplasmSize $2;" \
+        "membraneSize $m;" "contactSize $m;" >> "$d/system/cellMeshDict.allrun"
     nice -n 10 cellMesh -case "$d" > "$d/log.cellMesh" 2>&1 \
         || { tail -20 "$d/log.cellMesh"; exit 1; }
-    grep -E "^Structured|^Interior|^    total" "$d/log.cellMesh" || true
+    grep -E "^Structured|^Interior|^structuredSmoothing|^    total" \
+        "$d/log.cellMesh" || true
 }
 first=""
 for c in "${sizes[@]}"
 do
-    for t in structured unstructured
+    for t in ${TYPES:-structured unstructured}
     do
         echo "== $t $c m"
         mesh $t "$c"
         d=$out/$t-$c
         rm -rf "$d"
         mkdir -p "$d"
+        # shellcheck disable=SC2086
         $py "$root/bench/solid/cellProbes.py" "$out/mesh-$t-$c/constant/cell.msh" \
-            "$d/probes"
+            "$d/probes" ${PROBE_OPTIONS:-}
         if [ -z "$first" ]
         then
             # the 1D table once: its reference.dat depends on the probes'
@@ -86,6 +100,7 @@ variant() {
         || { tail -5 "$d/log"; exit 1; }
     tail -1 "$d/log" | cut -c1-160
 }
+[ "${VARIANTS:-1}" = 1 ] || exit 0
 for c in "${sizes[@]}"
 do
     m=$out/mesh-structured-$c/constant/cell.msh

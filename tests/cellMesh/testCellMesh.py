@@ -37,6 +37,13 @@ independent reader of the .msh file:
     keeps the number of interior nodes not at 4 elements (block corners)
     fixed, at most 4 (gmsh's quads: 8-9 % of the interior nodes at 3 and
     8-9 % at 5).
+  smoothSection: structuredSmoothing elliptic (issue 17 item 4), r-z
+    scaledCell at h = 0.5 and 0.25 um, against none: the same element
+    count, scaled Jacobian > 0.5, revolved volume to 1e-3, the nucleus
+    surface's nodes on it; across the nucleus surface the largest kink of
+    the grid lines below 8 deg and below half of none's, the spread
+    (largest/smallest) of the first-element heights' ratio
+    cytoplasm/nucleus below 0.7 of none's; the centred spheroid refused.
   scaledQuarter3D (the blast tutorial's 1.4/1.4/1 um, 1 layer, and
     0.7/0.7/0.5 um, 2 layers), scaledFull3D (0.8/0.8/0.6 um, 1 layer):
     nucleusShape scaledCell in 3D, the checks of quarter3D/full3D plus
@@ -46,7 +53,7 @@ independent reader of the .msh file:
     1 %) in fixedBottom.
 Usage: testCellMesh.py axisymmetric|quarter3D|full3D|shapes3D|docExample|
     scaledNucleus|scaledQuarter3D|scaledFull3D|coarseContact|
-    structuredSection [solidReadCheck]"""
+    structuredSection|smoothSection [solidReadCheck]"""
 import os
 import subprocess
 import sys
@@ -573,11 +580,121 @@ def coarseContact():
               f"{types} (3 = 4-node quadrilateral)")
 
 
+def interfaceKinks(X, g):
+    """At each interior node of the nucleus surface with one edge into
+    each region: the kink [deg] of the grid line crossing it (the angle
+    between its cytoplasm edge and its nucleus edge continued) and the
+    ratio of the two edges' lengths (cytoplasm over nucleus)"""
+    q = {r: [e[3][k:k + 4] for e in g[r][1] for k in range(0, len(e[3]), 4)]
+         for r in ("nucleus", "cytoplasm")}
+    N = {r: {n for e in q[r] for n in e} for r in q}
+    bnd = {n for r in ("fixedBottom", "axis", "outerSurface")
+           for e in g[r][1] for n in e[3]}
+    iface = (N["nucleus"] & N["cytoplasm"]) - bnd
+    off = {}
+    for r in q:
+        for e in q[r]:
+            for k in range(4):
+                for x, y in ((e[k], e[(k + 1) % 4]), (e[(k + 1) % 4], e[k])):
+                    if x in iface and y not in iface:
+                        off.setdefault((x, r), set()).add(y)
+    kinks, ratios = [], []
+    for n in iface:
+        c, m = off.get((n, "cytoplasm"), ()), off.get((n, "nucleus"), ())
+        if len(c) != 1 or len(m) != 1:
+            continue
+        P = np.array(X[n][:2])
+        u = np.array(X[next(iter(c))][:2]) - P
+        v = P - np.array(X[next(iter(m))][:2])
+        cs = u @ v/(np.linalg.norm(u)*np.linalg.norm(v))
+        kinks.append(np.degrees(np.arccos(np.clip(cs, -1, 1))))
+        ratios.append(np.linalg.norm(u)/np.linalg.norm(v))
+    return np.array(kinks), np.array(ratios)
+
+
+def smoothSection():
+    """structuredSmoothing elliptic (see the module)"""
+    s = f**(1.0/3.0)
+    an, cn = s*a, s*H
+    with tempfile.TemporaryDirectory() as tmp:
+        for h0 in (0.5e-6, 0.25e-6):
+            m = {}
+            for smoothing in ("none", "elliptic"):
+                name = f"scaledCell {h0*1e6:g} um, {smoothing}"
+                X, g = run(os.path.join(tmp, f"{smoothing}{h0}"), {
+                    "mode": "axisymmetric", "meshType": "structured",
+                    "structuredSmoothing": smoothing,
+                    "nucleusShape": "scaledCell", "cellDiameter": D,
+                    "cellHeight": H, "nucleusVolumeFraction": f,
+                    "membraneThickness": t, "membraneLayers": 1,
+                    "nucleusSize": h0, "cytoplasmSize": h0,
+                    "membraneSize": 0.8*h0, "contactRadius": 0})
+                quads = [e[3][k:k + 4] for r in ("nucleus", "cytoplasm",
+                                                 "membrane")
+                         for e in g[r][1] for k in range(0, len(e[3]), 4)]
+                sj = 1.0
+                for qd in quads:
+                    x = np.array([X[n][:2] for n in qd])
+                    for i in range(4):
+                        e1 = x[(i + 1) % 4] - x[i]
+                        e2 = x[(i + 3) % 4] - x[i]
+                        sj = min(sj, (e1[0]*e2[1] - e1[1]*e2[0])
+                                 / (np.hypot(*e1)*np.hypot(*e2)))
+                A = [quadMeasures(X, g[r][1]) for r in ("nucleus",
+                                                         "cytoplasm",
+                                                         "membrane")]
+                eV = abs(sum(v[1] for v in A)/(2.0/3.0*np.pi*a**2*H) - 1)
+                nuc = {n for e in g["nucleus"][1] for n in e[3]}
+                cyt = {n for e in g["cytoplasm"][1] for n in e[3]}
+                P = np.array([X[n][:2] for n in nuc & cyt])
+                qn = np.max(abs((P[:, 0]/an)**2 + (P[:, 1]/cn)**2 - 1))
+                k, r = interfaceKinks(X, g)
+                m[smoothing] = (len(quads), sj, k.max(), r.max()/r.min())
+                print(f"{name}: {len(quads)} quadrilaterals, smallest "
+                      f"scaled Jacobian {sj:.3f}, revolved volume error "
+                      f"{eV:.1e}, nucleus nodes |q - 1| {qn:.1e}; across "
+                      f"the nucleus surface ({len(k)} nodes): largest "
+                      f"kink {k.max():.2f} deg (median "
+                      f"{np.median(k):.2f}), first-element heights "
+                      f"cytoplasm/nucleus {r.min():.2f} to {r.max():.2f}")
+                check(sj > 0.5 and eV < 1e-3 and qn < 1e-9,
+                      f"{name}: scaled Jacobian {sj:.3f} (> 0.5), volume "
+                      f"error {eV:.1e} (< 1e-3), nucleus nodes on the "
+                      f"surface ({qn:.1e} < 1e-9)")
+            n0, _, k0, r0 = m["none"]
+            n1, _, k1, r1 = m["elliptic"]
+            # measured (session 44, the preview's sizes 0.35-0.125 um):
+            # largest kink 15-17 deg unsmoothed, 5.5-6.3 smoothed;
+            # height-ratio spread 5.1 and 2.5-2.7
+            check(n1 == n0 and k1 < 8 and k1 < 0.5*k0 and r1 < 0.7*r0,
+                  f"scaledCell {h0*1e6:g} um: elliptic against none: the "
+                  f"same {n1} elements ({n0}), largest kink {k1:.2f} deg "
+                  f"(< 8 and < half of {k0:.2f}), height-ratio spread "
+                  f"{r1:.2f} (< 0.7 of {r0:.2f})")
+        # the centred spheroid is refused
+        case = os.path.join(tmp, "centred")
+        os.makedirs(os.path.join(case, "system"))
+        with open(os.path.join(case, "system/cellMeshDict"), "w") as d:
+            d.write("FoamFile { version 2.0; format ascii; class dictionary;"
+                    " object cellMeshDict; }\nmode axisymmetric;\n"
+                    "meshType structured;\nstructuredSmoothing elliptic;\n"
+                    f"cellDiameter {D};\ncellHeight {H};\n"
+                    "nucleusSize 5e-7;\ncytoplasmSize 5e-7;\n"
+                    "membraneSize 4e-7;\ncontactRadius 0;\n")
+        p = subprocess.run(["bash", "-c", f". {root}/etc/bashrc && "
+                            f"cellMesh -case {case}"],
+                           capture_output=True, text=True)
+        check(p.returncode != 0 and "scaledCell only" in p.stdout + p.stderr,
+              f"centredSpheroid with structuredSmoothing elliptic refused "
+              f"(exit {p.returncode})")
+
+
 {"axisymmetric": axisymmetric, "quarter3D": quarter3D,
  "coarseContact": coarseContact,
  "scaledQuarter3D": scaledQuarter3D, "scaledFull3D": scaledFull3D,
  "full3D": full3D, "shapes3D": shapes3D,
  "docExample": docExample, "scaledNucleus": scaledNucleus,
- "structuredSection": structuredSection}[sys.argv[1]]()
+ "structuredSection": structuredSection,
+ "smoothSection": smoothSection}[sys.argv[1]]()
 print(f"testCellMesh {sys.argv[1]}: {len(check.failed)} failed")
 sys.exit(check.exitStatus())

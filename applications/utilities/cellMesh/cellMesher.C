@@ -359,6 +359,23 @@ void Foam::cellMesher::physicalGroups2D() const
 }
 
 
+namespace
+{
+
+void smoothingInfo(const Foam::structuredCell& cell)
+{
+    using namespace Foam;
+    if (cell.smoothSweeps() == 0) return;
+    Info<< "structuredSmoothing elliptic: " << cell.smoothFree()
+        << " interior nodes smoothed, " << cell.smoothSliding() << " of them"
+        << " sliding on the nucleus surface, " << cell.smoothBoundary()
+        << " along the substrate or the axis; " << cell.smoothSweeps() << " sweeps, the last "
+        << "moving a node by at most " << cell.smoothLastMove() << " m" << nl;
+}
+
+}
+
+
 Foam::cellMesher::cellMesher(const cellGeometry& geom)
 :
     geom_(geom),
@@ -390,6 +407,7 @@ Foam::cellMesher::cellMesher(const cellGeometry& geom)
             Info<< " " << kv.first << ": " << kv.second;
         }
         Info<< nl;
+        smoothingInfo(cell);
         if (geom_.contactRadius() > 0)
         {
             Info<< "contactRadius, contactSize, contactDepth are not used by"
@@ -408,7 +426,9 @@ Foam::cellMesher::cellMesher(const cellGeometry& geom)
         {
             Info<< " " << kv.first.c_str() << " " << kv.second.size();
         }
-        Info<< nl << endl;
+        Info<< nl;
+        smoothingInfo(cell);
+        Info<< endl;
     }
 }
 

@@ -397,13 +397,341 @@ void Foam::structuredCell::addQuads(const block2D& b, int region)
 
 void Foam::structuredCell::sectionBlock(const block2D& b, int region)
 {
-    if (section_)
+    pending_.push_back({b, region});
+}
+
+
+void Foam::structuredCell::smoothSection()
+{
+    // The union of the pending blocks as one quadrilateral mesh: node ids
+    // by quantised position (the blocks share their interface nodes'
+    // formulas, so equal points are equal to within mergeTol)
+    std::vector<vec2> X;
+    std::vector<std::vector<std::size_t>> ids(pending_.size());
     {
-        addQuads(b, region);
+        std::map<std::pair<long long, long long>, std::size_t> at;
+        const auto id = [&](const vec2& x)
+        {
+            const long long q0 = std::llround(x[0]/mergeTol);
+            const long long q1 = std::llround(x[1]/mergeTol);
+            for (int d0 = -1; d0 <= 1; ++d0)
+            for (int d1 = -1; d1 <= 1; ++d1)
+            {
+                const auto it = at.find({q0 + d0, q1 + d1});
+                if (it != at.end()) return it->second;
+            }
+            at[{q0, q1}] = X.size();
+            X.push_back(x);
+            return X.size() - 1;
+        };
+        for (std::size_t b = 0; b < pending_.size(); ++b)
+        {
+            for (const vec2& x : pending_[b].first.p)
+            {
+                ids[b].push_back(id(x));
+            }
+        }
     }
-    else
+    const std::size_t nNodes = X.size();
+
+    // Quadrilaterals, counter-clockwise, with their regions
+    std::vector<quad> Q;
+    std::vector<int> R;
+    const auto area2 = [&](const quad& q)
     {
-        revolve(b, region);
+        return (X[q[2]][0] - X[q[0]][0])*(X[q[3]][1] - X[q[1]][1])
+             - (X[q[2]][1] - X[q[0]][1])*(X[q[3]][0] - X[q[1]][0]);
+    };
+    for (std::size_t b = 0; b < pending_.size(); ++b)
+    {
+        const block2D& bl = pending_[b].first;
+        const auto n = [&](label i, label j)
+        {
+            return ids[b][j*(bl.ni + 1) + i];
+        };
+        for (label j = 0; j < bl.nj; ++j)
+        for (label i = 0; i < bl.ni; ++i)
+        {
+            quad q{n(i, j), n(i + 1, j), n(i + 1, j + 1), n(i, j + 1)};
+            if (area2(q) < 0) std::swap(q[1], q[3]);
+            Q.push_back(q);
+            R.push_back(pending_[b].second);
+        }
+    }
+
+    // Node roles: fixed (the union's boundary, the membrane's nodes),
+    // sliding (nucleus-cytoplasm interface), free
+    std::vector<label> valence(nNodes, 0);
+    std::vector<bool> fixed(nNodes, false), inNuc(nNodes, false),
+        inCyt(nNodes, false);
+    std::map<std::pair<std::size_t, std::size_t>, label> edgeUse;
+    for (std::size_t e = 0; e < Q.size(); ++e)
+    {
+        for (int k = 0; k < 4; ++k)
+        {
+            const std::size_t a = Q[e][k], b = Q[e][(k + 1) % 4];
+            ++edgeUse[{std::min(a, b), std::max(a, b)}];
+            ++valence[a];
+            if (R[e] == membraneRegion) fixed[a] = true;
+            if (R[e] == nucleusRegion) inNuc[a] = true;
+            if (R[e] == cytoplasmRegion) inCyt[a] = true;
+        }
+    }
+    for (const auto& kv : edgeUse)
+    {
+        if (kv.second == 1)
+        {
+            fixed[kv.first.first] = fixed[kv.first.second] = true;
+        }
+    }
+    std::vector<bool> slide(nNodes, false);
+    for (std::size_t n = 0; n < nNodes; ++n)
+    {
+        slide[n] = !fixed[n] && inNuc[n] && inCyt[n];
+    }
+    // A node of 2 elements of one region on the substrate (z = 0) or on
+    // the axis (r = 0) slides along it so that the grid line leaving it
+    // is normal to it (its coordinate along it that of its edge
+    // neighbour off it); the ends of these lines and every other
+    // boundary node stay
+    std::vector<int> along(nNodes, -1);
+    for (std::size_t n = 0; n < nNodes; ++n)
+    {
+        if
+        (
+            fixed[n] && valence[n] == 2 && !(inNuc[n] && inCyt[n])
+        )
+        {
+            if (X[n][1] == 0) along[n] = 0;
+            else if (section_ && X[n][0] == 0) along[n] = 1;
+        }
+    }
+    for (std::size_t e = 0; e < Q.size(); ++e)
+    {
+        if (R[e] != membraneRegion) continue;
+        for (const std::size_t n : Q[e]) along[n] = -1;
+    }
+
+    // Each moving node's stencil: a node of 4 elements its edge
+    // neighbours E0..E3 counter-clockwise and the diagonals D0..D3 (Dk
+    // between Ek and Ek+1), so that u runs E2 -> E0 and v E3 -> E1; any
+    // other its edge neighbours (Laplace)
+    struct stencil
+    {
+        std::size_t n;
+        bool winslow;
+        std::vector<std::size_t> E, D;
+    };
+    std::vector<std::vector<std::size_t>> around(nNodes);
+    for (std::size_t e = 0; e < Q.size(); ++e)
+    {
+        for (const std::size_t n : Q[e]) around[n].push_back(e);
+    }
+    std::vector<stencil> moving;
+    smoothFree_ = 0;
+    smoothSliding_ = 0;
+    std::vector<std::pair<std::size_t, std::size_t>> boundarySliders;
+    for (std::size_t n = 0; n < nNodes; ++n)
+    {
+        if (along[n] < 0) continue;
+        // its edge neighbour off the line
+        for (const std::size_t e : around[n])
+        {
+            const quad& q = Q[e];
+            const int k = int(std::find(q.begin(), q.end(), n) - q.begin());
+            for (const std::size_t m : {q[(k + 1) % 4], q[(k + 3) % 4]})
+            {
+                if
+                (
+                    X[m][1 - along[n]] != 0
+                 && (boundarySliders.empty() || boundarySliders.back().first != n)
+                )
+                {
+                    boundarySliders.push_back({n, m});
+                }
+            }
+        }
+    }
+    smoothBoundary_ = boundarySliders.size();
+    for (std::size_t n = 0; n < nNodes; ++n)
+    {
+        if (fixed[n]) continue;
+        stencil st{n, valence[n] == 4, {}, {}};
+        // (next, diagonal, previous) of n in each of its elements
+        std::vector<std::array<std::size_t, 3>> corner;
+        for (const std::size_t e : around[n])
+        {
+            const quad& q = Q[e];
+            const int k = int(std::find(q.begin(), q.end(), n) - q.begin());
+            corner.push_back({q[(k + 1) % 4], q[(k + 2) % 4], q[(k + 3) % 4]});
+        }
+        if (st.winslow)
+        {
+            std::size_t c = 0;
+            for (int m = 0; m < 4; ++m)
+            {
+                st.E.push_back(corner[c][0]);
+                st.D.push_back(corner[c][1]);
+                const std::size_t prev = corner[c][2];
+                std::size_t next = corner.size();
+                for (std::size_t k = 0; k < corner.size(); ++k)
+                {
+                    if (corner[k][0] == prev) next = k;
+                }
+                if (next == corner.size())
+                {
+                    FatalErrorInFunction
+                        << "the elements around the node at ("
+                        << X[n][0] << ", " << X[n][1] << ") m do not "
+                        << "close around it" << exit(FatalError);
+                }
+                c = next;
+            }
+        }
+        else
+        {
+            for (const auto& cn : corner)
+            {
+                for (const std::size_t m : {cn[0], cn[2]})
+                {
+                    if (std::find(st.E.begin(), st.E.end(), m) == st.E.end())
+                    {
+                        st.E.push_back(m);
+                    }
+                }
+            }
+        }
+        moving.push_back(st);
+        ++(slide[n] ? smoothSliding_ : smoothFree_);
+    }
+
+    // The nucleus surface's closest point to x, by Newton on its angle
+    // psi from the bottom, from psi0
+    const scalar an = g_.an(), cn = g_.cn(), zn = g_.zn();
+    std::vector<scalar> psi(nNodes, 0);
+    for (std::size_t n = 0; n < nNodes; ++n)
+    {
+        if (slide[n]) psi[n] = closestNucleusAngle(X[n]);
+    }
+    const auto project = [&](const vec2& x, scalar& p) -> vec2
+    {
+        for (int it = 0; it < 20; ++it)
+        {
+            const scalar s = std::sin(p), c = std::cos(p);
+            const vec2 e{an*s, zn - cn*c};
+            const vec2 d1{an*c, cn*s}, d2{-an*s, cn*c};
+            const scalar f = (e[0] - x[0])*d1[0] + (e[1] - x[1])*d1[1];
+            const scalar fp = sqr(d1[0]) + sqr(d1[1])
+                + (e[0] - x[0])*d2[0] + (e[1] - x[1])*d2[1];
+            const scalar dp = f/max(fp, 0.5*(sqr(d1[0]) + sqr(d1[1])));
+            p -= dp;
+            if (std::abs(dp) < 1e-14) break;
+        }
+        return nucleusPoint(p);
+    };
+
+    // Gauss-Seidel sweeps until the largest move of a sweep is below
+    // 1e-7 of the smallest element size
+    const scalar h = min
+    (
+        min(g_.nucleusSize(), g_.cytoplasmSize()), g_.membraneSize()
+    );
+    const label maxSweeps = 200000;
+    smoothSweeps_ = 0;
+    smoothLastMove_ = 0;
+    do
+    {
+        smoothLastMove_ = 0;
+        for (const stencil& st : moving)
+        {
+            vec2 x{0, 0};
+            if (st.winslow)
+            {
+                const auto& E = st.E;
+                const auto& D = st.D;
+                scalar xu[2], xv[2], xuv[2];
+                for (int k = 0; k < 2; ++k)
+                {
+                    xu[k] = 0.5*(X[E[0]][k] - X[E[2]][k]);
+                    xv[k] = 0.5*(X[E[1]][k] - X[E[3]][k]);
+                    xuv[k] = 0.25*
+                        (X[D[0]][k] - X[D[1]][k] + X[D[2]][k] - X[D[3]][k]);
+                }
+                const scalar alpha = sqr(xv[0]) + sqr(xv[1]);
+                const scalar beta = xu[0]*xv[0] + xu[1]*xv[1];
+                const scalar gamma = sqr(xu[0]) + sqr(xu[1]);
+                for (int k = 0; k < 2; ++k)
+                {
+                    x[k] =
+                    (
+                        alpha*(X[E[0]][k] + X[E[2]][k])
+                      + gamma*(X[E[1]][k] + X[E[3]][k])
+                      - 2*beta*xuv[k]
+                    )/(2*(alpha + gamma));
+                }
+            }
+            else
+            {
+                for (const std::size_t m : st.E)
+                {
+                    x[0] += X[m][0]/st.E.size();
+                    x[1] += X[m][1]/st.E.size();
+                }
+            }
+            if (slide[st.n]) x = project(x, psi[st.n]);
+            smoothLastMove_ = max
+            (
+                smoothLastMove_,
+                std::hypot(x[0] - X[st.n][0], x[1] - X[st.n][1])
+            );
+            X[st.n] = x;
+        }
+        for (const auto& nm : boundarySliders)
+        {
+            const int k = along[nm.first];
+            smoothLastMove_ = max
+            (
+                smoothLastMove_,
+                std::abs(X[nm.second][k] - X[nm.first][k])
+            );
+            X[nm.first][k] = X[nm.second][k];
+        }
+        ++smoothSweeps_;
+    } while (smoothLastMove_ > 1e-7*h && smoothSweeps_ < maxSweeps);
+
+    // Every element keeps its orientation
+    label inverted = 0;
+    for (const quad& q : Q)
+    {
+        for (int k = 0; k < 4; ++k)
+        {
+            const vec2& p = X[q[k]];
+            const vec2& a = X[q[(k + 1) % 4]];
+            const vec2& b = X[q[(k + 3) % 4]];
+            if
+            (
+                (a[0] - p[0])*(b[1] - p[1]) - (a[1] - p[1])*(b[0] - p[0])
+             <= 0
+            )
+            {
+                ++inverted;
+                break;
+            }
+        }
+    }
+    if (inverted)
+    {
+        FatalErrorInFunction
+            << "structuredSmoothing elliptic: " << inverted << " of "
+            << Q.size() << " quadrilaterals of the r-z blocks are not convex"
+            << " after " << smoothSweeps_ << " sweeps (use "
+            << "structuredSmoothing none)" << exit(FatalError);
+    }
+
+    for (std::size_t b = 0; b < pending_.size(); ++b)
+    {
+        block2D& bl = pending_[b].first;
+        for (std::size_t k = 0; k < bl.p.size(); ++k) bl.p[k] = X[ids[b][k]];
     }
 }
 
@@ -434,7 +762,7 @@ void Foam::structuredCell::sectionColumn()
         {
             b.at(i, j) = {rc_*i/nCol_, z[i][k0 + j]};
         }
-        addQuads(b, r);
+        sectionBlock(b, r);
         k0 = k1;
     }
 }
@@ -1019,7 +1347,12 @@ Foam::structuredCell::structuredCell(const cellGeometry& geom)
     quarter_(geom.mode() == cellGeometry::meshMode::quarter3D),
     section_(geom.axisymmetric()),
     nCol_(0),
-    firstWidth_(0)
+    firstWidth_(0),
+    smoothSweeps_(0),
+    smoothLastMove_(0),
+    smoothFree_(0),
+    smoothSliding_(0),
+    smoothBoundary_(0)
 {
     const scalar a = g_.a(), an = g_.an();
     rc_ = columnFraction*an;
@@ -1044,6 +1377,24 @@ Foam::structuredCell::structuredCell(const cellGeometry& geom)
     if (section_)
     {
         sectionColumn();
+    }
+    if (g_.ellipticSmoothing())
+    {
+        smoothSection();
+    }
+    for (const auto& b : pending_)
+    {
+        if (section_)
+        {
+            addQuads(b.first, b.second);
+        }
+        else
+        {
+            revolve(b.first, b.second);
+        }
+    }
+    if (section_)
+    {
         classifyEdges();
     }
     else
