@@ -15,8 +15,9 @@ Description
     after the mesh was moved past bandMeshMotion if the face centres it
     keeps from its last update were taken as the step's old centres.
 
-    bandFaceGeometry (the face kernels of the band's update): centre and
-    sweptVol equal to face::centre and face::sweptVol bit for bit (the
+    bandFaceGeometry (the face kernels of the band's update): centre,
+    sweptVol and moveFace equal to face::centre and face::sweptVol, their
+    face centre and area to primitiveMesh's loop, bit for bit (the
     doubles' bytes compared, so -0 against +0 counts) on random planar and
     non-planar triangles to hexagons at several scales and on degenerate
     faces (coincident and collinear points, zero area, areas below
@@ -511,6 +512,44 @@ struct faceChecker
         EXPECT_TRUE(sameBits(sv, svRef))
             << what << ": sweptVol " << str(sv) << " against " << str(svRef)
             << " (difference " << str(sv - svRef) << ")";
+        EXPECT_TRUE
+        (
+            sameBits
+            (
+                bandFaceGeometry::sweptVolLoop(f, cOld, oldP, cNew, newP),
+                svRef
+            )
+        ) << what << ": sweptVolLoop";
+
+        // All at once, and the face centre and area against the general
+        // loop (primitiveMesh's; a triangle's own expression otherwise)
+        point cNew2;
+        scalar sv2;
+        vector fCtr, fArea;
+        bandFaceGeometry::moveFace(f, oldP, newP, cOld, cNew2, sv2, fCtr, fArea);
+        EXPECT_TRUE(sameBits(cNew2, cNew)) << what << ": moveFace centre";
+        EXPECT_TRUE(sameBits(sv2, svRef)) << what << ": moveFace sweptVol";
+        vector fCtrRef, fAreaRef;
+        if (f.size() == 3)
+        {
+            fCtrRef = (1.0/3.0)*(newP[f[0]] + newP[f[1]] + newP[f[2]]);
+            fAreaRef =
+                0.5*((newP[f[1]] - newP[f[0]])^(newP[f[2]] - newP[f[0]]));
+        }
+        else
+        {
+            bandFaceGeometry::centreAndAreaLoop(f, newP, fCtrRef, fAreaRef);
+        }
+        EXPECT_TRUE(sameBits(fCtr, fCtrRef))
+            << what << ": face centre " << str(fCtr) << " against "
+            << str(fCtrRef);
+        EXPECT_TRUE(sameBits(fArea, fAreaRef))
+            << what << ": face area " << str(fArea) << " against "
+            << str(fAreaRef);
+        vector fCtr3, fArea3;
+        bandFaceGeometry::centreAndArea(f, newP, fCtr3, fArea3);
+        EXPECT_TRUE(sameBits(fCtr3, fCtrRef) && sameBits(fArea3, fAreaRef))
+            << what << ": centreAndArea";
         ++nChecked;
     }
 };

@@ -170,13 +170,13 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
     {
         const label facei = faces_[i];
         const face& f = faces[facei];
-        newCentres_[i] = bandFaceGeometry::centre(f, points);
-        const scalar swept =
-            bandFaceGeometry::sweptVol
-            (
-                f, oldCentres_[i], oldPoints, newCentres_[i], points
-            )*rDeltaT;
-        bandFaceGeometry::centreAndArea(f, points, fCtrs[facei], fAreas[facei]);
+        scalar sweptVol;
+        bandFaceGeometry::moveFace
+        (
+            f, oldPoints, points, oldCentres_[i],
+            newCentres_[i], sweptVol, fCtrs[facei], fAreas[facei]
+        );
+        const scalar swept = sweptVol*rDeltaT;
         const scalar m = mag(fAreas[facei]) + VSMALL;
         if (facei < nInternal)
         {
@@ -278,7 +278,7 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
         else
         {
             const label patchi = interpFacePatch_[j];
-            if (!wbf[patchi].size() || pbm[patchi].coupled())
+            if (patchi < 0 || !wbf[patchi].size())
             {
                 // A processor patch's factors need the other side's
                 // geometry: updateProcessorFactors, after the exchange
@@ -471,6 +471,14 @@ Foam::bandMeshMotion::bandMeshMotion
     }
     interpFaces_ = cellsFaces.toc();
     interpFacePatch_ = patchOf(mesh, interpFaces_);
+    for (label& patchi : interpFacePatch_)
+    {
+        if (patchi >= 0 && mesh.boundaryMesh()[patchi].coupled())
+        {
+            // updateProcessorFactors (or the whole update) sets these
+            patchi = -1;
+        }
+    }
 
     // Processor patches: their interpolation factors use the other side's
     // cell centres, which the band of either side may move, so all of
