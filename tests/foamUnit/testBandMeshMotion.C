@@ -11,10 +11,22 @@ Description
     the last bit. On a graded, sheared wedge (the band on the wedge sides
     and a symmetry plane, moving in r-z) and on a 3D block (the band inside
     and sliding along a wall). A band that misses one moving point (so the
-    faces of that point alone) is found different.
+    faces of that point alone) is found different, and so is a band motion
+    after the mesh was moved past bandMeshMotion if the face centres it
+    keeps from its last update were taken as the step's old centres.
+
+    bandFaceGeometry (the face kernels of the band's update): centre,
+    sweptVol and moveFace equal to face::centre and face::sweptVol, their
+    face centre and area to primitiveMesh's loop, bit for bit (the
+    doubles' bytes compared, so -0 against +0 counts) on random planar and
+    non-planar triangles to hexagons at several scales and on degenerate
+    faces (coincident and collinear points, zero area, areas below
+    VSMALL, signed zeros); centreAndArea's centre is another expression
+    (found different on random quadrilaterals).
 \*---------------------------------------------------------------------------*/
 
 #include "bandMeshMotion.H"
+#include "bandFaceGeometry.H"
 #include "Random.H"
 #include "bitSet.H"
 #include "surfaceFields.H"
@@ -23,7 +35,10 @@ Description
 
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <functional>
+#include <iomanip>
+#include <sstream>
 
 using namespace Foam;
 
@@ -373,6 +388,316 @@ TEST(bandMeshMotion, aPointLeftOutOfTheBandIsFound)
         tcA, tcB, meshA(), meshB(), moved, band, blockDisplace, worst
     );
     EXPECT_GT(d, 1e-3) << worst;
+}
+
+
+TEST(bandMeshMotion, aMotionPastTheBandObjectIsSeen)
+{
+    // Step 1 banded (three passes), step 2 through fvMesh::movePoints on
+    // both copies (the band object not told), step 3 banded: the old
+    // centres of step 3 are those of step 2's points, not of the band
+    // object's last update
+    foamUnit::testCase tcA("bandMeshMotionA");
+    foamUnit::testCase tcB("bandMeshMotionB");
+    autoPtr<fvMesh> meshA = blockMesh3D(tcA);
+    autoPtr<fvMesh> meshB = blockMesh3D(tcB);
+    const labelList band(blockBand(meshA()));
+    bandMeshMotion motion(meshA(), band);
+    ASSERT_TRUE(motion.banded());
+
+    const pointField points0(meshB->points());
+    Random rnd(11);
+    auto randomPoints = [&]()
+    {
+        pointField p(points0);
+        for (const label pointi : band)
+        {
+            p[pointi] = blockDisplace(points0[pointi], rnd);
+        }
+        return p;
+    };
+    scalar d = 0;
+    word worst;
+    for (label step = 0; step < 3; ++step)
+    {
+        ++tcA.time();
+        ++tcB.time();
+        for (label pass = 0; pass < 3; ++pass)
+        {
+            const pointField p(randomPoints());
+            if (step == 1)
+            {
+                meshA->movePoints(p);
+            }
+            else
+            {
+                motion.movePoints(p);
+            }
+            meshB->movePoints(p);
+            word w;
+            const scalar di = geometryDifference(meshA(), meshB(), w);
+            if (di > d)
+            {
+                d = di;
+                worst = w;
+            }
+        }
+    }
+    EXPECT_EQ(d, 0) << "largest relative difference " << d << " in " << worst;
+}
+
+
+namespace
+{
+
+//- Whether two values have the same bytes
+template<class Type>
+bool sameBits(const Type& a, const Type& b)
+{
+    return std::memcmp(&a, &b, sizeof(Type)) == 0;
+}
+
+
+//- A value's digits for a failure message (all 17 of a double)
+std::string str(const scalar x)
+{
+    std::ostringstream os;
+    os << std::setprecision(17) << x;
+    return os.str();
+}
+
+std::string str(const vector& v)
+{
+    return "(" + str(v.x()) + " " + str(v.y()) + " " + str(v.z()) + ")";
+}
+
+
+//- A face of n points numbered from 0 over a point list
+face firstPoints(const label n)
+{
+    face f(n);
+    forAll(f, i)
+    {
+        f[i] = i;
+    }
+    return f;
+}
+
+
+//- Checks bandFaceGeometry against face::centre and face::sweptVol for a
+//  face f over old and new points; counts the faces checked
+struct faceChecker
+{
+    label nChecked = 0;
+
+    void operator()
+    (
+        const face& f,
+        const pointField& oldP,
+        const pointField& newP,
+        const std::string& what
+    )
+    {
+        const point cOld = bandFaceGeometry::centre(f, oldP);
+        const point cNew = bandFaceGeometry::centre(f, newP);
+        EXPECT_TRUE(sameBits(cOld, f.centre(oldP)))
+            << what << ": centre " << str(cOld) << " against "
+            << str(f.centre(oldP));
+        EXPECT_TRUE(sameBits(cNew, f.centre(newP)))
+            << what << ": centre " << str(cNew) << " against "
+            << str(f.centre(newP));
+        const scalar sv =
+            bandFaceGeometry::sweptVol(f, cOld, oldP, cNew, newP);
+        const scalar svRef = f.sweptVol(oldP, newP);
+        EXPECT_TRUE(sameBits(sv, svRef))
+            << what << ": sweptVol " << str(sv) << " against " << str(svRef)
+            << " (difference " << str(sv - svRef) << ")";
+        EXPECT_TRUE
+        (
+            sameBits
+            (
+                bandFaceGeometry::sweptVolLoop(f, cOld, oldP, cNew, newP),
+                svRef
+            )
+        ) << what << ": sweptVolLoop";
+
+        // All at once, and the face centre and area against the general
+        // loop (primitiveMesh's; a triangle's own expression otherwise)
+        point cNew2;
+        scalar sv2;
+        vector fCtr, fArea;
+        bandFaceGeometry::moveFace(f, oldP, newP, cOld, cNew2, sv2, fCtr, fArea);
+        EXPECT_TRUE(sameBits(cNew2, cNew)) << what << ": moveFace centre";
+        EXPECT_TRUE(sameBits(sv2, svRef)) << what << ": moveFace sweptVol";
+        vector fCtrRef, fAreaRef;
+        if (f.size() == 3)
+        {
+            fCtrRef = (1.0/3.0)*(newP[f[0]] + newP[f[1]] + newP[f[2]]);
+            fAreaRef =
+                0.5*((newP[f[1]] - newP[f[0]])^(newP[f[2]] - newP[f[0]]));
+        }
+        else
+        {
+            bandFaceGeometry::centreAndAreaLoop(f, newP, fCtrRef, fAreaRef);
+        }
+        EXPECT_TRUE(sameBits(fCtr, fCtrRef))
+            << what << ": face centre " << str(fCtr) << " against "
+            << str(fCtrRef);
+        EXPECT_TRUE(sameBits(fArea, fAreaRef))
+            << what << ": face area " << str(fArea) << " against "
+            << str(fAreaRef);
+        vector fCtr3, fArea3;
+        bandFaceGeometry::centreAndArea(f, newP, fCtr3, fArea3);
+        EXPECT_TRUE(sameBits(fCtr3, fCtrRef) && sameBits(fArea3, fAreaRef))
+            << what << ": centreAndArea";
+        ++nChecked;
+    }
+};
+
+} // End anonymous namespace
+
+
+TEST(bandFaceGeometry, centreAndSweptVolAreFaceCentreAndSweptVolBitForBit)
+{
+    Random rnd(1912);
+    faceChecker check;
+    auto randomPoint = [&](const scalar scale)
+    {
+        return scale*vector
+        (
+            rnd.sample01<scalar>() - 0.5,
+            rnd.sample01<scalar>() - 0.5,
+            rnd.sample01<scalar>() - 0.5
+        );
+    };
+
+    // Random faces: a planar polygon (points on a circle in a random
+    // plane, with random radii) and a non-planar one (random points), old
+    // and new positions moved by a fraction of the size, at scales of
+    // 1e-7 m (the preview's cells), 1 m and 1e3 m, away from the origin
+    for (label n = 3; n <= 6; ++n)
+    {
+        const face f(firstPoints(n));
+        for (const scalar scale : {1e-7, 1.0, 1e3})
+        {
+            for (label sample = 0; sample < 200; ++sample)
+            {
+                const point origin = randomPoint(10*scale);
+                const vector e1 = randomPoint(1).normalise();
+                vector e2 = randomPoint(1);
+                e2 = (e2 - (e2 & e1)*e1).normalise();
+                pointField planar(n), skew(n);
+                for (label i = 0; i < n; ++i)
+                {
+                    const scalar phi = constant::mathematical::twoPi*i/n;
+                    const scalar r = scale*(0.5 + rnd.sample01<scalar>());
+                    planar[i] =
+                        origin + r*(::cos(phi)*e1 + ::sin(phi)*e2);
+                    skew[i] = origin + randomPoint(scale);
+                }
+                for (const pointField* oldP : {&planar, &skew})
+                {
+                    pointField newP(*oldP);
+                    for (point& p : newP)
+                    {
+                        p += randomPoint(0.1*scale);
+                    }
+                    check(f, *oldP, newP, "random n = " + std::to_string(n));
+                    // Only some points move (the band's edge)
+                    pointField partly(*oldP);
+                    partly[0] = newP[0];
+                    check(f, *oldP, partly, "one point moved");
+                    // Not moving at all
+                    check(f, *oldP, *oldP, "at rest");
+                }
+            }
+        }
+    }
+
+    // Degenerate faces
+    for (label n = 3; n <= 6; ++n)
+    {
+        const face f(firstPoints(n));
+        const std::string size = " (n = " + std::to_string(n) + ")";
+
+        // All points at one place, and at the origin with signed zeros
+        pointField same(n, point(1e-6, -2e-6, 3e-6));
+        check(f, same, same, "coincident points" + size);
+        pointField zeros(n, point(-0.0, 0.0, -0.0));
+        check(f, zeros, same, "signed zeros to coincident" + size);
+        check(f, same, zeros, "coincident to signed zeros" + size);
+
+        // Collinear points (zero area, non-zero length)
+        pointField line(n);
+        for (label i = 0; i < n; ++i)
+        {
+            line[i] = point(1e-6*i, -0.0, 2e-6*i);
+        }
+        pointField line2(line);
+        line2[n - 1] += vector(0, 1e-7, 0);
+        check(f, line, line2, "collinear to a sliver" + size);
+        check(f, line2, line, "a sliver to collinear" + size);
+
+        // Two coincident points in a regular polygon
+        pointField poly(n);
+        for (label i = 0; i < n; ++i)
+        {
+            const scalar phi = constant::mathematical::twoPi*i/n;
+            poly[i] = point(::cos(phi), ::sin(phi), 0.0);
+        }
+        pointField pinched(poly);
+        pinched[1] = pinched[0];
+        check(f, poly, pinched, "two points merged" + size);
+
+        // Areas below VSMALL (1e-300): the point average is the centre
+        pointField tiny(poly);
+        for (point& p : tiny)
+        {
+            p *= 1e-160;
+        }
+        check(f, tiny, poly, "area below VSMALL" + size);
+        check(f, tiny, tiny, "area below VSMALL at rest" + size);
+
+        // A face in a coordinate plane with -0 off the plane
+        pointField negZero(poly);
+        for (point& p : negZero)
+        {
+            p.z() = -0.0;
+        }
+        check(f, negZero, poly, "-0 off the plane" + size);
+    }
+    EXPECT_GT(check.nChecked, 14000);
+}
+
+
+TEST(bandFaceGeometry, theCentreIsNotTheMeshFaceCentre)
+{
+    // face::centre and primitiveMesh's face centre are two expressions;
+    // on random non-planar quadrilaterals they differ in some bits (so the
+    // swept volume's centre cannot be taken from the mesh's face centre,
+    // and the comparison above can see a difference)
+    Random rnd(3);
+    const face f(firstPoints(4));
+    label nDifferent = 0;
+    for (label sample = 0; sample < 100; ++sample)
+    {
+        pointField p(4);
+        for (point& pt : p)
+        {
+            pt = point
+            (
+                rnd.sample01<scalar>(),
+                rnd.sample01<scalar>(),
+                rnd.sample01<scalar>()
+            );
+        }
+        vector fCtr, fArea;
+        bandFaceGeometry::centreAndArea(f, p, fCtr, fArea);
+        const point c = bandFaceGeometry::centre(f, p);
+        EXPECT_LT(mag(c - fCtr), 1e-12);
+        nDifferent += !sameBits(c, fCtr);
+    }
+    EXPECT_GT(nDifferent, 0);
 }
 
 

@@ -1,4 +1,5 @@
 #include "bandMeshMotion.H"
+#include "bandFaceGeometry.H"
 #include "bitSet.H"
 #include "pointIOField.H"
 #include "labelIOList.H"
@@ -13,62 +14,6 @@
 
 namespace Foam
 {
-
-//- Centre and area vector of one face: primitiveMesh::makeFaceCentresAndAreas
-//  for this face, the same operations in the same order
-static void faceCentreAndArea
-(
-    const face& f,
-    const pointField& p,
-    vector& fCtr,
-    vector& fArea
-)
-{
-    const label nPoints = f.size();
-    if (nPoints == 3)
-    {
-        fCtr = (1.0/3.0)*(p[f[0]] + p[f[1]] + p[f[2]]);
-        fArea = 0.5*((p[f[1]] - p[f[0]])^(p[f[2]] - p[f[0]]));
-        return;
-    }
-
-    typedef Vector<solveScalar> solveVector;
-    solveVector sumN = Zero;
-    solveScalar sumA = 0.0;
-    solveVector sumAc = Zero;
-
-    solveVector fCentre = p[f[0]];
-    for (label pi = 1; pi < nPoints; ++pi)
-    {
-        fCentre += solveVector(p[f[pi]]);
-    }
-    fCentre /= nPoints;
-
-    for (label pi = 0; pi < nPoints; ++pi)
-    {
-        const label nextPi(pi == nPoints-1 ? 0 : pi+1);
-        const solveVector nextPoint(p[f[nextPi]]);
-        const solveVector thisPoint(p[f[pi]]);
-
-        solveVector c = thisPoint + nextPoint + fCentre;
-        solveVector n = (nextPoint - thisPoint)^(fCentre - thisPoint);
-        solveScalar a = mag(n);
-        sumN += n;
-        sumA += a;
-        sumAc += a*c;
-    }
-
-    if (sumA < ROOTVSMALL)
-    {
-        fCtr = fCentre;
-        fArea = Zero;
-    }
-    else
-    {
-        fCtr = (1.0/3.0)*sumAc/sumA;
-        fArea = 0.5*sumN;
-    }
-}
 
 //- The mesh's interpolation factors, writable (surfaceInterpolation hands
 //  them out const)
@@ -90,6 +35,21 @@ struct interpolationFactors
         )
     {}
 };
+
+//- The patch of each face of a list (-1: an internal face)
+static labelList patchOf(const polyMesh& mesh, const labelUList& faceLabels)
+{
+    const polyBoundaryMesh& pbm = mesh.boundaryMesh();
+    labelList patches(faceLabels.size(), -1);
+    forAll(faceLabels, i)
+    {
+        if (faceLabels[i] >= mesh.nInternalFaces())
+        {
+            patches[i] = pbm.whichPatch(faceLabels[i]);
+        }
+    }
+    return patches;
+}
 
 } // End namespace Foam
 
@@ -145,6 +105,33 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
         (
             static_cast<const pointIOField&>(mesh_.points())
         );
+
+    // face::centre of the band's faces at the step's start (the old
+    // points, fixed within a step): at the first update of a step, the
+    // centres of the last update if the points are still those it left
+    // (no motion through polyMesh::movePoints since: it restamps the
+    // points' event number), else computed from the old points
+    const faceList& faces = mesh_.faces();
+    const pointField& oldPoints = mesh_.oldPoints();
+    if (oldCentresIndex_ != runTime.timeIndex())
+    {
+        if (centresEvent_ != -1 && centresEvent_ == points.eventNo())
+        {
+            oldCentres_.transfer(newCentres_);
+        }
+        else
+        {
+            oldCentres_.setSize(faces_.size());
+            forAll(faces_, i)
+            {
+                oldCentres_[i] =
+                    bandFaceGeometry::centre(faces[faces_[i]], oldPoints);
+            }
+        }
+        newCentres_.setSize(faces_.size());
+        oldCentresIndex_ = runTime.timeIndex();
+    }
+
     for (const label pointi : points_)
     {
         points[pointi] = newPoints[pointi];
@@ -161,67 +148,56 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
         tetBasePtIs.eventNo() = mesh_.getEvent();
     }
 
-    const faceList& faces = mesh_.faces();
     const labelList& own = mesh_.faceOwner();
     const labelList& nei = mesh_.faceNeighbour();
     const label nInternal = mesh_.nInternalFaces();
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
 
-    // Swept volumes since the start of the step -> meshPhi
-    {
-        const pointField& oldPoints = mesh_.oldPoints();
-        const scalar rDeltaT = 1.0/runTime.deltaTValue();
-        surfaceScalarField& phi = const_cast<surfaceScalarField&>(mesh_.phi());
-        scalarField& phii = phi.primitiveFieldRef();
-        surfaceScalarField::Boundary& phibf = phi.boundaryFieldRef();
-        for (const label facei : faces_)
-        {
-            const scalar swept =
-                faces[facei].sweptVol(oldPoints, points)*rDeltaT;
-            if (facei < nInternal)
-            {
-                phii[facei] = swept;
-            }
-            else
-            {
-                const label patchi = pbm.whichPatch(facei);
-                if (phibf[patchi].size())
-                {
-                    phibf[patchi][facei - pbm[patchi].start()] = swept;
-                }
-            }
-        }
-    }
-
-    // Face centres and areas, |Sf|
+    // Per face of the band: the swept volume since the start of the step
+    // (face::sweptVol(oldPoints, points)) -> meshPhi, the face centre and
+    // area vector (primitiveMesh::makeFaceCentresAndAreas), |Sf|
+    const scalar rDeltaT = 1.0/runTime.deltaTValue();
+    surfaceScalarField& phi = const_cast<surfaceScalarField&>(mesh_.phi());
+    scalarField& phii = phi.primitiveFieldRef();
+    surfaceScalarField::Boundary& phibf = phi.boundaryFieldRef();
     vectorField& fCtrs = const_cast<vectorField&>(mesh_.faceCentres());
     vectorField& fAreas = const_cast<vectorField&>(mesh_.faceAreas());
-    for (const label facei : faces_)
+    surfaceScalarField& magSf =
+        const_cast<surfaceScalarField&>(mesh_.magSf());
+    scalarField& magSfi = magSf.primitiveFieldRef();
+    surfaceScalarField::Boundary& magSfbf = magSf.boundaryFieldRef();
+    forAll(faces_, i)
     {
-        faceCentreAndArea(faces[facei], points, fCtrs[facei], fAreas[facei]);
-    }
-    {
-        surfaceScalarField& magSf =
-            const_cast<surfaceScalarField&>(mesh_.magSf());
-        scalarField& magSfi = magSf.primitiveFieldRef();
-        surfaceScalarField::Boundary& magSfbf = magSf.boundaryFieldRef();
-        for (const label facei : faces_)
+        const label facei = faces_[i];
+        const face& f = faces[facei];
+        scalar sweptVol;
+        bandFaceGeometry::moveFace
+        (
+            f, oldPoints, points, oldCentres_[i],
+            newCentres_[i], sweptVol, fCtrs[facei], fAreas[facei]
+        );
+        const scalar swept = sweptVol*rDeltaT;
+        const scalar m = mag(fAreas[facei]) + VSMALL;
+        if (facei < nInternal)
         {
-            const scalar m = mag(fAreas[facei]) + VSMALL;
-            if (facei < nInternal)
+            phii[facei] = swept;
+            magSfi[facei] = m;
+        }
+        else
+        {
+            const label patchi = facePatch_[i];
+            const label pfi = facei - pbm[patchi].start();
+            if (phibf[patchi].size())
             {
-                magSfi[facei] = m;
+                phibf[patchi][pfi] = swept;
             }
-            else
+            if (magSfbf[patchi].size())
             {
-                const label patchi = pbm.whichPatch(facei);
-                if (magSfbf[patchi].size())
-                {
-                    magSfbf[patchi][facei - pbm[patchi].start()] = m;
-                }
+                magSfbf[patchi][pfi] = m;
             }
         }
     }
+    centresEvent_ = points.eventNo();
 
     // Cell centres and volumes: primitiveMesh::makeCellCentresAndVols per
     // cell, its owned faces first, then its neighbour faces
@@ -269,7 +245,6 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
     // Interpolation factors of the faces of the band's cells
     // (surfaceInterpolation::make*, fvPatch::delta and makeWeights)
     const vectorField& C = mesh_.cellCentres();
-    const surfaceScalarField& magSf = mesh_.magSf();
     interpolationFactors factors(mesh_);
     auto& [w, dc, nodc, corr] = factors;
     scalarField& wi = w.primitiveFieldRef();
@@ -280,8 +255,9 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
     surfaceScalarField::Boundary& dcbf = dc.boundaryFieldRef();
     surfaceScalarField::Boundary& nodcbf = nodc.boundaryFieldRef();
     surfaceVectorField::Boundary& corrbf = corr.boundaryFieldRef();
-    for (const label facei : interpFaces_)
+    forAll(interpFaces_, j)
     {
+        const label facei = interpFaces_[j];
         const vector& Sf = fAreas[facei];
         const vector& Cf = fCtrs[facei];
         if (facei < nInternal)
@@ -293,27 +269,29 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
             wi[facei] = SfdNei/(SfdOwn + SfdNei);
 
             const vector delta = C[n] - C[o];
-            dci[facei] = 1.0/mag(delta);
-            const vector unitArea = Sf/magSf[facei];
-            nodci[facei] = 1.0/max(unitArea & delta, 0.05*mag(delta));
+            const scalar magDelta = mag(delta);
+            dci[facei] = 1.0/magDelta;
+            const vector unitArea = Sf/magSfi[facei];
+            nodci[facei] = 1.0/max(unitArea & delta, 0.05*magDelta);
             corri[facei] = unitArea - delta*nodci[facei];
         }
         else
         {
-            const label patchi = pbm.whichPatch(facei);
-            if (!wbf[patchi].size() || pbm[patchi].coupled())
+            const label patchi = interpFacePatch_[j];
+            if (patchi < 0 || !wbf[patchi].size())
             {
                 // A processor patch's factors need the other side's
                 // geometry: updateProcessorFactors, after the exchange
                 continue;
             }
             const label i = facei - pbm[patchi].start();
-            const vector unitArea = Sf/magSf.boundaryField()[patchi][i];
+            const vector unitArea = Sf/magSfbf[patchi][i];
             const vector delta =
                 unitArea*(unitArea & (Cf - C[own[facei]]));
+            const scalar magDelta = mag(delta);
             wbf[patchi][i] = 1.0;
-            dcbf[patchi][i] = 1.0/mag(delta);
-            nodcbf[patchi][i] = 1.0/max(unitArea & delta, 0.05*mag(delta));
+            dcbf[patchi][i] = 1.0/magDelta;
+            nodcbf[patchi][i] = 1.0/max(unitArea & delta, 0.05*magDelta);
             corrbf[patchi][i] = Zero;
         }
     }
@@ -444,7 +422,9 @@ Foam::bandMeshMotion::bandMeshMotion
     whole_(false),
     deferFunctionObjects_(false),
     functionObjectsPending_(false),
-    timeIndex_(-1)
+    timeIndex_(-1),
+    oldCentresIndex_(-1),
+    centresEvent_(-1)
 {
     bitSet inBand(mesh.nPoints());
     inBand.set(movingPoints);
@@ -457,6 +437,7 @@ Foam::bandMeshMotion::bandMeshMotion
         bandFaces.set(pointFaces[pointi]);
     }
     faces_ = bandFaces.toc();
+    facePatch_ = patchOf(mesh, faces_);
 
     const labelList& own = mesh.faceOwner();
     const labelList& nei = mesh.faceNeighbour();
@@ -489,6 +470,15 @@ Foam::bandMeshMotion::bandMeshMotion
         cellsFaces.set(cells[celli]);
     }
     interpFaces_ = cellsFaces.toc();
+    interpFacePatch_ = patchOf(mesh, interpFaces_);
+    for (label& patchi : interpFacePatch_)
+    {
+        if (patchi >= 0 && mesh.boundaryMesh()[patchi].coupled())
+        {
+            // updateProcessorFactors (or the whole update) sets these
+            patchi = -1;
+        }
+    }
 
     // Processor patches: their interpolation factors use the other side's
     // cell centres, which the band of either side may move, so all of

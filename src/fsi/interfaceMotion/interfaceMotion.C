@@ -213,6 +213,16 @@ Foam::interfaceMotion::interfaceMotion
         slip.append(P[pointi]);
     }
     movingPoints_.transfer(moving);
+    radialMoving_.setSize(movingPoints_.size());
+    forAll(movingPoints_, i)
+    {
+        radialMoving_[i] = radial(points0_[movingPoints_[i]]);
+    }
+    radialPatch_.setSize(gp.size());
+    forAll(gp, k)
+    {
+        radialPatch_[k] = radial(gp[k]);
+    }
     stencil_.transfer(stencil);
     weights_.transfer(weights);
     slip_.transfer(slip);
@@ -245,7 +255,7 @@ Foam::tmp<Foam::pointField> Foam::interfaceMotion::newPoints
         forAll(gp, k)
         {
             const vector& d = patchDisplacement[k];
-            di[k] = vector(d & radial(gp[k]), d & axisDirection_, 0);
+            di[k] = vector(d & radialPatch_[k], d & axisDirection_, 0);
         }
     }
 
@@ -272,7 +282,7 @@ Foam::tmp<Foam::pointField> Foam::interfaceMotion::newPoints
         forAll(stencil_[i], j) d += weights_[i][j]*di[stencil_[i][j]];
         if (axi)
         {
-            d = d.x()*radial(points0_[pointi]) + d.y()*axisDirection_;
+            d = d.x()*radialMoving_[i] + d.y()*axisDirection_;
         }
         x[pointi] += (slip_[i] & d);
     }
