@@ -94,7 +94,7 @@ L, near, far, growth, wedgeDeg = 100e-6, 1e-6, 10e-6, 30e-6, 5.0
 SHORT = 20e-6   # [m] the water's top of the shortened quarters (height)
 NONORTHO_ROUNDED = 40  # [deg] cells above the cell, topRounding 6 (sharp: 46)
 NONORTHO_ORTHOGONAL = 25  # [deg] checkMesh's largest, oGrid orthogonal
-#                           (14.2 deg; straight rays 46.1 deg)
+#                           (14.9 deg; straight rays 46.1 deg)
 check = Checks()
 
 
