@@ -10,7 +10,9 @@ Per case, from a scratch copy (the case is not written to): checkMesh's
 largest and mean face non-orthogonality and largest skewness, then per
 cell its largest face non-orthogonality (checkMesh -writeFields
 nonOrthoAngle) and centre (postProcess writeCellCentres):
-  - the cell count in the bands 20-30, 30-40, 40 deg and more;
+  - the cell count in the bands 20-30, 30-40, 40 deg and more, and the
+    volume fraction (the water's mass fraction at rest) from 20, 30 and
+    40 deg on (postProcess writeCellVolumes);
   - the same over the cells whose centre is above the cell's top
     (z > 7.9 um), which the plane pulse crosses before it reaches the
     cell, and above 6 um, with their largest;
@@ -40,11 +42,13 @@ def quality(case):
         p = subprocess.run(["checkMesh", "-case", tmp, "-constant",
                             "-writeFields", "(nonOrthoAngle skewness)"], check=True,
                            capture_output=True, text=True)
-        subprocess.run(["postProcess", "-case", tmp, "-time", "0", "-func",
-                        "writeCellCentres"], check=True, capture_output=True)
+        subprocess.run(["postProcess", "-case", tmp, "-time", "0", "-funcs",
+                        "(writeCellCentres writeCellVolumes)"], check=True,
+                       capture_output=True)
         no = ff.internalField(os.path.join(tmp, "constant", "nonOrthoAngle"))
         sk = ff.internalField(os.path.join(tmp, "constant", "skewness"))
         C = ff.internalField(os.path.join(tmp, "0", "C"))
+        V = ff.internalField(os.path.join(tmp, "0", "V"))
     finally:
         shutil.rmtree(tmp)
     m = re.search(r"non-orthogonality Max: ([-+.eE\d]+) average: ([-+.eE\d]+)",
@@ -60,6 +64,9 @@ def quality(case):
                                                        (40, None)))
     print("   cells by their largest face non-orthogonality: %s"
           % bands(np.ones(len(no), bool)))
+    print("   volume (the water's mass at rest) in cells of 20 deg or more"
+          " %.2f %%, 30 deg or more %.2f %%, 40 deg or more %.2f %%"
+          % tuple(100*V[no >= lo].sum()/V.sum() for lo in (20, 30, 40)))
     for z in (H, 6e-6):
         s = C[:, 2] > z
         print("   above z = %.1f um (%d cells): largest %.1f deg; %s"

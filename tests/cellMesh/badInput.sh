@@ -163,6 +163,11 @@ expect hexTopRoundingHigh "$hx hexCoeffs { axialSize 2e-6; topRounding 101; }/" 
     "entry 'topRounding' = 101 is outside the valid range \[5, 100\]"
 expect hexTopRoundingWord "$hx hexCoeffs { axialSize 2e-6; topRounding round; }/" \
     "entry 'topRounding' = 'round' is not a number"
+# The O-grid's rays: straight or moved for orthogonality (branch seam3D)
+expect hexOGridWord "$hx hexCoeffs { axialSize 2e-6; oGrid round; }/" \
+    "entry 'oGrid' in 'fluid/hexCoeffs' = 'round' is not one of the valid values \(straight orthogonal\)"
+expect hexOGridNumber "$hx hexCoeffs { axialSize 2e-6; oGrid 1; }/" \
+    "entry 'oGrid' in 'fluid/hexCoeffs' = '1' is not one of the valid values \(straight orthogonal\)"
 expect hexBoxTooTight "$hx hexCoeffs { axialSize 1e-6; }/; s/^boxSize .*/boxSize 20e-6;/; s/^farSize .*/farSize 4e-6;/; s/growthDistance 30e-6/growthDistance 10e-6/" \
     "boxSize 2e-05 m leaves 1.6e-06 m between the cell and the box"
 expect hexTooManyCells "$hx hexCoeffs { axialSize 0.1e-6; maxCells 100000; }/" \

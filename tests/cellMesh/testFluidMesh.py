@@ -66,9 +66,15 @@ cells above the cell's top (checkMesh -writeFields nonOrthoAngle) below
 NONORTHO_ROUNDED (40 deg) and at least 5 deg below the sharp box's
 (46.1 deg), checkMesh's largest over the mesh not above the sharp box's
 (issue 17 item 6; docs/results/blast3D.md, "An O-grid without the kink").
+The mode quarter3DHexOrthogonal meshes quarter3DHexShort with straight
+rays and with hexCoeffs oGrid orthogonal: the checks above on both (with
+orthogonal the interface's nodes are not spread evenly: they slide on the
+cell), and checkMesh's largest non-orthogonality of the orthogonal mesh
+below NONORTHO_ORTHOGONAL (25 deg) with no water in cells of 40 deg or
+more (docs/results/blast3D.md, "An orthogonal O-grid").
 Usage: testFluidMesh.py axisymmetric|quarter3D|full3D|quarter3DColumn|
        quarter3DHex|full3DHex|quarter3DShort|quarter3DHexShort|
-       quarter3DHexRounded"""
+       quarter3DHexRounded|quarter3DHexOrthogonal"""
 import os
 import re
 import subprocess
@@ -87,6 +93,8 @@ a = D/2
 L, near, far, growth, wedgeDeg = 100e-6, 1e-6, 10e-6, 30e-6, 5.0
 SHORT = 20e-6   # [m] the water's top of the shortened quarters (height)
 NONORTHO_ROUNDED = 40  # [deg] cells above the cell, topRounding 6 (sharp: 46)
+NONORTHO_ORTHOGONAL = 25  # [deg] checkMesh's largest, oGrid orthogonal
+#                           (14.9 deg; straight rays 46.1 deg)
 check = Checks()
 
 
@@ -233,16 +241,21 @@ def hexVolumes(P):
     return J, V
 
 
-def hexWater(mode, rounding=None):
+def hexWater(mode, rounding=None, orthogonal=False):
     """The hexahedral water (fluid type hex); quarter3DHexShort: the
     quarter with its water ending at height Z = 20 um; rounding: the
-    hexCoeffs topRounding exponent (None: the sharp inner box). Returns
-    checkMesh's largest non-orthogonality [deg]"""
+    hexCoeffs topRounding exponent (None: the sharp inner box);
+    orthogonal: hexCoeffs oGrid orthogonal (the O-grid's nodes moved, so
+    the interface's even spread is not checked; everything else is).
+    Returns checkMesh's largest non-orthogonality [deg], the largest of
+    the cells above the cell's top [deg], and the volume fraction of the
+    water in cells with a face of 40 deg or more"""
     quarter = mode in ("quarter3DHex", "quarter3DHexShort")
     Z = SHORT if mode == "quarter3DHexShort" else L
     dz, dl, margin = 2e-6, 1.5e-6, 3e-6
     label = mode + ("" if rounding is None
-                    else f" (topRounding {rounding})")
+                    else f" (topRounding {rounding})") \
+        + (" (oGrid orthogonal)" if orthogonal else "")
     patches = ["top", "bottom", "sides", "cellInterface"] \
         + (["symmetryX", "symmetryY"] if quarter else [])
     with tempfile.TemporaryDirectory() as case:
@@ -250,6 +263,7 @@ def hexWater(mode, rounding=None):
                   f"type hex; hexCoeffs {{ axialSize {dz}; lateralSize {dl};"
                   f" innerMargin {margin};"
                   + ("" if rounding is None else f" topRounding {rounding};")
+                  + (" oGrid orthogonal;" if orthogonal else "")
                   + " }"
                   + (f" height {Z};" if Z < L else ""))
         X, elems = read2(os.path.join(case, "constant/fluid.msh"))
@@ -277,9 +291,11 @@ def hexWater(mode, rounding=None):
         xs = np.unique(np.round(Y[list(top), 0]/eps)*eps)
         corner = (abs(Y[:, 0] - L/2) < eps) & (abs(Y[:, 1] - L/2) < eps)
         zs = np.unique(np.round(Y[corner, 2]/eps)*eps)
-        xray = (abs(Y[:, 1]) < eps) & (abs(Y[:, 2]) < eps) \
-            & (Y[:, 0] > 0) & (Y[:, 0] < A + eps)
-        nLayers = int(xray.sum()) - 1
+        # The line y = z = 0 from the cell to the side wall: the O-grid's
+        # ray (its nodes below A) and the tensor grid's lines from A on
+        # (with oGrid orthogonal its nodes slide along it)
+        xray = (abs(Y[:, 1]) < eps) & (abs(Y[:, 2]) < eps) & (Y[:, 0] > 0)
+        nLayers = int(xray.sum()) - int((xs > A - eps).sum())
         x0 = 0 if quarter else -A
         inner = xs[(xs > x0 - eps) & (xs < A + eps)]
         nA, nB = len(inner) - 1, int((zs < B + eps).sum()) - 1
@@ -356,17 +372,19 @@ def hexWater(mode, rounding=None):
         gaps = np.diff(np.concatenate([phi, [] if quarter
                                        else [phi[0] + 2*np.pi]]))
         check(len(gaps) == (2 if quarter else 4)*nA
-              and np.ptp(gaps) < 1e-9*gaps.mean(),
+              and (orthogonal or np.ptp(gaps) < 1e-9*gaps.mean()),
               f"{label}: {len(gaps)} azimuth gaps of the interface on the"
               f" substrate from {gaps.min():.6f} to {gaps.max():.6f} rad"
-              " (equal to 1e-9)")
+              + ("" if orthogonal else " (equal to 1e-9)"))
         mer = c[(abs(c[:, 1]) < eps) & (c[:, 0] > 0)]
         mer = mer[np.argsort(mer[:, 2])][:nB + 1]
         chords = np.linalg.norm(np.diff(mer, axis=0), axis=1)
-        check(len(chords) == nB and np.ptp(chords) < 0.01*chords.mean(),
+        check(len(chords) == nB
+              and (orthogonal or np.ptp(chords) < 0.01*chords.mean()),
               f"{label}: {len(chords)} chords of the side face's line on the"
               f" cell from {chords.min()*1e6:.4f} to"
-              f" {chords.max()*1e6:.4f} um (equal to 1 %)")
+              f" {chords.max()*1e6:.4f} um"
+              + ("" if orthogonal else " (equal to 1 %)"))
         planes = [("bottom", 2)] + ([("symmetryX", 0), ("symmetryY", 1)]
                                     if quarter else [])
         for name, k in planes:
@@ -390,13 +408,17 @@ def hexWater(mode, rounding=None):
         # top (where the plane pulse crosses the O-grid first)
         p = sh("checkMesh -constant -writeFields '(nonOrthoAngle)'", case)
         os.makedirs(os.path.join(case, "0"), exist_ok=True)
-        q = sh("postProcess -time 0 -func writeCellCentres", case)
+        q = sh("postProcess -time 0 -funcs '(writeCellCentres"
+               " writeCellVolumes)'", case)
         check(p.returncode == 0 and q.returncode == 0,
-              f"{label}: checkMesh -writeFields, writeCellCentres")
+              f"{label}: checkMesh -writeFields, writeCellCentres,"
+              " writeCellVolumes")
         angle = ff.internalField(os.path.join(case, "constant",
                                               "nonOrthoAngle"))
         C = ff.internalField(os.path.join(case, "0", "C"))
-        return ortho, angle[C[:, 2] > H].max()
+        Vc = ff.internalField(os.path.join(case, "0", "V"))
+        return ortho, angle[C[:, 2] > H].max(), \
+            Vc[angle >= 40].sum()/Vc.sum()
 
 
 def roundedBox():
@@ -410,8 +432,8 @@ def roundedBox():
     (issue 17 item 6: the sharp box's top edges leave O-grid cells 40-48
     deg non-orthogonal there); checkMesh's largest over the whole mesh
     not above the sharp box's"""
-    sharp, sharpAbove = hexWater("quarter3DHexShort")
-    rounded, roundedAbove = hexWater("quarter3DHexShort", 6)
+    sharp, sharpAbove, _ = hexWater("quarter3DHexShort")
+    rounded, roundedAbove, _ = hexWater("quarter3DHexShort", 6)
     check(roundedAbove < NONORTHO_ROUNDED
           and roundedAbove <= sharpAbove - 5 and rounded <= sharp,
           f"rounded top edges: largest non-orthogonality above the cell"
@@ -420,12 +442,33 @@ def roundedBox():
           f" {rounded:.1f} deg (the sharp box's {sharp:.1f} deg)")
 
 
+def orthogonalBox():
+    """The short quarter (water to 20 um, as the tutorial's) with oGrid
+    orthogonal against the straight rays: every check of hexWater on
+    both (with orthogonal the interface's nodes need not be spread
+    evenly), checkMesh's largest non-orthogonality of the orthogonal
+    mesh below NONORTHO_ORTHOGONAL and no water in cells with a face of
+    40 deg or more (issue 17 item 6: the straight rays leave the front a
+    seam of cells 40-48 deg non-orthogonal; docs/results/blast3D.md, "An
+    orthogonal O-grid")"""
+    straight, _, straight40 = hexWater("quarter3DHexShort")
+    ortho, _, ortho40 = hexWater("quarter3DHexShort", orthogonal=True)
+    check(ortho < NONORTHO_ORTHOGONAL and ortho40 == 0,
+          f"oGrid orthogonal: largest non-orthogonality {ortho:.1f} deg"
+          f" (below {NONORTHO_ORTHOGONAL:g}; straight rays {straight:.1f}"
+          f" deg), water in cells of 40 deg or more {ortho40:.2%}"
+          f" (straight rays {straight40:.2%})")
+
+
 def main(mode):
     if mode == "quarter3DColumn":
         column()
         return
     if mode == "quarter3DHexRounded":
         roundedBox()
+        return
+    if mode == "quarter3DHexOrthogonal":
+        orthogonalBox()
         return
     if mode in ("quarter3DHex", "full3DHex", "quarter3DHexShort"):
         hexWater(mode)

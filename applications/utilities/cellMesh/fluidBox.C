@@ -293,13 +293,14 @@ void Foam::fluidBox::readHex(const dictionary& d)
     {
         FatalIOErrorInFunction(g_.fluidDict())
             << "type hex needs the sub-dictionary hexCoeffs (axialSize and "
-            << "the optional lateralSize, innerMargin, topRounding, maxCells)"
+            << "the optional lateralSize, innerMargin, topRounding, oGrid, "
+            << "maxCells)"
             << exit(FatalIOError);
     }
     foamTools::checkKeywords
     (
         d, {"axialSize", "lateralSize", "innerMargin", "topRounding",
-            "maxCells"}
+            "oGrid", "maxCells"}
     );
     const scalar a = g_.a(), H = g_.H();
     hexFluidMesh::sizes s;
@@ -371,6 +372,21 @@ void Foam::fluidBox::readHex(const dictionary& d)
         (
             d, "topRounding", "", 5, 100, true
         );
+    }
+    // The O-grid's rays straight (default), or the O-grid and the tensor
+    // grid around it moved for face orthogonality (hexFluidMesh::
+    // orthogonalise; docs/results/blast3D.md, "An orthogonal O-grid")
+    {
+        enum class oGridType { straight, orthogonal };
+        static const Enum<oGridType> oGridNames
+        ({
+            {oGridType::straight, "straight"},
+            {oGridType::orthogonal, "orthogonal"}
+        });
+        s.orthogonal = foamTools::readEnumOrDefault
+        (
+            oGridNames, d, "oGrid", oGridType::straight
+        ) == oGridType::orthogonal;
     }
     const label maxCells = foamTools::readInRangeOrDefault<label>
     (
@@ -756,6 +772,14 @@ void Foam::fluidBox::hexBox()
         << hex_->minRay() << " to "
         << hex_->maxRay() << " m in " << hex_->nLayers() << " layers "
         << "(growth ratio at most " << hexFluidMesh::maxRatio_ << ")" << nl;
+    if (hex_->input().orthogonal)
+    {
+        Info<< "Hexahedral water, oGrid orthogonal: largest face "
+            << "non-orthogonality " << hex_->nonOrthoBefore() << " deg with"
+            << " straight rays, " << hex_->nonOrthoAfter() << " deg after "
+            << hex_->sweeps() << " sweeps (cell centres the means of their"
+            << " nodes)" << nl;
+    }
     q.write(Info);
     if (!(w.minScaledJacobian > 0))
     {
@@ -810,6 +834,10 @@ void Foam::fluidBox::generate()
         {
             Info<< ", inner box's top edges rounded (superellipse exponent "
                 << hex_->input().topRounding << ")";
+        }
+        if (hex_->input().orthogonal)
+        {
+            Info<< ", O-grid moved for orthogonality";
         }
     }
     if (columnRadius_ > 0)

@@ -334,6 +334,34 @@ void Foam::hexFluidMesh::build()
     };
     const std::size_t none = std::size_t(-1);
 
+    // orthogonal: the coordinates a node may move in (bits 1 x, 2 y, 4 z)
+    // and the direction it may not move in (layer 1: its ray), per node.
+    // The planes a node lies on stay exact: the symmetry planes of the
+    // quarter (x or y = 0: that coordinate fixed), the substrate (z fixed);
+    // the water's top and side walls and the cell's surface do not move
+    std::vector<unsigned char> free;
+    std::vector<vec> normal;
+    const auto planeBits = [&](label i, label j, label k)
+    {
+        unsigned char b = 7;
+        if (s_.quarter && i == 0) b &= ~1u;
+        if (s_.quarter && j == 0) b &= ~2u;
+        if (k == 0) b &= ~4u;
+        return b;
+    };
+    const label D = smoothDepth_;
+    const auto tensorBits = [&](label i, label j, label k)
+    {
+        const bool wall =
+            k == nz - 1 || i == nx - 1 || j == nx - 1
+         || (!s_.quarter && (i == 0 || j == 0));
+        const bool near =
+            i >= i0_ - D && i <= i1_ + D && j >= i0_ - D && j <= i1_ + D
+         && k <= kB_ + D;
+        return (s_.orthogonal && near && !wall)
+            ? planeBits(i, j, k) : static_cast<unsigned char>(0);
+    };
+
     // Tensor nodes (those inside the inner box removed)
     std::vector<std::size_t> id(std::size_t(nx)*nx*nz, none);
     for (label k = 0; k < nz; ++k)
@@ -344,6 +372,8 @@ void Foam::hexFluidMesh::build()
         {
             id[t(i, j, k)] = nodes_.size();
             nodes_.push_back(rounded({x_[i], x_[j], z_[k]}));
+            free.push_back(tensorBits(i, j, k));
+            normal.push_back({0, 0, 0});
         }
     }
     std::vector<bool> onCell(nodes_.size(), false);
@@ -359,8 +389,8 @@ void Foam::hexFluidMesh::build()
         const vec P = nodes_[id[t(i, j, k)]];
         const vec S = surfacePoint(i, j, k);
         const vec d{P[0] - S[0], P[1] - S[1], P[2] - S[2]};
-        const std::vector<scalar> f =
-            layers(std::sqrt(d[0]*d[0] + d[1]*d[1] + d[2]*d[2]));
+        const scalar l = std::sqrt(d[0]*d[0] + d[1]*d[1] + d[2]*d[2]);
+        const std::vector<scalar> f = layers(l);
         ray[t(i, j, k)] = nodes_.size();
         for (label m = 0; m < nLayers_; ++m)
         {
@@ -369,6 +399,29 @@ void Foam::hexFluidMesh::build()
             nodes_.push_back
                 ({S[0] + f[m]*d[0], S[1] + f[m]*d[1], S[2] + f[m]*d[2]});
             onCell.push_back(m == 0);
+            // The nodes on the cell's surface slide on it (moved along
+            // its tangent plane, then projected back: bit 8); the first
+            // layer's outer nodes move only across their ray (its
+            // thickness, nearSize, stays)
+            free.push_back
+            (
+                s_.orthogonal
+              ? static_cast<unsigned char>(planeBits(i, j, k) | (m == 0 ? 8 : 0))
+              : static_cast<unsigned char>(0)
+            );
+            vec nv{0, 0, 0};
+            if (m == 0)
+            {
+                nv = {S[0]/sqr(s_.a), S[1]/sqr(s_.a), S[2]/sqr(s_.H)};
+                const scalar ln =
+                    std::sqrt(nv[0]*nv[0] + nv[1]*nv[1] + nv[2]*nv[2]);
+                for (scalar& c : nv) c /= ln;
+            }
+            else if (m == 1)
+            {
+                nv = {d[0]/l, d[1]/l, d[2]/l};
+            }
+            normal.push_back(nv);
         }
     }
     const auto layerNode = [&](std::size_t tn, label m)
@@ -439,7 +492,468 @@ void Foam::hexFluidMesh::build()
             << "Built " << label(hexes_.size()) << " hexahedra, estimated "
             << label(nCells()) << exit(FatalError);
     }
+    if (s_.orthogonal)
+    {
+        orthogonalise(free, normal);
+    }
     classifyBoundary(onCell);
+}
+
+
+void Foam::hexFluidMesh::orthogonalise
+(
+    const std::vector<unsigned char>& free,
+    const std::vector<vec>& normal
+)
+{
+    const std::size_t nNodes = nodes_.size(), nHex = hexes_.size();
+
+    // Interior faces: the owner's four nodes (outward from the owner, the
+    // gmsh hexahedron's faces as in classifyBoundary), owner, neighbour
+    const int hexFaces[6][4] =
+    {
+        {0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+        {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}
+    };
+    struct face { quad q; std::size_t own, nei; };
+    std::vector<face> faces;
+    {
+        std::map<quad, std::pair<std::size_t, quad>> seen;
+        for (std::size_t c = 0; c < nHex; ++c)
+        {
+            for (const auto& hf : hexFaces)
+            {
+                const quad q{hexes_[c][hf[0]], hexes_[c][hf[1]],
+                             hexes_[c][hf[2]], hexes_[c][hf[3]]};
+                quad k = q;
+                std::sort(k.begin(), k.end());
+                const auto it = seen.find(k);
+                if (it == seen.end())
+                {
+                    seen.emplace(k, std::make_pair(c, q));
+                }
+                else
+                {
+                    faces.push_back({it->second.second, it->second.first, c});
+                }
+            }
+        }
+    }
+
+    // Per node: its hexahedra; per hexahedron: its interior faces
+    std::vector<std::vector<std::size_t>> nodeHexes(nNodes), hexFacesOf(nHex);
+    for (std::size_t c = 0; c < nHex; ++c)
+    {
+        for (const std::size_t n : hexes_[c]) nodeHexes[n].push_back(c);
+    }
+    for (std::size_t f = 0; f < faces.size(); ++f)
+    {
+        hexFacesOf[faces[f].own].push_back(f);
+        hexFacesOf[faces[f].nei].push_back(f);
+    }
+
+    const auto centre = [&](std::size_t c)
+    {
+        vec C{0, 0, 0};
+        for (const std::size_t n : hexes_[c])
+        {
+            for (int a = 0; a < 3; ++a) C[a] += 0.125*nodes_[n][a];
+        }
+        return C;
+    };
+    // tan^4 of the face's non-orthogonality (GREAT if 90 deg or more)
+    const auto faceCost = [&](std::size_t f, scalar& cosine)
+    {
+        const quad& q = faces[f].q;
+        const vec& p0 = nodes_[q[0]];
+        const vec& p1 = nodes_[q[1]];
+        const vec& p2 = nodes_[q[2]];
+        const vec& p3 = nodes_[q[3]];
+        const vec a{p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]};
+        const vec b{p3[0] - p1[0], p3[1] - p1[1], p3[2] - p1[2]};
+        const vec n
+        {
+            a[1]*b[2] - a[2]*b[1], a[2]*b[0] - a[0]*b[2],
+            a[0]*b[1] - a[1]*b[0]
+        };
+        const vec Co = centre(faces[f].own), Cn = centre(faces[f].nei);
+        const vec d{Cn[0] - Co[0], Cn[1] - Co[1], Cn[2] - Co[2]};
+        const scalar nn = std::sqrt(n[0]*n[0] + n[1]*n[1] + n[2]*n[2]);
+        const scalar dd = std::sqrt(d[0]*d[0] + d[1]*d[1] + d[2]*d[2]);
+        cosine = (n[0]*d[0] + n[1]*d[1] + n[2]*d[2])/(nn*dd + VSMALL);
+        if (!(cosine > 1e-3))
+        {
+            return scalar(GREAT);
+        }
+        const scalar t2 = (1 - cosine*cosine)/(cosine*cosine);
+        return t2*t2;
+    };
+    // The smallest scaled Jacobian of the hexahedron's eight corners
+    // (each corner's three edges, in the gmsh hexahedron's right-handed
+    // order: positive for a valid cell)
+    const int corner[8][3] =
+    {
+        {1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7},
+        {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}
+    };
+    const auto scaledJacobian = [&](std::size_t c)
+    {
+        scalar m = GREAT;
+        for (int v = 0; v < 8; ++v)
+        {
+            const vec& o = nodes_[hexes_[c][v]];
+            vec e[3];
+            scalar len = 1;
+            for (int a = 0; a < 3; ++a)
+            {
+                const vec& p = nodes_[hexes_[c][corner[v][a]]];
+                e[a] = {p[0] - o[0], p[1] - o[1], p[2] - o[2]};
+                len *= std::sqrt
+                    (e[a][0]*e[a][0] + e[a][1]*e[a][1] + e[a][2]*e[a][2]);
+            }
+            const scalar J =
+                e[0][0]*(e[1][1]*e[2][2] - e[1][2]*e[2][1])
+              + e[0][1]*(e[1][2]*e[2][0] - e[1][0]*e[2][2])
+              + e[0][2]*(e[1][0]*e[2][1] - e[1][1]*e[2][0]);
+            m = std::min(m, J/(len + VSMALL));
+        }
+        return m;
+    };
+    // The shortest of the hexahedron's twelve edges
+    const int edges[12][2] =
+    {
+        {0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4},
+        {0, 4}, {1, 5}, {2, 6}, {3, 7}
+    };
+    const auto shortestEdge = [&](std::size_t c)
+    {
+        scalar m = GREAT;
+        for (const auto& e : edges)
+        {
+            const vec& p = nodes_[hexes_[c][e[0]]];
+            const vec& q = nodes_[hexes_[c][e[1]]];
+            m = std::min
+            (
+                m, sqr(p[0] - q[0]) + sqr(p[1] - q[1]) + sqr(p[2] - q[2])
+            );
+        }
+        return std::sqrt(m);
+    };
+    // The largest warp of the hexahedron's six faces: the distance of a
+    // face's nodes from the plane through their mean normal to its
+    // diagonals' cross product, over the shorter diagonal
+    const auto warp = [&](std::size_t c)
+    {
+        scalar m = 0;
+        for (const auto& hf : hexFaces)
+        {
+            const vec* p[4];
+            for (int k = 0; k < 4; ++k) p[k] = &nodes_[hexes_[c][hf[k]]];
+            const vec a{(*p[2])[0] - (*p[0])[0], (*p[2])[1] - (*p[0])[1],
+                        (*p[2])[2] - (*p[0])[2]};
+            const vec b{(*p[3])[0] - (*p[1])[0], (*p[3])[1] - (*p[1])[1],
+                        (*p[3])[2] - (*p[1])[2]};
+            vec n
+            {
+                a[1]*b[2] - a[2]*b[1], a[2]*b[0] - a[0]*b[2],
+                a[0]*b[1] - a[1]*b[0]
+            };
+            const scalar ln = std::sqrt(n[0]*n[0] + n[1]*n[1] + n[2]*n[2]);
+            const scalar dmin = std::sqrt(std::min
+            (
+                a[0]*a[0] + a[1]*a[1] + a[2]*a[2],
+                b[0]*b[0] + b[1]*b[1] + b[2]*b[2]
+            ));
+            // The signed distance of node 0 from the plane through the
+            // mean: all four are +-h for a quadrilateral
+            vec C{0, 0, 0};
+            for (int k = 0; k < 4; ++k)
+            {
+                for (int d = 0; d < 3; ++d) C[d] += 0.25*(*p[k])[d];
+            }
+            const scalar h = std::abs
+            (
+                ((*p[0])[0] - C[0])*n[0] + ((*p[0])[1] - C[1])*n[1]
+              + ((*p[0])[2] - C[2])*n[2]
+            )/(ln + VSMALL);
+            m = std::max(m, h/(dmin + VSMALL));
+        }
+        return m;
+    };
+    // addHex orients every hexahedron by its centre Jacobian; the corners
+    // of a moved one keep at least min(minScaledJacobian_, their own) and
+    // its edges at least minEdgeFraction_ of its shortest (a scaled
+    // Jacobian alone lets an edge shrink to nothing)
+    std::vector<scalar> jMin(nHex), eMin(nHex), wMax(nHex);
+    for (std::size_t c = 0; c < nHex; ++c)
+    {
+        jMin[c] = std::min(minScaledJacobian_, scaledJacobian(c));
+        eMin[c] = minEdgeFraction_*shortestEdge(c);
+        wMax[c] = std::max(maxWarp_, warp(c));
+    }
+
+    // The free nodes, their interior faces and their shortest edge
+    std::vector<std::size_t> freeNodes;
+    std::vector<std::vector<std::size_t>> nodeFaces(nNodes);
+    std::vector<scalar> step(nNodes, 0), stepMax(nNodes, 0);
+    for (std::size_t n = 0; n < nNodes; ++n)
+    {
+        if (!free[n]) continue;
+        freeNodes.push_back(n);
+        std::vector<std::size_t>& fs = nodeFaces[n];
+        scalar lmin = GREAT;
+        for (const std::size_t c : nodeHexes[n])
+        {
+            fs.insert(fs.end(), hexFacesOf[c].begin(), hexFacesOf[c].end());
+            for (const std::size_t m : hexes_[c])
+            {
+                if (m == n) continue;
+                const scalar l = std::sqrt
+                (
+                    sqr(nodes_[m][0] - nodes_[n][0])
+                  + sqr(nodes_[m][1] - nodes_[n][1])
+                  + sqr(nodes_[m][2] - nodes_[n][2])
+                );
+                lmin = std::min(lmin, l);
+            }
+        }
+        std::sort(fs.begin(), fs.end());
+        fs.erase(std::unique(fs.begin(), fs.end()), fs.end());
+        stepMax[n] = step[n] = 0.25*lmin;
+    }
+
+    const auto totalCost = [&](scalar& worst)
+    {
+        scalar sum = 0, cmin = 1, c;
+        for (std::size_t f = 0; f < faces.size(); ++f)
+        {
+            sum += faceCost(f, c);
+            cmin = std::min(cmin, c);
+        }
+        worst = std::acos(std::max(-1.0, std::min(1.0, cmin)))
+           *180/constant::mathematical::pi;
+        return sum;
+    };
+    // The node's faces, and its distance from where the straight rays
+    // put it (in its shortest edge's quarter, squared, times
+    // displacementWeight_: where a move gains almost nothing, the node
+    // stays, and the grid's spacing with it)
+    const std::vector<vec> start(nodes_);
+    // The node's edges (the other node, the length before)
+    std::vector<std::vector<std::pair<std::size_t, scalar>>> nodeEdges(nNodes);
+    for (const hex& h : hexes_)
+    {
+        for (const auto& e : edges)
+        {
+            const std::size_t p = h[e[0]], q = h[e[1]];
+            const scalar l = std::sqrt
+            (
+                sqr(nodes_[p][0] - nodes_[q][0])
+              + sqr(nodes_[p][1] - nodes_[q][1])
+              + sqr(nodes_[p][2] - nodes_[q][2])
+            );
+            if (free[p]) nodeEdges[p].push_back({q, l});
+            if (free[q]) nodeEdges[q].push_back({p, l});
+        }
+    }
+    for (auto& ne : nodeEdges)
+    {
+        std::sort(ne.begin(), ne.end());
+        ne.erase(std::unique(ne.begin(), ne.end()), ne.end());
+    }
+    const auto localCost = [&](std::size_t n)
+    {
+        scalar sum = 0, c;
+        for (const std::size_t f : nodeFaces[n]) sum += faceCost(f, c);
+        const vec& x = nodes_[n];
+        const vec& x0 = start[n];
+        for (const auto& e : nodeEdges[n])
+        {
+            const vec& y = nodes_[e.first];
+            const scalar l = std::sqrt
+                (sqr(x[0] - y[0]) + sqr(x[1] - y[1]) + sqr(x[2] - y[2]));
+            sum += lengthWeight_*sqr((l - e.second)/e.second);
+        }
+        return sum + displacementWeight_
+           *(sqr(x[0] - x0[0]) + sqr(x[1] - x0[1]) + sqr(x[2] - x0[2]))
+           /sqr(stepMax[n]);
+    };
+    const auto valid = [&](std::size_t n)
+    {
+        for (const std::size_t c : nodeHexes[n])
+        {
+            if
+            (
+               !(
+                    scaledJacobian(c) >= jMin[c]
+                 && shortestEdge(c) >= eMin[c] && warp(c) <= wMax[c]
+                )
+            )
+            {
+                return false;
+            }
+        }
+        return true;
+    };
+    // The move d with the fixed coordinates and the component along the
+    // node's normal removed
+    const auto constrain = [&](std::size_t n, vec& d)
+    {
+        const vec& nv = normal[n];
+        const scalar dn = d[0]*nv[0] + d[1]*nv[1] + d[2]*nv[2];
+        for (int a = 0; a < 3; ++a)
+        {
+            d[a] -= dn*nv[a];
+            if (!(free[n] & (1u << a))) d[a] = 0;
+        }
+    };
+
+    // The x <-> y mirror of every free node (the straight grid is
+    // symmetric under the swap to round-off): the two move together, so
+    // that the mesh stays symmetric (node by node in one order, the
+    // sweeps would not keep it: up to 0.27 um apart on the item-1
+    // quarter); a node on x = y is its own
+    std::vector<std::size_t> mirror(nNodes, nNodes);
+    {
+        const scalar tol = 1e-9*s_.L, bin = 1e3*tol;
+        typedef std::array<long long, 3> key;
+        const auto keyOf = [&](const vec& p)
+        {
+            return key
+            {
+                static_cast<long long>(std::floor(p[0]/bin)),
+                static_cast<long long>(std::floor(p[1]/bin)),
+                static_cast<long long>(std::floor(p[2]/bin))
+            };
+        };
+        std::map<key, std::vector<std::size_t>> bins;
+        for (std::size_t n = 0; n < nNodes; ++n)
+        {
+            bins[keyOf(nodes_[n])].push_back(n);
+        }
+        for (const std::size_t n : freeNodes)
+        {
+            const vec q{nodes_[n][1], nodes_[n][0], nodes_[n][2]};
+            const key k = keyOf(q);
+            for (long long a = -1; a <= 1; ++a)
+            for (long long b = -1; b <= 1; ++b)
+            for (long long c = -1; c <= 1; ++c)
+            {
+                const auto it = bins.find({k[0] + a, k[1] + b, k[2] + c});
+                if (it == bins.end()) continue;
+                for (const std::size_t m : it->second)
+                {
+                    if
+                    (
+                        std::abs(nodes_[m][0] - q[0]) < tol
+                     && std::abs(nodes_[m][1] - q[1]) < tol
+                     && std::abs(nodes_[m][2] - q[2]) < tol
+                    )
+                    {
+                        mirror[n] = m;
+                    }
+                }
+            }
+            if (mirror[n] == nNodes || !free[mirror[n]])
+            {
+                FatalErrorInFunction
+                    << "The node at (" << nodes_[n][0] << " " << nodes_[n][1]
+                    << " " << nodes_[n][2] << ") m has no free mirror node"
+                    << " across x = y" << exit(FatalError);
+            }
+        }
+    }
+
+    scalar cost = totalCost(nonOrthoBefore_);
+    for (sweeps_ = 0; sweeps_ < maxSweeps_; )
+    {
+        for (const std::size_t n : freeNodes)
+        {
+            const std::size_t m = mirror[n];
+            if (m < n) continue;    // moved with its mirror
+            const bool self = m == n;
+            vec& x = nodes_[n];
+            vec& y = nodes_[m];
+            const vec x0 = x, y0 = y;
+            const auto pairCost = [&]()
+            {
+                return self ? localCost(n) : localCost(n) + localCost(m);
+            };
+            const auto place = [&](const vec& p)
+            {
+                x = p;
+                if (!self) y = {p[1], p[0], p[2]};
+            };
+            const auto restore = [&]()
+            {
+                x = x0;
+                y = y0;
+            };
+            // On x = y the move stays on it
+            const auto diagonal = [&](vec& d)
+            {
+                if (self) d[0] = d[1] = 0.5*(d[0] + d[1]);
+            };
+            const scalar e0 = pairCost();
+            // Central differences of the local sum
+            const scalar h = 1e-4*stepMax[n];
+            vec g{0, 0, 0};
+            for (int a = 0; a < 3; ++a)
+            {
+                if (!(free[n] & (1u << a))) continue;
+                vec p = x0;
+                p[a] = x0[a] + h;
+                place(p);
+                const scalar ep = pairCost();
+                p[a] = x0[a] - h;
+                place(p);
+                const scalar em = pairCost();
+                restore();
+                g[a] = (ep - em)/(2*h);
+            }
+            constrain(n, g);
+            diagonal(g);
+            const scalar gn = std::sqrt(g[0]*g[0] + g[1]*g[1] + g[2]*g[2]);
+            if (!(gn > 0) || !std::isfinite(gn)) continue;
+            // Backtracking along -g from the node's last step
+            bool moved = false;
+            scalar alpha = step[n];
+            for (int tries = 0; tries < 8 && !moved; ++tries, alpha *= 0.5)
+            {
+                vec d{-alpha*g[0]/gn, -alpha*g[1]/gn, -alpha*g[2]/gn};
+                constrain(n, d);
+                diagonal(d);
+                vec p = x0;
+                for (int a = 0; a < 3; ++a)
+                {
+                    if (free[n] & (1u << a)) p[a] = x0[a] + d[a];
+                }
+                if (free[n] & 8u)
+                {
+                    // Back onto the spheroid (a scaling: zeros stay)
+                    p = project(p);
+                }
+                place(p);
+                if (pairCost() < e0 && valid(n) && (self || valid(m)))
+                {
+                    moved = true;
+                    step[n] = std::min(2*alpha, stepMax[n]);
+                }
+                else
+                {
+                    restore();
+                }
+            }
+            if (!moved) step[n] *= 0.5;
+        }
+        ++sweeps_;
+        scalar worst;
+        const scalar next = totalCost(worst);
+        const bool done = !(cost - next > smoothTol_*cost);
+        cost = next;
+        nonOrthoAfter_ = worst;
+        if (done) break;
+    }
 }
 
 
