@@ -221,8 +221,8 @@ Foam::indentationInput::indentationInput
                 << "the loading table would take at least "
                 << foamTools::countAboveText(total, maxSteps).c_str()
                 << " steps, more than entry 'maxSteps' = "
-                << foamTools::numberText(maxSteps).c_str()
-                << " of system/controlDict (default 1e+08): row "
+                << foamTools::countText(maxSteps).c_str()
+                << " of system/controlDict (default 100000000): row "
                 << worst + 1 << " of entry 'protocol' (" << row.motion.c_str()
                 << ") alone takes about "
                 << foamTools::countAboveText(worstSteps, 0).c_str()

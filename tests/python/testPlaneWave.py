@@ -327,6 +327,20 @@ class ColumnRefusesBeforeRunning(TempDirTestCase):
         with self.assertRaisesRegex(pw.PlaneWaveError, "above the limit"):
             pw.column(case, [50e-6], 100e-6, 1e-7, dz=50e-9, maxCells=1000)
 
+    def testTheLimitReachesTheColumnsRun(self):
+        """adv48b g49 (fix19e's change, tested by fix19f): the 1D run's
+        controlDict carries planeWave's -maxSteps (was: its default 1e8
+        refused a -maxSteps 1e15 run, naming an entry of the temporary
+        case); the count printed whole"""
+        for steps, text in ((1e14, "100000000000000"), (1e6, "1000000"),
+                            (12345, "12345")):
+            d = foamDict.parse(pw.columnControlDict(1e-7, 0.5, "(0 0 0)",
+                                                    steps))
+            self.assertEqual(d["maxSteps"], steps)
+            self.assertEqual(ranges.countText(steps), text)
+        self.assertEqual(ranges.countText(2.5), "2.5")
+        self.assertEqual(ranges.countText(1e15), "1e+15")
+
     def testTooManySteps(self):
         """the steps bounded like the cells (issue 19: planeWave -endTime 1
         ran about 1e11 steps without output): endTime/(maxCo dz/C0)"""
@@ -341,7 +355,8 @@ class ColumnRefusesBeforeRunning(TempDirTestCase):
                                1, places=3)
         with self.assertRaisesRegex(pw.PlaneWaveError,
                                     r"takes about 1.16e\+11 time steps .*"
-                                    r"c = 1450 m/s.*above the limit of 1e\+06"):
+                                    r"c = 1450 m/s.*above the limit of "
+                                    r"1000000 "):
             pw.column(case, [50e-6], 100e-6, 1.0, dz=25e-9)
         with self.assertRaisesRegex(pw.PlaneWaveError, r"limit of 1000 "):
             pw.column(case, [50e-6], 100e-6, 1e-7, dz=25e-9, maxSteps=1000)
@@ -834,7 +849,13 @@ class PlaneWaveInflowUtility(TempDirTestCase):
                 (["-inflow", "2e-6", "-Z", "1e-4"],
                  r"-Z 0.0001 m differs .*/0/p: boundaryField/top/"
                  r"columnHeight = 4e-06 m"),
-                (["-inflow", "2e-6", "-check"], "no -check")):
+                (["-inflow", "2e-6", "-check"], "no -check"),
+                # adv48b g49 (fix19e's change, tested by fix19f): -maxCells
+                # -1 was taken as a limit
+                (["-inflow", "2e-6", "-maxCells", "-1"], r"-maxCells -1 is "
+                 r"outside the valid range \[1, inf\)"),
+                (["-inflow", "2e-6", "-maxCells", "0"], r"-maxCells 0 is "
+                 r"outside the valid range \[1, inf\)")):
             r = self.run_(*args, "-dz", "50e-9", "-endTime", "3e-9")
             self.assertNotEqual(r.returncode, 0, args)
             self.assertRegex(r.stderr, "planeWave: error: .*" + msg)

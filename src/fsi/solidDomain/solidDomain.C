@@ -736,13 +736,24 @@ void Foam::solidDomain::setupProbes()
         (
             ip, "heightFraction", "-", 0, 1, false, false
         );
-        const word side(ip.getOrDefault<word>("side", "outer"));
-        if (side != "outer" && side != "inner")
+        // outer (the first of regions) or inner (the second), named with
+        // the file, the line and the closest word (adv48b g39)
+        const word side
+        (
+            foamTools::readOneOfOrDefault
+            (
+                ip, "side", {"outer", "inner"}, "outer"
+            )
+        );
+        // Two regions (adv48b g37: (nucleus nucleus) accepted, probe 0 on
+        // the nucleus and two probes of one name), as entry 'interfaces'
+        if (regions.first() == regions.second())
         {
             FatalIOErrorInFunction(ip)
-                << "interfaceProbe: side " << side << " unknown: outer (the"
-                << " first of regions, " << regions.first() << ") or inner ("
-                << regions.second() << ")" << exit(FatalIOError);
+                << "interfaceProbe: entry 'regions' = (" << regions.first()
+                << ' ' << regions.second() << "): a region paired with "
+                << "itself; give the two regions of the interface, outer "
+                << "first (e.g. (cytoplasm nucleus))" << exit(FatalIOError);
         }
         const point P(interfacePoint(regions.first(), regions.second(), f));
         Info<< "Solid: interface probe " << regions << " at "

@@ -600,6 +600,15 @@ def estimatedSteps(case, endTime, dz, maxCo=0.5):
     return endTime/(maxCo*dz/soundSpeedAtRest(case))
 
 
+def columnControlDict(endTime, maxCo, probes, maxSteps):
+    """The text of the 1D column's system/controlDict: its step limit is
+    planeWave's -maxSteps (adv48b g49: -maxSteps 1e15 accepted, then the 1D
+    run refused by its default maxSteps 1e8, an entry the user cannot
+    set)."""
+    return _CONTROL.format(end=endTime, co=maxCo, probes=probes,
+                           steps="%.17g" % maxSteps)
+
+
 def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
            maxCells=100000, scene=False, maxSteps=1e6, material=()):
     """Run the 1D column of <case> (water column of height Z [m]; the
@@ -636,10 +645,10 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
         raise PlaneWaveError(
             "a column to %g s in cells of %g m takes about %s time steps "
             "(end time / (maxCo %g x dz / c), c = %g m/s the sound speed at "
-            "rest), above the limit of %g (-maxSteps raises it; a shorter "
+            "rest), above the limit of %s (-maxSteps raises it; a shorter "
             "-endTime or a coarser -dz takes fewer)"
             % (endTime, dz, ranges.countAbove(steps, maxSteps), maxCo,
-               soundSpeedAtRest(case), maxSteps))
+               soundSpeedAtRest(case), ranges.countText(maxSteps)))
     n = int(round(Z/dz))
     if n < 1 or abs(n*dz - Z) > 1e-9*Z:
         raise PlaneWaveError("dz %g m does not divide the column height "
@@ -683,11 +692,7 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
             probes = " ".join("(%.17g %.17g %.17g)" % (0.5*dz, z, 0.5*dz)
                               for z in sampled)
             with open(os.path.join(work, "system", "controlDict"), "w") as f:
-                # the run's step limit is planeWave's -maxSteps (adv48b
-                # g49: -maxSteps 1e15 accepted, then the 1D run refused by
-                # its default maxSteps 1e8, an entry the user cannot set)
-                f.write(_CONTROL.format(end=endTime, co=maxCo, probes=probes,
-                                        steps="%.17g" % maxSteps))
+                f.write(columnControlDict(endTime, maxCo, probes, maxSteps))
             for field, cls in (("p", "volScalarField"),
                                ("T", "volScalarField"),
                                ("U", "volVectorField")):
