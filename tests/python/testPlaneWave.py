@@ -299,6 +299,23 @@ class Measures(unittest.TestCase):
         self.assertIsNone(r["plateau"])
         self.assertIsNone(pw.errors(s, r)["plateau"])
 
+    def testSceneCutIsMeasuredOverTheSpanBothCover(self):
+        """adv49b i43 (fix19f): a scene whose history ends early (a run
+        killed, or the reference's step past the end time) is measured with
+        the reference over the span both cover: the reference against
+        itself cut there has no error (was: the impulse and the 1-ns peak
+        of the cut scene compared with the whole reference's)"""
+        for cut in (42e-9, 45.1e-9, 48e-9):
+            n = int(np.searchsorted(self.t, cut))
+            s, r = pw.measures(self.t[:n], self.ref[:n], self.t, self.ref,
+                               5e7, 5e-9, self.z, c0=self.c)
+            e = pw.errors(s, r)
+            for k in ("peak1ns", "peakIncident", "plateau", "impulse"):
+                self.assertTrue(e[k] is None or e[k] == 0.0,
+                                "cut at %g s: %s error %s" % (cut, k, e[k]))
+            self.assertEqual(s["impulseWindow"], r["impulseWindow"])
+            self.assertLessEqual(s["impulseWindow"][1], self.t[n - 1])
+
     def testNoArrivalIsAnError(self):
         with self.assertRaisesRegex(pw.PlaneWaveError, "never reaches"):
             pw.measures(self.t, self.ref, self.t, 0*self.ref, 5e7, 5e-9,
