@@ -427,6 +427,17 @@ Foam::label Foam::solidDomain::restartStep(const Time& runTime)
             }
             FatalIOError << "): the solid's state cannot be restored.";
         }
+        else if (mag(it->second - t) <= tol)
+        {
+            // the step is the restart time's; the state's own time is not
+            // (adv49a j09 (h): "names the step ... at t = 2e-09 s, not the
+            // restart time 2e-09 s", two equal times contrasted)
+            FatalIOError
+                << ": its entry 'time' = " << tState << " s is not the "
+                << "restart time " << t << " s, which is the time of its "
+                << "h5Step " << k << " in " << h5 << ": the state was "
+                << "edited.";
+        }
         else
         {
             FatalIOError
