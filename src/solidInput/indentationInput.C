@@ -172,7 +172,11 @@ Foam::indentationInput::indentationInput
         label worst = -1;
         scalar worstSteps = 0;
         const auto& rows = protocol_->rows();
-        for (label i = 0; i < label(rows.size()) && total <= maxSteps; ++i)
+        // every row counted (a formula per row), so that the figure
+        // printed is the whole table's and accepted as the limit (adv49a
+        // j07, adv49b i33: the sum up to the row past the limit was
+        // printed, 3, then 13, 18, 23 as maxSteps was raised to each)
+        for (label i = 0; i < label(rows.size()); ++i)
         {
             const solid::ProtocolRow& row = rows[i];
             scalar n = 0;
@@ -218,11 +222,11 @@ Foam::indentationInput::indentationInput
         {
             const solid::ProtocolRow& row = rows[worst];
             FatalIOErrorInFunction(d)
-                << "the loading table would take at least "
+                << "the loading table would take about "
                 << foamTools::countAboveText(total, maxSteps).c_str()
                 << " steps, more than entry 'maxSteps' = "
-                << foamTools::numberText(maxSteps).c_str()
-                << " of system/controlDict (default 1e+08): row "
+                << foamTools::countText(maxSteps).c_str()
+                << " of system/controlDict (default 100000000): row "
                 << worst + 1 << " of entry 'protocol' (" << row.motion.c_str()
                 << ") alone takes about "
                 << foamTools::countAboveText(worstSteps, 0).c_str()

@@ -91,6 +91,19 @@ bool Foam::solidEntries::has(const std::string& key) const
 
 double Foam::solidEntries::real(const std::string& key) const
 {
+    // '-inf', '+1', '0x10': more than one token, as the readers of the
+    // other dictionaries say (adv48a h08: "'- inf' must be one value")
+    const entry* e = dict_.findEntry(key, keyType::LITERAL);
+    if (e && !e->isDict() && e->stream().size() > 1)
+    {
+        fail
+        (
+            key,
+            "is not a number (read as "
+          + std::to_string(e->stream().size()) + " tokens: write one number,"
+            " without a '+' sign or a prefix such as 0x)"
+        );
+    }
     if (!single(key).isNumber())
     {
         fail(key, "is not a number");

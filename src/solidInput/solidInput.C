@@ -11,6 +11,7 @@
 #include "GmshReader.H"
 #include "fileKind.H"
 #include "SolidError.H"
+#include "StringEntries.H"
 #include "keywordCheck.H"
 #include "inputChecks.H"
 #include "subDict.H"
@@ -47,6 +48,93 @@ std::vector<char> regionNodes
     }
     return in;
 }
+
+// The valid range of entry key of a material, "(0, 1e+13) Pa" ("" for no
+// entry of a material), by the reader's own checks: a valid material with
+// key not a number, read by solid::MaterialParameters::fromEntries, which
+// names the range of such an entry (the law's entries of a mieGruneisen
+// material, d0 of a quadratic one; a branch numbered as key, with the
+// branches before it)
+std::string materialRange(const std::string& key)
+{
+    std::map<std::string, std::string> e
+    {
+        {"rho0", "1000"}, {"C10", "1"}, {"volumetric", "mieGruneisen"},
+        {"C0", "1450"}, {"s", "1.99"}, {"Gamma0", "0.1"}, {"Cv", "4184"},
+        {"T0", "293.15"}
+    };
+    if (key == "d0")
+    {
+        e["volumetric"] = "quadratic";
+    }
+    const std::string::size_type digits = key.find_first_of("0123456789");
+    if (digits != std::string::npos && digits > 0)
+    {
+        const std::string prefix(key.substr(0, digits));
+        const int n = std::atoi(key.c_str() + digits);
+        if
+        (
+            (prefix != "mu" && prefix != "tau" && prefix != "eta")
+         || key.find_first_not_of("0123456789", digits) != std::string::npos
+         || n < 1 || n > 100
+        )
+        {
+            return std::string();
+        }
+        for (int i = 1; i <= n; ++i)
+        {
+            e["mu" + std::to_string(i)] = "1";
+            e[(i == n && prefix == "eta" ? "eta" : "tau")
+              + std::to_string(i)] = "1";
+        }
+    }
+    else if (!e.count(key) && key != "d0" && key != "b1" && key != "b2")
+    {
+        return std::string();
+    }
+    e[key] = "nan";
+    try
+    {
+        solid::MaterialParameters::fromEntries
+        (
+            "range", solid::StringEntries("range", e)
+        );
+    }
+    catch (const solid::SolidError& err)
+    {
+        const std::string what(err.what());
+        const std::string tag("; valid range ");
+        const std::string::size_type at = what.find(tag);
+        if (at != std::string::npos)
+        {
+            return what.substr(at + tag.size());
+        }
+    }
+    return std::string();
+}
+
+// The scan of the numbers' range of an entry of constant/solidProperties:
+// a material's (materials/<region>/<key>)
+std::string solidPropertiesRange
+(
+    const std::string& dictName,
+    const std::vector<std::string>& scope,
+    const std::string& key
+)
+{
+    if
+    (
+        dictName != "solidProperties" || scope.size() != 2
+     || scope[0] != "materials"
+    )
+    {
+        return std::string();
+    }
+    return materialRange(key);
+}
+
+const bool solidPropertiesRangeAdded =
+    Foam::foamTools::addScanRange(solidPropertiesRange);
 
 } // End anonymous namespace
 
@@ -353,7 +441,21 @@ std::vector<solid::MaterialParameters> Foam::solidInput::materials
         }
         catch (const solid::SolidError& err)
         {
-            FatalIOErrorInFunction(d) << err.what() << exit(FatalIOError);
+            // The file and line of the entry named when it is not the
+            // dictionary's own (a set of materials #include'd: adv48a h08
+            // named constant/solidProperties only)
+            const std::string what(err.what());
+            const std::string::size_type at = what.find("entry '");
+            const std::string::size_type end =
+                at == std::string::npos ? at : what.find('\'', at + 7);
+            const std::string given
+            (
+                end == std::string::npos
+              ? std::string()
+              : foamTools::givenIn(d, word(what.substr(at + 7, end - at - 7)))
+            );
+            FatalIOErrorInFunction(d)
+                << what.c_str() << given.c_str() << exit(FatalIOError);
         }
         Info<< "    " << region << ": C10 " << p.C10 << " Pa, d0 " << p.d0
             << " 1/Pa";

@@ -192,6 +192,22 @@ def bad_targets(work):
          "below the smallest magnitude OpenFOAM reads (1e-300): it would "
          "be read as 0; the entry's valid range is [1e-6, 10]: give a "
          "value in it", "relativeError 4.9e-324;"),
+        # adv48a h15 (fix19f): inf, nan and a number above the reader
+        # named with the entry's range (was "'relativeError' must be a
+        # number, not 'inf'"; 1e308 with the reader's limits only)
+        (PARAMS, peak % "0.3e-9", 1, "'relativeError' = inf is not a "
+         "number in the valid range [1e-6, 10]", "relativeError inf;"),
+        (PARAMS, peak % "0.3e-9", 1, "'relativeError' = nan is not a "
+         "number in the valid range [1e-6, 10]", "relativeError nan;"),
+        (PARAMS, peak % "0.3e-9", 1, "entry 'relativeError' = 1e308 is "
+         "beyond the range of a number (OpenFOAM reads |x| <= 1e+300; a "
+         "double holds |x| <= 1.79769e+308); the entry's valid range is "
+         "[1e-6, 10]: give a value in it", "relativeError 1e308;"),
+        (PARAMS, "    F { peak endB; value 1e309; }\n", 1,
+         "entry 'targets/F/value' = 1e309 N is beyond the range of a "
+         "number (OpenFOAM reads |x| <= 1e+300; a double holds |x| <= "
+         "1.79769e+308); the entry's valid range is [1e-15, 1e-3] N: give "
+         "a value in it"),
         # an entry whose reader holds no range: the generic words, no 0
         # advised as such
         (PARAMS.replace("value 1050", "value 1e-300"), peak % "0.3e-9", 1,

@@ -436,6 +436,56 @@ TEST(indentationInput, factorisationFigureAcceptedAsTheLimit)
 }
 
 
+TEST(indentationInput, stepFigureAcceptedAsTheLimit)
+{
+    // The loading table's step estimate printed is the whole table's, so
+    // that maxSteps set to it is accepted (adv49a j07, adv49b i33, fix19f:
+    // the sum up to the first row past the limit was printed, and maxSteps
+    // raised to it was refused again, row after row)
+    std::string figure;
+    {
+        foamUnit::testCase tc("indentationInput");
+        const std::string msg = ioError
+        (
+            [&]()
+            {
+                indentationInput
+                (
+                    indenterProperties(tc),
+                    controlDict(tc, "fieldWriteInterval 0.5; maxSteps 1;")
+                );
+            }
+        );
+        const std::string about("the loading table would take about ");
+        const auto at = msg.find(about);
+        ASSERT_NE(at, std::string::npos) << msg;
+        figure = msg.substr(at + about.size());
+        figure = figure.substr(0, figure.find(' '));
+        EXPECT_NE(msg.find("more than entry 'maxSteps' = 1 "),
+            std::string::npos) << msg;
+    }
+    foamUnit::testCase tc("indentationInput");
+    EXPECT_EQ
+    (
+        ioError
+        (
+            [&]()
+            {
+                indentationInput
+                (
+                    indenterProperties(tc),
+                    controlDict
+                    (
+                        tc, "fieldWriteInterval 0.5; maxSteps " + figure + ";"
+                    )
+                );
+            }
+        ),
+        ""
+    ) << "maxSteps " << figure;
+}
+
+
 TEST(indentationInput, sphereTooSmallForTheMesh)
 {
     // The block's top faces are 10/6 um wide; the Usage example's table

@@ -356,6 +356,81 @@ TEST(keywordCheck, numbersBeyondDouble)
             << c.first << ": " << msg;
         EXPECT_EQ(msg.find("give 0 or"), std::string::npos) << msg;
     }
+    // OpenFOAM's reader converts to a long double and compares with 1e-300
+    // before the cast: 1.0000000000000001e-300 is above and read (as the
+    // double 1e-300), 1e-300 itself is read as 0 (adv48b g64, fix19f: the
+    // first was refused as "below the smallest magnitude OpenFOAM reads
+    // (1e-300)"); the same at the top, 1e300
+    tc.writeFile
+    (
+        "constant/reader",
+        "a 1.0000000000000001e-300;\nb -1.0000000000000001e-300;\n"
+        "c 1e300;\n"
+    );
+    EXPECT_EQ
+    (
+        errorOf([&]{ foamTools::checkNumbers(tc.dir()/"constant/reader"); }),
+        ""
+    );
+    EXPECT_EQ(foamTools::outsideReaderRange("1.0000000000000001e-300"), 0);
+    EXPECT_EQ(foamTools::outsideReaderRange("1e-300"), -1);
+    EXPECT_EQ(foamTools::outsideReaderRange("1.00000000000000002e-300"), -1);
+    EXPECT_EQ(foamTools::outsideReaderRange("1e300"), 0);
+    EXPECT_EQ(foamTools::outsideReaderRange("1.0000000000000001e300"), 1);
+    EXPECT_EQ(foamTools::outsideReaderRange("1e400"), 1);
+
+    // A dictionary whose reader registers its ranges (addScanRange): the
+    // entry's range named, through includes, 0 advised only where the
+    // range holds it (adv48a h08, adv48b g64, fix19f: a material's entry
+    // named with the reader's limits only). Materials: solidInput.C;
+    // thermo: rhoEThermoModels.C
+    tc.writeFile("constant/membrane", "membrane { mu1 1e-310; }\n");
+    for
+    (
+        const auto& c
+      : std::vector<std::pair<std::pair<std::string, std::string>,
+                              std::string>>
+        {
+            {{"solidProperties", "materials { nucleus { d0 1e-310; } }"},
+             "entry 'd0' = 1e-310 1/Pa is below the smallest magnitude "
+             "OpenFOAM reads (1e-300): it would be read as 0; the entry's "
+             "valid range is [0, 1e-05) 1/Pa: give 0, or a value of "
+             "magnitude above 1e-300 in it"},
+            {{"solidProperties", "materials { #include \"membrane\" }"},
+             "entry 'mu1' = 1e-310 Pa is below the smallest magnitude "
+             "OpenFOAM reads (1e-300): it would be read as 0; the entry's "
+             "valid range is (0, 1e+13) Pa: give a value in it above "
+             "1e-300"},
+            {{"solidProperties", "materials { cytoplasm { tau2 1e400; } }"},
+             "entry 'tau2' = 1e400 s is beyond the range of a number"},
+            {{"solidProperties", "materials { cytoplasm { rho0 1e999; } }"},
+             "the entry's valid range is ["},
+            // not a material: the reader's limits
+            {{"solidProperties", "mesh { scale 1e-310; }"},
+             "entry 'scale' = 1e-310 is below the smallest magnitude "
+             "OpenFOAM reads (1e-300): it would be read as 0: give a value "
+             "with 1e-300 < |x| <= 1e+300"},
+            {{"thermophysicalProperties", "mieGruneisenCoeffs { C0 1e-310; }"},
+             "entry 'C0' = 1e-310 m/s is below the smallest magnitude "
+             "OpenFOAM reads (1e-300): it would be read as 0; the entry's "
+             "valid range is ("},
+            {{"thermophysicalProperties", "idealGasCoeffs { gamma 1e999; }"},
+             "entry 'gamma' = 1e999 is beyond the range of a number"}
+        }
+    )
+    {
+        tc.writeFile("constant/" + c.first.first, c.first.second + "\n");
+        const std::string msg = errorOf
+        (
+            [&]
+            {
+                foamTools::checkNumbers(tc.dir()/"constant"/c.first.first);
+            }
+        );
+        EXPECT_NE(msg.find(c.second), std::string::npos)
+            << c.first.second << ": " << msg;
+    }
+
     // another dictionary: the reader's limits, whatever the keyword
     tc.writeFile("constant/reader", "deltaT 1e-300;\n");
     const std::string other = errorOf

@@ -12,6 +12,7 @@ Description
 
 #include "writeGuard.H"
 #include "restartLogs.H"
+#include "inputRecord.H"
 #include "foamTestCase.H"
 
 #include <gtest/gtest.h>
@@ -351,4 +352,53 @@ TEST(writeGuard, replacedCaseDirectoryStopsTheRun)
     }
     EXPECT_FALSE(isDir(runTime.timePath()));
     rmDir(old);
+}
+
+
+// adv47b f63 (fix19e's change, tested by fix19f): the maps of a manual
+// decomposition are no input of the physics (a decomposition does not
+// change the results): constant/cellDecomposition and the manual method's
+// dataFile are not recorded, so that a serial run continued on ranks split
+// by hand is not refused as "constant/cellDecomposition (added)"; another
+// file of constant/ is
+TEST(writeGuard, decompositionMapsAreNoInputsOfTheRecord)
+{
+    foamUnit::testCase tc("inputRecordMaps");
+    const std::string header
+    (
+        "FoamFile { version 2.0; format ascii; class dictionary; }\n"
+    );
+    tc.writeFile("constant/cellDecomposition", "3(0 1 1)\n");
+    tc.writeFile("constant/ranksByHand", "3(1 0 0)\n");
+    tc.writeFile("constant/ranksOther", "3(1 1 0)\n");
+    tc.writeFile("constant/pulse", header + "amplitude 1e6;\n");
+    for
+    (
+        const std::string& method
+      : {
+            std::string("manualCoeffs { dataFile \"ranksByHand\"; }"),
+            std::string("coeffs { dataFile \"ranksByHand\"; }")
+        }
+    )
+    {
+        tc.writeFile
+        (
+            "system/decomposeParDict",
+            header + "numberOfSubdomains 2;\nmethod manual;\n" + method + "\n"
+        );
+        const foamTools::inputRecord record(tc.time());
+        const auto& digests = record.digests();
+        bool pulse = false;
+        for (const auto& d : digests)
+        {
+            EXPECT_EQ(d.first.find("cellDecomposition"), std::string::npos)
+                << method << ": " << d.first;
+            EXPECT_EQ(d.first.find("ranksByHand"), std::string::npos)
+                << method << ": " << d.first;
+            pulse = pulse || d.first.find("constant/pulse") == 0;
+        }
+        EXPECT_TRUE(pulse) << method << ": constant/pulse not recorded";
+        // a file of constant/ that no decomposition names is an input
+        EXPECT_TRUE(digests.count("constant/ranksOther")) << method;
+    }
 }

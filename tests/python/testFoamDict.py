@@ -210,6 +210,30 @@ class FoamDict(TempDirTestCase):
         self.assertEqual(foamDict.parse("a nan; b inf;"),
                          {"a": "nan", "b": "inf"})
 
+    def testOutsideTheReaderNamedByItsReader(self):
+        # belowReader: a number read as 0 or not read at all is left to the
+        # entry's reader, which names its range (adv47b f22; adv48a h15,
+        # fix19f: 1e308 was refused at once with the reader's limits)
+        d = foamDict.parse("a 1e-310; b 1e308; c (1 -1e309);", "x",
+                           belowReader=True)
+        self.assertFalse(d["a"].beyond())
+        self.assertTrue(d["b"].beyond())
+        self.assertTrue(d["c"][1].beyond())
+        self.assertEqual(
+            d["b"].problem("[1e-6, 10]"),
+            "x, line 1: entry 'b' = 1e308 is beyond the range of a number "
+            "(OpenFOAM reads |x| <= 1e+300; a double holds |x| <= "
+            "1.79769e+308); the entry's valid range is [1e-6, 10]: give a "
+            "value in it")
+        self.assertIn("give 0, or a value of magnitude above 1e-300 in it",
+                      d["a"].problem("[0, 1]"))
+        with self.assertRaisesRegex(
+                foamDict.DictError,
+                r"entry 'b' = 1e308 is beyond the range of a number .*: "
+                r"give a value with \|x\| <= 1e\+300 in the entry's valid "
+                r"range$"):
+            foamDict.refuseBelowReader(d, foamDict.DictError, keep=("a",))
+
     def testClosestKeyword(self):
         valid = ["scheme", "maxIter", "tolerance", "velocityScale"]
         self.assertEqual(foamDict.edit_distance("kitten", "sitting"), 3)

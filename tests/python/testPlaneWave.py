@@ -299,6 +299,23 @@ class Measures(unittest.TestCase):
         self.assertIsNone(r["plateau"])
         self.assertIsNone(pw.errors(s, r)["plateau"])
 
+    def testSceneCutIsMeasuredOverTheSpanBothCover(self):
+        """adv49b i43 (fix19f): a scene whose history ends early (a run
+        killed, or the reference's step past the end time) is measured with
+        the reference over the span both cover: the reference against
+        itself cut there has no error (was: the impulse and the 1-ns peak
+        of the cut scene compared with the whole reference's)"""
+        for cut in (42e-9, 45.1e-9, 48e-9):
+            n = int(np.searchsorted(self.t, cut))
+            s, r = pw.measures(self.t[:n], self.ref[:n], self.t, self.ref,
+                               5e7, 5e-9, self.z, c0=self.c)
+            e = pw.errors(s, r)
+            for k in ("peak1ns", "peakIncident", "plateau", "impulse"):
+                self.assertTrue(e[k] is None or e[k] == 0.0,
+                                "cut at %g s: %s error %s" % (cut, k, e[k]))
+            self.assertEqual(s["impulseWindow"], r["impulseWindow"])
+            self.assertLessEqual(s["impulseWindow"][1], self.t[n - 1])
+
     def testNoArrivalIsAnError(self):
         with self.assertRaisesRegex(pw.PlaneWaveError, "never reaches"):
             pw.measures(self.t, self.ref, self.t, 0*self.ref, 5e7, 5e-9,
@@ -327,6 +344,20 @@ class ColumnRefusesBeforeRunning(TempDirTestCase):
         with self.assertRaisesRegex(pw.PlaneWaveError, "above the limit"):
             pw.column(case, [50e-6], 100e-6, 1e-7, dz=50e-9, maxCells=1000)
 
+    def testTheLimitReachesTheColumnsRun(self):
+        """adv48b g49 (fix19e's change, tested by fix19f): the 1D run's
+        controlDict carries planeWave's -maxSteps (was: its default 1e8
+        refused a -maxSteps 1e15 run, naming an entry of the temporary
+        case); the count printed whole"""
+        for steps, text in ((1e14, "100000000000000"), (1e6, "1000000"),
+                            (12345, "12345")):
+            d = foamDict.parse(pw.columnControlDict(1e-7, 0.5, "(0 0 0)",
+                                                    steps))
+            self.assertEqual(d["maxSteps"], steps)
+            self.assertEqual(ranges.countText(steps), text)
+        self.assertEqual(ranges.countText(2.5), "2.5")
+        self.assertEqual(ranges.countText(1e15), "1e+15")
+
     def testTooManySteps(self):
         """the steps bounded like the cells (issue 19: planeWave -endTime 1
         ran about 1e11 steps without output): endTime/(maxCo dz/C0)"""
@@ -341,7 +372,8 @@ class ColumnRefusesBeforeRunning(TempDirTestCase):
                                1, places=3)
         with self.assertRaisesRegex(pw.PlaneWaveError,
                                     r"takes about 1.16e\+11 time steps .*"
-                                    r"c = 1450 m/s.*above the limit of 1e\+06"):
+                                    r"c = 1450 m/s.*above the limit of "
+                                    r"1000000 "):
             pw.column(case, [50e-6], 100e-6, 1.0, dz=25e-9)
         with self.assertRaisesRegex(pw.PlaneWaveError, r"limit of 1000 "):
             pw.column(case, [50e-6], 100e-6, 1e-7, dz=25e-9, maxSteps=1000)
@@ -834,7 +866,13 @@ class PlaneWaveInflowUtility(TempDirTestCase):
                 (["-inflow", "2e-6", "-Z", "1e-4"],
                  r"-Z 0.0001 m differs .*/0/p: boundaryField/top/"
                  r"columnHeight = 4e-06 m"),
-                (["-inflow", "2e-6", "-check"], "no -check")):
+                (["-inflow", "2e-6", "-check"], "no -check"),
+                # adv48b g49 (fix19e's change, tested by fix19f): -maxCells
+                # -1 was taken as a limit
+                (["-inflow", "2e-6", "-maxCells", "-1"], r"-maxCells -1 is "
+                 r"outside the valid range \[1, inf\)"),
+                (["-inflow", "2e-6", "-maxCells", "0"], r"-maxCells 0 is "
+                 r"outside the valid range \[1, inf\)")):
             r = self.run_(*args, "-dz", "50e-9", "-endTime", "3e-9")
             self.assertNotEqual(r.returncode, 0, args)
             self.assertRegex(r.stderr, "planeWave: error: .*" + msg)

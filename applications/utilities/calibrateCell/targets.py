@@ -212,13 +212,14 @@ class Targets:
                 return None
             if isinstance(v, foamDict.BelowReader):
                 raise TargetError(v.problem(interval, unit))
-            if isinstance(v, bool) or not isinstance(v, (int, float)):
-                raise TargetError("%s: '%s' must be a number, not '%s'"
-                                  % (at, key, v))
-            if not np.isfinite(v):
-                raise TargetError("%s: '%s' = %s is not finite (valid "
-                                  "range %s%s)" % (at, key, v, interval,
-                                                   unit))
+            # inf, nan, a word: named with the valid range (adv48a h15:
+            # "'relativeError' must be a number, not 'inf'")
+            if isinstance(v, bool) or not isinstance(v, (int, float)) \
+                    or not np.isfinite(v):
+                raise TargetError("%s: '%s' = %s is not a number in the "
+                                  "valid range %s%s"
+                                  % (at, key, foamDict.format_value(v),
+                                     interval, unit))
             if v not in ranges.Interval(interval):
                 raise TargetError("%s: '%s' = %g%s is outside the valid "
                                   "range %s%s" % (at, key, v, unit,

@@ -80,9 +80,14 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     );
     if (mode_ != meshMode::axisymmetric && !structured())
     {
+        // each entry's own file and line where another file gives it (an
+        // Allrun's cellMeshDict.allrun: adv49b i01 named cellMeshDict's
+        // lines only)
         FatalIOErrorInFunction(dict)
-            << "entry 'meshType' = " << meshTypeNames[meshType_] << " is not"
-            << " available in mode " << meshModeNames[mode_] << ": the 3D "
+            << "entry 'meshType' = " << meshTypeNames[meshType_]
+            << foamTools::givenIn(dict, "meshType").c_str() << " is not"
+            << " available in mode " << meshModeNames[mode_]
+            << foamTools::givenIn(dict, "mode").c_str() << ": the 3D "
             << "modes are structured only (valid value: structured; "
             << "unstructured is the axisymmetric mode's gmsh section)"
             << exit(FatalIOError);
@@ -285,10 +290,11 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
         }
     }
 
-    const label maxElements = foamTools::readInRangeOrDefault<label>
+    maxElements_ = foamTools::readInRangeOrDefault<label>
     (
         dict, "maxElements", "", 1, 1000000000, true, 1000000
     );
+    const label maxElements = maxElements_;
     if (minimumElements() > maxElements)
     {
         // 3 digits, or the least whole count when those would not read

@@ -373,7 +373,38 @@ void smoothingInfo(const Foam::structuredCell& cell)
         << "moving a node by at most " << cell.smoothLastMove() << " m" << nl;
 }
 
+
+// The structured mesh's element count against maxElements, before anything
+// is written: its blocks' counts couple across the regions (a fine
+// membrane refines the blocks beside it), so the bound checked from the
+// sizes before meshing can be far below it (adv49b i55: 3931
+// quadrilaterals written with maxElements 982, nothing said)
+void checkStructuredCount
+(
+    const Foam::cellGeometry& geom,
+    const std::size_t n,
+    const char* what
+)
+{
+    using namespace Foam;
+    if (label(n) <= geom.maxElements())
+    {
+        return;
+    }
+    FatalErrorInFunction
+        << "the structured mesh (meshType structured) has " << label(n)
+        << " " << what << ", more than maxElements " << geom.maxElements()
+        << ": its blocks' counts couple across the regions (a fine "
+        << "membraneSize refines the blocks beside the membrane), so the "
+        << "count from the sizes checked before meshing was lower "
+        << "(nucleusSize "
+        << geom.nucleusSize() << " m, cytoplasmSize " << geom.cytoplasmSize()
+        << " m, membraneSize " << geom.membraneSize() << " m)." << nl
+        << "    Nothing was written: larger sizes, or a larger maxElements "
+        << "if that many is meant" << exit(FatalError);
 }
+
+} // End anonymous namespace
 
 
 Foam::cellMesher::cellMesher(const cellGeometry& geom)
@@ -392,6 +423,7 @@ Foam::cellMesher::cellMesher(const cellGeometry& geom)
     else if (geom_.axisymmetric())
     {
         const structuredCell cell(geom_);
+        checkStructuredCount(geom_, cell.quads().size(), "quadrilaterals");
         cell.toGmsh(L_);
         Info<< "Structured r-z section (meshType structured): quadrilaterals "
             << cell.quads().size() << ", nodes " << cell.nodes().size()
@@ -419,6 +451,7 @@ Foam::cellMesher::cellMesher(const cellGeometry& geom)
     else
     {
         const structuredCell cell(geom_);
+        checkStructuredCount(geom_, cell.hexes().size(), "hexahedra");
         cell.toGmsh(L_);
         Info<< "Structured hexahedra: " << cell.hexes().size() << ", nodes "
             << cell.nodes().size() << "; boundary faces:";

@@ -9,6 +9,50 @@ using Foam::constant::mathematical::pi;
 namespace
 {
 
+// The elements of the structured mesh once the next block is added, n,
+// against maxElements: refused before the block is built (adv49b i03: a
+// quarter with azimuthSize 1e-8 built hexahedra for 900 s, 2 GB and
+// growing; i02, i55: counts above maxElements written). The blocks' counts
+// couple across the regions, so the bound from the sizes checked before
+// meshing (cellGeometry) can be far below them; the blocks built so far
+// and the next one are a lower bound of the whole
+void refuseAboveMaxElements
+(
+    const Foam::cellGeometry& geom,
+    const std::size_t n,
+    const char* what
+)
+{
+    using namespace Foam;
+    if (double(n) <= double(geom.maxElements()))
+    {
+        return;
+    }
+    FatalErrorInFunction
+        << "the structured mesh (meshType structured) has at least "
+        << double(n) << " " << what << " (the blocks built so far and the "
+        << "next one), more than maxElements " << geom.maxElements()
+        << ": its blocks' counts couple across the regions (a fine "
+        << "membraneSize or azimuthSize refines the blocks beside them), "
+        << "so the count from the sizes checked before meshing was lower "
+        << "(nucleusSize " << geom.nucleusSize() << " m, cytoplasmSize "
+        << geom.cytoplasmSize() << " m, membraneSize "
+        << geom.membraneSize() << " m";
+    if (!geom.axisymmetric())
+    {
+        FatalError << ", azimuthSize " << geom.azimuthSize() << " m";
+    }
+    FatalError
+        << ")." << nl << "    Nothing was written: larger sizes, or a "
+        << "larger maxElements if that many is meant" << exit(FatalError);
+}
+
+} // End anonymous namespace
+
+
+namespace
+{
+
 // Nodes closer than this are one node [m]
 const double mergeTol = 1e-12;
 
@@ -235,6 +279,10 @@ void Foam::structuredCell::revolve(const block2D& b, int region)
 {
     // Azimuth nodes: those of the butterfly's outer circle
     const label nPhi = quarter_ ? nSq_ : 4*nSq_;
+    refuseAboveMaxElements
+    (
+        g_, hexes_.size() + std::size_t(nPhi)*b.ni*b.nj, "hexahedra"
+    );
     std::vector<std::array<vec, 8>> h;
     for (label l = 0; l < nPhi; ++l)
     {
@@ -309,6 +357,16 @@ void Foam::structuredCell::column()
     // Vertical lines: every level interval
     const label k4 =
         nGapBottom_ + nRingBottom_ + nCoreV_ + nRingN_ + nGap_ + g_.layers();
+    // the disc's columns (a quarter of them in a quarter), before any is
+    // built
+    refuseAboveMaxElements
+    (
+        g_,
+        hexes_.size()
+      + std::size_t(k4)*(std::size_t(nSq_)*nSq_ + 4*std::size_t(nSq_)*nRing_)
+       /(quarter_ ? 4 : 1),
+        "hexahedra"
+    );
     for (const block2D& b : disc)
     {
         std::vector<std::vector<scalar>> z(b.p.size());
@@ -363,6 +421,10 @@ int Foam::structuredCell::levelRegion(label k) const
 
 void Foam::structuredCell::addQuads(const block2D& b, int region)
 {
+    refuseAboveMaxElements
+    (
+        g_, quads_.size() + std::size_t(b.ni)*b.nj, "quadrilaterals"
+    );
     std::vector<std::array<vec2, 4>> q;
     double sum = 0;
     for (label j = 0; j < b.nj; ++j)

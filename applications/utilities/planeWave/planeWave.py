@@ -287,6 +287,18 @@ def compare(case, a, p, skip, kinds):
         probes = [q for q in probes if q[0] not in outside]
     heights = sorted({z for _, z, _, _ in probes})
     end = a.endTime or max(t[-1] for _, _, t, _ in probes)
+    # a run whose logs end before its endTime (killed, or still going on)
+    # is named as such; -check compares a finished run only, or the run
+    # so far with -partial (adv49b i43: a run killed at 3.38 ns of 6 ns
+    # failed -check on windows its logs do not cover, not said)
+    cut = runCut(case, max(t[-1] for _, _, t, _ in probes))
+    if cut:
+        if a.check and not a.partial:
+            sys.exit("planeWave: -check: %s. Nothing compared: finish the "
+                     "run (restart it: startFrom latestTime) or give "
+                     "-partial to compare the run so far" % cut)
+        print("planeWave: %s: the measures are of the run so far (each "
+              "over the span both histories cover)" % cut)
 
     # each reference its own folder: the water column, the layered one on
     # the axis, on another line (-radius)
@@ -399,6 +411,29 @@ def compare(case, a, p, skip, kinds):
               "(arrival 0.3 ns, peaks and plateau 5 %%, impulse 3 %%)"
               % (" but " + ", ".join(k if c is None else c + ":" + k
                                      for c, k in skip) if skip else ""))
+
+
+def runCut(case, last):
+    """"" when the case's run reached its endTime (system/controlDict):
+    the probes' last time last [s] within a step of it (OpenFOAM ends a
+    run within half a step of endTime; a step at most maxDeltaT with
+    adjustTimeStep, else deltaT); else the words naming the cut."""
+    path = os.path.join(case, "system", "controlDict")
+    try:
+        d = foamDict.read(path)
+    except (OSError, foamDict.DictError):
+        return ""
+    endTime = d.get("endTime")
+    step = d.get("maxDeltaT") if d.get("adjustTimeStep") is True \
+        else d.get("deltaT")
+    if not all(isinstance(v, (int, float)) and not isinstance(v, bool)
+               and math.isfinite(v) for v in (endTime, step)):
+        return ""
+    if last >= endTime - step:
+        return ""
+    return ("the run's logs end at %.10g s, before its endTime %.10g s "
+            "(%s): the run was cut (killed) or is still going on"
+            % (last, endTime, path))
 
 
 def _time(path, d, key, hint=""):

@@ -91,6 +91,14 @@ public:
         return data;
     }
 
+    //- Whether the file holds item name (a group or dataset of the root)
+    bool has(const std::string& name) const
+    {
+        bool found = false;
+        guarded([&] { found = file_->has(name); });
+        return found;
+    }
+
     //- Step indices and times [s], in order
     List<Tuple2<label, scalar>> steps() const
     {
@@ -187,6 +195,19 @@ int main(int argc, char *argv[])
     }
 
     const h5File h5(h5Name);
+    // A checkpoint of cellIndentationFoam (restart.h5: the state to go on
+    // from, no mesh nor steps) is no results file: said as such (adv48b
+    // g52: "cannot open dataset /mesh/coordinates (missing?)")
+    if (!h5.has("mesh") && h5.has("model"))
+    {
+        FatalErrorInFunction
+            << h5Name.c_str() << " is a checkpoint (cellIndentationFoam's "
+            << "restart.h5: the state a restart continues from, without "
+            << "the mesh and the steps), not a results file of the solid "
+            << "solvers. Give the run's results file, solid.h5 beside it"
+            << " (postProcessing/indentation/solid.h5)." << nl
+            << "    Nothing was written." << exit(FatalError);
+    }
     const List<Tuple2<label, scalar>> steps = h5.steps();
 
     // The region's time directories of an earlier conversion that this

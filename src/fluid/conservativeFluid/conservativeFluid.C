@@ -320,12 +320,55 @@ void Foam::conservativeFluid::checkRestartState
                 why = "no state of the equation of state (" + reason + ")";
             }
         }
+        // The sound speed the first step computes with, finite and below
+        // the bound of every reader: a state inside the law's domain but
+        // of no fluid (rho 1e-290 kg/m^3 at 1e5 Pa, c ~ 1e147 m/s)
+        // trapped in the first step's face states (adv49a j03: sigFpe in
+        // eFromRhoP, exit 136)
+        if (bad < 0)
+        {
+            scalarField c(rho.size(), Zero);
+            thermo_->cFromRhoE(rho, e, c);
+            const scalar cMax = physicalBounds::soundSpeedMax;
+            forAll(c, celli)
+            {
+                if (!std::isfinite(c[celli]) || !(c[celli] < cMax))
+                {
+                    bad = celli;
+                    Ubad = rhoU[celli]/rho[celli];
+                    why = "the sound speed of the state, c = "
+                      + foamTools::numberText(c[celli]) + " m/s, is not finite "
+                        "or not below the bound of every reader "
+                        "(physicalBounds::soundSpeedMax, 1e+05 m/s): no "
+                        "fluid's state";
+                    break;
+                }
+            }
+        }
         std::feclearexcept(FE_ALL_EXCEPT);
         std::fesetenv(&env);
     }
-    if (bad < 0)
+    // Decided by every rank together (adv49b i23: the rank with the bad
+    // cell stopped, the others went on into the first exchange and died
+    // in MPI with MPI_ERR_TRUNCATE): each rank's verdict reduced; a rank
+    // whose cells are good stops too, naming the ranks that are not
+    bool anyBad = bad >= 0;
+    if (Pstream::parRun())
+    {
+        reduce(anyBad, orOp<bool>());
+    }
+    if (bad < 0 && !anyBad)
     {
         return;
+    }
+    if (bad < 0)
+    {
+        FatalErrorInFunction
+            << "the conservative state of the restart time "
+            << mesh_.time().timeName() << " s is no state of the fluid on "
+            << "another rank (its message names the cell and the files)."
+            << " Nothing was run: restart from an earlier time, or start "
+            << "anew" << exit(FatalError);
     }
     FatalErrorInFunction
         << "the conservative state of the restart time "

@@ -1010,13 +1010,13 @@ Foam::interfaceMap::interfaceMap
             << "nodal forces); the other load is pressure"
             << exit(FatalIOError);
     }
-    if (load_ != "mappedForces" && load_ != "pressure")
-    {
-        FatalIOErrorInFunction(dict)
-            << "load " << load_ << " is not valid: mappedForces (the map's "
-            << "conservative nodal forces) or pressure (the fluid pressure "
-            << "on the solid's faces)" << exit(FatalIOError);
-    }
+    // mappedForces (the map's conservative nodal forces) or pressure (the
+    // fluid pressure on the solid's faces), named with the file, the line
+    // and the closest word (adv48b g39)
+    load_ = foamTools::readOneOfOrDefault
+    (
+        dict, "load", {"mappedForces", "pressure"}, "mappedForces"
+    );
     if (load_ == "pressure")
     {
         // Solid faces without a quadrature point take the nearest face's

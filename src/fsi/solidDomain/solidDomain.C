@@ -427,6 +427,17 @@ Foam::label Foam::solidDomain::restartStep(const Time& runTime)
             }
             FatalIOError << "): the solid's state cannot be restored.";
         }
+        else if (mag(it->second - t) <= tol)
+        {
+            // the step is the restart time's; the state's own time is not
+            // (adv49a j09 (h): "names the step ... at t = 2e-09 s, not the
+            // restart time 2e-09 s", two equal times contrasted)
+            FatalIOError
+                << ": its entry 'time' = " << tState << " s is not the "
+                << "restart time " << t << " s, which is the time of its "
+                << "h5Step " << k << " in " << h5 << ": the state was "
+                << "edited.";
+        }
         else
         {
             FatalIOError
@@ -736,13 +747,24 @@ void Foam::solidDomain::setupProbes()
         (
             ip, "heightFraction", "-", 0, 1, false, false
         );
-        const word side(ip.getOrDefault<word>("side", "outer"));
-        if (side != "outer" && side != "inner")
+        // outer (the first of regions) or inner (the second), named with
+        // the file, the line and the closest word (adv48b g39)
+        const word side
+        (
+            foamTools::readOneOfOrDefault
+            (
+                ip, "side", {"outer", "inner"}, "outer"
+            )
+        );
+        // Two regions (adv48b g37: (nucleus nucleus) accepted, probe 0 on
+        // the nucleus and two probes of one name), as entry 'interfaces'
+        if (regions.first() == regions.second())
         {
             FatalIOErrorInFunction(ip)
-                << "interfaceProbe: side " << side << " unknown: outer (the"
-                << " first of regions, " << regions.first() << ") or inner ("
-                << regions.second() << ")" << exit(FatalIOError);
+                << "interfaceProbe: entry 'regions' = (" << regions.first()
+                << ' ' << regions.second() << "): a region paired with "
+                << "itself; give the two regions of the interface, outer "
+                << "first (e.g. (cytoplasm nucleus))" << exit(FatalIOError);
         }
         const point P(interfacePoint(regions.first(), regions.second(), f));
         Info<< "Solid: interface probe " << regions << " at "

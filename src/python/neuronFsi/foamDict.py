@@ -41,8 +41,9 @@ class DictError(Exception):
 
 class BelowReader(float):
     """A number of a dictionary that OpenFOAM's reader takes as 0: not zero
-    as written, of magnitude at most 1e-300 (4.9e-324, 1e-300, 1e-400).
-    Its value is 0.0, what the solvers would read; text is the number as
+    as written, of magnitude at most 1e-300 (4.9e-324, 1e-300, 1e-400), or
+    does not read: above 1e300 (1e308, 1e309; beyond()). Its value is 0.0
+    (what the solvers would read for the first); text is the number as
     written, where the file and line, entry the entry's path. Returned by
     parse (read, read_checked) with belowReader=True, for a reader that
     names the entry's own valid range (problem); refuseBelowReader refuses
@@ -65,7 +66,9 @@ class BelowReader(float):
         suggested only when the range holds it."""
         if not isinstance(interval, ranges.Interval):
             interval = ranges.Interval(interval)
-        if 0.0 in interval:
+        if self.beyond():
+            give = "give a value in it"
+        elif 0.0 in interval:
             give = "give 0, or a value of magnitude above 1e-300 in it"
         else:
             give = "give a value in it" + (
@@ -79,6 +82,11 @@ class BelowReader(float):
     def what(self):
         return "a value of the list" if self.entry is None \
             else "entry '%s'" % self.entry
+
+    def beyond(self):
+        """True for a number above the reader's largest magnitude (not
+        read), False for one it reads as 0."""
+        return not abs(float(self.text)) <= ranges.READER_LARGEST
 
 
 def belowReaderLeft(d, keep=()):
@@ -107,11 +115,13 @@ def refuseBelowReader(d, error, keep=()):
     left = belowReaderLeft(d, keep)
     if left:
         v = left[0]
-        raise error("%s: %s = %s %s: give a value with 1e-300 < |x| <= "
-                    "1e+300 in the entry's valid range (or 0, if the range "
-                    "holds 0)"
+        raise error("%s: %s = %s %s: %s"
                     % (v.where, v.what(), v.text,
-                       ranges.readerRangeProblem(v.text, float(v.text))))
+                       ranges.readerRangeProblem(v.text, float(v.text)),
+                       "give a value with |x| <= 1e+300 in the entry's "
+                       "valid range" if v.beyond() else
+                       "give a value with 1e-300 < |x| <= 1e+300 in the "
+                       "entry's valid range (or 0, if the range holds 0)"))
 
 
 
@@ -232,7 +242,10 @@ def parse(text, name="<text>", base=None, included=None, belowReader=False):
             return t            # a word, as OpenFOAM reads it
         why = ranges.readerRangeProblem(t, v) if not t.startswith('"') \
             else ""
-        if why and belowReader and abs(v) <= ranges.READER_SMALLEST:
+        # below the reader (read as 0) or beyond it (an error): named by
+        # the entry's reader with its range (adv48a h15: 1e308 named with
+        # the reader's limits only)
+        if why and belowReader:
             return BelowReader(t, "%s, line %d" % (name, _line(
                 text, toks[k][1])), entry[0])
         if why:

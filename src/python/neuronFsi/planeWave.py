@@ -600,6 +600,15 @@ def estimatedSteps(case, endTime, dz, maxCo=0.5):
     return endTime/(maxCo*dz/soundSpeedAtRest(case))
 
 
+def columnControlDict(endTime, maxCo, probes, maxSteps):
+    """The text of the 1D column's system/controlDict: its step limit is
+    planeWave's -maxSteps (adv48b g49: -maxSteps 1e15 accepted, then the 1D
+    run refused by its default maxSteps 1e8, an entry the user cannot
+    set)."""
+    return _CONTROL.format(end=endTime, co=maxCo, probes=probes,
+                           steps="%.17g" % maxSteps)
+
+
 def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
            maxCells=100000, scene=False, maxSteps=1e6, material=()):
     """Run the 1D column of <case> (water column of height Z [m]; the
@@ -636,10 +645,10 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
         raise PlaneWaveError(
             "a column to %g s in cells of %g m takes about %s time steps "
             "(end time / (maxCo %g x dz / c), c = %g m/s the sound speed at "
-            "rest), above the limit of %g (-maxSteps raises it; a shorter "
+            "rest), above the limit of %s (-maxSteps raises it; a shorter "
             "-endTime or a coarser -dz takes fewer)"
             % (endTime, dz, ranges.countAbove(steps, maxSteps), maxCo,
-               soundSpeedAtRest(case), maxSteps))
+               soundSpeedAtRest(case), ranges.countText(maxSteps)))
     n = int(round(Z/dz))
     if n < 1 or abs(n*dz - Z) > 1e-9*Z:
         raise PlaneWaveError("dz %g m does not divide the column height "
@@ -683,11 +692,7 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
             probes = " ".join("(%.17g %.17g %.17g)" % (0.5*dz, z, 0.5*dz)
                               for z in sampled)
             with open(os.path.join(work, "system", "controlDict"), "w") as f:
-                # the run's step limit is planeWave's -maxSteps (adv48b
-                # g49: -maxSteps 1e15 accepted, then the 1D run refused by
-                # its default maxSteps 1e8, an entry the user cannot set)
-                f.write(_CONTROL.format(end=endTime, co=maxCo, probes=probes,
-                                        steps="%.17g" % maxSteps))
+                f.write(columnControlDict(endTime, maxCo, probes, maxSteps))
             for field, cls in (("p", "volScalarField"),
                                ("T", "volScalarField"),
                                ("U", "volVectorField")):
@@ -1374,11 +1379,19 @@ def measures(t, p, tRef, pRef, amplitude, duration, z, c0=1450.0):
     plateau = (ta + 1e-9, ta + min(duration, echo) - 1e-9)
     passage = (ta - 2e-9, ta + duration + 2*z/c0 + 5e-9)
     incident = (ta, ta + min(duration, echo) - 0.5e-9)
+    # both over the span both cover: the scene's logs may end before the
+    # reference (a run cut, or the 1D column's step past the end time),
+    # and a window cut in one only compared two different quantities
+    # (adv49b i43: impulse -17.6 % of a run killed at 3.38 ns; a finished
+    # run's -5.6 % from the reference's extra step)
+    start, end = max(t[0], tRef[0]), min(t[-1], tRef[-1])
+    a, b = max(passage[0], start), min(passage[1], end)
     out = []
     for tt, pp in ((t, p), (tRef, pRef)):
         tc, mean = runningMean(tt, pp, 1e-9)
+        inSpan = (tc - 0.5e-9 >= start) & (tc + 0.5e-9 <= end)
+        mean, tc = mean[inSpan], tc[inSpan]
         inc = mean[(tc >= incident[0]) & (tc <= incident[1])]
-        a, b = max(passage[0], tt[0]), min(passage[1], tt[-1])
         out.append({
             "arrival": _crossing(tt, pp, 0.5*amplitude),
             "peak1ns": mean.max() if len(mean) else None,
@@ -1386,7 +1399,7 @@ def measures(t, p, tRef, pRef, amplitude, duration, z, c0=1450.0):
             "plateau": (_integral(tt, pp, *plateau)
                         /(plateau[1] - plateau[0])
                         if plateau[1] - plateau[0] >= 1e-9
-                        and plateau[1] <= tt[-1] else None),
+                        and plateau[1] <= end else None),
             "impulse": _integral(tt, pp, a, b),
             "impulseWindow": (a, b),
         })

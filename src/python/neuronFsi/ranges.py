@@ -73,6 +73,16 @@ def readerRangeProblem(token, v):
     return ""
 
 
+def countText(x):
+    """The text of a limit on a count (maxSteps): a whole number with all
+    its digits below 1e15 (1e6 as "1000000", not "1e+06"), else %g; the
+    words of foamTools::countText."""
+    if isinstance(x, (int, float)) and math.isfinite(x) \
+            and x == math.floor(x) and abs(x) < 1e15:
+        return "%d" % x
+    return "%g" % x
+
+
 def countAbove(x, limit):
     """The text of an estimated count x compared with the limit it exceeds:
     3 significant digits, or the least whole count (ceil) when those would

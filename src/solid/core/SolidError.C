@@ -22,7 +22,10 @@ void solid::checkParameter
         os  << context << ": entry '" << entry << "' = "
             << numberText::shortest(value) << " "
             << unit << " is outside the valid range "
-            << (loInclusive ? "[" : "(") << lo << ", " << hi << ")";
+            << (loInclusive ? "[" : "(") << lo << ", " << hi << ")"
+            // the unit after the range too (adv48a h08: "0 Pa is outside
+            // the valid range (0, 1e+13)"), none for a pure number ("-")
+            << (unit.empty() || unit == "-" ? "" : " " + unit);
         throw SolidError(SolidError::Kind::parameter, os.str());
     }
 }

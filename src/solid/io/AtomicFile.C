@@ -57,10 +57,20 @@ std::string solid::copyToTemporary(const std::string& file)
     {
         std::error_code ec;
         const auto size = std::filesystem::file_size(file, ec);
+        // A full file system said first: the library reports a copy cut
+        // short as "Input/output error", and its text repeats both paths,
+        // which put the note past what a reader of the first lines saw
+        // (adv48a, adv37 w29)
+        const std::string note(spaceNote(tmp, ec ? 0 : size));
         throw SolidError
         (
             SolidError::Kind::io, "cannot copy '" + file + "' to '" + tmp
-          + "': " + e.what() + spaceNote(tmp, ec ? 0 : size)
+          + "': "
+          + (
+                note.find(" bytes free") == std::string::npos
+              ? std::string(e.what()) + note
+              : "no space left on the file system" + note
+            )
         );
     }
     return tmp;

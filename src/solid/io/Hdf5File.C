@@ -25,6 +25,9 @@ hid_t openFile(const std::string& name, solid::Hdf5File::Mode mode)
           + std::string(mode == Mode::create ? "create" : "open")
           + " HDF5 file '" + name + "': it is " + kind + ", not a file"
           + (kind == "a directory" ? std::string()
+             : kind == "a device"
+             ? std::string(" (a device such as /dev/zero gives bytes without"
+                           " end or waits for input; adv48b g52)")
              : std::string(" (opening it would wait without end for the"
                            " other side)"))
         );

@@ -81,7 +81,22 @@ solid::MaterialParameters solid::MaterialParameters::fromEntries
             )
             {
                 const int n = std::atoi(key.c_str() + pre.size());
-                const double v = entries.real(key);
+                // not a number: refused below with its valid range, as
+                // the scalars (adv48a h08: mu1 inf "is not a number", no
+                // range nor unit)
+                double v = eos::outsideEveryRange();
+                try
+                {
+                    v = entries.real(key);
+                }
+                catch (const SolidError& err)
+                {
+                    if (notNumber.empty())
+                    {
+                        notNumber = key;
+                        notNumberWhy = err.what();
+                    }
+                }
                 if (n < 1)
                 {
                     throw SolidError
@@ -128,55 +143,76 @@ solid::MaterialParameters solid::MaterialParameters::fromEntries
     for (const auto& m : tau) ids.insert(m.first);
     for (const auto& m : eta) ids.insert(m.first);
     int expect = 1;
-    for (const int n : ids)
+    // A branch's check of an entry that is not a number (its value outside
+    // every range in its place) gives that entry's range
+    try
     {
-        const std::string sn = std::to_string(n);
-        if (n != expect++)
+        for (const int n : ids)
         {
-            throw SolidError
-            (
-                SolidError::Kind::parameter,
-                ctx + ": Maxwell branches must be numbered 1, 2, ... "
-                "without gaps (found branch " + sn + ")"
-            );
+            const std::string sn = std::to_string(n);
+            if (n != expect++)
+            {
+                throw SolidError
+                (
+                    SolidError::Kind::parameter,
+                    ctx + ": Maxwell branches must be numbered 1, 2, ... "
+                    "without gaps (found branch " + sn + ")"
+                );
+            }
+            if (!mu.count(n))
+            {
+                throw SolidError
+                (
+                    SolidError::Kind::parameter,
+                    ctx + ": entry 'mu" + sn + "' missing for branch " + sn
+                );
+            }
+            if (tau.count(n) == eta.count(n))
+            {
+                throw SolidError
+                (
+                    SolidError::Kind::parameter,
+                    ctx + ": give exactly one of 'tau" + sn + "' and 'eta" + sn
+                  + "' for branch " + sn
+                );
+            }
+            MaxwellBranch b;
+            b.mu = mu[n];
+            if (tau.count(n))
+            {
+                b.tau = tau[n];
+            }
+            else
+            {
+                checkParameter
+                (
+                    ctx, "eta" + sn, eta[n], 0, physicalBounds::viscosityMax,
+                    "Pa s"
+                );
+                checkParameter
+                (
+                    ctx, "mu" + sn, b.mu, 0, physicalBounds::modulusMax, "Pa"
+                );
+                b.tau = eta[n]/b.mu;
+            }
+            par.branches.push_back(b);
         }
-        if (!mu.count(n))
+    }
+    catch (const SolidError& err)
+    {
+        const std::string range
+        (
+            notNumber.empty()
+          ? std::string() : eos::validRangeOf(err.what(), notNumber)
+        );
+        if (range.empty())
         {
-            throw SolidError
-            (
-                SolidError::Kind::parameter,
-                ctx + ": entry 'mu" + sn + "' missing for branch " + sn
-            );
+            throw;
         }
-        if (tau.count(n) == eta.count(n))
-        {
-            throw SolidError
-            (
-                SolidError::Kind::parameter,
-                ctx + ": give exactly one of 'tau" + sn + "' and 'eta" + sn
-              + "' for branch " + sn
-            );
-        }
-        MaxwellBranch b;
-        b.mu = mu[n];
-        if (tau.count(n))
-        {
-            b.tau = tau[n];
-        }
-        else
-        {
-            checkParameter
-            (
-                ctx, "eta" + sn, eta[n], 0, physicalBounds::viscosityMax,
-                "Pa s"
-            );
-            checkParameter
-            (
-                ctx, "mu" + sn, b.mu, 0, physicalBounds::modulusMax, "Pa"
-            );
-            b.tau = eta[n]/b.mu;
-        }
-        par.branches.push_back(b);
+        throw SolidError
+        (
+            SolidError::Kind::parameter, notNumberWhy + "; valid range " + range
+        );
     }
     // The first entry that is not a number, with its valid range: the one
     // the law's check gives in its place (none for an entry the law does

@@ -50,32 +50,19 @@ Foam::couplingScheme::couplingScheme(const dictionary& dict)
     previousDeltaT_(0),
     startDeltaT_(0)
 {
-    const word action(dict.getOrDefault<word>("onNonConvergence", "warn"));
-    if (action == "stop")
-    {
-        stopOnNonConvergence_ = true;
-    }
-    else if (action != "warn")
-    {
-        FatalIOErrorInFunction(dict)
-            << "onNonConvergence " << action << " is not valid; valid:"
-            << " (warn stop)" << exit(FatalIOError);
-    }
-
-    const word predictor
-    (
-        dict.getOrDefault<word>("predictor", "centralDifference")
-    );
-    if (predictor == "extrapolated")
-    {
-        extrapolate_ = true;
-    }
-    else if (predictor != "centralDifference")
-    {
-        FatalIOErrorInFunction(dict)
-            << "predictor " << predictor << " is not valid; valid:"
-            << " (centralDifference extrapolated)" << exit(FatalIOError);
-    }
+    // Words named with the file, the line and the closest valid word
+    // (adv48b g39: "onNonConvergence Stop is not valid; valid: (warn stop)")
+    stopOnNonConvergence_ =
+        foamTools::readOneOfOrDefault
+        (
+            dict, "onNonConvergence", {"warn", "stop"}, "warn"
+        ) == "stop";
+    extrapolate_ =
+        foamTools::readOneOfOrDefault
+        (
+            dict, "predictor", {"centralDifference", "extrapolated"},
+            "centralDifference"
+        ) == "extrapolated";
 }
 
 
@@ -204,6 +191,14 @@ void Foam::couplingScheme::writeState(Ostream& os) const
         "couplingStatistics",
         labelList({nSteps_, nIterations_, maxIterUsed_, nNonConverged_})
     );
+    // The predictor that wrote the state: a state of the extrapolated
+    // predictor after a step holds its history, one of centralDifference
+    // none (readState tells a history lost from one never written)
+    os.writeEntry
+    (
+        "predictor",
+        word(extrapolate_ ? "extrapolated" : "centralDifference")
+    );
     if (extrapolate_ && !previousAcceleration_.empty())
     {
         os.writeEntry("previousAcceleration", previousAcceleration_);
@@ -227,12 +222,56 @@ void Foam::couplingScheme::readState(const dictionary& dict)
     maxIterUsed_ = s[2];
     nNonConverged_ = s[3];
 
-    // The extrapolated predictor's history (a state written with the
-    // centralDifference predictor has none: the first step after the
-    // restart takes centralDifference)
+    // The extrapolated predictor's history: its two entries together; a
+    // state of the extrapolated predictor after a step has them (lost:
+    // refused, also with -acceptEdited, a missing entry being no edited
+    // value); a state written with the centralDifference predictor (or by
+    // a build that did not say which) has none: the first step after the
+    // restart takes centralDifference, said (adv49b i11: the history
+    // missing was taken as none without a word; one entry missing was
+    // OpenFOAM's "Entry 'previousDeltaT' not found")
     previousAcceleration_.clear();
     previousDeltaT_ = 0;
-    if (extrapolate_ && dict.found("previousAcceleration"))
+    const bool hasA = dict.found("previousAcceleration");
+    const bool hasDt = dict.found("previousDeltaT");
+    if (hasA != hasDt)
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry '" << (hasA ? "previousDeltaT" : "previousAcceleration")
+            << "' is missing beside entry '"
+            << (hasA ? "previousAcceleration" : "previousDeltaT")
+            << "': the extrapolated predictor's history is written as both."
+            << " The state is damaged: restore the file, or restart from an"
+            << " earlier time" << exit(FatalIOError);
+    }
+    const word wrote(dict.getOrDefault<word>("predictor", word::null));
+    if (extrapolate_ && !hasA)
+    {
+        if (wrote == "extrapolated" && nSteps_ > 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "entries 'previousAcceleration' and 'previousDeltaT' are"
+                << " missing: the state was written with predictor "
+                << "extrapolated after " << nSteps_ << " steps, which writes"
+                << " them (the predictor's history). Without them the first"
+                << " step would take the centralDifference predictor and the"
+                << " results would differ from the run's: restore the file,"
+                << " or restart from an earlier time" << exit(FatalIOError);
+        }
+        WarningInFunction
+            << dict.name().c_str() << " holds no history of the "
+            << "extrapolated predictor (it was written with predictor "
+            << (
+                   wrote.empty()
+                 ? std::string("centralDifference, or by an earlier build")
+                 : std::string(wrote)
+               ).c_str()
+            << "): the first step after the restart takes the "
+            << "centralDifference predictor, so the results differ from "
+            << "those of an uninterrupted run with predictor extrapolated"
+            << nl << endl;
+    }
+    if (extrapolate_ && hasA)
     {
         previousAcceleration_ = dict.get<scalarField>("previousAcceleration");
         previousDeltaT_ = dict.get<scalar>("previousDeltaT");

@@ -38,7 +38,16 @@ Foam::autoPtr<Foam::couplingScheme> Foam::couplingScheme::New
             dict, "reuse", "", 0, foamTools::noUpperBound<label>(), true
         );
     }
-    const word name(dict.get<word>("scheme"));
+    // One of the schemes' names, named with the file, the line and the
+    // closest name (adv48b g39: OpenFOAM's "Unknown coupling scheme type
+    // Robin", neither)
+    const word name
+    (
+        foamTools::readOneOf
+        (
+            dict, "scheme", dictionaryConstructorTablePtr_->sortedToc()
+        )
+    );
 
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(name);
 

@@ -58,6 +58,88 @@ namespace
             << exit(FatalIOError);
     }
 
+    //- The valid range of coefficient key of Law ("" for another key):
+    //  the law's check of a value outside every range in its place, in a
+    //  valid set
+    template<class Law>
+    std::string lawRange
+    (
+        const std::string& key,
+        const std::vector
+        <
+            std::pair<const char*, double Law::Parameters::*>
+        >& fields
+    )
+    {
+        for (const auto& f : fields)
+        {
+            if (key != f.first)
+            {
+                continue;
+            }
+            typename Law::Parameters par;
+            par.*(f.second) = eos::outsideEveryRange();
+            try
+            {
+                Law law(par);
+            }
+            catch (const eos::ParameterError& err)
+            {
+                return eos::validRangeOf(err.what(), key);
+            }
+        }
+        return std::string();
+    }
+
+    //- The scan of the numbers' range of a coefficient of
+    //  constant/thermophysicalProperties (<law>Coeffs/<key>; adv48a h08:
+    //  the reader's limits only)
+    std::string thermoRange
+    (
+        const std::string& dictName,
+        const std::vector<std::string>& scope,
+        const std::string& key
+    )
+    {
+        if (dictName != "thermophysicalProperties" || scope.size() != 1)
+        {
+            return std::string();
+        }
+        typedef eos::MieGruneisen::Parameters mg;
+        typedef eos::StiffenedGas::Parameters sg;
+        typedef eos::IdealGas::Parameters ig;
+        if (scope[0] == word(eos::MieGruneisen::typeName) + "Coeffs")
+        {
+            return lawRange<eos::MieGruneisen>
+            (
+                key,
+                {
+                    {"rho0", &mg::rho0}, {"C0", &mg::C0}, {"s", &mg::s},
+                    {"Gamma0", &mg::Gamma0}, {"Cv", &mg::Cv},
+                    {"T0", &mg::T0}
+                }
+            );
+        }
+        if (scope[0] == word(eos::StiffenedGas::typeName) + "Coeffs")
+        {
+            return lawRange<eos::StiffenedGas>
+            (
+                key,
+                {{"gamma", &sg::gamma}, {"pInf", &sg::pInf}, {"Cv", &sg::Cv}}
+            );
+        }
+        if (scope[0] == word(eos::IdealGas::typeName) + "Coeffs")
+        {
+            return lawRange<eos::IdealGas>
+            (
+                key, {{"gamma", &ig::gamma}, {"Cv", &ig::Cv}}
+            );
+        }
+        return std::string();
+    }
+
+    const bool thermoRangeAdded = foamTools::addScanRange(thermoRange);
+
     //- Read a coefficient [SI], optionally preceded by its dimensions,
     //  which must then match dims (a FatalIOError naming the entry, not
     //  the abort of dimensioned<Type>::initialize); nothing after it
