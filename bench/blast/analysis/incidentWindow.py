@@ -3,7 +3,7 @@
 peakIncident) in a finished blast case, and when the echo from the
 substrate reaches the probe in the scene and in the 1D answer.
 
-    incidentWindow.py CASE [--level P] [--foot P]
+    incidentWindow.py CASE [--level P] [--foot P] [--series T0 T1 DT]
 
 Reads the case's probes (neuronFsi.planeWave.caseProbes) and the
 reference planeWave wrote (CASE/postProcessing/planeWave/0/reference.dat:
@@ -22,6 +22,8 @@ water probes at their heights), and prints per probe:
     reflection), scene and reference: the echo's arrival, and its
     difference [ns]; the same for --foot (default 55 MPa, a tenth of
     the way up): the echo's foot.
+With --series (times in ns): then p [MPa] of every probe, scene and
+reference, at T0, T0 + DT, ... T1 (the sample at or after each time).
 Not a check; docs/results/blast3D.md, "The 10 and 15 ns pulses at the
 item-1 setting".
 """
@@ -49,6 +51,7 @@ def main():
     ap.add_argument("case")
     ap.add_argument("--level", type=float, default=75e6)
     ap.add_argument("--foot", type=float, default=55e6)
+    ap.add_argument("--series", type=float, nargs=3, default=None)
     a = ap.parse_args()
     ref = pw.readReference(os.path.join(a.case, "postProcessing",
                                         "planeWave", "0", "reference.dat"))
@@ -59,6 +62,7 @@ def main():
           "peak1ns scene/ref [MPa] (err %%) at centres [ns] | "
           "echo at %g MPa, at %g MPa: scene/ref [ns] (diff)"
           % (a.level/1e6, a.foot/1e6))
+    series = []
     for name, z, t, p in pw.caseProbes(a.case):
         if name.startswith("solid "):
             m = ref.material.get(min(ref.material, key=lambda h: abs(h - z)))
@@ -99,6 +103,18 @@ def main():
                 "-" if es is None or er is None
                 else "%+.2f" % ((es - er)*1e9)))
         print("  ".join(row))
+        series.append((name.replace(" ", "_"), t, p, tr, pr))
+    if a.series:
+        t0, t1, dt = a.series
+        print("# t [ns]  " + "  ".join("%s scene/ref [MPa]" % s[0]
+                                       for s in series))
+        for tt in np.arange(t0, t1 + 0.5*dt, dt)*1e-9:
+            vals = []
+            for _, t, p, tr, pr in series:
+                i = min(np.searchsorted(t, tt), len(t) - 1)
+                j = min(np.searchsorted(tr, tt), len(tr) - 1)
+                vals.append("%.2f/%.2f" % (p[i]/1e6, pr[j]/1e6))
+            print("%.2f  " % (tt*1e9) + "  ".join(vals))
 
 
 if __name__ == "__main__":
