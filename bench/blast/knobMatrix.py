@@ -3,7 +3,8 @@
 (issue 17 item 5; not a test).
 
 Each knob variant of tutorials/blast/axisymmetricPreview at the Allrun's
-default sizes (x0.7 since 2026-12-04), for each pulse, to 150 ns:
+default sizes (G since branch def18, 2026-12-05; x0.7 from 2026-12-04), for
+each pulse, to 150 ns (or -endTime among the Allrun options):
 
   base          the tutorial as committed (hourglassViscosity 0.1,
                 shearViscosity 0.2 filtered, interface load pressure)

@@ -1,0 +1,121 @@
+#!/usr/bin/python3
+"""Where a probe's incident 1-ns peak is reached (planeWave's
+peakIncident) in a finished blast case, and when the echo from the
+substrate reaches the probe in the scene and in the 1D answer.
+
+    incidentWindow.py CASE [--level P] [--foot P] [--series T0 T1 DT]
+
+Reads the case's probes (neuronFsi.planeWave.caseProbes) and the
+reference planeWave wrote (CASE/postProcessing/planeWave/0/reference.dat:
+the solid probes against the 1D answer along their material paths, the
+water probes at their heights), and prints per probe:
+  - the incident window of planeWave.measures (1-ns window centres from
+    the reference's arrival ta to ta + min(T, 2 z/(1.1 c0)) - 0.5 ns) and
+    the scene's and the reference's largest 1-ns mean in it, with the
+    centre where the scene's is reached;
+  - the same with the window's last 0.5 ns left out (centres to
+    ta + min(T, echo) - 1 ns), for the diagnosis only;
+  - the whole-history 1-ns peak (planeWave's peak1ns), scene and
+    reference, and the centres where each is reached;
+  - the first time after ta + 2 ns at which p reaches --level (default
+    75 MPa: half way between the 50 MPa incident wave and its 104 MPa
+    reflection), scene and reference: the echo's arrival, and its
+    difference [ns]; the same for --foot (default 55 MPa, a tenth of
+    the way up): the echo's foot.
+With --series (times in ns): then p [MPa] of every probe, scene and
+reference, at T0, T0 + DT, ... T1 (the sample at or after each time).
+Not a check; docs/results/blast3D.md, "The 10 and 15 ns pulses at the
+item-1 setting".
+"""
+import argparse
+import os
+import sys
+
+import numpy as np
+
+from neuronFsi import planeWave as pw
+
+
+def firstAfter(t, p, t0, level):
+    k = np.flatnonzero((t >= t0) & (p >= level))
+    if not len(k):
+        return None
+    k = k[0]
+    if k == 0 or t[k - 1] < t0:
+        return t[k]
+    return t[k - 1] + (level - p[k - 1])*(t[k] - t[k - 1])/(p[k] - p[k - 1])
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("case")
+    ap.add_argument("--level", type=float, default=75e6)
+    ap.add_argument("--foot", type=float, default=55e6)
+    ap.add_argument("--series", type=float, nargs=3, default=None)
+    a = ap.parse_args()
+    ref = pw.readReference(os.path.join(a.case, "postProcessing",
+                                        "planeWave", "0", "reference.dat"))
+    amplitude, duration = pw.pulseShape(pw.appliedPressure(a.case))
+    c0 = 1450.0     # [m/s] planeWave.measures' default, as planeWave uses
+    print("# probe  z[um]  window[ns]  peakIncident scene/ref [MPa] (err %%) "
+          "at centre [ns] | window less 0.5 ns: scene/ref (err %%) | "
+          "peak1ns scene/ref [MPa] (err %%) at centres [ns] | "
+          "echo at %g MPa, at %g MPa: scene/ref [ns] (diff)"
+          % (a.level/1e6, a.foot/1e6))
+    series = []
+    for name, z, t, p in pw.caseProbes(a.case):
+        if name.startswith("solid "):
+            m = ref.material.get(min(ref.material, key=lambda h: abs(h - z)))
+            tr, pr = ref.t, m["p"]
+        else:
+            k = int(np.argmin(np.abs(np.asarray(ref.heights) - z)))
+            tr, pr = ref.t, ref.p[:, k]
+        ta = pw.arrival(tr, pr, amplitude)
+        echo = 2*z/(1.1*c0)
+        end = ta + min(duration, echo) - 0.5e-9
+        row = [name.replace(" ", "_"), "%.3f" % (z*1e6),
+               "%.2f-%.2f" % (ta*1e9, end*1e9)]
+        for e in (end, end - 0.5e-9):
+            vals = []
+            for tt, pp in ((t, p), (tr, pr)):
+                tc, mean = pw.runningMean(tt, pp, 1e-9)
+                sel = (tc >= ta) & (tc <= e)
+                i = np.argmax(np.where(sel, mean, -np.inf))
+                vals.append((mean[i], tc[i]))
+            err = 100*(vals[0][0]/vals[1][0] - 1)
+            row.append("%.2f/%.2f (%+.2f %%)%s" % (
+                vals[0][0]/1e6, vals[1][0]/1e6, err,
+                " at %.2f" % (vals[0][1]*1e9) if e == end else ""))
+        pk = []
+        for tt, pp in ((t, p), (tr, pr)):
+            tc, mean = pw.runningMean(tt, pp, 1e-9)
+            i = int(np.argmax(mean))
+            pk.append((mean[i], tc[i]))
+        row.append("%.2f/%.2f (%+.2f %%) at %.2f/%.2f" % (
+            pk[0][0]/1e6, pk[1][0]/1e6, 100*(pk[0][0]/pk[1][0] - 1),
+            pk[0][1]*1e9, pk[1][1]*1e9))
+        for level in (a.level, a.foot):
+            es = firstAfter(t, p, ta + 2e-9, level)
+            er = firstAfter(tr, pr, ta + 2e-9, level)
+            row.append("%s/%s (%s)" % (
+                "-" if es is None else "%.2f" % (es*1e9),
+                "-" if er is None else "%.2f" % (er*1e9),
+                "-" if es is None or er is None
+                else "%+.2f" % ((es - er)*1e9)))
+        print("  ".join(row))
+        series.append((name.replace(" ", "_"), t, p, tr, pr))
+    if a.series:
+        t0, t1, dt = a.series
+        print("# t [ns]  " + "  ".join("%s scene/ref [MPa]" % s[0]
+                                       for s in series))
+        for tt in np.arange(t0, t1 + 0.5*dt, dt)*1e-9:
+            vals = []
+            for _, t, p, tr, pr in series:
+                i = min(np.searchsorted(t, tt), len(t) - 1)
+                j = min(np.searchsorted(tr, tt), len(tr) - 1)
+                vals.append("%.2f/%.2f" % (p[i]/1e6, pr[j]/1e6))
+            print("%.2f  " % (tt*1e9) + "  ".join(vals))
+
+
+if __name__ == "__main__":
+    sys.exit(main())
