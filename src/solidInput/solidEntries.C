@@ -96,12 +96,15 @@ double Foam::solidEntries::real(const std::string& key) const
     const entry* e = dict_.findEntry(key, keyType::LITERAL);
     if (e && !e->isDict() && e->stream().size() > 1)
     {
+        const std::string n(std::to_string(e->stream().size()));
         fail
         (
             key,
-            "is not a number (read as "
-          + std::to_string(e->stream().size()) + " tokens: write one number,"
+            e->stream()[0].isPunctuation()
+          ? "is not a number (read as " + n + " tokens: write one number,"
             " without a '+' sign or a prefix such as 0x)"
+          : "must be one value (read as " + n + " tokens: write the number"
+            " alone, in SI units)"
         );
     }
     if (!single(key).isNumber())

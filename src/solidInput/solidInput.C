@@ -67,8 +67,10 @@ std::string materialRange(const std::string& key)
     {
         e["volumetric"] = "quadratic";
     }
+    const bool scalar =
+        e.count(key) || key == "d0" || key == "b1" || key == "b2";
     const std::string::size_type digits = key.find_first_of("0123456789");
-    if (digits != std::string::npos && digits > 0)
+    if (!scalar && digits != std::string::npos && digits > 0)
     {
         const std::string prefix(key.substr(0, digits));
         const int n = std::atoi(key.c_str() + digits);
@@ -88,7 +90,7 @@ std::string materialRange(const std::string& key)
               + std::to_string(i)] = "1";
         }
     }
-    else if (!e.count(key) && key != "d0" && key != "b1" && key != "b2")
+    else if (!scalar)
     {
         return std::string();
     }

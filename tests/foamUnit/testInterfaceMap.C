@@ -830,7 +830,13 @@ TEST(interfaceMap, badDictionariesNameTheEntry)
                 {"entry 'mapTolerance' = -0.1", "(0, inf)"}
             },
             badCase{"map", "nearest", {"map nearest is not valid"}},
-            badCase{"load", "traction", {"load traction is not valid"}},
+            // the valid words named (readOneOf, fix19f)
+            badCase
+            {
+                "load", "traction",
+                {"entry 'load'", "= 'traction' is not one of the valid "
+                 "values (mappedForces pressure)"}
+            },
             badCase
             {
                 "load", "projection",

@@ -264,8 +264,10 @@ TEST(keywordCheck, numbersBeyondDouble)
     (
         const std::string part
       : {
-            "entry 'mu1' = -1e400 is beyond the range of a number (OpenFOAM"
-            " reads |x| <= 1e+300; a double holds |x| <= 1.797",
+            // the material's range named (fix19f: its reader's scan range)
+            "entry 'mu1' = -1e400 Pa is beyond the range of a number "
+            "(OpenFOAM reads |x| <= 1e+300; a double holds |x| <= 1.797",
+            "the entry's valid range is (0, 1e+13) Pa: give a value in it",
             "constant/set"
         }
     )
@@ -394,7 +396,7 @@ TEST(keywordCheck, numbersBeyondDouble)
             {{"solidProperties", "materials { nucleus { d0 1e-310; } }"},
              "entry 'd0' = 1e-310 1/Pa is below the smallest magnitude "
              "OpenFOAM reads (1e-300): it would be read as 0; the entry's "
-             "valid range is [0, 1e-05) 1/Pa: give 0, or a value of "
+             "valid range is [0, 2000) 1/Pa: give 0, or a value of "
              "magnitude above 1e-300 in it"},
             {{"solidProperties", "materials { #include \"membrane\" }"},
              "entry 'mu1' = 1e-310 Pa is below the smallest magnitude "

@@ -394,6 +394,7 @@ void checkStructuredCount
     FatalErrorInFunction
         << "the structured mesh (meshType structured) has " << label(n)
         << " " << what << ", more than maxElements " << geom.maxElements()
+        << " (" << geom.file().c_str() << ")"
         << ": its blocks' counts couple across the regions (a fine "
         << "membraneSize refines the blocks beside the membrane), so the "
         << "count from the sizes checked before meshing was lower "

@@ -32,6 +32,7 @@ void refuseAboveMaxElements
         << "the structured mesh (meshType structured) has at least "
         << double(n) << " " << what << " (the blocks built so far and the "
         << "next one), more than maxElements " << geom.maxElements()
+        << " (" << geom.file().c_str() << ")"
         << ": its blocks' counts couple across the regions (a fine "
         << "membraneSize or azimuthSize refines the blocks beside them), "
         << "so the count from the sizes checked before meshing was lower "
