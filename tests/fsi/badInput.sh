@@ -25,7 +25,7 @@ run()
     fi
 }
 run "sed -i 's/^\( *scheme *\)robin;/\1secant;/' constant/fsiProperties" \
-    "Unknown coupling scheme type secant"
+    "entry 'scheme' in 'coupling' = 'secant' is not one of the valid values"
 run "sed -i 's/^\( *scheme *\)robin;/\1secant;/' constant/fsiProperties" \
     "IQNILS"
 run "sed -i 's/min         (50e-6/min         (60e-6/; s/max         (100e-6/max         (110e-6/' constant/solidProperties" \
@@ -54,5 +54,5 @@ nothingWritten "sed -i 's/^\( *maxIter *\)30;/\10;/' constant/fsiProperties" \
 nothingWritten "sed -i 's/^\( *tolerance *\)1e-6;/\1-1;/' constant/fsiProperties" \
     "entry 'tolerance' = -1 is outside the valid range"
 nothingWritten "sed -i 's/^\( *onNonConvergence *\)warn;/\1ignore;/' constant/fsiProperties" \
-    "onNonConvergence ignore is not valid"
+    "entry 'onNonConvergence' in 'coupling' = 'ignore' is not one of the valid values (warn stop)"
 exit $fail
