@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """mkTable.py DIR... (adv48a: adv47a's mkTable.py with my verdicts.txt; it calls adv47a's compare.py with ../../adv48a/out/DIR, which
-searches the earlier passes' outputs adv35-adv46b): the table of adv48a's outputs in out/DIR (several DIRs: one table over them). An output's verdict:
+searches the earlier passes' outputs adv35-adv46b; a later pass runs this file on its own folder: adv49a/mkTable.py): the table of adv48a's outputs in out/DIR (several DIRs: one table over them). An output's verdict:
 mine in verdicts.txt ("DIR PASS_ID | VERDICT | note"), else, if compare.py finds it equal to an earlier output, the
 earlier verdict: adv46a's verdictsZ.py if the equal output is adv46a's out/Z, else adv46b's verdictsP2.txt then verdictsP1.txt (adv46b cases), adv46a's verdicts.py, then adv46a's
 latestVerdict.py (the latest report adv35-adv45 with a row for it). -t: also list the outputs still to judge (TODO).
@@ -27,7 +27,7 @@ def prior(k, src=''):
     return r.split(' | ', 1)[1].strip() if ' | ' in r else '?'
 cnt = collections.defaultdict(collections.Counter); rows = []; left = []
 for d in args:
-    for l in subprocess.run(['/usr/bin/python3', os.path.join(a47, 'compare.py'), '../../adv48a/out/' + d], capture_output=True, text=True).stdout.splitlines():
+    for l in subprocess.run(['/usr/bin/python3', os.path.join(a47, 'compare.py'), '../../%s/out/%s' % (os.path.basename(here), d)], capture_output=True, text=True).stdout.splitlines():
         k = l.split()[0]
         if '(running)' in l or k.endswith(('.broken', '.firstTry')): continue
         if (d, k) in mine: v, n = mine[(d, k)]
