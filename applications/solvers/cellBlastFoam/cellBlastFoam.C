@@ -48,46 +48,13 @@ int main(int argc, char *argv[])
         " the explicit solid (cell under blast)."
     );
 
-    // OpenFOAM's -postProcess (postProcess.H) would write the function
-    // objects' logs of the run anew, without the lock or the results
-    // check (adv40 z01, z32, z34, z36): refused, naming the way out
-    foamTools::refusePostProcess(argc, argv);
-
-    #include "addCheckCaseOptions.H"
-    foamTools::resultGuard::addOption();
-    foamTools::writeGuard::addOption();      // -acceptEdited
-    #include "setRootCaseListOptions.H"
-    // setRootCase.H with checkCasePath before OpenFOAM checks the case
-    #include "setRootCaseChecked.H"
-    #include "setRootCaseListOutput.H"
-    foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
-    // -dry-run's simplified fluid mesh cannot be coupled (adv40 z02)
-    foamTools::refuseDryRun
-    (
-        args,
+    // -dry-run's simplified mesh: it cannot be coupled (adv40 z02)
+    const char* const dryRunReason =
         "the coupling of its interface patch to the solid's mesh cannot be"
-        " checked on it (the interface map would fail with a false reason)"
-    );
-    const foamTools::caseLock lock(args);    // one run per case
-    // A number beyond a double's range is a sigFpe inside OpenFOAM's
-    // tokenizer: every file of the case the run reads is scanned first,
-    // naming the file, the line and the entry
-    foamTools::checkNumbers(args);
-    // constant/polyMesh/boundary adding up to the faces of the mesh
-    foamTools::checkBoundaryFile(args);
-    // controlDict: OpenFOAM's keywords and ours, each given once
-    foamTools::checkControlDict
-    (
-        args,
-        {"adjustTimeStep", "maxCo", "maxDeltaT", "maxSteps", "maxWrites"}
-    );
-    foamTools::writeGuard::discardIncompleteTimes(args);
-    #include "createTime.H"
-    // The start time's name and the time its state was written at
-    foamTools::checkTimeName(runTime);
-    // The boundary conditions' tables (a pulse): not empty, times
-    // increasing, or an error naming file and patch
-    foamTools::checkTables(runTime.timePath());
+        " checked on it (the interface map would fail with a false reason)";
+    // -postProcess and -dry-run refused, options, case path and
+    // numbers checked, the case locked, then createTime.H
+    #include "createTimeChecked.H"
 
     // The number of steps, at least (before the mesh and the start
     // time's state are read: a start after endTime is named as such, was

@@ -50,49 +50,16 @@ int main(int argc, char *argv[])
         " state (Mie-Grueneisen water): HLLC/MUSCL/SSP Runge-Kutta."
     );
 
-    // OpenFOAM's -postProcess (postProcess.H) would write the function
-    // objects' logs of the run anew, without the lock or the results
-    // check (adv40 z01, z32, z34, z36): refused, naming the way out
-    foamTools::refusePostProcess(argc, argv);
-
-    #include "addCheckCaseOptions.H"
-    foamTools::resultGuard::addOption();
-    foamTools::writeGuard::addOption();      // -acceptEdited
-    #include "setRootCaseListOptions.H"
-    // setRootCase.H with checkCasePath before OpenFOAM checks the case
-    #include "setRootCaseChecked.H"
-    #include "setRootCaseListOutput.H"
-    foamTools::checkOptions(args);     // no nan, inf or 1e999 in options
-    // -dry-run's simplified mesh cannot read a written time's fields, and
-    // its end time is unbounded (adv40 z03)
-    foamTools::refuseDryRun
-    (
-        args,
+    // -dry-run's simplified mesh: a written time's fields cannot be read
+    // on it, and its end time is unbounded (adv40 z03)
+    const char* const dryRunReason =
         "the fields of a time a run wrote (their boundary values per face of"
         " the case's mesh) cannot be read on it, nor the run's step count"
         " checked (the mode sets an unbounded end time): it would fail with"
-        " a reason that is not the case's"
-    );
-    const foamTools::caseLock lock(args);    // one run per case
-    // A number beyond a double's range is a sigFpe inside OpenFOAM's
-    // tokenizer: every file of the case the run reads is scanned first,
-    // naming the file, the line and the entry
-    foamTools::checkNumbers(args);
-    // constant/polyMesh/boundary adding up to the faces of the mesh
-    foamTools::checkBoundaryFile(args);
-    // controlDict: OpenFOAM's keywords and ours, each given once
-    foamTools::checkControlDict
-    (
-        args,
-        {"adjustTimeStep", "maxCo", "maxDeltaT", "maxSteps", "maxWrites"}
-    );
-    foamTools::writeGuard::discardIncompleteTimes(args);
-    #include "createTime.H"
-    // The start time's name and the time its state was written at
-    foamTools::checkTimeName(runTime);
-    // The boundary conditions' tables (a pulse): not empty, times
-    // increasing, or an error naming file and patch
-    foamTools::checkTables(runTime.timePath());
+        " a reason that is not the case's";
+    // -postProcess and -dry-run refused, options, case path and
+    // numbers checked, the case locked, then createTime.H
+    #include "createTimeChecked.H"
     // the start time's fields (but p, U, T: the record names an edited
     // boundary condition) as the run wrote them, before they are read: a
     // damaged rho ended in a floating-point exception (adv47a f07)
