@@ -199,6 +199,77 @@ def pulseFile(T):
             "    }\n}\n" % (T, T + 1e-10))
 
 
+def obliqueCell(h=0.1*um):
+    """r-z quads of size h on [0, 4] x [0, 4] um: nucleus below the line
+    z = 2 um - r/2 (by centroid), cytoplasm above it; the interface is a
+    staircase along that line, normal (1, 2)/sqrt(5) outwards."""
+    n = int(round(4*um/h)) + 1
+    g = np.linspace(0, 4*um, n)
+    X = np.array([(r, z, 0) for z in g for r in g])
+    conn, region = [], []
+    for j in range(n - 1):
+        for i in range(n - 1):
+            a = j*n + i
+            conn.append((a, a + 1, a + n + 1, a + n))
+            r, z = g[i] + h/2, g[j] + h/2
+            region.append(0 if z < 2*um - r/2 else 1)
+    return X, np.array(conn), np.array(region)
+
+
+class InterfaceNormalProfile(TempDirTestCase):
+
+    def testObliqueInterface(self):
+        X, conn, region = obliqueCell()
+        exact = np.array([1.0, 2.0])/np.sqrt(5)
+        # the ray through (2, 1) um meets the line at (2, 1) um
+        p = paper.interfaceNormalProfile(X, conn, region, NAMES,
+                                         "cytoplasm-nucleus", (2, 1),
+                                         half=1*um, band=0.1*um)
+        self.assertLess(np.degrees(np.arccos(p["normal"] @ exact)), 5)
+        self.assertLess(np.linalg.norm(p["origin"] - np.array([2, 1])*um),
+                        0.15*um)
+        s, e = p["s"], p["elements"]
+        self.assertTrue(np.all(np.diff(s) >= 0))
+        self.assertTrue(np.all(np.abs(s) <= 1*um))
+        self.assertGreater(s.max(), 0.9*um)
+        self.assertLess(s.min(), -0.9*um)
+        # outer (cytoplasm) on the positive side, away from the staircase
+        far = np.abs(s) > 0.15*um
+        np.testing.assert_array_equal(region[e][far], (s[far] > 0)*1)
+        # every element within the band of the normal line
+        cen = X[conn[e], :2].mean(axis=1) - p["origin"]
+        t = np.array([p["normal"][1], -p["normal"][0]])
+        self.assertTrue(np.all(np.abs(cen @ t) <= 0.1*um + 1e-15))
+
+    def testPoints(self):
+        X, conn, region = obliqueCell()
+        mids, outs, ins = paper.interfaceSides(X, conn, region, NAMES,
+                                               "cytoplasm-nucleus")
+        self.assertTrue(np.all(region[outs] == 1))
+        self.assertTrue(np.all(region[ins] == 0))
+        top = mids[paper.interfacePoint(mids, "top")]
+        side = mids[paper.interfacePoint(mids, "side")]
+        self.assertLess(top[0], 0.1*um)           # at the axis
+        self.assertGreater(top[1], 1.9*um)
+        self.assertGreater(side[0], 3.8*um)       # farthest from the axis
+        self.assertLess(side[1], 0.1*um)
+        # the pole's normal is the line's, pointing up into the cytoplasm
+        p = paper.interfaceNormalProfile(X, conn, region, NAMES,
+                                         "cytoplasm-nucleus", "top")
+        self.assertGreater(p["normal"][1], 0.8)
+
+    def testRefused(self):
+        X, conn, region = obliqueCell()
+        with self.assertRaises(ValueError):
+            paper.interfaceSides(X, conn, region, NAMES, "membrane-cytoplasm")
+        with self.assertRaises(ValueError):
+            paper.interfacePoint(np.zeros((2, 2)), "bottom")
+        X3, conn3, region3 = cell3D()
+        with self.assertRaises(ValueError):
+            paper.interfaceSides(X3, conn3, region3, NAMES,
+                                 "cytoplasm-nucleus")
+
+
 class Command(TempDirTestCase):
     """The command on synthetic results of the six runs."""
 

@@ -237,3 +237,85 @@ def stageRates(rows):
 def relativeErrors(ours, reference):
     """|ours/reference - 1| per entry."""
     return np.abs(np.asarray(ours, float)/np.asarray(reference, float) - 1)
+
+
+def interfaceSides(X, conn, region, names, iface):
+    """The element sides shared by the two regions of iface
+    ("<outer>-<inner>", as interfaceJumps names them) of an r-z quad mesh:
+    (midpoints [n, 2] (r, z) [m], outer element [n], inner element [n])."""
+    outer, _, inner = iface.partition("-")
+    if conn.shape[1] != 4:
+        raise ValueError("interface profiles: r-z quads only (elements of "
+                         "%d nodes)" % conn.shape[1])
+    mids, outs, ins = [], [], []
+    for side, els in _sides(conn).items():
+        if len(els) != 2:
+            continue
+        a, b = els
+        if (names[region[a]], names[region[b]]) == (inner, outer):
+            a, b = b, a
+        if (names[region[a]], names[region[b]]) != (outer, inner):
+            continue
+        mids.append(X[list(side), :2].mean(axis=0))
+        outs.append(a)
+        ins.append(b)
+    if not mids:
+        raise ValueError("no interface %s in the mesh (regions %s)"
+                         % (iface, ", ".join(names)))
+    return np.array(mids), np.array(outs), np.array(ins)
+
+
+def interfacePoint(mids, where):
+    """The index of the interface side (midpoints [n, 2] (r, z)) at
+    where: "top" the side nearest the axis above the interface's
+    mid-height (the pole), "side" the side farthest from the axis (the
+    equator), or a direction (r, z) from the substrate's centre (0, 0):
+    the side nearest that ray (ahead of the origin)."""
+    if isinstance(where, str):
+        if where == "top":
+            z = mids[:, 1]
+            up = np.nonzero(z >= 0.5*(z.min() + z.max()))[0]
+            return int(up[np.argmin(mids[up, 0])])
+        if where == "side":
+            return int(np.argmax(mids[:, 0]))
+        raise ValueError("interface point '%s' (valid: top, side, or a "
+                         "direction (r, z))" % where)
+    d = np.asarray(where, float)[:2]
+    d = d/np.linalg.norm(d)
+    along = mids @ d
+    off = np.abs(mids[:, 0]*d[1] - mids[:, 1]*d[0])
+    off[along <= 0] = np.inf
+    return int(np.argmin(off))
+
+
+def interfaceNormalProfile(X, conn, region, names, iface, where,
+                           half=1.5e-6, band=0.2e-6, fit=0.6e-6):
+    """The elements along the normal of interface iface ("<outer>-<inner>")
+    at the point where (interfacePoint) of an r-z quad mesh with nodes at X
+    [m] (current or reference): the normal is that of the straight line
+    fitted (principal axis) to the midpoints of the interface's sides
+    within fit [m] of the point's side, pointing into the outer region.
+    Every element whose centroid lies within band [m] of the normal line
+    and within half [m] of the interface along it. Returns a dict:
+    elements (sorted by s), s (signed distance along the normal [m],
+    positive in the outer region), origin (r, z) [m], normal (r, z)."""
+    mids, outs, ins = interfaceSides(X, conn, region, names, iface)
+    k = interfacePoint(mids, where)
+    o = mids[k]
+    near = mids[np.linalg.norm(mids - o, axis=1) <= fit]
+    if len(near) >= 2:
+        c = near - near.mean(axis=0)
+        t = np.linalg.svd(c, full_matrices=False)[2][0]
+    else:
+        raise ValueError("interface %s: fewer than two sides within %g m of "
+                         "the point (r, z) = (%g, %g) m" % (iface, fit,
+                                                            o[0], o[1]))
+    n = np.array([-t[1], t[0]])
+    cen = X[conn, :2].mean(axis=1)
+    if (cen[outs[k]] - o) @ n < 0:
+        n = -n
+    s = (cen - o) @ n
+    off = np.abs((cen - o) @ np.array([n[1], -n[0]]))
+    sel = np.nonzero((np.abs(s) <= half) & (off <= band))[0]
+    sel = sel[np.argsort(s[sel])]
+    return {"elements": sel, "s": s[sel], "origin": o, "normal": n}
