@@ -19,6 +19,9 @@ Description
 
 #include "riemannFlux.H"
 #include "HLLC.H"
+#include "HLL.H"
+#include "rusanov.H"
+#include "wallFvPatch.H"
 #include "MUSCLReconstruction.H"
 #include "rhoEThermo.H"
 #include "zeroGradientFvPatchFields.H"
@@ -107,62 +110,323 @@ struct fluxFields
     {}
 };
 
+//- A mesh of 5 x 4 x 2 skewed cells of the fluid, a non-uniform state
+//  (compression waves and shear), its wall moved at face speeds up to
+//  about 20 m/s; the other patches of type patch (zeroGradient)
+struct movingWallCase
+{
+    foamUnit::testCase tc;
+    autoPtr<fvMesh> meshPtr;
+    autoPtr<rhoEThermo> thermo;
+    autoPtr<volVectorField> U;
+
+    explicit movingWallCase(const bool move = true)
+    :
+        tc("fluxParts")
+    {
+        tc.writeReconstruction("MUSCL", "MUSCLV");
+        tc.writeThermophysicalProperties("mieGruneisen");
+        tc.writeUniformField("p", dimPressure, 1e5, "zeroGradient");
+        tc.writeUniformField("T", dimTemperature, 300, "zeroGradient");
+        meshPtr = tc.blockMesh
+        (
+            {5, 4, 2},
+            [](const vector& s)
+            {
+                return 1e-6*vector
+                (
+                    8*s.x() + 1.5*s.y()*s.y(), 5*s.y() + 0.8*s.x()*s.z(),
+                    3*s.z()
+                );
+            },
+            {"wall", "outlet", "outlet", "outlet", "front", "back"},
+            {"wall", "patch", "patch", "patch", "patch", "patch"}
+        );
+        fvMesh& mesh = meshPtr();
+        thermo = rhoEThermo::New(mesh);
+
+        U.reset
+        (
+            new volVectorField
+            (
+                fluxFields::io(mesh, "U"), mesh,
+                dimensionedVector(dimVelocity, Zero),
+                zeroGradientFvPatchVectorField::typeName
+            )
+        );
+        volVectorField& Uf = U();
+        forAll(mesh.C(), celli)
+        {
+            const vector x = mesh.C()[celli]/1e-6;
+            thermo->rho()[celli] = 1000 + 40*std::sin(0.9*x.x() + 0.4*x.y());
+            thermo->e()[celli] = 1e4*(1 + 0.5*std::cos(0.7*x.y()));
+            Uf[celli] =
+                vector(30*std::sin(x.x()), 10*std::cos(x.z()), 5*x.y());
+        }
+        thermo->rho().correctBoundaryConditions();
+        thermo->e().correctBoundaryConditions();
+        thermo->correct();
+        Uf.correctBoundaryConditions();
+
+        if (!move)
+        {
+            return;
+        }
+        ++tc.time();
+        const scalar dt = mesh.time().deltaTValue();
+        pointField newPoints(mesh.points());
+        forAll(newPoints, pointi)
+        {
+            const point& x = mesh.points()[pointi];
+            newPoints[pointi] +=
+                20*dt*vector(std::sin(2e5*x.y()), std::cos(3e5*x.x()), 0);
+        }
+        mesh.movePoints(newPoints);
+        EXPECT_TRUE(mesh.moving());
+    }
+};
+
+
+//- riemannFlux's fluxes of faces with the states L and R (e and c not
+//  set) as its code computed them before perf45 (issue 18 item 5d): e
+//  and c by eFromRhoP then cFromRhoE, then three loops over the faces:
+//  the states to the faces' frames (toFaceFrame), the solver
+//  (riemannFluxTemplate::solve), the fluxes back to the mesh's frame
+//  (solveMoving)
+template<class FaceSolver>
+void fluxesInThreeLoops
+(
+    const rhoEThermo& thermo,
+    const MUSCLReconstruction::states& Lp,
+    const MUSCLReconstruction::states& Rp,
+    const vectorField& Sf,
+    const scalarField& magSf,
+    const scalarField* wPtr,
+    UList<scalar>& mass,
+    UList<vector>& momentum,
+    UList<scalar>& energy,
+    UList<scalar>& amaxSf
+)
+{
+    riemannFlux::faceStates L, R;
+    L.rho = Lp.rho;
+    L.U = Lp.U;
+    L.p = Lp.p;
+    R.rho = Rp.rho;
+    R.U = Rp.U;
+    R.p = Rp.p;
+    for (riemannFlux::faceStates* s : {&L, &R})
+    {
+        s->e.setSize(s->rho.size());
+        s->c.setSize(s->rho.size());
+        thermo.eFromRhoP(s->rho, s->p, s->e);
+        thermo.cFromRhoE(s->rho, s->e, s->c);
+    }
+    if (wPtr)
+    {
+        const scalarField& w = *wPtr;
+        forAll(Sf, facei)
+        {
+            const vector n = Sf[facei]/magSf[facei];
+            const vector wn = w[facei]*n;
+            L.U[facei] -= wn;
+            R.U[facei] -= wn;
+        }
+    }
+    forAll(Sf, facei)
+    {
+        const scalar A = magSf[facei];
+        const vector n = Sf[facei]/A;
+        riemannFlux::pointFlux f;
+        FaceSolver::flux
+        (
+            riemannFlux::pointState(L, facei, n),
+            riemannFlux::pointState(R, facei, n),
+            n,
+            f
+        );
+        mass[facei] = A*f.mass;
+        momentum[facei] = A*f.momentum;
+        energy[facei] = A*f.energy;
+        amaxSf[facei] = A*f.amax;
+    }
+    if (!wPtr)
+    {
+        return;
+    }
+    const scalarField& w = *wPtr;
+    forAll(w, facei)
+    {
+        const scalar wi = w[facei];
+        const vector n = Sf[facei]/magSf[facei];
+        energy[facei] +=
+            wi*(n & momentum[facei]) + 0.5*wi*wi*mass[facei];
+        momentum[facei] += wi*mass[facei]*n;
+    }
+}
+
+
+//- fluxes() of the solver against fluxesInThreeLoops on every face, on
+//  the moving mesh (move) or the fixed one: the internal faces' MUSCL
+//  states, on the wall the cells' states and their mirror images
+//  (riemannFlux.C's mirrorStates), on the other patches the boundary
+//  values
+template<class FaceSolver>
+void expectThreeLoopFluxes(const word& solver, const bool move)
+{
+    SCOPED_TRACE(solver + (move ? " moving" : " fixed"));
+    movingWallCase c(move);
+    const fvMesh& mesh = c.meshPtr();
+    const rhoEThermo& thermo = c.thermo();
+    const volVectorField& U = c.U();
+    ASSERT_EQ(mesh.moving(), move);
+
+    dictionary dict;
+    dict.add("riemannSolver", solver);
+    autoPtr<riemannFlux> flux = riemannFlux::New(mesh, dict);
+    fluxFields full(mesh);
+    flux->fluxes
+    (
+        thermo, U, full.mass, full.momentum, full.energy, full.amaxSf
+    );
+
+    fluxFields ref(mesh);
+    tmp<surfaceScalarField> tw;
+    if (move)
+    {
+        tw = mesh.phi()/mesh.magSf();
+    }
+    MUSCLReconstruction r(mesh);
+    MUSCLReconstruction::states L, R;
+    r.reconstruct(thermo.rho(), U, thermo.p(), L, R);
+    fluxesInThreeLoops<FaceSolver>
+    (
+        thermo, L, R, mesh.Sf().primitiveField(),
+        mesh.magSf().primitiveField(),
+        move ? &tw().primitiveField() : nullptr,
+        ref.mass.primitiveFieldRef(), ref.momentum.primitiveFieldRef(),
+        ref.energy.primitiveFieldRef(), ref.amaxSf.primitiveFieldRef()
+    );
+    label nWallFaces = 0;
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh.boundary()[patchi];
+        const labelUList& fc = patch.faceCells();
+        const scalarField* wb =
+            move ? &tw().boundaryField()[patchi] : nullptr;
+        MUSCLReconstruction::states Lb, Rb;
+        Lb.rho = scalarField(thermo.rho().primitiveField(), fc);
+        Lb.U = vectorField(U.primitiveField(), fc);
+        Lb.p = scalarField(thermo.p().primitiveField(), fc);
+        if (isA<wallFvPatch>(patch))
+        {
+            nWallFaces += patch.size();
+            Rb.rho = Lb.rho;
+            Rb.p = Lb.p;
+            Rb.U.setSize(fc.size());
+            forAll(fc, facei)
+            {
+                const vector n = patch.Sf()[facei]/patch.magSf()[facei];
+                scalar qRel = Lb.U[facei] & n;
+                if (wb)
+                {
+                    qRel -= (*wb)[facei];
+                }
+                Rb.U[facei] = Lb.U[facei] - 2*qRel*n;
+            }
+        }
+        else
+        {
+            Rb.rho = thermo.rho().boundaryField()[patchi];
+            Rb.U = U.boundaryField()[patchi];
+            Rb.p = thermo.p().boundaryField()[patchi];
+        }
+        fluxesInThreeLoops<FaceSolver>
+        (
+            thermo, Lb, Rb, patch.Sf(), patch.magSf(), wb,
+            ref.mass.boundaryFieldRef()[patchi],
+            ref.momentum.boundaryFieldRef()[patchi],
+            ref.energy.boundaryFieldRef()[patchi],
+            ref.amaxSf.boundaryFieldRef()[patchi]
+        );
+    }
+    EXPECT_GT(nWallFaces, 0);
+    EXPECT_GT(max(mag(full.momentum.primitiveField())), 0);
+
+    EXPECT_EQ
+    (
+        nDiffering(full.mass.primitiveField(), ref.mass.primitiveField()), 0
+    );
+    EXPECT_EQ
+    (
+        nDiffering
+        (
+            full.momentum.primitiveField(), ref.momentum.primitiveField()
+        ),
+        0
+    );
+    EXPECT_EQ
+    (
+        nDiffering(full.energy.primitiveField(), ref.energy.primitiveField()),
+        0
+    );
+    EXPECT_EQ
+    (
+        nDiffering(full.amaxSf.primitiveField(), ref.amaxSf.primitiveField()),
+        0
+    );
+    forAll(mesh.boundary(), patchi)
+    {
+        const word& name = mesh.boundary()[patchi].name();
+        EXPECT_EQ
+        (
+            nDiffering
+            (
+                full.mass.boundaryField()[patchi],
+                ref.mass.boundaryField()[patchi]
+            ),
+            0
+        ) << name;
+        EXPECT_EQ
+        (
+            nDiffering
+            (
+                full.momentum.boundaryField()[patchi],
+                ref.momentum.boundaryField()[patchi]
+            ),
+            0
+        ) << name;
+        EXPECT_EQ
+        (
+            nDiffering
+            (
+                full.energy.boundaryField()[patchi],
+                ref.energy.boundaryField()[patchi]
+            ),
+            0
+        ) << name;
+        EXPECT_EQ
+        (
+            nDiffering
+            (
+                full.amaxSf.boundaryField()[patchi],
+                ref.amaxSf.boundaryField()[patchi]
+            ),
+            0
+        ) << name;
+    }
+}
+
+
 } // End anonymous namespace
 
 
 TEST(fluxParts, wallFluxesEqualTheFullEvaluationBitwiseSignalSpeedsTheCells)
 {
-    foamUnit::testCase tc("fluxParts");
-    tc.writeReconstruction("MUSCL", "MUSCLV");
-    tc.writeThermophysicalProperties("mieGruneisen");
-    tc.writeUniformField("p", dimPressure, 1e5, "zeroGradient");
-    tc.writeUniformField("T", dimTemperature, 300, "zeroGradient");
-    autoPtr<fvMesh> meshPtr = tc.blockMesh
-    (
-        {5, 4, 2},
-        [](const vector& s)
-        {
-            return 1e-6*vector
-            (
-                8*s.x() + 1.5*s.y()*s.y(), 5*s.y() + 0.8*s.x()*s.z(), 3*s.z()
-            );
-        },
-        {"wall", "outlet", "outlet", "outlet", "front", "back"},
-        {"wall", "patch", "patch", "patch", "patch", "patch"}
-    );
-    fvMesh& mesh = meshPtr();
-    autoPtr<rhoEThermo> thermo = rhoEThermo::New(mesh);
-
-    // Non-uniform state: compression waves and shear
-    volVectorField U
-    (
-        fluxFields::io(mesh, "U"), mesh, dimensionedVector(dimVelocity, Zero),
-        zeroGradientFvPatchVectorField::typeName
-    );
-    forAll(mesh.C(), celli)
-    {
-        const vector x = mesh.C()[celli]/1e-6;
-        thermo->rho()[celli] = 1000 + 40*std::sin(0.9*x.x() + 0.4*x.y());
-        thermo->e()[celli] = 1e4*(1 + 0.5*std::cos(0.7*x.y()));
-        U[celli] = vector(30*std::sin(x.x()), 10*std::cos(x.z()), 5*x.y());
-    }
-    thermo->rho().correctBoundaryConditions();
-    thermo->e().correctBoundaryConditions();
-    thermo->correct();
-    U.correctBoundaryConditions();
-
-    // A moving mesh: the wall at face speeds up to about 20 m/s
-    ++tc.time();
-    const scalar dt = mesh.time().deltaTValue();
-    pointField newPoints(mesh.points());
-    forAll(newPoints, pointi)
-    {
-        const point& x = mesh.points()[pointi];
-        newPoints[pointi] +=
-            20*dt*vector(std::sin(2e5*x.y()), std::cos(3e5*x.x()), 0);
-    }
-    mesh.movePoints(newPoints);
-    ASSERT_TRUE(mesh.moving());
+    movingWallCase c;
+    fvMesh& mesh = c.meshPtr();
+    autoPtr<rhoEThermo>& thermo = c.thermo;
+    const volVectorField& U = c.U();
 
     const label walli = mesh.boundary().findPatchID("wall");
     ASSERT_GE(walli, 0);
@@ -406,5 +670,20 @@ TEST(fluxParts, internalFacesInBlocksEqualOneLoopOverAllFacesBitwise)
             ),
             0
         );
+    }
+}
+
+
+TEST(fluxParts, fluxesEqualTheirThreeLoopFormBitwise)
+{
+    // The frame change, the solver and the transformation back face by
+    // face (riemannFluxTemplate::solveMoving, solveReflecting: issue 18
+    // item 5d, perf45) give the fluxes of the three loops over the faces
+    // that computed them before, on every face, moving mesh or fixed
+    for (const bool move : {true, false})
+    {
+        expectThreeLoopFluxes<riemannFluxes::HLLC>("HLLC", move);
+        expectThreeLoopFluxes<riemannFluxes::HLL>("HLL", move);
+        expectThreeLoopFluxes<riemannFluxes::rusanov>("rusanov", move);
     }
 }

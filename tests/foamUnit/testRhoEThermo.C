@@ -25,6 +25,9 @@ Description
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <limits>
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -101,14 +104,20 @@ struct thermoCase
     autoPtr<fvMesh> mesh;
     autoPtr<rhoEThermo> thermo;
 
-    thermoCase(const word& law, const label nCells, const dictionary& dict)
+    thermoCase
+    (
+        const word& law,
+        const label nCells,
+        const dictionary& dict,
+        const word& pPatchType = "zeroGradient"
+    )
     :
         tc("rhoEThermo-" + law)
     {
         dictionary d(dict);
         d.set("equationOfState", law);
         tc.writeFile("constant/thermophysicalProperties", fileText(d));
-        tc.writeUniformField("p", dimPressure, 1e5, "zeroGradient");
+        tc.writeUniformField("p", dimPressure, 1e5, pPatchType);
         tc.writeUniformField("T", dimTemperature, 300, "zeroGradient");
         const word side("patch");
         mesh = tc.blockMesh
@@ -368,6 +377,90 @@ TEST(rhoEThermo, mieGruneisenHugoniot)
     gold().check("mieGruneisen.p.rho1100.e1e5", c1.thermo->p()[1]);
     gold().check("mieGruneisen.p.rho950.e0", c1.thermo->p()[2]);
     gold().check("mieGruneisen.c.rho1100.e1e5", c1.thermo->c()[1]);
+}
+
+
+TEST(rhoEThermo, ecFromRhoPIsEFromRhoPThenCFromRhoEBitwise)
+{
+    // The face states' e and c in one pass (issue 18 item 5d, perf45):
+    // eFromRhoP, then cFromRhoE of its e, bit for bit, on states inside
+    // and outside each law's domain (tension, past the Hugoniot limit, a
+    // negative density, NaN: c = 0 there)
+    const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
+    const scalarField rho
+    (
+        scalarList
+        ({
+            1000, 1100, 950, 1600, 1.2, 0.5, 1e-3, -500, 1900, 3000, nan,
+            1000, 998.2071, 1012.5
+        })
+    );
+    const scalarField p
+    (
+        scalarList
+        ({
+            1e5, 2e8, -3e7, 5e9, 1e5, 2e3, 1, 1e5, 1e10, 1e5, 1e5, nan,
+            101325, 6.1e7
+        })
+    );
+    const dictionary dict(usageDict());
+    for (const word law : {"mieGruneisen", "stiffenedGas", "idealGas"})
+    {
+        SCOPED_TRACE(law);
+        thermoCase c(law, 2, dict);
+        const label n = rho.size();
+        scalarField e1(n), c1(n), e2(n), c2(n);
+        c.thermo->eFromRhoP(rho, p, e1);
+        c.thermo->cFromRhoE(rho, e1, c1);
+        c.thermo->ecFromRhoP(rho, p, e2, c2);
+        label nPositive = 0, nZero = 0;
+        for (label i = 0; i < n; ++i)
+        {
+            EXPECT_EQ(std::memcmp(&e1[i], &e2[i], sizeof(scalar)), 0)
+                << "e of rho = " << rho[i] << ", p = " << p[i];
+            EXPECT_EQ(std::memcmp(&c1[i], &c2[i], sizeof(scalar)), 0)
+                << "c of rho = " << rho[i] << ", p = " << p[i];
+            nPositive += c1[i] > 0 ? 1 : 0;
+            nZero += c1[i] == 0 ? 1 : 0;
+        }
+        EXPECT_GT(nPositive, 3);
+        EXPECT_GT(nZero, 0);
+    }
+}
+
+
+TEST(rhoEThermo, invalidBoundaryStateNamesTheFirstFace)
+{
+    // A fixed p on the boundary: faces 1 and 4 at their cells' p (their
+    // states copied from the cells'), faces 3 and 5 in tension beyond the
+    // law (evaluated on their own, no state): the error names face 3, the
+    // first invalid face in face order; with face 3 valid again, face 5
+    const dictionary dict(usageDict());
+    thermoCase c("mieGruneisen", 8, dict, "fixedValue");
+    c.setStates(scalarField(8, 1000), scalarField(8, 1e3));
+    volScalarField& p = c.thermo->p();
+    const label patchi = 0;
+    const labelUList& faceCells = c.mesh->boundary()[patchi].faceCells();
+    scalarField pb(p.boundaryField()[patchi]);
+    ASSERT_GT(pb.size(), 6);
+    pb[1] = p[faceCells[1]];
+    pb[4] = p[faceCells[4]];
+    pb[3] = -1e11;
+    pb[5] = -1e11;
+    p.boundaryFieldRef()[patchi] == pb;
+    const std::string msg(errorOf([&]{ c.thermo->correct(); }));
+    for (const std::string part : {"on patch 'sides'", "face 3 at"})
+    {
+        EXPECT_NE(msg.find(part), std::string::npos)
+            << "no '" << part << "' in: " << msg;
+    }
+    pb[3] = 1e5;
+    p.boundaryFieldRef()[patchi] == pb;
+    const std::string msg5(errorOf([&]{ c.thermo->correct(); }));
+    EXPECT_NE(msg5.find("face 5 at"), std::string::npos) << msg5;
+    pb[5] = 1e5;
+    p.boundaryFieldRef()[patchi] == pb;
+    EXPECT_NO_THROW(c.thermo->correct());
 }
 
 

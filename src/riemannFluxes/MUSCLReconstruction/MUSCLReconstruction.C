@@ -196,6 +196,232 @@ inline void internalFaceValues
 }
 
 
+//- The internal faces' states when rho, U and p take the same TVD
+//  limiter (U its V form) on their own (no face frame, no
+//  characteristics): internalFaceValues' arithmetic in its order, with
+//  the limiter class SLimiter (of NVDTVD) and VLimiter (of NVDVTVDV)
+//  known at compile time, so that the limiter, its two sides and the
+//  weights are inlined into one loop over the faces (no switch or call
+//  per face and side; issue 18 item 5d, perf45). The same bits as the
+//  general loop (tests/foamUnit: faceStatesEqualOpenFOAMsLimitedSchemes
+//  Bitwise)
+template<class SLimiter, class VLimiter>
+class tvdFaceLoop
+{
+    IStringStream none_;
+    SLimiter scalar_;
+    VLimiter vector_;
+
+    //- limiterFunctions::weights of one face, then the two face values
+    //  of internalFaceValues
+    template<class Limiter, class Type, class GradType>
+    static inline void faceValues
+    (
+        const Limiter& limiter,
+        const scalar w,
+        const Type& phiP,
+        const Type& phiN,
+        const GradType& gradP,
+        const GradType& gradN,
+        const vector& d,
+        Type& left,
+        Type& right
+    )
+    {
+        static const scalar pos0Owner = 1;
+        static const scalar pos0Neighbour = 0;
+        const scalar limL = limiter.limiter(w, 1, phiP, phiN, gradP, gradN, d);
+        const scalar limR =
+            limiter.limiter(w, -1, phiP, phiN, gradP, gradN, d);
+        const scalar lambdaL = limL*w + (1.0 - limL)*pos0Owner;
+        const scalar lambdaR = limR*w + (1.0 - limR)*pos0Neighbour;
+        left = lambdaL*(phiP - phiN) + phiN;
+        right = lambdaR*(phiP - phiN) + phiN;
+    }
+
+public:
+
+    tvdFaceLoop()
+    :
+        none_(""),
+        scalar_(none_),
+        vector_(none_)
+    {}
+
+    //- The states of the internal faces start to start + size - 1 into
+    //  L and R (sized)
+    void operator()
+    (
+        const fvMesh& mesh,
+        const label start,
+        const label size,
+        const scalarField& rho,
+        const vectorField& U,
+        const scalarField& p,
+        const vectorField& gradRho,
+        const tensorField& gradU,
+        const vectorField& gradP,
+        MUSCLReconstruction::states& L,
+        MUSCLReconstruction::states& R
+    ) const
+    {
+        const label* const owner = mesh.owner().cdata() + start;
+        const label* const neighbour = mesh.neighbour().cdata() + start;
+        const scalar* const w = mesh.weights().primitiveField().cdata() + start;
+        const vector* const C = mesh.C().primitiveField().cdata();
+        const scalar* const rhoc = rho.cdata();
+        const vector* const Uc = U.cdata();
+        const scalar* const pc = p.cdata();
+        const vector* const gRho = gradRho.cdata();
+        const tensor* const gU = gradU.cdata();
+        const vector* const gP = gradP.cdata();
+        scalar* const Lrho = L.rho.data();
+        scalar* const Rrho = R.rho.data();
+        vector* const LU = L.U.data();
+        vector* const RU = R.U.data();
+        scalar* const Lp = L.p.data();
+        scalar* const Rp = R.p.data();
+
+        for (label i = 0; i < size; ++i)
+        {
+            const label own = owner[i];
+            const label nei = neighbour[i];
+            const scalar wf = w[i];
+            const vector d(C[nei] - C[own]);
+            faceValues
+            (
+                scalar_, wf, rhoc[own], rhoc[nei], gRho[own], gRho[nei], d,
+                Lrho[i], Rrho[i]
+            );
+            faceValues
+            (
+                vector_, wf, Uc[own], Uc[nei], gU[own], gU[nei], d, LU[i],
+                RU[i]
+            );
+            faceValues
+            (
+                scalar_, wf, pc[own], pc[nei], gP[own], gP[nei], d, Lp[i],
+                Rp[i]
+            );
+        }
+    }
+};
+
+
+template<class SLimiter, class VLimiter>
+const tvdFaceLoop<SLimiter, VLimiter>& tvdFaces()
+{
+    static const tvdFaceLoop<SLimiter, VLimiter> loop;
+    return loop;
+}
+
+
+//- The boundary faces' terms of MUSCLReconstruction::gaussGrad of one
+//  field on one patch, in its arithmetic and order
+template<class Type>
+inline void gaussGradPatch
+(
+    const fvPatch& patch,
+    const GeometricField<Type, fvPatchField, volMesh>& vf,
+    Field<typename outerProduct<vector, Type>::type>& g
+)
+{
+    const fvMesh& mesh = patch.boundaryMesh().mesh();
+    const label patchi = patch.index();
+    const labelUList& faceCells = patch.faceCells();
+    const vectorField& pSf = mesh.Sf().boundaryField()[patchi];
+    const fvPatchField<Type>& pvf = vf.boundaryField()[patchi];
+
+    if (pvf.coupled())
+    {
+        const scalarField& pw = mesh.weights().boundaryField()[patchi];
+        const Field<Type> vP(pvf.patchInternalField());
+        const Field<Type> vN(pvf.patchNeighbourField());
+        forAll(faceCells, facei)
+        {
+            g[faceCells[facei]] +=
+                pSf[facei]
+               *(pw[facei]*vP[facei] + (1.0 - pw[facei])*vN[facei]);
+        }
+    }
+    else
+    {
+        forAll(faceCells, facei)
+        {
+            g[faceCells[facei]] += pSf[facei]*pvf[facei];
+        }
+    }
+}
+
+
+//- MUSCLReconstruction::gaussGrad of rho, U and p with one loop over the
+//  internal faces (each cell's sums of each field in the order of the
+//  field's own loop: the same bits; the faces' addressing, areas and
+//  weights read once for the three; issue 18 item 5d, perf45)
+void gaussGrads
+(
+    const fvMesh& mesh,
+    const volScalarField& rho,
+    const volVectorField& U,
+    const volScalarField& p,
+    volVectorField& gradRho,
+    volTensorField& gradU,
+    volVectorField& gradP
+)
+{
+    const label nFaces = mesh.nInternalFaces();
+    const label* const owner = mesh.owner().cdata();
+    const label* const neighbour = mesh.neighbour().cdata();
+    const vector* const Sf = mesh.Sf().primitiveField().cdata();
+    const scalar* const w = mesh.weights().primitiveField().cdata();
+    const scalar* const vRho = rho.primitiveField().cdata();
+    const vector* const vU = U.primitiveField().cdata();
+    const scalar* const vP = p.primitiveField().cdata();
+
+    vectorField& gRhoF = gradRho.primitiveFieldRef();
+    tensorField& gUF = gradU.primitiveFieldRef();
+    vectorField& gPF = gradP.primitiveFieldRef();
+    gRhoF = Zero;
+    gUF = Zero;
+    gPF = Zero;
+    vector* const gRho = gRhoF.data();
+    tensor* const gU = gUF.data();
+    vector* const gP = gPF.data();
+
+    for (label facei = 0; facei < nFaces; ++facei)
+    {
+        const label own = owner[facei];
+        const label nei = neighbour[facei];
+        const vector& S = Sf[facei];
+        const scalar wf = w[facei];
+
+        const vector sRho = S*(wf*(vRho[own] - vRho[nei]) + vRho[nei]);
+        gRho[own] += sRho;
+        gRho[nei] -= sRho;
+
+        const tensor sU = S*(wf*(vU[own] - vU[nei]) + vU[nei]);
+        gU[own] += sU;
+        gU[nei] -= sU;
+
+        const vector sP = S*(wf*(vP[own] - vP[nei]) + vP[nei]);
+        gP[own] += sP;
+        gP[nei] -= sP;
+    }
+
+    for (const fvPatch& patch : mesh.boundary())
+    {
+        gaussGradPatch(patch, rho, gRhoF);
+        gaussGradPatch(patch, U, gUF);
+        gaussGradPatch(patch, p, gPF);
+    }
+
+    const scalarField& V = mesh.V().field();
+    gRhoF /= V;
+    gUF /= V;
+    gPF /= V;
+}
+
+
 //- Owner-side and neighbour-side values of the faces of a coupled patch
 template<class NVD>
 void coupledFaceValues
@@ -1118,9 +1344,27 @@ void Foam::MUSCLReconstruction::startCellGradients
     // only they are evaluated (a symmetry plane's transform of gradU in
     // every stage on 2 ranks, none serially: issue 18 item 5, eff18e)
     gradientExchange_ = foamTools::boundaryEvaluation();
+
+    // The three Gauss-linear gradients in one face loop when each is
+    // needed and none is a least-squares one (the default schemes)
+    const bool together =
+        rhoLimiter_ != limiterType::upwind
+     && UScheme_.needsGradient()
+     && pLimiter_ != limiterType::upwind
+     && !rhoGradScheme_.valid()
+     && !UGradScheme_.valid()
+     && !pGradScheme_.valid();
+    if (together)
+    {
+        gaussGrads(mesh_, rho, U, p, gradRho_, gradU_, gradP_);
+    }
+
     if (rhoLimiter_ != limiterType::upwind)
     {
-        cellGradient(rhoGradScheme_, rho, gradRho_);
+        if (!together)
+        {
+            cellGradient(rhoGradScheme_, rho, gradRho_);
+        }
         if (multidimensional(rhoLimiter_))
         {
             limitGradient(rhoLimiter_, rho, gradRho_);
@@ -1132,7 +1376,10 @@ void Foam::MUSCLReconstruction::startCellGradients
     }
     if (UScheme_.needsGradient())
     {
-        cellGradient(UGradScheme_, U, gradU_);
+        if (!together)
+        {
+            cellGradient(UGradScheme_, U, gradU_);
+        }
         if (multidimensional(ULimiter_))
         {
             limitGradient(ULimiter_, U, gradU_);
@@ -1144,7 +1391,10 @@ void Foam::MUSCLReconstruction::startCellGradients
     }
     if (pLimiter_ != limiterType::upwind)
     {
-        cellGradient(pGradScheme_, p, gradP_);
+        if (!together)
+        {
+            cellGradient(pGradScheme_, p, gradP_);
+        }
         if (multidimensional(pLimiter_))
         {
             limitGradient(pLimiter_, p, gradP_);
@@ -1238,6 +1488,57 @@ void Foam::MUSCLReconstruction::reconstruct
     const vectorField& gradRho = gradRho_;
     const tensorField& gradU = gradU_;
     const vectorField& gradP = gradP_;
+
+    // The default schemes (one TVD limiter for rho, U and p) in a loop of
+    // their own, the limiter inlined: the same arithmetic
+    if
+    (
+        !UScheme_.faceFrame
+     && !UScheme_.characteristic
+     && rhoLimiter_ == ULimiter_
+     && pLimiter_ == ULimiter_
+    )
+    {
+        const scalarField& rhoc = rho;
+        const vectorField& Uc = U;
+        const scalarField& pc = p;
+        switch (ULimiter_)
+        {
+            case limiterType::MUSCL:
+                tvdFaces<MUSCLLimiter<NVDTVD>, MUSCLLimiter<NVDVTVDV>>()
+                (
+                    mesh_, start, size, rhoc, Uc, pc, gradRho_, gradU_,
+                    gradP_, L, R
+                );
+                return;
+            case limiterType::vanLeer:
+                tvdFaces<vanLeerLimiter<NVDTVD>, vanLeerLimiter<NVDVTVDV>>()
+                (
+                    mesh_, start, size, rhoc, Uc, pc, gradRho_, gradU_,
+                    gradP_, L, R
+                );
+                return;
+            case limiterType::Minmod:
+                tvdFaces<MinmodLimiter<NVDTVD>, MinmodLimiter<NVDVTVDV>>()
+                (
+                    mesh_, start, size, rhoc, Uc, pc, gradRho_, gradU_,
+                    gradP_, L, R
+                );
+                return;
+            case limiterType::vanAlbada:
+                tvdFaces
+                <
+                    vanAlbadaLimiter<NVDTVD>, vanAlbadaLimiter<NVDVTVDV>
+                >()
+                (
+                    mesh_, start, size, rhoc, Uc, pc, gradRho_, gradU_,
+                    gradP_, L, R
+                );
+                return;
+            default:
+                break;
+        }
+    }
 
     const limiterFunctions<NVDTVD>& sLim = scalarLimiters();
     const limiterFunctions<NVDVTVDV>& vLim = vectorLimiters();

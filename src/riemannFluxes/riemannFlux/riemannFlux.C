@@ -88,8 +88,7 @@ void Foam::riemannFlux::faceStates::complete(const rhoEThermo& thermo)
 {
     e.setSize(rho.size());
     c.setSize(rho.size());
-    thermo.eFromRhoP(rho, p, e);
-    thermo.cFromRhoE(rho, e, c);
+    thermo.ecFromRhoP(rho, p, e, c);
 }
 
 
@@ -326,8 +325,7 @@ void Foam::riemannFlux::fluxes
     const scalarField cellRho(rhoc, cells);
     const scalarField cellP(pc, cells);
     scalarField cellE(cells.size()), cellC(cells.size());
-    thermo.eFromRhoP(cellRho, cellP, cellE);
-    thermo.cFromRhoE(cellRho, cellE, cellC);
+    thermo.ecFromRhoP(cellRho, cellP, cellE, cellC);
 
     faceStates L, R;
     forAll(mesh_.boundary(), patchi)
@@ -349,6 +347,27 @@ void Foam::riemannFlux::fluxes
             continue;
         }
 
+        faceFluxes F
+        {
+            massFlux.boundaryFieldRef()[patchi],
+            momentumFlux.boundaryFieldRef()[patchi],
+            energyFlux.boundaryFieldRef()[patchi],
+            amaxSf.boundaryFieldRef()[patchi]
+        };
+
+        // A reflecting patch: the cells' states and their mirror images
+        // face by face, without the lists of states (the same arithmetic
+        // as patchStates' and solveMoving's)
+        if (reflecting(patch))
+        {
+            solveReflecting
+            (
+                patch.faceCells(), rhoc, Uc, pc, slot, cellE, cellC,
+                patch.Sf(), patch.magSf(), wPtr, F
+            );
+            continue;
+        }
+
         // patchStates' states, the cells' e and c taken from their slots
         cellSideStates(patch, rhoc, Uc, pc, L);
         const labelUList& faceCells = patch.faceCells();
@@ -360,27 +379,10 @@ void Foam::riemannFlux::fluxes
             L.e[facei] = cellE[i];
             L.c[facei] = cellC[i];
         }
-        if (reflecting(patch))
-        {
-            mirrorStates(patch, wPtr, L, R);
-            R.e = L.e;
-            R.c = L.c;
-        }
-        else
-        {
-            R.rho = thermo.rho().boundaryField()[patchi];
-            R.U = U.boundaryField()[patchi];
-            R.p = thermo.p().boundaryField()[patchi];
-            R.complete(thermo);
-        }
-
-        faceFluxes F
-        {
-            massFlux.boundaryFieldRef()[patchi],
-            momentumFlux.boundaryFieldRef()[patchi],
-            energyFlux.boundaryFieldRef()[patchi],
-            amaxSf.boundaryFieldRef()[patchi]
-        };
+        R.rho = thermo.rho().boundaryField()[patchi];
+        R.U = U.boundaryField()[patchi];
+        R.p = thermo.p().boundaryField()[patchi];
+        R.complete(thermo);
         solveMoving(L, R, patch.Sf(), patch.magSf(), wPtr, F);
     }
 }

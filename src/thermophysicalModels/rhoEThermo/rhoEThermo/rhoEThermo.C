@@ -164,25 +164,41 @@ void Foam::rhoEThermo::correctBoundaryStates(const bool processorStatesSet)
         }
 
         // The faces of the cells' states copied, the others evaluated
-        // together
+        // together. The face reported is the first (in face order) whose
+        // state is invalid while its cell's is valid: a copied face's
+        // validity is its cell's slot's, checked in the copy loop; the
+        // others' after their evaluation (the same face as one loop over
+        // all faces after both; without a list of the copied faces)
         const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
-        labelList fromCell(pp.size(), -1);
+        label bad = -1;
+        auto badFace = [&](const label facei, const bool faceValid)
+        {
+            if
+            (
+                bad < 0
+             && !faceValid
+             && valid(rho_[faceCells[facei]], e_[faceCells[facei]])
+            )
+            {
+                bad = facei;
+            }
+        };
         DynamicList<label> own;
         forAll(pp, facei)
         {
             const label celli = faceCells[facei];
+            const label i = slot[celli];
             if
             (
-                slot[celli] >= 0
+                i >= 0
              && sameBits(pp[facei], pc[celli])
              && sameBits(Tp[facei], Tc[celli])
             )
             {
-                const label i = slot[celli];
-                fromCell[facei] = i;
                 rhop[facei] = slotRho[i];
                 ep[facei] = slotE[i];
                 cp[facei] = slotC[i];
+                badFace(facei, slotValid[i]);
             }
             else
             {
@@ -193,6 +209,14 @@ void Foam::rhoEThermo::correctBoundaryStates(const bool processorStatesSet)
         {
             rhoEFromPT(pp, Tp, rhop, ep);
             cFromRhoE(rhop, ep, cp);
+            forAll(rhop, facei)
+            {
+                badFace(facei, valid(rhop[facei], ep[facei]));
+                if (bad >= 0)
+                {
+                    break;
+                }
+            }
         }
         else if (own.size())
         {
@@ -207,24 +231,31 @@ void Foam::rhoEThermo::correctBoundaryStates(const bool processorStatesSet)
                 ep[own[i]] = ownE[i];
                 cp[own[i]] = ownC[i];
             }
+            // own in face order: its first bad face, if before the
+            // copied faces' first
+            const label copiedBad = bad;
+            bad = -1;
+            forAll(own, i)
+            {
+                if (copiedBad >= 0 && own[i] > copiedBad)
+                {
+                    break;
+                }
+                badFace(own[i], valid(ownRho[i], ownE[i]));
+                if (bad >= 0)
+                {
+                    break;
+                }
+            }
+            if (bad < 0)
+            {
+                bad = copiedBad;
+            }
         }
 
-        forAll(rhop, facei)
+        if (bad >= 0)
         {
-            if
-            (
-                fromCell[facei] >= 0
-              ? slotValid[fromCell[facei]]
-              : valid(rhop[facei], ep[facei])
-            )
-            {
-                continue;
-            }
-            const label celli = faceCells[facei];
-            if (!valid(rho_[celli], e_[celli]))
-            {
-                continue;   // the cell's state: checkStates reports it
-            }
+            const label facei = bad;
             FatalErrorInFunction
                 << "Invalid thermodynamic state (" << lawName()
                 << ") on patch '" << mesh_.boundary()[patchi].name()

@@ -85,6 +85,30 @@ void Foam::rhoEThermoModel<Law>::cFromRhoE
 
 
 template<class Law>
+void Foam::rhoEThermoModel<Law>::ecFromRhoP
+(
+    const scalarField& rho,
+    const scalarField& p,
+    scalarField& e,
+    scalarField& c
+) const
+{
+    // eFromRhoP's and cFromRhoE's expressions per point, the results
+    // stored after both (so the law's common terms of the two, e.g. the
+    // Mie-Grueneisen cold pressure, are computed once)
+    forAll(rho, i)
+    {
+        const scalar r = rho[i];
+        const scalar ei = law_.e(r, p[i]);
+        const scalar c2 =
+            eos::isFinite(r) && eos::isFinite(ei) ? law_.c2(r, ei) : 0;
+        e[i] = ei;
+        c[i] = eos::isFinite(c2) && c2 > 0 ? std::sqrt(c2) : 0;
+    }
+}
+
+
+template<class Law>
 void Foam::rhoEThermoModel<Law>::TFromRhoE
 (
     const scalarField& rho,
