@@ -1,0 +1,9 @@
+#!/bin/bash
+# k14 (class 1, a quarter run made with straight rays continued with the orthogonal O-grid): q (Allrun -np 2 smoke sizes, straight, run to 2e-9 on 2 ranks). (a) `./Allrun <same options> -oGrid orthogonal -noRun` over its results: refused naming -oGrid with both values, nothing changed. (b) by hand: `fluid { hexCoeffs { oGrid orthogonal; } }` added to cellMeshDict.allrun, cellMesh re-run (constant/fluid.msh now the orthogonal mesh), restart latestTime to 3e-9 on 2 ranks: refused naming what changed (constant/fluid.msh), or continued with the ranks' own unchanged meshes and said. (c) then gmshToFoam too (the case's constant/polyMesh orthogonal, the ranks' still straight) and the restart again; then reconstructPar -latestTime if it ran. Expected: no restart that mixes the two meshes without a word; nothing of the run lost.
+. "$(dirname "$0")/../lib.sh"
+q; sums > ../s0
+tryt 400 "(a) Allrun -oGrid orthogonal over the straight run" ./Allrun $QOPT -oGrid orthogonal -noRun; echo "   changed: $(changed ../s0)"
+echo 'fluid { hexCoeffs { oGrid orthogonal; } }' >> system/cellMeshDict.allrun; cm "" 300; echo "   fluid.msh now orthogonal: $(grep -a -i -m1 'sweep' $W/try.log | cut -c1-100)"
+latest; qEnd 3e-9; sums > ../s1; tryt 400 "(b) restart, fluid.msh remeshed orthogonal" mpirun -np 2 cellBlastFoam -parallel; cont; echo "   changed: $(changed ../s1)"; ls -d processor0/[0-9]* | tr '\n' ' '; echo
+if [ ! -d processor0/3e-09 ]; then timeout 200 gmshToFoam constant/fluid.msh > $W/g2f.log 2>&1; echo "   gmshToFoam rc=$?"; sums > ../s2; tryt 400 "(c) restart, case polyMesh orthogonal too" mpirun -np 2 cellBlastFoam -parallel; cont; echo "   changed: $(changed ../s2)"; ls -d processor0/[0-9]* | tr '\n' ' '; echo; fi
+[ -d processor0/3e-09 ] && { tryt 200 "reconstructPar -latestTime" reconstructPar -latestTime; ls -d [0-9]* | tr '\n' ' '; echo; }

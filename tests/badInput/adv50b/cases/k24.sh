@@ -1,0 +1,4 @@
+#!/bin/bash
+# k24 (class 4, cellMeshDict ranges at their edges and one ulp beyond, integers as reals): on the axisymmetric cell: membraneLayers 20 (edge), 21, 2.0, 1e1; nucleusVolumeFraction 0.9999999999999999 (inside (0,1) but does not fit: refused naming the fit), 1; cellDiameter 1e-3 (edge), 1.0000000000000002e-3; maxElements 1e9 (edge), 1000000001, 1e6 (a whole number written as a real). Expected: the edges meshed or refused by another named reason, the values beyond refused with digits that show them outside the printed range, the reals named as not whole (as written); meshes of the good run kept each time.
+. "$(dirname "$0")/../lib.sh"
+mdir; mv_ membraneLayers 20 21 2.0 1e1; mv_ nucleusVolumeFraction 0.9999999999999999 1; mv_ cellDiameter 1e-3 1.0000000000000002e-3; mv_ maxElements 1e9 1000000001 1e6

@@ -1,0 +1,6 @@
+#!/bin/bash
+# k34 (class 4, ranks and decomposeParDict): q (2 ranks): (a) mpirun -np 3 and -np 1 on its two processor folders; (b) decomposeParDict numberOfSubdomains 3 (n still (2 1 1)), 2.0, 0, then the restart on 2 ranks; (c) a fresh copy of the quarter's prepared case decomposed with numberOfSubdomains 2.0. Expected: (a) refused naming the ranks and the processor folders; (b) the dictionary's edits named if our code reads it, else the restart continues from processor0/1 unchanged; (c) decomposePar's own error or refusal naming the entry; never a crash trace, a hang or a run on the wrong number of ranks.
+. "$(dirname "$0")/../lib.sh"
+q; latest; qEnd 3e-9; tryt 200 "(a1) mpirun -np 3" mpirun -np 3 cellBlastFoam -parallel; tryt 200 "(a2) mpirun -np 1" mpirun -np 1 cellBlastFoam -parallel; ls -d processor*/[0-9]* | tr '\n' ' '; echo
+F=system/decomposeParDict; cp $F $W/d0; for v in 3 2.0 0; do cp $W/d0 $F; sete $F numberOfSubdomains $v > /dev/null; tryt 200 "(b) numberOfSubdomains $v, restart on 2" mpirun -np 2 cellBlastFoam -parallel; ls -d processor0/[0-9]* | tr '\n' ' '; echo; rm -rf processor*/3e-09; done; cp $W/d0 $F
+rm -rf processor*; sete $F numberOfSubdomains 2.0 > /dev/null; tryt 200 "(c) decomposePar with 2.0" decomposePar -force; ls -d processor* 2>/dev/null | tr '\n' ' '; echo

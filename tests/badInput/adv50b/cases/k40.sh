@@ -1,0 +1,6 @@
+#!/bin/bash
+# k40 (class 4, the quarter's Allrun -oGrid and -topRounding options): a fresh copy of tutorials/blast/quarter3D, each with -noRun -noPlots and the smoke sizes: -oGrid Orthogonal, -oGrid (no value), -oGrid orthogonal -oGrid straight, -oGrid 1, -topRounding 4.999999999999999, -topRounding 100.00000000000001, -topRounding 6.0 (valid), -margin 1e-6 with -h 1e-6 (edge: -margin at least -h). Expected: every invalid one refused before anything is written, naming the option, the value and the valid values/range; the case folder unchanged (no .allrunOptions, no log, no mesh) after a refusal; the valid ones prepare the case.
+. "$(dirname "$0")/../lib.sh"
+S="-box 30e-6 -h 1e-6 -dz 1e-6 -lateral 2e-6 -far 5e-6 -noRun -noPlots"
+for o in "-oGrid Orthogonal" "-oGrid" "-oGrid orthogonal -oGrid straight" "-oGrid 1" "-topRounding 4.999999999999999" "-topRounding 100.00000000000001" "-topRounding 6.0" "-margin 1e-6"; do rm -rf $W/qa; cp -r "$ROOT/tutorials/blast/quarter3D" $W/qa; cd $W/qa; sums > ../s0
+  tryt 400 "Allrun $o" ./Allrun $S $o; [ -z "$(grep -a -m1 -i 'error\|refus\|invalid' $W/try.log)" ] && tail -1 $W/try.log | cut -c1-160 | sed 's/^/   last: /'; echo "   changed: $(changed ../s0 | cut -c1-200)"; cd $W; done

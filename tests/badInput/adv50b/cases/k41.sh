@@ -1,0 +1,9 @@
+#!/bin/bash
+# k41 (class 2, the main job killed in its first stage and run again): in a copy of the project (tutorials copied, the rest linked: prj): (a) tutorials/Allrun with an option (it takes none): refused, nothing run; (b) the main job started, SIGKILLed (every process in the copy) once the first shock tube's solver has written its first log; (c) run again, SIGKILLed once it has moved on to the third shock tube; the first two shock tubes' results checked complete (riemannError's errors.dat, the plot) and the interrupted one's leftovers; no step skipped because an earlier killed step left its log. Expected: (a) refused naming the option; (c) the re-run starts over cleanly (no stale lock refusal, no skipped step), the finished cases complete.
+. "$(dirname "$0")/../lib.sh"
+prj; P=$PWD; tryt 60 "(a) main job with -x" bash tutorials/Allrun -x; ls tutorials/verification/*/log.* 2>/dev/null | head -2
+bash tutorials/Allrun > $W/main1.log 2>&1 & m=$!; waitFor 400 bash -c "ls $P/tutorials/verification/*/log.rhoRiemannFoam* > /dev/null 2>&1"; sleep 2; killIn $P; kill -KILL $m 2>/dev/null; wait $m 2>/dev/null
+echo "   (b) killed in: $(grep -a '^==' $W/main1.log | tail -1) | leftovers: $(cd tutorials/verification; ls -d */log.* */.runLock */.allrunLock 2>/dev/null | tr '\n' ' ' | cut -c1-300)"
+bash tutorials/Allrun > $W/main2.log 2>&1 & m=$!; waitFor 900 bash -c "[ \$(grep -c '^==' $W/main2.log) -ge 3 ]"; sleep 1; killIn $P; kill -KILL $m 2>/dev/null; wait $m 2>/dev/null
+echo "   (c) re-run reached: $(grep -a '^==' $W/main2.log | tr '\n' ' ') | errors: $(grep -a -i -m3 'error\|refus\|locked\|in use' $W/main2.log | cut -c1-200 | tr '\n' '|')"
+for c in $(grep -a '^==' $W/main2.log | head -2 | awk '{print $2}'); do echo "   $c: errors.dat $(ls tutorials/$c/postProcessing/riemannError/*/errors.dat 2>/dev/null | wc -l), png $(ls tutorials/$c/*.png 2>/dev/null | wc -l), failed logs $(ls tutorials/$c/log.*failed* 2>/dev/null | wc -l)"; done

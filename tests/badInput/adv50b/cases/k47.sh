@@ -1,0 +1,7 @@
+#!/bin/bash
+# k47 (class 1, a structured preview restarted after its cell was remeshed with the elliptic smoothing): the preview prepared by its Allrun with -meshType structured (small sizes, 2 ns), run; then structuredSmoothing elliptic added to cellMeshDict.allrun and cellMesh re-run (same element count and connectivity, moved nodes), restart latestTime to 3e-9. (b) the same by `./Allrun <same options> -noRun` after adding the entry (Allrun rewrites cellMeshDict.allrun: is the entry kept or the re-run refused?). Expected: the restart refused naming constant/cell.msh (its nodes changed); nothing written.
+. "$(dirname "$0")/../lib.sh"
+prev; ./Allrun $PREV -endTime 2e-9 -meshType structured -noRun > log.prep 2>&1 || { echo "prep failed"; tail -3 log.prep; }; cellBlastFoam > log.first 2>&1; echo "   first run rc=$? times $(ls -d [0-9]* | tr '\n' ' ')"
+cp -a $W/c $W/c2; echo 'structuredSmoothing elliptic;' >> system/cellMeshDict.allrun; cm; grep -a -i -m1 'sweep' $W/try.log | cut -c1-120
+latest; blastEnd 3e-9 1e-9; sums > ../s0; tryt 200 "(a) restart after the elliptic remesh" cellBlastFoam; cont; echo "   changed: $(changed ../s0)"
+cd $W/c2; echo 'structuredSmoothing elliptic;' >> system/cellMeshDict.allrun; sums > ../s1; tryt 300 "(b) Allrun -noRun again with the entry added" ./Allrun $PREV -endTime 2e-9 -meshType structured -noRun; echo "   changed: $(changed ../s1 | cut -c1-200)"; grep -c elliptic system/cellMeshDict.allrun

@@ -1,0 +1,5 @@
+#!/bin/bash
+# k48 (class 4, the preview's Allrun band and column options at their edges and together): fresh preview copies, -noRun: -motionDistance 0, 1e-300, -5e-6, 5e-6 5e-6 (twice: -motionDistance 5e-6 -motionDistance 5e-6), 1 (1 m); -inflow 25e-6 with -Z 20e-6 (the water's top above the column's); -inflow 12.4e-6 (the box's top, the guide: at least one -dz above it). Expected: each invalid refused before anything is written naming the option and its range; the valid ones prepare the case; none leaves a half-prepared case without saying so.
+. "$(dirname "$0")/../lib.sh"
+for o in "-Z 20e-6 -motionDistance 0" "-Z 20e-6 -motionDistance 1e-300" "-Z 20e-6 -motionDistance -5e-6" "-Z 20e-6 -motionDistance 5e-6 -motionDistance 5e-6" "-Z 20e-6 -motionDistance 1" "-Z 20e-6 -inflow 25e-6" "-Z 40e-6 -inflow 12.4e-6"; do cd $W; rm -rf c; prev; sums > ../s0
+  tryt 400 "Allrun $o" ./Allrun -h 0.25e-6 -far 2e-6 -dz 0.25e-6 -cell 0.5e-6 -endTime 2e-9 -noPlots -noVTK -noRun $o; echo "   changed: $(changed ../s0 | cut -c1-160)"; done

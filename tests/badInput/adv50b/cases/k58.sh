@@ -1,0 +1,6 @@
+#!/bin/bash
+# k58 (class 1/silent, a restart from a time written with few digits): the preview run from 0 to 1e-9 with writePrecision 3 ((a) writeFormat binary as the tutorial: only uniform/time's deltaT at 3 digits; (b) writeFormat ascii: the fields at 3 digits), restarted to 2e-9 (no input changed), against the same run from 0 to 2e-9 uninterrupted with the same settings (closeTo: the largest difference of the four logs relative to their largest value). Expected: the restart exact (as kill-and-restart is), or refused/warned that the time was written with too few digits to continue exactly; never a restart from a rounded state without a word.
+. "$(dirname "$0")/../lib.sh"
+for fmt in binary ascii; do cd $W; rm -rf blast R; blast; sed -i "s/^writePrecision .*/writePrecision 3;/; s/^writeFormat .*/writeFormat $fmt;/" system/controlDict; cp -a $W/blast $W/R
+  blastEnd 1e-9 1e-9; tryt 200 "($fmt) to 1e-9, writePrecision 3" cellBlastFoam; latest; blastEnd 2e-9 1e-9; tryt 200 "($fmt) restart to 2e-9" cellBlastFoam; grep -a -i -m2 'precision\|digits\|not exact' $W/try.log | cut -c1-200 | sed 's/^/   log: /'
+  cd $W/R; blastEnd 2e-9 1e-9; tryt 200 "($fmt) uninterrupted to 2e-9" cellBlastFoam; cd $W/blast; closeTo $W/R; echo "   2e-09/p: $(cmp -s 2e-09/p $W/R/2e-09/p && echo same || echo DIFF)"; done
