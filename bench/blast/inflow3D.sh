@@ -20,6 +20,16 @@
 #   set to X (the tutorial's default 0.9; 0.5 before 2026-12-03)
 #   NICENESS=N in the environment: cellBlastFoam runs at nice -n N
 #   (default 10; 0 for a final measurement on a shared machine)
+#   FITPROBES=1 in the environment: a second set of water probes,
+#   fluidProbesFit, at fluidProbes' locations with interpolationScheme
+#   cellLinearFit (the weighted linear fit of the cell values, evaluated
+#   at the probe's point) appended to the copy's system/controlDict;
+#   planeWave measures both sets. fluidProbes' cellPoint does not
+#   sample at its point in these micrometre cells: OpenFOAM's
+#   tetrahedron::pointToBarycentric takes every tetrahedron with
+#   |det| < SMALL = 1e-15 m^3 as degenerate and returns (1/4, 1/4, 1/4,
+#   1/4), so the probe reads its cell's first tetrahedron's centroid
+#   (docs/results/blast3D.md, "Where the water probes sample")
 #
 # While cellBlastFoam runs, the load average is sampled every 15 s into
 # DIR/quarter3D/log.load (printed as its range at the end).
@@ -34,7 +44,7 @@
 # solidMeasures.dat; on N ranks too since branch q3dG: planeWave reads
 # the master's probe files in the case, no reconstructPar needed).
 set -euo pipefail
-[ $# -ge 2 ] || { sed -n 2,27p "$0"; exit 1; }
+[ $# -ge 2 ] || { sed -n 2,37p "$0"; exit 1; }
 dir=$1; np=$2; shift 2
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -56,6 +66,29 @@ echo "== ./Allrun -noRun -noPlots ${npOpt[*]} $*"
 PROJECT_DIR=$root ./Allrun -noRun -noPlots "${npOpt[@]}" "$@" > log.prepare 2>&1 \
     || { tail -20 log.prepare; exit 1; }
 grep '^Pulse' log.prepare || true
+if [ "${FITPROBES:-0}" = 1 ]
+then
+    locations=$(foamDictionary -entry functions/fluidProbes/probeLocations \
+        -value system/controlDict)
+    cat >> system/controlDict <<EOF
+
+// inflow3D.sh FITPROBES=1: fluidProbes' locations sampled by the linear fit
+functions
+{
+    fluidProbesFit
+    {
+        type            movingMeshProbes;
+        libs            ("libfsi.so");
+        writeControl    timeStep;
+        writeInterval   1;
+        fields          (p);
+        interpolationScheme cellLinearFit;
+        probeLocations  $locations;
+    }
+}
+EOF
+    echo "== fluidProbesFit (cellLinearFit) at $locations"
+fi
 niceness=${NICENESS:-10}
 (
     while true
