@@ -159,6 +159,20 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
     }
     else
     {
+        // kept by design (a case switches the type alone), but said: its
+        // entries do not shape these tetrahedra (adv50b k10 (a): oGrid
+        // orthogonal meshed as tetrahedra without a word)
+        if (const dictionary* h = d.findDict("hexCoeffs", keyType::LITERAL))
+        {
+            std::string keys;
+            for (const entry& e : *h)
+            {
+                keys += (keys.empty() ? "" : " ") + std::string(e.keyword());
+            }
+            Info<< "Note: fluid type " << type << ": the sub-dictionary "
+                << "hexCoeffs (" << keys.c_str() << ") is not used; it "
+                << "shapes the water of type hex only" << nl << endl;
+        }
         if (d.found("height"))
         {
             // The tetrahedra: at least one farSize of water above the cell
