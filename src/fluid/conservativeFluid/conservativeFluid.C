@@ -198,6 +198,25 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
     {
         Info<< "Restarting from the conservative state rho, rhoU, rhoE of"
             << " time " << t << " s" << nl << endl;
+        // The exact continuation needs the state and uniform/time (its
+        // deltaT) written with 17 digits: with fewer it is another run,
+        // said (adv50b k58: writePrecision 3, ascii, 2e-09/p 39 MPa off
+        // the uninterrupted run, exit 0 without a word)
+        const label digits = IOstream::defaultPrecision();
+        if (digits < 17)
+        {
+            const bool ascii =
+                mesh.time().writeFormat() == IOstream::ASCII;
+            WarningInFunction
+                << "restarting from time " << t << " s of a case written "
+                << "with writePrecision " << digits << " (system/"
+                << "controlDict, writeFormat "
+                << (ascii ? "ascii" : "binary") << "): "
+                << (ascii ? "its fields and " : "") << "uniform/time (the "
+                << "step deltaT) hold " << digits << " digits, so this "
+                << "run is not the exact continuation of the one that "
+                << "wrote them (writePrecision 17 is)" << nl << endl;
+        }
 
         const volScalarField rhoWritten
         (
