@@ -87,7 +87,7 @@ expect zeroSize 's/^cytoplasmSize .*/cytoplasmSize 0;/' \
 expect negativeHeight 's/^cellHeight .*/cellHeight -7.9e-6;/' \
     "cellHeight' = -7.9e-06 m is outside the valid range"
 expect micrometres 's/^cellDiameter .*/cellDiameter 16.8;/' \
-    "cellDiameter' = 16.8 m is outside the valid range \(0, 0.001\]"
+    "cellDiameter' = 16.8 m is outside the valid range \(1e-07, 0.001\]"
 expect tooManyElements 's/^nucleusSize .*/nucleusSize 1e-9;/' \
     "ask for at least 2.*e\+07 elements, more than maxElements 1000000"
 expect tooManyElements3D 's/^mode .*/mode quarter3D;/; s/^contactRadius .*/contactRadius 0;/; /^fluid/,$d; s/^membraneSize .*/membraneSize 1e-8;/' \
@@ -101,6 +101,14 @@ expect tooManyElementsContact 's/^contactSize .*/contactSize 1e-10;/' \
 # range excludes): printed with its digits
 expect fractionBelowOneDigits 's/^nucleusVolumeFraction .*/nucleusVolumeFraction 0.9999999999999999;/' \
     "nucleusVolumeFraction = 0.9999999999999999: the nucleus" "not inside"
+# adv50a k11 (fix19g): sizes the reader takes but whose element estimate
+# overflows a double (1e-200 m) ended in a floating-point exception before
+# any message: refused as beyond any count; a cell of 1e-200 m was refused
+# as "membraneThickness ... (0, 0) m": its own range names it
+expect sizeBeyondAnyCount 's/^nucleusSize .*/nucleusSize 1e-200;/' \
+    "ask for at least 1e\+300 \(beyond any count\) elements"
+expect cellDiameterTiny 's/^cellDiameter .*/cellDiameter 1e-200;/' \
+    "cellDiameter' = 1e-200 m is outside the valid range \(1e-07, 0.001\] m"
 expect maxElementsZero 's/^membraneLayers .*/membraneLayers 2; maxElements 0;/' \
     "maxElements' = 0 is outside the valid range"
 expect zeroLayers 's/^membraneLayers .*/membraneLayers 0;/' \

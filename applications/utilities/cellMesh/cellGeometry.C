@@ -5,6 +5,7 @@
 #include "subDict.H"
 #include "keywordCheck.H"
 
+#include <cfenv>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -42,6 +43,12 @@ Foam::OSstream& entryError
 // length given in um, not m
 const Foam::scalar maxCellLength = 1e-3;
 
+// Lower bound, 0.1 um (open): a smaller cell is a length given in another
+// unit, and its curvature leaves no room for the membrane (adv50a: a
+// cellDiameter of 1e-200 m was refused as "membraneThickness ... outside
+// the valid range (0, 0) m", the entry given not named)
+const Foam::scalar minCellLength = 1e-7;
+
 // The valid ranges of the numbers of system/cellMeshDict, as the readers
 // of cellGeometry, fluidBox and hexFluidMesh check them (a bound that is
 // another entry named by it), for the scan of the numbers
@@ -67,7 +74,8 @@ std::string cellMeshDictRange
     }
     const std::string length
     (
-        "(0, " + Foam::foamTools::numberText(maxCellLength) + "] m"
+        "(" + Foam::foamTools::numberText(minCellLength) + ", "
+      + Foam::foamTools::numberText(maxCellLength) + "] m"
     );
     const std::string size("(0, cellHeight] m");
     static const std::vector<std::pair<std::string, std::string>> none;
@@ -265,11 +273,11 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     const scalar maxLength = maxCellLength;
     a_ = 0.5*foamTools::readInRange<scalar>
     (
-        dict, "cellDiameter", "m", 0, maxLength, false
+        dict, "cellDiameter", "m", minCellLength, maxLength, false
     );
     H_ = foamTools::readInRange<scalar>
     (
-        dict, "cellHeight", "m", 0, maxLength, false
+        dict, "cellHeight", "m", minCellLength, maxLength, false
     );
     // Lower bound 1e-3: a nucleus a tenth of the cell across at least
     // (1e-250 was gmsh's failure, "nothing written"; adv pass cm18)
@@ -422,17 +430,28 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
         dict, "maxElements", "", 1, 1000000000, true, 1000000
     );
     const label maxElements = maxElements_;
-    if (minimumElements() > maxElements)
+    // The estimate with the floating-point traps held: sizes the reader
+    // takes (1e-200 m) make it overflow or divide by an underflowed 0
+    // (adv50a k11: sigFpe, exit 136, before any message); beyond a double
+    // it is any count above maxElements
+    scalar estimate = 0;
+    {
+        std::fenv_t env;
+        std::feholdexcept(&env);
+        estimate = minimumElements();
+        std::feclearexcept(FE_ALL_EXCEPT);
+        std::fesetenv(&env);
+    }
+    if (!std::isfinite(estimate) || estimate > maxElements)
     {
         // 3 digits, or the least whole count when those would not read
         // more than maxElements (adv47b f46: 183.4 printed "at least 183
         // elements, more than maxElements 183")
         const std::string count
         (
-            foamTools::countAboveText
-            (
-                std::ceil(minimumElements()), maxElements, 3
-            )
+            std::isfinite(estimate)
+          ? foamTools::countAboveText(std::ceil(estimate), maxElements, 3)
+          : std::string("1e+300 (beyond any count)")
         );
         FatalIOErrorInFunction(dict)
             << "The element sizes ask for at least "

@@ -7,6 +7,7 @@
 #include "mshFile.H"
 #include "vector.H"
 #include <gmsh.h>
+#include <cfenv>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -408,12 +409,40 @@ void Foam::fluidBox::readHex(const dictionary& d)
     );
     // A lower bound first, the column above the inner box alone: a tiny
     // size must be refused before its grid lines are allocated
-    const scalar lower = (s.quarter ? 1 : 4)*sqr((a + s.margin)/s.lateralSize)
-        *(height_ - H - s.margin)/s.axialSize;
+    // (with the traps held: sizes of 1e-200 m overflow it, adv50a k11's
+    // class; beyond a double it is any count above maxCells)
+    scalar lower = 0;
+    {
+        std::fenv_t env;
+        std::feholdexcept(&env);
+        lower = (s.quarter ? 1 : 4)*sqr((a + s.margin)/s.lateralSize)
+            *(height_ - H - s.margin)/s.axialSize;
+        std::feclearexcept(FE_ALL_EXCEPT);
+        std::fesetenv(&env);
+        if (!std::isfinite(lower))
+        {
+            lower = 1e300;
+        }
+    }
     if (lower > maxCells)
     {
-        FatalIOErrorInFunction(d)
-            << "the hexahedral water would have at least " << lower
+        // the least whole count, placed at maxCells' own file and line
+        // when given (adv50b k46: "at least 11073.1 cells", placed at
+        // cellMeshDict.fluid.hexCoeffs)
+        fileName file;
+        label line = 0;
+        const bool placed =
+            foamTools::keywordCheckDetail::entryPlace
+            (
+                d, "maxCells", file, line
+            );
+        (
+            placed
+          ? FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file, line)
+          : FatalIOErrorInFunction(d)
+        )
+            << "the hexahedral water would have at least "
+            << foamTools::countAboveText(std::ceil(lower), maxCells).c_str()
             << " cells, more than maxCells " << maxCells << " (coarser "
             << "axialSize, lateralSize or farSize, or a larger maxCells)"
             << exit(FatalIOError);
