@@ -12,6 +12,111 @@
 
 #include <iostream>
 #include <sstream>
+#include <utility>
+#include <vector>
+
+namespace
+{
+
+// The valid ranges of the numbers of constant/indenterProperties: the one
+// place they are written, read by the constructor's readers (inRange) and
+// by the scan of the numbers (foamTools::checkNumbers, through the
+// scanRangeFunction registered below), which names an entry's range and
+// unit for a value OpenFOAM's reader would not take as written (1e-320,
+// 1e400; was: the reader's limits only, fix19f's list). The ranges that
+// depend on other entries (tolerance at most a tenth of
+// maxDepthIncrement, holdDeltaT0 at most maxDeltaT) are checked after
+const std::vector<std::pair<std::string, Foam::foamTools::numberRange>>&
+indenterRanges()
+{
+    static const
+        std::vector<std::pair<std::string, Foam::foamTools::numberRange>>
+        rows
+    {
+        {"radius", {0, 1, false, true, "m"}},
+        {"tolerance", {0, 1, false, true, "m"}},
+        {"penaltyFactor", {0, 1e6, false, true, ""}},
+        {"maxDepthIncrement", {0, 1, false, true, "m"}},
+        {"holdDeltaT0", {0, 1e6, false, true, "s"}},
+        {"maxDeltaT", {0, 1e6, false, true, "s"}},
+        {"holdGrowth", {1, 10, true, true, ""}},
+        {"forceTarget", {0, 1, true, true, "N"}},
+        {"forceTargetTolerance", {0, 1, false, true, ""}},
+        {"maxFactorMemory", {0, 1e15, false, true, "B"}},
+        {"maxFactorFlops", {0, 1e18, false, true, "flop"}}
+    };
+    return rows;
+}
+
+const Foam::foamTools::numberRange* indenterRange(const std::string& key)
+{
+    for (const auto& row : indenterRanges())
+    {
+        if (row.first == key)
+        {
+            return &row.second;
+        }
+    }
+    return nullptr;
+}
+
+// Entry key of indenterProperties d in its range (deflt, when given,
+// for an absent entry)
+Foam::scalar inRange
+(
+    const Foam::dictionary& d,
+    const Foam::word& key,
+    const Foam::scalar* deflt = nullptr
+)
+{
+    const Foam::foamTools::numberRange* r = indenterRange(key);
+    if (!r)
+    {
+        FatalErrorInFunction
+            << "no range of entry '" << key << "' of indenterProperties "
+            << "(a bug)" << Foam::exit(Foam::FatalError);
+    }
+    return deflt
+      ? Foam::foamTools::readInRangeOrDefault<Foam::scalar>
+        (
+            d, key, r->unit, r->lo, r->hi, r->closedLo, *deflt, r->closedHi
+        )
+      : Foam::foamTools::readInRange<Foam::scalar>
+        (
+            d, key, r->unit, r->lo, r->hi, r->closedLo, r->closedHi
+        );
+}
+
+Foam::scalar inRange
+(
+    const Foam::dictionary& d,
+    const Foam::word& key,
+    const Foam::scalar deflt
+)
+{
+    return inRange(d, key, &deflt);
+}
+
+// The scan of the numbers' range of an entry of constant/indenterProperties
+std::string indenterPropertiesRange
+(
+    const std::string& dictName,
+    const std::vector<std::string>& scope,
+    const std::string& key
+)
+{
+    if (dictName != "indenterProperties" || !scope.empty())
+    {
+        return std::string();
+    }
+    const Foam::foamTools::numberRange* r = indenterRange(key);
+    return r ? r->text() : std::string();
+}
+
+const bool indenterPropertiesRangeAdded =
+    Foam::foamTools::addScanRange(indenterPropertiesRange);
+
+} // End anonymous namespace
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * //
 
@@ -45,28 +150,17 @@ Foam::indentationInput::indentationInput
         controlDict, {"fieldWriteInterval", "checkpointInterval", "maxSteps"}
     );
 
-    sphere_.radius = readInRange<scalar>(d, "radius", "m", 0, 1, false);
-    sphere_.tolerance = readInRange<scalar>(d, "tolerance", "m", 0, 1, false);
-    sphere_.penaltyFactor = readInRangeOrDefault<scalar>
-    (
-        d, "penaltyFactor", "", 0, 1e6, false, 10
-    );
+    sphere_.radius = inRange(d, "radius");
+    sphere_.tolerance = inRange(d, "tolerance");
+    sphere_.penaltyFactor = inRange(d, "penaltyFactor", 10.0);
     contactPatch_ = d.getOrDefault<word>("contactPatch", "outerSurface");
 
-    settings_.maxDepthIncrement =
-        readInRange<scalar>(d, "maxDepthIncrement", "m", 0, 1, false);
-    settings_.holdDeltaT0 =
-        readInRange<scalar>(d, "holdDeltaT0", "s", 0, 1e6, false);
-    settings_.maxDeltaT =
-        readInRange<scalar>(d, "maxDeltaT", "s", 0, 1e6, false);
-    settings_.holdGrowth =
-        readInRangeOrDefault<scalar>(d, "holdGrowth", "", 1, 10, true, 1.5);
-    settings_.forceTarget =
-        readInRangeOrDefault<scalar>(d, "forceTarget", "N", 0, 1, true, 0);
-    settings_.forceTargetTolerance = readInRangeOrDefault<scalar>
-    (
-        d, "forceTargetTolerance", "", 0, 1, false, 0.01
-    );
+    settings_.maxDepthIncrement = inRange(d, "maxDepthIncrement");
+    settings_.holdDeltaT0 = inRange(d, "holdDeltaT0");
+    settings_.maxDeltaT = inRange(d, "maxDeltaT");
+    settings_.holdGrowth = inRange(d, "holdGrowth", 1.5);
+    settings_.forceTarget = inRange(d, "forceTarget", 0.0);
+    settings_.forceTargetTolerance = inRange(d, "forceTargetTolerance", 0.01);
 
     // The first step of a hold is at most the largest step: holdDeltaT0
     // 10 s with maxDeltaT 1 s ran every hold step at 1 s, silently
@@ -112,14 +206,8 @@ Foam::indentationInput::indentationInput
 
     // The largest sparse factorisation the run may start (addContact
     // estimates it; a 3D mesh sat for many minutes in the first one)
-    maxFactorMemory_ = readInRangeOrDefault<scalar>
-    (
-        d, "maxFactorMemory", "B", 0, 1e15, false, 1e9
-    );
-    maxFactorFlops_ = readInRangeOrDefault<scalar>
-    (
-        d, "maxFactorFlops", "flop", 0, 1e18, false, 1e11
-    );
+    maxFactorMemory_ = inRange(d, "maxFactorMemory", 1e9);
+    maxFactorFlops_ = inRange(d, "maxFactorFlops", 1e11);
 
     protocol_ = std::make_shared<solid::IndentationProtocol>(readProtocol());
 

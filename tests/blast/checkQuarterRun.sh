@@ -36,6 +36,13 @@ case=$(cd "$1" && pwd)
 [ -f "$case/system/controlDict" ] || {
     echo "checkQuarterRun.sh: $case/system/controlDict not found" \
         "(not a case)" >&2; exit 1; }
+# a path OpenFOAM cannot hold (a space, a quote): foamDictionary reads
+# nothing there, and the mode was said to be '' (adv50b k17 (e))
+problem=$(PYTHONPATH="$PROJECT_DIR/src/python${PYTHONPATH:+:$PYTHONPATH}" \
+    /usr/bin/python3 -c 'import sys; from neuronFsi import options
+print(options.casePathProblem(sys.argv[1]))' "$case")
+[ -z "$problem" ] || {
+    echo "checkQuarterRun.sh: $problem" >&2; exit 1; }
 mode=$(foamDictionary -entry mode -value "$case/system/cellMeshDict" \
     2> /dev/null || true)
 [ "$mode" = quarter3D ] || {

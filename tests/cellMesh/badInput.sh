@@ -87,7 +87,7 @@ expect zeroSize 's/^cytoplasmSize .*/cytoplasmSize 0;/' \
 expect negativeHeight 's/^cellHeight .*/cellHeight -7.9e-6;/' \
     "cellHeight' = -7.9e-06 m is outside the valid range"
 expect micrometres 's/^cellDiameter .*/cellDiameter 16.8;/' \
-    "cellDiameter' = 16.8 m is outside the valid range \(0, 0.001\]"
+    "cellDiameter' = 16.8 m is outside the valid range \(1e-07, 0.001\]"
 expect tooManyElements 's/^nucleusSize .*/nucleusSize 1e-9;/' \
     "ask for at least 2.*e\+07 elements, more than maxElements 1000000"
 expect tooManyElements3D 's/^mode .*/mode quarter3D;/; s/^contactRadius .*/contactRadius 0;/; /^fluid/,$d; s/^membraneSize .*/membraneSize 1e-8;/' \
@@ -96,6 +96,19 @@ expect tooManyElements3D 's/^mode .*/mode quarter3D;/; s/^contactRadius .*/conta
 # adversarial pass 'contactSizeTiny'; killed at 120 s)
 expect tooManyElementsContact 's/^contactSize .*/contactSize 1e-10;/' \
     "ask for at least .* elements, more than maxElements 1000000" "contactSize 1e-10 m"
+# adv50b k24 (fix19g): a fraction one ulp below 1 that leaves the nucleus
+# outside the cell was printed "nucleusVolumeFraction = 1" (the value the
+# range excludes): printed with its digits
+expect fractionBelowOneDigits 's/^nucleusVolumeFraction .*/nucleusVolumeFraction 0.9999999999999999;/' \
+    "nucleusVolumeFraction = 0.9999999999999999: the nucleus" "not inside"
+# adv50a k11 (fix19g): sizes the reader takes but whose element estimate
+# overflows a double (1e-200 m) ended in a floating-point exception before
+# any message: refused as beyond any count; a cell of 1e-200 m was refused
+# as "membraneThickness ... (0, 0) m": its own range names it
+expect sizeBeyondAnyCount 's/^nucleusSize .*/nucleusSize 1e-200;/' \
+    "ask for at least 1e\+300 \(beyond any count\) elements"
+expect cellDiameterTiny 's/^cellDiameter .*/cellDiameter 1e-200;/' \
+    "cellDiameter' = 1e-200 m is outside the valid range \(1e-07, 0.001\] m"
 expect maxElementsZero 's/^membraneLayers .*/membraneLayers 2; maxElements 0;/' \
     "maxElements' = 0 is outside the valid range"
 expect zeroLayers 's/^membraneLayers .*/membraneLayers 0;/' \
@@ -224,6 +237,46 @@ countAtTheLimit countAtTheLimit
 good
 cp "$root/tutorials/indentation/averageCell/system/cellMeshDict" "$work/case/system/"
 countAtTheLimit countAtTheLimitTutorial
+
+# adv49b i55 (d) (fix19g): the structured mesh is counted whole, in closed
+# form, before any block is made: maxElements below the count is refused
+# naming that count (was: a partial count of the blocks built so far, 2204
+# for a 3931-element mesh, and 8.7e7 refused only after 116 s and 1.43 GB);
+# maxElements at the count meshes exactly that many quadrilaterals
+structuredCountAtTheLimit() {
+    n=$((n + 1))
+    local d="$work/case/system/cellMeshDict" out code count made
+    sed -i 's/^membraneSize .*/membraneSize 0.05e-6;\nmeshType structured;\nmaxElements 5000;/' "$d"
+    out=$(timeout -k 5 120 cellMesh -case "$work/case" 2>&1)
+    count=$(sed -n 's/.*would have \([0-9]*\) quadrilaterals (counted before any is made).*/\1/p' <<< "$out" | head -1)
+    if [ -z "$count" ]
+    then
+        echo "FAIL $1: maxElements 5000: no whole count: $(grep -m1 -A3 FATAL <<< "$out")"
+        failures=$((failures + 1)); return
+    fi
+    sed -i "s/^maxElements .*/maxElements $((count - 1));/" "$d"
+    out=$(timeout -k 5 120 cellMesh -case "$work/case" 2>&1)
+    code=$?
+    if [ $code -eq 0 ] || [ $code -ge 128 ] \
+        || ! grep -q "would have $count quadrilaterals (counted before any is made), more than maxElements $((count - 1))" <<< "$out" \
+        || ! grep -q "previous mesh" "$work/case/constant/cell.msh"
+    then
+        echo "FAIL $1: maxElements $((count - 1)): exit $code, not refused with $count or cell.msh changed"
+        failures=$((failures + 1)); return
+    fi
+    sed -i "s/^maxElements .*/maxElements $count;/" "$d"
+    out=$(timeout -k 5 300 cellMesh -case "$work/case" 2>&1)
+    code=$?
+    made=$(sed -n 's/.*(meshType structured): quadrilaterals \([0-9]*\),.*/\1/p' <<< "$out" | head -1)
+    if [ $code -ne 0 ] || [ "$made" != "$count" ]
+    then
+        echo "FAIL $1: maxElements $count: exit $code, $made quadrilaterals made"
+        failures=$((failures + 1)); return
+    fi
+    echo "ok   $1: $count quadrilaterals counted before meshing; maxElements $((count - 1)) refused, $count meshed $made"
+}
+good
+structuredCountAtTheLimit structuredCountAtTheLimit
 
 echo "badInput: $((n - failures)) passed, $failures failed"
 [ $failures -eq 0 ]

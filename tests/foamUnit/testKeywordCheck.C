@@ -121,13 +121,16 @@ TEST(keywordCheck, unknownKeyword)
             "unknown entry 'maxIterr' in 'coupling'",
             "did you mean 'maxIter'?",
             "(scheme maxIter tolerance velocityScale onNonConvergence)",
-            "constant/fsiProperties.coupling"
+            "constant/fsiProperties"
         }
     )
     {
         EXPECT_NE(msg.find(part), std::string::npos)
             << "no \"" << part << "\" in: " << msg;
     }
+    // the file the keyword is written in (fix19g, adv50b k05: was the
+    // sub-dictionary's name as a file, constant/fsiProperties.coupling)
+    EXPECT_EQ(msg.find("fsiProperties.coupling"), std::string::npos) << msg;
     // FoamFile is valid at the top of a file only
     EXPECT_NE(errorOf([&]{ foamTools::checkKeywords(top, {}); }), "");
 }

@@ -6,6 +6,7 @@ calibrateCell - take the lock, refusing a live one, replacing a stale one;
 their lock is one a solver's caseLock sees as live (the process's comm
 name is the tool's, which begins the lock's executable)."""
 import os
+import shutil
 import socket
 import subprocess
 import sys
@@ -241,6 +242,51 @@ class LockOnAFullDisk(TempDirTestCase):
                 with caseLock.held(self.tmp, "planeWave"):
                     pass
         self.assertFalse(os.path.exists(os.path.join(self.tmp, ".runLock")))
+
+
+class RunSeenThroughABindMount(LiveLockTestCase):
+    """adv50a k10 (d): a run in the case seen through a bind mount (a
+    container's view) wrote its lock with the bind path; the lock was
+    judged stale as "running another case" by path text and an Allclean
+    removed the results under the running solver. The case is judged by
+    its directory's identity."""
+
+    def testLiveRunThroughBindIsNotStale(self):
+        if shutil.which("unshare") is None or subprocess.run(
+                ["unshare", "-rm", "true"], capture_output=True).returncode:
+            self.skipTest("no unshare -rm (user and mount namespaces)")
+        bind = os.path.join(self.tmp, "bind")
+        os.makedirs(bind)
+        # sleep in the case through the bind path, in its own namespace
+        p = subprocess.Popen(
+            ["unshare", "-rm", "sh", "-c",
+             'mount --bind "$0" "$1" && cd "$1" && exec sleep 60',
+             self.case, bind])
+        self.addCleanup(lambda: (p.kill(), p.wait()))
+        for _ in range(100):
+            try:
+                if os.readlink("/proc/%d/cwd" % p.pid) == bind:
+                    break
+            except OSError:
+                pass
+            time.sleep(0.05)
+        else:
+            self.skipTest("the namespace's sleep did not start")
+        with open(self.case + "/.runLock", "w") as f:
+            f.write("pid %d\nhost %s\nexecutable sleep\nstarted now\n"
+                    "case %s\n" % (p.pid, socket.gethostname(), bind))
+        h = caseLock.read(self.case + "/.runLock")
+        self.assertFalse(caseLock.stale(h, self.case))
+        with self.assertRaisesRegex(caseLock.CaseLockError,
+                                    r"in use by sleep \(process %d" % p.pid):
+            caseLock.checkFree(self.case, "planeWave")
+        # a process in another directory is running another case
+        other = os.path.join(self.tmp, "other")
+        os.makedirs(other)
+        q = subprocess.Popen(["sleep", "60"], cwd=other)
+        self.addCleanup(lambda: (q.kill(), q.wait()))
+        h["pid"] = q.pid
+        self.assertTrue(caseLock.stale(h, self.case))
 
 
 class UnderItsAllrun(LiveLockTestCase):

@@ -5,10 +5,139 @@
 #include "subDict.H"
 #include "keywordCheck.H"
 
+#include <cfenv>
 #include <cmath>
 #include <cstdlib>
+#include <string>
+#include <utility>
+#include <vector>
 
 using Foam::constant::mathematical::pi;
+
+namespace
+{
+
+// A FatalIOError at the file and line entry key of dict is written in (an
+// included cellMeshDict.allrun's line; was the dictionary's lines "from
+// line 17 to line 43" of cellMeshDict: adv50b k01, k02)
+Foam::OSstream& entryError
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const char* function
+)
+{
+    Foam::fileName file;
+    Foam::label line = 0;
+    if
+    (
+        !Foam::foamTools::keywordCheckDetail::entryPlace(dict, key, file, line)
+    )
+    {
+        return Foam::FatalIOError(function, __FILE__, __LINE__, dict);
+    }
+    return Foam::FatalIOError(function, __FILE__, __LINE__, file, line);
+}
+
+// Upper bound of cellDiameter and cellHeight, 1 mm: a larger cell is a
+// length given in um, not m
+const Foam::scalar maxCellLength = 1e-3;
+
+// Lower bound, 0.1 um (open): a smaller cell is a length given in another
+// unit, and its curvature leaves no room for the membrane (adv50a: a
+// cellDiameter of 1e-200 m was refused as "membraneThickness ... outside
+// the valid range (0, 0) m", the entry given not named)
+const Foam::scalar minCellLength = 1e-7;
+
+// The valid ranges of the numbers of system/cellMeshDict, as the readers
+// of cellGeometry, fluidBox and hexFluidMesh check them (a bound that is
+// another entry named by it), for the scan of the numbers
+// (foamTools::checkNumbers), which names an entry's range and unit for a
+// value OpenFOAM's reader would not take as written (1e-320, 1e400; was:
+// the reader's limits only, fix19f's list). scope: the sub-dictionaries
+// ({}, {"fluid"}, {"fluid", "hexCoeffs"})
+std::string cellMeshDictRange
+(
+    const std::string& dictName,
+    const std::vector<std::string>& scope,
+    const std::string& key
+)
+{
+    if (dictName != "cellMeshDict" || scope.size() > 2)
+    {
+        return std::string();
+    }
+    std::string where;
+    for (const std::string& s : scope)
+    {
+        where += (where.empty() ? "" : "/") + s;
+    }
+    const std::string length
+    (
+        "(" + Foam::foamTools::numberText(minCellLength) + ", "
+      + Foam::foamTools::numberText(maxCellLength) + "] m"
+    );
+    const std::string size("(0, cellHeight] m");
+    static const std::vector<std::pair<std::string, std::string>> none;
+    const std::vector<std::pair<std::string, std::string>> rows
+    (
+        where.empty()
+      ? std::vector<std::pair<std::string, std::string>>
+        {
+            {"cellDiameter", length}, {"cellHeight", length},
+            {"nucleusVolumeFraction", "[0.001, 1)"},
+            {
+                "membraneThickness",
+                "(0, the smallest radius of curvature of the cell surface) m"
+            },
+            {"membraneLayers", "[1, 20]"},
+            {"nucleusSize", size}, {"cytoplasmSize", size},
+            {"membraneSize", size}, {"azimuthSize", size},
+            {"contactRadius", "[0, cellDiameter/2] m"},
+            {"contactSize", size}, {"contactDepth", size},
+            {"maxElements", "[1, 1000000000]"}
+        }
+      : where == "fluid"
+      ? std::vector<std::pair<std::string, std::string>>
+        {
+            {
+                "boxSize",
+                "(the larger of cellDiameter and cellHeight, 0.01) m"
+            },
+            {"nearSize", size},
+            {"farSize", "[nearSize, boxSize/4] m"},
+            {"growthDistance", "[nearSize, boxSize] m"},
+            {"wedgeAngle", "[0.01, 10] deg"},
+            {"columnSize", "(0, farSize] m"},
+            {"columnRadius", "(0, boxSize/2] m"},
+            {"maxCells", "[1, 1000000000]"},
+            {"height", "(the top of the cell or the inner box, boxSize] m"}
+        }
+      : where == "fluid/hexCoeffs"
+      ? std::vector<std::pair<std::string, std::string>>
+        {
+            {"axialSize", "(0, farSize] m"},
+            {"lateralSize", "(0, farSize] m"},
+            {"innerMargin", "[nearSize, the gap beside and above the cell) m"},
+            {"topRounding", "[5, 100]"},
+            {"maxCells", "[1, 1000000000]"}
+        }
+      : none
+    );
+    for (const auto& row : rows)
+    {
+        if (row.first == key)
+        {
+            return row.second;
+        }
+    }
+    return std::string();
+}
+
+const bool cellMeshDictRangeAdded =
+    Foam::foamTools::addScanRange(cellMeshDictRange);
+
+} // End anonymous namespace
 
 const Foam::Enum<Foam::cellGeometry::meshMode>
 Foam::cellGeometry::meshModeNames
@@ -99,12 +228,15 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     );
     if (smoothing_ != structuredSmoothing::none && !structured())
     {
-        FatalIOErrorInFunction(dict)
+        entryError(dict, "structuredSmoothing", FUNCTION_NAME)
             << "entry 'structuredSmoothing' = "
-            << structuredSmoothingNames[smoothing_] << " needs a structured "
-            << "mesh (meshType structured; here unstructured: gmsh's "
-            << "section); valid value with meshType unstructured: none"
-            << exit(FatalIOError);
+            << structuredSmoothingNames[smoothing_]
+            << foamTools::givenIn(dict, "structuredSmoothing").c_str()
+            << " needs a structured mesh (meshType structured; here "
+            << "unstructured"
+            << foamTools::givenIn(dict, "meshType").c_str()
+            << ": gmsh's section); valid value with meshType unstructured: "
+            << "none" << exit(FatalIOError);
     }
     shape_ = foamTools::readEnumOrDefault
     (
@@ -120,10 +252,13 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
      && shape_ != nucleusShape::scaledCell
     )
     {
-        FatalIOErrorInFunction(dict)
-            << "entry 'structuredSmoothing' = elliptic is available for "
-            << "nucleusShape scaledCell only (here "
-            << nucleusShapeNames[shape_] << ": its C-shaped cytoplasm block"
+        entryError(dict, "structuredSmoothing", FUNCTION_NAME)
+            << "entry 'structuredSmoothing' = elliptic"
+            << foamTools::givenIn(dict, "structuredSmoothing").c_str()
+            << " is available for nucleusShape scaledCell only (here "
+            << nucleusShapeNames[shape_]
+            << foamTools::givenIn(dict, "nucleusShape").c_str()
+            << ": its C-shaped cytoplasm block"
             << " distorts when smoothed); valid value here: none"
             << exit(FatalIOError);
     }
@@ -134,15 +269,15 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
         fluidDict_ = *fluid;
     }
 
-    // Upper bound 1 mm: a larger cell is a length given in um, not m
-    const scalar maxLength = 1e-3;
+    // Upper bound 1 mm (maxCellLength: the scan's range too)
+    const scalar maxLength = maxCellLength;
     a_ = 0.5*foamTools::readInRange<scalar>
     (
-        dict, "cellDiameter", "m", 0, maxLength, false
+        dict, "cellDiameter", "m", minCellLength, maxLength, false
     );
     H_ = foamTools::readInRange<scalar>
     (
-        dict, "cellHeight", "m", 0, maxLength, false
+        dict, "cellHeight", "m", minCellLength, maxLength, false
     );
     // Lower bound 1e-3: a nucleus a tenth of the cell across at least
     // (1e-250 was gmsh's failure, "nothing written"; adv pass cm18)
@@ -295,17 +430,28 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
         dict, "maxElements", "", 1, 1000000000, true, 1000000
     );
     const label maxElements = maxElements_;
-    if (minimumElements() > maxElements)
+    // The estimate with the floating-point traps held: sizes the reader
+    // takes (1e-200 m) make it overflow or divide by an underflowed 0
+    // (adv50a k11: sigFpe, exit 136, before any message); beyond a double
+    // it is any count above maxElements
+    scalar estimate = 0;
+    {
+        std::fenv_t env;
+        std::feholdexcept(&env);
+        estimate = minimumElements();
+        std::feclearexcept(FE_ALL_EXCEPT);
+        std::fesetenv(&env);
+    }
+    if (!std::isfinite(estimate) || estimate > maxElements)
     {
         // 3 digits, or the least whole count when those would not read
         // more than maxElements (adv47b f46: 183.4 printed "at least 183
         // elements, more than maxElements 183")
         const std::string count
         (
-            foamTools::countAboveText
-            (
-                std::ceil(minimumElements()), maxElements, 3
-            )
+            std::isfinite(estimate)
+          ? foamTools::countAboveText(std::ceil(estimate), maxElements, 3)
+          : std::string("1e+300 (beyond any count)")
         );
         FatalIOErrorInFunction(dict)
             << "The element sizes ask for at least "
@@ -334,8 +480,9 @@ Foam::cellGeometry::cellGeometry(const fileName& dictFile)
     gap_ = nucleusGap();
     if (!(gap_ > 0))
     {
-        FatalIOErrorInFunction(dict)
-            << "nucleusVolumeFraction = " << f_ << ": the nucleus ("
+        entryError(dict, "nucleusVolumeFraction", FUNCTION_NAME)
+            << "nucleusVolumeFraction = "
+            << foamTools::numberText(f_).c_str() << ": the nucleus ("
             << nucleusShapeNames[shape_] << " of diameter " << 2*an()
             << " m and height " << nucleusHeight() << " m) is not inside "
             << "the cell: it reaches " << -gap_ << " m into the membrane "

@@ -22,6 +22,8 @@ Usage
 \*---------------------------------------------------------------------------*/
 
 #include <cerrno>
+#include <new>
+#include <stdexcept>
 #include <cstring>
 #include <unistd.h>
 #include "argList.H"
@@ -110,6 +112,10 @@ int main(int argc, char *argv[])
     gmsh::initialize();
     gmsh::option::setNumber("General.Terminal", 1);
     gmsh::option::setNumber("General.Verbosity", 2);
+    // A request the system refuses is a std::bad_alloc, caught below and
+    // named (OpenFOAM's new handler aborted: adv50a k05 (c), a structured
+    // mesh's points under a memory limit, SIGABRT)
+    std::set_new_handler(nullptr);
     try
     {
         cellMesher mesher(geom);
@@ -143,6 +149,28 @@ int main(int argc, char *argv[])
             Info<< "Written " << fluidFile << " (gmsh 2.2 for gmshToFoam,"
                 << " coordinates in m)" << endl;
         }
+    }
+    catch (const std::bad_alloc& e)
+    {
+        FatalErrorInFunction
+            << "the mesh needs more memory than the system gives this "
+            << "process (" << e.what() << ": nucleusSize "
+            << geom.nucleusSize() << " m, cytoplasmSize "
+            << geom.cytoplasmSize() << " m, membraneSize "
+            << geom.membraneSize() << " m, maxElements "
+            << geom.maxElements() << "; " << dictFile << "). Nothing was "
+            << "written: larger sizes, a smaller maxElements, or more "
+            << "memory" << exit(FatalError);
+    }
+    catch (const std::length_error& e)
+    {
+        FatalErrorInFunction
+            << "the mesh asks for a list longer than a list can hold ("
+            << e.what() << ": nucleusSize " << geom.nucleusSize()
+            << " m, cytoplasmSize " << geom.cytoplasmSize()
+            << " m, membraneSize " << geom.membraneSize() << " m; "
+            << dictFile << "). Nothing was written: larger sizes"
+            << exit(FatalError);
     }
     catch (const std::exception& e)
     {

@@ -7,6 +7,7 @@
 #include "mshFile.H"
 #include "vector.H"
 #include <gmsh.h>
+#include <cfenv>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -159,6 +160,20 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
     }
     else
     {
+        // kept by design (a case switches the type alone), but said: its
+        // entries do not shape these tetrahedra (adv50b k10 (a): oGrid
+        // orthogonal meshed as tetrahedra without a word)
+        if (const dictionary* h = d.findDict("hexCoeffs", keyType::LITERAL))
+        {
+            std::string keys;
+            for (const entry& e : *h)
+            {
+                keys += (keys.empty() ? "" : " ") + std::string(e.keyword());
+            }
+            Info<< "Note: fluid type " << type << ": the sub-dictionary "
+                << "hexCoeffs (" << keys.c_str() << ") is not used; it "
+                << "shapes the water of type hex only" << nl << endl;
+        }
         if (d.found("height"))
         {
             // The tetrahedra: at least one farSize of water above the cell
@@ -394,12 +409,40 @@ void Foam::fluidBox::readHex(const dictionary& d)
     );
     // A lower bound first, the column above the inner box alone: a tiny
     // size must be refused before its grid lines are allocated
-    const scalar lower = (s.quarter ? 1 : 4)*sqr((a + s.margin)/s.lateralSize)
-        *(height_ - H - s.margin)/s.axialSize;
+    // (with the traps held: sizes of 1e-200 m overflow it, adv50a k11's
+    // class; beyond a double it is any count above maxCells)
+    scalar lower = 0;
+    {
+        std::fenv_t env;
+        std::feholdexcept(&env);
+        lower = (s.quarter ? 1 : 4)*sqr((a + s.margin)/s.lateralSize)
+            *(height_ - H - s.margin)/s.axialSize;
+        std::feclearexcept(FE_ALL_EXCEPT);
+        std::fesetenv(&env);
+        if (!std::isfinite(lower))
+        {
+            lower = 1e300;
+        }
+    }
     if (lower > maxCells)
     {
-        FatalIOErrorInFunction(d)
-            << "the hexahedral water would have at least " << lower
+        // the least whole count, placed at maxCells' own file and line
+        // when given (adv50b k46: "at least 11073.1 cells", placed at
+        // cellMeshDict.fluid.hexCoeffs)
+        fileName file;
+        label line = 0;
+        const bool placed =
+            foamTools::keywordCheckDetail::entryPlace
+            (
+                d, "maxCells", file, line
+            );
+        (
+            placed
+          ? FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file, line)
+          : FatalIOErrorInFunction(d)
+        )
+            << "the hexahedral water would have at least "
+            << foamTools::countAboveText(std::ceil(lower), maxCells).c_str()
             << " cells, more than maxCells " << maxCells << " (coarser "
             << "axialSize, lateralSize or farSize, or a larger maxCells)"
             << exit(FatalIOError);

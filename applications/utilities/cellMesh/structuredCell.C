@@ -3,19 +3,21 @@
 #include <gmsh.h>
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 using Foam::constant::mathematical::pi;
 
 namespace
 {
 
-// The elements of the structured mesh once the next block is added, n,
-// against maxElements: refused before the block is built (adv49b i03: a
-// quarter with azimuthSize 1e-8 built hexahedra for 900 s, 2 GB and
-// growing; i02, i55: counts above maxElements written). The blocks' counts
-// couple across the regions, so the bound from the sizes checked before
-// meshing (cellGeometry) can be far below them; the blocks built so far
-// and the next one are a lower bound of the whole
+// The elements of the whole structured mesh, n, counted in closed form
+// before any block is made (structuredCell::countBeforeBuilding), against
+// maxElements (adv49b i03: a quarter with azimuthSize 1e-8 built hexahedra
+// for 900 s, 2 GB and growing; i02, i55: counts above maxElements
+// written; i55 (d): refused block by block only after 116 s and 1.43 GB,
+// with a partial count). The blocks' counts couple across the regions,
+// so the bound from the sizes checked before meshing (cellGeometry) can
+// be far below them
 void refuseAboveMaxElements
 (
     const Foam::cellGeometry& geom,
@@ -29,9 +31,10 @@ void refuseAboveMaxElements
         return;
     }
     FatalErrorInFunction
-        << "the structured mesh (meshType structured) has at least "
-        << double(n) << " " << what << " (the blocks built so far and the "
-        << "next one), more than maxElements " << geom.maxElements()
+        << "the structured mesh (meshType structured) would have "
+        << std::to_string(n).c_str() << " "
+        << what << " (counted before any is made), more than maxElements "
+        << geom.maxElements()
         << " (" << geom.file().c_str() << ")"
         << ": its blocks' counts couple across the regions (a fine "
         << "membraneSize or azimuthSize refines the blocks beside them), "
@@ -280,10 +283,6 @@ void Foam::structuredCell::revolve(const block2D& b, int region)
 {
     // Azimuth nodes: those of the butterfly's outer circle
     const label nPhi = quarter_ ? nSq_ : 4*nSq_;
-    refuseAboveMaxElements
-    (
-        g_, hexes_.size() + std::size_t(nPhi)*b.ni*b.nj, "hexahedra"
-    );
     std::vector<std::array<vec, 8>> h;
     for (label l = 0; l < nPhi; ++l)
     {
@@ -358,16 +357,6 @@ void Foam::structuredCell::column()
     // Vertical lines: every level interval
     const label k4 =
         nGapBottom_ + nRingBottom_ + nCoreV_ + nRingN_ + nGap_ + g_.layers();
-    // the disc's columns (a quarter of them in a quarter), before any is
-    // built
-    refuseAboveMaxElements
-    (
-        g_,
-        hexes_.size()
-      + std::size_t(k4)*(std::size_t(nSq_)*nSq_ + 4*std::size_t(nSq_)*nRing_)
-       /(quarter_ ? 4 : 1),
-        "hexahedra"
-    );
     for (const block2D& b : disc)
     {
         std::vector<std::vector<scalar>> z(b.p.size());
@@ -422,10 +411,6 @@ int Foam::structuredCell::levelRegion(label k) const
 
 void Foam::structuredCell::addQuads(const block2D& b, int region)
 {
-    refuseAboveMaxElements
-    (
-        g_, quads_.size() + std::size_t(b.ni)*b.nj, "quadrilaterals"
-    );
     std::vector<std::array<vec2, 4>> q;
     double sum = 0;
     for (label j = 0; j < b.nj; ++j)
@@ -760,6 +745,16 @@ void Foam::structuredCell::smoothSection()
             X[nm.first][k] = X[nm.second][k];
         }
         ++smoothSweeps_;
+        // progress, so that a long smoothing is not silence (adv50b k08:
+        // 95,797 sweeps, 74 s CPU, no line between the summary and the
+        // end)
+        if (smoothSweeps_ % 5000 == 0)
+        {
+            Info<< "structuredSmoothing elliptic: sweep " << smoothSweeps_
+                << " of at most " << maxSweeps << ", largest move "
+                << smoothLastMove_ << " m (stops below " << 1e-7*h
+                << " m), " << moving.size() << " nodes" << endl;
+        }
     } while (smoothLastMove_ > 1e-7*h && smoothSweeps_ < maxSweeps);
 
     // Every element keeps its orientation
@@ -799,11 +794,54 @@ void Foam::structuredCell::smoothSection()
 }
 
 
+Foam::label Foam::structuredCell::columnElements() const
+{
+    return max(label(1), label(std::round(rc_/firstWidth_)));
+}
+
+
+void Foam::structuredCell::countBeforeBuilding
+(
+    const std::vector<std::pair<label, label>>& blocks
+)
+{
+    // the r-z blocks' elements
+    std::size_t section = 0;
+    for (const auto& b : blocks)
+    {
+        section += std::size_t(b.first)*std::size_t(b.second);
+    }
+    // the column's level intervals (levels())
+    const std::size_t k4 =
+        std::size_t(nGapBottom_) + nRingBottom_ + nCoreV_ + nRingN_ + nGap_
+      + g_.layers();
+    if (section_)
+    {
+        // the r-z blocks and the column's (sectionColumn)
+        predicted_ = section + std::size_t(columnElements())*k4;
+    }
+    else
+    {
+        // each r-z block revolved over the azimuth (revolve) and the
+        // butterfly disc's columns, a quarter of them in a quarter
+        // (column)
+        const std::size_t nSq = std::size_t(nSq_);
+        predicted_ =
+            std::size_t(quarter_ ? nSq : 4*nSq)*section
+          + k4*(nSq*nSq + 4*nSq*std::size_t(nRing_))/(quarter_ ? 4 : 1);
+    }
+    refuseAboveMaxElements
+    (
+        g_, predicted_, section_ ? "quadrilaterals" : "hexahedra"
+    );
+}
+
+
 void Foam::structuredCell::sectionColumn()
 {
     // Vertical node lines at r_i = i r_c/nCol with the column's levels:
     // one r-z block per region's range of level intervals
-    nCol_ = max(label(1), label(std::round(rc_/firstWidth_)));
+    nCol_ = columnElements();
     std::vector<std::vector<scalar>> z(nCol_ + 1);
     for (label i = 0; i <= nCol_; ++i)
     {
@@ -1000,11 +1038,19 @@ Foam::scalar Foam::structuredCell::closestNucleusAngle(const vec2& x) const
         const vec2 y = nucleusPoint(p);
         return sqr(y[0] - x[0]) + sqr(y[1] - x[1]);
     };
+    // the best distance kept, not computed again at every candidate (the
+    // same choices; half the time of a fine membrane's count, adv50a k05)
     scalar best = 0;
+    scalar dBest = d2(best);
     for (int k = 0; k <= 4000; ++k)
     {
         const scalar p = pi*k/4000;
-        if (d2(p) < d2(best)) best = p;
+        const scalar d = d2(p);
+        if (d < dBest)
+        {
+            best = p;
+            dBest = d;
+        }
     }
     scalar lo = best - pi/4000, hi = best + pi/4000;
     for (int it = 0; it < 60; ++it)
@@ -1174,6 +1220,13 @@ void Foam::structuredCell::centredSections()
     nGap_ = atLeastOne(thick/hC);
     nGapBottom_ = nGap_;
     nRingBottom_ = nRingN_;
+
+    // the whole mesh's elements, before any block is made
+    countBeforeBuilding
+    ({
+        {mB, nCoreV_}, {mB, nRingN_}, {nCoreV_, nRingN_}, {mB, nRingN_},
+        {T, nGap_}, {nM, g_.layers()}
+    });
 
     // Column levels at r_c (shared by the left sides of the r-z blocks)
     const std::vector<scalar> zc = levels(rc_);
@@ -1349,6 +1402,13 @@ void Foam::structuredCell::scaledSections()
     }
     nGap_ = atLeastOne(thick/hC);
 
+    // the whole mesh's elements, before any block is made
+    countBeforeBuilding
+    ({
+        {mB, nCoreV_}, {nCoreV_, nRingN_}, {mB, nRingN_}, {T, nGap_},
+        {T, g_.layers()}
+    });
+
     // Column levels at r_c (shared by the left sides of the r-z blocks)
     const std::vector<scalar> zc = levels(rc_);
     const auto colPt = [&](label k) { return vec2{rc_, zc[k]}; };
@@ -1415,7 +1475,8 @@ Foam::structuredCell::structuredCell(const cellGeometry& geom)
     smoothLastMove_(0),
     smoothFree_(0),
     smoothSliding_(0),
-    smoothBoundary_(0)
+    smoothBoundary_(0),
+    predicted_(0)
 {
     const scalar a = g_.a(), an = g_.an();
     rc_ = columnFraction*an;
@@ -1464,6 +1525,17 @@ Foam::structuredCell::structuredCell(const cellGeometry& geom)
     {
         column();
         classifyBoundary();
+    }
+    // the closed form is the mesh's count (the refusal above relies on it)
+    const std::size_t made = section_ ? quads_.size() : hexes_.size();
+    if (made != predicted_)
+    {
+        FatalErrorInFunction
+            << "the structured mesh has " << std::to_string(made).c_str()
+            << " elements, its count before building "
+            << std::to_string(predicted_).c_str()
+            << ": the closed-form count of structuredCell is wrong (a bug:"
+            << " please report it with the cellMeshDict)" << exit(FatalError);
     }
 }
 

@@ -34,6 +34,7 @@ import sys
 import numpy as np
 
 from neuronFsi import planeWave as pw
+from neuronFsi.postProcessing import ColumnFileError
 
 
 def firstAfter(t, p, t0, level):
@@ -53,9 +54,26 @@ def main():
     ap.add_argument("--foot", type=float, default=55e6)
     ap.add_argument("--series", type=float, nargs=3, default=None)
     a = ap.parse_args()
-    ref = pw.readReference(os.path.join(a.case, "postProcessing",
-                                        "planeWave", "0", "reference.dat"))
-    amplitude, duration = pw.pulseShape(pw.appliedPressure(a.case))
+    # a folder that is no case, or a case planeWave never ran on: one
+    # line, no traceback (adv50b k20)
+    if not os.path.isfile(os.path.join(a.case, "system", "controlDict")):
+        print("incidentWindow.py: %s is not a case (no system/controlDict)"
+              % a.case, file=sys.stderr)
+        return 1
+    refFile = os.path.join(a.case, "postProcessing", "planeWave", "0",
+                           "reference.dat")
+    if not os.path.isfile(refFile):
+        print("incidentWindow.py: %s: no planeWave reference (%s): write it "
+              "with planeWave -case %s" % (a.case, refFile, a.case),
+              file=sys.stderr)
+        return 1
+    try:
+        ref = pw.readReference(refFile)
+        amplitude, duration = pw.pulseShape(pw.appliedPressure(a.case))
+        probes = list(pw.caseProbes(a.case))
+    except (pw.PlaneWaveError, ColumnFileError, OSError) as e:
+        print("incidentWindow.py: %s" % e, file=sys.stderr)
+        return 1
     c0 = 1450.0     # [m/s] planeWave.measures' default, as planeWave uses
     print("# probe  z[um]  window[ns]  peakIncident scene/ref [MPa] (err %%) "
           "at centre [ns] | window less 0.5 ns: scene/ref (err %%) | "
@@ -63,7 +81,7 @@ def main():
           "echo at %g MPa, at %g MPa: scene/ref [ns] (diff)"
           % (a.level/1e6, a.foot/1e6))
     series = []
-    for name, z, t, p in pw.caseProbes(a.case):
+    for name, z, t, p in probes:
         if name.startswith("solid "):
             m = ref.material.get(min(ref.material, key=lambda h: abs(h - z)))
             tr, pr = ref.t, m["p"]
@@ -71,6 +89,14 @@ def main():
             k = int(np.argmin(np.abs(np.asarray(ref.heights) - z)))
             tr, pr = ref.t, ref.p[:, k]
         ta = pw.arrival(tr, pr, amplitude)
+        if ta is None:
+            # the wave has not reached the probe's height in the 1D answer
+            # by the run's end (adv50b k21: a TypeError): said, the other
+            # probes measured
+            print("%s  %.3f  no arrival of the incident wave in the "
+                  "reference by t = %.2f ns: not measured"
+                  % (name.replace(" ", "_"), z*1e6, tr[-1]*1e9))
+            continue
         echo = 2*z/(1.1*c0)
         end = ta + min(duration, echo) - 0.5e-9
         row = [name.replace(" ", "_"), "%.3f" % (z*1e6),

@@ -198,6 +198,25 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
     {
         Info<< "Restarting from the conservative state rho, rhoU, rhoE of"
             << " time " << t << " s" << nl << endl;
+        // The exact continuation needs the state and uniform/time (its
+        // deltaT) written with 17 digits: with fewer it is another run,
+        // said (adv50b k58: writePrecision 3, ascii, 2e-09/p 39 MPa off
+        // the uninterrupted run, exit 0 without a word)
+        const label digits = IOstream::defaultPrecision();
+        if (digits < 17)
+        {
+            const bool ascii =
+                mesh.time().writeFormat() == IOstream::ASCII;
+            WarningInFunction
+                << "restarting from time " << t << " s of a case written "
+                << "with writePrecision " << digits << " (system/"
+                << "controlDict, writeFormat "
+                << (ascii ? "ascii" : "binary") << "): "
+                << (ascii ? "its fields and " : "") << "uniform/time (the "
+                << "step deltaT) hold " << digits << " digits, so this "
+                << "run is not the exact continuation of the one that "
+                << "wrote them (writePrecision 17 is)" << nl << endl;
+        }
 
         const volScalarField rhoWritten
         (
@@ -361,34 +380,67 @@ void Foam::conservativeFluid::checkRestartState
     {
         return;
     }
-    if (bad < 0)
+    // This rank's text (empty: its cells are good)
+    OStringStream msg;
+    if (bad >= 0)
     {
-        FatalErrorInFunction
-            << "the conservative state of the restart time "
-            << mesh_.time().timeName() << " s is no state of the fluid on "
-            << "another rank (its message names the cell and the files)."
-            << " Nothing was run: restart from an earlier time, or start "
-            << "anew" << exit(FatalError);
-    }
-    FatalErrorInFunction
-        << "the conservative state of the restart time "
-        << mesh_.time().timeName() << " s in cell " << bad << " (at "
-        << mesh_.C()[bad] << " m): rho = " << rho[bad] << " kg/m^3 ("
-        << rhoWritten.objectPath() << "), rhoU = " << rhoU[bad]
-        << " kg/(m^2 s), rhoE = " << rhoE[bad] << " J/m^3";
-    if (why.compare(0, 15, "the density rho") != 0)
-    {
-        FatalError << " (U = " << Ubad << " m/s";
-        if (why.compare(0, 16, "the velocity rho") != 0)
+        msg << "the conservative state of the restart time "
+            << mesh_.time().timeName() << " s in cell " << bad << " (at "
+            << mesh_.C()[bad] << " m): rho = " << rho[bad] << " kg/m^3 ("
+            << rhoWritten.objectPath() << "), rhoU = " << rhoU[bad]
+            << " kg/(m^2 s), rhoE = " << rhoE[bad] << " J/m^3";
+        if (why.compare(0, 15, "the density rho") != 0)
         {
-            FatalError << ", e = " << e[bad] << " J/kg";
+            msg << " (U = " << Ubad << " m/s";
+            if (why.compare(0, 16, "the velocity rho") != 0)
+            {
+                msg << ", e = " << e[bad] << " J/kg";
+            }
+            msg << ")";
         }
-        FatalError << ")";
+        msg << ": " << why.c_str() << "; the files rho, rhoU, rhoE of the "
+            << "time were edited or damaged after the run wrote them";
+    }
+    // In parallel the master prints every bad rank's text (adv50a k02
+    // (c), (d): the good rank's "no state of the fluid on another rank"
+    // only, the bad rank ended by its abort before it printed); the other
+    // ranks wait for its stop
+    List<string> texts(Pstream::nProcs());
+    texts[Pstream::myProcNo()] = msg.str();
+    if (Pstream::parRun())
+    {
+        Pstream::gatherList(texts);
+        if (!Pstream::master())
+        {
+            for (int i = 0; i < 600; ++i)
+            {
+                ::sleep(1);
+            }
+            FatalErrorInFunction
+                << "The master rank did not stop the run: its message is "
+                << "the one that says why." << exit(FatalError);
+        }
+    }
+    FatalErrorInFunction;
+    label n = 0;
+    forAll(texts, proci)
+    {
+        if (texts[proci].empty())
+        {
+            continue;
+        }
+        if (n++)
+        {
+            FatalError << nl << "    ";
+        }
+        if (Pstream::parRun())
+        {
+            FatalError << "rank " << proci << ": ";
+        }
+        FatalError << texts[proci].c_str();
     }
     FatalError
-        << ": " << why.c_str() << "; the files rho, rhoU, rhoE of the time"
-        << " were edited or damaged after the run wrote them. Nothing was "
-        << "run: restart from an earlier time, or start anew"
+        << ". Nothing was run: restart from an earlier time, or start anew"
         << exit(FatalError);
 }
 

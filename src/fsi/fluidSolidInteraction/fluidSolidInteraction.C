@@ -1,4 +1,5 @@
 #include "fluidSolidInteraction.H"
+#include "fsiRanges.H"
 #include "uniformState.H"
 #include "runLogFiles.H"
 #include "pointIOField.H"
@@ -491,10 +492,10 @@ Foam::fluidSolidInteraction::fluidSolidInteraction
     pointDisplacement_(nullptr),
     solidSubcycles_
     (
-        foamTools::readInRangeOrDefault<label>
+        fsiRanges::readOrDefault<label>
         (
-            foamTools::subDict(fsiProperties_, "coupling"),
-            "solidSubcycles", "", 1, 1000, true, 1
+            foamTools::subDict(fsiProperties_, "coupling"), "coupling",
+            "solidSubcycles", 1
         )
     ),
     wallWork_(0),

@@ -1,4 +1,5 @@
 #include "interfaceMap.H"
+#include "fsiRanges.H"
 #include "inputChecks.H"
 #include "mathematicalConstants.H"
 #include "unitConversion.H"
@@ -861,17 +862,16 @@ Foam::interfaceMap::interfaceMap
             << "solidFaceSet " << setName << " is not a face set of the"
             << " solid mesh; face sets: " << names << exit(FatalIOError);
     }
-    const scalar tol = foamTools::readInRangeOrDefault<scalar>
+    const scalar tol = fsiRanges::readOrDefault<scalar>
     (
-        dict, "mapTolerance", "", 0, foamTools::noUpperBound<scalar>(), false,
-        0.1
+        dict, "interface", "mapTolerance", 0.1
     );
     // Subtriangles per side of each fluid face triangle in the 3D force
     // quadrature (the pressure load's samples of the fluid pressure on the
     // solid faces); 1: the triangles' centroids
-    const label pressureQuadrature = foamTools::readInRangeOrDefault<label>
+    const label pressureQuadrature = fsiRanges::readOrDefault<label>
     (
-        dict, "pressureQuadrature", "", 1, 16, true, 1
+        dict, "interface", "pressureQuadrature", 1
     );
     if (axisymmetric_ && pressureQuadrature != 1)
     {

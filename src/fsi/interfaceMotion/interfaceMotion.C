@@ -1,4 +1,5 @@
 #include "interfaceMotion.H"
+#include "fsiRanges.H"
 #include "inputChecks.H"
 #include "pointIOField.H"
 #include "bitSet.H"
@@ -84,15 +85,13 @@ void Foam::interfaceMotion::checkEntries
     label& motionNearest
 )
 {
-    motionDistance = foamTools::readInRange<scalar>
+    motionDistance = fsiRanges::read<scalar>
     (
-        interfaceDict, "motionDistance", "m", 0,
-        foamTools::noUpperBound<scalar>(), false
+        interfaceDict, "interface", "motionDistance"
     );
-    motionNearest = foamTools::readInRangeOrDefault<label>
+    motionNearest = fsiRanges::readOrDefault<label>
     (
-        interfaceDict, "motionNearest", "", 1,
-        foamTools::noUpperBound<label>(), true, 8
+        interfaceDict, "interface", "motionNearest", 8
     );
 }
 

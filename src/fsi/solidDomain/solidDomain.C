@@ -1,4 +1,5 @@
 #include "solidDomain.H"
+#include "fsiRanges.H"
 #include "solidInput.H"
 #include "keywordCheck.H"
 #include "inputChecks.H"
@@ -22,6 +23,67 @@
 
 namespace
 {
+
+//- Entry key of dict as a point (x y z) of three finite numbers [m]; what:
+//  the entry's context in the message ("interfacePlaces", "probes: probe
+//  'p1'"). Anything else is a FatalIOError naming the entry as written
+//  (adv50b k30: "(1e-06 2e-06)" and "(nan 0 0)" got OpenFOAM's "Wrong
+//  token type - expected scalar value, found ... punctuation ')'")
+Foam::point readPoint
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const std::string& what
+)
+{
+    using namespace Foam;
+    const entry* e = dict.findEntry(key, keyType::LITERAL);
+    bool good = e && e->isStream();
+    point X(Zero);
+    if (good)
+    {
+        const ITstream& is = e->stream();
+        good =
+            is.size() == 5
+         && is[0].isPunctuation() && is[0].pToken() == token::BEGIN_LIST
+         && is[4].isPunctuation() && is[4].pToken() == token::END_LIST;
+        for (label k = 0; good && k < 3; ++k)
+        {
+            good = is[k + 1].isNumber() && std::isfinite(is[k + 1].number());
+            if (good)
+            {
+                X[k] = is[k + 1].number();
+            }
+        }
+    }
+    if (!good)
+    {
+        OStringStream text;
+        if (e && e->isStream())
+        {
+            const ITstream& is = e->stream();
+            forAll(is, i)
+            {
+                text << (i ? " " : "") << is[i];
+            }
+        }
+        else
+        {
+            text << (e ? "a sub-dictionary" : "missing");
+        }
+        fileName file;
+        label line = e ? e->startLineNumber() : 0;
+        if (!foamTools::keywordCheckDetail::entryPlace(dict, key, file, line))
+        {
+            file = dict.name();
+        }
+        FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file, line)
+            << what.c_str() << ": entry '" << key << "' = '"
+            << text.str().c_str() << "' is not a point (x y z) of three "
+            << "finite numbers [m] (r-z: (r z 0))" << exit(FatalIOError);
+    }
+    return X;
+}
 
 //- Run f; a solid::SolidError (any std::exception) it throws stops the run
 //  naming the context and, when the input came from a dictionary entry
@@ -131,18 +193,17 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
     // bad value is named as the file's entry (the solver's own check names
     // its settings: 'safety', 'hourglass'); nan and inf with that range too
     // (adv42 g25: "valid range [-inf, inf)")
-    const auto fraction = [](const dictionary& d, const word& key,
-                             const bool zero, const scalar deflt)
+    const auto fraction = [](const dictionary& d, const word& scope,
+                             const word& key, const scalar deflt)
     {
-        return foamTools::readInRangeOrDefault<scalar>
-        (
-            d, key, "", 0, 1, zero, deflt, false
-        );
+        return fsiRanges::readOrDefault<scalar>(d, scope, key, deflt);
     };
     solid::ExplicitSettings set;
-    set.safety = fraction(dict_, "explicitSafety", false, 0.8);
-    set.hourglass = fraction(dict_, "hourglassViscosity", true, 0);
-    set.shearViscosity = fraction(dict_, "shearViscosity", true, 0);
+    set.safety = fraction(dict_, "solidProperties", "explicitSafety", 0.8);
+    set.hourglass =
+        fraction(dict_, "solidProperties", "hourglassViscosity", 0);
+    set.shearViscosity =
+        fraction(dict_, "solidProperties", "shearViscosity", 0);
     {
         // The filtered (scale-selective) form of that viscosity: yes/no,
         // or region (its neighbourhood averages within each region)
@@ -182,8 +243,11 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
         );
         for (const entry& e : hr)
         {
-            set.hourglassRegions[e.keyword()] =
-                fraction(hr, e.keyword(), true, 0);
+            set.hourglassRegions[e.keyword()] = fraction
+            (
+                hr, "solidProperties/hourglassViscosityRegions",
+                e.keyword(), 0
+            );
         }
     }
     // Volumetric law on the element dilatation (the Q1/P0 mean-dilatation
@@ -709,15 +773,17 @@ void Foam::solidDomain::setupProbes()
             foamTools::checkKeywords(d, {"point", "region", "radius"});
             // A ball probe's radius: the mean over the region within it
             // (0, the default: the point's recovered value)
-            const scalar radius = foamTools::readInRangeOrDefault<scalar>
+            const scalar radius = fsiRanges::readOrDefault<scalar>
             (
-                d, "radius", "m", 0, foamTools::noUpperBound<scalar>(),
-                true, 0
+                d, "solidProperties/probes", "radius", 0
             );
             addProbe
             (
                 e.keyword(),
-                d.get<point>("point"),
+                readPoint
+                (
+                    d, "point", "probes: probe '" + e.keyword() + "'"
+                ),
                 d.getOrDefault<word>("region", word::null),
                 d,
                 "probes",
@@ -743,9 +809,9 @@ void Foam::solidDomain::setupProbes()
         const Pair<word> regions(ip.get<Pair<word>>("regions"));
         // The fraction of the inner region's height, in (0, 1); nan, inf
         // named with the range (adv42 g25: OpenFOAM's "Wrong token type")
-        const scalar f = foamTools::readInRange<scalar>
+        const scalar f = fsiRanges::read<scalar>
         (
-            ip, "heightFraction", "-", 0, 1, false, false
+            ip, "solidProperties/interfaceProbe", "heightFraction"
         );
         // outer (the first of regions) or inner (the second), named with
         // the file, the line and the closest word (adv48b g39)
@@ -960,10 +1026,9 @@ void Foam::solidDomain::setupOutput()
 void Foam::solidDomain::setupPatches(const List<Pair<word>>& pairs)
 {
     const solid::Mesh& m = mesh();
-    patchLength_ = foamTools::readInRangeOrDefault<scalar>
+    patchLength_ = fsiRanges::readOrDefault<scalar>
     (
-        dict_, "interfacePatchLength", "m", 0,
-        foamTools::noUpperBound<scalar>(), false, 1e-6
+        dict_, "solidProperties", "interfacePatchLength", 1e-6
     );
     const scalar L = patchLength_;
     const wordList fluid
@@ -1033,7 +1098,7 @@ void Foam::solidDomain::setupPatches(const List<Pair<word>>& pairs)
                     << "dictionary, not a point (x y z) [m]"
                     << exit(FatalIOError);
             }
-            const vector X(pd.get<vector>(e.keyword()));
+            const vector X(readPoint(pd, e.keyword(), "interfacePlaces"));
             for (solid::InterfacePatch& ip : patches_)
             {
                 guarded(pd, "entry 'interfacePlaces'", [&]

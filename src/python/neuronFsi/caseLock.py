@@ -168,18 +168,27 @@ def _running(pid):
 
 
 def _runningCase(pid):
-    """The case a process works on: its -case option (relative to its
-    working directory), else that directory; links resolved; '' unknown."""
+    """The identity (st_dev, st_ino) of the case directory a process works
+    on: its -case option (relative to its working directory), else that
+    directory, as stat sees it through /proc/PID/cwd; None when unknown.
+    The identity, not the path: a run in the case seen through a bind
+    mount (a container's view) has another path for the same directory
+    (adv50a k10 (d): its lock taken for stale, an Allclean removed the
+    results under the running solver)."""
     try:
         with open("/proc/%d/cmdline" % pid, "rb") as f:
             argv = f.read().decode(errors="replace").split("\0")
-        d = os.readlink("/proc/%d/cwd" % pid)
+        d = "/proc/%d/cwd" % pid
+        for i in range(1, len(argv) - 1):
+            if argv[i] == "-case":
+                # an absolute path in the process's own root
+                c = argv[i + 1]
+                d = (os.path.join("/proc/%d/root" % pid, c.lstrip("/"))
+                     if c.startswith("/") else os.path.join(d, c))
+        st = os.stat(d)
     except OSError:
-        return ""
-    for i in range(1, len(argv) - 1):
-        if argv[i] == "-case":
-            d = os.path.join(d, argv[i + 1])
-    return os.path.realpath(d)
+        return None
+    return (st.st_dev, st.st_ino)
 
 
 def parent(pid):
@@ -235,7 +244,13 @@ def stale(h, case):
     if not running(h):
         return True
     its = _runningCase(h["pid"])
-    return bool(its) and its != os.path.realpath(case)
+    if its is None:
+        return False
+    try:
+        st = os.stat(case)
+    except OSError:
+        return False
+    return its != (st.st_dev, st.st_ino)
 
 
 @contextlib.contextmanager

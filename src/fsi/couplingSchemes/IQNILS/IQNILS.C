@@ -1,4 +1,5 @@
 #include "IQNILS.H"
+#include "fsiRanges.H"
 #include "addToRunTimeSelectionTable.H"
 #include "inputChecks.H"
 
@@ -16,17 +17,14 @@ Foam::IQNILS::IQNILS(const dictionary& dict)
     couplingScheme(dict),
     omega0_
     (
-        foamTools::readInRangeOrDefault<scalar>
+        fsiRanges::readOrDefault<scalar>
         (
-            dict, "initialRelaxation", "", 0, 1, false, 0.1
+            dict, "coupling", "initialRelaxation", 0.1
         )
     ),
     reuse_
     (
-        foamTools::readInRangeOrDefault<label>
-        (
-            dict, "reuse", "", 0, foamTools::noUpperBound<label>(), true, 0
-        )
+        fsiRanges::readOrDefault<label>(dict, "coupling", "reuse", 0)
     )
 {}
 

@@ -1,4 +1,5 @@
 #include "aitken.H"
+#include "fsiRanges.H"
 #include "addToRunTimeSelectionTable.H"
 #include "inputChecks.H"
 
@@ -14,9 +15,9 @@ Foam::aitken::aitken(const dictionary& dict)
     couplingScheme(dict),
     omega0_
     (
-        foamTools::readInRangeOrDefault<scalar>
+        fsiRanges::readOrDefault<scalar>
         (
-            dict, "initialRelaxation", "", 0, 1, false, 0.1
+            dict, "coupling", "initialRelaxation", 0.1
         )
     ),
     omega_(omega0_)

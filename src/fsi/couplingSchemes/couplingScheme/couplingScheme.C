@@ -1,6 +1,7 @@
 #include "couplingScheme.H"
 #include "error.H"
 #include "inputChecks.H"
+#include "fsiRanges.H"
 
 #include <cmath>
 
@@ -15,27 +16,23 @@ Foam::couplingScheme::couplingScheme(const dictionary& dict)
 :
     maxIter_
     (
-        foamTools::readInRangeOrDefault<label>
-        (
-            dict, "maxIter", "", 1, foamTools::noUpperBound<label>(), true, 30
-        )
+        fsiRanges::readOrDefault<label>(dict, "coupling", "maxIter", 30)
     ),
     tolerance_
     (
         // A relative residual: 0.1 already lets a pass with a tenth of
         // the interface velocity wrong count as converged; 1e3 made every
         // first pass converge, silently (issue 19)
-        foamTools::readInRangeOrDefault<scalar>
+        fsiRanges::readOrDefault<scalar>
         (
-            dict, "tolerance", "", 0, 0.1, false, 1e-6
+            dict, "coupling", "tolerance", 1e-6
         )
     ),
     velocityScale_
     (
-        foamTools::readInRangeOrDefault<scalar>
+        fsiRanges::readOrDefault<scalar>
         (
-            dict, "velocityScale", "m/s", 0,
-            foamTools::noUpperBound<scalar>(), false, 1e-2
+            dict, "coupling", "velocityScale", 1e-2
         )
     ),
     stopOnNonConvergence_(false),

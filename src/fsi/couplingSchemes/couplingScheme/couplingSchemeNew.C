@@ -1,4 +1,5 @@
 #include "couplingScheme.H"
+#include "fsiRanges.H"
 #include "error.H"
 #include "keywordCheck.H"
 #include "inputChecks.H"
@@ -26,17 +27,11 @@ Foam::autoPtr<Foam::couplingScheme> Foam::couplingScheme::New
     // until the scheme was switched; issue 19)
     if (dict.found("initialRelaxation"))
     {
-        foamTools::readInRange<scalar>
-        (
-            dict, "initialRelaxation", "", 0, 1, false
-        );
+        fsiRanges::read<scalar>(dict, "coupling", "initialRelaxation");
     }
     if (dict.found("reuse"))
     {
-        foamTools::readInRange<label>
-        (
-            dict, "reuse", "", 0, foamTools::noUpperBound<label>(), true
-        );
+        fsiRanges::read<label>(dict, "coupling", "reuse");
     }
     // One of the schemes' names, named with the file, the line and the
     // closest name (adv48b g39: OpenFOAM's "Unknown coupling scheme type
