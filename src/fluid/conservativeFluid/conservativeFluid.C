@@ -380,67 +380,34 @@ void Foam::conservativeFluid::checkRestartState
     {
         return;
     }
-    // This rank's text (empty: its cells are good)
-    OStringStream msg;
-    if (bad >= 0)
+    if (bad < 0)
     {
-        msg << "the conservative state of the restart time "
-            << mesh_.time().timeName() << " s in cell " << bad << " (at "
-            << mesh_.C()[bad] << " m): rho = " << rho[bad] << " kg/m^3 ("
-            << rhoWritten.objectPath() << "), rhoU = " << rhoU[bad]
-            << " kg/(m^2 s), rhoE = " << rhoE[bad] << " J/m^3";
-        if (why.compare(0, 15, "the density rho") != 0)
-        {
-            msg << " (U = " << Ubad << " m/s";
-            if (why.compare(0, 16, "the velocity rho") != 0)
-            {
-                msg << ", e = " << e[bad] << " J/kg";
-            }
-            msg << ")";
-        }
-        msg << ": " << why.c_str() << "; the files rho, rhoU, rhoE of the "
-            << "time were edited or damaged after the run wrote them";
+        FatalErrorInFunction
+            << "the conservative state of the restart time "
+            << mesh_.time().timeName() << " s is no state of the fluid on "
+            << "another rank (its message names the cell and the files)."
+            << " Nothing was run: restart from an earlier time, or start "
+            << "anew" << exit(FatalError);
     }
-    // In parallel the master prints every bad rank's text (adv50a k02
-    // (c), (d): the good rank's "no state of the fluid on another rank"
-    // only, the bad rank ended by its abort before it printed); the other
-    // ranks wait for its stop
-    List<string> texts(Pstream::nProcs());
-    texts[Pstream::myProcNo()] = msg.str();
-    if (Pstream::parRun())
+    FatalErrorInFunction
+        << "the conservative state of the restart time "
+        << mesh_.time().timeName() << " s in cell " << bad << " (at "
+        << mesh_.C()[bad] << " m): rho = " << rho[bad] << " kg/m^3 ("
+        << rhoWritten.objectPath() << "), rhoU = " << rhoU[bad]
+        << " kg/(m^2 s), rhoE = " << rhoE[bad] << " J/m^3";
+    if (why.compare(0, 15, "the density rho") != 0)
     {
-        Pstream::gatherList(texts);
-        if (!Pstream::master())
+        FatalError << " (U = " << Ubad << " m/s";
+        if (why.compare(0, 16, "the velocity rho") != 0)
         {
-            for (int i = 0; i < 600; ++i)
-            {
-                ::sleep(1);
-            }
-            FatalErrorInFunction
-                << "The master rank did not stop the run: its message is "
-                << "the one that says why." << exit(FatalError);
+            FatalError << ", e = " << e[bad] << " J/kg";
         }
-    }
-    FatalErrorInFunction;
-    label n = 0;
-    forAll(texts, proci)
-    {
-        if (texts[proci].empty())
-        {
-            continue;
-        }
-        if (n++)
-        {
-            FatalError << nl << "    ";
-        }
-        if (Pstream::parRun())
-        {
-            FatalError << "rank " << proci << ": ";
-        }
-        FatalError << texts[proci].c_str();
+        FatalError << ")";
     }
     FatalError
-        << ". Nothing was run: restart from an earlier time, or start anew"
+        << ": " << why.c_str() << "; the files rho, rhoU, rhoE of the time"
+        << " were edited or damaged after the run wrote them. Nothing was "
+        << "run: restart from an earlier time, or start anew"
         << exit(FatalError);
 }
 
