@@ -197,7 +197,8 @@ class AllcleanLock(TempDirTestCase):
 
     def testRefusedWhileARunGoesOn(self):
         case = os.path.join(self.tmp, "case")
-        os.makedirs(case)
+        # a case (Allclean refuses a folder without system/ since fix19g)
+        os.makedirs(os.path.join(case, "system"))
         src = os.path.join(ROOT, "tutorials", "blast",
                            "axisymmetricPreview", "Allclean")
         script = os.path.join(case, "Allclean")
