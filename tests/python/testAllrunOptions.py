@@ -95,10 +95,13 @@ class Parse(unittest.TestCase):
         # adv38 x65, adv39 y15: the preview Allrun took -solidSubcycles in
         # [1, inf), fsiProperties' coupling{} solidSubcycles [1, 1000]
         # (3000 passed the Allrun, then the solver refused it): one range
-        src = open(os.path.join(ROOT, "src", "fsi", "fluidSolidInteraction",
-                                "fluidSolidInteraction.C")).read()
+        # the solver's range: src/fsi/fsiRanges's table (fix19g), which
+        # fluidSolidInteraction reads it through
+        src = open(os.path.join(ROOT, "src", "fsi", "fsiRanges",
+                                "fsiRanges.C")).read()
         import re
-        m = re.search(r'"solidSubcycles", "", (\d+), (\d+), true', src)
+        m = re.search(r'\{"coupling", "solidSubcycles"\}, \{(\d+), (\d+), '
+                      r'true, true', src)
         self.assertTrue(m)
         o = ao.allrunDeclaration(os.path.join(
             ROOT, "tutorials", "blast", "axisymmetricPreview"))
