@@ -3,7 +3,7 @@
 cellBlastFoam run (KILLED) with those of an uninterrupted one (REF).
 
     compareRestart.py REF KILLED [--tol 1e-10] [--bitwise] [--pulse P]
-                      [--h5]
+                      [--h5] [--fluid]
 
 Every start of KILLED wrote its logs to postProcessing/<log>/<start time>/;
 they are put together in time: from each start, its rows up to the next
@@ -21,7 +21,9 @@ pressure must exceed P [Pa] after the last start (the pulse is in the cell
 over a compared window). --h5: solid/solid.h5 must hold the same steps
 (index, and time within TOL; --bitwise: equal) as the reference's,
 every dataset within TOL of its largest magnitude over the steps
-(--bitwise: equal).
+(--bitwise: equal). --fluid: the water probes' pressure
+(postProcessing/fluidProbes/<start>/p) too, every probe within TOL of its
+column's largest magnitude (rows as the other logs, complete).
 """
 import argparse
 import os
@@ -61,10 +63,19 @@ def main():
     ap.add_argument("--bitwise", action="store_true")
     ap.add_argument("--pulse", type=float, default=None)
     ap.add_argument("--h5", action="store_true")
+    ap.add_argument("--fluid", action="store_true")
     a = ap.parse_args()
     ref, killed, tol, bitwise = a.ref, a.killed, a.tol, a.bitwise
     ok = True
-    for log, cols, exact, complete in LOGS:
+    logs = LOGS + ((("fluidProbes/p", None, (0,), True),) if a.fluid
+                   else ())
+    if a.fluid:
+        try:
+            postProcessing.segments(ref, "fluidProbes/p")
+        except postProcessing.ColumnFileError as err:
+            print(err)
+            ok = False
+    for log, cols, exact, complete in logs:
         try:
             segs = postProcessing.segments(ref, log)
         except postProcessing.ColumnFileError:
@@ -113,7 +124,8 @@ def main():
             scale = np.maximum(np.abs(r[:, c]).max(axis=0), 1e-300)
             floor = np.array([vonMisesFloor[j]/scale[k_]
                               for k_, j in enumerate(c)])
-            if a.pulse is not None and "Probes" in log and i == len(segs) - 1:
+            if (a.pulse is not None and log.startswith("solidProbes")
+                    and i == len(segs) - 1):
                 peak = k[:, 1].max() if len(k) else 0
                 print("%s: probe peak pressure after the last start (%g s) "
                       "%.4g MPa" % (log, t0, peak/1e6))
