@@ -82,7 +82,8 @@ par=$work/parallel/axisymmetricPreview
 splitAtPlane "$par" y 4e-6
 decompose "$par" axisymmetric
 # Every cellPoint sample of the 2-rank run compared with OpenFOAM's
-# whole-field interpolation to the last bit (a difference stops the run)
+# whole-field interpolation in the same tetrahedra to the last bit (a
+# difference stops the run)
 printf 'DebugSwitches\n{\n    movingMeshProbes 1;\n}\n' \
     >> "$par/system/controlDict"
 cp -r "$work/parallel" "$work/killed"
