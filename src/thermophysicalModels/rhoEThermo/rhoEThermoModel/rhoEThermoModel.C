@@ -75,11 +75,7 @@ void Foam::rhoEThermoModel<Law>::cFromRhoE
 {
     forAll(rho, i)
     {
-        // finiteness first: a comparison with a NaN traps under sigFpe
-        const scalar c2 =
-            eos::isFinite(rho[i]) && eos::isFinite(e[i])
-          ? law_.c2(rho[i], e[i]) : 0;
-        c[i] = eos::isFinite(c2) && c2 > 0 ? std::sqrt(c2) : 0;
+        c[i] = soundSpeed(rho[i], e[i]);
     }
 }
 
@@ -100,10 +96,8 @@ void Foam::rhoEThermoModel<Law>::ecFromRhoP
     {
         const scalar r = rho[i];
         const scalar ei = law_.e(r, p[i]);
-        const scalar c2 =
-            eos::isFinite(r) && eos::isFinite(ei) ? law_.c2(r, ei) : 0;
         e[i] = ei;
-        c[i] = eos::isFinite(c2) && c2 > 0 ? std::sqrt(c2) : 0;
+        c[i] = soundSpeed(r, ei);
     }
 }
 
