@@ -91,13 +91,17 @@ void Foam::rhoEThermoModel<Law>::ecFromRhoP
 {
     // eFromRhoP's and cFromRhoE's expressions per point, the results
     // stored after both (so the law's common terms of the two, e.g. the
-    // Mie-Grueneisen cold pressure, are computed once)
+    // Mie-Grueneisen cold pressure, are computed once, and no store comes
+    // between them: a store to e could be the law's coefficients as far as
+    // the compiler knows, which it would then read again; 1.25x the
+    // instructions with e stored first)
     forAll(rho, i)
     {
         const scalar r = rho[i];
         const scalar ei = law_.e(r, p[i]);
+        const scalar ci = soundSpeed(r, ei);
         e[i] = ei;
-        c[i] = soundSpeed(r, ei);
+        c[i] = ci;
     }
 }
 
