@@ -11,6 +11,14 @@ namespace Foam
 }
 
 
+const Foam::Enum<Foam::riemannFlux::wedgeFaceModel>
+Foam::riemannFlux::wedgeFaceModelNames
+({
+    {wedgeFaceModel::mirror, "mirror"},
+    {wedgeFaceModel::cellPressure, "cellPressure"},
+});
+
+
 namespace
 {
 
@@ -93,7 +101,8 @@ void Foam::riemannFlux::faceStates::complete(const rhoEThermo& thermo)
 Foam::riemannFlux::riemannFlux(const fvMesh& mesh)
 :
     mesh_(mesh),
-    reconstruction_(mesh)
+    reconstruction_(mesh),
+    wedgeFaces_(wedgeFaceModel::mirror)
 {}
 
 
@@ -327,6 +336,8 @@ void Foam::riemannFlux::fluxes
         {
             solveReflecting
             (
+                wedgeFaces_ == wedgeFaceModel::cellPressure
+             && isA<wedgeFvPatch>(patch),
                 patch.faceCells(), rhoc, Uc, pc, slot, cellE, cellC,
                 patch.Sf(), patch.magSf(), wPtr, F
             );
