@@ -23,12 +23,16 @@
 #       BUILD  a copy of a worktree's platforms/linux64GccDPInt32Opt
 #              (bin/cellBlastFoam and lib/)
 #   NICENESS=N (default 10)
+#   EDIT=CMD   a shell command run in the last build's copy of the case
+#              before its run (one build twice with an input changed, e.g.
+#              EDIT="sed -i 's/timeScheme .*/&\n wedgeFaces cellPressure;/'
+#              system/fvSolution" ... BUILD BUILD)
 #
 # Results: DIR/b<i>/axisymmetricPreview/cg.out, DIR/b<i>/inclusive.txt,
 # DIR/table.txt. Takes about 50x the native run per build (70 steps: a
 # few minutes each on an idle core).
 set -euo pipefail
-[ $# -ge 3 ] || { sed -n 2,28p "$0"; exit 1; }
+[ $# -ge 3 ] || { sed -n 2,32p "$0"; exit 1; }
 dir=$1; end=$2; shift 2
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -54,6 +58,12 @@ for i in "${!builds[@]}"
 do
     mkdir -p "$dir/b$i"
     cp -a "$dir/case/axisymmetricPreview" "$dir/b$i/"
+    if [ -n "${EDIT:-}" ] && [ "$i" -eq $((${#builds[@]} - 1)) ]
+    then
+        (cd "$dir/b$i/axisymmetricPreview" && eval "$EDIT") \
+            || { echo "previewProfile.sh: EDIT failed" >&2; exit 1; }
+        echo "build $i's case edited: $EDIT"
+    fi
     (
         b=${builds[$i]}
         cd "$dir/b$i/axisymmetricPreview"

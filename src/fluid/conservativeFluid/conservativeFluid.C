@@ -23,7 +23,7 @@ const Foam::dictionary& checkedRiemannDict(const Foam::fvMesh& mesh)
     const dictionary& solution = mesh.solutionDict();
     foamTools::checkDuplicates(solution, {"riemann"});
     const dictionary& dict = foamTools::subDict(solution, "riemann");
-    wordList valid{"riemannSolver", "timeScheme", "viscous"};
+    wordList valid{"riemannSolver", "timeScheme", "viscous", "wedgeFaces"};
     // A switch: OpenFOAM took any number for one (viscous 2 or 0.5 was
     // "yes" without a word; adv pass rk40)
     if (dict.found("viscous", keyType::LITERAL))

@@ -9,6 +9,8 @@
 #include "calculatedFvPatchFields.H"
 #include "IStringStream.H"
 
+#include <type_traits>
+
 const Foam::Enum<Foam::MUSCLReconstruction::limiterType>
 Foam::MUSCLReconstruction::scalarNames
 ({
@@ -48,6 +50,32 @@ namespace
 {
 
 using namespace Foam;
+
+//- Interpolation weights of the owner-side and neighbour-side values of
+//  one face of linear weight w: limiter w + (1 - limiter) pos0(faceFlux),
+//  limiterOf(faceFlux) the limiter for the direction faceFlux (+1: from
+//  the owner, -1: from the neighbour), the pos0(faceFlux) factor kept as
+//  a multiplication so that the result is OpenFOAM's
+//  limitedSurfaceInterpolationScheme's in every bit (signed zeros
+//  included)
+template<class LimiterOf>
+inline void tvdWeights
+(
+    const LimiterOf& limiterOf,
+    const scalar w,
+    scalar& lambdaL,
+    scalar& lambdaR
+)
+{
+    static const scalar pos0Owner = 1;
+    static const scalar pos0Neighbour = 0;
+
+    const scalar limL = limiterOf(1);
+    const scalar limR = limiterOf(-1);
+    lambdaL = limL*w + (1.0 - limL)*pos0Owner;
+    lambdaR = limR*w + (1.0 - limR)*pos0Neighbour;
+}
+
 
 //- OpenFOAM's limiter functions of one NVD family (NVDTVD for scalars,
 //  NVDVTVDV for vectors), called rather than copied so that the limiter is
@@ -111,9 +139,7 @@ public:
     }
 
     //- Interpolation weights of the owner-side and neighbour-side values
-    //  of one face: limiter w + (1 - limiter) pos0(faceFlux), the
-    //  pos0(faceFlux) factor kept as a multiplication so that the result
-    //  is OpenFOAM's in every bit (signed zeros included)
+    //  of one face (tvdWeights with the limiter of type)
     inline void weights
     (
         const limiterType type,
@@ -127,15 +153,49 @@ public:
         scalar& lambdaR
     ) const
     {
-        static const scalar pos0Owner = 1;
-        static const scalar pos0Neighbour = 0;
+        tvdWeights
+        (
+            [&](const scalar faceFlux)
+            {
+                return
+                    (*this)(type, w, faceFlux, phiP, phiN, gradP, gradN, d);
+            },
+            w, lambdaL, lambdaR
+        );
+    }
 
-        const scalar limL =
-            (*this)(type, w, 1, phiP, phiN, gradP, gradN, d);
-        const scalar limR =
-            (*this)(type, w, -1, phiP, phiN, gradP, gradN, d);
-        lambdaL = limL*w + (1.0 - limL)*pos0Owner;
-        lambdaR = limR*w + (1.0 - limR)*pos0Neighbour;
+    //- The limiter object of OpenFOAM's class Limiter<NVD> (one of the
+    //  four above)
+    template<template<class> class Limiter>
+    const Limiter<NVD>& get() const
+    {
+        if constexpr (std::is_same<Limiter<NVD>, MUSCLLimiter<NVD>>::value)
+        {
+            return MUSCL_;
+        }
+        else if constexpr
+        (
+            std::is_same<Limiter<NVD>, vanLeerLimiter<NVD>>::value
+        )
+        {
+            return vanLeer_;
+        }
+        else if constexpr
+        (
+            std::is_same<Limiter<NVD>, MinmodLimiter<NVD>>::value
+        )
+        {
+            return Minmod_;
+        }
+        else
+        {
+            static_assert
+            (
+                std::is_same<Limiter<NVD>, vanAlbadaLimiter<NVD>>::value,
+                "not a limiter of limiterFunctions"
+            );
+            return vanAlbada_;
+        }
     }
 };
 
@@ -154,25 +214,116 @@ const limiterFunctions<NVDVTVDV>& vectorLimiters()
 }
 
 
-//- Owner-side and neighbour-side values of one internal face
+//- The limiter of one variable in the internal faces' loop chosen at run
+//  time: type, with OpenFOAM's functions of its NVD family
 template<class NVD>
+struct runTimeLimiter
+{
+    //- The loop of the general schemes (the face frame and the
+    //  characteristic reconstruction of U possible)
+    static constexpr bool general = true;
+
+    const limiterFunctions<NVD>& functions;
+    const MUSCLReconstruction::limiterType type;
+
+    bool multidimensional() const
+    {
+        return MUSCLReconstruction::multidimensional(type);
+    }
+
+    bool upwind() const
+    {
+        return type == MUSCLReconstruction::limiterType::upwind;
+    }
+
+    inline void weights
+    (
+        const scalar w,
+        const typename NVD::phiType& phiP,
+        const typename NVD::phiType& phiN,
+        const typename NVD::gradPhiType& gradP,
+        const typename NVD::gradPhiType& gradN,
+        const vector& d,
+        scalar& lambdaL,
+        scalar& lambdaR
+    ) const
+    {
+        functions.weights
+        (
+            type, w, phiP, phiN, gradP, gradN, d, lambdaL, lambdaR
+        );
+    }
+};
+
+
+//- A TVD limiter of the internal faces' loop known at compile time:
+//  OpenFOAM's class Limiter (of NVDTVD or NVDVTVDV), its function and the
+//  weights inlined into the loop, no switch or call per face and side
+//  (issue 18 item 5d, perf45); the same bits as runTimeLimiter of its
+//  type
+template<class Limiter>
+struct compiledLimiter
+{
+    //- The loop of one TVD limiter for rho, U and p
+    static constexpr bool general = false;
+
+    const Limiter& limiter;
+
+    static constexpr bool multidimensional()
+    {
+        return false;
+    }
+
+    static constexpr bool upwind()
+    {
+        return false;
+    }
+
+    template<class Type, class GradType>
+    inline void weights
+    (
+        const scalar w,
+        const Type& phiP,
+        const Type& phiN,
+        const GradType& gradP,
+        const GradType& gradN,
+        const vector& d,
+        scalar& lambdaL,
+        scalar& lambdaR
+    ) const
+    {
+        tvdWeights
+        (
+            [&](const scalar faceFlux)
+            {
+                return
+                    limiter.limiter(w, faceFlux, phiP, phiN, gradP, gradN, d);
+            },
+            w, lambdaL, lambdaR
+        );
+    }
+};
+
+
+//- Owner-side and neighbour-side values of one internal face with the
+//  limiter (runTimeLimiter or compiledLimiter)
+template<class Limiter, class Type, class GradType>
 inline void internalFaceValues
 (
-    const limiterFunctions<NVD>& limiters,
-    const MUSCLReconstruction::limiterType type,
+    const Limiter& limiter,
     const scalar w,
-    const typename NVD::phiType& phiP,
-    const typename NVD::phiType& phiN,
-    const typename NVD::gradPhiType& gradP,
-    const typename NVD::gradPhiType& gradN,
+    const Type& phiP,
+    const Type& phiN,
+    const GradType& gradP,
+    const GradType& gradN,
     const vector& d,
     const vector& dP,
     const vector& dN,
-    typename NVD::phiType& left,
-    typename NVD::phiType& right
+    Type& left,
+    Type& right
 )
 {
-    if (MUSCLReconstruction::multidimensional(type))
+    if (limiter.multidimensional())
     {
         // At the face centre from the limited gradients: dP = x_f - x_P,
         // dN = x_f - x_N
@@ -184,135 +335,12 @@ inline void internalFaceValues
     // upwind: the weights pos0(faceFlux) of OpenFOAM's upwind scheme
     scalar lambdaL = 1;
     scalar lambdaR = 0;
-    if (type != MUSCLReconstruction::limiterType::upwind)
+    if (!limiter.upwind())
     {
-        limiters.weights
-        (
-            type, w, phiP, phiN, gradP, gradN, d, lambdaL, lambdaR
-        );
+        limiter.weights(w, phiP, phiN, gradP, gradN, d, lambdaL, lambdaR);
     }
     left = lambdaL*(phiP - phiN) + phiN;
     right = lambdaR*(phiP - phiN) + phiN;
-}
-
-
-//- The internal faces' states when rho, U and p take the same TVD
-//  limiter (U its V form) on their own (no face frame, no
-//  characteristics): internalFaceValues' arithmetic in its order, with
-//  the limiter class SLimiter (of NVDTVD) and VLimiter (of NVDVTVDV)
-//  known at compile time, so that the limiter, its two sides and the
-//  weights are inlined into one loop over the faces (no switch or call
-//  per face and side; issue 18 item 5d, perf45). The same bits as the
-//  general loop (tests/foamUnit: faceStatesEqualOpenFOAMsLimitedSchemes
-//  Bitwise)
-template<class SLimiter, class VLimiter>
-class tvdFaceLoop
-{
-    IStringStream none_;
-    SLimiter scalar_;
-    VLimiter vector_;
-
-    //- limiterFunctions::weights of one face, then the two face values
-    //  of internalFaceValues
-    template<class Limiter, class Type, class GradType>
-    static inline void faceValues
-    (
-        const Limiter& limiter,
-        const scalar w,
-        const Type& phiP,
-        const Type& phiN,
-        const GradType& gradP,
-        const GradType& gradN,
-        const vector& d,
-        Type& left,
-        Type& right
-    )
-    {
-        static const scalar pos0Owner = 1;
-        static const scalar pos0Neighbour = 0;
-        const scalar limL = limiter.limiter(w, 1, phiP, phiN, gradP, gradN, d);
-        const scalar limR =
-            limiter.limiter(w, -1, phiP, phiN, gradP, gradN, d);
-        const scalar lambdaL = limL*w + (1.0 - limL)*pos0Owner;
-        const scalar lambdaR = limR*w + (1.0 - limR)*pos0Neighbour;
-        left = lambdaL*(phiP - phiN) + phiN;
-        right = lambdaR*(phiP - phiN) + phiN;
-    }
-
-public:
-
-    tvdFaceLoop()
-    :
-        none_(""),
-        scalar_(none_),
-        vector_(none_)
-    {}
-
-    //- The states of the internal faces start to start + size - 1 into
-    //  L and R (sized)
-    void operator()
-    (
-        const fvMesh& mesh,
-        const label start,
-        const label size,
-        const scalarField& rho,
-        const vectorField& U,
-        const scalarField& p,
-        const vectorField& gradRho,
-        const tensorField& gradU,
-        const vectorField& gradP,
-        MUSCLReconstruction::states& L,
-        MUSCLReconstruction::states& R
-    ) const
-    {
-        const label* const owner = mesh.owner().cdata() + start;
-        const label* const neighbour = mesh.neighbour().cdata() + start;
-        const scalar* const w = mesh.weights().primitiveField().cdata() + start;
-        const vector* const C = mesh.C().primitiveField().cdata();
-        const scalar* const rhoc = rho.cdata();
-        const vector* const Uc = U.cdata();
-        const scalar* const pc = p.cdata();
-        const vector* const gRho = gradRho.cdata();
-        const tensor* const gU = gradU.cdata();
-        const vector* const gP = gradP.cdata();
-        scalar* const Lrho = L.rho.data();
-        scalar* const Rrho = R.rho.data();
-        vector* const LU = L.U.data();
-        vector* const RU = R.U.data();
-        scalar* const Lp = L.p.data();
-        scalar* const Rp = R.p.data();
-
-        for (label i = 0; i < size; ++i)
-        {
-            const label own = owner[i];
-            const label nei = neighbour[i];
-            const scalar wf = w[i];
-            const vector d(C[nei] - C[own]);
-            faceValues
-            (
-                scalar_, wf, rhoc[own], rhoc[nei], gRho[own], gRho[nei], d,
-                Lrho[i], Rrho[i]
-            );
-            faceValues
-            (
-                vector_, wf, Uc[own], Uc[nei], gU[own], gU[nei], d, LU[i],
-                RU[i]
-            );
-            faceValues
-            (
-                scalar_, wf, pc[own], pc[nei], gP[own], gP[nei], d, Lp[i],
-                Rp[i]
-            );
-        }
-    }
-};
-
-
-template<class SLimiter, class VLimiter>
-const tvdFaceLoop<SLimiter, VLimiter>& tvdFaces()
-{
-    static const tvdFaceLoop<SLimiter, VLimiter> loop;
-    return loop;
 }
 
 
@@ -878,6 +906,154 @@ inline void scaleGradient(const vector& psi, tensor& g)
         cmptMultiply(psi, g.y()),
         cmptMultiply(psi, g.z())
     );
+}
+
+
+//- The states of the internal faces start to start + size - 1 into L and
+//  R (sized), rho and p with the limiters rhoLimiter and pLimiter, U with
+//  ULimiter; with runTimeLimiters also UScheme's face frame or
+//  characteristic reconstruction (c: the cells' sound speed of the
+//  latter). One loop for both kinds of limiter: a compiledLimiter's loop
+//  has no branch, switch or call per face and side, and computes no face
+//  centre offsets; the fields' addresses are held in locals
+template<class SLimiter, class VLimiter>
+void internalFaceStates
+(
+    const fvMesh& mesh,
+    const label start,
+    const label size,
+    const SLimiter& rhoLimiter,
+    const VLimiter& ULimiter,
+    const SLimiter& pLimiter,
+    const MUSCLReconstruction::vectorScheme& UScheme,
+    const scalarField* c,
+    const scalarField& rho,
+    const vectorField& U,
+    const scalarField& p,
+    const vectorField& gradRho,
+    const tensorField& gradU,
+    const vectorField& gradP,
+    MUSCLReconstruction::states& L,
+    MUSCLReconstruction::states& R
+)
+{
+    constexpr bool general = SLimiter::general;
+    static_assert(general == VLimiter::general, "one kind of limiter");
+
+    const label* const owner = mesh.owner().cdata() + start;
+    const label* const neighbour = mesh.neighbour().cdata() + start;
+    const scalar* const w = mesh.weights().primitiveField().cdata() + start;
+    const vector* const C = mesh.C().primitiveField().cdata();
+    // The face centres, areas and normals: the general schemes' only
+    const vector* const Cf =
+        general ? mesh.Cf().primitiveField().cdata() + start : nullptr;
+    const vector* const Sf =
+        general ? mesh.Sf().primitiveField().cdata() + start : nullptr;
+    const scalar* const magSf =
+        general ? mesh.magSf().primitiveField().cdata() + start : nullptr;
+    const scalar* const rhoc = rho.cdata();
+    const vector* const Uc = U.cdata();
+    const scalar* const pc = p.cdata();
+    const vector* const gRho = gradRho.cdata();
+    const tensor* const gU = gradU.cdata();
+    const vector* const gP = gradP.cdata();
+    scalar* const Lrho = L.rho.data();
+    scalar* const Rrho = R.rho.data();
+    vector* const LU = L.U.data();
+    vector* const RU = R.U.data();
+    scalar* const Lp = L.p.data();
+    scalar* const Rp = R.p.data();
+
+    for (label i = 0; i < size; ++i)
+    {
+        const label own = owner[i];
+        const label nei = neighbour[i];
+        const scalar wf = w[i];
+        const vector d(C[nei] - C[own]);
+
+        if constexpr (general)
+        {
+            if (UScheme.characteristic)
+            {
+                characteristicValues
+                (
+                    rhoLimiter.functions, ULimiter.functions, UScheme.limiter,
+                    UScheme.tangential, wf, rhoc[own], rhoc[nei], Uc[own],
+                    Uc[nei], pc[own], pc[nei], (*c)[own], (*c)[nei],
+                    gRho[own], gRho[nei], gU[own], gU[nei], gP[own], gP[nei],
+                    d, Sf[i]/magSf[i], Lrho[i], Rrho[i], LU[i], RU[i], Lp[i],
+                    Rp[i]
+                );
+                continue;
+            }
+        }
+
+        // The face centre's offsets from the cells (multidimensional
+        // limiters only)
+        vector dP(Zero), dN(Zero);
+        if constexpr (general)
+        {
+            dP = Cf[i] - C[own];
+            dN = Cf[i] - C[nei];
+        }
+
+        internalFaceValues
+        (
+            rhoLimiter, wf, rhoc[own], rhoc[nei], gRho[own], gRho[nei], d,
+            dP, dN, Lrho[i], Rrho[i]
+        );
+        if constexpr (general)
+        {
+            if (UScheme.faceFrame)
+            {
+                faceFrameValues
+                (
+                    rhoLimiter.functions, ULimiter.functions, UScheme.limiter,
+                    UScheme.tangential, wf, Uc[own], Uc[nei], gU[own],
+                    gU[nei], d, Sf[i]/magSf[i], LU[i], RU[i]
+                );
+            }
+            else
+            {
+                internalFaceValues
+                (
+                    ULimiter, wf, Uc[own], Uc[nei], gU[own], gU[nei], d, dP,
+                    dN, LU[i], RU[i]
+                );
+            }
+        }
+        else
+        {
+            internalFaceValues
+            (
+                ULimiter, wf, Uc[own], Uc[nei], gU[own], gU[nei], d, dP, dN,
+                LU[i], RU[i]
+            );
+        }
+        internalFaceValues
+        (
+            pLimiter, wf, pc[own], pc[nei], gP[own], gP[nei], d, dP, dN,
+            Lp[i], Rp[i]
+        );
+    }
+}
+
+
+//- faces(rhoLimiter, ULimiter, pLimiter) with OpenFOAM's class Limiter
+//  (its NVDTVD form for rho and p, its NVDVTVDV form for U) as
+//  compiledLimiters
+template<template<class> class Limiter, class Faces>
+inline void withCompiledLimiter(const Faces& faces)
+{
+    const compiledLimiter<Limiter<NVDTVD>> s
+    {
+        scalarLimiters().template get<Limiter>()
+    };
+    const compiledLimiter<Limiter<NVDVTVDV>> v
+    {
+        vectorLimiters().template get<Limiter>()
+    };
+    faces(s, v, s);
 }
 
 } // End anonymous namespace
@@ -1474,23 +1650,27 @@ void Foam::MUSCLReconstruction::reconstruct
         s->p.setSize(size);
     }
 
-    const labelUList& owner = mesh_.owner();
-    const labelUList& neighbour = mesh_.neighbour();
-    const scalarField& w = mesh_.weights();
-    const vectorField& C = mesh_.C();
-    const vectorField& Cf = mesh_.Cf();
-    const vectorField& Sf = mesh_.Sf();
-    const scalarField& magSf = mesh_.magSf();
+    const scalarField* c = nullptr;
+    if (UScheme_.characteristic)
+    {
+        c = &soundSpeedField().primitiveField();
+    }
+    auto faces = [&]
+    (
+        const auto& rhoLimiter,
+        const auto& ULimiter,
+        const auto& pLimiter
+    )
+    {
+        internalFaceStates
+        (
+            mesh_, start, size, rhoLimiter, ULimiter, pLimiter, UScheme_, c,
+            rho, U, p, gradRho_, gradU_, gradP_, L, R
+        );
+    };
 
-    const scalarField& rhoc = rho;
-    const vectorField& Uc = U;
-    const scalarField& pc = p;
-    const vectorField& gradRho = gradRho_;
-    const tensorField& gradU = gradU_;
-    const vectorField& gradP = gradP_;
-
-    // The default schemes (one TVD limiter for rho, U and p) in a loop of
-    // their own, the limiter inlined: the same arithmetic
+    // The default schemes (one TVD limiter for rho, U and p): the loop
+    // with the limiter compiled in, the same arithmetic
     if
     (
         !UScheme_.faceFrame
@@ -1499,108 +1679,31 @@ void Foam::MUSCLReconstruction::reconstruct
      && pLimiter_ == ULimiter_
     )
     {
-        const scalarField& rhoc = rho;
-        const vectorField& Uc = U;
-        const scalarField& pc = p;
         switch (ULimiter_)
         {
             case limiterType::MUSCL:
-                tvdFaces<MUSCLLimiter<NVDTVD>, MUSCLLimiter<NVDVTVDV>>()
-                (
-                    mesh_, start, size, rhoc, Uc, pc, gradRho_, gradU_,
-                    gradP_, L, R
-                );
+                withCompiledLimiter<MUSCLLimiter>(faces);
                 return;
             case limiterType::vanLeer:
-                tvdFaces<vanLeerLimiter<NVDTVD>, vanLeerLimiter<NVDVTVDV>>()
-                (
-                    mesh_, start, size, rhoc, Uc, pc, gradRho_, gradU_,
-                    gradP_, L, R
-                );
+                withCompiledLimiter<vanLeerLimiter>(faces);
                 return;
             case limiterType::Minmod:
-                tvdFaces<MinmodLimiter<NVDTVD>, MinmodLimiter<NVDVTVDV>>()
-                (
-                    mesh_, start, size, rhoc, Uc, pc, gradRho_, gradU_,
-                    gradP_, L, R
-                );
+                withCompiledLimiter<MinmodLimiter>(faces);
                 return;
             case limiterType::vanAlbada:
-                tvdFaces
-                <
-                    vanAlbadaLimiter<NVDTVD>, vanAlbadaLimiter<NVDVTVDV>
-                >()
-                (
-                    mesh_, start, size, rhoc, Uc, pc, gradRho_, gradU_,
-                    gradP_, L, R
-                );
+                withCompiledLimiter<vanAlbadaLimiter>(faces);
                 return;
             default:
                 break;
         }
     }
 
-    const limiterFunctions<NVDTVD>& sLim = scalarLimiters();
-    const limiterFunctions<NVDVTVDV>& vLim = vectorLimiters();
-
-    const scalarField* cc = nullptr;
-    if (UScheme_.characteristic)
-    {
-        cc = &soundSpeedField().primitiveField();
-    }
-
-    for (label i = 0; i < size; ++i)
-    {
-        const label facei = start + i;
-        const label own = owner[facei];
-        const label nei = neighbour[facei];
-        const scalar wf = w[facei];
-        const vector d(C[nei] - C[own]);
-        const vector dP(Cf[facei] - C[own]);
-        const vector dN(Cf[facei] - C[nei]);
-
-        if (UScheme_.characteristic)
-        {
-            characteristicValues
-            (
-                sLim, vLim, UScheme_.limiter, UScheme_.tangential, wf,
-                rhoc[own], rhoc[nei], Uc[own], Uc[nei], pc[own], pc[nei],
-                (*cc)[own], (*cc)[nei], gradRho[own], gradRho[nei],
-                gradU[own], gradU[nei], gradP[own], gradP[nei], d,
-                Sf[facei]/magSf[facei], L.rho[i], R.rho[i], L.U[i],
-                R.U[i], L.p[i], R.p[i]
-            );
-            continue;
-        }
-
-        internalFaceValues
-        (
-            sLim, rhoLimiter_, wf, rhoc[own], rhoc[nei], gradRho[own],
-            gradRho[nei], d, dP, dN, L.rho[i], R.rho[i]
-        );
-        if (UScheme_.faceFrame)
-        {
-            faceFrameValues
-            (
-                sLim, vLim, UScheme_.limiter, UScheme_.tangential, wf,
-                Uc[own], Uc[nei], gradU[own], gradU[nei], d,
-                Sf[facei]/magSf[facei], L.U[i], R.U[i]
-            );
-        }
-        else
-        {
-            internalFaceValues
-            (
-                vLim, ULimiter_, wf, Uc[own], Uc[nei], gradU[own],
-                gradU[nei], d, dP, dN, L.U[i], R.U[i]
-            );
-        }
-        internalFaceValues
-        (
-            sLim, pLimiter_, wf, pc[own], pc[nei], gradP[own], gradP[nei],
-            d, dP, dN, L.p[i], R.p[i]
-        );
-    }
+    faces
+    (
+        runTimeLimiter<NVDTVD>{scalarLimiters(), rhoLimiter_},
+        runTimeLimiter<NVDVTVDV>{vectorLimiters(), ULimiter_},
+        runTimeLimiter<NVDTVD>{scalarLimiters(), pLimiter_}
+    );
 }
 
 

@@ -11,6 +11,14 @@ namespace Foam
 }
 
 
+const Foam::Enum<Foam::riemannFlux::wedgeFaceModel>
+Foam::riemannFlux::wedgeFaceModelNames
+({
+    {wedgeFaceModel::mirror, "mirror"},
+    {wedgeFaceModel::cellPressure, "cellPressure"},
+});
+
+
 namespace
 {
 
@@ -52,9 +60,8 @@ void cellSideStates
 
 
 //- The mirror image R of the states L on a reflecting patch: the normal
-//  velocity relative to the face (speed w, if wPtr) reflected. The
-//  arithmetic of R.U = L.U - 2 ((L.U & n) - w) n with n = patch.nf(),
-//  face by face without the temporary fields
+//  velocity relative to the face (speed w, if wPtr) reflected
+//  (riemannFlux::mirrorVelocity, n = Sf/|Sf|)
 void mirrorStates
 (
     const Foam::fvPatch& patch,
@@ -72,12 +79,11 @@ void mirrorStates
     forAll(Sf, facei)
     {
         const vector n = Sf[facei]/magSf[facei];
-        scalar qRel = L.U[facei] & n;
-        if (wPtr)
-        {
-            qRel -= (*wPtr)[facei];
-        }
-        R.U[facei] = L.U[facei] - 2*qRel*n;
+        R.U[facei] =
+            riemannFlux::mirrorVelocity
+            (
+                L.U[facei], n, wPtr ? (*wPtr)[facei] : 0
+            );
     }
 }
 
@@ -95,7 +101,8 @@ void Foam::riemannFlux::faceStates::complete(const rhoEThermo& thermo)
 Foam::riemannFlux::riemannFlux(const fvMesh& mesh)
 :
     mesh_(mesh),
-    reconstruction_(mesh)
+    reconstruction_(mesh),
+    wedgeFaces_(wedgeFaceModel::mirror)
 {}
 
 
@@ -126,39 +133,6 @@ void Foam::riemannFlux::toFaceFrame
         const vector wn = w[facei]*n;
         L.U[facei] -= wn;
         R.U[facei] -= wn;
-    }
-}
-
-
-void Foam::riemannFlux::solveMoving
-(
-    faceStates& L,
-    faceStates& R,
-    const UList<vector>& Sf,
-    const UList<scalar>& magSf,
-    const UList<scalar>* wPtr,
-    faceFluxes& F
-) const
-{
-    if (!wPtr)
-    {
-        solve(L, R, Sf, magSf, F);
-        return;
-    }
-
-    // Riemann problem in the frame of the moving face, then back:
-    // F_mom = F'_mom + w n F_mass,
-    // F_E   = F'_E + w n.F'_mom + w^2/2 F_mass
-    const UList<scalar>& w = *wPtr;
-    toFaceFrame(L, R, Sf, magSf, w);
-    solve(L, R, Sf, magSf, F);
-    forAll(w, facei)
-    {
-        const scalar wi = w[facei];
-        const vector n = Sf[facei]/magSf[facei];
-        F.energy[facei] +=
-            wi*(n & F.momentum[facei]) + 0.5*wi*wi*F.mass[facei];
-        F.momentum[facei] += wi*F.mass[facei]*n;
     }
 }
 
@@ -362,6 +336,8 @@ void Foam::riemannFlux::fluxes
         {
             solveReflecting
             (
+                wedgeFaces_ == wedgeFaceModel::cellPressure
+             && isA<wedgeFvPatch>(patch),
                 patch.faceCells(), rhoc, Uc, pc, slot, cellE, cellC,
                 patch.Sf(), patch.magSf(), wPtr, F
             );

@@ -1,4 +1,5 @@
 #include "riemannFlux.H"
+#include "keywordCheck.H"
 
 Foam::autoPtr<Foam::riemannFlux> Foam::riemannFlux::New
 (
@@ -23,5 +24,15 @@ Foam::autoPtr<Foam::riemannFlux> Foam::riemannFlux::New
         ) << exit(FatalIOError);
     }
 
-    return autoPtr<riemannFlux>(cstrIter()(mesh));
+    autoPtr<riemannFlux> flux(cstrIter()(mesh));
+    flux->wedgeFaces_ = foamTools::readEnumOrDefault
+    (
+        wedgeFaceModelNames, dict, "wedgeFaces", wedgeFaceModel::mirror
+    );
+    if (flux->wedgeFaces_ != wedgeFaceModel::mirror)
+    {
+        Info<< "Wedge faces: " << wedgeFaceModelNames[flux->wedgeFaces_]
+            << " (the cell's pressure, no Riemann problem)" << endl;
+    }
+    return flux;
 }
