@@ -6,6 +6,7 @@ in 3D"); not a test. Made for the runs of bench/blast/probeOvershoot3D.sh
 incident passage).
 
     bench/blast/probeOvershoot.py CASE [--reference REF.npz] [--dz 50e-9]
+                                  [--pulse 5e-9]
 
 REF.npz: the 1D answer (neuronFsi.planeWave.column, the case's own law,
 schemes and pulse on the full 100 um column, cells of --dz) at heights
@@ -46,7 +47,7 @@ import numpy as np
 
 from neuronFsi import planeWave as pw
 
-PULSE = (50e6, 5e-9)        # amplitude [Pa], duration [s] (the measures)
+PULSE = [50e6, 5e-9]        # amplitude [Pa], duration [s] (the measures; --pulse)
 HEIGHTS = np.round(np.arange(0, 8.5e-6 + 1e-12, 0.05e-6), 12)
 SIGNS = np.array([[-1, -1, -1], [1, -1, -1], [1, 1, -1], [-1, 1, -1],
                   [-1, -1, 1], [1, -1, 1], [1, 1, 1], [-1, 1, 1]])
@@ -168,7 +169,12 @@ def main():
     a.add_argument("case")
     a.add_argument("--reference", default=None)
     a.add_argument("--dz", type=float, default=50e-9)
+    a.add_argument("--pulse", type=float, default=PULSE[1],
+                   help="the pulse's duration [s] for the measures' "
+                   "windows (default 5e-9; the 1D answer is the case's "
+                   "own pulse)")
     o = a.parse_args()
+    PULSE[1] = o.pulse
     case = os.path.abspath(o.case)
     probes, data = probeHistory(case)
     refPath = o.reference or os.path.join(case, "ref1d.npz")
