@@ -3,7 +3,7 @@
 cellBlastFoam run (KILLED) with those of an uninterrupted one (REF).
 
     compareRestart.py REF KILLED [--tol 1e-10] [--bitwise] [--pulse P]
-                      [--h5]
+                      [--h5] [--fluid]
 
 Every start of KILLED wrote its logs to postProcessing/<log>/<start time>/;
 they are put together in time: from each start, its rows up to the next
@@ -21,7 +21,12 @@ pressure must exceed P [Pa] after the last start (the pulse is in the cell
 over a compared window). --h5: solid/solid.h5 must hold the same steps
 (index, and time within TOL; --bitwise: equal) as the reference's,
 every dataset within TOL of its largest magnitude over the steps
-(--bitwise: equal).
+(--bitwise: equal). --fluid: the water probes' pressure
+(postProcessing/fluidProbes/<start>/p, over all starts) too: the same
+number of rows, times within TOL of the time (the probes print the time
+at the write precision, where another decomposition's Courant step
+differs in the last bits; --bitwise: equal), every probe within TOL of its
+column's largest magnitude (--bitwise: equal).
 """
 import argparse
 import os
@@ -61,9 +66,12 @@ def main():
     ap.add_argument("--bitwise", action="store_true")
     ap.add_argument("--pulse", type=float, default=None)
     ap.add_argument("--h5", action="store_true")
+    ap.add_argument("--fluid", action="store_true")
     a = ap.parse_args()
     ref, killed, tol, bitwise = a.ref, a.killed, a.tol, a.bitwise
     ok = True
+    if a.fluid:
+        ok &= compareFluidProbes(ref, killed, tol, bitwise)
     for log, cols, exact, complete in LOGS:
         try:
             segs = postProcessing.segments(ref, log)
@@ -113,7 +121,8 @@ def main():
             scale = np.maximum(np.abs(r[:, c]).max(axis=0), 1e-300)
             floor = np.array([vonMisesFloor[j]/scale[k_]
                               for k_, j in enumerate(c)])
-            if a.pulse is not None and "Probes" in log and i == len(segs) - 1:
+            if (a.pulse is not None and log.startswith("solidProbes")
+                    and i == len(segs) - 1):
                 peak = k[:, 1].max() if len(k) else 0
                 print("%s: probe peak pressure after the last start (%g s) "
                       "%.4g MPa" % (log, t0, peak/1e6))
@@ -140,6 +149,32 @@ def main():
                         os.path.join(killed, "solid", "solid.h5"), tol,
                         bitwise)
     sys.exit(0 if ok else 1)
+
+
+def compareFluidProbes(ref, killed, tol, bitwise):
+    """The water probes' pressure of the two runs: same rows, times within
+    tol of the time, values within tol of each column's largest magnitude
+    (bitwise: equal)."""
+    log = "fluidProbes/p"
+    try:
+        r = postProcessing.series(ref, log)
+        k = postProcessing.series(killed, log)
+    except postProcessing.ColumnFileError as err:
+        print("%s: %s" % (log, err))
+        return False
+    if r.shape != k.shape or not len(r):
+        print("%s: %d x %d values in the reference, %d x %d here"
+              % (log, *r.shape, *k.shape))
+        return False
+    dt = np.abs(r[:, 0] - k[:, 0]).max()/np.abs(r[:, 0]).max()
+    scale = np.maximum(np.abs(r[:, 1:]).max(axis=0), 1e-300)
+    worst = (np.abs(r[:, 1:] - k[:, 1:])/scale).max(axis=0)
+    same = np.array_equal(r, k)
+    print("%s: %d rows, times within %.3e of the last, largest difference "
+          "%.3e of the column range (per probe: %s), bitwise %s"
+          % (log, len(r), dt, worst.max(),
+             " ".join("%.1e" % x for x in worst), same))
+    return same if bitwise else (dt <= tol and worst.max() <= tol)
 
 
 def compareH5(ref, killed, tol, bitwise):

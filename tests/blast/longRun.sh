@@ -13,7 +13,7 @@
 # first order in the cell size: docs/results/blastPlaneWave.md, "The 5 ns
 # von Mises"), which makes the scene's error look about a point larger.
 # Not checked, for the 10 ns pulse only: the water probe's whole-history
-# 1-ns peak 2.1 um above the cell on the axis (+13.5 % at the default
+# 1-ns peak 2.1 um above the cell on the axis (+13.4 % at the default
 # sizes): the posed model's departure from 1D, a ring wave scattered by
 # the membrane's quadratic law on the cell's curved top converging on the
 # axis (docs/results/blastPlaneWave.md, "The transparent cell": with

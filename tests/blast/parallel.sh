@@ -12,7 +12,12 @@
 #      serial, every step of the coupling log (time, dt, iterations exact),
 #      the solid probes, the interface maxima and every dataset of
 #      solid/solid.h5 within 1e-9 of each column's largest magnitude
-#      (compareRestart.py; the logs carry 10 digits).
+#      (compareRestart.py; the logs carry 10 digits), and the water
+#      probes' pressure (fluidProbes, cellPoint) too: a probe beside the
+#      cell at the processor plane samples the same point on 1 and 2
+#      ranks (scaleFreeCellPointWeight; OpenFOAM's cellPointWeight took
+#      the cell's first tetrahedron's centroid, which depends on the
+#      cell's face order, so on the decomposition).
 #   2. The same decomposed case killed (SIGKILL of both ranks and mpirun)
 #      after 3 committed writes, continued from the latest time, stopped by
 #      SIGTERM after 5, continued to the end: logs and solid.h5 bitwise
@@ -22,12 +27,12 @@
 #      earlier smoke case's meshes, 20 um box, to 9.5 ns, through the
 #      pulse's arrival at the cell top),
 #      simple decomposition (2 1 1) at x = 5 um through the cell: 2 ranks
-#      against serial as in 1.
+#      against serial as in 1 (the water probes too).
 #   4. The preview shortened by its characteristic inflow (Allrun -inflow
 #      14e-6 on a 30 um column, to 24 ns: the pulse through the top at
 #      14 um and onto the cell), decomposed at y = 4 um as in 1: the top
 #      patch is on one rank only (the other holds none of its faces);
-#      2 ranks against serial as in 1.
+#      2 ranks against serial as in 1 (the water probes too).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../lib/restartTools.sh"
@@ -77,7 +82,8 @@ par=$work/parallel/axisymmetricPreview
 splitAtPlane "$par" y 4e-6
 decompose "$par" axisymmetric
 # Every cellPoint sample of the 2-rank run compared with OpenFOAM's
-# whole-field interpolation to the last bit (a difference stops the run)
+# whole-field interpolation in the same tetrahedra to the last bit (a
+# difference stops the run)
 printf 'DebugSwitches\n{\n    movingMeshProbes 1;\n}\n' \
     >> "$par/system/controlDict"
 cp -r "$work/parallel" "$work/killed"
@@ -90,7 +96,7 @@ n=$(grep -c "processor points: yes), the same bits" "$par/log.cellBlastFoam" \
 [ "$n" -gt 0 ] || { echo "FAIL: no probe sampled at processor points"; exit 1; }
 echo "movingMeshProbes on 2 ranks: $n samples with processor points," \
     "the same bits as the whole-field interpolation"
-/usr/bin/python3 "$compare" "$serial" "$par" --tol 1e-9 --h5
+/usr/bin/python3 "$compare" "$serial" "$par" --tol 1e-9 --h5 --fluid
 
 # 2. The 2-rank run killed and continued
 committed()
@@ -152,7 +158,8 @@ decompose "$qpar" "3D quarter"
 (cd "$q" && cellBlastFoam > log.cellBlastFoam 2>&1) \
     || { tail -20 "$q/log.cellBlastFoam"; exit 1; }
 runParallel "$qpar" log.cellBlastFoam
-/usr/bin/python3 "$compare" "$q" "$qpar" --tol 1e-9 --h5 --pulse 1e6
+/usr/bin/python3 "$compare" "$q" "$qpar" --tol 1e-9 --h5 --pulse 1e6 \
+    --fluid
 # 4. The shortened preview (planeWaveInflow top): serial against 2 ranks
 bash "$here/runPreview.sh" "$work/inflow" -h 0.25e-6 -far 2e-6 -dz 0.25e-6 -cell 0.5e-6 \
     -Z 30e-6 -inflow 14e-6 -endTime 2.4e-8 -noPlots -noRun \
@@ -170,6 +177,6 @@ decompose "$inP" "inflow preview"
 (cd "$inS" && cellBlastFoam > log.cellBlastFoam 2>&1) \
     || { tail -20 "$inS/log.cellBlastFoam"; exit 1; }
 runParallel "$inP" log.cellBlastFoam
-/usr/bin/python3 "$compare" "$inS" "$inP" --tol 1e-9 --h5
+/usr/bin/python3 "$compare" "$inS" "$inP" --tol 1e-9 --h5 --fluid
 echo "cellBlastFoam: 2 ranks equal serial (axisymmetric, 3D quarter, and" \
     "the preview shortened by planeWaveInflow)"

@@ -8,11 +8,13 @@
 # 1, 2, 4, 8 um. The whole scene is then water to its shear moduli, and
 # the water-only 1D column (planeWave) is its exact answer. Asserts every
 # measure of planeWave -check within issue 17's bounds, except these,
-# bounded by what x1 measured (2026-12-05) rounded up; they fall at first
+# bounded by what x1 measured (2026-12-05; the water probes re-measured
+# 2026-12-06 sampling at their points, docs/results/blastPlaneWave.md
+# "The water probes at their points") rounded up; they fall at first
 # order with the cell size (the ladder in the docs: the axis probe's
 # 1-ns peak +8.1 / +5.6 / +4.0 / ... % at x1 / x0.7 / x0.5):
-#   the 1-ns peak of the water at r = 0.1 um     9 %  (x1: +8.07 %)
-#                                  at r = 1 um    6.5 % (+5.67 %)
+#   the 1-ns peak of the water at r = 0.1 um     9 %  (x1: +8.13 %)
+#                                  at r = 1 um    6.5 % (+5.71 %)
 #   the solid's incident 1-ns peak               13 %  (+12.2 / +10.4 %)
 #   the solid's von Mises and strain 1-ns peaks  8 / 6 % (+7.46 / +5.36 %)
 # A scene whose cell scatters (the membrane's quadratic law: +14 % on the

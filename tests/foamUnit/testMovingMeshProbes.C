@@ -21,6 +21,7 @@ Description
 
 #include "movingMeshProbes.H"
 #include "localCellPoint.H"
+#include "scaleFreeCellPointWeight.H"
 #include "interpolationCellPoint.H"
 #include "wedgePolyPatch.H"
 #include "IStringStream.H"
@@ -32,6 +33,7 @@ Description
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <functional>
 
@@ -479,14 +481,14 @@ label checkLocalCellPoint
         {
             continue;
         }
-        const cellPointWeight cpw(mesh, x, celli);
+        const scaleFreeCellPointWeight cpw(mesh, x, celli);
         if (!local.exact<Type>(cpw))
         {
             continue;
         }
         ++nExact;
         const Type value = local.interpolate(vf, cpw);
-        const Type reference = whole.interpolate(x, celli, -1);
+        const Type reference = whole.interpolate(cpw);
         EXPECT_TRUE(sameBits(value, reference))
             << "at " << text(x) << " in cell " << celli << ": "
             << text(value) << " against " << text(reference)
@@ -619,11 +621,47 @@ TEST(localCellPoint, equalsTheWholeFieldInterpolationInAMoving3DBlock)
 }
 
 
-TEST(movingMeshProbes, cellPointEqualsProbesToTheLastBit)
+namespace
+{
+
+//- The whole-field interpolation (interpolationCellPoint) at each probe in
+//  its scale-free tetrahedron (probes' unset value where not found)
+template<class Type>
+tmp<Field<Type>> wholeFieldCellPoint
+(
+    const movingMeshProbes& probes,
+    const GeometricField<Type, fvPatchField, volMesh>& vf
+)
+{
+    const interpolationCellPoint<Type> whole(vf);
+    tmp<Field<Type>> tvalues
+    (
+        new Field<Type>(probes.size(), Type(-VGREAT*pTraits<Type>::one))
+    );
+    forAll(probes, i)
+    {
+        const label celli = probes.elements()[i];
+        if (celli != -1)
+        {
+            tvalues.ref()[i] = whole.interpolate
+            (
+                scaleFreeCellPointWeight(vf.mesh(), probes[i], celli)
+            );
+        }
+    }
+    return tvalues;
+}
+
+} // End anonymous namespace
+
+
+TEST(movingMeshProbes, cellPointEqualsTheWholeFieldInterpolationToTheLastBit)
 {
     // movingMeshProbes' cellPoint values (localCellPoint where exact, the
     // whole-field interpolation where not: the vectors on the wedge) equal
-    // probes' (the whole-field interpolation) after every motion
+    // the whole-field interpolation's in the same (scale-free) tetrahedra
+    // after every motion. (OpenFOAM's probes take other tetrahedra on this
+    // micrometre mesh: scaleFreeCellPointWeight's tests below.)
     foamUnit::testCase tc("movingMeshProbes");
     autoPtr<fvMesh> meshPtr = tc.wedgeMesh();
     fvMesh& mesh = meshPtr();
@@ -658,9 +696,9 @@ TEST(movingMeshProbes, cellPointEqualsProbesToTheLastBit)
         const tmp<volScalarField> p(smoothField<scalar>(mesh, "p"));
         const tmp<volVectorField> U(smoothField<vector>(mesh, "U"));
         const scalarField pLocal(probes.sampleCellPoint(p()));
-        const scalarField pWhole(probes.sample(p()));
+        const scalarField pWhole(wholeFieldCellPoint(probes, p()));
         const vectorField ULocal(probes.sampleCellPoint(U()));
-        const vectorField UWhole(probes.sample(U()));
+        const vectorField UWhole(wholeFieldCellPoint(probes, U()));
         forAll(probes, i)
         {
             EXPECT_TRUE(sameBits(pLocal[i], pWhole[i]))
@@ -672,6 +710,284 @@ TEST(movingMeshProbes, cellPointEqualsProbesToTheLastBit)
         }
         EXPECT_EQ(pLocal.last(), -VGREAT);
     }
+}
+
+
+namespace
+{
+
+//- The point a cellPointWeight samples: its weights applied to its
+//  tetrahedron's vertices (the cell centre, the face triangle's points)
+point sampledPoint(const polyMesh& mesh, const cellPointWeight& cpw)
+{
+    const barycentric& w = cpw.weights();
+    const triFace& tri = cpw.faceVertices();
+    const pointField& pts = mesh.points();
+    return
+        w[0]*mesh.cellCentres()[cpw.cell()]
+      + w[1]*pts[tri[0]] + w[2]*pts[tri[1]] + w[3]*pts[tri[2]];
+}
+
+
+//- For n random positions in the box x0 + s (x1 - x0) (those in the mesh):
+//  the largest distance from the point scaleFreeCellPointWeight samples to
+//  the position, relative to the cell's size (cube root of its volume);
+//  the same for OpenFOAM's cellPointWeight in oldDistance; the number of
+//  positions in the mesh
+label samplingErrors
+(
+    const polyMesh& mesh,
+    const point& x0,
+    const point& x1,
+    const label n,
+    scalar& distance,
+    scalar& oldDistance
+)
+{
+    distance = 0;
+    oldDistance = 0;
+    label found = 0;
+    for (const point& x : randomPoints(x0, x1, n, 23))
+    {
+        const label celli = mesh.findCell(x);
+        if (celli == -1)
+        {
+            continue;
+        }
+        ++found;
+        const scalar size = std::cbrt(mesh.cellVolumes()[celli]);
+        const scaleFreeCellPointWeight cpw(mesh, x, celli);
+        const barycentric& w = cpw.weights();
+        for (direction k = 0; k < 4; ++k)
+        {
+            EXPECT_GT(w[k], -cellPointWeight::tol)
+                << "at " << text(x) << " in cell " << celli;
+        }
+        distance = max(distance, mag(sampledPoint(mesh, cpw) - x)/size);
+        const cellPointWeight old(mesh, x, celli);
+        oldDistance =
+            max(oldDistance, mag(sampledPoint(mesh, old) - x)/size);
+    }
+    return found;
+}
+
+
+//- 1 um cubes, 8 x 8 x 8 (walls)
+autoPtr<fvMesh> micrometreCubes(foamUnit::testCase& tc)
+{
+    return tc.blockMesh
+    (
+        {8, 8, 8},
+        [](const vector& s) { return 8e-6*s; },
+        {"walls", "walls", "walls", "walls", "walls", "walls"},
+        {"wall", "wall", "wall", "wall", "wall", "wall"}
+    );
+}
+
+} // End anonymous namespace
+
+
+TEST(scaleFreeCellPointWeight, samplesTheNominalPointInMicrometreMeshes)
+{
+    // The weights applied to the tetrahedron's vertices give the position
+    // back to rounding (1e-10 of the cell's size: a field linear in space
+    // with exact vertex values reads the exact value) in 1 um cubes, the
+    // graded, sheared wedge and the curved, skewed block, before and after
+    // a motion. OpenFOAM's cellPointWeight samples its first
+    // tetrahedron's centroid there (|det| < SMALL = 1e-15): more than a
+    // tenth of a cell away
+    foamUnit::testCase tc("scaleFreeCellPointWeight");
+    scalar distance, oldDistance;
+
+    autoPtr<fvMesh> cubes = micrometreCubes(tc);
+    EXPECT_EQ
+    (
+        samplingErrors
+        (
+            cubes(), point(1e-9, 1e-9, 1e-9),
+            point(7.999e-6, 7.999e-6, 7.999e-6), 200, distance, oldDistance
+        ),
+        200
+    );
+    EXPECT_LT(distance, 1e-10);
+    EXPECT_GT(oldDistance, 0.1);
+
+    autoPtr<fvMesh> wedge = tc.wedgeMesh();
+    EXPECT_EQ
+    (
+        samplingErrors
+        (
+            wedge(), point(2.01e-6, 0.01e-6, 0), point(17.99e-6, 7.99e-6, 0),
+            100, distance, oldDistance
+        ),
+        100
+    );
+    EXPECT_LT(distance, 1e-10);
+    EXPECT_GT(oldDistance, 0.1);
+
+    autoPtr<fvMesh> skewedPtr = tc.blockMesh
+    (
+        {6, 5, 4},
+        skewedBlock,
+        {"walls", "walls", "walls", "walls", "walls", "walls"},
+        {"wall", "wall", "wall", "wall", "wall", "wall"}
+    );
+    fvMesh& skewed = skewedPtr();
+    const point x0(0.01e-6, 0.01e-6, 0.01e-6);
+    const point x1(5.99e-6, 4.99e-6, 3.99e-6);
+    EXPECT_GT
+    (
+        samplingErrors(skewed, x0, x1, 200, distance, oldDistance), 150
+    );
+    EXPECT_LT(distance, 1e-10);
+    EXPECT_GT(oldDistance, 0.1);
+
+    Random rnd(29);
+    ++tc.time();
+    shakeInterior(skewed, rnd, 0.15e-6);
+    EXPECT_GT
+    (
+        samplingErrors(skewed, x0, x1, 200, distance, oldDistance), 150
+    );
+    EXPECT_LT(distance, 1e-10);
+    EXPECT_GT(oldDistance, 0.1);
+}
+
+
+TEST(scaleFreeCellPointWeight, equalsCellPointWeightOnAMetreMesh)
+{
+    // Where OpenFOAM's test does not fire (metre-size cells) the tetrahedra
+    // and weights are cellPointWeight's to the last bit; and the weights
+    // do not depend on the length scale: the micrometre copy of the mesh
+    // gives the same tetrahedra and weights to rounding
+    foamUnit::testCase tc("scaleFreeCellPointWeight");
+    const foamUnit::testCase::sideWords names
+    {
+        "walls", "walls", "walls", "walls", "walls", "walls"
+    };
+    const foamUnit::testCase::sideWords types
+    {
+        "wall", "wall", "wall", "wall", "wall", "wall"
+    };
+    autoPtr<fvMesh> metre = tc.blockMesh
+    (
+        {6, 5, 4},
+        [](const vector& s) { return 1e6*skewedBlock(s); },
+        names,
+        types
+    );
+    autoPtr<fvMesh> micrometre =
+        tc.blockMesh({6, 5, 4}, skewedBlock, names, types);
+
+    label checked = 0;
+    label inside = 0;
+    for
+    (
+        const point& x
+      : randomPoints
+        (
+            point(0.01, 0.01, 0.01), point(5.99, 4.99, 3.99), 200, 31
+        )
+    )
+    {
+        const label celli = metre->findCell(x);
+        if (celli == -1)
+        {
+            continue;
+        }
+        ++checked;
+        const scaleFreeCellPointWeight cpw(metre(), x, celli);
+        const cellPointWeight old(metre(), x, celli);
+        EXPECT_TRUE(sameBits(cpw.weights(), old.weights()))
+            << "at " << text(x) << ": " << text(cpw.weights())
+            << " against " << text(old.weights());
+        EXPECT_EQ(cpw.faceVertices(), old.faceVertices());
+        inside += (cmptMin(cpw.weights()) > 0);
+
+        const point xMicro(1e-6*x);
+        const label microCelli = micrometre->findCell(xMicro);
+        ASSERT_EQ(microCelli, celli) << "at " << text(x);
+        const scaleFreeCellPointWeight micro(micrometre(), xMicro, celli);
+        EXPECT_EQ(micro.faceVertices(), cpw.faceVertices());
+        for (direction k = 0; k < 4; ++k)
+        {
+            EXPECT_NEAR(micro.weights()[k], cpw.weights()[k], 1e-9)
+                << "at " << text(x);
+        }
+    }
+    EXPECT_GT(checked, 150);
+    EXPECT_GT(inside, 100);   // strictly inside tetrahedra, not centroids
+}
+
+
+TEST(movingMeshProbes, cellPointIsExactForLinearFieldsInMicrometreCubes)
+{
+    // Inside 1 um cubes whose points are all interior the point values of
+    // a field linear in space are exact (the eight cell centres around a
+    // point are symmetric), so cellPoint reads the field's value at the
+    // probe to rounding (relative 1e-10 of its spread); OpenFOAM's probes
+    // read it at their first tetrahedron's centroid
+    foamUnit::testCase tc("movingMeshProbes");
+    autoPtr<fvMesh> meshPtr = micrometreCubes(tc);
+    const fvMesh& mesh = meshPtr();
+    const List<point> positions
+    (
+        randomPoints
+        (
+            point(1.001e-6, 1.001e-6, 1.001e-6),
+            point(6.999e-6, 6.999e-6, 6.999e-6), 60, 37
+        )
+    );
+    OStringStream os;
+    os  << "fields (p); interpolationScheme cellPoint; probeLocations (";
+    for (const point& x : positions)
+    {
+        os  << x << ' ';
+    }
+    os  << ");";
+    const movingMeshProbes probes
+    (
+        "probes", tc.time(), dictionary(IStringStream(os.str())())
+    );
+
+    const auto f = [](const point& x)
+    {
+        return 1e5 + 3e11*x.x() - 7e11*x.y() + 2e11*x.z();
+    };
+    volScalarField p
+    (
+        IOobject("p", mesh.time().timeName(), mesh),
+        mesh,
+        dimensionedScalar(dimPressure, Zero)
+    );
+    forAll(p, celli)
+    {
+        p[celli] = f(mesh.C()[celli]);
+    }
+    forAll(p.boundaryField(), patchi)
+    {
+        const vectorField& Cf = mesh.boundary()[patchi].Cf();
+        scalarField values(Cf.size());
+        forAll(Cf, facei)
+        {
+            values[facei] = f(Cf[facei]);
+        }
+        p.boundaryFieldRef()[patchi] == values;
+    }
+    const scalar spread = max(p.primitiveField()) - min(p.primitiveField());
+
+    const scalarField values(probes.sampleCellPoint(p));
+    const scalarField old(probes.sample(p));
+    scalar error = 0;
+    scalar oldError = 0;
+    forAll(probes, i)
+    {
+        EXPECT_NE(probes.elements()[i], -1);
+        error = max(error, mag(values[i] - f(probes[i]))/spread);
+        oldError = max(oldError, mag(old[i] - f(probes[i]))/spread);
+    }
+    EXPECT_LT(error, 1e-10);
+    EXPECT_GT(oldError, 1e-2);
 }
 
 

@@ -9,16 +9,20 @@ axisymmetricPreview (constant/polyMesh, system/, 0/). In a scratch copy
 (constant, system, 0; the case is not written to) the cell centres are
 written at time 0 (postProcess writeCellCentres) and the linear fields
 Cx, Cy, Cz are sampled at every location of the probes function object
-fluidProbes, by the case's own scheme (cellPoint) and by cellLinearFit
-(movingMeshProbes). A scheme that interpolates at the probe's point reads
-the point's coordinates back; OpenFOAM v1912's cellPoint in micrometre
-cells reads its cell's first tetrahedron's centroid instead
+fluidProbes, by OpenFOAM's probes with cellPoint ("probes"), by
+movingMeshProbes with the case's own scheme, cellPoint ("cellPoint"), and
+with cellLinearFit ("fit"). A scheme that interpolates at the probe's
+point reads the point's coordinates back; OpenFOAM v1912's probes with
+cellPoint in micrometre cells read their cell's first tetrahedron's
+centroid instead
 (tetrahedron::pointToBarycentric: |det| < SMALL = 1e-15 m^3 is taken as
 degenerate and the coordinates (1/4, 1/4, 1/4, 1/4) returned), which
 depends on the cell's face order, so on the decomposition: with --np N
 the same is done on N ranks (decomposePar with the case's
 system/decomposeParDict and constant/cellDecomposition: the run's own
-decomposition).
+decomposition). movingMeshProbes' cellPoint did the same until its
+scaleFreeCellPointWeight (src/fsi, 2026-12-06): runs made before that
+sampled the points "probes" reads back.
 
 Prints, per probe: the nominal point, the point read back by each scheme
 and rank count [um], and the height error [um]. The mesh is the one at
@@ -27,7 +31,8 @@ motionDistance) samples a point that moves with the mesh.
 
 --out DIR (with a finished case): also a copy of CASE's inputs and
 postProcessing/fluidProbes in DIR whose probe file names, in its header,
-the points cellPoint read back on --np ranks (the run's), and planeWave
+the points OpenFOAM's probes read back on --np ranks (where a run made
+before scaleFreeCellPointWeight sampled), and planeWave
 -dz 50e-9 -check (checkQuarterRun.sh's exceptions) run there: the
 scene's probes against the 1D answer at the heights they sampled.
 """
@@ -48,9 +53,15 @@ from neuronFsi import scratch
 FUNCS = """
 functions
 {{
-    ppCellPoint
+    ppProbes
     {{
         type probes; libs ("libsampling.so");
+        fields (Cx Cy Cz); interpolationScheme cellPoint;
+        probeLocations ({loc});
+    }}
+    ppCellPoint
+    {{
+        type movingMeshProbes; libs ("libfsi.so");
         fields (Cx Cy Cz); interpolationScheme cellPoint;
         probeLocations ({loc});
     }}
@@ -64,7 +75,8 @@ functions
 """
 
 
-SCHEMES = (("cellPoint", "ppCellPoint"), ("fit", "ppFit"))
+SCHEMES = (("probes", "ppProbes"), ("cellPoint", "ppCellPoint"),
+           ("fit", "ppFit"))
 
 
 def run(cmd, cwd, log):
@@ -187,7 +199,7 @@ def main():
                   % (s, n, "" if n == 1 else "s", *(1e6*y[i]),
                      1e6*(y[i, k] - x[k])))
     if a.out:
-        planeWaveAt(case, os.path.abspath(a.out), got[("cellPoint", a.np)])
+        planeWaveAt(case, os.path.abspath(a.out), got[("probes", a.np)])
 
 
 if __name__ == "__main__":

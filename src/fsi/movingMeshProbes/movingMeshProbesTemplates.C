@@ -1,5 +1,7 @@
 #include "movingMeshProbes.H"
 #include "localCellPoint.H"
+#include "scaleFreeCellPointWeight.H"
+#include "interpolationCellPoint.H"
 #include <cstring>
 #include "volFields.H"
 #include "surfaceFields.H"
@@ -74,7 +76,7 @@ Foam::tmp<Foam::Field<Type>> Foam::movingMeshProbes::sampleCellPoint
     (void)mesh_.tetBasePtIs();
 
     const localCellPoint interpolator(mesh_);
-    PtrList<cellPointWeight> tets(size());
+    PtrList<scaleFreeCellPointWeight> tets(size());
     bool local = true;
     bool coupled = false;
     forAll(*this, probei)
@@ -84,17 +86,33 @@ Foam::tmp<Foam::Field<Type>> Foam::movingMeshProbes::sampleCellPoint
         {
             tets.set
             (
-                probei, new cellPointWeight(mesh_, operator[](probei), celli)
+                probei,
+                new scaleFreeCellPointWeight(mesh_, operator[](probei), celli)
             );
             local = local && interpolator.exact<Type>(tets[probei]);
             coupled = coupled || interpolator.coupled(tets[probei]);
         }
     }
 
-    // The whole-field interpolation (all ranks) if a probe needs it
+    const Type unset(-VGREAT*pTraits<Type>::one);
+    tmp<Field<Type>> tvalues(new Field<Type>(size(), unset));
+    Field<Type>& values = tvalues.ref();
+
+    // The whole-field interpolation (all ranks: volPointInterpolation
+    // synchronises) in the same tetrahedra if a probe needs it
     if (!returnReduce(local, andOp<bool>()))
     {
-        return sample(vField);
+        const interpolationCellPoint<Type> whole(vField);
+        forAll(*this, probei)
+        {
+            if (tets.set(probei))
+            {
+                values[probei] = whole.interpolate(tets[probei]);
+            }
+        }
+        Pstream::listCombineGather(values, movingMeshProbesFoundOp<Type>());
+        Pstream::listCombineScatter(values);
+        return tvalues;
     }
 
     // The values at the processor patches' points (all ranks) if a
@@ -106,9 +124,6 @@ Foam::tmp<Foam::Field<Type>> Foam::movingMeshProbes::sampleCellPoint
         tatCoupled = interpolator.coupledValues(vField);
     }
 
-    const Type unset(-VGREAT*pTraits<Type>::one);
-    tmp<Field<Type>> tvalues(new Field<Type>(size(), unset));
-    Field<Type>& values = tvalues.ref();
     forAll(*this, probei)
     {
         if (tets.set(probei))
@@ -120,11 +135,23 @@ Foam::tmp<Foam::Field<Type>> Foam::movingMeshProbes::sampleCellPoint
     Pstream::listCombineGather(values, movingMeshProbesFoundOp<Type>());
     Pstream::listCombineScatter(values);
 
-    // Debug: the whole-field interpolation's values, which these must
-    // equal to the last bit
+    // Debug: the whole-field interpolation's values in the same
+    // tetrahedra, which these must equal to the last bit
     if (debug)
     {
-        const Field<Type> whole(sample(vField));
+        Field<Type> whole(size(), unset);
+        {
+            const interpolationCellPoint<Type> interp(vField);
+            forAll(*this, probei)
+            {
+                if (tets.set(probei))
+                {
+                    whole[probei] = interp.interpolate(tets[probei]);
+                }
+            }
+        }
+        Pstream::listCombineGather(whole, movingMeshProbesFoundOp<Type>());
+        Pstream::listCombineScatter(whole);
         forAll(values, probei)
         {
             if
