@@ -6,6 +6,7 @@ in 3D"); not a test. Made for the runs of bench/blast/probeOvershoot3D.sh
 incident passage).
 
     bench/blast/probeOvershoot.py CASE [--reference REF.npz] [--dz 50e-9]
+                                  [--pulse 5e-9]
 
 REF.npz: the 1D answer (neuronFsi.planeWave.column, the case's own law,
 schemes and pulse on the full 100 um column, cells of --dz) at heights
@@ -25,7 +26,8 @@ solidProbes (the Fig. 10 point, cytoplasm and nucleus side):
    volume: what the probe reads if the solver were exact), the 1D answer
    averaged over the containing element, the scene's probe, and the same
    recovery applied to the scene's element pressures of solid.h5 (a check
-   of the rebuilt weights);
+   of the rebuilt weights); where the exact field's recovery reaches its
+   incident 1-ns peak and its largest value in the incident window;
  - the containing element's pressure against the 1D answer at its
    centroid's height, and each patch element's own pressure (solid.h5)
    against the 1D answer averaged over that element;
@@ -46,7 +48,7 @@ import numpy as np
 
 from neuronFsi import planeWave as pw
 
-PULSE = (50e6, 5e-9)        # amplitude [Pa], duration [s] (the measures)
+PULSE = [50e6, 5e-9]        # amplitude [Pa], duration [s] (the measures; --pulse)
 HEIGHTS = np.round(np.arange(0, 8.5e-6 + 1e-12, 0.05e-6), 12)
 SIGNS = np.array([[-1, -1, -1], [1, -1, -1], [1, 1, -1], [-1, 1, -1],
                   [-1, -1, 1], [1, -1, 1], [1, 1, 1], [-1, 1, 1]])
@@ -157,6 +159,25 @@ def measure(t, p, tRef, pRef, z):
     return {k: (np.nan if v is None else v) for k, v in e.items()}
 
 
+def whereIncident(t, p, pRef, z):
+    """Where the incident 1-ns peak of p(t) (the exact field's recovery)
+    is reached: the window centre, the reference's arrival, and p's
+    largest value in the incident window (the windows of
+    neuronFsi.planeWave.measures at height z)."""
+    ta = pw.arrival(t, pRef, PULSE[0])
+    end = ta + min(PULSE[1], 2*max(z, 1e-7)/(1.1*1450.0)) - 0.5e-9
+    tc, mean = pw.runningMean(t, p, 1e-9)
+    inc = (tc >= ta) & (tc <= end)
+    k = int(np.argmax(mean[inc]))
+    raw = (t >= ta) & (t <= end)
+    j = int(np.argmax(p[raw]))
+    return ("the exact field's recovery: incident 1-ns peak %.2f MPa at "
+            "%.2f ns (the 1D arrival %.2f ns), largest value in the "
+            "incident window %.2f MPa at %.2f ns"
+            % (mean[inc][k]/1e6, tc[inc][k]*1e9, ta*1e9, p[raw][j]/1e6,
+               t[raw][j]*1e9))
+
+
 def fmt(e):
     return ("arrival %+.2f ns, 1-ns peak %+6.1f %%, incident %+6.1f %%, "
             "plateau %+5.1f %%" % (1e9*e["arrival"], 100*e["peak1ns"],
@@ -168,7 +189,12 @@ def main():
     a.add_argument("case")
     a.add_argument("--reference", default=None)
     a.add_argument("--dz", type=float, default=50e-9)
+    a.add_argument("--pulse", type=float, default=PULSE[1],
+                   help="the pulse's duration [s] for the measures' "
+                   "windows (default 5e-9; the 1D answer is the case's "
+                   "own pulse)")
     o = a.parse_args()
+    PULSE[1] = o.pulse
     case = os.path.abspath(o.case)
     probes, data = probeHistory(case)
     refPath = o.reference or os.path.join(case, "ref1d.npz")
@@ -215,6 +241,7 @@ def main():
         for label, t, p in rows:
             print("   %-32s %s" % (label, fmt(measure(t, p, ref.t, pX,
                                                        Xp[2]))))
+        print("   %s" % whereIncident(ref.t, exact, pX, Xp[2]))
         if not fine:
             continue
         print("   the containing element against the 1D answer at its "
