@@ -14,6 +14,40 @@ class ScratchError(Exception):
 MARKER = ".scratchFolder"
 
 
+def checkOutputFolder(script, path, entries=()):
+    """outputFolder's judgement without removing anything: ScratchError if
+    path may not be used; True if it holds an earlier output of script
+    (to be emptied), False if it is absent or empty."""
+    if os.path.islink(path) or (os.path.lexists(path)
+                                and not os.path.isdir(path)):
+        raise ScratchError("%s exists and is not a folder (a file or a "
+                           "link): give a new or an empty folder. Nothing "
+                           "was removed." % path)
+    if not os.path.isdir(path):
+        return False
+    names = sorted(os.listdir(path))
+    if not names:
+        return False
+    try:
+        with open(os.path.join(path, MARKER)) as f:
+            owner = f.read().strip()
+    except OSError:
+        owner = None
+    if owner == script:
+        foreign = [n for n in names if n != MARKER and entries
+                   and not any(fnmatch.fnmatchcase(n, e) for e in entries)]
+    else:
+        foreign = names
+    if foreign:
+        raise ScratchError(
+            "%s exists and holds %d file(s) or folder(s) that no earlier "
+            "run of %s made there (%s%s): give a new or an empty folder, or "
+            "move them away. Nothing was removed."
+            % (path, len(foreign), script, " ".join(foreign[:5]),
+               " ..." if len(foreign) > 5 else ""))
+    return True
+
+
 def outputFolder(script, path, entries=()):
     """path made ready, empty but for its marker, for the outputs of
     script (a test's, a benchmark's or a study's folder given on its
@@ -27,33 +61,8 @@ def outputFolder(script, path, entries=()):
     adv51 n01: eleven scripts removed a user's folder given as or inside
     their output folder, rm -rf / shutil.rmtree). Returns path. The
     shell scripts' etc/scratchFolder runs this."""
-    if os.path.islink(path) or (os.path.lexists(path)
-                                and not os.path.isdir(path)):
-        raise ScratchError("%s exists and is not a folder (a file or a "
-                           "link): give a new or an empty folder. Nothing "
-                           "was removed." % path)
-    if os.path.isdir(path):
-        names = sorted(os.listdir(path))
-        if names:
-            try:
-                with open(os.path.join(path, MARKER)) as f:
-                    owner = f.read().strip()
-            except OSError:
-                owner = None
-            if owner == script:
-                foreign = [n for n in names if n != MARKER and entries
-                           and not any(fnmatch.fnmatchcase(n, e)
-                                       for e in entries)]
-            else:
-                foreign = names
-            if foreign:
-                raise ScratchError(
-                    "%s exists and holds %d file(s) or folder(s) that no "
-                    "earlier run of %s made there (%s%s): give a new or an "
-                    "empty folder, or move them away. Nothing was removed."
-                    % (path, len(foreign), script, " ".join(foreign[:5]),
-                       " ..." if len(foreign) > 5 else ""))
-            shutil.rmtree(path)
+    if checkOutputFolder(script, path, entries):
+        shutil.rmtree(path)
     os.makedirs(path, exist_ok=True)
     with open(os.path.join(path, MARKER), "w") as f:
         f.write(script + "\n")
