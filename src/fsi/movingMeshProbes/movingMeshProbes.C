@@ -1,7 +1,6 @@
 #include "movingMeshProbes.H"
 #include "volPointInterpolation.H"
 #include "addToRunTimeSelectionTable.H"
-#include "inputChecks.H"
 
 #include <Eigen/Dense>
 
@@ -152,29 +151,7 @@ Foam::movingMeshProbes::movingMeshProbes
 )
 :
     probes(name, runTime, dict, loadFromFiles, readFields)
-{
-    // A probe in no cell of any rank (outside the water: a point above the
-    // column's top, off the wedge's plane) samples nothing: OpenFOAM's
-    // probes warn in the log, write "Not Found" in the file's header and
-    // -1e300 in every row, and the run went on, exit 0 (adv51 n02). Refused
-    // at the start, naming the function object and the point
-    forAll(*this, probei)
-    {
-        label found = elementList_[probei] >= 0 ? 1 : 0;
-        reduce(found, sumOp<label>());
-        if (!found)
-        {
-            FatalIOErrorInEntry(dict, "probeLocations")
-                << "function object '" << name << "' (type movingMeshProbes):"
-                << " probe " << probei << " of probeLocations, "
-                << operator[](probei) << " m, lies in no cell of the mesh"
-                << " (outside the water: above the column's top, beside it,"
-                << " or off the plane of a wedge); it would sample nothing"
-                << " (OpenFOAM's -1e+300 in every row). Move it into the"
-                << " water or leave it out" << exit(FatalIOError);
-        }
-    }
-}
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
