@@ -9,6 +9,16 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
 dir=$1; pulse=${2:-1e-8}; shift; [ $# -gt 0 ] && shift
+# DIR.log only over this script's own earlier log (its DIR an earlier
+# output of runPreview.sh): a user's file of that name was overwritten
+# (adv51 n08 (e)); DIR itself is runPreview.sh's to check
+if [ -e "$dir.log" ] && [ "$(cat "$dir/.scratchFolder" 2>/dev/null)" != runPreview.sh ]
+then
+    echo "membraneWaterLaw.sh: error: $dir.log exists and is not the log" \
+        "of an earlier run of this script: give another DIR, or move it" \
+        "away. Nothing was removed." >&2
+    exit 1
+fi
 bash "$here/../../tests/blast/runPreview.sh" "$dir" -pulse "$pulse" \
     -noPlots -noVTK -noRun "$@" > "$dir.log" 2>&1
 cd "$dir/axisymmetricPreview"

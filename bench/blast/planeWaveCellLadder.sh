@@ -34,12 +34,13 @@ do
         *) echo "planeWaveCellLadder.sh: unknown option $1" >&2; exit 2 ;;
     esac
 done
+. "$root/etc/scratchFolder"
 exe=$root/build/bin/planeWaveCell
 [ -x "$exe" ] || { echo "no $exe: cmake --build build --target planeWaveCell" >&2; exit 1; }
 mkdir -p "$dir"
 if [ ! -f "$dir/wave5ns.dat" ]
 then
-    rm -rf "$dir/column" && mkdir -p "$dir/column"
+    scratchFolder planeWaveCellLadder.sh "$dir/column"   # adv51 n01
     cp -r "$root/tutorials/blast/quarter3D/"{0.orig,constant,system} "$dir/column/"
     nice -n 10 /usr/bin/python3 "$here/planeWaveTable.py" "$dir/column" \
         "$dir/wave5ns.dat" --endTime 150e-9 || exit 1

@@ -6,7 +6,8 @@
 # sampling, movingMeshProbes) is timed under the same machine load.
 #   OLDLIB  a directory holding the libfsi.so to compare with (e.g. a copy of
 #           platforms/*/lib/libfsi.so built from the commit before)
-#   DIR     scratch directory (replaced): DIR/old, DIR/new
+#   DIR     scratch directory: DIR/old, DIR/new (new, empty or an earlier
+#           output of this script: etc/scratchFolder)
 #   options those of tutorials/blast/axisymmetricPreview/Allrun (default
 #           -noPlots -endTime 1e-7)
 # Prints each run's "CPU time of the time loop" line (mesh motion, fluid,
@@ -21,7 +22,9 @@ oldLib=$(cd "$1" && pwd); dir=$2; shift 2
 [ "$#" -gt 0 ] || set -- -noPlots -endTime 1e-7
 . "$here/../../etc/bashrc"
 
-rm -rf "$dir"
+# DIR new, empty or an earlier output of this script (adv51 n01)
+. "$here/../../etc/scratchFolder"
+scratchFolder probeCost.sh "$dir" case old new
 "$here/../../tests/blast/runPreview.sh" "$dir/case" -noRun "$@" > /dev/null
 for v in old new
 do

@@ -33,7 +33,6 @@ Full: factors 1 0.7 to 3 ns; --quick: 1.4 1 to 1 ns, written into --out
 import datetime
 import os
 import re
-import shutil
 import sys
 
 from neuronFsi import bench, logs, msh, scratch
@@ -54,8 +53,9 @@ def caseDir(out, f, ranks):
 
 def runLevel(f, out, endTime, env, ranks=1):
     case = caseDir(out, f, ranks)
-    if os.path.exists(case):
-        shutil.rmtree(case)
+    # an earlier case of this script only, never a user's folder (adv51
+    # n01 (k))
+    scratch.outputFolder("quarter3D.py", case)
     scratch.copyInputs(TUTORIAL, case, ("plotBlast.py",))
     c = os.path.join(case, "quarter3D")
     scratch.copyInputs(os.path.join(TUTORIAL, "quarter3D"), c,

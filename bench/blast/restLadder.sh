@@ -18,6 +18,7 @@ set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 . "$root/etc/bashrc"
+. "$root/etc/scratchFolder"
 kind=$1 dir=$2; shift 2
 mkdir -p "$dir"
 while [ $# -ge 2 ]
@@ -32,7 +33,7 @@ do
             $opts -noPlots -noVTK > "$dir/$label.log" 2>&1
         run=$case/axisymmetricPreview
     else
-        rm -rf "$case" && mkdir -p "$case"
+        scratchFolder restLadder.sh "$case"
         cp -r "$root/tutorials/blast/quarter3D/"{0.orig,constant,system,Allrun} "$case/"
         # shellcheck disable=SC2086
         (cd "$case" && ./Allrun $opts -noRun -noPlots \

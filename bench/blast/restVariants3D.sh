@@ -29,6 +29,7 @@ set -uo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 . "$root/etc/bashrc"
+. "$root/etc/scratchFolder"
 [ $# -ge 4 ] || { echo "usage: $0 DIR LABEL \"OPTIONS\" \"EDITS\" ..." >&2; exit 1; }
 dir=$1; shift
 mkdir -p "$dir"
@@ -37,7 +38,7 @@ do
     label=$1 opts=$2 edits=$3; shift 3
     case=$dir/$label
     echo "== quarter3D $label: $opts; edits: ${edits:-none}"
-    rm -rf "$case" && mkdir -p "$case"
+    scratchFolder restVariants3D.sh "$case"     # never a user's (adv51 n01)
     cp -r "$root/tutorials/blast/quarter3D/"{0.orig,constant,system,Allrun} "$case/"
     ok=yes
     for e in $edits

@@ -35,7 +35,6 @@ Writes docs/benchmarks/blast.md and blast_cost_vs_error.png (full) or
 import datetime
 import math
 import os
-import shutil
 import sys
 
 import numpy as np
@@ -69,8 +68,9 @@ def prepare(case, f, Z, endTime, env, extra=(), pulse=PULSE):
     """Scratch copy of the tutorial (inputs only, as tests/blast/
     runPreview.sh) in case/, meshes and fields prepared by Allrun -noRun
     (sizes scaled by f; extra: more Allrun options)"""
-    if os.path.exists(case):
-        shutil.rmtree(case)
+    # an earlier case of this script only, never a user's folder (adv51
+    # n01 (j))
+    scratch.outputFolder("run.py", case)
     scratch.copyInputs(TUTORIAL, case,
                        ("fluidWedgeMesh.py", "plotBlast.py"))
     c = os.path.join(case, "axisymmetricPreview")

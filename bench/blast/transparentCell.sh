@@ -63,6 +63,16 @@ then
     case " $* " in *" -inflow "*) ;; *) sizes+=(-inflow 20e-6) ;; esac
     case " $* " in *" -outer "*) ;; *) sizes+=(-outer "$(size 8 "$far")") ;; esac
 fi
+# DIR.log only over this script's own earlier log (its DIR an earlier
+# output of runPreview.sh): a user's file of that name was overwritten
+# (adv51 n01 (f)); DIR itself is runPreview.sh's to check
+if [ -e "$dir.log" ] && [ "$(cat "$dir/.scratchFolder" 2>/dev/null)" != runPreview.sh ]
+then
+    echo "transparentCell.sh: error: $dir.log exists and is not the log of" \
+        "an earlier run of this script: give another DIR, or move it away." \
+        "Nothing was removed." >&2
+    exit 1
+fi
 bash "$here/../../tests/blast/runPreview.sh" "$dir" "${sizes[@]}" \
     -noPlots -noVTK -noRun "$@" > "$dir.log" 2>&1 \
     || { tail -5 "$dir.log"; exit 1; }

@@ -6,14 +6,30 @@ cell is at rest again after the pulse: no node drifts. Before the hourglass
 viscosity (docs/results/blast.md) membrane nodes kept 7-8 m/s from 80 ns on
 and an element failed at 132 ns.
 usage: checkLongRun.py case endTime"""
+import math
+import os
 import sys
 import numpy as np
 
-from neuronFsi import logs, postProcessing
+from neuronFsi import logs, postProcessing, script
 from neuronFsi.checks import Checks
 from neuronFsi.solidResults import SolidResults
 
-case, endTime = sys.argv[1], float(sys.argv[2])
+# an input's error (a missing or damaged file, a wrong argument) is one
+# line naming it, exit 1, not a traceback (adv51 m06)
+script.guard()
+if len(sys.argv) != 3:
+    sys.exit("checkLongRun.py: error: usage: checkLongRun.py case endTime")
+case = sys.argv[1]
+try:
+    endTime = float(sys.argv[2])
+except ValueError:
+    endTime = math.nan
+if not (math.isfinite(endTime) and endTime > 0):
+    sys.exit("checkLongRun.py: error: endTime '%s' is not a number of "
+             "seconds in (0, inf)" % sys.argv[2])
+if not os.path.isdir(case):
+    sys.exit("checkLongRun.py: error: the case %s is not a folder" % case)
 check = Checks()
 
 
@@ -40,6 +56,10 @@ check(probes[:, 1].max() > 25e6, "pulse reached the probe: peak pressure "
 # Rest after the pulse: particle velocity of the 50 MPa pulse in water is
 # 33 m/s; once it has left (t >= 110 ns) no node may keep 10 % of it
 up = 33.0
+if not os.path.isfile(f"{case}/solid/solid.h5"):
+    sys.exit(f"checkLongRun.py: error: {case}/solid/solid.h5 does not "
+             "exist: no solid results to check (the run wrote none, or "
+             "they were moved)")
 with SolidResults(f"{case}/solid/solid.h5") as f:
     steps = f.steps()
     times = np.array(f.times())

@@ -7,7 +7,10 @@ here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
 src=$here/../../tutorials/blast
 dir=$1; shift
-rm -rf "$dir"
+# DIR new, empty or an earlier output of this script (adv51 n01: a user's
+# folder given as DIR was removed)
+. "$here/../../etc/scratchFolder"
+scratchFolder runPreview.sh "$dir" axisymmetricPreview
 mkdir -p "$dir/axisymmetricPreview"
 for f in 0.orig constant system Allrun
 do

@@ -105,6 +105,22 @@ class ReferenceFile(TempDirTestCase):
             back.at(2e-5)
 
 
+    def testCutOrDamagedReferenceRefused(self):
+        """adv51 m06: a reference with its header only ended in an
+        IndexError in incidentWindow.py, a nan row was printed as a value:
+        fewer than 2 rows or a value that is not finite is refused"""
+        head = "# x\n# time  p_z1e-06\n"
+        self.write("header.dat", head)
+        with self.assertRaisesRegex(pw.PlaneWaveError,
+                                    "0 rows of values: a reference is a "
+                                    "history of at least 2 rows"):
+            pw.readReference(self.tmp + "/header.dat")
+        self.write("nan.dat", head + "0 0\n1e-10 nan\n2e-10 1\n")
+        with self.assertRaisesRegex(pw.PlaneWaveError,
+                                    "row 2, column p_z1e-06 is nan, not a "
+                                    "finite number"):
+            pw.readReference(self.tmp + "/nan.dat")
+
     def testDensitiesReadBackAndOldFilesHaveNone(self):
         heights = [1e-6, 2e-6]
         t = np.array([0.0, 1e-10])

@@ -52,3 +52,53 @@ class Scratch(TempDirTestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class OutputFolder(TempDirTestCase):
+    """adv51 n01: scripts removed a user's folder given as (or inside) their
+    output folder. outputFolder uses a new or empty folder, empties only
+    the script's own earlier output, refuses anything else."""
+
+    def testNewEmptyAndOwnEarlierOutput(self):
+        d = os.path.join(self.tmp, "out")
+        scratch.outputFolder("s.sh", d, ("case", "*.log"))
+        self.assertEqual(os.listdir(d), [scratch.MARKER])
+        self.write("out/case/x", "1\n")
+        self.write("out/run.log", "2\n")
+        scratch.outputFolder("s.sh", d, ("case", "*.log"))
+        self.assertEqual(os.listdir(d), [scratch.MARKER])
+        os.makedirs(os.path.join(self.tmp, "empty"))
+        scratch.outputFolder("s.sh", os.path.join(self.tmp, "empty"))
+
+    def testUsersFolderRefusedAndKept(self):
+        self.write("user/notes.txt", "mine\n")
+        self.write("user/data/run1.csv", "1\n")
+        d = os.path.join(self.tmp, "user")
+        with self.assertRaisesRegex(scratch.ScratchError,
+                                    "holds 2 file.* that no earlier run of "
+                                    r"s\.sh made there \(data notes\.txt\)"):
+            scratch.outputFolder("s.sh", d)
+        self.assertEqual(sorted(os.listdir(d)), ["data", "notes.txt"])
+        # another script's output is not this one's
+        scratch.outputFolder("t.sh", os.path.join(self.tmp, "t"))
+        self.write("t/case/x", "1\n")
+        with self.assertRaises(scratch.ScratchError):
+            scratch.outputFolder("s.sh", os.path.join(self.tmp, "t"))
+        # a user's file put into the script's own output folder
+        scratch.outputFolder("s.sh", os.path.join(self.tmp, "own"), ("case",))
+        self.write("own/notes.txt", "mine\n")
+        with self.assertRaisesRegex(scratch.ScratchError, r"\(notes\.txt\)"):
+            scratch.outputFolder("s.sh", os.path.join(self.tmp, "own"),
+                                 ("case",))
+        self.assertTrue(os.path.isfile(os.path.join(self.tmp, "own",
+                                                    "notes.txt")))
+
+    def testFileOrLinkRefused(self):
+        self.write("f", "mine\n")
+        with self.assertRaisesRegex(scratch.ScratchError, "is not a folder"):
+            scratch.outputFolder("s.sh", os.path.join(self.tmp, "f"))
+        os.makedirs(os.path.join(self.tmp, "real"))
+        os.symlink(os.path.join(self.tmp, "real"),
+                   os.path.join(self.tmp, "link"))
+        with self.assertRaisesRegex(scratch.ScratchError, "is not a folder"):
+            scratch.outputFolder("s.sh", os.path.join(self.tmp, "link"))

@@ -7,7 +7,7 @@ import h5py
 import numpy as np
 
 from fixtures import TempDirTestCase
-from neuronFsi.solidResults import SolidResults
+from neuronFsi.solidResults import SolidResults, SolidResultsError
 
 
 class Results(TempDirTestCase):
@@ -59,7 +59,7 @@ class Results(TempDirTestCase):
                 r.field("1", "velocity")
 
     def testMissingFile(self):
-        with self.assertRaisesRegex(OSError, "absent.h5: cannot open"):
+        with self.assertRaisesRegex(SolidResultsError, "absent.h5: cannot open"):
             SolidResults(os.path.join(self.tmp, "absent.h5"))
 
 

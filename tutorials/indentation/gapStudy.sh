@@ -26,8 +26,10 @@ src=$1 name=$2
 shift 2
 work=${WORK:-$(mktemp -d)}
 c=$work/${src}_$name
-rm -rf "$c"
-cp -r "$here/$src" "$c"
+# an earlier case of this script only, never a user's folder (adv51 n01)
+. "$here/../../etc/scratchFolder"
+scratchFolder gapStudy.sh "$c"
+cp -r "$here/$src/." "$c/"
 cd "$c"
 /usr/bin/python3 - "$@" <<'PY'
 import os, re, sys

@@ -10,13 +10,16 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
+. "$here/../../etc/scratchFolder"
 work=${WORK:-$(mktemp -d)}
 case=${CASE:-averageCell}
 for s in ${@:-1.4 1 0.7}
 do
     c=$work/${case}_$s
-    rm -rf "$c"
-    cp -r "$here/$case" "$c"
+    # an earlier case of this script only, never a user's folder (adv51
+    # n01)
+    scratchFolder meshConvergence.sh "$c"
+    cp -r "$here/$case/." "$c/"
     (
         cd "$c"
         /usr/bin/python3 - "$s" "${SET:-}" <<'PY'

@@ -21,6 +21,8 @@ except ImportError:
 script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import indentationPlots as ip
 
+if len(sys.argv) not in (2, 3):
+    sys.exit("plotFields.py: error: usage: plotFields.py <case> [label]")
 case = sys.argv[1]
 label = sys.argv[2] if len(sys.argv) > 2 else "C1,i"
 try:

@@ -26,7 +26,7 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
     {
         if (d.found(key))
         {
-            FatalIOErrorInFunction(d)
+            FatalIOErrorInEntry(d, key)
                 << "entry '" << key << "' belongs in the sub-dictionary "
                 << "hexCoeffs (type hex)" << exit(FatalIOError);
         }
@@ -63,7 +63,7 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
     // and ignored without a word (adv30 cm09)
     if (d.found("wedgeAngle") && !g_.axisymmetric())
     {
-        FatalIOErrorInFunction(d)
+        FatalIOErrorInEntry(d, "wedgeAngle")
             << "entry 'wedgeAngle' is available in the axisymmetric mode "
             << "only: the 3D modes (quarter3D, full3D) mesh no wedge"
             << exit(FatalIOError);
@@ -88,7 +88,7 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
     }
     if (type != "tetrahedra" && type != "hex")
     {
-        FatalIOErrorInFunction(d)
+        FatalIOErrorInEntry(d, "type")
             << "entry 'type' = " << type << " is not a water cell type; "
             << "valid: tetrahedra hex" << exit(FatalIOError);
     }
@@ -98,7 +98,7 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
         // maxCells of the tetrahedra and the wedge is an entry of fluid
         if (d.found(key) && (key != "maxCells" || type == "hex"))
         {
-            FatalIOErrorInFunction(d)
+            FatalIOErrorInEntry(d, key)
                 << "entry '" << key << "' belongs in the sub-dictionary "
                 << "hexCoeffs (type hex)" << exit(FatalIOError);
         }
@@ -149,7 +149,7 @@ Foam::fluidBox::fluidBox(const cellGeometry& geom)
     height_ = L_;
     if (d.found("height") && g_.axisymmetric())
     {
-        FatalIOErrorInFunction(d)
+        FatalIOErrorInEntry(d, "height")
             << "entry 'height' is available in the 3D modes (quarter3D, "
             << "full3D) only: the axisymmetric wedge fills the box"
             << exit(FatalIOError);
@@ -343,7 +343,7 @@ void Foam::fluidBox::readHex(const dictionary& d)
     const scalar nearMin = min(s.lateralSize, s.axialSize)/maxAspectRatio;
     if (!(nearSize_ >= nearMin))
     {
-        FatalIOErrorInFunction(g_.fluidDict())
+        FatalIOErrorInEntry(g_.fluidDict(), "nearSize")
             << "entry 'nearSize' = " << nearSize_ << " m is outside the"
             << " valid range [" << nearMin << ", " << H << "] m with type"
             << " hex: the first layer at the cell would be "
@@ -359,7 +359,7 @@ void Foam::fluidBox::readHex(const dictionary& d)
     const scalar gap = min(0.5*L_ - a, L_ - H);
     if (gap <= nearSize_)
     {
-        FatalIOErrorInFunction(d)
+        FatalIOErrorInEntry(d, "boxSize")
             << "boxSize " << L_ << " m leaves " << gap << " m between the "
             << "cell and the box, not more than nearSize " << nearSize_
             << " m: no room for the inner box of the hexahedral water"
@@ -439,7 +439,7 @@ void Foam::fluidBox::readHex(const dictionary& d)
         (
             placed
           ? FatalIOError(FUNCTION_NAME, __FILE__, __LINE__, file, line)
-          : FatalIOErrorInFunction(d)
+          : FatalIOErrorInEntry(d, "axialSize")
         )
             << "the hexahedral water would have at least "
             << foamTools::countAboveText(std::ceil(lower), maxCells).c_str()
@@ -450,7 +450,7 @@ void Foam::fluidBox::readHex(const dictionary& d)
     hex_.reset(new hexFluidMesh(s));
     if (hex_->nCells() > maxCells)
     {
-        FatalIOErrorInFunction(d)
+        FatalIOErrorInEntry(d, word(d.found("maxCells") ? "maxCells" : "axialSize"))
             << "the hexahedral water would have "
             << scalar(hex_->nCells())
             << " cells, more than maxCells " << maxCells << " (coarser "
@@ -476,7 +476,7 @@ Foam::scalar Foam::fluidBox::readHeight
     );
     if (!(Z > lo && Z <= L_))
     {
-        FatalIOErrorInFunction(d)
+        FatalIOErrorInEntry(d, "height")
             << "entry 'height' = " << foamTools::numberText(Z).c_str()
             << " m is outside the valid range "
             << foamTools::rangeText(lo, L_, false, foamTools::numberText(Z))

@@ -28,6 +28,7 @@ Not a check; docs/results/blast3D.md, "The 10 and 15 ns pulses at the
 item-1 setting".
 """
 import argparse
+import math
 import os
 import sys
 
@@ -47,13 +48,35 @@ def firstAfter(t, p, t0, level):
     return t[k - 1] + (level - p[k - 1])*(t[k] - t[k - 1])/(p[k] - p[k - 1])
 
 
+def pressure(text):
+    """--level, --foot: a finite pressure in (0, 1e9] Pa (adv51 m06: nan,
+    inf, -1, 1e400 accepted; nan printed every echo column as "-")"""
+    v = float(text)
+    if not (math.isfinite(v) and 0 < v <= 1e9):
+        raise argparse.ArgumentTypeError("%s is not a pressure in the valid "
+                                         "range (0, 1e9] Pa" % text)
+    return v
+
+
+def nanoseconds(text):
+    """--series' times: finite, in [0, 1e9] ns"""
+    v = float(text)
+    if not (math.isfinite(v) and 0 <= v <= 1e9):
+        raise argparse.ArgumentTypeError("%s is not a time in the valid "
+                                         "range [0, 1e9] ns" % text)
+    return v
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("case")
-    ap.add_argument("--level", type=float, default=75e6)
-    ap.add_argument("--foot", type=float, default=55e6)
-    ap.add_argument("--series", type=float, nargs=3, default=None)
+    ap.add_argument("--level", type=pressure, default=75e6)
+    ap.add_argument("--foot", type=pressure, default=55e6)
+    ap.add_argument("--series", type=nanoseconds, nargs=3, default=None)
     a = ap.parse_args()
+    if a.series and not (a.series[1] >= a.series[0] and a.series[2] > 0):
+        ap.error("--series T0 T1 DT: T1 must not be before T0 and DT must "
+                 "be positive")
     # a folder that is no case, or a case planeWave never ran on: one
     # line, no traceback (adv50b k20)
     if not os.path.isfile(os.path.join(a.case, "system", "controlDict")):
@@ -81,7 +104,16 @@ def main():
           "echo at %g MPa, at %g MPa: scene/ref [ns] (diff)"
           % (a.level/1e6, a.foot/1e6))
     series = []
+    # probes above the mesh's water (caseProbes returns them unchecked):
+    # OpenFOAM's fill -1e300 is no pressure (adv51 m06: printed as
+    # -1e+294 MPa in --series)
+    top = pw.meshTop(a.case)
     for name, z, t, p in probes:
+        if top is not None and z > top*(1 + 1e-9):
+            print("%s  %.3f  above the water (the mesh's water ends at "
+                  "%.3f um): outside the mesh, not measured"
+                  % (name.replace(" ", "_"), z*1e6, top*1e6))
+            continue
         if name.startswith("solid "):
             m = ref.material.get(min(ref.material, key=lambda h: abs(h - z)))
             tr, pr = ref.t, m["p"]
@@ -96,6 +128,15 @@ def main():
             print("%s  %.3f  no arrival of the incident wave in the "
                   "reference by t = %.2f ns: not measured"
                   % (name.replace(" ", "_"), z*1e6, tr[-1]*1e9))
+            continue
+        # a history shorter than the 1-ns window has no 1-ns mean (adv51
+        # m06: "argmax of an empty sequence", a traceback)
+        short = [w for w, tt in (("scene", t), ("reference", tr))
+                 if len(tt) < 2 or tt[-1] - tt[0] < 1e-9]
+        if short:
+            print("%s  %.3f  the %s history is shorter than the 1-ns "
+                  "window: not measured" % (name.replace(" ", "_"), z*1e6,
+                                            " and ".join(short)))
             continue
         echo = 2*z/(1.1*c0)
         end = ta + min(duration, echo) - 0.5e-9

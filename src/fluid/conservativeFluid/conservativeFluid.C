@@ -5,9 +5,12 @@
 #include "inputChecks.H"
 #include "subDict.H"
 #include "physicalBounds.H"
+#include "OStringStream.H"
 
 #include <cfenv>
 #include <cmath>
+#include <iostream>
+#include <unistd.h>
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -187,7 +190,7 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
     swirlDirection_(Zero)
 {
     // The conservative state of a written time: a restart continues
-    // exactly (bitwise with writePrecision 17 or binary)
+    // exactly (bitwise with writePrecision 17 and writeControl timeStep)
     const word& t = mesh.time().timeName();
     const bool conservativeRestart =
         IOobject("rhoU", t, mesh).typeHeaderOk<volVectorField>(true)
@@ -198,26 +201,8 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
     {
         Info<< "Restarting from the conservative state rho, rhoU, rhoE of"
             << " time " << t << " s" << nl << endl;
-        // The exact continuation needs the state and uniform/time (its
-        // deltaT) written with 17 digits: with fewer it is another run,
-        // said (adv50b k58: writePrecision 3, ascii, 2e-09/p 39 MPa off
-        // the uninterrupted run, exit 0 without a word)
-        const label digits = IOstream::defaultPrecision();
-        if (digits < 17)
-        {
-            const bool ascii =
-                mesh.time().writeFormat() == IOstream::ASCII;
-            WarningInFunction
-                << "restarting from time " << t << " s of a case written "
-                << "with writePrecision " << digits << " (system/"
-                << "controlDict, writeFormat "
-                << (ascii ? "ascii" : "binary") << "): "
-                << (ascii ? "its fields and " : "") << "uniform/time (the "
-                << "step deltaT) hold " << digits << " digits, so this "
-                << "run is not the exact continuation of the one that "
-                << "wrote them (writePrecision 17 is)" << nl << endl;
-        }
-
+        // The digits the time was written with are checked before
+        // (foamTools::writeGuard::checkRestartDigits, adv50b k58)
         const volScalarField rhoWritten
         (
             IOobject
@@ -370,7 +355,7 @@ void Foam::conservativeFluid::checkRestartState
     // Decided by every rank together (adv49b i23: the rank with the bad
     // cell stopped, the others went on into the first exchange and died
     // in MPI with MPI_ERR_TRUNCATE): each rank's verdict reduced; a rank
-    // whose cells are good stops too, naming the ranks that are not
+    // whose cells are good stops too
     bool anyBad = bad >= 0;
     if (Pstream::parRun())
     {
@@ -380,35 +365,93 @@ void Foam::conservativeFluid::checkRestartState
     {
         return;
     }
-    if (bad < 0)
+    // The cell centres, made by every rank together: the first use of
+    // the mesh's geometry exchanges the processor patches' face centres
+    // with the neighbour ranks, and made by the bad rank alone (for its
+    // text) it left a message the master then took for the next one
+    // (MPI_ERR_TRUNCATE; fix19g's gathered texts: "Wrong token type")
+    const vectorField& centres = mesh_.C().primitiveField();
+    // This rank's text (empty: its cells are good)
+    OStringStream text;
+    Ostream& os = text;
+    if (bad >= 0)
+    {
+        os<< "the conservative state of the restart time "
+            << mesh_.time().timeName() << " s in cell " << bad << " (at "
+            << centres[bad] << " m): rho = " << rho[bad] << " kg/m^3 ("
+            << rhoWritten.objectPath().c_str() << "), rhoU = " << rhoU[bad]
+            << " kg/(m^2 s), rhoE = " << rhoE[bad] << " J/m^3";
+        if (why.compare(0, 15, "the density rho") != 0)
+        {
+            os<< " (U = " << Ubad << " m/s";
+            if (why.compare(0, 16, "the velocity rho") != 0)
+            {
+                os<< ", e = " << e[bad] << " J/kg";
+            }
+            os<< ")";
+        }
+        os<< ": " << why.c_str() << "; the files rho, rhoU, rhoE of the time "
+            << "were edited or damaged after the run wrote them";
+    }
+    const char* const nothingRun =
+        ". Nothing was run: restart from an earlier time, or start anew";
+    if (!Pstream::parRun())
     {
         FatalErrorInFunction
-            << "the conservative state of the restart time "
-            << mesh_.time().timeName() << " s is no state of the fluid on "
-            << "another rank (its message names the cell and the files)."
-            << " Nothing was run: restart from an earlier time, or start "
-            << "anew" << exit(FatalError);
+            << text.str().c_str() << nothingRun << exit(FatalError);
     }
-    FatalErrorInFunction
-        << "the conservative state of the restart time "
-        << mesh_.time().timeName() << " s in cell " << bad << " (at "
-        << mesh_.C()[bad] << " m): rho = " << rho[bad] << " kg/m^3 ("
-        << rhoWritten.objectPath() << "), rhoU = " << rhoU[bad]
-        << " kg/(m^2 s), rhoE = " << rhoE[bad] << " J/m^3";
-    if (why.compare(0, 15, "the density rho") != 0)
+    // In parallel a bad rank other than the master prints its own text
+    // first, whole and flushed, and only then tells the master, which
+    // stops the run naming the bad ranks; the other ranks wait for that
+    // stop (adv50a k02 (c), (d), adv49b i23: a good rank's "no state of
+    // the fluid on another rank" only, the bad rank's text lost to that
+    // rank's abort in 5 of 5 runs). Texts are not sent through
+    // OpenFOAM's streams (fix19g's gathered List<string> failed there:
+    // "Wrong token type - expected string, found word ''")
+    if (bad >= 0 && !Pstream::master())
     {
-        FatalError << " (U = " << Ubad << " m/s";
-        if (why.compare(0, 16, "the velocity rho") != 0)
-        {
-            FatalError << ", e = " << e[bad] << " J/kg";
-        }
-        FatalError << ")";
+        std::cerr
+            << "\n--> FOAM FATAL ERROR (rank " << Pstream::myProcNo()
+            << "): " << text.str() << nothingRun << "\n" << std::endl;
     }
-    FatalError
-        << ": " << why.c_str() << "; the files rho, rhoU, rhoE of the time"
-        << " were edited or damaged after the run wrote them. Nothing was "
-        << "run: restart from an earlier time, or start anew"
-        << exit(FatalError);
+    labelList badCell(Pstream::nProcs(), -1);
+    badCell[Pstream::myProcNo()] = bad;
+    Pstream::listCombineGather(badCell, maxEqOp<label>());
+    if (!Pstream::master())
+    {
+        for (int i = 0; i < 600; ++i)
+        {
+            ::sleep(1);
+        }
+        FatalErrorInFunction
+            << "The master rank did not stop the run: its message is the"
+            << " one that says why." << exit(FatalError);
+    }
+    FatalErrorInFunction;
+    if (bad >= 0)
+    {
+        FatalError << "rank 0: " << text.str().c_str();
+    }
+    label nOther = 0;
+    forAll(badCell, proci)
+    {
+        if (proci != Pstream::myProcNo() && badCell[proci] >= 0)
+        {
+            FatalError
+                << (nOther++ ? ", " : bad >= 0 ? "\n    and " : "")
+                << "rank " << proci << " (cell " << badCell[proci] << ")";
+        }
+    }
+    if (nOther)
+    {
+        FatalError
+            << ": the conservative state of the restart time "
+            << mesh_.time().timeName() << " s is no state of the fluid"
+            << " there; each such rank's message, printed above as"
+            << " \"FOAM FATAL ERROR (rank N)\", names the cell, the state"
+            << " and the files";
+    }
+    FatalError << nothingRun << exit(FatalError);
 }
 
 

@@ -114,7 +114,40 @@ def release(case, pid):
     giveBack(os.path.join(os.path.realpath(case), FILE), pid)
 
 
+def busyUnder(paths):
+    """[(folder, why)] of the runs going on (caseLock.inUse: a live lock,
+    a run caseRuns started) in the folders under paths (each path itself
+    and every folder below it, links not followed) that hold a run lock
+    or a run marker: what an Allclean removing paths would remove under a
+    running run (adv51 n09: the paper's Allclean removed a running
+    cellBlastFoam's case under postProcessing/runs/; n10: the calibration
+    Allclean removed validationCell/ under predictValidation.py's
+    cellIndentationFoam)."""
+    from . import caseRuns
+    from .caseLock import FILE, inUse
+    busy = []
+    for path in paths:
+        if os.path.islink(path) or not os.path.isdir(path):
+            continue
+        for d, dirs, files in os.walk(path):
+            dirs[:] = [x for x in dirs
+                       if not os.path.islink(os.path.join(d, x))]
+            if FILE in files or caseRuns.MARKER in files:
+                why = inUse(d)
+                if why:
+                    busy.append((d, why))
+    return busy
+
+
 def main(argv):
+    if len(argv) >= 2 and argv[0] == "free":
+        # free PROG PATH...: exit 1 naming each run going on under PATHs
+        busy = busyUnder(argv[2:])
+        for d, why in busy:
+            print("%s: error: %s: %s; it would be removed under that run."
+                  " Wait for it to end or stop it. Nothing was removed."
+                  % (argv[1], os.path.abspath(d), why), file=sys.stderr)
+        return 1 if busy else 0
     if len(argv) != 3 or argv[0] not in ("take", "release") \
             or not argv[2].isdigit():
         sys.exit("usage: python3 -m neuronFsi.allrunLock take|release CASE "

@@ -100,9 +100,10 @@ def main(fn):
     command, a missing or unreadable run or log: BenchError and the
     readers' errors) end it with "<script>: error: <message>", exit 1,
     instead of a traceback."""
-    from . import foamDict, logs, planeWave, postProcessing
+    from . import foamDict, logs, planeWave, postProcessing, scratch
     errors = (BenchError, logs.LogError, postProcessing.ColumnFileError,
-              planeWave.PlaneWaveError, foamDict.DictError)
+              planeWave.PlaneWaveError, foamDict.DictError,
+              scratch.ScratchError)
     try:
         return fn()
     except errors as err:

@@ -23,7 +23,7 @@ import matplotlib.pyplot as plt
 from matplotlib.collections import PolyCollection
 
 from . import msh, postProcessing
-from .solidResults import SolidResults
+from .solidResults import SolidResults, SolidResultsError
 
 RATES = {"C1": "10 um/s", "C2": "1 um/s", "C3": "0.1 um/s"}
 
@@ -120,7 +120,7 @@ def fields(case, time, h5=None, tolerance=1e-6):
             f.p = r.field(k, "pressure")
             f.vm = r.field(k, "vonMises")
             f.dT = r.field(k, "temperatureRise")
-    except (OSError, KeyError) as err:
+    except (OSError, KeyError, SolidResultsError) as err:
         raise IndentationPlotError("%s: %s" % (h5, err))
     f.names = regionNames(case, 2 if f.conn.shape[1] == 4 else 3)
     return f

@@ -985,6 +985,20 @@ def readReference(path):
             or len(names) not in (nP, 2*nP, 3*nP) or nT != len(THeights):
         raise PlaneWaveError("%s: columns %s are not p_z<height> "
                              "[rho_z<height> [T_z<height>]]" % (path, names))
+    # a reference is a history: at least two rows, every value finite
+    # (adv51 m06: a header-only file ended in an IndexError, a nan row was
+    # printed as a reference value, "50.00/nan (+nan %)")
+    if d.ndim != 2 or len(d) < 2:
+        raise PlaneWaveError("%s: %d row%s of values: a reference is a "
+                             "history of at least 2 rows (written by "
+                             "planeWave; the file is cut or damaged)"
+                             % (path, len(d), "" if len(d) == 1 else "s"))
+    bad = np.argwhere(~np.isfinite(d))
+    if len(bad):
+        r, c = bad[0]
+        raise PlaneWaveError("%s: row %d, column %s is %s, not a finite "
+                             "number: the file is damaged"
+                             % (path, r + 1, table.names[c], d[r, c]))
     wave = PlaneWave(heights, d[:, 0], d[:, 1:1 + nP], None, None,
                      d[:, 1 + nP:1 + 2*nP] if rhoHeights else None,
                      T=d[:, 1 + 2*nP:] if THeights else None)

@@ -2,15 +2,82 @@
 tutorial's inputs in a folder of its own, so that running never touches
 the tracked case (and meshes made there are made again)."""
 
+import fnmatch
 import os
 import shutil
 
 
+class ScratchError(Exception):
+    """An output folder a script may not use; the message names it."""
+
+
+MARKER = ".scratchFolder"
+
+
+def checkOutputFolder(script, path, entries=()):
+    """outputFolder's judgement without removing anything: ScratchError if
+    path may not be used; True if it holds an earlier output of script
+    (to be emptied), False if it is absent or empty."""
+    if os.path.islink(path) or (os.path.lexists(path)
+                                and not os.path.isdir(path)):
+        raise ScratchError("%s exists and is not a folder (a file or a "
+                           "link): give a new or an empty folder. Nothing "
+                           "was removed." % path)
+    if not os.path.isdir(path):
+        return False
+    names = sorted(os.listdir(path))
+    if not names:
+        return False
+    try:
+        with open(os.path.join(path, MARKER)) as f:
+            owner = f.read().strip()
+    except OSError:
+        owner = None
+    if owner == script:
+        foreign = [n for n in names if n != MARKER and entries
+                   and not any(fnmatch.fnmatchcase(n, e) for e in entries)]
+    else:
+        foreign = names
+    if foreign:
+        raise ScratchError(
+            "%s exists and holds %d file(s) or folder(s) that no earlier "
+            "run of %s made there (%s%s): give a new or an empty folder, or "
+            "move them away. Nothing was removed."
+            % (path, len(foreign), script, " ".join(foreign[:5]),
+               " ..." if len(foreign) > 5 else ""))
+    return True
+
+
+def outputFolder(script, path, entries=()):
+    """path made ready, empty but for its marker, for the outputs of
+    script (a test's, a benchmark's or a study's folder given on its
+    command line, or one it names inside such a folder). A path that does
+    not exist or is an empty folder is used. A folder an earlier run of
+    script made (its marker .scratchFolder names script) is emptied if it
+    holds only entries matching a pattern of entries (any name when none
+    are given). Anything else - a user's folder, a marked folder holding
+    a file the script does not write, a file or a link - is refused
+    (ScratchError naming what it holds): nothing is removed (issue 19,
+    adv51 n01: eleven scripts removed a user's folder given as or inside
+    their output folder, rm -rf / shutil.rmtree). Returns path. The
+    shell scripts' etc/scratchFolder runs this."""
+    if checkOutputFolder(script, path, entries):
+        shutil.rmtree(path)
+    os.makedirs(path, exist_ok=True)
+    with open(os.path.join(path, MARKER), "w") as f:
+        f.write(script + "\n")
+    return path
+
+
 def copyInputs(src, dst, names, ignore=()):
     """Copy the entries `names` (folders and files) of the case src into
-    the new folder dst, without what matches a pattern of ignore at any
-    depth (meshes that the case's Allrun makes again)."""
-    os.makedirs(dst)
+    the new folder dst (or one outputFolder made: empty but for its
+    marker), without what matches a pattern of ignore at any depth
+    (meshes that the case's Allrun makes again)."""
+    if os.path.isdir(dst) and set(os.listdir(dst)) <= {MARKER}:
+        pass
+    else:
+        os.makedirs(dst)
     for name in names:
         s = os.path.join(src, name)
         if os.path.isdir(s):
@@ -22,8 +89,23 @@ def copyInputs(src, dst, names, ignore=()):
 
 def main(argv=None):
     """Command line for shell scripts: python3 -m neuronFsi.scratch SRC DST
-    NAME... [--ignore PATTERN...]"""
+    NAME... [--ignore PATTERN...]; python3 -m neuronFsi.scratch
+    --outputFolder SCRIPT DIR [ENTRY...] (outputFolder)"""
     import argparse
+    import sys
+    args = sys.argv[1:] if argv is None else list(argv)
+    if args[:1] == ["--outputFolder"]:
+        if len(args) < 3:
+            sys.exit("usage: python3 -m neuronFsi.scratch --outputFolder "
+                     "SCRIPT DIR [ENTRY...]")
+        try:
+            outputFolder(args[1], args[2], args[3:])
+        except ScratchError as e:
+            sys.exit("%s: error: %s" % (args[1], e))
+        except OSError as e:
+            sys.exit("%s: error: %s: %s" % (args[1], e.filename or args[2],
+                                            e.strerror))
+        return 0
     p = argparse.ArgumentParser(
         prog="python3 -m neuronFsi.scratch",
         description="Copy a case's inputs into a new scratch folder.")

@@ -46,7 +46,9 @@ class SolidResults:
         try:
             self.file = h5py.File(path, "r")
         except OSError as err:
-            raise OSError("%s: cannot open (%s)" % (path, err))
+            # a reader's error naming the file (adv51 n05: an OSError
+            # without a file name, a traceback in plotBlast.py)
+            raise SolidResultsError("%s: cannot open (%s)" % (path, err))
         self._steps = self.file["steps"]
 
     def __enter__(self):
