@@ -65,6 +65,34 @@ Foam::tmp<Foam::Field<Type>> Foam::movingMeshProbes::sampleFit
 
 
 template<class Type>
+Foam::tmp<Foam::Field<Type>> Foam::movingMeshProbes::wholeFieldCellPoint
+(
+    const GeometricField<Type, fvPatchField, volMesh>& vField,
+    const PtrList<scaleFreeCellPointWeight>& tets
+) const
+{
+    // interpolationCellPoint over the whole field (all ranks:
+    // volPointInterpolation synchronises) in the probes' tetrahedra
+    tmp<Field<Type>> tvalues
+    (
+        new Field<Type>(size(), -VGREAT*pTraits<Type>::one)
+    );
+    Field<Type>& values = tvalues.ref();
+    const interpolationCellPoint<Type> whole(vField);
+    forAll(*this, probei)
+    {
+        if (tets.set(probei))
+        {
+            values[probei] = whole.interpolate(tets[probei]);
+        }
+    }
+    Pstream::listCombineGather(values, movingMeshProbesFoundOp<Type>());
+    Pstream::listCombineScatter(values);
+    return tvalues;
+}
+
+
+template<class Type>
 Foam::tmp<Foam::Field<Type>> Foam::movingMeshProbes::sampleCellPoint
 (
     const GeometricField<Type, fvPatchField, volMesh>& vField
@@ -98,21 +126,10 @@ Foam::tmp<Foam::Field<Type>> Foam::movingMeshProbes::sampleCellPoint
     tmp<Field<Type>> tvalues(new Field<Type>(size(), unset));
     Field<Type>& values = tvalues.ref();
 
-    // The whole-field interpolation (all ranks: volPointInterpolation
-    // synchronises) in the same tetrahedra if a probe needs it
+    // The whole-field interpolation if a probe needs it
     if (!returnReduce(local, andOp<bool>()))
     {
-        const interpolationCellPoint<Type> whole(vField);
-        forAll(*this, probei)
-        {
-            if (tets.set(probei))
-            {
-                values[probei] = whole.interpolate(tets[probei]);
-            }
-        }
-        Pstream::listCombineGather(values, movingMeshProbesFoundOp<Type>());
-        Pstream::listCombineScatter(values);
-        return tvalues;
+        return wholeFieldCellPoint(vField, tets);
     }
 
     // The values at the processor patches' points (all ranks) if a
@@ -139,19 +156,7 @@ Foam::tmp<Foam::Field<Type>> Foam::movingMeshProbes::sampleCellPoint
     // tetrahedra, which these must equal to the last bit
     if (debug)
     {
-        Field<Type> whole(size(), unset);
-        {
-            const interpolationCellPoint<Type> interp(vField);
-            forAll(*this, probei)
-            {
-                if (tets.set(probei))
-                {
-                    whole[probei] = interp.interpolate(tets[probei]);
-                }
-            }
-        }
-        Pstream::listCombineGather(whole, movingMeshProbesFoundOp<Type>());
-        Pstream::listCombineScatter(whole);
+        const Field<Type> whole(wholeFieldCellPoint(vField, tets));
         forAll(values, probei)
         {
             if
