@@ -24,12 +24,15 @@
 #   fluidProbesFit, at fluidProbes' locations with interpolationScheme
 #   cellLinearFit (the weighted linear fit of the cell values, evaluated
 #   at the probe's point) appended to the copy's system/controlDict;
-#   planeWave measures both sets. fluidProbes' cellPoint does not
-#   sample at its point in these micrometre cells: OpenFOAM's
-#   tetrahedron::pointToBarycentric takes every tetrahedron with
-#   |det| < SMALL = 1e-15 m^3 as degenerate and returns (1/4, 1/4, 1/4,
-#   1/4), so the probe reads its cell's first tetrahedron's centroid
-#   (docs/results/blast3D.md, "Where the water probes sample")
+#   planeWave measures both sets. Until 2026-12-06 fluidProbes'
+#   cellPoint did not sample at its point in these micrometre cells
+#   (OpenFOAM's tetrahedron::pointToBarycentric takes every tetrahedron
+#   with |det| < SMALL = 1e-15 m^3 as degenerate, so the probe read its
+#   cell's first tetrahedron's centroid); movingMeshProbes now finds the
+#   tetrahedron with a test relative to its size
+#   (scaleFreeCellPointWeight; docs/results/blast3D.md, "Where the water
+#   probes sample"), and the two sets should agree to the schemes'
+#   difference
 #
 # While cellBlastFoam runs, the load average is sampled every 15 s into
 # DIR/quarter3D/log.load (printed as its range at the end).
@@ -52,7 +55,7 @@ root=$(cd "$here/../.." && pwd)
 [ ! -e "$dir" ] || { echo "inflow3D.sh: $dir exists" >&2; exit 1; }
 c=$dir/quarter3D
 python3 -m neuronFsi.scratch "$root/tutorials/blast/quarter3D" "$c" \
-    0.orig constant system Allrun --ignore polyMesh '*.msh'
+    0.orig constant system Allrun --ignore polyMesh '*.msh' inflowWave cellDecomposition
 cd "$c"
 if [ -n "${MAXCO:-}" ]
 then
