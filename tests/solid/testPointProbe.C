@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <cmath>
 #include <random>
+#include <tuple>
 
 using namespace solid;
 
@@ -218,6 +219,15 @@ void linearDisplacement(bool axi)
             tol
         );
         EXPECT_NEAR((p.interpolate(model.u) - H*X).norm(), 0, 1e-18);
+    }
+    // The interface reading evaluates the other side's host too (the
+    // model's elements of both regions): J and F exact all the same
+    for (int side = 0; side < 2; ++side)
+    {
+        const PointProbe p(m, onInterface, side, AcrossRegion{1 - side});
+        const ProbeValues v = p.evaluate(model);
+        EXPECT_NEAR((v.F - F).norm(), 0, 1e-11);
+        EXPECT_NEAR(v.theta, F.determinant(), 1e-11);
     }
 }
 
@@ -476,6 +486,258 @@ TEST(PointProbe, BallRadiusIsValidated)
             EXPECT_EQ(err.kind(), SolidError::Kind::parameter);
             EXPECT_NE(std::string(err.what()).find("finite and >= 0"),
                 std::string::npos) << err.what();
+        }
+    }
+}
+
+
+// Interface probes (PointProbe with AcrossRegion: the pressure and J read
+// between the two elements that contain the point, one per side)
+namespace
+{
+
+// The samples of the patch elements: p and theta from pOf(e), the stress,
+// F and temperature rise distinct per element (for the one-sided check)
+template<class P>
+std::vector<ProbeValues> samplesOf(const PointProbe& p, P pOf)
+{
+    std::vector<ProbeValues> s(p.patch().size());
+    for (std::size_t i = 0; i < s.size(); ++i)
+    {
+        const int e = p.patch()[i];
+        s[i].p = pOf(e);
+        s[i].theta = 3 + pOf(e);
+        s[i].sigma = Mat3::Identity()*(0.5 + e) + Mat3::Ones()*e*e*1e-3;
+        s[i].F = Mat3::Identity() + Mat3::Ones()*1e-3*e;
+        s[i].temperatureRise = 0.01*e;
+    }
+    return s;
+}
+
+// At a node of the zigzag interface of the distorted mesh, each side
+// across the other: the pressure and J lie between the two hosts' values
+// for any samples (convex), at the projection of X on the hosts' centroid
+// segment; the stress, F and temperature rise are the one-sided probe's
+void interfaceReading(bool axi)
+{
+    const Mesh m = distorted(axi);
+    const int n = interfaceNode(m);
+    ASSERT_GE(n, 0);
+    const Vec3 X = m.X[n];
+    std::mt19937 gen(3);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int side = 0; side < 2; ++side)
+    {
+        const PointProbe one(m, X, side);
+        const PointProbe p(m, X, side, AcrossRegion{1 - side});
+        EXPECT_EQ(p.region(), side);
+        EXPECT_EQ(p.element(), one.element());
+        EXPECT_EQ(p.across(), 1 - side);
+        EXPECT_EQ(one.across(), -1);
+        ASSERT_GE(p.acrossElement(), 0);
+        EXPECT_EQ(m.region[p.acrossElement()], 1 - side);
+        // the one-sided patch, then the other host with one-sided weight 0
+        ASSERT_EQ(p.patch().size(), one.patch().size() + 1);
+        EXPECT_EQ(p.patch().back(), p.acrossElement());
+        EXPECT_EQ(p.weights().back(), 0.0);
+        // the other host contains X
+        EXPECT_NO_THROW(PointProbe(m, X, 1 - side));
+        // two weights, in [0, 1], summing to 1, on the two hosts
+        const std::vector<double>& wc = p.continuousWeights();
+        ASSERT_EQ(wc.size(), p.patch().size());
+        double sum = 0;
+        for (std::size_t i = 0; i < wc.size(); ++i)
+        {
+            const int e = p.patch()[i];
+            if (e != p.element() && e != p.acrossElement())
+            {
+                EXPECT_EQ(wc[i], 0.0) << "element " << e;
+            }
+            EXPECT_GE(wc[i], 0.0);
+            EXPECT_LE(wc[i], 1.0);
+            sum += wc[i];
+        }
+        EXPECT_NEAR(sum, 1, 1e-15);
+        // the projection of X on the segment of the hosts' centroids
+        const Vec3 ca = PointProbe::centroid(m, p.element());
+        const Vec3 cb = PointProbe::centroid(m, p.acrossElement());
+        const double s = std::min
+        (
+            1.0, std::max(0.0, (X - ca).dot(cb - ca)/(cb - ca).squaredNorm())
+        );
+        // A linear field: its value there (element averages are the
+        // field at the centroids)
+        {
+            const ProbeValues v = p.recover(samplesOf(p, [&](int e)
+            {
+                return average(m, e);
+            }));
+            const double fs = f(ca + s*(cb - ca));
+            EXPECT_NEAR(v.p, fs, 1e-12*std::abs(fs));
+        }
+        for (int k = 0; k < 20; ++k)
+        {
+            std::vector<double> pe(m.nElements());
+            for (double& x : pe) x = u(gen);
+            const auto pOf = [&](int e) { return pe[e]; };
+            const ProbeValues v = p.recover(samplesOf(p, pOf));
+            const double pa = pe[p.element()], pb = pe[p.acrossElement()];
+            EXPECT_GE(v.p, std::min(pa, pb) - 1e-15);
+            EXPECT_LE(v.p, std::max(pa, pb) + 1e-15);
+            EXPECT_NEAR(v.p, (1 - s)*pa + s*pb, 1e-15);
+            EXPECT_NEAR(v.theta, 3 + v.p, 1e-14);
+            // one-sided: the probe of the side alone on the same samples
+            std::vector<ProbeValues> so = samplesOf(one, pOf);
+            const ProbeValues w = one.recover(so);
+            EXPECT_NEAR((v.sigma - w.sigma).norm(), 0, 1e-13);
+            EXPECT_NEAR((v.F - w.F).norm(), 0, 1e-15);
+            EXPECT_NEAR(v.temperatureRise, w.temperatureRise, 1e-15);
+        }
+    }
+}
+
+// A layered column: r-z [1, 3] x [0, 4] um or box [0, 2]^2 x [0, 4] um,
+// h = 0.5 um; region "top" above z = zi (= 2 um), "bottom" below. A field
+// of z alone (the plane wave) with a front: its element averages
+Mesh layered(bool axi)
+{
+    Mesh m = axi
+        ? Mesh::rectangle(4, 8, 1*um, 3*um, 0, 4*um)
+        : Mesh::box(4, 4, 8, Vec3(0, 0, 0), Vec3(2*um, 2*um, 4*um));
+    m.regionNames = {"bottom", "top"};
+    const int z = axi ? 1 : 2;
+    for (int e = 0; e < m.nElements(); ++e)
+    {
+        m.region[e] = PointProbe::centroid(m, e)(z) > 2*um ? 1 : 0;
+    }
+    return m;
+}
+
+// The average over element e of a function of z alone
+template<class Fz>
+double averageOfZ(const Mesh& m, int e, Fz fz)
+{
+    const int z = m.dim() - 1;
+    ElementGeometry geo;
+    geo.build(m, e);
+    double s = 0;
+    for (std::size_t q = 0; q < geo.w.size(); ++q)
+    {
+        Vec3 Xq(Vec3::Zero());
+        for (int a = 0; a < m.nen(); ++a)
+        {
+            Xq += geo.N[q](a)*m.X[m.element(e)[a]];
+        }
+        s += geo.w[q]*fz(Xq(z));
+    }
+    return s/geo.V;
+}
+
+} // namespace
+
+
+TEST(PointProbe, InterfaceReadingIsConvexBetweenTheTwoHosts)
+{
+    interfaceReading(true);
+    interfaceReading(false);
+}
+
+
+TEST(PointProbe, InterfaceReadingDoesNotExtrapolateAFront)
+{
+    // The Fig. 10 situation: a point on a flat interface normal to z, a
+    // plane front coming down from above crossing one side's patch. A
+    // field linear in z is read exactly by both readings (the hosts'
+    // centroids straddle the point in z). A step front at zf = zi - d h
+    // (P above it, 0 below; the element averages: P on the rows above
+    // zi, d P on the bottom host's row, 0 below) makes the bottom side's
+    // one-sided fit (its rows' centroids at zi - h/2 and zi - 3h/2) read
+    // d P + 0.5 d P = 1.5 d P at the point: at d = 0.8, 1.2 P, above the
+    // exact P and every element value; the interface reading stays
+    // between the hosts' values, (d P + P)/2
+    const double zi = 2*um, h = 0.5*um, P = 5e7;
+    for (const bool axi : {true, false})
+    {
+        const Mesh m = layered(axi);
+        const int z = m.dim() - 1;
+        const Vec3 X = axi ? Vec3(1.75*um, zi, 0) : Vec3(0.75*um, 0.75*um, zi);
+        const PointProbe one(m, X, 0);
+        const PointProbe p(m, X, 0, AcrossRegion{1});
+        const auto linear = [&](int e)
+        {
+            return averageOfZ(m, e, [](double zz) { return 3 + 2e13*zz; });
+        };
+        for (const PointProbe* q : {&one, &p})
+        {
+            const ProbeValues v = q->recover(samplesOf(*q, linear));
+            EXPECT_NEAR(v.p, 3 + 2e13*zi, 1e-13*(3 + 2e13*zi))
+                << (axi ? "r-z" : "3D");
+        }
+        for (const double depth : {0.4, 0.8})
+        {
+            const double zf = zi - depth*h;
+            const auto front = [&](int e)
+            {
+                const double zc = PointProbe::centroid(m, e)(z);
+                const double lo = zc - h/2, hi = zc + h/2;
+                return P*std::min(1.0, std::max(0.0, (hi - zf)/(hi - lo)));
+            };
+            const double pa = front(p.element());
+            const double pb = front(p.acrossElement());
+            EXPECT_NEAR(pa, P*depth, 1e-9*P);
+            EXPECT_EQ(pb, P);
+            const double oneSided = one.recover(samplesOf(one, front)).p;
+            const double across = p.recover(samplesOf(p, front)).p;
+            // the one-sided fit: its host's value plus half a row's step
+            EXPECT_NEAR(oneSided, 1.5*P*depth, 1e-9*P);
+            // the hosts straddle the point: the mean of the two
+            EXPECT_NEAR(across, 0.5*(pa + pb), 1e-9*P);
+            EXPECT_LE(across, P);
+            if (depth > 2.0/3.0)
+            {
+                EXPECT_GT(oneSided, 1.1*P) << (axi ? "r-z" : "3D");
+            }
+        }
+    }
+}
+
+
+TEST(PointProbe, InterfaceProbeIsValidated)
+{
+    for (const bool axi : {true, false})
+    {
+        const Mesh m = layered(axi);
+        const Vec3 onInterface =
+            axi ? Vec3(1.75*um, 2*um, 0) : Vec3(0.75*um, 0.75*um, 2*um);
+        const Vec3 inside =
+            axi ? Vec3(1.75*um, 1.2*um, 0) : Vec3(0.75*um, 0.75*um, 1.2*um);
+        const std::vector<std::tuple<Vec3, int, int, std::string>> cases =
+        {
+            {onInterface, 0, 0, "across itself"},
+            {onInterface, 0, 2, "not in the mesh"},
+            {onInterface, 0, -1, "not in the mesh"},
+            {onInterface, -1, 1, "name the region"},
+            {inside, -1, 1, "its region must be named"},
+            {inside, 0, 1, "not on the interface of regions 'bottom' and "
+                "'top'"}
+        };
+        for (const auto& c : cases)
+        {
+            try
+            {
+                const PointProbe p
+                (
+                    m, std::get<0>(c), std::get<1>(c),
+                    AcrossRegion{std::get<2>(c)}
+                );
+                ADD_FAILURE() << "no error: " << std::get<3>(c);
+            }
+            catch (const SolidError& err)
+            {
+                EXPECT_EQ(err.kind(), SolidError::Kind::parameter);
+                EXPECT_NE(std::string(err.what()).find(std::get<3>(c)),
+                    std::string::npos) << err.what();
+            }
         }
     }
 }

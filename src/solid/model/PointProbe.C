@@ -74,6 +74,54 @@ bool solid::PointProbe::inverseMap
 }
 
 
+int solid::PointProbe::locate
+(
+    const Mesh& mesh,
+    const Vec3& X,
+    int region,
+    Vec3& xi,
+    std::set<int>& regionsFound
+)
+{
+    const int nen = mesh.nen();
+    double bestDepth = 1e300;
+    int best = -1;
+    for (int e = 0; e < mesh.nElements(); ++e)
+    {
+        if (region >= 0 && mesh.region[e] != region) continue;
+        const int* en = mesh.element(e);
+        Vec3 lo = mesh.X[en[0]], hi = mesh.X[en[0]];
+        for (int a = 1; a < nen; ++a)
+        {
+            lo = lo.cwiseMin(mesh.X[en[a]]);
+            hi = hi.cwiseMax(mesh.X[en[a]]);
+        }
+        const double tol = insideTol*(hi - lo).maxCoeff();
+        // r-z: the third coordinates are all 0
+        if
+        (
+            ((X - lo).array() < -tol).any()
+         || ((hi - X).array() < -tol).any()
+        )
+        {
+            continue;
+        }
+        Vec3 xie;
+        if (!inverseMap(mesh, e, X, xie)) continue;
+        const double depth = xie.cwiseAbs().maxCoeff();
+        if (depth > 1 + insideTol) continue;
+        regionsFound.insert(mesh.region[e]);
+        if (depth < bestDepth)
+        {
+            bestDepth = depth;
+            best = e;
+            xi = xie;
+        }
+    }
+    return best;
+}
+
+
 solid::PointProbe::PointProbe(const Mesh& mesh, const Vec3& X, int region)
 :
     X_(X),
@@ -91,40 +139,8 @@ solid::PointProbe::PointProbe(const Mesh& mesh, const Vec3& X, int region)
     }
     if (mesh.axisymmetric()) X_(2) = 0;
     const int nen = mesh.nen();
-    double bestDepth = 1e300;
     std::set<int> regionsFound;
-    for (int e = 0; e < mesh.nElements(); ++e)
-    {
-        if (region >= 0 && mesh.region[e] != region) continue;
-        const int* en = mesh.element(e);
-        Vec3 lo = mesh.X[en[0]], hi = mesh.X[en[0]];
-        for (int a = 1; a < nen; ++a)
-        {
-            lo = lo.cwiseMin(mesh.X[en[a]]);
-            hi = hi.cwiseMax(mesh.X[en[a]]);
-        }
-        const double tol = insideTol*(hi - lo).maxCoeff();
-        // r-z: the third coordinates are all 0
-        if
-        (
-            ((X_ - lo).array() < -tol).any()
-         || ((hi - X_).array() < -tol).any()
-        )
-        {
-            continue;
-        }
-        Vec3 xi;
-        if (!inverseMap(mesh, e, X_, xi)) continue;
-        const double depth = xi.cwiseAbs().maxCoeff();
-        if (depth > 1 + insideTol) continue;
-        regionsFound.insert(mesh.region[e]);
-        if (depth < bestDepth)
-        {
-            bestDepth = depth;
-            element_ = e;
-            xi_ = xi;
-        }
-    }
+    element_ = locate(mesh, X_, region, xi_, regionsFound);
     if (element_ < 0)
     {
         throw SolidError
@@ -268,14 +284,15 @@ solid::ProbeValues solid::PointProbe::recover
     v.sigma.setZero();
     v.F.setZero();
     v.theta = 0;
+    const std::vector<double>& wc = continuousWeights();
     for (std::size_t i = 0; i < patch_.size(); ++i)
     {
         const ProbeValues& o = samples[i];
         const double w = weights_[i];
-        v.p += w*o.p;
+        v.p += wc[i]*o.p;
         v.sigma += w*o.sigma;
         v.F += w*o.F;
-        v.theta += w*o.theta;
+        v.theta += wc[i]*o.theta;
         v.temperatureRise += w*o.temperatureRise;
     }
     return v;
@@ -387,4 +404,78 @@ solid::PointProbe::PointProbe
     {
         weights_[i] = volumes[i]/volume_;
     }
+}
+
+
+solid::PointProbe::PointProbe
+(
+    const Mesh& mesh,
+    const Vec3& X,
+    int region,
+    AcrossRegion across
+)
+:
+    PointProbe(mesh, X, region)
+{
+    const int nRegions = int(mesh.regionNames.size());
+    if (region < 0 || across.region < 0 || across.region >= nRegions)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter,
+            "interface probe at " + pointName(X_, dim_) + ": "
+          + (
+                region < 0
+              ? std::string("its region must be named")
+              : "region id " + std::to_string(across.region)
+              + " across the interface not in the mesh"
+            )
+        );
+    }
+    if (across.region == region_)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter,
+            "interface probe at " + pointName(X_, dim_) + ": region '"
+          + mesh.regionNames[region_] + "' across itself; name the other "
+            "region of the interface"
+        );
+    }
+    Vec3 xi;
+    std::set<int> found;
+    const int b = locate(mesh, X_, across.region, xi, found);
+    if (b < 0)
+    {
+        throw SolidError
+        (
+            SolidError::Kind::parameter,
+            "interface probe at " + pointName(X_, dim_) + ": the point "
+            "lies in no element of region '"
+          + mesh.regionNames[across.region] + "' (reference configuration):"
+            " it is not on the interface of regions '"
+          + mesh.regionNames[region_] + "' and '"
+          + mesh.regionNames[across.region] + "'"
+        );
+    }
+    across_ = across.region;
+    acrossElement_ = b;
+
+    // Linear between the two hosts' centroids at X's projection on their
+    // segment, clipped to it: convex weights
+    const Vec3 ca = centroid(mesh, element_);
+    const Vec3 cb = centroid(mesh, b);
+    const Vec3 d = cb - ca;
+    const double s =
+        std::min(1.0, std::max(0.0, (X_ - ca).dot(d)/d.squaredNorm()));
+
+    // The patch: the one-sided one, then the other side's host (another
+    // region's element, so not in it)
+    patch_.push_back(b);
+    weights_.push_back(0);
+    continuousWeights_.assign(patch_.size(), 0);
+    const std::size_t host =
+        std::find(patch_.begin(), patch_.end(), element_) - patch_.begin();
+    continuousWeights_[host] = 1 - s;
+    continuousWeights_.back() = s;
 }
