@@ -6,12 +6,13 @@ in 3D"); not a test. Made for the runs of bench/blast/probeOvershoot3D.sh
 incident passage).
 
     bench/blast/probeOvershoot.py CASE [--reference REF.npz] [--dz 50e-9]
-                                  [--pulse 5e-9]
+                                  [--pulse 5e-9] [--refEnd T]
 
 REF.npz: the 1D answer (neuronFsi.planeWave.column, the case's own law,
 schemes and pulse on the full 100 um column, cells of --dz) at heights
-0..8.5 um every 50 nm, to the last probe time + 5 ns; computed and
-written there if missing. Prints, for each probe of postProcessing/
+0..8.5 um every 50 nm, to the last probe time + 5 ns (or to --refEnd T
+[s]: for a case run for its first step only, the exact field's readings
+need no run); computed and written there if missing. Prints, for each probe of postProcessing/
 solidProbes (the Fig. 10 point, cytoplasm and nucleus side):
 
  - its patch and recovery weights, rebuilt as solid::PointProbe does (the
@@ -31,6 +32,14 @@ solidProbes (the Fig. 10 point, cytoplasm and nucleus side):
  - the containing element's pressure against the 1D answer at its
    centroid's height, and each patch element's own pressure (solid.h5)
    against the 1D answer averaged over that element;
+For a probe across the interface (solidProperties' interfaceProbe with
+`reading interface`, or a probe's `across`: its pressure read linearly
+between the two elements containing the point, one per side; the header
+names the other element and the two weights), also the same measures of
+that interface reading applied to the exact field and to solid.h5's
+elements (the scene's probe is then that reading), its weights checked
+against the projection of the point on the segment of the two elements'
+centroids rebuilt here.
 then, over every element of the cell, the incident 1-ns peak's error of
 the element's pressure against the 1D answer averaged over it, by region
 and by bins of r = sqrt(x^2 + y^2) and z (means; elements whose incident
@@ -47,6 +56,7 @@ import h5py
 import numpy as np
 
 from neuronFsi import planeWave as pw
+from neuronFsi import postProcessing
 
 PULSE = [50e6, 5e-9]        # amplitude [Pa], duration [s] (the measures; --pulse)
 HEIGHTS = np.round(np.arange(0, 8.5e-6 + 1e-12, 0.05e-6), 12)
@@ -189,6 +199,9 @@ def main():
     a.add_argument("case")
     a.add_argument("--reference", default=None)
     a.add_argument("--dz", type=float, default=50e-9)
+    a.add_argument("--refEnd", type=float, default=None,
+                   help="the end time [s] of the 1D answer when it is "
+                   "computed (default: the last probe time + 5 ns)")
     a.add_argument("--pulse", type=float, default=PULSE[1],
                    help="the pulse's duration [s] for the measures' "
                    "windows (default 5e-9; the 1D answer is the case's "
@@ -199,7 +212,7 @@ def main():
     probes, data = probeHistory(case)
     refPath = o.reference or os.path.join(case, "ref1d.npz")
     if not os.path.isfile(refPath):
-        end = data[-1, 0] + 5e-9
+        end = o.refEnd if o.refEnd else data[-1, 0] + 5e-9
         w = pw.column(case, list(HEIGHTS), 1e-4, end, dz=o.dz)
         np.savez(refPath, z=HEIGHTS, t=w.t, p=w.p)
         print("1D answer: %d heights to %.4g s, %g m cells -> %s"
@@ -226,6 +239,26 @@ def main():
         pX = ref.at(Xp[2])
         print("\nprobe %d %s (%s) at z = %.3f um: element %d, patch of %d"
               % (num, name, region, Xp[2]*1e6, host, len(patch)))
+        across = postProcessing.probes(case)[num]["across"]
+        hosts = []
+        if across is not None:
+            # the two hosts' weights of the header against the projection
+            # of the point on the segment of their centroids
+            eb = across["element"]
+            ca, cb = cell.centroid(host), cell.centroid(eb)
+            sb = float(np.clip((Xp - ca) @ (cb - ca)/((cb - ca) @ (cb - ca)),
+                               0, 1))
+            hosts = [(host, across["weights"][0]), (eb, across["weights"][1])]
+            print("   across the interface with %s: element %d (centroid "
+                  "%.2f um from the point; the point %.2f um off the "
+                  "hosts' segment), weights %.4f / %.4f (the projection "
+                  "here: %.4f / %.4f)"
+                  % (across["region"], eb, np.linalg.norm(cb - Xp)*1e6,
+                     np.linalg.norm(ca + sb*(cb - ca) - Xp)*1e6,
+                     hosts[0][1], hosts[1][1], 1 - sb, sb))
+            if abs(sb - hosts[1][1]) > 1e-4:
+                sys.exit("probeOvershoot.py: probe %d: the header's weights "
+                         "are not the projection's" % num)
         for e, we in sorted(zip(patch, w), key=lambda i: i[0] != host):
             c = cell.centroid(e)
             print("   element %5d  centroid r %.2f z %.2f um  weight %+.3f"
@@ -235,13 +268,25 @@ def main():
             ("recovery of the exact field", ref.t, exact),
             ("1D averaged over the element", ref.t,
              ref.elementAverage(cell, host)),
-            ("scene's probe", data[:, 0], data[:, 1 + 5*num]),
+            ("scene's probe" + (" (across)" if hosts else ""), data[:, 0],
+             data[:, 1 + 5*num]),
         ] + ([("recovery of solid.h5's elements", ts, P[:, patch] @ w)]
              if fine else [])
+        if hosts:
+            rows.insert(1, ("across: the exact field", ref.t,
+                            sum(we*ref.elementAverage(cell, e)
+                                for e, we in hosts)))
+            if fine:
+                rows.append(("across: solid.h5's elements", ts,
+                             sum(we*P[:, e] for e, we in hosts)))
         for label, t, p in rows:
             print("   %-32s %s" % (label, fmt(measure(t, p, ref.t, pX,
                                                        Xp[2]))))
         print("   %s" % whereIncident(ref.t, exact, pX, Xp[2]))
+        if hosts:
+            print("   across: %s" % whereIncident(
+                ref.t, sum(we*ref.elementAverage(cell, e) for e, we in hosts),
+                pX, Xp[2]).replace("recovery", "interface reading"))
         if not fine:
             continue
         print("   the containing element against the 1D answer at its "

@@ -220,13 +220,22 @@ class ColumnFiles(TempDirTestCase):
                    "element 7, patch of 40 elements: the mean over the "
                    "region within radius 5e-07 m of the point "
                    "(9.8e-18 m^3)\n"
-                   "1e-10 1 2 3\n")
+                   "# probe 3 fig10x at (5.04e-06 5.32e-06 0) m in "
+                   "nucleus: element 301, patch of 9 elements; pressure "
+                   "and ln J across the interface with cytoplasm: element "
+                   "295, weights 0.63 0.37\n"
+                   "1e-10 1 2 3 4\n")
         p = pp.probes(self.tmp)
         self.assertEqual([(q["name"], q["element"], q["region"], q["patch"],
                            q["radius"]) for q in p],
                          [("fig10", 295, "cytoplasm", 7, 0),
                           ("top", 7, "nucleus", 9, 0),
-                          ("ball", 7, "nucleus", 40, 5e-7)])
+                          ("ball", 7, "nucleus", 40, 5e-7),
+                          ("fig10x", 301, "nucleus", 9, 0)])
+        self.assertEqual([q["across"] for q in p[:3]], [None]*3)
+        self.assertEqual(p[3]["across"], dict(region="cytoplasm",
+                                              element=295,
+                                              weights=(0.63, 0.37)))
         np.testing.assert_array_equal(p[0]["point"], [5.04e-6, 5.32e-6, 0])
         np.testing.assert_array_equal(p[1]["point"], [1e-6, 2e-6, 3e-6])
         self.write("postProcessing/fsi/0/coupling.dat", HEADER + row(1e-10))

@@ -734,17 +734,39 @@ void Foam::solidDomain::addProbe
     const word& region,
     const dictionary& dict,
     const word& entry,
-    const scalar radius
+    const scalar radius,
+    const word& across
 )
 {
     const std::string context(entry + ": probe '" + name + "'");
+    if (!across.empty() && (region.empty() || radius > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << context.c_str() << ": 'across " << across << "' needs "
+            << (
+                   region.empty()
+                 ? "the probe's region (the side of its von Mises, strain_z"
+                   " and dT): add 'region <name>;'"
+                 : "a point probe: a ball probe (radius > 0) averages its"
+                   " region only; remove 'radius' or 'across'"
+               )
+            << exit(FatalIOError);
+    }
     guarded(dict, context.c_str(), [&]
     {
         const int r = region.empty() ? -1 : mesh().regionId(region);
-        probes_.emplace_back
-        (
-            mesh(), solid::Vec3(X.x(), X.y(), X.z()), r, radius
-        );
+        const solid::Vec3 P(X.x(), X.y(), X.z());
+        if (across.empty())
+        {
+            probes_.emplace_back(mesh(), P, r, radius);
+        }
+        else
+        {
+            probes_.emplace_back
+            (
+                mesh(), P, r, solid::AcrossRegion{mesh().regionId(across)}
+            );
+        }
     });
     probeNames_.append(name);
 }
@@ -766,11 +788,16 @@ void Foam::solidDomain::setupProbes()
                     << "dictionary { point (x y z); region <name>; } (point"
                     << " [m] in the reference configuration, r-z: (r z 0);"
                     << " region optional; radius <R>; [m] optional: the"
-                    << " mean over the region within R of the point)"
+                    << " mean over the region within R of the point;"
+                    << " across <region>; optional: the pressure and ln J"
+                    << " read across the interface with that region)"
                     << exit(FatalIOError);
             }
             const dictionary& d = e.dict();
-            foamTools::checkKeywords(d, {"point", "region", "radius"});
+            foamTools::checkKeywords
+            (
+                d, {"point", "region", "radius", "across"}
+            );
             // A ball probe's radius: the mean over the region within it
             // (0, the default: the point's recovered value)
             const scalar radius = fsiRanges::readOrDefault<scalar>
@@ -787,7 +814,8 @@ void Foam::solidDomain::setupProbes()
                 d.getOrDefault<word>("region", word::null),
                 d,
                 "probes",
-                radius
+                radius,
+                d.getOrDefault<word>("across", word::null)
             );
         }
     }
@@ -805,7 +833,10 @@ void Foam::solidDomain::setupProbes()
     if (dict_.found("interfaceProbe"))
     {
         const dictionary& ip = foamTools::subDict(dict_, "interfaceProbe");
-        foamTools::checkKeywords(ip, {"regions", "heightFraction", "side"});
+        foamTools::checkKeywords
+        (
+            ip, {"regions", "heightFraction", "side", "reading"}
+        );
         const Pair<word> regions(ip.get<Pair<word>>("regions"));
         // The fraction of the inner region's height, in (0, 1); nan, inf
         // named with the range (adv42 g25: OpenFOAM's "Wrong token type")
@@ -832,21 +863,43 @@ void Foam::solidDomain::setupProbes()
                 << "itself; give the two regions of the interface, outer "
                 << "first (e.g. (cytoplasm nucleus))" << exit(FatalIOError);
         }
+        // oneSided: each probe's quantities from its side alone; interface:
+        // the pressure and ln J across the interface (solid::PointProbe's
+        // interface probe: convex between the two containing elements)
+        const word reading
+        (
+            foamTools::readOneOfOrDefault
+            (
+                ip, "reading", {"oneSided", "interface"}, "oneSided"
+            )
+        );
+        const bool acrossInterface = reading == "interface";
         const point P(interfacePoint(regions.first(), regions.second(), f));
         Info<< "Solid: interface probe " << regions << " at "
             << 100*f << " % of the " << regions.second() << " height: "
             << P << " m" << endl;
+        const bool outer = side == "outer";
         addProbe
         (
             "interfaceProbe",
             P,
-            side == "outer" ? regions.first() : regions.second(),
+            outer ? regions.first() : regions.second(),
             ip,
-            "interfaceProbe"
+            "interfaceProbe",
+            0,
+            acrossInterface
+          ? (outer ? regions.second() : regions.first())
+          : word::null
         );
         for (const word& r : {regions.second(), regions.first()})
         {
-            addProbe("interfaceProbe." + r, P, r, ip, "interfaceProbe");
+            const word& other =
+                r == regions.first() ? regions.second() : regions.first();
+            addProbe
+            (
+                "interfaceProbe." + r, P, r, ip, "interfaceProbe", 0,
+                acrossInterface ? other : word::null
+            );
         }
     }
 }
@@ -927,7 +980,9 @@ void Foam::solidDomain::setupOutput()
         );
         OFstream& os = probeFile_();
         os  << " of the reference configuration (each follows its material"
-            << " point), recovered from the elements of the probe's region around it: per "
+            << " point), recovered from the elements of the probe's region around it"
+            << " (a probe 'across' an interface: its pressure and ln J between"
+            << " the two elements containing the point, one per side): per "
             << "probe pressure (+ compression), von Mises, volumetric strain"
             << " ln J and its rate, temperature rise; then per probe the "
             << "longitudinal strain ln|F e_z| (shock direction) and its rate"
@@ -950,7 +1005,23 @@ void Foam::solidDomain::setupOutput()
                 << p.point()(2) << ") m in "
                 << word(m.regionNames[p.region()]) << ": element "
                 << p.element()
-                << ", patch of " << p.patch().size() << " elements";
+                << ", patch of "
+                << p.patch().size() - (p.across() < 0 ? 0 : 1)
+                << " elements";
+            if (p.across() >= 0)
+            {
+                // The two hosts and their weights (the last of the patch
+                // is the other side's)
+                const std::vector<double>& wc = p.continuousWeights();
+                const std::size_t host = std::find
+                (
+                    p.patch().begin(), p.patch().end(), p.element()
+                ) - p.patch().begin();
+                os  << "; pressure and ln J across the interface with "
+                    << word(m.regionNames[p.across()]) << ": element "
+                    << p.acrossElement() << ", weights " << wc[host]
+                    << ' ' << wc.back();
+            }
             if (p.radius() > 0)
             {
                 os  << ": the mean over the region within radius "

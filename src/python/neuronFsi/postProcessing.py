@@ -329,21 +329,32 @@ def probes(case, log="solidProbes/solidProbes.dat"):
     """The probes the header of the solid probes file names, in order:
     each a dict of name, point [m] (its reference coordinates, 3
     components), region, element (the one containing the point) and patch
-    (the number of elements its value is recovered from), and radius [m]:
-    a ball probe's (the mean over the region within it), 0 for a point."""
+    (the number of elements its value is recovered from, one-sided), and
+    radius [m]: a ball probe's (the mean over the region within it), 0 for
+    a point; across: for a probe across an interface (its pressure and ln
+    J read between the two elements containing the point, one per side)
+    a dict of region (the other side's), element (its element containing
+    the point) and weights (of the probe's element and of that one), else
+    None."""
     out = []
     for line in header(case, log):
         m = re.match(r"probe \d+ (\S+) at \((\S+) (\S+) (\S+)\) m in (\w+): "
                      r"element (\d+), patch of (\d+) elements"
+                     r"(?:; pressure and ln J across the interface with "
+                     r"(\w+): element (\d+), weights (\S+) (\S+))?"
                      r"(?:: the mean over the region within radius (\S+) m)?",
                      line)
         if m:
+            across = None if m.group(8) is None else dict(
+                region=m.group(8), element=int(m.group(9)),
+                weights=(float(m.group(10)), float(m.group(11))))
             out.append(dict(name=m.group(1),
                             point=np.array([float(m.group(k))
                                             for k in (2, 3, 4)]),
                             region=m.group(5), element=int(m.group(6)),
                             patch=int(m.group(7)),
-                            radius=float(m.group(8) or 0)))
+                            radius=float(m.group(12) or 0),
+                            across=across))
     return out
 
 
