@@ -93,6 +93,37 @@ class OutputFolder(TempDirTestCase):
         self.assertTrue(os.path.isfile(os.path.join(self.tmp, "own",
                                                     "notes.txt")))
 
+    def testCaseEntries(self):
+        """adv52 o09 (d), (b): a case folder's earlier output is emptied
+        only if it holds what a run of a case leaves ("@case"), a case
+        inside the folder likewise ("NAME/@case"): a user's file added
+        there is refused and kept"""
+        d = os.path.join(self.tmp, "case")
+        scratch.outputFolder("run.py", d, ("@case",))
+        for f in ("system/controlDict", "0/p", "1e-09/p", "log.cellBlastFoam",
+                  "postProcessing/probes/0/p", "solid/solid.h5", ".runLock"):
+            self.write("case/" + f, "1\n")
+        scratch.outputFolder("run.py", d, ("@case",))
+        self.assertEqual(os.listdir(d), [scratch.MARKER])
+        self.write("case/system/controlDict", "1\n")
+        self.write("case/analysis.txt", "mine\n")
+        with self.assertRaisesRegex(scratch.ScratchError,
+                                    r"\(analysis\.txt\)"):
+            scratch.outputFolder("run.py", d, ("@case",))
+        self.assertTrue(os.path.isfile(os.path.join(d, "analysis.txt")))
+        o = os.path.join(self.tmp, "out")
+        scratch.outputFolder("runPreview.sh", o, ("preview/@case",))
+        self.write("out/preview/system/controlDict", "1\n")
+        self.write("out/preview/log.Allrun", "1\n")
+        scratch.outputFolder("runPreview.sh", o, ("preview/@case",))
+        self.write("out/preview/system/controlDict", "1\n")
+        self.write("out/preview/mine.txt", "mine\n")
+        with self.assertRaisesRegex(scratch.ScratchError,
+                                    r"\(preview/mine\.txt\)"):
+            scratch.outputFolder("runPreview.sh", o, ("preview/@case",))
+        self.assertTrue(os.path.isfile(os.path.join(o, "preview",
+                                                    "mine.txt")))
+
     def testFileOrLinkRefused(self):
         self.write("f", "mine\n")
         with self.assertRaisesRegex(scratch.ScratchError, "is not a folder"):
