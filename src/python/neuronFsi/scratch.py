@@ -102,6 +102,16 @@ def outputFolder(script, path, entries=()):
     their output folder, rm -rf / shutil.rmtree). Returns path. The
     shell scripts' etc/scratchFolder runs this."""
     if checkOutputFolder(script, path, entries):
+        # never under a run going on (adv52 p02 (b): a second gapStudy.sh
+        # emptied its earlier folder under the first's running solver)
+        from .allrunLock import busyUnder
+        busy = busyUnder([path])
+        if busy:
+            raise ScratchError(
+                "%s holds a run going on (%s: %s): it would be removed "
+                "under that run. Wait for it to end or stop it, or give "
+                "another folder. Nothing was removed."
+                % (path, busy[0][0], busy[0][1]))
         shutil.rmtree(path)
     os.makedirs(path, exist_ok=True)
     with open(os.path.join(path, MARKER), "w") as f:
