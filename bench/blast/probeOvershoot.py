@@ -46,6 +46,9 @@ import sys
 import h5py
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+# an input's error is one line, not a traceback (adv52 p18)
+script.guard()
 from neuronFsi import planeWave as pw
 
 PULSE = [50e6, 5e-9]        # amplitude [Pa], duration [s] (the measures; --pulse)
