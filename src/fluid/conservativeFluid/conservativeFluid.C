@@ -156,9 +156,17 @@ void stopTogether
     }
     if (!text.empty() && !Pstream::master())
     {
-        std::cerr
-            << "\n--> FOAM FATAL ERROR (rank " << Pstream::myProcNo()
-            << "): " << text << nothingRun << "\n" << std::endl;
+        // one write of the whole text (stderr is unbuffered: each << was
+        // a write of its own, which the master's output could split,
+        // lead L01 of session 47)
+        const std::string whole
+        (
+            "\n--> FOAM FATAL ERROR (rank "
+          + std::to_string(Pstream::myProcNo()) + "): " + text + nothingRun
+          + "\n\n"
+        );
+        std::cerr.write(whole.data(), std::streamsize(whole.size()));
+        std::cerr.flush();
     }
     labelList badItem(Pstream::nProcs(), -1);
     badItem[Pstream::myProcNo()] = text.empty() ? -1 : max(item, label(0));
