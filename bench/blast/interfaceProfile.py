@@ -47,6 +47,9 @@ import sys
 
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+# an input's error is one line, not a traceback (adv52 p18)
+script.guard()
 from neuronFsi import bench, damageIndicators, indentationPlots, paper, \
     planeWave, postProcessing
 from neuronFsi.solidResults import SolidResults

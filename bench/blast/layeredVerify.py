@@ -30,6 +30,9 @@ import sys
 import time
 
 
+from neuronFsi import script  # noqa: E402
+# an input's error is one line, not a traceback (adv52 p18)
+script.guard()
 from neuronFsi import layeredColumn as lc
 from neuronFsi import planeWave as pw
 

@@ -23,6 +23,9 @@ import argparse
 
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+# an input's error is one line, not a traceback (adv52 p18)
+script.guard()
 from neuronFsi import bench, damageIndicators as di, planeWave
 from neuronFsi.solidResults import SolidResults
 

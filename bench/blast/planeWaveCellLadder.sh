@@ -40,7 +40,7 @@ exe=$root/build/bin/planeWaveCell
 mkdir -p "$dir"
 if [ ! -f "$dir/wave5ns.dat" ]
 then
-    scratchFolder planeWaveCellLadder.sh "$dir/column"   # adv51 n01
+    scratchFolder planeWaveCellLadder.sh "$dir/column" @case   # adv51 n01
     cp -r "$root/tutorials/blast/quarter3D/"{0.orig,constant,system} "$dir/column/"
     nice -n 10 /usr/bin/python3 "$here/planeWaveTable.py" "$dir/column" \
         "$dir/wave5ns.dat" --endTime 150e-9 || exit 1

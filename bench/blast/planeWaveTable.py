@@ -26,6 +26,9 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "..", "..", "src", "python"))
+from neuronFsi import script  # noqa: E402
+# an input's error is one line, not a traceback (adv52 p18)
+script.guard()
 from neuronFsi import foamDict, planeWave as pw  # noqa: E402
 
 

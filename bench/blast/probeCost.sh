@@ -24,7 +24,7 @@ oldLib=$(cd "$1" && pwd); dir=$2; shift 2
 
 # DIR new, empty or an earlier output of this script (adv51 n01)
 . "$here/../../etc/scratchFolder"
-scratchFolder probeCost.sh "$dir" case old new
+scratchFolder probeCost.sh "$dir" "case/@case" "old/@case" "new/@case"
 "$here/../../tests/blast/runPreview.sh" "$dir/case" -noRun "$@" > /dev/null
 for v in old new
 do

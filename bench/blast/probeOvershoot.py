@@ -55,6 +55,9 @@ import sys
 import h5py
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+# an input's error is one line, not a traceback (adv52 p18)
+script.guard()
 from neuronFsi import planeWave as pw
 from neuronFsi import postProcessing
 

@@ -55,7 +55,7 @@ def runLevel(f, out, endTime, env, ranks=1):
     case = caseDir(out, f, ranks)
     # an earlier case of this script only, never a user's folder (adv51
     # n01 (k))
-    scratch.outputFolder("quarter3D.py", case)
+    scratch.outputFolder("quarter3D.py", case, ("@case",))
     scratch.copyInputs(TUTORIAL, case, ("plotBlast.py",))
     c = os.path.join(case, "quarter3D")
     scratch.copyInputs(os.path.join(TUTORIAL, "quarter3D"), c,

@@ -27,6 +27,9 @@ import tempfile
 
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+# an input's error is one line, not a traceback (adv52 p18)
+script.guard()
 from neuronFsi import bench, damageIndicators, foamField
 from neuronFsi.solidResults import SolidResults
 

@@ -95,6 +95,9 @@ import tempfile
 import h5py
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+# an input's error is one line, not a traceback (adv52 p18)
+script.guard()
 from neuronFsi import cellRefinement
 from neuronFsi import foamField as ff
 from neuronFsi import postProcessing

@@ -21,8 +21,12 @@ root=$(cd "$here/../.." && pwd)
 . "$root/etc/scratchFolder"
 kind=$1 dir=$2; shift 2
 mkdir -p "$dir"
+# a setting whose run fails is said and the others run; the script's exit
+# status then says so too (adv51 n01: exit 0 after "run failed")
+failed=0 settings=0 failedLogs=""
 while [ $# -ge 2 ]
 do
+    settings=$((settings + 1))
     label=$1 opts=$2; shift 2
     case=$dir/$label
     echo "== $kind $label: $opts"
@@ -33,7 +37,7 @@ do
             $opts -noPlots -noVTK > "$dir/$label.log" 2>&1
         run=$case/axisymmetricPreview
     else
-        scratchFolder restLadder.sh "$case"
+        scratchFolder restLadder.sh "$case" @case
         cp -r "$root/tutorials/blast/quarter3D/"{0.orig,constant,system,Allrun} "$case/"
         # shellcheck disable=SC2086
         (cd "$case" && ./Allrun $opts -noRun -noPlots \
@@ -42,7 +46,9 @@ do
         run=$case
     fi
     grep -h "^CPU time of the time loop" "$run/log.cellBlastFoam" \
-        || { echo "   run failed: $dir/$label.log"; tail -5 "$dir/$label.log"; continue; }
+        || { echo "   run failed: $dir/$label.log"; tail -5 "$dir/$label.log"
+             failed=$((failed + 1)) failedLogs="$failedLogs $dir/$label.log"
+             continue; }
     # the 1D answer once per DIR (the same pulse, column and probe
     # heights for every setting): planeWave -reference reuses it
     ref=()
@@ -52,3 +58,8 @@ do
         || cp "$run/postProcessing/planeWave/reference.dat" "$dir/"
     grep -E "^solid_[0-9] |^solid_p[0-9] |FAIL" "$dir/$label.check"
 done
+if [ $failed -gt 0 ]
+then
+    echo "restLadder.sh: $failed of $settings setting(s) failed:$failedLogs" >&2
+    exit 1
+fi

@@ -38,7 +38,7 @@ do
     label=$1 opts=$2 edits=$3; shift 3
     case=$dir/$label
     echo "== quarter3D $label: $opts; edits: ${edits:-none}"
-    scratchFolder restVariants3D.sh "$case"     # never a user's (adv51 n01)
+    scratchFolder restVariants3D.sh "$case" @case     # never a user's (adv51 n01)
     cp -r "$root/tutorials/blast/quarter3D/"{0.orig,constant,system,Allrun} "$case/"
     ok=yes
     for e in $edits

@@ -53,6 +53,9 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from probeOvershoot import Cell, probeHistory, shape  # noqa: E402
+from neuronFsi import script  # noqa: E402
+# an input's error is one line, not a traceback (adv52 p18)
+script.guard()
 from neuronFsi import planeWave as pw  # noqa: E402
 
 NQ = 8          # Gauss points per hexahedron (2x2x2)

@@ -70,7 +70,7 @@ def prepare(case, f, Z, endTime, env, extra=(), pulse=PULSE):
     (sizes scaled by f; extra: more Allrun options)"""
     # an earlier case of this script only, never a user's folder (adv51
     # n01 (j))
-    scratch.outputFolder("run.py", case)
+    scratch.outputFolder("run.py", case, ("@case",))
     scratch.copyInputs(TUTORIAL, case,
                        ("fluidWedgeMesh.py", "plotBlast.py"))
     c = os.path.join(case, "axisymmetricPreview")

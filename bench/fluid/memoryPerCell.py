@@ -18,7 +18,6 @@ fit. Not a test.
 import argparse
 import importlib.util
 import os
-import shutil
 
 import numpy as np
 
@@ -46,7 +45,8 @@ def main():
     cells, rss = [], []
     for n in sizes:
         case = os.path.join(args.out, f"box{n}")
-        shutil.rmtree(case, ignore_errors=True)
+        # run.py's copy_tutorial empties only a box of its own earlier
+        # output, never a user's folder (neuronFsi.scratch.outputFolder)
         cells.append(fluidBench.sod_case(case, n, 3, args.steps))
         rss.append(fluidBench.run_solver(case, "rhoRiemannFoam")["rss"][0])
         print(f"{cells[-1]} cells: peak RSS {rss[-1]:.1f} MB", flush=True)

@@ -82,8 +82,9 @@ def set_entries(case, dictFile, entries):
 def copy_tutorial(name, dst, stock=False):
     """Scratch copy of a verification tutorial (without its mesh); with
     stock, the rhoCentralFoam overlay on top."""
-    if os.path.exists(dst):
-        shutil.rmtree(dst)
+    # never a user's folder: only this script's earlier output is emptied
+    # (neuronFsi.scratch.outputFolder; adv51 n01)
+    scratch.outputFolder("run.py", dst, ("@case",))
     scratch.copyInputs(os.path.join(TUTORIALS, name), dst,
                      ("0.orig", "system", "constant"), ("polyMesh",))
     if stock:

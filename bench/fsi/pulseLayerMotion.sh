@@ -14,6 +14,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 . "$root/etc/bashrc"
+. "$root/etc/scratchFolder"
 out=${1:-${TMPDIR:-/tmp}/pulseLayerMotion.$$}
 repeats=${2:-2}
 band=${3:-5e-6}
@@ -22,8 +23,8 @@ src=$root/tests/fsi/pulseLayer
 
 prepare()  # prepare DIR VARIANT
 {
-    rm -rf "$1"
-    cp -r "$src" "$1"
+    scratchFolder pulseLayerMotion.sh "$1" @case    # never a user's (adv51 n01)
+    cp -r "$src/." "$1/"
     if [ "$2" = band ]
     then
         sed -i "s/^\( *mapTolerance .*\)$/\1\n    motionDistance  $band;/" \
@@ -47,8 +48,8 @@ do
     for variant in laplacian band
     do
         d=$out/$variant.$i
-        rm -rf "$d"
-        cp -r "$out/$variant.mesh" "$d"
+        scratchFolder pulseLayerMotion.sh "$d" @case
+        cp -r "$out/$variant.mesh/." "$d/"
         (cd "$d" && cellBlastFoam > log.cellBlastFoam 2>&1) \
             || { echo "pulseLayerMotion.sh: $d failed" >&2; exit 1; }
         line=$(grep "^CPU time of the time loop" "$d/log.cellBlastFoam")

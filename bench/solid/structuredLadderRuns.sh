@@ -32,6 +32,7 @@ set -euo pipefail
 [ $# -ge 1 ] || { sed -n 2,20p "$0"; exit 1; }
 root=$(cd "$(dirname "$0")/../.." && pwd)
 . "$root/etc/bashrc"
+. "$root/etc/scratchFolder"
 exe=$root/build/bin/exactTraction
 py=/usr/bin/python3
 out=$1; shift
@@ -42,7 +43,7 @@ mkdir -p "$out"
 # mesh TYPE CELL: the cell mesh into OUT/mesh-TYPE-CELL
 mesh() {
     local d=$out/mesh-$1-$2
-    rm -rf "$d"
+    scratchFolder structuredLadderRuns.sh "$d"   # never a user's (adv51 n01)
     mkdir -p "$d/system" "$d/constant"
     cp "$tut/system/cellMeshDict" "$tut/system/controlDict" "$d/system/"
     local m
@@ -67,7 +68,7 @@ do
         echo "== $t $c m"
         mesh $t "$c"
         d=$out/$t-$c
-        rm -rf "$d"
+        scratchFolder structuredLadderRuns.sh "$d"
         mkdir -p "$d"
         # shellcheck disable=SC2086
         $py "$root/bench/solid/cellProbes.py" "$out/mesh-$t-$c/constant/cell.msh" \
@@ -92,7 +93,7 @@ done
 variant() {
     local d=$1 m=$2 probes=$3
     shift 3
-    rm -rf "$d"
+    scratchFolder structuredLadderRuns.sh "$d"   # never a user's (adv51 n01)
     mkdir -p "$d"
     cp -r "$out/tab/constant" "$out/tab/postProcessing" "$d/"
     nice -n 10 "$exe" "$m" "$out/tab/table.dat" "$d" -probes "$probes" \

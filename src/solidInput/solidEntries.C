@@ -2,6 +2,7 @@
 #include "OStringStream.H"
 
 #include "SolidError.H"
+#include "messageText.H"
 
 #include <algorithm>
 #include <cmath>
@@ -40,7 +41,7 @@ void Foam::solidEntries::fail
         const ITstream& is = e->stream();
         forAll(is, i)
         {
-            os << (i ? " " : "") << is[i];
+            os << (i ? " " : "") << foamTools::tokenText(is[i]).c_str();
         }
     }
     throw solid::SolidError

@@ -10,7 +10,7 @@ dir=$1; shift
 # DIR new, empty or an earlier output of this script (adv51 n01: a user's
 # folder given as DIR was removed)
 . "$here/../../etc/scratchFolder"
-scratchFolder runPreview.sh "$dir" axisymmetricPreview
+scratchFolder runPreview.sh "$dir" "axisymmetricPreview/@case"
 mkdir -p "$dir/axisymmetricPreview"
 for f in 0.orig constant system Allrun
 do

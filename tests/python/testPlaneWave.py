@@ -121,6 +121,24 @@ class ReferenceFile(TempDirTestCase):
                                     "finite number"):
             pw.readReference(self.tmp + "/nan.dat")
 
+    def testReferenceWithACutLastRowRefused(self):
+        """adv51 n07: a reference cut inside its last row (one token of
+        4, no end of line, or fewer columns with one) was read without it,
+        its later probes "not compared", exit 0: refused naming the line"""
+        head = "# x\n# time  p_z1e-06  p_z2e-06\n0 0 0\n1e-10 1 2\n"
+        self.write("noEol.dat", head + "2e-10 3")
+        with self.assertRaisesRegex(pw.PlaneWaveError,
+                                    "noEol.dat, line 5: the last row is "
+                                    "cut"):
+            pw.readReference(self.tmp + "/noEol.dat")
+        self.write("short.dat", head + "2e-10 3\n")
+        with self.assertRaisesRegex(pw.PlaneWaveError,
+                                    "short.dat, line 5: the last row is "
+                                    "cut"):
+            pw.readReference(self.tmp + "/short.dat")
+        self.write("whole.dat", head + "2e-10 3 4\n")
+        self.assertEqual(len(pw.readReference(self.tmp + "/whole.dat").t), 3)
+
     def testDensitiesReadBackAndOldFilesHaveNone(self):
         heights = [1e-6, 2e-6]
         t = np.array([0.0, 1e-10])

@@ -1,6 +1,8 @@
 """neuronFsi.scratch: the copy of a case's inputs leaves out what its
 Allrun makes again and keeps files executable."""
 import os
+import socket
+import subprocess
 import unittest
 
 from fixtures import TempDirTestCase
@@ -92,6 +94,58 @@ class OutputFolder(TempDirTestCase):
                                  ("case",))
         self.assertTrue(os.path.isfile(os.path.join(self.tmp, "own",
                                                     "notes.txt")))
+
+    def testCaseEntries(self):
+        """adv52 o09 (d), (b): a case folder's earlier output is emptied
+        only if it holds what a run of a case leaves ("@case"), a case
+        inside the folder likewise ("NAME/@case"): a user's file added
+        there is refused and kept"""
+        d = os.path.join(self.tmp, "case")
+        scratch.outputFolder("run.py", d, ("@case",))
+        for f in ("system/controlDict", "0/p", "1e-09/p", "log.cellBlastFoam",
+                  "postProcessing/probes/0/p", "solid/solid.h5",
+                  ".allrunOptions"):
+            self.write("case/" + f, "1\n")
+        scratch.outputFolder("run.py", d, ("@case",))
+        self.assertEqual(os.listdir(d), [scratch.MARKER])
+        self.write("case/system/controlDict", "1\n")
+        self.write("case/analysis.txt", "mine\n")
+        with self.assertRaisesRegex(scratch.ScratchError,
+                                    r"\(analysis\.txt\)"):
+            scratch.outputFolder("run.py", d, ("@case",))
+        self.assertTrue(os.path.isfile(os.path.join(d, "analysis.txt")))
+        o = os.path.join(self.tmp, "out")
+        scratch.outputFolder("runPreview.sh", o, ("preview/@case",))
+        self.write("out/preview/system/controlDict", "1\n")
+        self.write("out/preview/log.Allrun", "1\n")
+        scratch.outputFolder("runPreview.sh", o, ("preview/@case",))
+        self.write("out/preview/system/controlDict", "1\n")
+        self.write("out/preview/mine.txt", "mine\n")
+        with self.assertRaisesRegex(scratch.ScratchError,
+                                    r"\(preview/mine\.txt\)"):
+            scratch.outputFolder("runPreview.sh", o, ("preview/@case",))
+        self.assertTrue(os.path.isfile(os.path.join(o, "preview",
+                                                    "mine.txt")))
+
+    def testRunGoingOnInsideRefused(self):
+        """adv52 p02 (b): a second gapStudy.sh emptied its own earlier
+        folder under the first's running solver: a folder holding a live
+        run lock is refused, nothing removed"""
+        d = os.path.join(self.tmp, "out")
+        scratch.outputFolder("g.sh", d, ("@case",))
+        self.write("out/system/controlDict", "1\n")
+        p = subprocess.Popen(["sleep", "60"], cwd=d)
+        self.addCleanup(lambda: (p.kill(), p.wait()))
+        with open(os.path.join(d, ".runLock"), "w") as f:
+            f.write("pid %d\nhost %s\nexecutable sleep\nstarted now\n"
+                    "case %s\n" % (p.pid, socket.gethostname(),
+                                   os.path.realpath(d)))
+        with self.assertRaisesRegex(scratch.ScratchError,
+                                    "holds a run going on .*in use by "
+                                    "sleep"):
+            scratch.outputFolder("g.sh", d, ("@case",))
+        self.assertTrue(os.path.isfile(os.path.join(d, "system",
+                                                    "controlDict")))
 
     def testFileOrLinkRefused(self):
         self.write("f", "mine\n")

@@ -7,6 +7,7 @@
 // untouched, and a SIGKILL during the cut leaves the file before or after
 // it, never between.
 
+#include "AtomicFile.H"
 #include "Checkpoint.H"
 #include "Hdf5File.H"
 #include "Loads.H"
@@ -431,4 +432,33 @@ TEST(AtomicResultWriter, ContinuedFileMustBeUndamagedAndOfItsRun)
         EXPECT_NE(msg.find("checksum"), std::string::npos) << msg;
         EXPECT_EQ(text("damaged.h5"), damaged);
     }
+}
+
+
+// A log edited in place (force.dat appended to, cut back at a restart)
+// that is one of several hard links (a case copied with cp -al): ownCopy
+// gives the name a file of its own, the other link keeps its bytes (adv52
+// p26: a restarted copy appended its rows to the original's force.dat)
+TEST(AtomicResultWriter, OwnCopyOfAHardLinkedLog)
+{
+    removeFiles({"linkedA.dat", "linkedB.dat"});
+    {
+        std::ofstream os("linkedA.dat");
+        os << "# time force\n0 1\n";
+    }
+    ASSERT_EQ(::link("linkedA.dat", "linkedB.dat"), 0);
+    EXPECT_TRUE(ownCopy("linkedB.dat"));
+    {
+        std::ofstream os("linkedB.dat", std::ios::app);
+        os << "1 2\n";
+    }
+    EXPECT_EQ(text("linkedA.dat"), "# time force\n0 1\n");
+    EXPECT_EQ(text("linkedB.dat"), "# time force\n0 1\n1 2\n");
+    struct stat st;
+    ASSERT_EQ(::stat("linkedA.dat", &st), 0);
+    EXPECT_EQ(st.st_nlink, 1u);
+    // a file of one link, and no file: nothing done
+    EXPECT_FALSE(ownCopy("linkedB.dat"));
+    EXPECT_FALSE(ownCopy("noSuchFile.dat"));
+    removeFiles({"linkedA.dat", "linkedB.dat"});
 }

@@ -95,6 +95,11 @@ if outer < far:
 if not 1 <= args.maxCells <= 1e9:
     p.error("-maxCells %g is outside the valid range [1, 1e9]"
             % args.maxCells)
+# a count: a whole number (adv51 n05: 1.5 was quoted "more than -maxCells
+# 1" when a mesh of 2 cells was refused)
+if args.maxCells != math.floor(args.maxCells):
+    p.error("-maxCells %r is not a whole number: the largest cell count, "
+            "a whole number in [1, 1e9]" % args.maxCells)
 Rb = Zb = max(a, H) + 4e-6      # inner box around the cell [m]
 # the column above the box: at least one axial cell of -dz (a shorter one
 # would be a thinner cell, setting a smaller time step); a scene shortened
@@ -184,7 +189,8 @@ def tooMany(cells, atLeast):
         p.error("the wedge water would have %s%d cells, more than -maxCells "
                 "%d (coarser -h, -far, -dz or -outer, or a larger "
                 "-maxCells); nothing was written"
-                % ("at least " if atLeast else "", cells, args.maxCells))
+                % ("at least " if atLeast else "", cells,
+                   int(args.maxCells)))
 
 
 # The count before the grading's search, which takes as long as the ring

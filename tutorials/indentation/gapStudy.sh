@@ -28,7 +28,7 @@ work=${WORK:-$(mktemp -d)}
 c=$work/${src}_$name
 # an earlier case of this script only, never a user's folder (adv51 n01)
 . "$here/../../etc/scratchFolder"
-scratchFolder gapStudy.sh "$c"
+scratchFolder gapStudy.sh "$c" @case
 cp -r "$here/$src/." "$c/"
 cd "$c"
 /usr/bin/python3 - "$@" <<'PY'

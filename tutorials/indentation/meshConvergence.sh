@@ -18,7 +18,7 @@ do
     c=$work/${case}_$s
     # an earlier case of this script only, never a user's folder (adv51
     # n01)
-    scratchFolder meshConvergence.sh "$c"
+    scratchFolder meshConvergence.sh "$c" @case
     cp -r "$here/$case/." "$c/"
     (
         cd "$c"

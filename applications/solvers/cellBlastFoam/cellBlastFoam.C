@@ -121,8 +121,9 @@ int main(int argc, char *argv[])
         {
             OStringStream how;
             how << "the viscous limit of maxCo with entry 'mu' = "
-                << fluid.mu().value() << " Pa s of system/fvSolution "
-                << "riemann, below maxDeltaT = " << maxDeltaT << " s";
+                << foamTools::numberText(fluid.mu().value()).c_str()
+                << " Pa s of system/fvSolution riemann, below maxDeltaT = "
+                << foamTools::numberText(maxDeltaT).c_str() << " s";
             foamTools::checkStepCount(runTime, dtViscous, how.str());
         }
     }

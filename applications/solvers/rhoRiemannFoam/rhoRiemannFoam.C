@@ -81,9 +81,11 @@ int main(int argc, char *argv[])
         const scalar Co = fluid.courantNumber(runTime.deltaTValue());
         const scalar dtCo = maxCo*runTime.deltaTValue()/max(Co, SMALL);
         OStringStream how;
-        how << "the smaller of maxDeltaT = " << maxDeltaT << " s and the "
-            << "Courant limit maxCo = " << maxCo << " of the start state, "
-            << dtCo << " s";
+        how << "the smaller of maxDeltaT = "
+            << foamTools::numberText(maxDeltaT).c_str() << " s and the "
+            << "Courant limit maxCo = " << foamTools::numberText(maxCo).c_str()
+            << " of the start state, " << foamTools::numberText(dtCo).c_str()
+            << " s";
         foamTools::checkStepCount(runTime, min(maxDeltaT, dtCo), how.str());
     }
     else

@@ -45,6 +45,9 @@ import os
 
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+# an input's error is one line, not a traceback (adv52 p18)
+script.guard()
 from neuronFsi import damageIndicators
 from neuronFsi.solidResults import SolidResults
 
@@ -118,6 +121,8 @@ def main():
           + " | ".join(f"{k} [Pa] (t [ns])" for k in keys) + " |")
     print("|---|---|---|" + "---|"*len(keys))
     for c in a.cases:
+        if "=" not in c:
+            ap.error("%s: give LABEL=CASE" % c)
         label, case = c.split("=", 1)
         best, size, n, P = footMeasures(case, a.t0, a.t1, a.near, a.away)
         rows.append((label, best))
@@ -133,6 +138,8 @@ def main():
           + " |")
     print("|---|" + "---|"*len(windows))
     for c in a.cases:
+        if "=" not in c:
+            ap.error("%s: give LABEL=CASE" % c)
         label, case = c.split("=", 1)
         t, _, vm = damageIndicators.interfaceMaxima(case)["membrane-cytoplasm"]
         t = t*1e9

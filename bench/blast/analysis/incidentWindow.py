@@ -77,6 +77,16 @@ def main():
     if a.series and not (a.series[1] >= a.series[0] and a.series[2] > 0):
         ap.error("--series T0 T1 DT: T1 must not be before T0 and DT must "
                  "be positive")
+    # the rows it prints, bounded (adv52 p34: DT 1e-6 ns over 1e6 ns asked
+    # numpy for 7.28 TiB, a traceback; over 100 ns 1e8 rows printed for
+    # hours)
+    maxRows = 100000
+    if a.series and (a.series[1] - a.series[0])/a.series[2] + 1 > maxRows:
+        ap.error("--series %g %g %g would print %.3g rows, more than %d: a "
+                 "longer DT or a shorter span" % (a.series[0], a.series[1],
+                                                  a.series[2],
+                                                  (a.series[1] - a.series[0])
+                                                  / a.series[2] + 1, maxRows))
     # a folder that is no case, or a case planeWave never ran on: one
     # line, no traceback (adv50b k20)
     if not os.path.isfile(os.path.join(a.case, "system", "controlDict")):

@@ -47,6 +47,9 @@ import tempfile
 
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+# an input's error is one line, not a traceback (adv52 p18)
+script.guard()
 from neuronFsi import planeWave
 from neuronFsi import scratch
 
@@ -88,10 +91,17 @@ def run(cmd, cwd, log):
 
 
 def locations(case):
-    out = subprocess.run(["foamDictionary", "-entry",
-                          "functions/fluidProbes/probeLocations", "-value",
-                          os.path.join(case, "system", "controlDict")],
-                         capture_output=True, text=True, check=True).stdout
+    cd = os.path.join(case, "system", "controlDict")
+    r = subprocess.run(["foamDictionary", "-entry",
+                        "functions/fluidProbes/probeLocations", "-value", cd],
+                       capture_output=True, text=True)
+    if r.returncode != 0:
+        # a folder that is no case, or no fluid probes (adv52 p18: a
+        # traceback)
+        sys.exit("probePoints.py: error: %s: no functions/fluidProbes/"
+                 "probeLocations (foamDictionary: %s)"
+                 % (cd, (r.stderr.strip().splitlines() or ["failed"])[-1]))
+    out = r.stdout
     v = [float(x) for x in re.findall(r"[-+0-9.eE]+", out)]
     return np.array(v).reshape(-1, 3)
 

@@ -6,6 +6,7 @@
 #include "subDict.H"
 #include "physicalBounds.H"
 #include "OStringStream.H"
+#include "writeGuard.H"
 
 #include <cfenv>
 #include <cmath>
@@ -81,9 +82,11 @@ const Foam::volVectorField& checkedVelocity(const Foam::volVectorField& U)
         FatalIOError
         (
             FUNCTION_NAME, __FILE__, __LINE__, U.objectPath(), -1
-        )   << "field U: " << where << " has U = " << u << " m/s; each "
-            << "component must be finite with magnitude below " << uMax
-            << " m/s" << exit(FatalIOError);
+        )   << "field U: " << where << " has U = "
+            << foamTools::numberText(u).c_str() << " m/s; each component"
+            << " must be finite with magnitude below "
+            << foamTools::numberText(uMax).c_str() << " m/s"
+            << exit(FatalIOError);
     };
     forAll(U.primitiveField(), celli)
     {
@@ -108,6 +111,203 @@ const Foam::volVectorField& checkedVelocity(const Foam::volVectorField& U)
         }
     }
     return U;
+}
+
+//- The stop of a check that every rank makes of its own part (the
+//  restart state's files and cells): text is this rank's message, empty
+//  when its part is good; item names what is bad (-1: nothing), as
+//  describe(item) in the master's list; summary follows that list.
+//  Decided by every rank together (adv49b i23: the rank with the bad
+//  cell stopped, the others went on into the first exchange and died in
+//  MPI with MPI_ERR_TRUNCATE): returns on every rank if every part is
+//  good. In parallel a bad rank other than the master prints its own
+//  text first, whole and flushed, and only then tells the master, which
+//  stops the run naming the bad ranks; the other ranks wait for that
+//  stop (adv50a k02 (c), (d), adv49b i23: a good rank's "no state of the
+//  fluid on another rank" only, the bad rank's text lost to that rank's
+//  abort in 5 of 5 runs). Texts are not sent through OpenFOAM's streams
+//  (fix19g's gathered List<string> failed there: "Wrong token type -
+//  expected string, found word ''")
+template<class Describe>
+void stopTogether
+(
+    const std::string& text,
+    const Foam::label item,
+    const Describe& describe,
+    const std::string& summary
+)
+{
+    using namespace Foam;
+    bool anyBad = !text.empty();
+    if (Pstream::parRun())
+    {
+        reduce(anyBad, orOp<bool>());
+    }
+    if (!anyBad)
+    {
+        return;
+    }
+    const char* const nothingRun =
+        ". Nothing was run: restart from an earlier time, or start anew";
+    if (!Pstream::parRun())
+    {
+        FatalErrorInFunction
+            << text.c_str() << nothingRun << exit(FatalError);
+    }
+    if (!text.empty() && !Pstream::master())
+    {
+        // one write of the whole text (stderr is unbuffered: each << was
+        // a write of its own, which the master's output could split,
+        // lead L01 of session 47)
+        const std::string whole
+        (
+            "\n--> FOAM FATAL ERROR (rank "
+          + std::to_string(Pstream::myProcNo()) + "): " + text + nothingRun
+          + "\n\n"
+        );
+        std::cerr.write(whole.data(), std::streamsize(whole.size()));
+        std::cerr.flush();
+    }
+    labelList badItem(Pstream::nProcs(), -1);
+    badItem[Pstream::myProcNo()] = text.empty() ? -1 : max(item, label(0));
+    Pstream::listCombineGather(badItem, maxEqOp<label>());
+    if (!Pstream::master())
+    {
+        foamTools::waitForMastersStop();
+    }
+    FatalErrorInFunction;
+    if (!text.empty())
+    {
+        FatalError << "rank 0: " << text.c_str();
+    }
+    label nOther = 0;
+    forAll(badItem, proci)
+    {
+        if (proci != Pstream::myProcNo() && badItem[proci] >= 0)
+        {
+            FatalError
+                << (nOther++ ? ", " : !text.empty() ? "\n    and " : "")
+                << "rank " << proci << " ("
+                << describe(badItem[proci]).c_str() << ")";
+        }
+    }
+    if (nOther)
+    {
+        FatalError << ": " << summary.c_str();
+    }
+    FatalError << nothingRun << exit(FatalError);
+}
+
+
+//- The files of the conservative state (rho, rhoU, rhoE) of the time
+//  mesh starts from, as a bit set (1: rho, 2: rhoU, 4: rhoE)
+const char* const stateFiles[3] = {"rho", "rhoU", "rhoE"};
+
+std::string stateFilesText(const Foam::label set)
+{
+    std::string text;
+    for (int i = 0; i < 3; ++i)
+    {
+        if (set & (1 << i))
+        {
+            text += (text.empty() ? "" : ", ") + std::string(stateFiles[i]);
+        }
+    }
+    return text;
+}
+
+
+//- Whether the run restarts from the conservative state rho, rhoU, rhoE
+//  of the time mesh starts from (else from p, U, T), decided by every
+//  rank together. A file of the three that is there but whose header
+//  OpenFOAM cannot read (damaged, or of another class) was taken for no
+//  file: the run restarted from p, U and T without a word, and in
+//  parallel the rank with such a file took that way while the others
+//  checked their state with every rank (adv50a k02 (f): rank 1's rhoE
+//  with its first bytes overwritten, -acceptEdited: the ranks out of
+//  step, OpenFOAM's "error in IOstream ... List<fileName>" of a later
+//  exchange, no file named). Refused naming the file, as is a time our
+//  solvers committed that holds some of the three but not all, and a
+//  rank without them while other ranks have them
+bool conservativeRestart(const Foam::fvMesh& mesh)
+{
+    using namespace Foam;
+    const word& t = mesh.time().timeName();
+    const fileName dir(mesh.time().timePath());
+    label there = 0, unreadable = 0;
+    {
+        IOobject io("rho", t, mesh);
+        if (isFile(dir/"rho"))
+        {
+            there |= 1;
+            unreadable |= io.typeHeaderOk<volScalarField>(true) ? 0 : 1;
+        }
+    }
+    {
+        IOobject io("rhoU", t, mesh);
+        if (isFile(dir/"rhoU"))
+        {
+            there |= 2;
+            unreadable |= io.typeHeaderOk<volVectorField>(true) ? 0 : 2;
+        }
+    }
+    {
+        IOobject io("rhoE", t, mesh);
+        if (isFile(dir/"rhoE"))
+        {
+            there |= 4;
+            unreadable |= io.typeHeaderOk<volScalarField>(true) ? 0 : 4;
+        }
+    }
+    const bool committed =
+        isFile(dir/foamTools::writeGuard::committedName(), false);
+    // this rank's way: 1 the conservative state, 0 p, U, T
+    const label way = there == 7 && !unreadable ? 1 : 0;
+    label anyConservative = way;
+    if (Pstream::parRun())
+    {
+        reduce(anyConservative, maxOp<label>());
+    }
+    std::string text;
+    label item = -1;
+    if (unreadable)
+    {
+        item = unreadable;
+        text = "the file(s) " + stateFilesText(unreadable) + " of the"
+            " restart time " + t + " s (" + dir + ") are there but are no"
+            " field OpenFOAM can read: the header (FoamFile { ... class"
+            " volScalarField or volVectorField; ... }) is damaged or of"
+            " another class; the conservative state rho, rhoU, rhoE would"
+            " not be read (the run would restart from p, U and T, not"
+            " continue the run that wrote the time)";
+    }
+    else if (there != 0 && there != 7 && committed)
+    {
+        item = 7 & ~there;
+        text = "the restart time " + t + " s (" + dir + "), written by a"
+            " run of ours, has " + stateFilesText(there) + " but not "
+          + stateFilesText(item) + ": the conservative state rho, rhoU,"
+            " rhoE is the three files (removed or moved after the run"
+            " wrote them?); without them the run would restart from p, U"
+            " and T, not continue the run that wrote the time";
+    }
+    else if (!way && anyConservative)
+    {
+        item = 7 & ~there;
+        text = "the restart time " + t + " s (" + dir + ") has no "
+          + stateFilesText(item) + " while the other ranks' times have"
+            " the conservative state rho, rhoU, rhoE: the ranks would"
+            " restart in two ways";
+    }
+    stopTogether
+    (
+        text, item,
+        [](const label set) { return stateFilesText(set); },
+        "the conservative state's files of the restart time " + t + " s"
+        " cannot be used there; each such rank's message, printed above"
+        " as \"FOAM FATAL ERROR (rank N)\", names the files"
+    );
+    return way;
 }
 
 } // End anonymous namespace
@@ -192,12 +392,7 @@ Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
     // The conservative state of a written time: a restart continues
     // exactly (bitwise with writePrecision 17 and writeControl timeStep)
     const word& t = mesh.time().timeName();
-    const bool conservativeRestart =
-        IOobject("rhoU", t, mesh).typeHeaderOk<volVectorField>(true)
-     && IOobject("rhoE", t, mesh).typeHeaderOk<volScalarField>(true)
-     && IOobject("rho", t, mesh).typeHeaderOk<volScalarField>(true);
-
-    if (conservativeRestart)
+    if (conservativeRestart(mesh))
     {
         Info<< "Restarting from the conservative state rho, rhoU, rhoE of"
             << " time " << t << " s" << nl << endl;
@@ -378,80 +573,34 @@ void Foam::conservativeFluid::checkRestartState
     {
         os<< "the conservative state of the restart time "
             << mesh_.time().timeName() << " s in cell " << bad << " (at "
-            << centres[bad] << " m): rho = " << rho[bad] << " kg/m^3 ("
-            << rhoWritten.objectPath().c_str() << "), rhoU = " << rhoU[bad]
-            << " kg/(m^2 s), rhoE = " << rhoE[bad] << " J/m^3";
+            << foamTools::numberText(centres[bad]).c_str() << " m): rho = "
+            << foamTools::numberText(rho[bad]).c_str() << " kg/m^3 ("
+            << rhoWritten.objectPath().c_str() << "), rhoU = "
+            << foamTools::numberText(rhoU[bad]).c_str()
+            << " kg/(m^2 s), rhoE = "
+            << foamTools::numberText(rhoE[bad]).c_str() << " J/m^3";
         if (why.compare(0, 15, "the density rho") != 0)
         {
-            os<< " (U = " << Ubad << " m/s";
+            os<< " (U = " << foamTools::numberText(Ubad).c_str() << " m/s";
             if (why.compare(0, 16, "the velocity rho") != 0)
             {
-                os<< ", e = " << e[bad] << " J/kg";
+                os<< ", e = " << foamTools::numberText(e[bad]).c_str()
+                    << " J/kg";
             }
             os<< ")";
         }
         os<< ": " << why.c_str() << "; the files rho, rhoU, rhoE of the time "
             << "were edited or damaged after the run wrote them";
     }
-    const char* const nothingRun =
-        ". Nothing was run: restart from an earlier time, or start anew";
-    if (!Pstream::parRun())
-    {
-        FatalErrorInFunction
-            << text.str().c_str() << nothingRun << exit(FatalError);
-    }
-    // In parallel a bad rank other than the master prints its own text
-    // first, whole and flushed, and only then tells the master, which
-    // stops the run naming the bad ranks; the other ranks wait for that
-    // stop (adv50a k02 (c), (d), adv49b i23: a good rank's "no state of
-    // the fluid on another rank" only, the bad rank's text lost to that
-    // rank's abort in 5 of 5 runs). Texts are not sent through
-    // OpenFOAM's streams (fix19g's gathered List<string> failed there:
-    // "Wrong token type - expected string, found word ''")
-    if (bad >= 0 && !Pstream::master())
-    {
-        std::cerr
-            << "\n--> FOAM FATAL ERROR (rank " << Pstream::myProcNo()
-            << "): " << text.str() << nothingRun << "\n" << std::endl;
-    }
-    labelList badCell(Pstream::nProcs(), -1);
-    badCell[Pstream::myProcNo()] = bad;
-    Pstream::listCombineGather(badCell, maxEqOp<label>());
-    if (!Pstream::master())
-    {
-        for (int i = 0; i < 600; ++i)
-        {
-            ::sleep(1);
-        }
-        FatalErrorInFunction
-            << "The master rank did not stop the run: its message is the"
-            << " one that says why." << exit(FatalError);
-    }
-    FatalErrorInFunction;
-    if (bad >= 0)
-    {
-        FatalError << "rank 0: " << text.str().c_str();
-    }
-    label nOther = 0;
-    forAll(badCell, proci)
-    {
-        if (proci != Pstream::myProcNo() && badCell[proci] >= 0)
-        {
-            FatalError
-                << (nOther++ ? ", " : bad >= 0 ? "\n    and " : "")
-                << "rank " << proci << " (cell " << badCell[proci] << ")";
-        }
-    }
-    if (nOther)
-    {
-        FatalError
-            << ": the conservative state of the restart time "
-            << mesh_.time().timeName() << " s is no state of the fluid"
-            << " there; each such rank's message, printed above as"
-            << " \"FOAM FATAL ERROR (rank N)\", names the cell, the state"
-            << " and the files";
-    }
-    FatalError << nothingRun << exit(FatalError);
+    stopTogether
+    (
+        text.str(), bad,
+        [](const label celli) { return "cell " + Foam::name(celli); },
+        "the conservative state of the restart time "
+      + mesh_.time().timeName() + " s is no state of the fluid there; each"
+        " such rank's message, printed above as \"FOAM FATAL ERROR (rank"
+        " N)\", names the cell, the state and the files"
+    );
 }
 
 

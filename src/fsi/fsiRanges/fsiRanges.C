@@ -46,7 +46,7 @@ table()
         {{"solidProperties/probes", "radius"}, {0, inf, true, true, "m"}},
         {
             {"solidProperties/interfaceProbe", "heightFraction"},
-            {0, 1, false, false, "-"}
+            {0, 1, false, false, ""}
         },
         {
             {"solidProperties", "interfacePatchLength"},

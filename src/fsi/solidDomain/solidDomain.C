@@ -64,7 +64,7 @@ Foam::point readPoint
             const ITstream& is = e->stream();
             forAll(is, i)
             {
-                text << (i ? " " : "") << is[i];
+                text << (i ? " " : "") << foamTools::tokenText(is[i]).c_str();
             }
         }
         else
@@ -316,7 +316,8 @@ void Foam::solidDomain::couple(const labelList& interfaceNodes)
     {
         OStringStream how;
         how << "the solid's stable time step x explicitSafety (entry "
-            << "'explicitSafety' = " << set.safety << " of "
+            << "'explicitSafety' = "
+            << foamTools::numberText(set.safety).c_str() << " of "
             << runTime_.constant()/"solidProperties"
             << "; the cell's materials and mesh decide its stable step)";
         foamTools::checkStepCount(runTime_, solver_->timeStep(), how.str());
@@ -477,7 +478,8 @@ Foam::label Foam::solidDomain::restartStep(const Time& runTime)
     {
         FatalIOErrorInFunction(d)
             << "Restart from t = " << runTime.timeName() << " s: entry"
-            << " 'h5Step' = " << k << " (state time " << tState << " s)";
+            << " 'h5Step' = " << k << " (state time "
+            << foamTools::numberText(tState).c_str() << " s)";
         if (it == steps.end())
         {
             FatalIOError
@@ -497,16 +499,20 @@ Foam::label Foam::solidDomain::restartStep(const Time& runTime)
             // (adv49a j09 (h): "names the step ... at t = 2e-09 s, not the
             // restart time 2e-09 s", two equal times contrasted)
             FatalIOError
-                << ": its entry 'time' = " << tState << " s is not the "
-                << "restart time " << t << " s, which is the time of its "
+                << ": its entry 'time' = "
+                << foamTools::numberText(tState).c_str() << " s is not the "
+                << "restart time " << foamTools::numberText(t).c_str()
+                << " s, which is the time of its "
                 << "h5Step " << k << " in " << h5 << ": the state was "
                 << "edited.";
         }
         else
         {
             FatalIOError
-                << " names the step of " << h5 << " at t = " << it->second
-                << " s, not the restart time " << t << " s: the solid"
+                << " names the step of " << h5 << " at t = "
+                << foamTools::numberText(it->second).c_str()
+                << " s, not the restart time "
+                << foamTools::numberText(t).c_str() << " s: the solid"
                 << " would restart at another time than the fluid.";
         }
         FatalIOError

@@ -946,6 +946,16 @@ def readReference(path):
     """The PlaneWave of a file of writeReference (densities and
     temperatures if it has them)."""
     table = postProcessing.readTable(path)
+    # a reference is a finished file: a last row cut (fewer columns than
+    # the header's, or no end of line) is refused, not dropped (adv51 n07:
+    # the reference then ended before the later probes' arrivals, "not
+    # compared", exit 0)
+    if table.cut is not None:
+        raise PlaneWaveError("%s, line %d: the last row is cut (fewer "
+                             "columns than the others, or no end of line):"
+                             " the file is cut or damaged; write the "
+                             "reference again (planeWave)"
+                             % (path, table.cut))
     d = table.data()
     names = table.names[1:]
     # the material points' columns (after the heights' ones)

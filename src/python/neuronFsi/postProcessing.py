@@ -213,9 +213,14 @@ def readTable(path, vectors=False):
             rows.append(line.split())
             lineNo.append(i + 1)
     n = len(rows[0]) if rows else 0
+    # the line of a cut last row dropped (None: none): a file still
+    # written; a caller reading a finished file refuses it (table.cut)
+    cut = None
     if rows and len(rows[-1]) != n:
         rows.pop()
-        lineNo.pop()
+        cut = lineNo.pop()
+    elif last >= 0 and lines[last].strip() and not lines[last].startswith("#"):
+        cut = last + 1
     for r, i in zip(rows, lineNo):
         if len(r) != n:
             damaged = "; it holds zero bytes (a damaged file)" \
@@ -225,6 +230,7 @@ def readTable(path, vectors=False):
     table = Table(path, header, rows, lineNo)
     table.notes = notes
     table.lineNo = lineNo
+    table.cut = cut
     return table
 
 

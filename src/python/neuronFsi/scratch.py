@@ -13,6 +13,47 @@ class ScratchError(Exception):
 
 MARKER = ".scratchFolder"
 
+# The entries a run of a case leaves in its folder (the tutorials'
+# .gitignore: inputs, times, logs, results, plots, our run records): the
+# entry "@case" of outputFolder stands for them, "NAME/@case" for a
+# sub-folder NAME holding a case. A marked folder is emptied only if what
+# it holds matches (adv52 o09 (d): a marked folder without entries was
+# emptied whatever it held, a user's analysis.txt added to it removed;
+# (b): a user's file inside the script's own case folder removed)
+CASE_ENTRIES = ("0", "0.orig", "constant", "system", "[0-9]*", "-[0-9]*",
+                ".[0-9]*", "processor*", "postProcessing", "solid", "VTK",
+                "log*", "*.foam", "*.OpenFOAM", ".runLock",
+                ".allrunOptions", ".allrunLock*", "Allrun", "Allclean",
+                "README.md", "*.png", "*.h5", "*.xmf", "*.calibrated",
+                "results.md", "*.incomplete", "*.overwritten", MARKER)
+
+
+def _foreign(path, names, entries):
+    """The names of path (a folder) that match no pattern of entries
+    ("@case": CASE_ENTRIES; "NAME/@case": a folder NAME whose own names
+    match CASE_ENTRIES, else "NAME/<name>" is foreign)."""
+    patterns, nested = [], []
+    for e in entries:
+        if e == "@case":
+            patterns.extend(CASE_ENTRIES)
+        elif e.endswith("/@case"):
+            nested.append(e[:-len("/@case")])
+        else:
+            patterns.append(e)
+    foreign = []
+    for n in names:
+        if n == MARKER or any(fnmatch.fnmatchcase(n, e) for e in patterns):
+            continue
+        if any(fnmatch.fnmatchcase(n, e) for e in nested):
+            sub = os.path.join(path, n)
+            if os.path.isdir(sub) and not os.path.islink(sub):
+                foreign.extend(os.path.join(n, m) for m in
+                               _foreign(sub, sorted(os.listdir(sub)),
+                                        ("@case",)))
+                continue
+        foreign.append(n)
+    return foreign
+
 
 def checkOutputFolder(script, path, entries=()):
     """outputFolder's judgement without removing anything: ScratchError if
@@ -34,8 +75,7 @@ def checkOutputFolder(script, path, entries=()):
     except OSError:
         owner = None
     if owner == script:
-        foreign = [n for n in names if n != MARKER and entries
-                   and not any(fnmatch.fnmatchcase(n, e) for e in entries)]
+        foreign = _foreign(path, names, entries) if entries else []
     else:
         foreign = names
     if foreign:
@@ -62,6 +102,16 @@ def outputFolder(script, path, entries=()):
     their output folder, rm -rf / shutil.rmtree). Returns path. The
     shell scripts' etc/scratchFolder runs this."""
     if checkOutputFolder(script, path, entries):
+        # never under a run going on (adv52 p02 (b): a second gapStudy.sh
+        # emptied its earlier folder under the first's running solver)
+        from .allrunLock import busyUnder
+        busy = busyUnder([path])
+        if busy:
+            raise ScratchError(
+                "%s holds a run going on (%s: %s): it would be removed "
+                "under that run. Wait for it to end or stop it, or give "
+                "another folder. Nothing was removed."
+                % (path, busy[0][0], busy[0][1]))
         shutil.rmtree(path)
     os.makedirs(path, exist_ok=True)
     with open(os.path.join(path, MARKER), "w") as f:

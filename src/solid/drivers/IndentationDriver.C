@@ -247,6 +247,9 @@ void solid::IndentationDriver::checkResume()
     for (const char* f : {"force.dat", "peaks.dat"})
     {
         const double len = c.scalar(std::string(f) + ".length");
+        // cut back and appended to in place: a file of its own first, not
+        // one shared with a copy of the case by hard links (adv52 p26)
+        ownCopy(path(f));
         std::error_code ec;
         fs::resize_file(path(f), std::uintmax_t(len), ec);
         if (ec)
@@ -265,6 +268,10 @@ void solid::IndentationDriver::checkResume()
 void solid::IndentationDriver::openOutputs()
 {
     const auto mode = resume_ ? std::ios::app : std::ios::trunc;
+    // written in place: a file of its own, not one shared with a copy of
+    // the case by hard links (adv52 p26)
+    ownCopy(path("force.dat"));
+    ownCopy(path("peaks.dat"));
     forceFile_.open(path("force.dat"), std::ios::out | mode);
     forceFile_.precision(settings_.precision);
     if (!resume_)

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 std::string solid::temporaryName(const std::string& file)
@@ -99,4 +100,20 @@ void solid::commitFile(const std::string& tmp, const std::string& target)
           + target + "': " + std::strerror(errno)
         );
     }
+}
+
+
+bool solid::ownCopy(const std::string& file)
+{
+    struct stat st;
+    if (::stat(file.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+    {
+        return false;
+    }
+    if (st.st_nlink <= 1)
+    {
+        return false;
+    }
+    commitFile(copyToTemporary(file), file);
+    return true;
 }

@@ -262,9 +262,14 @@ void Foam::rhoEThermo::correctBoundaryStates(const bool processorStatesSet)
                 << "' (p: " << p_.boundaryField()[patchi].type()
                 << ", T: " << T_.boundaryField()[patchi].type()
                 << "), face " << facei << " at "
-                << mesh_.boundary()[patchi].Cf()[facei] << " m, time "
-                << mesh_.time().timeName() << " s: p = " << pp[facei]
-                << " Pa, T = " << Tp[facei] << " K: " << reasonPT(pp[facei], Tp[facei]).c_str() << nl
+                << foamTools::numberText
+                   (
+                       mesh_.boundary()[patchi].Cf()[facei]
+                   ).c_str()
+                << " m, time " << mesh_.time().timeName() << " s: p = "
+                << foamTools::numberText(pp[facei]).c_str() << " Pa, T = "
+                << foamTools::numberText(Tp[facei]).c_str() << " K: "
+                << reasonPT(pp[facei], Tp[facei]).c_str() << nl
                 << "    The boundary values come from the conditions of p"
                 << " and T (files " << pFile_ << " and " << TFile_
                 << ", boundaryField/" << mesh_.boundary()[patchi].name()
@@ -284,9 +289,11 @@ void Foam::rhoEThermo::checkInternalPT() const
         {
             FatalErrorInFunction
                 << "Invalid thermodynamic state (" << lawName()
-                << ") in cell " << celli << " at " << mesh_.C()[celli]
+                << ") in cell " << celli << " at "
+                << foamTools::numberText(mesh_.C()[celli]).c_str()
                 << " m, time " << mesh_.time().timeName() << " s: p = "
-                << p[celli] << " Pa, T = " << T[celli]
+                << foamTools::numberText(p[celli]).c_str() << " Pa, T = "
+                << foamTools::numberText(T[celli]).c_str()
                 << " K: " << reasonPT(p[celli], T[celli]).c_str() << nl
                 << "    The state comes from the fields p and T (files "
                 << pFile_ << " and " << TFile_ << ", internalField)."
