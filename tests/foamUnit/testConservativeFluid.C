@@ -12,7 +12,13 @@ Description
     - moving mesh (the geometric conservation law): water at rest in a box
       whose interior points move arbitrarily stays at rest and uniform to
       round-off, the stage volumes match the mesh (gclError ~ 1e-16);
-    - restoreOldState gives back the stored state bitwise.
+    - restoreOldState gives back the stored state bitwise;
+    - the boundary conditions of each stage's state are evaluated at that
+      state's time t_n + c_k dt (Euler 1; SSPRK2 1, 1; SSPRK3 1, 1/2, 1;
+      restoreOldState's at t_n), on the fixed and the moving mesh, and
+      the Time is back at the step's end bit for bit (a T patch field that
+      records the Time's value at each evaluation; seen failing before the
+      stage times: every evaluation at t_n + dt).
 \*---------------------------------------------------------------------------*/
 
 #include "conservativeFluid.H"
@@ -21,14 +27,113 @@ Description
 #include "Random.H"
 #include "bitSet.H"
 #include "foamTestCase.H"
+#include "zeroGradientFvPatchFields.H"
+#include "addToRunTimeSelectionTable.H"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
+#include <map>
 #include <string>
 
 using namespace Foam;
+
+namespace Foam
+{
+
+//- zeroGradient that records the Time's value at each evaluation: the
+//  times at which the fluid evaluates its boundary conditions
+class timeRecorderFvPatchScalarField
+:
+    public zeroGradientFvPatchScalarField
+{
+public:
+
+    TypeName("timeRecorder");
+
+    //- The Time's values of the evaluations since the last clear()
+    static DynamicList<scalar> times;
+
+    timeRecorderFvPatchScalarField
+    (
+        const fvPatch& p,
+        const DimensionedField<scalar, volMesh>& iF
+    )
+    :
+        zeroGradientFvPatchScalarField(p, iF)
+    {}
+
+    timeRecorderFvPatchScalarField
+    (
+        const fvPatch& p,
+        const DimensionedField<scalar, volMesh>& iF,
+        const dictionary& dict
+    )
+    :
+        zeroGradientFvPatchScalarField(p, iF, dict)
+    {}
+
+    timeRecorderFvPatchScalarField
+    (
+        const timeRecorderFvPatchScalarField& ptf,
+        const fvPatch& p,
+        const DimensionedField<scalar, volMesh>& iF,
+        const fvPatchFieldMapper& mapper
+    )
+    :
+        zeroGradientFvPatchScalarField(ptf, p, iF, mapper)
+    {}
+
+    timeRecorderFvPatchScalarField(const timeRecorderFvPatchScalarField& ptf)
+    :
+        zeroGradientFvPatchScalarField(ptf)
+    {}
+
+    timeRecorderFvPatchScalarField
+    (
+        const timeRecorderFvPatchScalarField& ptf,
+        const DimensionedField<scalar, volMesh>& iF
+    )
+    :
+        zeroGradientFvPatchScalarField(ptf, iF)
+    {}
+
+    virtual tmp<fvPatchScalarField> clone() const
+    {
+        return tmp<fvPatchScalarField>
+        (
+            new timeRecorderFvPatchScalarField(*this)
+        );
+    }
+
+    virtual tmp<fvPatchScalarField> clone
+    (
+        const DimensionedField<scalar, volMesh>& iF
+    ) const
+    {
+        return tmp<fvPatchScalarField>
+        (
+            new timeRecorderFvPatchScalarField(*this, iF)
+        );
+    }
+
+    virtual void updateCoeffs()
+    {
+        if (updated())
+        {
+            return;
+        }
+        times.append(db().time().value());
+        zeroGradientFvPatchScalarField::updateCoeffs();
+    }
+};
+
+DynamicList<scalar> timeRecorderFvPatchScalarField::times;
+makePatchTypeField(fvPatchScalarField, timeRecorderFvPatchScalarField);
+
+} // End namespace Foam
+
 
 namespace
 {
@@ -282,6 +387,104 @@ TEST(conservativeFluid, restoreOldStateIsBitwise)
     EXPECT_EQ(fluid.rhoU().primitiveField(), rhoU);
     EXPECT_EQ(fluid.rhoE().primitiveField(), rhoE);
     EXPECT_EQ(thermo.p().primitiveField(), p);
+}
+
+
+TEST(conservativeFluid, boundaryAtStageTimes)
+{
+    typedef timeRecorderFvPatchScalarField recorder;
+    const std::map<word, List<scalar>> stageTimes
+    {
+        {"Euler", {1}}, {"SSPRK2", {1, 1}}, {"SSPRK3", {1, 0.5, 1}}
+    };
+    for (const auto& scheme : stageTimes)
+    {
+        for (const bool moving : {false, true})
+        {
+            fluidCase c({4, 3, 1}, scheme.first);
+            c.tc.writeUniformField
+            (
+                "T", dimTemperature, 300, "timeRecorder"
+            );
+            // p varies: the stages' states differ
+            writePressure
+            (
+                c, [](const point& x) { return 1e5 + 1e12*x.x(); }
+            );
+            fvMesh& mesh = c.mesh();
+            conservativeFluid fluid(mesh);
+            ASSERT_EQ(fluid.rk().nStages(), scheme.second.size());
+            forAll(scheme.second, k)
+            {
+                EXPECT_EQ(fluid.rk().c(k), scheme.second[k])
+                    << scheme.first << " stage " << k;
+            }
+
+            Time& runTime = c.tc.time();
+            runTime.setDeltaT(1e-11);
+            for (label n = 0; n < 3; ++n)
+            {
+                ++runTime;
+                const scalar tEnd = runTime.value();
+                const scalar dt = runTime.deltaTValue();
+                fluid.fluxes();
+                fluid.storeOldState();
+                recorder::times.clear();
+                if (moving)
+                {
+                    // One interior point moves along x
+                    pointField newPoints(mesh.points());
+                    forAll(newPoints, p)
+                    {
+                        const point& x = newPoints[p];
+                        if
+                        (
+                            x.x() > 1e-12 && x.x() < 1e-6 - 1e-12
+                         && x.y() > 1e-12 && x.y() < 1e-6 - 1e-12
+                        )
+                        {
+                            newPoints[p].x() += 1e-9*(n + 1);
+                        }
+                    }
+                    mesh.movePoints(newPoints);
+                    fluid.aleStep(dt, "");
+                }
+                else
+                {
+                    fluid.step(dt);
+                }
+                ASSERT_EQ(recorder::times.size(), scheme.second.size())
+                    << scheme.first;
+                forAll(scheme.second, k)
+                {
+                    EXPECT_NEAR
+                    (
+                        recorder::times[k],
+                        tEnd - (1 - scheme.second[k])*dt,
+                        1e-9*dt
+                    ) << scheme.first << (moving ? " moving" : "")
+                      << " step " << n << " stage " << k;
+                }
+                EXPECT_EQ(runTime.value(), tEnd) << scheme.first;
+
+                // A repeated coupling pass starts from the state at t_n
+                recorder::times.clear();
+                fluid.restoreOldState();
+                ASSERT_EQ(recorder::times.size(), 1);
+                EXPECT_NEAR(recorder::times[0], tEnd - dt, 1e-9*dt)
+                    << scheme.first;
+                EXPECT_EQ(runTime.value(), tEnd) << scheme.first;
+                if (moving)
+                {
+                    fluid.aleStep(dt, "");
+                }
+                else
+                {
+                    fluid.step(dt);
+                }
+            }
+        }
+    }
 }
 
 

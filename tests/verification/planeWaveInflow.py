@@ -4,7 +4,12 @@ it replaces, in 1D: the blast preview's water, 50 MPa for PULSE on the top
 of a 60 um column over the rigid substrate, computed once in full and once
 as a column ending at ZIN whose top lets in the full column's wave at
 that height (planeWave.writeInflow, the Riemann invariant u - F(p)) and
-lets out what comes back from the substrate. Same cells (50 nm) in both.
+lets out what comes back from the substrate. Same cells (50 nm) in both,
+both sampled at the probes' own heights (planeWave.column's
+movingMeshProbes; OpenFOAM's probes read 50 nm cells dz/8 below them,
+the inflow file's wave 0.004 ns late, which hid the boundary's dt/3 lead
+of SSPRK3 stages evaluated at the step's end: fixed in conservativeFluid,
+docs/results/blastPlaneWave.md "The inflow's Runge-Kutta stage times").
 Two cases: 5 ns with the top at 10 um (the echo reaches the top after the
 pulse has passed it), 15 ns with the top at 5 um (incident pulse and echo
 cross the top together for 8 ns: the invariant is taken from a wave that
@@ -12,17 +17,20 @@ is not simple there).
 
 Checked at three heights against the full column (issue 17 item 2: the
 shortened scene must be the full one):
-  - the 1-ns peak and the impulse within 0.05 %, arrival within 0.01 ns;
+  - the 1-ns peak and the impulse within 0.05 %, arrival within 0.003 ns
+    (measured +0.0013 ns; the stage times of the step's end gave -0.0041
+    to -0.0046 ns);
   - in the last 10 ns (the echo has left through the top), |p| below 1e-3
     of the pulse: what the boundary reflected of the outgoing echo. Measured
-    3e-4 (5 ns) and 7e-6 (15 ns; the full column 1e-5); a boundary that
+    2.4e-4 (5 ns) and 7e-6 (15 ns; the full column 1e-5); a boundary that
     took the incoming wave as a simple one (ignoring the echo in the file's
     u) leaves 0.4 to 1.7, the linearised invariant F = p/(rho0 c0) 4e-4
     (at 50 MPa water is nearly linear: 2 % compression; the peaks where
     incident and echo overlap at the top move by 0.05 % with it);
   - the largest difference at any time below 2 % of the pulse (the shocks
     are a few cells wide: a sample on a front differs by a fraction of a
-    cell's time).
+    cell's time). Measured 1.0-1.3 %; the stage times of the step's end
+    gave 3.3-4.0 %.
 Prints the measured figures. Usage: planeWaveInflow.py [--keep DIR]
 (DIR/short: the 5-ns column with its boundary, the corpus's base case)
 """
@@ -116,7 +124,7 @@ def compare(work, duration, zin, heights, end):
                          np.abs(pf[late]).max()/amplitude, diff))
         for name, value, bound in (("peak1ns", abs(ePeak), 5e-4),
                                    ("impulse", abs(eImp), 5e-4),
-                                   ("arrival [s]", abs(eArr), 1e-11),
+                                   ("arrival [s]", abs(eArr), 3e-12),
                                    ("rest", rest, 1e-3),
                                    ("difference", diff, 2e-2)):
             if not value <= bound:

@@ -18,6 +18,36 @@
 namespace
 {
 
+//- The mesh's Time at time t [s] while this object lives (the boundary
+//  conditions of a Runge-Kutta stage's state evaluated at the stage's
+//  time), then back to its value, bit for bit (also when an error
+//  throws). Only the value: the time's name, index and step stay the
+//  step's (messages name the step's end)
+class stageTime
+{
+    Foam::Time& runTime_;
+    const Foam::scalar value_;
+
+public:
+
+    stageTime(const Foam::Time& runTime, const Foam::scalar t)
+    :
+        runTime_(const_cast<Foam::Time&>(runTime)),
+        value_(runTime.value())
+    {
+        static_cast<Foam::dimensionedScalar&>(runTime_).value() = t;
+    }
+
+    ~stageTime()
+    {
+        static_cast<Foam::dimensionedScalar&>(runTime_).value() = value_;
+    }
+
+    stageTime(const stageTime&) = delete;
+    void operator=(const stageTime&) = delete;
+};
+
+
 //- riemann{} of system/fvSolution after the keyword check: ours, in a
 //  dictionary of OpenFOAM (whose other entries are not checked)
 const Foam::dictionary& checkedRiemannDict(const Foam::fvMesh& mesh)
@@ -802,6 +832,10 @@ void Foam::conservativeFluid::restoreOldState()
     thermo_->rho().primitiveFieldRef() = rho0_;
     rhoU_.primitiveFieldRef() = rhoU0_;
     rhoE_.primitiveFieldRef() = rhoE0_;
+    // The state of the step's start: its boundary values at that time
+    // (the next stage 0's fluxes use them; the Time is at the step's end)
+    const Time& runTime = mesh_.time();
+    const stageTime start(runTime, runTime.value() - runTime.deltaTValue());
     correctPrimitives();
 }
 
@@ -836,6 +870,7 @@ void Foam::conservativeFluid::step(const scalar dt)
     scalarField divPhiE(mesh_.nCells());
 
     volScalarField& rho = thermo_->rho();
+    const Time& runTime = mesh_.time();
 
     for (label stage = 0; stage < rk_.nStages(); ++stage)
     {
@@ -868,6 +903,9 @@ void Foam::conservativeFluid::step(const scalar dt)
                 a*rhoE0_[celli] + b*(rhoEc[celli] - dt*divPhiE[celli]);
         }
 
+        // The boundary values of the stage's state at its time
+        // (rungeKuttaScheme::c; the Time is at the step's end)
+        const stageTime at(runTime, runTime.value() - (1 - rk_.c(stage))*dt);
         correctPrimitives();
     }
 }
@@ -891,6 +929,7 @@ Foam::scalar Foam::conservativeFluid::aleStep
     scalarField divPhiE(mesh_.nCells());
 
     volScalarField& rho = thermo_->rho();
+    const Time& runTime = mesh_.time();
 
     for (label stage = 0; stage < rk_.nStages(); ++stage)
     {
@@ -936,7 +975,15 @@ Foam::scalar Foam::conservativeFluid::aleStep
             Vk[celli] = Vnew;
         }
 
-        correctPrimitives();
+        // The boundary values of the stage's state at its time
+        // (rungeKuttaScheme::c; the Time is at the step's end)
+        {
+            const stageTime at
+            (
+                runTime, runTime.value() - (1 - rk_.c(stage))*dt
+            );
+            correctPrimitives();
+        }
 
         // An invalid stage state (a diverging coupling first shows here)
         // stops with the cell and the time named, before a flux turns it

@@ -344,7 +344,10 @@ functions
 {{
     probes
     {{
-        type probes; libs ("libsampling.so");
+        // the probes' own points (OpenFOAM's probes read the probe cell's
+        // first tetrahedron's centroid in cells below 1e-15 m^3 per
+        // tetrahedron: dz/8 off the height; movingMeshProbes.H)
+        type movingMeshProbes; libs ("libfsi.so");
         writeControl timeStep; writeInterval 1;
         fields (p rho U T); interpolationScheme cellPoint;
         probeLocations ( {probes} );
