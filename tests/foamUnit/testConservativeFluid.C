@@ -254,7 +254,7 @@ TEST(conservativeFluid, closedBoxConservesMassAndEnergy)
         (
             c, [](const point& x) { return x.x() < 0.5e-6 ? 5e7 : 1e5; }
         );
-        conservativeFluid fluid(c.mesh());
+        conservativeFluid fluid(c.tc.time(), c.mesh());
         rhoEThermo& thermo = fluid.thermo();
 
         const scalar m0 = totalMass(fluid);
@@ -289,7 +289,7 @@ TEST(conservativeFluid, movingMeshKeepsRestStateUniform)
 {
     fluidCase c({6, 5, 1}, "SSPRK3");
     fvMesh& mesh = c.mesh();
-    conservativeFluid fluid(mesh);
+    conservativeFluid fluid(c.tc.time(), mesh);
 
     const scalar rho0 = fluid.rho()[0];
     const scalar rhoE0 = fluid.rhoE()[0];
@@ -363,7 +363,7 @@ TEST(conservativeFluid, restoreOldStateIsBitwise)
 {
     fluidCase c({8, 1, 1}, "SSPRK3");
     writePressure(c, [](const point& x) { return 1e5 + 1e12*x.x(); });
-    conservativeFluid fluid(c.mesh());
+    conservativeFluid fluid(c.tc.time(), c.mesh());
     const rhoEThermo& thermo = fluid.thermo();
 
     // The primitives of the stored state (p from the law: it differs from
@@ -412,7 +412,7 @@ TEST(conservativeFluid, boundaryAtStageTimes)
                 c, [](const point& x) { return 1e5 + 1e12*x.x(); }
             );
             fvMesh& mesh = c.mesh();
-            conservativeFluid fluid(mesh);
+            conservativeFluid fluid(c.tc.time(), mesh);
             ASSERT_EQ(fluid.rk().nStages(), scheme.second.size());
             forAll(scheme.second, k)
             {
@@ -484,6 +484,25 @@ TEST(conservativeFluid, boundaryAtStageTimes)
                 }
             }
         }
+    }
+}
+
+
+TEST(conservativeFluid, timeMustBeTheMeshs)
+{
+    // The stages set the value of the Time the fluid is given: another
+    // run's Time than the mesh's is refused
+    fluidCase c({2, 1, 1}, "SSPRK3");
+    foamUnit::testCase other("conservativeFluidOtherTime");
+    try
+    {
+        conservativeFluid fluid(other.time(), c.mesh());
+        FAIL() << "a Time other than the mesh's was accepted";
+    }
+    catch (const Foam::error& err)
+    {
+        const std::string msg(err.message());
+        EXPECT_NE(msg.find("not the mesh's"), std::string::npos) << msg;
     }
 }
 

@@ -243,7 +243,7 @@ public:
         const argList& args = *new argList(argc, argvp);
         runTime_.reset(new Time(Time::controlDictName, args));
         mesh_ = fluidSolidInteraction::newMesh(args, runTime_());
-        fluid_.reset(new conservativeFluid(mesh_()));
+        fluid_.reset(new conservativeFluid(runTime_(), mesh_()));
         fsi_.reset(new fluidSolidInteraction(mesh_(), fluid_()));
         if (!(runTime_().value() > 0))
         {

@@ -488,7 +488,7 @@ label checkLocalCellPoint
         }
         ++nExact;
         const Type value = local.interpolate(vf, cpw);
-        const Type reference = whole.interpolate(cpw);
+        const Type reference = whole.interpolate(cpw.weights(), cpw.tet());
         EXPECT_TRUE(sameBits(value, reference))
             << "at " << text(x) << " in cell " << celli << ": "
             << text(value) << " against " << text(reference)
@@ -643,10 +643,8 @@ tmp<Field<Type>> wholeFieldCellPoint
         const label celli = probes.elements()[i];
         if (celli != -1)
         {
-            tvalues.ref()[i] = whole.interpolate
-            (
-                scaleFreeCellPointWeight(vf.mesh(), probes[i], celli)
-            );
+            const scaleFreeCellPointWeight cpw(vf.mesh(), probes[i], celli);
+            tvalues.ref()[i] = whole.interpolate(cpw.weights(), cpw.tet());
         }
     }
     return tvalues;
@@ -716,9 +714,11 @@ TEST(movingMeshProbes, cellPointEqualsTheWholeFieldInterpolationToTheLastBit)
 namespace
 {
 
-//- The point a cellPointWeight samples: its weights applied to its
-//  tetrahedron's vertices (the cell centre, the face triangle's points)
-point sampledPoint(const polyMesh& mesh, const cellPointWeight& cpw)
+//- The point a cellPointWeight (or scaleFreeCellPointWeight) samples: its
+//  weights applied to its tetrahedron's vertices (the cell centre, the
+//  face triangle's points)
+template<class Weight>
+point sampledPoint(const polyMesh& mesh, const Weight& cpw)
 {
     const barycentric& w = cpw.weights();
     const triFace& tri = cpw.faceVertices();

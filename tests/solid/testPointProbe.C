@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <cmath>
 #include <random>
+#include <stdexcept>
 #include <tuple>
 
 using namespace solid;
@@ -49,11 +50,10 @@ Vec3 pointAt(const Mesh& m, int e, const Vec3& xi)
     return X;
 }
 
-// Element average of the linear field f(X) = 2 + g.X over the reference
-// volume, with the weights of the element kernel (r-z: ring 2 pi r)
-const Vec3 g(3e5, -7e5, 2e5);
-double f(const Vec3& X) { return 2 + g.dot(X); }
-double average(const Mesh& m, int e)
+// The average of fn(X) over element e's reference volume, with the
+// weights of the element kernel (r-z: ring 2 pi r)
+template<class Fn>
+double averageOf(const Mesh& m, int e, Fn fn)
 {
     ElementGeometry geo;
     geo.build(m, e);
@@ -65,10 +65,15 @@ double average(const Mesh& m, int e)
         {
             Xq += geo.N[q](a)*m.X[m.element(e)[a]];
         }
-        s += geo.w[q]*f(Xq);
+        s += geo.w[q]*fn(Xq);
     }
     return s/geo.V;
 }
+
+// The linear field f(X) = 2 + g.X and its element average
+const Vec3 g(3e5, -7e5, 2e5);
+double f(const Vec3& X) { return 2 + g.dot(X); }
+double average(const Mesh& m, int e) { return averageOf(m, e, f); }
 
 double recovered(const Mesh& m, const PointProbe& p)
 {
@@ -101,7 +106,8 @@ void locateAndRecover(bool axi)
     }
 }
 
-// A point of the region interface: a node shared by both regions
+// A point of the region interface: a node shared by both regions (none:
+// an exception, the calling test fails)
 int interfaceNode(const Mesh& m)
 {
     std::vector<int> seen(m.nNodes(), 0);
@@ -116,15 +122,27 @@ int interfaceNode(const Mesh& m)
     {
         if (seen[n] == 3) return n;
     }
-    return -1;
+    throw std::logic_error("no node of the mesh is in both regions");
 }
+
+// The distorted mesh and a point of its zigzag region interface
+struct DistortedInterface
+{
+    const Mesh m;
+    const Vec3 X;
+
+    explicit DistortedInterface(bool axi)
+    :
+        m(distorted(axi)),
+        X(m.X[interfaceNode(m)])
+    {}
+};
 
 void interfaceSides(bool axi)
 {
-    const Mesh m = distorted(axi);
-    const int n = interfaceNode(m);
-    ASSERT_GE(n, 0);
-    const Vec3 X = m.X[n];
+    const DistortedInterface d(axi);
+    const Mesh& m = d.m;
+    const Vec3& X = d.X;
     for (int side = 0; side < 2; ++side)
     {
         const PointProbe p(m, X, side);
@@ -177,7 +195,8 @@ void outside(bool axi)
 // of the interface and next to the boundary
 void linearDisplacement(bool axi)
 {
-    const Mesh m = distorted(axi);
+    const DistortedInterface d(axi);
+    const Mesh& m = d.m;
     Model model(m);
     model.setMaterial("outer", solidTest::material(100, 1e-9));
     model.setMaterial("inner", solidTest::material(800, 1e-9));
@@ -193,7 +212,7 @@ void linearDisplacement(bool axi)
     }
     const Mat3 F = Mat3::Identity() + H;
     const int axial = dim - 1;
-    const Vec3 onInterface = m.X[interfaceNode(m)];
+    const Vec3& onInterface = d.X;
     const std::vector<std::pair<Vec3, int>> cases =
     {
         {onInterface, 0},
@@ -442,13 +461,11 @@ TEST(PointProbe, BallAveragesItsRegionOnly)
     // constant per region gives that region's constant exactly
     for (const bool axi : {true, false})
     {
-        const Mesh m = distorted(axi);
-        const int n = interfaceNode(m);
-        ASSERT_GE(n, 0);
+        const DistortedInterface d(axi);
+        const Mesh& m = d.m;
         for (int side = 0; side < 2; ++side)
         {
-            const PointProbe p(m, m.X[n], side, 1.6*um);
-            const PointProbe q(m, m.X[n], side);
+            const PointProbe p(m, d.X, side, 1.6*um);
             double sum = 0, c = 0;
             for (std::size_t i = 0; i < p.patch().size(); ++i)
             {
@@ -520,10 +537,9 @@ std::vector<ProbeValues> samplesOf(const PointProbe& p, P pOf)
 // segment; the stress, F and temperature rise are the one-sided probe's
 void interfaceReading(bool axi)
 {
-    const Mesh m = distorted(axi);
-    const int n = interfaceNode(m);
-    ASSERT_GE(n, 0);
-    const Vec3 X = m.X[n];
+    const DistortedInterface d(axi);
+    const Mesh& m = d.m;
+    const Vec3& X = d.X;
     std::mt19937 gen(3);
     std::uniform_real_distribution<double> u(-1, 1);
     for (int side = 0; side < 2; ++side)
@@ -599,6 +615,7 @@ void interfaceReading(bool axi)
 // A layered column: r-z [1, 3] x [0, 4] um or box [0, 2]^2 x [0, 4] um,
 // h = 0.5 um; region "top" above z = zi (= 2 um), "bottom" below. A field
 // of z alone (the plane wave) with a front: its element averages
+const double zi = 2*um;
 Mesh layered(bool axi)
 {
     Mesh m = axi
@@ -608,9 +625,16 @@ Mesh layered(bool axi)
     const int z = axi ? 1 : 2;
     for (int e = 0; e < m.nElements(); ++e)
     {
-        m.region[e] = PointProbe::centroid(m, e)(z) > 2*um ? 1 : 0;
+        m.region[e] = PointProbe::centroid(m, e)(z) > zi ? 1 : 0;
     }
     return m;
+}
+
+// The column's point at height z, off the element edges (r = 1.75 um;
+// x = y = 0.75 um)
+Vec3 columnPoint(bool axi, double z)
+{
+    return axi ? Vec3(1.75*um, z, 0) : Vec3(0.75*um, 0.75*um, z);
 }
 
 // The average over element e of a function of z alone
@@ -618,19 +642,7 @@ template<class Fz>
 double averageOfZ(const Mesh& m, int e, Fz fz)
 {
     const int z = m.dim() - 1;
-    ElementGeometry geo;
-    geo.build(m, e);
-    double s = 0;
-    for (std::size_t q = 0; q < geo.w.size(); ++q)
-    {
-        Vec3 Xq(Vec3::Zero());
-        for (int a = 0; a < m.nen(); ++a)
-        {
-            Xq += geo.N[q](a)*m.X[m.element(e)[a]];
-        }
-        s += geo.w[q]*fz(Xq(z));
-    }
-    return s/geo.V;
+    return averageOf(m, e, [&](const Vec3& X) { return fz(X(z)); });
 }
 
 } // namespace
@@ -655,12 +667,12 @@ TEST(PointProbe, InterfaceReadingDoesNotExtrapolateAFront)
     // d P + 0.5 d P = 1.5 d P at the point: at d = 0.8, 1.2 P, above the
     // exact P and every element value; the interface reading stays
     // between the hosts' values, (d P + P)/2
-    const double zi = 2*um, h = 0.5*um, P = 5e7;
+    const double h = 0.5*um, P = 5e7;
     for (const bool axi : {true, false})
     {
         const Mesh m = layered(axi);
         const int z = m.dim() - 1;
-        const Vec3 X = axi ? Vec3(1.75*um, zi, 0) : Vec3(0.75*um, 0.75*um, zi);
+        const Vec3 X = columnPoint(axi, zi);
         const PointProbe one(m, X, 0);
         const PointProbe p(m, X, 0, AcrossRegion{1});
         const auto linear = [&](int e)
@@ -707,10 +719,8 @@ TEST(PointProbe, InterfaceProbeIsValidated)
     for (const bool axi : {true, false})
     {
         const Mesh m = layered(axi);
-        const Vec3 onInterface =
-            axi ? Vec3(1.75*um, 2*um, 0) : Vec3(0.75*um, 0.75*um, 2*um);
-        const Vec3 inside =
-            axi ? Vec3(1.75*um, 1.2*um, 0) : Vec3(0.75*um, 0.75*um, 1.2*um);
+        const Vec3 onInterface = columnPoint(axi, zi);
+        const Vec3 inside = columnPoint(axi, 1.2*um);
         const std::vector<std::tuple<Vec3, int, int, std::string>> cases =
         {
             {onInterface, 0, 0, "across itself"},

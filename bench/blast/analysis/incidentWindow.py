@@ -21,7 +21,11 @@ water probes at their heights), and prints per probe:
     75 MPa: half way between the 50 MPa incident wave and its 104 MPa
     reflection), scene and reference: the echo's arrival, and its
     difference [ns]; the same for --foot (default 55 MPa, a tenth of
-    the way up): the echo's foot.
+    the way up): the echo's foot;
+  - the scene's largest sample in the incident window (times ta to
+    ta + min(T, echo) - 0.5 ns, no mean) and its time: whether the
+    window's 1-ns peak is a raw value inside the window or a mean
+    reaching past its end.
 With --series (times in ns): then p [MPa] of every probe, scene and
 reference, at T0, T0 + DT, ... T1 (the sample at or after each time).
 Not a check; docs/results/blast3D.md, "The 10 and 15 ns pulses at the
@@ -111,7 +115,8 @@ def main():
     print("# probe  z[um]  window[ns]  peakIncident scene/ref [MPa] (err %%) "
           "at centre [ns] | window less 0.5 ns: scene/ref (err %%) | "
           "peak1ns scene/ref [MPa] (err %%) at centres [ns] | "
-          "echo at %g MPa, at %g MPa: scene/ref [ns] (diff)"
+          "echo at %g MPa, at %g MPa: scene/ref [ns] (diff) | "
+          "raw max in the window, scene [MPa] at [ns]"
           % (a.level/1e6, a.foot/1e6))
     series = []
     # probes above the mesh's water (caseProbes returns them unchecked):
@@ -179,6 +184,12 @@ def main():
                 "-" if er is None else "%.2f" % (er*1e9),
                 "-" if es is None or er is None
                 else "%+.2f" % ((es - er)*1e9)))
+        raw = np.flatnonzero((t >= ta) & (t <= end))
+        if len(raw):
+            k = raw[np.argmax(p[raw])]
+            row.append("%.2f at %.3f" % (p[k]/1e6, t[k]*1e9))
+        else:
+            row.append("-")
         print("  ".join(row))
         series.append((name.replace(" ", "_"), t, p, tr, pr))
     if a.series:

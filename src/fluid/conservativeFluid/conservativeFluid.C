@@ -18,11 +18,13 @@
 namespace
 {
 
-//- The mesh's Time at time t [s] while this object lives (the boundary
+//- The Time at time t [s] while this object lives (the boundary
 //  conditions of a Runge-Kutta stage's state evaluated at the stage's
-//  time), then back to its value, bit for bit (also when an error
-//  throws). Only the value: the time's name, index and step stay the
-//  step's (messages name the step's end)
+//  time: OpenFOAM's time-dependent patches read the mesh's Time, not an
+//  argument), then back to its value, bit for bit (also when an error
+//  throws). Only the value (TimeState's, a dimensionedScalar's): the
+//  time's name, index and step stay the step's (messages name the step's
+//  end)
 class stageTime
 {
     Foam::Time& runTime_;
@@ -30,17 +32,17 @@ class stageTime
 
 public:
 
-    stageTime(const Foam::Time& runTime, const Foam::scalar t)
+    stageTime(Foam::Time& runTime, const Foam::scalar t)
     :
-        runTime_(const_cast<Foam::Time&>(runTime)),
+        runTime_(runTime),
         value_(runTime.value())
     {
-        static_cast<Foam::dimensionedScalar&>(runTime_).value() = t;
+        runTime_.value() = t;
     }
 
     ~stageTime()
     {
-        static_cast<Foam::dimensionedScalar&>(runTime_).value() = value_;
+        runTime_.value() = value_;
     }
 
     stageTime(const stageTime&) = delete;
@@ -340,13 +342,27 @@ bool conservativeRestart(const Foam::fvMesh& mesh)
     return way;
 }
 
+//- runTime, the mesh's Time (the one whose value the stages set)
+Foam::Time& meshTime(Foam::Time& runTime, const Foam::fvMesh& mesh)
+{
+    if (&runTime != &mesh.time())
+    {
+        FatalErrorInFunction
+            << "the Time given is not the mesh's: the fluid's stages would"
+            << " set the time of another run than the boundary conditions"
+            << " read" << Foam::exit(Foam::FatalError);
+    }
+    return runTime;
+}
+
 } // End anonymous namespace
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::conservativeFluid::conservativeFluid(fvMesh& mesh)
+Foam::conservativeFluid::conservativeFluid(Time& runTime, fvMesh& mesh)
 :
+    runTime_(meshTime(runTime, mesh)),
     mesh_(mesh),
     thermo_(rhoEThermo::New(mesh)),
     U_
@@ -834,8 +850,10 @@ void Foam::conservativeFluid::restoreOldState()
     rhoE_.primitiveFieldRef() = rhoE0_;
     // The state of the step's start: its boundary values at that time
     // (the next stage 0's fluxes use them; the Time is at the step's end)
-    const Time& runTime = mesh_.time();
-    const stageTime start(runTime, runTime.value() - runTime.deltaTValue());
+    const stageTime start
+    (
+        runTime_, runTime_.value() - runTime_.deltaTValue()
+    );
     correctPrimitives();
 }
 
@@ -870,7 +888,6 @@ void Foam::conservativeFluid::step(const scalar dt)
     scalarField divPhiE(mesh_.nCells());
 
     volScalarField& rho = thermo_->rho();
-    const Time& runTime = mesh_.time();
 
     for (label stage = 0; stage < rk_.nStages(); ++stage)
     {
@@ -905,7 +922,10 @@ void Foam::conservativeFluid::step(const scalar dt)
 
         // The boundary values of the stage's state at its time
         // (rungeKuttaScheme::c; the Time is at the step's end)
-        const stageTime at(runTime, runTime.value() - (1 - rk_.c(stage))*dt);
+        const stageTime at
+        (
+            runTime_, runTime_.value() - (1 - rk_.c(stage))*dt
+        );
         correctPrimitives();
     }
 }
@@ -929,7 +949,6 @@ Foam::scalar Foam::conservativeFluid::aleStep
     scalarField divPhiE(mesh_.nCells());
 
     volScalarField& rho = thermo_->rho();
-    const Time& runTime = mesh_.time();
 
     for (label stage = 0; stage < rk_.nStages(); ++stage)
     {
@@ -980,7 +999,7 @@ Foam::scalar Foam::conservativeFluid::aleStep
         {
             const stageTime at
             (
-                runTime, runTime.value() - (1 - rk_.c(stage))*dt
+                runTime_, runTime_.value() - (1 - rk_.c(stage))*dt
             );
             correctPrimitives();
         }

@@ -155,7 +155,7 @@ bool Foam::localCellPoint::keeps
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::localCellPoint::coupled(const cellPointWeight& cpw) const
+bool Foam::localCellPoint::coupled(const scaleFreeCellPointWeight& cpw) const
 {
     for (const label pointi : cpw.faceVertices())
     {

@@ -95,7 +95,7 @@ void Foam::localCellPoint::pushUntransformed(List<Type>& pointData) const
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class Type>
-bool Foam::localCellPoint::exact(const cellPointWeight& cpw) const
+bool Foam::localCellPoint::exact(const scaleFreeCellPointWeight& cpw) const
 {
     const bool isScalar = std::is_same<Type, scalar>::value;
     for (const label pointi : cpw.faceVertices())
@@ -167,7 +167,7 @@ template<class Type>
 Type Foam::localCellPoint::interpolate
 (
     const GeometricField<Type, fvPatchField, volMesh>& vf,
-    const cellPointWeight& cpw,
+    const scaleFreeCellPointWeight& cpw,
     const UList<Type>& atCoupled
 ) const
 {

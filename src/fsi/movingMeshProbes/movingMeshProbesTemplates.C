@@ -83,7 +83,8 @@ Foam::tmp<Foam::Field<Type>> Foam::movingMeshProbes::wholeFieldCellPoint
     {
         if (tets.set(probei))
         {
-            values[probei] = whole.interpolate(tets[probei]);
+            values[probei] =
+                whole.interpolate(tets[probei].weights(), tets[probei].tet());
         }
     }
     Pstream::listCombineGather(values, movingMeshProbesFoundOp<Type>());

@@ -62,6 +62,9 @@ void Foam::scaleFreeCellPointWeight::findTetrahedron
 
     const scalar cellVolume = mesh.cellVolumes()[celli];
 
+    // cellPointWeight's containment tolerance (normalised values)
+    const scalar tol = cellPointWeight::tol;
+
     forAll(cellTets, teti)
     {
         const tetIndices& tetIs = cellTets[teti];
@@ -85,6 +88,7 @@ void Foam::scaleFreeCellPointWeight::findTetrahedron
              && (u + v + w < 1 + tol)
             )
             {
+                tet_ = tetIs;
                 faceVertices_ = tetIs.faceTriIs(mesh);
                 return;
             }
@@ -109,6 +113,7 @@ void Foam::scaleFreeCellPointWeight::findTetrahedron
     const tetIndices& tetIs = cellTets[nearestTeti];
     scalar det;
     barycentricCoordinates(tetIs.tet(mesh), position, weights_, det);
+    tet_ = tetIs;
     faceVertices_ = tetIs.faceTriIs(mesh);
 }
 
@@ -122,8 +127,7 @@ Foam::scaleFreeCellPointWeight::scaleFreeCellPointWeight
     const label celli
 )
 :
-    // cellPointWeight's own search runs first (its weights are replaced)
-    cellPointWeight(mesh, position, celli)
+    celli_(celli)
 {
     findTetrahedron(mesh, position, celli);
 }
