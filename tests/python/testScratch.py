@@ -64,11 +64,11 @@ class OutputFolder(TempDirTestCase):
     def testNewEmptyAndOwnEarlierOutput(self):
         d = os.path.join(self.tmp, "out")
         scratch.outputFolder("s.sh", d, ("case", "*.log"))
-        self.assertEqual(os.listdir(d), [scratch.MARKER])
+        self.assertEqual(sorted(os.listdir(d)), sorted([scratch.MARKER, scratch.LOCK]))
         self.write("out/case/x", "1\n")
         self.write("out/run.log", "2\n")
         scratch.outputFolder("s.sh", d, ("case", "*.log"))
-        self.assertEqual(os.listdir(d), [scratch.MARKER])
+        self.assertEqual(sorted(os.listdir(d)), sorted([scratch.MARKER, scratch.LOCK]))
         os.makedirs(os.path.join(self.tmp, "empty"))
         scratch.outputFolder("s.sh", os.path.join(self.tmp, "empty"))
 
@@ -107,7 +107,7 @@ class OutputFolder(TempDirTestCase):
                   ".allrunOptions"):
             self.write("case/" + f, "1\n")
         scratch.outputFolder("run.py", d, ("@case",))
-        self.assertEqual(os.listdir(d), [scratch.MARKER])
+        self.assertEqual(sorted(os.listdir(d)), sorted([scratch.MARKER, scratch.LOCK]))
         self.write("case/system/controlDict", "1\n")
         self.write("case/analysis.txt", "mine\n")
         with self.assertRaisesRegex(scratch.ScratchError,
@@ -146,6 +146,62 @@ class OutputFolder(TempDirTestCase):
             scratch.outputFolder("g.sh", d, ("@case",))
         self.assertTrue(os.path.isfile(os.path.join(d, "system",
                                                     "controlDict")))
+
+    def testLockOfALiveScriptRefused(self):
+        """adv52 p01b (b): a folder whose lock another script holds (a
+        shell script between its solver runs) is refused, nothing removed;
+        a lock left by a script that ended is taken over with a note; the
+        lock file this made in a user's folder it refuses goes again."""
+        d = os.path.join(self.tmp, "out")
+        os.makedirs(d)
+        self.write("out/.scratchFolder", "s.sh\n")
+        self.write("out/result.txt", "the first's\n")
+        holder = subprocess.Popen(
+            ["flock", "-o", os.path.join(d, ".scratchLock"), "sh", "-c",
+             "printf 'pid %s\\nhost h\\n' $$ > " + os.path.join(
+                 d, ".scratchLock") + "; sleep 30"])
+        try:
+            for _ in range(100):
+                if "pid" in scratch.lockText(d):
+                    break
+                import time
+                time.sleep(0.05)
+            with self.assertRaisesRegex(
+                    scratch.ScratchError,
+                    r"out is in use by another script's run \(its lock "
+                    r".*\.scratchLock: pid [0-9]+, host h\)"):
+                scratch.outputFolder("s.sh", d, ("result.txt",))
+            self.assertTrue(os.path.isfile(os.path.join(d, "result.txt")))
+        finally:
+            holder.kill()
+            holder.wait()
+        # the holder ended: its lock is taken over, the folder emptied
+        scratch.outputFolder("s.sh", d, ("result.txt",))
+        self.assertFalse(os.path.exists(os.path.join(d, "result.txt")))
+        self.assertIn("pid %d" % os.getpid(), scratch.lockText(d))
+        # a user's folder refused: no lock file left in it
+        u = os.path.join(self.tmp, "user")
+        self.write("user/mine.txt", "mine\n")
+        with self.assertRaises(scratch.ScratchError):
+            scratch.outputFolder("s.sh", u)
+        self.assertEqual(os.listdir(u), ["mine.txt"])
+
+    def testShellScriptHoldsTheLock(self):
+        """etc/scratchFolder: the sourcing shell holds DIR's lock to its
+        end; a second script's scratchFolder on DIR is refused meanwhile,
+        exit 1, DIR's files kept."""
+        root = os.path.abspath(os.path.join(os.path.dirname(__file__),
+                                            "..", ".."))
+        d = os.path.join(self.tmp, "sh")
+        r = subprocess.run(
+            ["bash", "-c", '. "$0/etc/scratchFolder"; scratchFolder a.sh '
+             '"$1"; echo kept > "$1/r.txt"; bash -c \'. "$0/etc/'
+             'scratchFolder"; scratchFolder a.sh "$1"\' "$0" "$1"',
+             root, d], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertIn("is in use by another script's run", r.stderr)
+        self.assertIn("script a.sh", r.stderr)
+        self.assertTrue(os.path.isfile(os.path.join(d, "r.txt")))
 
     def testFileOrLinkRefused(self):
         self.write("f", "mine\n")

@@ -2,9 +2,13 @@
 tutorial's inputs in a folder of its own, so that running never touches
 the tracked case (and meshes made there are made again)."""
 
+import fcntl
 import fnmatch
 import os
 import shutil
+import socket
+import sys
+import time
 
 
 class ScratchError(Exception):
@@ -12,6 +16,17 @@ class ScratchError(Exception):
 
 
 MARKER = ".scratchFolder"
+
+# The lock a script holds on its output folder for its whole run (flock on
+# this file in the folder, naming pid, host, start and script): a second
+# script refuses the folder while it is held (issue 19, adv52 p01b (b): a
+# second restartDigits.sh emptied the first's folder between the first's
+# solver runs, when no run lock was there). The shell scripts hold it with
+# flock(1) on a descriptor of their own shell (etc/scratchFolder) and tell
+# the Python side through LOCKED_ENV.
+LOCK = ".scratchLock"
+LOCKED_ENV = "NEURONFSI_SCRATCH_LOCKED"
+_held = {}
 
 # The entries a run of a case leaves in its folder (the tutorials'
 # .gitignore: inputs, times, logs, results, plots, our run records): the
@@ -42,7 +57,8 @@ def _foreign(path, names, entries):
             patterns.append(e)
     foreign = []
     for n in names:
-        if n == MARKER or any(fnmatch.fnmatchcase(n, e) for e in patterns):
+        if n in (MARKER, LOCK) \
+                or any(fnmatch.fnmatchcase(n, e) for e in patterns):
             continue
         if any(fnmatch.fnmatchcase(n, e) for e in nested):
             sub = os.path.join(path, n)
@@ -66,7 +82,7 @@ def checkOutputFolder(script, path, entries=()):
                            "was removed." % path)
     if not os.path.isdir(path):
         return False
-    names = sorted(os.listdir(path))
+    names = sorted(n for n in os.listdir(path) if n != LOCK)
     if not names:
         return False
     try:
@@ -88,6 +104,70 @@ def checkOutputFolder(script, path, entries=()):
     return True
 
 
+def _pidAlive(pid):
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except (PermissionError, OverflowError, ValueError):
+        return True
+    return True
+
+
+def lockText(path):
+    """The lock file's lines as one text ("pid 123, host h, started ...,
+    script s"), "" if it cannot be read."""
+    try:
+        with open(os.path.join(path, LOCK), errors="replace") as f:
+            return ", ".join(line.strip() for line in f if line.strip())
+    except OSError:
+        return ""
+
+
+def lockFolder(script, path):
+    """Take the output folder path's lock (LOCK, flock) for this process's
+    whole run, path made if it is not there. A lock held by another live
+    script is a ScratchError naming it (pid, host, start, script); one
+    left by a script that ended (flock is released with its process) is
+    taken over, said on stderr when it names another process of this
+    host. Nothing is done when this process holds it already, or when the
+    shell script that runs this one holds it (LOCKED_ENV)."""
+    real = os.path.realpath(path)
+    if real in _held or os.environ.get(LOCKED_ENV) and \
+            os.path.realpath(os.environ[LOCKED_ENV]) == real:
+        return
+    os.makedirs(path, exist_ok=True)
+    lock = os.path.join(path, LOCK)
+    fd = os.open(lock, os.O_RDWR | os.O_CREAT | getattr(os, "O_NOFOLLOW", 0)
+                 | getattr(os, "O_CLOEXEC", 0), 0o644)
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        os.close(fd)
+        raise ScratchError(
+            "%s is in use by another script's run (its lock %s: %s): "
+            "emptying it would remove that run's files under it. Wait for "
+            "it to end, or give another folder. Nothing was removed."
+            % (path, lock, lockText(path) or "unreadable"))
+    old = lockText(path)
+    fields = dict(item.split(" ", 1) for item in old.split(", ")
+                  if " " in item)
+    try:
+        pid = int(fields.get("pid", "0"))
+    except ValueError:
+        pid = 0
+    if pid and pid != os.getpid() \
+            and fields.get("host") == socket.gethostname() \
+            and not _pidAlive(pid):
+        print("%s: note: taking over the stale lock of %s (%s: that "
+              "process has ended)" % (script, path, old), file=sys.stderr)
+    os.ftruncate(fd, 0)
+    os.write(fd, ("pid %d\nhost %s\nstarted %s\nscript %s\n" % (
+        os.getpid(), socket.gethostname(),
+        time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()), script)).encode())
+    _held[real] = fd
+
+
 def outputFolder(script, path, entries=()):
     """path made ready, empty but for its marker, for the outputs of
     script (a test's, a benchmark's or a study's folder given on its
@@ -101,7 +181,22 @@ def outputFolder(script, path, entries=()):
     adv51 n01: eleven scripts removed a user's folder given as or inside
     their output folder, rm -rf / shutil.rmtree). Returns path. The
     shell scripts' etc/scratchFolder runs this."""
-    if checkOutputFolder(script, path, entries):
+    # the folder's lock first, held for the script's run (adv52 p01b (b)):
+    # a folder judged and emptied while another script still uses it is
+    # what the lock prevents; on a refusal below the lock file this made
+    # in a user's folder is removed again
+    made = not os.path.lexists(path)
+    hadLock = os.path.lexists(os.path.join(path, LOCK))
+    if not os.path.islink(path) and (made or os.path.isdir(path)):
+        lockFolder(script, path)
+    try:
+        emptied = checkOutputFolder(script, path, entries)
+    except ScratchError:
+        if not hadLock and os.path.realpath(path) in _held:
+            os.close(_held.pop(os.path.realpath(path)))
+            os.remove(os.path.join(path, LOCK))
+        raise
+    if emptied:
         # never under a run going on (adv52 p02 (b): a second gapStudy.sh
         # emptied its earlier folder under the first's running solver)
         from .allrunLock import busyUnder
@@ -112,7 +207,15 @@ def outputFolder(script, path, entries=()):
                 "under that run. Wait for it to end or stop it, or give "
                 "another folder. Nothing was removed."
                 % (path, busy[0][0], busy[0][1]))
-        shutil.rmtree(path)
+        # emptied but for its lock
+        for n in os.listdir(path):
+            if n == LOCK:
+                continue
+            full = os.path.join(path, n)
+            if os.path.isdir(full) and not os.path.islink(full):
+                shutil.rmtree(full)
+            else:
+                os.remove(full)
     os.makedirs(path, exist_ok=True)
     with open(os.path.join(path, MARKER), "w") as f:
         f.write(script + "\n")
@@ -124,7 +227,7 @@ def copyInputs(src, dst, names, ignore=()):
     the new folder dst (or one outputFolder made: empty but for its
     marker), without what matches a pattern of ignore at any depth
     (meshes that the case's Allrun makes again)."""
-    if os.path.isdir(dst) and set(os.listdir(dst)) <= {MARKER}:
+    if os.path.isdir(dst) and set(os.listdir(dst)) <= {MARKER, LOCK}:
         pass
     else:
         os.makedirs(dst)
