@@ -29,8 +29,8 @@ FILE's. Per probe and run it prints:
     not uniaxial), with the lateral strain ln J - ln|F e_z| at the peak
     (uniaxial strain: 0);
 then per probe, from the three finest runs, the observed order p and the
-Richardson value of the von Mises 1-ns peak (transparentLadder.py's
-richardson(): none if the changes alternate) and its error against the
+Richardson value of the von Mises 1-ns peak (neuronFsi.convergence's
+threeLevel: none if the changes alternate) and its error against the
 exact answer.
 """
 import os
@@ -38,11 +38,7 @@ import sys
 
 import numpy as np
 
-here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, here)
-from transparentLadder import richardson   # noqa: E402
-
-from neuronFsi import planeWave, postProcessing   # noqa: E402
+from neuronFsi import convergence, planeWave, postProcessing
 
 LOG = "solidProbes/solidProbes.dat"
 
@@ -164,7 +160,8 @@ def main():
         if len(lv) < 3:
             continue
         vs = [r["vm"] for _, r in lv]
-        v0, p = richardson([h for h, _ in lv], vs)
+        c = convergence.threeLevel([h for h, _ in lv], vs)
+        v0, p = c.extrapolated, c.p
         ref = lv[-1][1]["ref"]
         print("| %s | %s | %s | %s | %s | %s | %s |"
               % (k, ", ".join("%g" % (h*1e6) for h, _ in lv),

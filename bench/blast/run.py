@@ -45,7 +45,8 @@ except ImportError:
     sys.exit("bench/blast/run.py: error: the project's Python package neuronFsi "
              "is not found: source the project's etc/bashrc first")
 script.guard()  # an input's error: one line, exit 1 (adv33)
-from neuronFsi import bench, logs, msh, planeWave, postProcessing, scratch
+from neuronFsi import bench, convergence, logs, msh, planeWave, \
+    postProcessing, scratch
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", ".."))
@@ -292,42 +293,20 @@ def successive(good):
     out = []
     for k, lab in QUANTITIES:
         ch = [100*(b[k]/a[k] - 1) for a, b in zip(good, good[1:])]
-        R = richardson(good, k) if len(good) >= 3 else None
-        out.append((lab, ch, R["p"] if R and R["monotone"] else None))
+        R = richardson(good, k)
+        out.append((lab, ch, R.p if R else None))
     return out
 
 
 def richardson(levels, key):
-    """Observed order, extrapolated value and fine-grid error bar of a
-    quantity from the three finest levels (Celik et al. 2008, J. Fluids
-    Eng. 130, 078001: the GCI procedure for non-constant refinement
-    ratios; h = the size factor). Returns a dict: p (order), ext (the
-    extrapolated value), gci (1.25 |e21| / (r21^p - 1), relative to the
-    finest value), monotone (False: the changes alternate in sign or do
-    not shrink; then no order is claimed and the error bar is the largest
-    change, 3 times as a factor of safety)."""
-    f1, f2, f3 = sorted(levels, key=lambda r: float(r["factor"]))[:3]
-    h1, h2, h3 = (float(r["factor"]) for r in (f1, f2, f3))
-    y1, y2, y3 = f1[key], f2[key], f3[key]
-    r21, r32 = h2/h1, h3/h2
-    e21, e32 = y2 - y1, y3 - y2
-    out = dict(fine=f1["factor"], values=(y1, y2, y3))
-    if e21 == 0 or e32 == 0 or e21/e32 < 0 or abs(e21) >= abs(e32):
-        out.update(p=None, ext=None, monotone=False,
-                   gci=3*max(abs(e21), abs(e32))/abs(y1))
-        return out
-    sgn = 1.0
-    p = math.log(abs(e32/e21))/math.log(r21)
-    for _ in range(100):
-        q = math.log((r21**p - sgn)/(r32**p - sgn))
-        pn = abs(math.log(abs(e32/e21)) + q)/math.log(r21)
-        if abs(pn - p) < 1e-10:
-            break
-        p = pn
-    ext = (r21**p*y1 - y2)/(r21**p - 1)
-    out.update(p=p, ext=ext, monotone=True,
-               gci=1.25*abs(e21/y1)/(r21**p - 1))
-    return out
+    """neuronFsi.convergence.threeLevel of the quantity key over the levels
+    (h = their size factor); None where it has no verdict (fewer than three
+    levels, a value not finite)"""
+    try:
+        return convergence.threeLevel([float(r["factor"]) for r in levels],
+                                      [r[key] for r in levels])
+    except ValueError:
+        return None
 
 
 def report(rows, size, mode, start, png, commit, dirty, end,
@@ -444,15 +423,19 @@ def report(rows, size, mode, start, png, commit, dirty, end,
             if k not in CONVERGING:
                 continue
             R = richardson(good, k)
-            vals = " / ".join(f"{v:.4g}" for v in reversed(R["values"]))
-            if R["monotone"]:
-                cells = " | ".join(f"{100*(r[k]/R['ext'] - 1):+.2f}"
+            if R is None:
+                w(f"| {lab} | - | none (fewer than three finite values) | - "
+                  "| - | " + " | ".join("-" for _ in good) + " |")
+                continue
+            vals = " / ".join(f"{v:.4g}" for v in reversed(R.values))
+            if R.kind == "monotone":
+                cells = " | ".join(f"{100*(r[k]/R.extrapolated - 1):+.2f}"
                                    for r in good)
-                w(f"| {lab} | {vals} | {R['p']:.2f} | {R['ext']:.4g} | "
-                  f"{100*R['gci']:.2f} | {cells} |")
+                w(f"| {lab} | {vals} | {R.p:.2f} | {R.extrapolated:.4g} | "
+                  f"{100*R.gci:.2f} | {cells} |")
             else:
-                w(f"| {lab} | {vals} | none (not monotone) | - | "
-                  f"{100*R['gci']:.2f} | " + " | ".join("-" for _ in good)
+                w(f"| {lab} | {vals} | none ({R.kind}) | - | "
+                  f"{100*R.gci:.2f} | " + " | ".join("-" for _ in good)
                   + " |")
         w("")
     w("The probe is a point (solid::PointProbe: the element containing it,"

@@ -12,17 +12,13 @@ reference point) and run the 1-ns peaks of von Mises [Pa] and of the
 longitudinal strain, the scene's and their errors against the reference
 (solidMeasures.dat); then, per probe, from the three finest runs, the
 observed order p and the Richardson limit of the scene's von Mises 1-ns
-peak, v = v0 + C H^p (bench/blast/transparentLadder.py's richardson()),
+peak, v = v0 + C H^p (neuronFsi.convergence.threeLevel: Celik et al. 2008),
 and that limit's error against the reference.
 """
 import os
 import sys
 
-here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, here)
-from transparentLadder import richardson   # noqa: E402
-
-from neuronFsi import planeWave, postProcessing   # noqa: E402
+from neuronFsi import convergence, planeWave, postProcessing
 
 
 def run(arg, layered):
@@ -74,8 +70,9 @@ def main():
         lv = [(h, out[n]) for h, out in runs if n in out][-3:]
         if len(lv) < 3:
             continue
-        v0, p = richardson([h for h, _ in lv],
-                           [r["vonMises1ns"] for _, r in lv])
+        c = convergence.threeLevel([h for h, _ in lv],
+                                   [r["vonMises1ns"] for _, r in lv])
+        v0, p = c.extrapolated, c.p
         ref = lv[-1][1]["vonMises1nsRef"]
         print("| %s | %s | %s | %s | %s |"
               % (n, ", ".join("%g" % (h*1e6) for h, _ in lv),

@@ -33,6 +33,8 @@ import os
 import re
 import sys
 
+from neuronFsi import convergence
+
 
 def rows(path):
     return [l.split() for l in open(path) if not l.startswith("#")]
@@ -136,29 +138,6 @@ def item1Table(args, layered):
         print("| " + " | ".join(item1(a, layered)) + " |")
 
 
-def richardson(h, e):
-    """e0, p of e = e0 + C h^p through three points (None if the
-    differences change sign: no monotone convergence)"""
-    d1, d2 = e[0] - e[1], e[1] - e[2]
-    if d1 == 0 or d2 == 0 or (d1 > 0) != (d2 > 0):
-        return None, None
-
-    def f(p):
-        return (h[0]**p - h[1]**p)/(h[1]**p - h[2]**p) - d1/d2
-    lo, hi = 0.05, 8.0
-    if f(lo)*f(hi) > 0:
-        return None, None
-    for _ in range(200):
-        mid = 0.5*(lo + hi)
-        if f(lo)*f(mid) <= 0:
-            hi = mid
-        else:
-            lo = mid
-    p = 0.5*(lo + hi)
-    c = d2/(h[1]**p - h[2]**p)
-    return e[2] - c*h[2]**p, p
-
-
 def main():
     args = sys.argv[1:]
     layered = "-layered" in args
@@ -182,7 +161,8 @@ def main():
         cells = []
         for k in keys:
             e = [lv[k] for lv in levels[-3:]]
-            e0, p = richardson(h, e)
+            c = convergence.threeLevel(h, e)
+            e0, p = c.extrapolated, c.p
             p0 = (math.log(e[1]/e[2])/math.log(h[1]/h[2])
                   if e[1]*e[2] > 0 else float("nan"))
             cells.append("p %s, e0 %s; p(e0 = 0) %.2f" % (

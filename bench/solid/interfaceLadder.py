@@ -23,7 +23,7 @@ of von Mises and of the longitudinal strain ln|F e_z| (the most negative
                on every mesh).
 
 Then for each of these the observed order p and the Richardson value from
-the three finest runs (bench/blast/transparentLadder.py's richardson():
+the three finest runs (neuronFsi.convergence.threeLevel, Celik et al. 2008:
 none if the changes alternate); if the changes alternate, the
 oscillatory-convergence error bar of Celik et al. 2008 (J. Fluids Eng.
 130:078001) / Roache: half the range of the three finest runs, as a
@@ -35,7 +35,7 @@ import sys
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, "..", "blast"))
 import ballLadder   # noqa: E402
-from transparentLadder import richardson   # noqa: E402
+from neuronFsi import convergence   # noqa: E402
 
 
 def measures(out):
@@ -105,10 +105,11 @@ def main():
     print("|---|---|---|---:|---:|---:|---:|")
     for (k, q), lv in series.items():
         l3 = lv[-3:]
-        v0, p = richardson([x[0] for x in l3], [x[1] for x in l3])
+        c = convergence.threeLevel([x[0] for x in l3], [x[1] for x in l3])
+        v0, p = c.extrapolated, c.p
         ref = l3[-1][2]
         vals = [x[1] for x in l3]
-        bar = 100*0.5*(max(vals) - min(vals))/abs(ref)
+        bar = 100*c.halfRange/abs(ref)
         print("| %s | %s | %s | %s | %s | %s | %.2f %% |"
               % (k, "von Mises" if q == "vm" else "strain",
                  " / ".join("%+.2f %%" % err(x[1], x[2]) for x in lv),

@@ -37,7 +37,6 @@ Writes docs/benchmarks/solidLayerContact.md (or into --out with --quick).
 """
 import datetime
 import json
-import math
 import os
 import re
 import subprocess
@@ -55,7 +54,7 @@ except ImportError:
     sys.exit("bench/solid/layer/run.py: error: the project's Python package neuronFsi "
              "is not found: source the project's etc/bashrc first")
 script.guard()  # an input's error: one line, exit 1 (adv33)
-from neuronFsi import bench  # noqa: E402
+from neuronFsi import bench, convergence  # noqa: E402
 
 LIB = os.path.join(ROOT, "platforms", "linux64GccDPInt32Opt", "lib")
 PYTHON = "/usr/bin/python3"
@@ -249,12 +248,12 @@ def fenicsLadder(out, levels, K, depths=DEPTHS):
 
 def richardson(f0, f1, f2):
     """Observed order p (refinement 2) and the extrapolated value from the
-    last three of a ladder; p nan when the changes do not shrink."""
-    d1, d2 = f1 - f0, f2 - f1
-    if d1 == 0 or d2/d1 <= 0 or abs(d2) >= abs(d1):
+    last three of a ladder (neuronFsi.convergence.threeLevel, h = 4, 2, 1);
+    p nan and the finest value when the changes are not monotone."""
+    c = convergence.threeLevel((4, 2, 1), (f0, f1, f2))
+    if c.kind != "monotone":
         return float("nan"), f2
-    p = math.log2(d1/d2)
-    return p, f2 + d2/(2**p - 1)
+    return c.p, c.extrapolated
 
 
 def pct(a, b):
