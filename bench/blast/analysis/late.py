@@ -8,6 +8,9 @@ usage: late.py CASE"""
 import sys
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (adv53 u12)
+script.arguments(1, "CASE")
 from neuronFsi.postProcessing import series
 
 case = sys.argv[1]
