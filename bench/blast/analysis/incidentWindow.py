@@ -35,6 +35,7 @@ import sys
 import numpy as np
 
 from neuronFsi import planeWave as pw
+from neuronFsi import resultDigest
 from neuronFsi.postProcessing import ColumnFileError
 
 
@@ -73,7 +74,13 @@ def main():
     ap.add_argument("--level", type=pressure, default=75e6)
     ap.add_argument("--foot", type=pressure, default=55e6)
     ap.add_argument("--series", type=nanoseconds, nargs=3, default=None)
+    ap.add_argument("--accept-hand-made", action="store_true",
+                    help="measure a reference.dat and probe logs that do "
+                    "not carry their run's digests or differ from them "
+                    "(made or edited by hand): refused by default")
     a = ap.parse_args()
+    # the reference and the logs as their runs wrote them (adv52 p06b)
+    resultDigest.measuring("--accept-hand-made", a.accept_hand_made)
     if a.series and not (a.series[1] >= a.series[0] and a.series[2] > 0):
         ap.error("--series T0 T1 DT: T1 must not be before T0 and DT must "
                  "be positive")
@@ -104,7 +111,8 @@ def main():
         ref = pw.readReference(refFile)
         amplitude, duration = pw.pulseShape(pw.appliedPressure(a.case))
         probes = list(pw.caseProbes(a.case))
-    except (pw.PlaneWaveError, ColumnFileError, OSError) as e:
+    except (pw.PlaneWaveError, ColumnFileError, resultDigest.DigestError,
+            OSError) as e:
         print("incidentWindow.py: %s" % e, file=sys.stderr)
         return 1
     c0 = 1450.0     # [m/s] planeWave.measures' default, as planeWave uses

@@ -40,6 +40,52 @@ def notARegularFile(path):
     return "not a regular file"
 
 
+# The sane sizes of the files a user gives, by kind (those of
+# src/foamTools/fileKind.H): a dictionary or case file, a column table (a
+# probe, force or peaks log, a reference), a gmsh mesh
+DICTIONARY_LIMIT = 64 << 20
+TABLE_LIMIT = 4 << 30
+MESH_LIMIT = 16 << 30
+
+
+def _sizeText(n):
+    """A size in bytes as a short text: "3.2 GiB (3435973837 bytes)"."""
+    v, u = float(n), 0
+    units = ["bytes", "KiB", "MiB", "GiB", "TiB"]
+    while v >= 1024 and u < 4:
+        v /= 1024
+        u += 1
+    return "%d bytes" % n if u == 0 else "%.3g %s (%d bytes)" % (v, units[u], n)
+
+
+def readRefusal(path, maxBytes, kind):
+    """Why path may not be read as a file of its kind ("" if it may, or if
+    it is not there: the reader's own message then), naming it: not a
+    regular file ("'<path>' is a FIFO (named pipe), not a file: reading it
+    would wait without end for a writer"; a device such as /dev/zero gives
+    bytes without end), or larger than maxBytes (0: no limit), the sane
+    size of its kind (DICTIONARY_LIMIT, TABLE_LIMIT, MESH_LIMIT). The one
+    look of the Python package before a reader opens a user's file (issue
+    19, adv52 p10); the C++ side's is fileKind::readRefusal
+    (src/foamTools/fileKind.H), with the same words."""
+    kind_ = notARegularFile(path)
+    if kind_:
+        why = "" if kind_ == "a directory" else \
+            ": reading it would not end (a device such as /dev/zero gives " \
+            "bytes without end) or would wait for input" \
+            if kind_ == "a device" else \
+            ": reading it would wait without end for a writer"
+        return "'%s' is %s, not a file%s" % (path, kind_, why)
+    try:
+        size = os.stat(path).st_size
+    except (OSError, ValueError):
+        return ""
+    if maxBytes and size > maxBytes:
+        return "'%s' is %s, more than the %s a %s may be: is it the right " \
+            "file?" % (path, _sizeText(size), _sizeText(maxBytes), kind)
+    return ""
+
+
 def fileProblem(path):
     """Why a path the user gives as a file cannot be read as one, '' if
     it can: "no such file", "a symbolic link to <target>, which is not
