@@ -203,6 +203,48 @@ class OutputFolder(TempDirTestCase):
         self.assertIn("script a.sh", r.stderr)
         self.assertTrue(os.path.isfile(os.path.join(d, "r.txt")))
 
+    def testRecordedOutputsOnly(self):
+        """adv53 u10: a folder whose marker records what the earlier run
+        left is emptied only if it holds those files unchanged; a user's
+        file named like a case's (logbook.txt, README.md, a figure, a file
+        in postProcessing/), or a recorded file changed, is refused and
+        kept. A shell script records at its end (its EXIT trap)."""
+        d = os.path.join(self.tmp, "rec")
+        scratch.outputFolder("r.sh", d, ("case/@case",))
+        self.write("rec/case/log.run", "run\n")
+        self.write("rec/case/postProcessing/probes/0/p", "1 2\n")
+        scratch.recordOutputs(d)
+        for name in ("case/logbook.txt", "case/README.md",
+                     "case/myFigure.png", "case/postProcessing/mine.txt"):
+            self.write("rec/" + name, "mine\n")
+            with self.assertRaisesRegex(scratch.ScratchError,
+                                        "no earlier run of r.sh made there "
+                                        r"\(%s\)" % name.replace(".", r"\.")):
+                scratch.outputFolder("r.sh", d, ("case/@case",))
+            os.remove(os.path.join(d, name))
+        self.write("rec/case/log.run", "edited by the user\n")
+        with self.assertRaisesRegex(scratch.ScratchError, r"case/log\.run"):
+            scratch.outputFolder("r.sh", d, ("case/@case",))
+        os.remove(os.path.join(d, "case/log.run"))
+        scratch.outputFolder("r.sh", d, ("case/@case",))
+        self.assertEqual(sorted(os.listdir(d)),
+                         sorted([scratch.MARKER, scratch.LOCK]))
+        root = os.path.abspath(os.path.join(os.path.dirname(__file__),
+                                            "..", ".."))
+        sh = os.path.join(self.tmp, "shrec")
+        r = subprocess.run(
+            ["bash", "-c", '. "$0/etc/scratchFolder"; scratchFolder s.sh '
+             '"$1" @case; echo 1 > "$1/log.run"', root, sh],
+            capture_output=True, text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.write("shrec/logbook.txt", "mine\n")
+        r = subprocess.run(
+            ["bash", "-c", '. "$0/etc/scratchFolder"; scratchFolder s.sh '
+             '"$1" @case', root, sh], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertIn("(logbook.txt)", r.stderr)
+        self.assertTrue(os.path.isfile(os.path.join(sh, "log.run")))
+
     def testFileOrLinkRefused(self):
         self.write("f", "mine\n")
         with self.assertRaisesRegex(scratch.ScratchError, "is not a folder"):

@@ -71,6 +71,78 @@ def _foreign(path, names, entries):
     return foreign
 
 
+def _marker(path):
+    """(script, record) of path's marker: the script's name (None without
+    a marker) and {relative path: (size, mtime_ns)} of the files the
+    script's run left there (recordOutputs; None when the marker holds no
+    record: a run killed before its end, or of an earlier version)."""
+    try:
+        with open(os.path.join(path, MARKER), errors="replace") as f:
+            lines = f.read().split("\n")
+    except OSError:
+        return None, None
+    record = None
+    if len(lines) > 1 and lines[1] == "record":
+        record = {}
+        for line in lines[2:]:
+            parts = line.split(" ", 3)
+            if len(parts) == 4 and parts[0] == "file":
+                try:
+                    record[parts[3]] = (int(parts[1]), int(parts[2]))
+                except ValueError:
+                    pass
+    return lines[0].strip(), record
+
+
+def _unrecorded(path, record):
+    """The files under path (its marker and lock but) that are not in
+    record as they are now (another size or time: changed since), and
+    links: what the earlier run did not leave there."""
+    foreign = []
+    for d, dirs, files in os.walk(path):
+        for n in files + [x for x in dirs
+                          if os.path.islink(os.path.join(d, x))]:
+            full = os.path.join(d, n)
+            rel = os.path.relpath(full, path)
+            if rel in (MARKER, LOCK):
+                continue
+            try:
+                st = os.lstat(full)
+            except OSError:
+                continue
+            if record.get(rel) != (st.st_size, st.st_mtime_ns):
+                foreign.append(rel)
+    return sorted(foreign)
+
+
+def recordOutputs(path):
+    """Record in path's marker every file the script's run left under it
+    (relative path, size, modification time in ns): the next run of the
+    script empties the folder only if it holds these files unchanged and
+    nothing else (adv53 u10). Called at the script's end (outputFolder
+    registers it with atexit; etc/scratchFolder's EXIT trap)."""
+    marker = os.path.join(path, MARKER)
+    owner, _ = _marker(path)
+    if owner is None:
+        return
+    lines = [owner, "record"]
+    for d, dirs, files in os.walk(path):
+        for n in sorted(files):
+            full = os.path.join(d, n)
+            rel = os.path.relpath(full, path)
+            if rel in (MARKER, LOCK) or "\n" in rel:
+                continue
+            try:
+                st = os.lstat(full)
+            except OSError:
+                continue
+            lines.append("file %d %d %s" % (st.st_size, st.st_mtime_ns, rel))
+    tmp = "%s.tmp%d" % (marker, os.getpid())
+    with open(tmp, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    os.replace(tmp, marker)
+
+
 def checkOutputFolder(script, path, entries=()):
     """outputFolder's judgement without removing anything: ScratchError if
     path may not be used; True if it holds an earlier output of script
@@ -85,12 +157,13 @@ def checkOutputFolder(script, path, entries=()):
     names = sorted(n for n in os.listdir(path) if n != LOCK)
     if not names:
         return False
-    try:
-        with open(os.path.join(path, MARKER)) as f:
-            owner = f.read().strip()
-    except OSError:
-        owner = None
-    if owner == script:
+    owner, record = _marker(path)
+    if owner == script and record is not None:
+        # what the earlier run left, file by file (adv53 u10: a user's
+        # logbook.txt, README.md, myFigure.png, postProcessing/
+        # myAnalysis.txt matched the case's name patterns and were removed)
+        foreign = _unrecorded(path, record)
+    elif owner == script:
         foreign = _foreign(path, names, entries) if entries else []
     else:
         foreign = names
@@ -219,6 +292,11 @@ def outputFolder(script, path, entries=()):
     os.makedirs(path, exist_ok=True)
     with open(os.path.join(path, MARKER), "w") as f:
         f.write(script + "\n")
+    # what the run leaves, recorded at its end (a shell script's by its
+    # EXIT trap, etc/scratchFolder)
+    if not os.environ.get(LOCKED_ENV):
+        import atexit
+        atexit.register(recordOutputs, path)
     return path
 
 
@@ -247,6 +325,14 @@ def main(argv=None):
     import argparse
     import sys
     args = sys.argv[1:] if argv is None else list(argv)
+    if args[:1] == ["--record"]:
+        for d in args[1:]:
+            try:
+                recordOutputs(d)
+            except OSError as e:
+                sys.exit("scratch --record: %s: %s" % (e.filename or d,
+                                                       e.strerror))
+        return 0
     if args[:1] == ["--outputFolder"]:
         if len(args) < 3:
             sys.exit("usage: python3 -m neuronFsi.scratch --outputFolder "
