@@ -35,7 +35,7 @@ import sys
 import numpy as np
 
 from neuronFsi import planeWave as pw
-from neuronFsi import resultDigest
+from neuronFsi import options, resultDigest
 from neuronFsi.postProcessing import ColumnFileError
 
 
@@ -78,7 +78,10 @@ def main():
                     help="measure a reference.dat and probe logs that do "
                     "not carry their run's digests or differ from them "
                     "(made or edited by hand): refused by default")
-    a = ap.parse_args()
+    # negative values as values, an option given twice refused (adv53
+    # u14: "--series 0 2 -1e-3" was "expected 3 arguments", a second
+    # --series replaced the first without a word)
+    a = options.parse(ap)
     # the reference and the logs as their runs wrote them (adv52 p06b)
     resultDigest.measuring("--accept-hand-made", a.accept_hand_made)
     if a.series and not (a.series[1] >= a.series[0] and a.series[2] > 0):

@@ -158,12 +158,18 @@ def _numbers(s):
 
 def joinNegativeValues(parser, argv):
     """argv with each option that takes one value and is followed by a
-    negative number joined to it (-opt=-1e-9)."""
+    negative number joined to it (-opt=-1e-9); the negative numbers among
+    the values of an option of several values given a leading space."""
     takesValue = set()
+    takesValues = {}
     for action in parser._actions:
         if action.option_strings and action.nargs is None \
                 and action.const is None:
             takesValue.update(action.option_strings)
+        elif action.option_strings and isinstance(action.nargs, int) \
+                and action.nargs > 1:
+            for o in action.option_strings:
+                takesValues[o] = action.nargs
     out = []
     i = 0
     while i < len(argv):
@@ -172,6 +178,16 @@ def joinNegativeValues(parser, argv):
                 and argv[i + 1].startswith("-") and _numbers(argv[i + 1]):
             out.append(a + "=" + argv[i + 1])
             i += 2
+        elif a in takesValues:
+            # an option of N values (incidentWindow.py --series T0 T1 DT):
+            # a negative number among them is given a leading space, which
+            # argparse takes as a value and float() reads (adv53 u14:
+            # "--series 0 2 -1e-3" was "expected 3 arguments")
+            out.append(a)
+            for v in argv[i + 1:i + 1 + takesValues[a]]:
+                out.append(" " + v if v.startswith("-") and _numbers(v)
+                           else v)
+            i += 1 + takesValues[a]
         else:
             out.append(a)
             i += 1
