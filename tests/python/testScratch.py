@@ -67,6 +67,7 @@ class OutputFolder(TempDirTestCase):
         self.assertEqual(sorted(os.listdir(d)), sorted([scratch.MARKER, scratch.LOCK]))
         self.write("out/case/x", "1\n")
         self.write("out/run.log", "2\n")
+        scratch.recordOutputs(d)        # the run's end
         scratch.outputFolder("s.sh", d, ("case", "*.log"))
         self.assertEqual(sorted(os.listdir(d)), sorted([scratch.MARKER, scratch.LOCK]))
         os.makedirs(os.path.join(self.tmp, "empty"))
@@ -100,14 +101,21 @@ class OutputFolder(TempDirTestCase):
         only if it holds what a run of a case leaves ("@case"), a case
         inside the folder likewise ("NAME/@case"): a user's file added
         there is refused and kept"""
+        # the markers of an earlier version, without the record of what the
+        # run left (judged by the entries' name patterns)
+        def legacy(folder, script):
+            with open(os.path.join(folder, scratch.MARKER), "w") as f:
+                f.write(script + "\n")
         d = os.path.join(self.tmp, "case")
         scratch.outputFolder("run.py", d, ("@case",))
+        legacy(d, "run.py")
         for f in ("system/controlDict", "0/p", "1e-09/p", "log.cellBlastFoam",
                   "postProcessing/probes/0/p", "solid/solid.h5",
                   ".allrunOptions"):
             self.write("case/" + f, "1\n")
         scratch.outputFolder("run.py", d, ("@case",))
         self.assertEqual(sorted(os.listdir(d)), sorted([scratch.MARKER, scratch.LOCK]))
+        legacy(d, "run.py")
         self.write("case/system/controlDict", "1\n")
         self.write("case/analysis.txt", "mine\n")
         with self.assertRaisesRegex(scratch.ScratchError,
@@ -116,9 +124,11 @@ class OutputFolder(TempDirTestCase):
         self.assertTrue(os.path.isfile(os.path.join(d, "analysis.txt")))
         o = os.path.join(self.tmp, "out")
         scratch.outputFolder("runPreview.sh", o, ("preview/@case",))
+        legacy(o, "runPreview.sh")
         self.write("out/preview/system/controlDict", "1\n")
         self.write("out/preview/log.Allrun", "1\n")
         scratch.outputFolder("runPreview.sh", o, ("preview/@case",))
+        legacy(o, "runPreview.sh")
         self.write("out/preview/system/controlDict", "1\n")
         self.write("out/preview/mine.txt", "mine\n")
         with self.assertRaisesRegex(scratch.ScratchError,
@@ -140,6 +150,7 @@ class OutputFolder(TempDirTestCase):
             f.write("pid %d\nhost %s\nexecutable sleep\nstarted now\n"
                     "case %s\n" % (p.pid, socket.gethostname(),
                                    os.path.realpath(d)))
+        scratch.recordOutputs(d)        # the script ended, its solver runs
         with self.assertRaisesRegex(scratch.ScratchError,
                                     "holds a run going on .*in use by "
                                     "sleep"):
@@ -229,6 +240,14 @@ class OutputFolder(TempDirTestCase):
         scratch.outputFolder("r.sh", d, ("case/@case",))
         self.assertEqual(sorted(os.listdir(d)),
                          sorted([scratch.MARKER, scratch.LOCK]))
+        # adv53 l33: a run killed before its end left an empty record: the
+        # folder holding its files is refused, not judged by name
+        k = os.path.join(self.tmp, "killed")
+        scratch.outputFolder("r.sh", k, ("@case",))
+        self.write("killed/log.run", "run\n")
+        with self.assertRaisesRegex(scratch.ScratchError, r"\(log\.run\)"):
+            scratch.outputFolder("r.sh", k, ("@case",))
+        self.assertTrue(os.path.isfile(os.path.join(k, "log.run")))
         root = os.path.abspath(os.path.join(os.path.dirname(__file__),
                                             "..", ".."))
         sh = os.path.join(self.tmp, "shrec")

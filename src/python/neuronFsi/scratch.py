@@ -74,8 +74,8 @@ def _foreign(path, names, entries):
 def _marker(path):
     """(script, record) of path's marker: the script's name (None without
     a marker) and {relative path: (size, mtime_ns)} of the files the
-    script's run left there (recordOutputs; None when the marker holds no
-    record: a run killed before its end, or of an earlier version)."""
+    script's run left there (recordOutputs; empty for a run killed before
+    its end; None for a marker of an earlier version, without a record)."""
     try:
         with open(os.path.join(path, MARKER), errors="replace") as f:
             lines = f.read().split("\n")
@@ -290,8 +290,12 @@ def outputFolder(script, path, entries=()):
             else:
                 os.remove(full)
     os.makedirs(path, exist_ok=True)
+    # the record starts empty: a run killed before its end (no record of
+    # its own) vouches for nothing, and its folder is refused rather than
+    # judged by name patterns (adv53 l33: a killed runPreview.sh's folder
+    # with a user's logbook.txt added was emptied)
     with open(os.path.join(path, MARKER), "w") as f:
-        f.write(script + "\n")
+        f.write(script + "\nrecord\n")
     # what the run leaves, recorded at its end (a shell script's by its
     # EXIT trap, etc/scratchFolder)
     if not os.environ.get(LOCKED_ENV):
