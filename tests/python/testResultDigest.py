@@ -42,6 +42,18 @@ class Digest(TempDirTestCase):
         resultDigest.measuring("--accept-hand-made", True)
         self.assertIsNone(resultDigest.check(p))
 
+    def testKilledRunsSidecarCutInALine(self):
+        """A run killed while its sidecar's last line was written (adv53
+        l32's killed indentation): that line is not a damage; the rows it
+        would cover are the uncovered tail."""
+        p = self.write("force.dat", "# t F\n1 2\n3 4\n")
+        resultDigest.writeSidecar(p)
+        with open(p + resultDigest.SUFFIX) as f:
+            text = f.read()
+        with open(p + resultDigest.SUFFIX, "w") as f:
+            f.write(text[:-7])
+        self.assertEqual(resultDigest.check(p), 3)
+
     def testHandMadeFileRefusedUnlessAccepted(self):
         p = self.write("reference.dat", "# t p\n0 1\n")
         with self.assertRaisesRegex(resultDigest.DigestError,

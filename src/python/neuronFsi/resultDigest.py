@@ -98,16 +98,19 @@ def _sidecarRecords(path):
         raise DigestError(refusal)
     records = []
     with open(side, errors="replace") as f:
-        for k, line in enumerate(f, 1):
-            parts = line.split()
-            try:
-                records.append((int(parts[0]), parts[1], side, k))
-                if len(parts) != 2 or len(parts[1]) != 16:
-                    raise ValueError
-            except (ValueError, IndexError):
-                raise DigestError("%s, line %d: not a line '<bytes> <digest>' "
-                                  "of the digests of %s (damaged or edited)"
-                                  % (side, k, path))
+        lines = f.read().split("\n")
+    # the last line without its end: cut by a kill while the sidecar was
+    # written (its rows then are the uncovered tail), not a damage
+    for k, line in enumerate(lines[:-1], 1):
+        parts = line.split()
+        try:
+            records.append((int(parts[0]), parts[1], side, k))
+            if len(parts) != 2 or len(parts[1]) != 16:
+                raise ValueError
+        except (ValueError, IndexError):
+            raise DigestError("%s, line %d: not a line '<bytes> <digest>' "
+                              "of the digests of %s (damaged or edited)"
+                              % (side, k, path))
     return records
 
 

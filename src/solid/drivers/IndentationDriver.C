@@ -418,7 +418,11 @@ void solid::IndentationDriver::openDigests()
                 std::istringstream ls(line);
                 std::uintmax_t n = 0;
                 std::string h;
-                if (!(ls >> n >> h) || n > lineBytes_[k]) break;
+                // a line cut by a kill (its digest short) ends the part
+                if (!(ls >> n >> h) || h.size() != 16 || n > lineBytes_[k])
+                {
+                    break;
+                }
                 kept.push_back(line);
             }
             if
