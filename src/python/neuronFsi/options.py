@@ -44,8 +44,8 @@ def notARegularFile(path):
 # src/foamTools/fileKind.H): a dictionary or case file, a column table (a
 # probe, force or peaks log, a reference), a gmsh mesh
 DICTIONARY_LIMIT = 64 << 20
-TABLE_LIMIT = 4 << 30
-MESH_LIMIT = 16 << 30
+TABLE_LIMIT = 1 << 30
+MESH_LIMIT = 256 << 20
 
 
 def _sizeText(n):
