@@ -116,7 +116,7 @@ def main():
         probes = list(pw.caseProbes(a.case))
     except (pw.PlaneWaveError, ColumnFileError, resultDigest.DigestError,
             OSError) as e:
-        print("incidentWindow.py: %s" % e, file=sys.stderr)
+        print("incidentWindow.py: error: %s" % e, file=sys.stderr)
         return 1
     c0 = 1450.0     # [m/s] planeWave.measures' default, as planeWave uses
     print("# probe  z[um]  window[ns]  peakIncident scene/ref [MPa] (err %%) "

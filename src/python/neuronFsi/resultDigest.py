@@ -69,8 +69,9 @@ def add(h, data):
 
 
 def hexText(h):
-    """The digest as fileDigest::hex writes it: 16 lower-case hex digits."""
-    return "%016x" % h
+    """The digest as fileDigest::hex writes it: lower-case hex digits,
+    without leading zeros (compared as numbers: check)."""
+    return "%x" % h
 
 
 def writeSidecar(path):
@@ -104,8 +105,8 @@ def _sidecarRecords(path):
     for k, line in enumerate(lines[:-1], 1):
         parts = line.split()
         try:
-            records.append((int(parts[0]), parts[1], side, k))
-            if len(parts) != 2 or len(parts[1]) != 16:
+            records.append((int(parts[0]), int(parts[1], 16), side, k))
+            if len(parts) != 2 or len(parts[1]) > 16:
                 raise ValueError
         except (ValueError, IndexError):
             raise DigestError("%s, line %d: not a line '<bytes> <digest>' "
@@ -149,7 +150,8 @@ def _markerRecords(path):
                     if len(parts) == 4 and parts[0] == "log" \
                             and parts[3] == rel:
                         try:
-                            records.append((int(parts[2]), parts[1], m, k))
+                            records.append((int(parts[2]),
+                                            int(parts[1], 16), m, k))
                         except ValueError:
                             pass
         except OSError:
@@ -199,7 +201,7 @@ def check(path, handMade=None, option=None):
                 "measure it as it is" % (path, _lineOf(data, len(data)),
                                          len(data), n, source, k, option))
         h = add(h, data[prev:n])
-        if hexText(h) != digest:
+        if h != digest:
             raise DigestError(
                 "%s, line %d: the file is not as the run wrote it (its bytes "
                 "%d to %d, lines %d to %d, differ from the digest recorded in "

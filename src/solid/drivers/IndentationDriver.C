@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -411,15 +412,24 @@ void solid::IndentationDriver::openDigests()
             // the running digest from the checkpoint's
             lineDigest_[k] = logDigest_[k];
             lineBytes_[k] = logDigested_[k];
-            std::ifstream is(side);
+            std::ifstream is(side, std::ios::binary);
+            std::string text
+            (
+                (std::istreambuf_iterator<char>(is)),
+                std::istreambuf_iterator<char>()
+            );
+            // whole lines only: one cut by a kill (no end of line) ends
+            // the part
+            text.erase(text.rfind('\n') == std::string::npos
+                     ? 0 : text.rfind('\n') + 1);
+            std::istringstream lines(text);
             std::string line;
-            while (std::getline(is, line))
+            while (std::getline(lines, line))
             {
                 std::istringstream ls(line);
                 std::uintmax_t n = 0;
                 std::string h;
-                // a line cut by a kill (its digest short) ends the part
-                if (!(ls >> n >> h) || h.size() != 16 || n > lineBytes_[k])
+                if (!(ls >> n >> h) || n > lineBytes_[k])
                 {
                     break;
                 }
