@@ -105,7 +105,7 @@ def main():
         return 1
     refFile = os.path.join(a.case, "postProcessing", "planeWave", "0",
                            "reference.dat")
-    if not os.path.isfile(refFile):
+    if not os.path.lexists(refFile):
         print("incidentWindow.py: %s: no planeWave reference (%s): write it "
               "with planeWave -case %s" % (a.case, refFile, a.case),
               file=sys.stderr)

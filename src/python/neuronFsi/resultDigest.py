@@ -174,6 +174,11 @@ def check(path, handMade=None, option=None):
         handMade = _handMade
     if option is None:
         option = _option
+    # no regular file, or beyond a table's size: named first (adv53 l12
+    # (f): a FIFO as reference.dat)
+    refusal = options.readRefusal(path, options.TABLE_LIMIT, "result file")
+    if refusal:
+        raise DigestError(refusal)
     if handMade:
         return None
     records = _sidecarRecords(path)
