@@ -946,6 +946,22 @@ TEST(keywordCheck, controlDictKeywords)
             << "no \"" << part << "\" in: " << typo;
     }
 
+    // an #include inside a sub-dictionary gives that scope's entries, not
+    // the top level's (adv53 u04 (b): a function object's probeLocations
+    // from a user's file was "unknown entry 'probeLocations' in the top
+    // level")
+    tc.writeFile("system/controlDict.allrun", "maxCo 0.4;\n");
+    tc.writeFile("system/probesUser", "probeLocations ((1e-7 1e-5 0));\n");
+    std::string nested(good);
+    nested.replace
+    (
+        nested.find("p { type probes; }"), 18,
+        "p { type probes;\n    #include \"probesUser\"\n}"
+    );
+    tc.writeFile("system/controlDict", nested);
+    EXPECT_EQ(errorOf([&]{ foamTools::checkControlDict(args, ours); }), "");
+    tc.writeFile("system/controlDict", good);
+
     // a keyword twice in the included file of an Allrun option
     tc.writeFile("system/controlDict.allrun", "maxCo 0.4;\nmaxCo 0.3;\n");
     EXPECT_NE

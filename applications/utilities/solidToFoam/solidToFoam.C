@@ -482,8 +482,11 @@ int main(int argc, char *argv[])
         );
         mesh.setInstance(runTime.constant());
         mesh.removeFiles();
-        mesh.write();
-        // its marker: a later conversion may replace this mesh (adv52 p20)
+        // its marker first: a later conversion may replace this mesh (adv52
+        // p20), also one cut by a failed write (adv53's p08 on the merge:
+        // a mesh cut by ulimit -f, its marker not yet written, was then
+        // refused as a user's)
+        mkDir(runTime.path()/"constant"/region/"polyMesh");
         OFstream marker
         (
             runTime.path()/"constant"/region/"polyMesh"
@@ -496,6 +499,7 @@ int main(int argc, char *argv[])
             FatalErrorInFunction
                 << "cannot write " << marker.name() << exit(FatalError);
         }
+        mesh.write();
     }
 
     // fvSchemes and fvSolution of the region (needed to construct it, by
