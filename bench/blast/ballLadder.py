@@ -38,6 +38,8 @@ import sys
 
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (adv53 u12)
 from neuronFsi import convergence, planeWave, postProcessing
 
 LOG = "solidProbes/solidProbes.dat"
@@ -63,7 +65,7 @@ def radii(case):
 
 
 def run(arg, reference=None):
-    h, d = arg.split("=", 1)
+    h, d = script.labelled(arg, "H=CASE")
     case = d if os.path.isdir(os.path.join(d, "postProcessing")) \
         else os.path.join(d, "axisymmetricPreview")
     own = os.path.join(case, "postProcessing", "planeWave", "0",

@@ -15,6 +15,9 @@ run of tests/blast/runPreview.sh: its solid probe and pulse)
 """
 import sys
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (adv53 u12)
+script.arguments(1, "CASE [dz]")
 from neuronFsi import layeredColumn as lc
 from neuronFsi import planeWave as pw
 

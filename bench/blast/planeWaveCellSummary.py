@@ -11,6 +11,8 @@ a test (docs/results/blast3D.md, "The von Mises at rest in 3D").
 """
 import argparse
 import re
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (adv53 u12)
 
 ROW = re.compile(r"t +([\d.]+) ns +error rms (\S+) m/s +max (\S+) m/s .* "
                  r"lateral max (\S+) m/s +rms (\S+) m/s +mass-weighted rms "

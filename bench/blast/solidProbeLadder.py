@@ -18,11 +18,13 @@ and that limit's error against the reference.
 import os
 import sys
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (adv53 u12)
 from neuronFsi import convergence, planeWave, postProcessing
 
 
 def run(arg, layered):
-    h, d = arg.split("=", 1)
+    h, d = script.labelled(arg, "H=CASE")
     case = d if os.path.isdir(os.path.join(d, "postProcessing")) \
         else os.path.join(d, "axisymmetricPreview")
     sub = "planeWaveLayered" if layered else "planeWave"

@@ -17,6 +17,8 @@ import os
 import re
 import sys
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (adv53 u12)
 from neuronFsi import planeWave
 
 

@@ -33,6 +33,8 @@ import os
 import re
 import sys
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (adv53 u12)
 from neuronFsi import convergence
 
 
@@ -41,7 +43,7 @@ def rows(path):
 
 
 def level(arg, layered):
-    scale, d = arg.split("=", 1)
+    scale, d = script.labelled(arg, "SCALE=CASE")
     case = os.path.join(d, "axisymmetricPreview")
     sub = "planeWaveLayered" if layered else "planeWave"
     m = {r[0]: r for r in rows(os.path.join(case, "postProcessing", sub, "0",
@@ -71,7 +73,7 @@ COLUMNS = {"arrival": 12, "peak1ns": 13, "peakIncident": 14, "plateau": 15,
 
 def item1(arg, layered):
     """One row of the -item1 table (see the module text)"""
-    label, d = arg.split("=", 1)
+    label, d = script.labelled(arg, "LABEL=CASE")
     case = os.path.join(d, "axisymmetricPreview")
     sub = "planeWaveLayered" if layered else "planeWave"
     m = {r[0]: r for r in rows(os.path.join(case, "postProcessing", sub, "0",

@@ -15,6 +15,8 @@ import sys
 
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (adv53 u12)
 from neuronFsi import planeWave as pw
 
 

@@ -12,7 +12,10 @@
 set -uo pipefail
 [ $# -eq 3 ] || { echo "usage: $0 OLD NEW OUT" >&2; exit 1; }
 old=$(cd "$1" && pwd) new=$(cd "$2" && pwd) out=$3
-mkdir -p "$out" || exit 1
+# OUT new, empty or an earlier output of this script, locked for the run
+# (adv53 u06: `rm -rf "$out/bases"` removed a user's OUT/bases/notes.txt)
+. "$(cd "$(dirname "$0")/../.." && pwd)/etc/scratchFolder"
+scratchFolder corpusCost.sh "$out" times old.log "new.*.log" bases
 timed() { # label log command...: the command under /usr/bin/time
     local label=$1 log=$2; shift 2
     /usr/bin/time -f "$label %e %U %S" -a -o "$out/times" nice -n 10 "$@" \
@@ -24,7 +27,6 @@ echo "corpusCost: start $(date -u +%H:%M:%S) UTC, load $(cut -d' ' -f1-3 /proc/l
   timed old.oneGo "$out/old.log" bash "$old/tests/badInput/runCorpus.sh" ) &
 ( . "$new/etc/bashrc"
   export MAKE_SOLID_RESULTS=$new/build/bin/makeSolidResults
-  rm -rf "$out/bases"
   timed new.prepare "$out/new.prepare.log" \
       bash "$new/tests/badInput/runCorpus.sh" --prepare "$out/bases"
   for k in 1 2 3

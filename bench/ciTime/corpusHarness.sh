@@ -15,7 +15,10 @@
 set -uo pipefail
 [ $# -ge 3 ] || { echo "usage: $0 OLD NEW OUT [EVERY]" >&2; exit 1; }
 old=$(cd "$1" && pwd) new=$(cd "$2" && pwd) out=$3 every=${4:-4}
-rm -rf "$out"; mkdir -p "$out" || exit 1
+# OUT new, empty or an earlier output of this script, locked for the run
+# (adv53 u06: `rm -rf "$out"` removed a user's OUT/notes.txt)
+. "$(cd "$(dirname "$0")/../.." && pwd)/etc/scratchFolder"
+scratchFolder corpusHarness.sh "$out" old new old.log new.log old.time new.time
 for s in old new
 do
     src=${!s} t=$out/$s

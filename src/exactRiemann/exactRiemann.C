@@ -20,11 +20,16 @@ Usage
 
 #include "anyExactRiemannSolver.H"
 #include "exactRiemannInput.H"
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
 #include <fstream>
 #include <iostream>
+#include <set>
+
+#include "fileKind.H"
 
 namespace
 {
@@ -52,6 +57,9 @@ void printWave(const char* side, const riemann::wave& w)
 
 int main(int argc, char* argv[])
 {
+    // a write beyond `ulimit -f` fails (EFBIG, reported below) rather than
+    // ending the process by SIGXFSZ without a word (adv52 p08)
+    std::signal(SIGXFSZ, SIG_IGN);
     if (argc < 2)
     {
         usage(std::cerr);
@@ -66,14 +74,34 @@ int main(int argc, char* argv[])
     try
     {
         riemann::exactRiemannInput::entryTable entries;
+        std::set<std::string> argumentKeys;
         for (int i = 1; i < argc; ++i)
         {
             if (std::strchr(argv[i], '='))
             {
-                riemann::exactRiemannInput::readArgument(argv[i], entries);
+                riemann::exactRiemannInput::readArgument
+                (
+                    argv[i], entries, argumentKeys
+                );
             }
             else if (i == 1)
             {
+                // Not a regular file (a FIFO, /dev/zero: read without
+                // end, adv52 p10) or beyond a case file's size: refused
+                // before it is opened (src/foamTools/fileKind.H)
+                const std::string refusal
+                (
+                    fileKind::readRefusal
+                    (
+                        argv[i], fileKind::dictionaryLimit, "case file"
+                    )
+                );
+                if (!refusal.empty())
+                {
+                    std::cerr << "exactRiemann: error: case file "
+                        << refusal << "\n";
+                    return 1;
+                }
                 std::ifstream file(argv[i]);
                 if (!file)
                 {
@@ -131,6 +159,13 @@ int main(int argc, char* argv[])
     catch (const std::exception& err)
     {
         std::cerr << "exactRiemann: " << err.what() << "\n";
+        return 1;
+    }
+    // the output written whole (a full disk, `ulimit -f`: EFBIG)
+    if (std::fflush(stdout) != 0 || std::ferror(stdout))
+    {
+        std::cerr << "exactRiemann: cannot write the output to the standard"
+            " output: " << std::strerror(errno) << "\n";
         return 1;
     }
     return 0;

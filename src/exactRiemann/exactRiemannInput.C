@@ -91,6 +91,18 @@ void exactRiemannInput::read
     std::string line;
     for (int lineNo = 1; std::getline(is, line); ++lineNo)
     {
+        // A UTF-8 byte-order mark (an editor's) would join the first key
+        // and be taken for an unknown one ("missing entry 'law'", adv52
+        // p27): named
+        if (lineNo == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0)
+        {
+            throw inputError
+            (
+                source + ":1: the file starts with a UTF-8 byte-order mark"
+                " (the bytes EF BB BF): save it as plain text without it"
+                " (e.g. sed -i '1s/^\\xEF\\xBB\\xBF//' " + source + ")"
+            );
+        }
         for (const char* comment : {"//", "#"})
         {
             const auto c = line.find(comment);
@@ -144,6 +156,28 @@ void exactRiemannInput::readArgument
         );
     }
     entries[arg.substr(0, eq)] = arg.substr(eq + 1);
+}
+
+
+void exactRiemannInput::readArgument
+(
+    const std::string& arg,
+    entryTable& entries,
+    std::set<std::string>& given
+)
+{
+    const auto eq = arg.find('=');
+    if (eq != std::string::npos && eq != 0 && eq + 1 != arg.size()
+     && !given.insert(arg.substr(0, eq)).second)
+    {
+        throw inputError
+        (
+            "argument '" + arg + "': the key '" + arg.substr(0, eq)
+          + "' is given twice as an argument (the later would replace the"
+            " earlier without a word): give it once"
+        );
+    }
+    readArgument(arg, entries);
 }
 
 

@@ -10,6 +10,7 @@ Description
 #include "exactRiemannInput.H"
 #include <gtest/gtest.h>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -150,6 +151,52 @@ TEST(exactRiemannInput, argumentsOverrideAndMalformedLinesAreRejected)
             std::string(err.what()).find
             (
                 "twice:2: entry 'rhoL' is given twice (first on line 1)"
+            ),
+            std::string::npos
+        ) << err.what();
+    }
+}
+
+
+// adv52 p10, p27 (issue 19): a key given twice as an argument (the later
+// replaced the earlier without a word) and a byte-order mark at the case
+// file's start (taken into the first key: "missing entry 'law'") are named
+TEST(exactRiemannInput, argumentTwiceAndByteOrderMarkAreNamed)
+{
+    auto entries = exampleEntries();
+    std::set<std::string> given;
+    riemann::exactRiemannInput::readArgument("rhoL=1000", entries, given);
+    // the case file's key replaced by an argument: on purpose, accepted
+    riemann::exactRiemannInput::readArgument("t=2e-5", entries, given);
+    try
+    {
+        riemann::exactRiemannInput::readArgument("rhoL=998", entries, given);
+        ADD_FAILURE() << "an argument's key given twice was accepted";
+    }
+    catch (const riemann::inputError& err)
+    {
+        EXPECT_NE
+        (
+            std::string(err.what()).find
+            (
+                "the key 'rhoL' is given twice as an argument"
+            ),
+            std::string::npos
+        ) << err.what();
+    }
+    std::istringstream bom("\xEF\xBB\xBFlaw stiffenedGas;\n");
+    try
+    {
+        riemann::exactRiemannInput::read(bom, "bom.case", entries);
+        ADD_FAILURE() << "a byte-order mark was taken into the first key";
+    }
+    catch (const riemann::inputError& err)
+    {
+        EXPECT_NE
+        (
+            std::string(err.what()).find
+            (
+                "bom.case:1: the file starts with a UTF-8 byte-order mark"
             ),
             std::string::npos
         ) << err.what();

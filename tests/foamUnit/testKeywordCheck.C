@@ -729,6 +729,102 @@ TEST(keywordCheck, duplicatesThroughIncludes)
 }
 
 
+TEST(keywordCheck, duplicateOfAnIncludeInTheScopeItself)
+{
+    // adv52 o07: an #include standing in the scope itself gives that
+    // scope's entries; the including file giving one again after it is a
+    // duplicate (was: taken as an override by design, the included value
+    // 0.5 replaced without a word), in fsiProperties as in every
+    // dictionary the check reads; a set opening the scope itself (a
+    // region's sub-dictionary) is still overridden by design
+    foamUnit::testCase tc("keywordCheck");
+    tc.writeFile
+    (
+        "constant/couplingUser",
+        "// a user file of coupling settings\n\ntolerance 0.5;\n"
+    );
+    tc.writeFile
+    (
+        "constant/fsiProperties",
+        header + "coupling\n{\n    #include \"couplingUser\"\n"
+        "    tolerance 1e-4;\n}\n"
+    );
+    const dictionary fsi(readDict(tc, "constant/fsiProperties"));
+    const std::string msg
+    (
+        errorOf([&]{ foamTools::checkDuplicates(fsi.subDict("coupling")); })
+    );
+    EXPECT_NE
+    (
+        msg.find("entry 'tolerance' is given twice in 'coupling'"), npos()
+    ) << msg;
+    EXPECT_NE(msg.find("constant/couplingUser line 3"), npos()) << msg;
+    // "key $key;" after the include restates its value (a verification
+    // tutorial's controlDict: endTime $endTime after #include
+    // "riemannProblemDict"): no duplicate
+    tc.writeFile("system/problem", "endTime 0.007;\nx0 0;\n");
+    tc.writeFile
+    (
+        "system/controlDict",
+        header + "#include \"problem\"\nendTime $endTime;\n"
+        "deltaT 1e-7;\n"
+    );
+    EXPECT_EQ
+    (
+        errorOf
+        (
+            [&]{ foamTools::checkDuplicates(readDict(tc, "system/controlDict")); }
+        ),
+        ""
+    );
+    // a dictionary of its own (a FoamFile header naming another object:
+    // riemannProblemDict) included, then its endTime given as a value: by
+    // design (a test sets the verification case's endTime so)
+    tc.writeFile
+    (
+        "system/riemannProblemDict",
+        "FoamFile { version 2.0; format ascii; class dictionary; "
+        "object riemannProblemDict; }\nendTime 0.007;\n"
+    );
+    tc.writeFile
+    (
+        "system/controlDict",
+        header + "#include \"riemannProblemDict\"\nendTime 1e-8;\n"
+    );
+    EXPECT_EQ
+    (
+        errorOf
+        (
+            [&]{ foamTools::checkDuplicates(readDict(tc, "system/controlDict")); }
+        ),
+        ""
+    );
+    // the set's own scope opened by the set: an override by design
+    tc.writeFile("constant/set", "nucleus { C10 1; }\n");
+    tc.writeFile
+    (
+        "constant/solidProperties",
+        header + "materials\n{\n    #include \"set\"\n"
+        "    nucleus { C10 2; }\n}\n"
+    );
+    const dictionary solid(readDict(tc, "constant/solidProperties"));
+    EXPECT_EQ
+    (
+        errorOf
+        (
+            [&]
+            {
+                foamTools::checkDuplicates
+                (
+                    solid.subDict("materials").subDict("nucleus")
+                );
+            }
+        ),
+        ""
+    );
+}
+
+
 TEST(keywordCheck, duplicatesInPatternScope)
 {
     // A scope named by a pattern is walked by its characters (adv36 v44:
@@ -765,13 +861,17 @@ TEST(keywordCheck, duplicatesInPatternScope)
 TEST(keywordCheck, controlDictKeywords)
 {
     // OpenFOAM's keywords and the solver's are valid; a misspelt one of
-    // either is refused with the closest; the entries of an included file
-    // (the $endTime of system/riemannProblemDict) are not controlDict's
+    // either is refused with the closest; the entries of an included
+    // dictionary of its own (a FoamFile header of another object: the
+    // $endTime of system/riemannProblemDict, as the verification
+    // tutorials') are not controlDict's
     foamUnit::testCase tc("keywordCheck");
     const argList& args = caseArgs(tc);
     tc.writeFile
     (
         "system/riemannProblemDict",
+        "FoamFile { version 2.0; format ascii; class dictionary; "
+        "object riemannProblemDict; }\n"
         "direction (1 0 0);\nx0 0;\nendTime 1e-8;\n"
     );
     const std::string good
@@ -825,6 +925,42 @@ TEST(keywordCheck, controlDictKeywords)
         ).find("unknown entry 'maxCo' in the top level"),
         std::string::npos
     );
+
+    // an included file without a header of its own holds controlDict's
+    // entries: a misspelt one is refused naming it (adv53 l21: a typo in
+    // controlDict.allrun or a user's "myControl" ran without a word)
+    tc.writeFile("system/controlDict.allrun", "writeInteval 5e-12;\n");
+    const std::string typo =
+        errorOf([&]{ foamTools::checkControlDict(args, ours); });
+    for
+    (
+        const std::string part
+      : {
+            "unknown entry 'writeInteval' in the top level; did you mean "
+            "'writeInterval'?",
+            "system/controlDict.allrun"
+        }
+    )
+    {
+        EXPECT_NE(typo.find(part), std::string::npos)
+            << "no \"" << part << "\" in: " << typo;
+    }
+
+    // an #include inside a sub-dictionary gives that scope's entries, not
+    // the top level's (adv53 u04 (b): a function object's probeLocations
+    // from a user's file was "unknown entry 'probeLocations' in the top
+    // level")
+    tc.writeFile("system/controlDict.allrun", "maxCo 0.4;\n");
+    tc.writeFile("system/probesUser", "probeLocations ((1e-7 1e-5 0));\n");
+    std::string nested(good);
+    nested.replace
+    (
+        nested.find("p { type probes; }"), 18,
+        "p { type probes;\n    #include \"probesUser\"\n}"
+    );
+    tc.writeFile("system/controlDict", nested);
+    EXPECT_EQ(errorOf([&]{ foamTools::checkControlDict(args, ours); }), "");
+    tc.writeFile("system/controlDict", good);
 
     // a keyword twice in the included file of an Allrun option
     tc.writeFile("system/controlDict.allrun", "maxCo 0.4;\nmaxCo 0.3;\n");

@@ -64,11 +64,12 @@ class OutputFolder(TempDirTestCase):
     def testNewEmptyAndOwnEarlierOutput(self):
         d = os.path.join(self.tmp, "out")
         scratch.outputFolder("s.sh", d, ("case", "*.log"))
-        self.assertEqual(os.listdir(d), [scratch.MARKER])
+        self.assertEqual(sorted(os.listdir(d)), sorted([scratch.MARKER, scratch.LOCK]))
         self.write("out/case/x", "1\n")
         self.write("out/run.log", "2\n")
+        scratch.recordOutputs(d)        # the run's end
         scratch.outputFolder("s.sh", d, ("case", "*.log"))
-        self.assertEqual(os.listdir(d), [scratch.MARKER])
+        self.assertEqual(sorted(os.listdir(d)), sorted([scratch.MARKER, scratch.LOCK]))
         os.makedirs(os.path.join(self.tmp, "empty"))
         scratch.outputFolder("s.sh", os.path.join(self.tmp, "empty"))
 
@@ -100,14 +101,21 @@ class OutputFolder(TempDirTestCase):
         only if it holds what a run of a case leaves ("@case"), a case
         inside the folder likewise ("NAME/@case"): a user's file added
         there is refused and kept"""
+        # the markers of an earlier version, without the record of what the
+        # run left (judged by the entries' name patterns)
+        def legacy(folder, script):
+            with open(os.path.join(folder, scratch.MARKER), "w") as f:
+                f.write(script + "\n")
         d = os.path.join(self.tmp, "case")
         scratch.outputFolder("run.py", d, ("@case",))
+        legacy(d, "run.py")
         for f in ("system/controlDict", "0/p", "1e-09/p", "log.cellBlastFoam",
                   "postProcessing/probes/0/p", "solid/solid.h5",
                   ".allrunOptions"):
             self.write("case/" + f, "1\n")
         scratch.outputFolder("run.py", d, ("@case",))
-        self.assertEqual(os.listdir(d), [scratch.MARKER])
+        self.assertEqual(sorted(os.listdir(d)), sorted([scratch.MARKER, scratch.LOCK]))
+        legacy(d, "run.py")
         self.write("case/system/controlDict", "1\n")
         self.write("case/analysis.txt", "mine\n")
         with self.assertRaisesRegex(scratch.ScratchError,
@@ -116,9 +124,11 @@ class OutputFolder(TempDirTestCase):
         self.assertTrue(os.path.isfile(os.path.join(d, "analysis.txt")))
         o = os.path.join(self.tmp, "out")
         scratch.outputFolder("runPreview.sh", o, ("preview/@case",))
+        legacy(o, "runPreview.sh")
         self.write("out/preview/system/controlDict", "1\n")
         self.write("out/preview/log.Allrun", "1\n")
         scratch.outputFolder("runPreview.sh", o, ("preview/@case",))
+        legacy(o, "runPreview.sh")
         self.write("out/preview/system/controlDict", "1\n")
         self.write("out/preview/mine.txt", "mine\n")
         with self.assertRaisesRegex(scratch.ScratchError,
@@ -140,12 +150,119 @@ class OutputFolder(TempDirTestCase):
             f.write("pid %d\nhost %s\nexecutable sleep\nstarted now\n"
                     "case %s\n" % (p.pid, socket.gethostname(),
                                    os.path.realpath(d)))
+        scratch.recordOutputs(d)        # the script ended, its solver runs
         with self.assertRaisesRegex(scratch.ScratchError,
                                     "holds a run going on .*in use by "
                                     "sleep"):
             scratch.outputFolder("g.sh", d, ("@case",))
         self.assertTrue(os.path.isfile(os.path.join(d, "system",
                                                     "controlDict")))
+
+    def testLockOfALiveScriptRefused(self):
+        """adv52 p01b (b): a folder whose lock another script holds (a
+        shell script between its solver runs) is refused, nothing removed;
+        a lock left by a script that ended is taken over with a note; the
+        lock file this made in a user's folder it refuses goes again."""
+        d = os.path.join(self.tmp, "out")
+        os.makedirs(d)
+        self.write("out/.scratchFolder", "s.sh\n")
+        self.write("out/result.txt", "the first's\n")
+        holder = subprocess.Popen(
+            ["flock", "-o", os.path.join(d, ".scratchLock"), "sh", "-c",
+             "printf 'pid %s\\nhost h\\n' $$ > " + os.path.join(
+                 d, ".scratchLock") + "; sleep 30"])
+        try:
+            for _ in range(100):
+                if "pid" in scratch.lockText(d):
+                    break
+                import time
+                time.sleep(0.05)
+            with self.assertRaisesRegex(
+                    scratch.ScratchError,
+                    r"out is in use by another script's run \(its lock "
+                    r".*\.scratchLock: pid [0-9]+, host h\)"):
+                scratch.outputFolder("s.sh", d, ("result.txt",))
+            self.assertTrue(os.path.isfile(os.path.join(d, "result.txt")))
+        finally:
+            holder.kill()
+            holder.wait()
+        # the holder ended: its lock is taken over, the folder emptied
+        scratch.outputFolder("s.sh", d, ("result.txt",))
+        self.assertFalse(os.path.exists(os.path.join(d, "result.txt")))
+        self.assertIn("pid %d" % os.getpid(), scratch.lockText(d))
+        # a user's folder refused: no lock file left in it
+        u = os.path.join(self.tmp, "user")
+        self.write("user/mine.txt", "mine\n")
+        with self.assertRaises(scratch.ScratchError):
+            scratch.outputFolder("s.sh", u)
+        self.assertEqual(os.listdir(u), ["mine.txt"])
+
+    def testShellScriptHoldsTheLock(self):
+        """etc/scratchFolder: the sourcing shell holds DIR's lock to its
+        end; a second script's scratchFolder on DIR is refused meanwhile,
+        exit 1, DIR's files kept."""
+        root = os.path.abspath(os.path.join(os.path.dirname(__file__),
+                                            "..", ".."))
+        d = os.path.join(self.tmp, "sh")
+        r = subprocess.run(
+            ["bash", "-c", '. "$0/etc/scratchFolder"; scratchFolder a.sh '
+             '"$1"; echo kept > "$1/r.txt"; bash -c \'. "$0/etc/'
+             'scratchFolder"; scratchFolder a.sh "$1"\' "$0" "$1"',
+             root, d], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertIn("is in use by another script's run", r.stderr)
+        self.assertIn("script a.sh", r.stderr)
+        self.assertTrue(os.path.isfile(os.path.join(d, "r.txt")))
+
+    def testRecordedOutputsOnly(self):
+        """adv53 u10: a folder whose marker records what the earlier run
+        left is emptied only if it holds those files unchanged; a user's
+        file named like a case's (logbook.txt, README.md, a figure, a file
+        in postProcessing/), or a recorded file changed, is refused and
+        kept. A shell script records at its end (its EXIT trap)."""
+        d = os.path.join(self.tmp, "rec")
+        scratch.outputFolder("r.sh", d, ("case/@case",))
+        self.write("rec/case/log.run", "run\n")
+        self.write("rec/case/postProcessing/probes/0/p", "1 2\n")
+        scratch.recordOutputs(d)
+        for name in ("case/logbook.txt", "case/README.md",
+                     "case/myFigure.png", "case/postProcessing/mine.txt"):
+            self.write("rec/" + name, "mine\n")
+            with self.assertRaisesRegex(scratch.ScratchError,
+                                        "no earlier run of r.sh made there "
+                                        r"\(%s\)" % name.replace(".", r"\.")):
+                scratch.outputFolder("r.sh", d, ("case/@case",))
+            os.remove(os.path.join(d, name))
+        self.write("rec/case/log.run", "edited by the user\n")
+        with self.assertRaisesRegex(scratch.ScratchError, r"case/log\.run"):
+            scratch.outputFolder("r.sh", d, ("case/@case",))
+        os.remove(os.path.join(d, "case/log.run"))
+        scratch.outputFolder("r.sh", d, ("case/@case",))
+        self.assertEqual(sorted(os.listdir(d)),
+                         sorted([scratch.MARKER, scratch.LOCK]))
+        # adv53 l33: a run killed before its end left an empty record: the
+        # folder holding its files is refused, not judged by name
+        k = os.path.join(self.tmp, "killed")
+        scratch.outputFolder("r.sh", k, ("@case",))
+        self.write("killed/log.run", "run\n")
+        with self.assertRaisesRegex(scratch.ScratchError, r"\(log\.run\)"):
+            scratch.outputFolder("r.sh", k, ("@case",))
+        self.assertTrue(os.path.isfile(os.path.join(k, "log.run")))
+        root = os.path.abspath(os.path.join(os.path.dirname(__file__),
+                                            "..", ".."))
+        sh = os.path.join(self.tmp, "shrec")
+        r = subprocess.run(
+            ["bash", "-c", '. "$0/etc/scratchFolder"; scratchFolder s.sh '
+             '"$1" @case; echo 1 > "$1/log.run"', root, sh],
+            capture_output=True, text=True)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.write("shrec/logbook.txt", "mine\n")
+        r = subprocess.run(
+            ["bash", "-c", '. "$0/etc/scratchFolder"; scratchFolder s.sh '
+             '"$1" @case', root, sh], capture_output=True, text=True)
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertIn("(logbook.txt)", r.stderr)
+        self.assertTrue(os.path.isfile(os.path.join(sh, "log.run")))
 
     def testFileOrLinkRefused(self):
         self.write("f", "mine\n")

@@ -8,6 +8,7 @@
 #include "Hdf5File.H"
 #include "SolidError.H"
 #include "SolidTestUtils.H"
+#include "fileDigest.H"
 
 #include <gtest/gtest.h>
 
@@ -330,6 +331,29 @@ void resumeAfter
               contents(resumed.path + "/force.dat"));
     EXPECT_EQ(contents(whole.path + "/peaks.dat"),
               contents(resumed.path + "/peaks.dat"));
+    // the digests line by line (issue 19 class 5, adv52 p31): the same
+    // for the continued run, and the last one that of the whole file
+    for (const char* f : {"/force.dat", "/peaks.dat"})
+    {
+        const std::string side(contents(resumed.path + f + ".fnv1a64"));
+        EXPECT_EQ(contents(whole.path + f + ".fnv1a64"), side) << f;
+        const std::string data(contents(resumed.path + f));
+        const std::string last
+        (
+            std::to_string(data.size()) + " " + fileDigest::hex
+            (
+                fileDigest::add(fileDigest::basis, data.data(), data.size())
+            ) + "\n"
+        );
+        ASSERT_GE(side.size(), last.size()) << f;
+        EXPECT_EQ(side.substr(side.size() - last.size()), last) << f;
+        // one digest line per line of the file
+        EXPECT_EQ
+        (
+            std::count(side.begin(), side.end(), '\n'),
+            std::count(data.begin(), data.end(), '\n')
+        ) << f;
+    }
     EXPECT_EQ(a.driver->counters().steps, b.driver->counters().steps);
     EXPECT_EQ(a.driver->counters().iterations,
               b.driver->counters().iterations);

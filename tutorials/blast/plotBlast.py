@@ -2,7 +2,7 @@
 """Blast scene plots and numbers (paper Fig. 10, Figs. 7-8 at 65.5 ns).
 
 usage: plotBlast.py case [case ...] [-o prefix] [-label name ...]
-                    [-until 1.5e-7]
+                    [-until 1.5e-7] [-acceptHandMade]
 Probe peaks are taken over t <= until (default: the whole run), the
 interface measures both over the window and over the run: the reported
 one is the largest mean over a fixed length of interface (the solver's
@@ -31,8 +31,13 @@ except ImportError:
              "is not found: source the project's etc/bashrc first")
 script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import blastPlots as bp
+from neuronFsi import resultDigest
 
-args = sys.argv[1:]
+# -acceptHandMade: the logs measured without (or against) their runs'
+# digests (made or edited by hand, or written before them); by default
+# such a log is refused naming it and its first changed line
+args = [a for a in sys.argv[1:] if a != "-acceptHandMade"]
+resultDigest.measuring("-acceptHandMade", len(args) < len(sys.argv) - 1)
 prefix, labels, cases, until = None, [], [], np.inf
 i = 0
 while i < len(args):

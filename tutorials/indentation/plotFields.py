@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Pressure and von Mises fields of an indentation case at a peak.
 
-usage: plotFields.py <case> [label]     (label: a line of peaks.dat,
+usage: plotFields.py [-acceptHandMade] <case> [label]     (label: a line of peaks.dat,
                                          default C1,i, the first peak)
 
 Reads <case>/postProcessing/indentation/{peaks.dat,solid.h5} and writes
@@ -20,11 +20,17 @@ except ImportError:
              "is not found: source the project's etc/bashrc first")
 script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import indentationPlots as ip
+from neuronFsi import resultDigest
 
-if len(sys.argv) not in (2, 3):
-    sys.exit("plotFields.py: error: usage: plotFields.py <case> [label]")
-case = sys.argv[1]
-label = sys.argv[2] if len(sys.argv) > 2 else "C1,i"
+# -acceptHandMade: force.dat and peaks.dat measured without (or against)
+# their digests (a file made or edited by hand; refused by default)
+args = [a for a in sys.argv[1:] if a != "-acceptHandMade"]
+resultDigest.measuring("-acceptHandMade", len(args) < len(sys.argv) - 1)
+if len(args) not in (1, 2):
+    sys.exit("plotFields.py: error: usage: plotFields.py [-acceptHandMade] "
+             "<case> [label]")
+case = args[0]
+label = args[1] if len(args) > 1 else "C1,i"
 try:
     rows, peaks = ip.read(case)
     if label not in peaks:

@@ -1,7 +1,12 @@
 #!/usr/bin/python3
 """Plots and results table of a cellIndentationFoam case.
 
-usage: plotIndentation.py <case> [<case> ...]
+usage: plotIndentation.py [-acceptHandMade] <case> [<case> ...]
+
+force.dat and peaks.dat must be as cellIndentationFoam wrote them (their
+digests, force.dat.fnv1a64 and peaks.dat.fnv1a64 beside them); a file made
+or edited by hand is refused naming its first changed line, unless
+-acceptHandMade.
 
 Reads <case>/postProcessing/indentation/{force,peaks}.dat and writes
 <case>/indentation.png (force vs depth for each rate, like the paper's
@@ -19,6 +24,7 @@ except ImportError:
              "is not found: source the project's etc/bashrc first")
 script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import indentationPlots as ip
+from neuronFsi import resultDigest
 from neuronFsi.paper import TABLE3_EXP as PAPER_EXP, TABLE3_SIM as PAPER_SIM
 from neuronFsi.paper import F_B as PAPER_FB, F_E as PAPER_FE
 
@@ -43,7 +49,9 @@ def table(case, peaks):
     print(text)
 
 
-for case in sys.argv[1:] or ["."]:
+cases = [c for c in sys.argv[1:] if c != "-acceptHandMade"]
+resultDigest.measuring("-acceptHandMade", len(cases) < len(sys.argv[1:]))
+for case in cases or ["."]:
     try:
         rows, peaks = ip.read(case)
     except ip.IndentationPlotError as err:

@@ -34,6 +34,10 @@ Usage
                 inputs)
     -noRun      a run that is missing or not current is an error (nothing
                 is run)
+    -acceptHandMade
+                measure results without the digests of the run that
+                wrote them (made or edited by hand, or written before the
+                digests, fix19j); by default such a file is refused
 
 \\*---------------------------------------------------------------------------*/
 """
@@ -62,6 +66,7 @@ from neuronFsi import (blastPlots as bp, foamDict, foamField,
                        indentationPlots as ip,
                        msh, options, paper, paperCases, planeWave,
                        postProcessing, signals)
+from neuronFsi import resultDigest
 from neuronFsi.solidResults import SolidResults
 
 DPI = 90            # the PNGs' resolution [dots per inch]
@@ -1061,7 +1066,11 @@ def main():
     ap.add_argument("-output")
     ap.add_argument("-results")
     ap.add_argument("-noRun", action="store_true")
+    ap.add_argument("-acceptHandMade", action="store_true")
     a = options.parse(ap)
+    # the runs' results as they wrote them (their digests), unless the
+    # user says they are hand-made or of an earlier version (fix19j)
+    resultDigest.measuring("-acceptHandMade", a.acceptHandMade)
     case = os.path.abspath(a.case)
     if not os.environ.get("FOAM_TUTORIALS"):
         sys.exit("paperFigures: error: FOAM_TUTORIALS is not set (source "

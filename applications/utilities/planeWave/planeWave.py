@@ -70,7 +70,7 @@ Description
 Usage
     planeWave [-case dir] [-Z 100e-6] [-dz 25e-9] [-endTime t]
               [-probes solid,fluid] [-check] [-except m1,m2]
-              [-reference file] [-partial] [-layered [-radius r]]
+              [-reference file] [-partial] [-acceptHandMade] [-layered [-radius r]]
     planeWave -inflow HEIGHT [-case dir] [-Z Z] [-dz 25e-9] [-endTime t]
               [-overwrite] [-maxSteps 1e6]
 
@@ -111,6 +111,12 @@ Usage
                 column and heights) instead of computing it (for solid
                 probes, one with their material points: written since
                 2026-12-05, g5ns)
+    -acceptHandMade
+                measure probe logs and a -reference that do not carry
+                the digests of the run that wrote them, or whose bytes
+                differ from them (a file made or edited by hand): by
+                default such a file is refused naming it and its first
+                line not as written (adv52 p06b)
     -partial    compare the probes of a run still going on in the case
                 (its solver holds the case's run lock): by default such a
                 case is refused, naming the run (adv34 n21: a report of
@@ -134,7 +140,7 @@ except ImportError:
              "is not found: source the project's etc/bashrc first")
 script.guard()  # an input's error: one line, exit 1 (adv33)
 from neuronFsi import caseLock, foamDict, layeredColumn, options, \
-    planeWave, postProcessing
+    planeWave, postProcessing, resultDigest
 
 # the layered column's default cell size [m] (docs/results/
 # blastPlaneWave.md, "The layered reference": its own error)
@@ -165,7 +171,11 @@ def main():
     p.add_argument("-except", dest="skip", default="")
     p.add_argument("-reference", default=None)
     p.add_argument("-partial", action="store_true")
+    p.add_argument("-acceptHandMade", action="store_true")
     a = options.parse(p)
+    # the logs and a -reference measured only as their runs wrote them
+    # (their digests), unless the user says they are hand-made (adv52 p06b)
+    resultDigest.measuring("-acceptHandMade", a.acceptHandMade)
     case = os.path.abspath(a.case)
     if a.radius is not None and not a.layered:
         p.error("-radius is an option of -layered (the line whose layers "
@@ -493,7 +503,7 @@ def solidRows(case, wave, skip):
     log = "solidProbes/solidProbes.dat"
     if not planeWave._has(case, log):
         return "", []
-    data = postProcessing.series(case, log)
+    data = postProcessing.series(case, log, verify=True)
     cols = postProcessing.names(case, log)
     axis = 1 if planeWave.isWedge(case) else 2
     lines = ["# planeWave: solid probes of %s against the uniaxial-strain "

@@ -24,6 +24,8 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
+#include <cmath>
+#include <sstream>
 #include "inputChecks.H"
 #include "rhoEThermo.H"
 #include "riemannProblem.H"
@@ -139,6 +141,51 @@ int main(int argc, char *argv[])
                 << side << "' (rho = " << s.rho << " kg/m^3, p = " << s.p
                 << " Pa) is outside the domain of the equation of state: "
                 << reason << exit(FatalError);
+        }
+        // What is written (p, T, in 17 digits) and the energy the solver
+        // computes from it (rho e) within the numbers OpenFOAM's reader
+        // takes (foamTools::outsideReaderRange, the solvers' own check of
+        // 0/): a state the law takes beyond them (p = 1e300 Pa of an
+        // ideal gas) was written and then refused by the solver at 0/p
+        // (adv52 p16)
+        {
+            scalarField TS(1);
+            thermo.TFromRhoE(rhoS, eS, TS);
+            const std::pair<const char*, scalar> written[] =
+            {
+                {"p", s.p}, {"T", TS[0]}, {"rho e", s.rho*eS[0]}
+            };
+            for (const auto& w : written)
+            {
+                std::ostringstream os;
+                os.precision(17);
+                os << w.second;
+                if
+                (
+                    !std::isfinite(w.second)
+                 || foamTools::outsideReaderRange(os.str()) > 0
+                )
+                {
+                    FatalErrorInFunction
+                        << args.path()/"system/riemannProblemDict"
+                        << ": state '" << side << "' (rho = "
+                        << foamTools::numberText(s.rho).c_str()
+                        << " kg/m^3, p = "
+                        << foamTools::numberText(s.p).c_str() << " Pa): "
+                        << (std::string(w.first) == "p" ? "p" :
+                            std::string(w.first) + ", which follows from "
+                            "rho and p,").c_str()
+                        << " = " << os.str().c_str() << " "
+                        << foamTools::readerRangeText(1).c_str()
+                        << ": the solver could not read the state back. Give"
+                        << " entry 'p' of '" << side << "' a smaller"
+                        << " magnitude (the law "
+                        << thermo.lawName().c_str() << " takes it, the"
+                        << " numbers of the case cannot hold it)."
+                        << nl << "    Nothing was written."
+                        << exit(FatalError);
+                }
+            }
         }
         // Water: the states the law is used for (eos::MieGruneisen::
         // inputPMax, inputTMax; adv29 f19: p 5e70 Pa set T 1.2e65 K)

@@ -21,7 +21,12 @@ Description
     in compression), vonMises [Pa], J [-], temperatureRise [K], region [-].
 
 Usage
-    solidToFoam <file.h5> [-region solid] [-wedgeAngle 5]
+    solidToFoam <file.h5> [-region solid] [-wedgeAngle 5] [-overwrite]
+
+    The mesh constant/<region>/polyMesh is replaced only when solidToFoam
+    wrote it (its marker constant/<region>/polyMesh/.solidToFoam), or with
+    -overwrite: a user's mesh there is refused, named, nothing written
+    (issue 19, adv52 p20).
 
 \*---------------------------------------------------------------------------*/
 
@@ -30,6 +35,8 @@ Usage
 #include "cellModel.H"
 #include "cellShapeList.H"
 #include "Hdf5File.H"
+#include "ResultWriter.H"
+#include "uniformState.H"
 #include "SolidError.H"
 #include "inputChecks.H"
 
@@ -151,6 +158,12 @@ int main(int argc, char *argv[])
     (
         "wedgeAngle", "deg", "axisymmetric revolution angle (default: 5)"
     );
+    argList::addBoolOption
+    (
+        "overwrite",
+        "replace a constant/<region>/polyMesh that solidToFoam did not write"
+        " (its marker .solidToFoam missing: a user's mesh)"
+    );
 
     // setRootCase.H with checkCasePath before OpenFOAM checks the case
     #include "setRootCaseChecked.H"
@@ -186,6 +199,32 @@ int main(int argc, char *argv[])
         foamTools::regionOption(args, "solid", "constant/<region>, "
             "system/<region> and <time>/<region>")
     );
+    // A mesh of the region that solidToFoam did not write (no marker in
+    // it: a user's mesh, or a mesh of a build before the marker) is not
+    // replaced without -overwrite (adv52 p20: a user's points and boundary
+    // replaced without a word)
+    {
+        const fileName meshDir(runTime.path()/"constant"/region/"polyMesh");
+        if
+        (
+            isDir(meshDir, false) && !args.found("overwrite")
+         && !isFile
+            (
+                meshDir/foamTools::solidToFoamFiles::marker(), false, false
+            )
+         && !readDir(meshDir, fileName::FILE, false, false).empty()
+        )
+        {
+            FatalErrorInFunction
+                << meshDir.c_str() << " holds a mesh solidToFoam did not "
+                << "write (no marker " << foamTools::solidToFoamFiles::marker()
+                << " in it: a user's mesh, or one converted before the "
+                << "marker existed): the conversion would replace it. Move "
+                << "it away, give another -region, or give -overwrite to "
+                << "replace it." << nl << "    Nothing was written."
+                << exit(FatalError);
+        }
+    }
     const scalar angle =
         degToRad(args.opt<scalar>("wedgeAngle", 5.0));
     if (!(angle > 0 && angle < constant::mathematical::pi))
@@ -209,6 +248,45 @@ int main(int argc, char *argv[])
             << "    Nothing was written." << exit(FatalError);
     }
     const List<Tuple2<label, scalar>> steps = h5.steps();
+
+    // The results of the run whose time directories they go into: a time
+    // that records the run's solid state (uniform/solidState, cellBlastFoam)
+    // names the run id solid.h5 must carry (adv53 l27: another run's
+    // solid.h5, valid and checksummed, was converted into this case's
+    // times without a word; a restart refuses it alike)
+    for (const auto& step : steps)
+    {
+        const fileName state
+        (
+            runTime.path()/runTime.timeName(step.second())/"uniform"
+           /foamTools::uniformState::solidState()
+        );
+        if (!isFile(state))
+        {
+            continue;
+        }
+        IFstream is(state);
+        const dictionary d(is);
+        const string runId(d.lookupOrDefault<string>("runId", string()));
+        if (!runId.empty())
+        {
+            try
+            {
+                solid::ResultWriter::checkContinued(h5Name, runId);
+            }
+            catch (const solid::SolidError& err)
+            {
+                FatalErrorInFunction
+                    << h5Name.c_str() << " is not the results of the run"
+                    << " that wrote " << state.path().path() << ": "
+                    << err.what() << nl << "    Converting it would put"
+                    << " another run's solid fields into this case's time"
+                    << " directories. Give the run's own solid.h5." << nl
+                    << "    Nothing was written." << exit(FatalError);
+            }
+        }
+        break;
+    }
 
     // The region's time directories of an earlier conversion that this
     // solid.h5 no longer has (a new run with fewer steps): removed once
@@ -404,6 +482,23 @@ int main(int argc, char *argv[])
         );
         mesh.setInstance(runTime.constant());
         mesh.removeFiles();
+        // its marker first: a later conversion may replace this mesh (adv52
+        // p20), also one cut by a failed write (adv53's p08 on the merge:
+        // a mesh cut by ulimit -f, its marker not yet written, was then
+        // refused as a user's)
+        mkDir(runTime.path()/"constant"/region/"polyMesh");
+        OFstream marker
+        (
+            runTime.path()/"constant"/region/"polyMesh"
+           /foamTools::solidToFoamFiles::marker()
+        );
+        marker
+            << "written by solidToFoam from " << h5Name.c_str() << nl;
+        if (!marker.good())
+        {
+            FatalErrorInFunction
+                << "cannot write " << marker.name() << exit(FatalError);
+        }
         mesh.write();
     }
 

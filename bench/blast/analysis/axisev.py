@@ -3,6 +3,9 @@
 (r < 0.25 um) and the mean of the next ring (0.4 < r < 0.9 um) per z layer
 above z0; vz of axis nodes."""
 import sys, numpy as np
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (adv53 u12)
+script.arguments(1, "solid.h5 [z0 [RA]]")
 from neuronFsi.solidResults import SolidResults
 f = SolidResults(sys.argv[1])
 X = f.mesh('coordinates'); conn = f.mesh('connectivity')

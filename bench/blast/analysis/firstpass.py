@@ -1,6 +1,9 @@
 #!/usr/bin/python3
 """First-passage (t <= T) probe and interface maxima of a blast case."""
 import sys, numpy as np
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (adv53 u12)
+script.arguments(1, "CASE [T]")
 from neuronFsi.postProcessing import series
 case = sys.argv[1]; T = float(sys.argv[2]) if len(sys.argv) > 2 else 90e-9
 d = series(case, 'solidProbes/solidProbes.dat')

@@ -39,6 +39,7 @@ import sys
 import numpy as np
 
 from neuronFsi import planeWave as pw
+from neuronFsi import options, resultDigest
 from neuronFsi.postProcessing import ColumnFileError
 
 
@@ -77,7 +78,16 @@ def main():
     ap.add_argument("--level", type=pressure, default=75e6)
     ap.add_argument("--foot", type=pressure, default=55e6)
     ap.add_argument("--series", type=nanoseconds, nargs=3, default=None)
-    a = ap.parse_args()
+    ap.add_argument("--accept-hand-made", action="store_true",
+                    help="measure a reference.dat and probe logs that do "
+                    "not carry their run's digests or differ from them "
+                    "(made or edited by hand): refused by default")
+    # negative values as values, an option given twice refused (adv53
+    # u14: "--series 0 2 -1e-3" was "expected 3 arguments", a second
+    # --series replaced the first without a word)
+    a = options.parse(ap)
+    # the reference and the logs as their runs wrote them (adv52 p06b)
+    resultDigest.measuring("--accept-hand-made", a.accept_hand_made)
     if a.series and not (a.series[1] >= a.series[0] and a.series[2] > 0):
         ap.error("--series T0 T1 DT: T1 must not be before T0 and DT must "
                  "be positive")
@@ -99,7 +109,7 @@ def main():
         return 1
     refFile = os.path.join(a.case, "postProcessing", "planeWave", "0",
                            "reference.dat")
-    if not os.path.isfile(refFile):
+    if not os.path.lexists(refFile):
         print("incidentWindow.py: %s: no planeWave reference (%s): write it "
               "with planeWave -case %s" % (a.case, refFile, a.case),
               file=sys.stderr)
@@ -108,8 +118,9 @@ def main():
         ref = pw.readReference(refFile)
         amplitude, duration = pw.pulseShape(pw.appliedPressure(a.case))
         probes = list(pw.caseProbes(a.case))
-    except (pw.PlaneWaveError, ColumnFileError, OSError) as e:
-        print("incidentWindow.py: %s" % e, file=sys.stderr)
+    except (pw.PlaneWaveError, ColumnFileError, resultDigest.DigestError,
+            OSError) as e:
+        print("incidentWindow.py: error: %s" % e, file=sys.stderr)
         return 1
     c0 = 1450.0     # [m/s] planeWave.measures' default, as planeWave uses
     print("# probe  z[um]  window[ns]  peakIncident scene/ref [MPa] (err %%) "

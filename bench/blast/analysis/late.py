@@ -8,6 +8,9 @@ usage: late.py CASE"""
 import sys
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (adv53 u12)
+script.arguments(1, "CASE")
 from neuronFsi.postProcessing import series
 
 case = sys.argv[1]
@@ -20,6 +23,9 @@ for T in (90, 100, 110, 120, 130, 140, 150):
           f"{p[i, 2]:.2f} Pa, strain_z {p[i, base]:.4f}")
 c = series(case, 'fsi/coupling.dat')
 w = c[:, 0] > 110e-9
+if not w.any():
+    sys.exit("late.py: error: %s: no coupling rows after 110 ns (the run "
+             "ends at %.3g ns)" % (case, c[-1, 0]*1e9))
 print(f"interface velocity: max after 110 ns {c[w, 8].max():.3g} m/s, at the "
       f"end {c[-1, 8]:.3g} m/s")
 print("coupling passes per step: " + ", ".join(

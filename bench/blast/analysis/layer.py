@@ -2,6 +2,9 @@
 """vz of the nodes at the height of each axis node (|dz| < 0.03 um, r < Rmax)
 by radius, at the given times."""
 import sys, numpy as np
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (adv53 u12)
+script.arguments(1, "solid.h5 [t ...]")
 from neuronFsi.solidResults import SolidResults
 f = SolidResults(sys.argv[1])
 X = f.mesh('coordinates')

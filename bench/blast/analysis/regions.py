@@ -5,6 +5,9 @@ usage: regions.py solid/solid.h5 t_ns"""
 import sys
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (adv53 u12)
+script.arguments(2, "solid.h5 t_ns")
 from neuronFsi.solidResults import SolidResults
 
 with SolidResults(sys.argv[1]) as f:

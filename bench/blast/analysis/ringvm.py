@@ -2,6 +2,9 @@
 """Membrane elements near (r, z): vM, J and the nodal velocities (radial,
 vertical) of their nodes, over time."""
 import sys, numpy as np
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (adv53 u12)
+script.arguments(3, "solid.h5 r z")
 from neuronFsi.solidResults import SolidResults
 f = SolidResults(sys.argv[1])
 R0, Z0 = float(sys.argv[2]), float(sys.argv[3])

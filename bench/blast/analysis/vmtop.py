@@ -1,5 +1,8 @@
 #!/usr/bin/python3
 import sys, numpy as np
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (adv53 u12)
+script.arguments(2, "solid.h5 t")
 from neuronFsi.solidResults import SolidResults
 f = SolidResults(sys.argv[1])
 X = f.mesh('coordinates'); conn = f.mesh('connectivity'); reg = f.mesh('region')

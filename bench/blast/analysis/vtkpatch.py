@@ -2,6 +2,9 @@
 """Fluid interface faces near the pole from a legacy ASCII VTK patch file:
 centroid r, z, area, p."""
 import sys, numpy as np
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (adv53 u12)
+script.arguments(1, "patch.vtk [Rmax]")
 L = open(sys.argv[1]).read().split('\n')
 i = next(k for k, l in enumerate(L) if l.startswith('POINTS'))
 n = int(L[i].split()[1]); vals = []

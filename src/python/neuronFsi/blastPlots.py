@@ -24,7 +24,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-from . import damageIndicators, logs, planeWave, postProcessing
+from . import damageIndicators, logs, planeWave, postProcessing, resultDigest
 
 
 class BlastPlotError(Exception):
@@ -37,10 +37,12 @@ def series(case, log):
     time), checked to reach the latest time the run wrote (a cut file,
     adv33 pb07)"""
     try:
-        data = postProcessing.series(case, log)
+        # as the run wrote it (its digests: adv53's p06b on the merge, an
+        # edited probe log plotted and tabled by plotBlast.py)
+        data = postProcessing.series(case, log, verify=True)
         postProcessing.checkCovers(case, log, data)
         return data
-    except postProcessing.ColumnFileError as err:
+    except (postProcessing.ColumnFileError, resultDigest.DigestError) as err:
         raise BlastPlotError(str(err))
 
 

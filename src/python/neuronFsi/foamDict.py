@@ -358,6 +358,10 @@ def read(path, belowReader=False):
         raise DictError("%s is %s, not a file%s" % (
             path, kind, "" if kind == "a directory" else
             ": reading it would wait without end for a writer"))
+    refusal = options.readRefusal(path, options.DICTIONARY_LIMIT,
+                                  "dictionary")
+    if refusal:
+        raise DictError(refusal)
     return parse(fileText(path), path, os.path.dirname(path) or ".",
                  belowReader=belowReader)
 

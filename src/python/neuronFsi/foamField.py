@@ -7,14 +7,26 @@ import re
 
 import numpy as np
 
+from . import options
+
 
 class FieldError(Exception):
     """A field file that is not what is asked; the message names it."""
 
 
+def _readable(path):
+    """A FieldError naming path when it is no regular file (a FIFO, a
+    device: read without end) or beyond a field file's sane size
+    (options.readRefusal, TABLE_LIMIT)."""
+    refusal = options.readRefusal(path, options.TABLE_LIMIT, "field file")
+    if refusal:
+        raise FieldError(refusal)
+
+
 def internalField(path):
     """The internal field of a volField file, ascii or binary: an array
     of n values (scalar) or n x 3 (vector)."""
+    _readable(path)
     with open(path, "rb") as f:
         raw = f.read()
     head = raw[:raw.index(b"}") + 1].decode(errors="replace")
@@ -51,6 +63,7 @@ def internalField(path):
 
 def points(path):
     """The points of a pointField file, n x 3, ascii or binary."""
+    _readable(path)
     with open(path, "rb") as f:
         raw = f.read()
     head = raw[:raw.index(b"}") + 1].decode()

@@ -22,7 +22,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from matplotlib.collections import PolyCollection
 
-from . import msh, postProcessing
+from . import msh, postProcessing, resultDigest
 from .solidResults import SolidResults, SolidResultsError
 
 RATES = {"C1": "10 um/s", "C2": "1 um/s", "C3": "0.1 um/s"}
@@ -36,9 +36,14 @@ class IndentationPlotError(Exception):
 def read(case):
     """(rows, peaks) of an indentation case: rows [(time [s], depth [m],
     force [N], stage)] of force.dat, peaks {label: (time [s], depth [m],
-    force [N])} of peaks.dat."""
+    force [N])} of peaks.dat. Each as cellIndentationFoam wrote it (its
+    digests, force.dat.fnv1a64 and peaks.dat.fnv1a64: resultDigest.check;
+    adv52 p31: peaks.dat x1.5 was plotted and tabled), unless the script's
+    option accepts hand-made files."""
     d = os.path.join(case, "postProcessing", "indentation")
     try:
+        for name in ("force.dat", "peaks.dat"):
+            resultDigest.check(os.path.join(d, name))
         f = postProcessing.readTable(os.path.join(d, "force.dat"))
         # times increasing, numbers finite (adv32 pl01, pl02: nan forces
         # and times going back were plotted, exit 0)
@@ -49,7 +54,7 @@ def read(case):
         peaks = {label: (t, z, F) for label, t, z, F in zip(
             p.column("label"), p.column("time", finite=True),
             p.column("depth", finite=True), p.column("force", finite=True))}
-    except postProcessing.ColumnFileError as err:
+    except (postProcessing.ColumnFileError, resultDigest.DigestError) as err:
         raise IndentationPlotError(str(err))
     return rows, peaks
 

@@ -9,13 +9,19 @@ a changed log line breaks one function with a clear message.
 
 import re
 
+from . import options
+
 
 class LogError(Exception):
     """A log without the line asked for; the message names log and line."""
 
 
 def text(path):
-    """The whole log."""
+    """The whole log (a log that is no regular file, or beyond a table's
+    size, is a LogError naming it: options.readRefusal)."""
+    refusal = options.readRefusal(path, options.TABLE_LIMIT, "log")
+    if refusal:
+        raise LogError(refusal)
     try:
         with open(path) as f:
             return f.read()

@@ -13,6 +13,8 @@ elementCount(path, types): number of elements of the given gmsh types
 """
 import numpy as np
 
+from . import options
+
 
 class MshError(Exception):
     """A file this reader cannot read; the message names it."""
@@ -21,6 +23,9 @@ class MshError(Exception):
 def _sections(path):
     """{section name: its lines} of a file ("$Nodes" -> lines up to
     "$EndNodes"), and the format version."""
+    refusal = options.readRefusal(path, options.MESH_LIMIT, "gmsh mesh")
+    if refusal:
+        raise MshError(refusal)
     try:
         with open(path) as f:
             lines = [line.strip() for line in f]

@@ -40,6 +40,52 @@ def notARegularFile(path):
     return "not a regular file"
 
 
+# The sane sizes of the files a user gives, by kind (those of
+# src/foamTools/fileKind.H): a dictionary or case file, a column table (a
+# probe, force or peaks log, a reference), a gmsh mesh
+DICTIONARY_LIMIT = 64 << 20
+TABLE_LIMIT = 1 << 30
+MESH_LIMIT = 256 << 20
+
+
+def _sizeText(n):
+    """A size in bytes as a short text: "3.2 GiB (3435973837 bytes)"."""
+    v, u = float(n), 0
+    units = ["bytes", "KiB", "MiB", "GiB", "TiB"]
+    while v >= 1024 and u < 4:
+        v /= 1024
+        u += 1
+    return "%d bytes" % n if u == 0 else "%.3g %s (%d bytes)" % (v, units[u], n)
+
+
+def readRefusal(path, maxBytes, kind):
+    """Why path may not be read as a file of its kind ("" if it may, or if
+    it is not there: the reader's own message then), naming it: not a
+    regular file ("'<path>' is a FIFO (named pipe), not a file: reading it
+    would wait without end for a writer"; a device such as /dev/zero gives
+    bytes without end), or larger than maxBytes (0: no limit), the sane
+    size of its kind (DICTIONARY_LIMIT, TABLE_LIMIT, MESH_LIMIT). The one
+    look of the Python package before a reader opens a user's file (issue
+    19, adv52 p10); the C++ side's is fileKind::readRefusal
+    (src/foamTools/fileKind.H), with the same words."""
+    kind_ = notARegularFile(path)
+    if kind_:
+        why = "" if kind_ == "a directory" else \
+            ": reading it would not end (a device such as /dev/zero gives " \
+            "bytes without end) or would wait for input" \
+            if kind_ == "a device" else \
+            ": reading it would wait without end for a writer"
+        return "'%s' is %s, not a file%s" % (path, kind_, why)
+    try:
+        size = os.stat(path).st_size
+    except (OSError, ValueError):
+        return ""
+    if maxBytes and size > maxBytes:
+        return "'%s' is %s, more than the %s a %s may be: is it the right " \
+            "file?" % (path, _sizeText(size), _sizeText(maxBytes), kind)
+    return ""
+
+
 def fileProblem(path):
     """Why a path the user gives as a file cannot be read as one, '' if
     it can: "no such file", "a symbolic link to <target>, which is not
@@ -112,12 +158,18 @@ def _numbers(s):
 
 def joinNegativeValues(parser, argv):
     """argv with each option that takes one value and is followed by a
-    negative number joined to it (-opt=-1e-9)."""
+    negative number joined to it (-opt=-1e-9); the negative numbers among
+    the values of an option of several values given a leading space."""
     takesValue = set()
+    takesValues = {}
     for action in parser._actions:
         if action.option_strings and action.nargs is None \
                 and action.const is None:
             takesValue.update(action.option_strings)
+        elif action.option_strings and isinstance(action.nargs, int) \
+                and action.nargs > 1:
+            for o in action.option_strings:
+                takesValues[o] = action.nargs
     out = []
     i = 0
     while i < len(argv):
@@ -126,6 +178,16 @@ def joinNegativeValues(parser, argv):
                 and argv[i + 1].startswith("-") and _numbers(argv[i + 1]):
             out.append(a + "=" + argv[i + 1])
             i += 2
+        elif a in takesValues:
+            # an option of N values (incidentWindow.py --series T0 T1 DT):
+            # a negative number among them is given a leading space, which
+            # argparse takes as a value and float() reads (adv53 u14:
+            # "--series 0 2 -1e-3" was "expected 3 arguments")
+            out.append(a)
+            for v in argv[i + 1:i + 1 + takesValues[a]]:
+                out.append(" " + v if v.startswith("-") and _numbers(v)
+                           else v)
+            i += 1 + takesValues[a]
         else:
             out.append(a)
             i += 1

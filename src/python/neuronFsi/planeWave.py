@@ -61,6 +61,7 @@ import numpy as np
 from . import foamDict, ranges
 from . import foamField
 from . import postProcessing
+from . import resultDigest
 from . import script
 from . import signals
 
@@ -888,7 +889,9 @@ def writeReference(path, wave, what):
     densities, then T_z<height>[K] when it has temperatures as well (what:
     the description line); then per material point (PlaneWave.material,
     by its reference height) pM_z<height>[Pa], rhoM_z<height>[kg/m^3],
-    TM_z<height>[K] (with temperatures) and zM_z<height>[m], its height."""
+    TM_z<height>[K] (with temperatures) and zM_z<height>[m], its height.
+    Its digests beside it (resultDigest.writeSidecar): readReference
+    verifies them (adv52 p06b)."""
     cols = ["p_z%.17g[Pa]" % z for z in wave.heights]
     data = wave.p
     if wave.rho is not None:
@@ -909,6 +912,7 @@ def writeReference(path, wave, what):
         for k in range(len(wave.t)):
             f.write("%.10g %s\n" % (wave.t[k], " ".join(
                 "%.12g" % v for v in data[k])))
+    resultDigest.writeSidecar(path)
 
 
 def readMeasures(path):
@@ -947,7 +951,11 @@ def readMeasures(path):
 
 def readReference(path):
     """The PlaneWave of a file of writeReference (densities and
-    temperatures if it has them)."""
+    temperatures if it has them). The file must be as writeReference
+    wrote it (its digests, resultDigest.check; adv52 p06b: reference.dat
+    x1.5 was measured against), unless the script's option accepts a
+    hand-made one."""
+    resultDigest.check(path)
     table = postProcessing.readTable(path)
     # a reference is a finished file: a last row cut (fewer columns than
     # the header's, or no end of line) is refused, not dropped (adv51 n07:
@@ -1273,7 +1281,7 @@ def caseProbes(case, solid=True, fluid=True):
     notFound = set()        # fluid probes OpenFOAM reports outside the mesh
     log = "solidProbes/solidProbes.dat"
     if solid and _has(case, log):
-        data = postProcessing.series(case, log)
+        data = postProcessing.series(case, log, verify=True)
         # a cut file is not the run (adv34 n14)
         postProcessing.checkCovers(case, log, data)
         cols = postProcessing.names(case, log)
@@ -1289,7 +1297,7 @@ def caseProbes(case, solid=True, fluid=True):
             m = re.match(r"Probe (\d+) \((\S+) (\S+) (\S+)\)", line)
             if m:
                 if data is None:
-                    data = postProcessing.series(case, log)
+                    data = postProcessing.series(case, log, verify=True)
                     # OpenFOAM's probes follow the step they sample: one
                     # step short of the latest time written is whole
                     # (adv34 n14: a file cut at 2/3, impulse -11 %, exit 0)

@@ -21,6 +21,9 @@ import re
 
 import numpy as np
 
+from . import options
+from . import resultDigest
+
 
 class ColumnFileError(Exception):
     """A column file that cannot be read; the message names the file."""
@@ -168,7 +171,11 @@ def _isNumber(text):
 
 def _lines(path):
     """The lines of a file; a ColumnFileError naming it when it cannot be
-    read."""
+    read, or when it is no regular file or beyond a table's size (a FIFO,
+    /dev/zero: read without end; options.readRefusal)."""
+    refusal = options.readRefusal(path, options.TABLE_LIMIT, "column table")
+    if refusal:
+        raise ColumnFileError(refusal)
     try:
         with open(path) as f:
             return f.read().split("\n")
@@ -252,15 +259,19 @@ def segments(case, log):
     return found
 
 
-def series(case, log, vectors=False):
+def series(case, log, vectors=False, verify=False):
     """Float rows of log "dir/file" (e.g. "fsi/coupling.dat") over every
     start of the run: each segment's rows before the first row of the next
     segment that has rows, then that segment's rows. The rows delimit the
     segments, not the directory names: these are rounded to the
     controlDict's timePrecision. vectors: see readTable (e.g. "probes/U":
-    time, then x y z of each probe)."""
+    time, then x y z of each probe). verify: each segment is checked
+    against the digests its run recorded (resultDigest.check: a measure
+    of the run refuses an edited log, adv52 p06b)."""
     parts = []
     for t0, p in segments(case, log):
+        if verify:
+            resultDigest.check(p)
         table = readTable(p, vectors)
         a = table.data()
         _timesForward(table, a)

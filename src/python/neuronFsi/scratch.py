@@ -2,9 +2,13 @@
 tutorial's inputs in a folder of its own, so that running never touches
 the tracked case (and meshes made there are made again)."""
 
+import fcntl
 import fnmatch
 import os
 import shutil
+import socket
+import sys
+import time
 
 
 class ScratchError(Exception):
@@ -12,6 +16,17 @@ class ScratchError(Exception):
 
 
 MARKER = ".scratchFolder"
+
+# The lock a script holds on its output folder for its whole run (flock on
+# this file in the folder, naming pid, host, start and script): a second
+# script refuses the folder while it is held (issue 19, adv52 p01b (b): a
+# second restartDigits.sh emptied the first's folder between the first's
+# solver runs, when no run lock was there). The shell scripts hold it with
+# flock(1) on a descriptor of their own shell (etc/scratchFolder) and tell
+# the Python side through LOCKED_ENV.
+LOCK = ".scratchLock"
+LOCKED_ENV = "NEURONFSI_SCRATCH_LOCKED"
+_held = {}
 
 # The entries a run of a case leaves in its folder (the tutorials'
 # .gitignore: inputs, times, logs, results, plots, our run records): the
@@ -42,7 +57,8 @@ def _foreign(path, names, entries):
             patterns.append(e)
     foreign = []
     for n in names:
-        if n == MARKER or any(fnmatch.fnmatchcase(n, e) for e in patterns):
+        if n in (MARKER, LOCK) \
+                or any(fnmatch.fnmatchcase(n, e) for e in patterns):
             continue
         if any(fnmatch.fnmatchcase(n, e) for e in nested):
             sub = os.path.join(path, n)
@@ -53,6 +69,78 @@ def _foreign(path, names, entries):
                 continue
         foreign.append(n)
     return foreign
+
+
+def _marker(path):
+    """(script, record) of path's marker: the script's name (None without
+    a marker) and {relative path: (size, mtime_ns)} of the files the
+    script's run left there (recordOutputs; empty for a run killed before
+    its end; None for a marker of an earlier version, without a record)."""
+    try:
+        with open(os.path.join(path, MARKER), errors="replace") as f:
+            lines = f.read().split("\n")
+    except OSError:
+        return None, None
+    record = None
+    if len(lines) > 1 and lines[1] == "record":
+        record = {}
+        for line in lines[2:]:
+            parts = line.split(" ", 3)
+            if len(parts) == 4 and parts[0] == "file":
+                try:
+                    record[parts[3]] = (int(parts[1]), int(parts[2]))
+                except ValueError:
+                    pass
+    return lines[0].strip(), record
+
+
+def _unrecorded(path, record):
+    """The files under path (its marker and lock but) that are not in
+    record as they are now (another size or time: changed since), and
+    links: what the earlier run did not leave there."""
+    foreign = []
+    for d, dirs, files in os.walk(path):
+        for n in files + [x for x in dirs
+                          if os.path.islink(os.path.join(d, x))]:
+            full = os.path.join(d, n)
+            rel = os.path.relpath(full, path)
+            if rel in (MARKER, LOCK):
+                continue
+            try:
+                st = os.lstat(full)
+            except OSError:
+                continue
+            if record.get(rel) != (st.st_size, st.st_mtime_ns):
+                foreign.append(rel)
+    return sorted(foreign)
+
+
+def recordOutputs(path):
+    """Record in path's marker every file the script's run left under it
+    (relative path, size, modification time in ns): the next run of the
+    script empties the folder only if it holds these files unchanged and
+    nothing else (adv53 u10). Called at the script's end (outputFolder
+    registers it with atexit; etc/scratchFolder's EXIT trap)."""
+    marker = os.path.join(path, MARKER)
+    owner, _ = _marker(path)
+    if owner is None:
+        return
+    lines = [owner, "record"]
+    for d, dirs, files in os.walk(path):
+        for n in sorted(files):
+            full = os.path.join(d, n)
+            rel = os.path.relpath(full, path)
+            if rel in (MARKER, LOCK) or "\n" in rel:
+                continue
+            try:
+                st = os.lstat(full)
+            except OSError:
+                continue
+            lines.append("file %d %d %s" % (st.st_size, st.st_mtime_ns, rel))
+    tmp = "%s.tmp%d" % (marker, os.getpid())
+    with open(tmp, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    os.replace(tmp, marker)
 
 
 def checkOutputFolder(script, path, entries=()):
@@ -66,15 +154,16 @@ def checkOutputFolder(script, path, entries=()):
                            "was removed." % path)
     if not os.path.isdir(path):
         return False
-    names = sorted(os.listdir(path))
+    names = sorted(n for n in os.listdir(path) if n != LOCK)
     if not names:
         return False
-    try:
-        with open(os.path.join(path, MARKER)) as f:
-            owner = f.read().strip()
-    except OSError:
-        owner = None
-    if owner == script:
+    owner, record = _marker(path)
+    if owner == script and record is not None:
+        # what the earlier run left, file by file (adv53 u10: a user's
+        # logbook.txt, README.md, myFigure.png, postProcessing/
+        # myAnalysis.txt matched the case's name patterns and were removed)
+        foreign = _unrecorded(path, record)
+    elif owner == script:
         foreign = _foreign(path, names, entries) if entries else []
     else:
         foreign = names
@@ -86,6 +175,70 @@ def checkOutputFolder(script, path, entries=()):
             % (path, len(foreign), script, " ".join(foreign[:5]),
                " ..." if len(foreign) > 5 else ""))
     return True
+
+
+def _pidAlive(pid):
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except (PermissionError, OverflowError, ValueError):
+        return True
+    return True
+
+
+def lockText(path):
+    """The lock file's lines as one text ("pid 123, host h, started ...,
+    script s"), "" if it cannot be read."""
+    try:
+        with open(os.path.join(path, LOCK), errors="replace") as f:
+            return ", ".join(line.strip() for line in f if line.strip())
+    except OSError:
+        return ""
+
+
+def lockFolder(script, path):
+    """Take the output folder path's lock (LOCK, flock) for this process's
+    whole run, path made if it is not there. A lock held by another live
+    script is a ScratchError naming it (pid, host, start, script); one
+    left by a script that ended (flock is released with its process) is
+    taken over, said on stderr when it names another process of this
+    host. Nothing is done when this process holds it already, or when the
+    shell script that runs this one holds it (LOCKED_ENV)."""
+    real = os.path.realpath(path)
+    if real in _held or os.environ.get(LOCKED_ENV) and \
+            os.path.realpath(os.environ[LOCKED_ENV]) == real:
+        return
+    os.makedirs(path, exist_ok=True)
+    lock = os.path.join(path, LOCK)
+    fd = os.open(lock, os.O_RDWR | os.O_CREAT | getattr(os, "O_NOFOLLOW", 0)
+                 | getattr(os, "O_CLOEXEC", 0), 0o644)
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        os.close(fd)
+        raise ScratchError(
+            "%s is in use by another script's run (its lock %s: %s): "
+            "emptying it would remove that run's files under it. Wait for "
+            "it to end, or give another folder. Nothing was removed."
+            % (path, lock, lockText(path) or "unreadable"))
+    old = lockText(path)
+    fields = dict(item.split(" ", 1) for item in old.split(", ")
+                  if " " in item)
+    try:
+        pid = int(fields.get("pid", "0"))
+    except ValueError:
+        pid = 0
+    if pid and pid != os.getpid() \
+            and fields.get("host") == socket.gethostname() \
+            and not _pidAlive(pid):
+        print("%s: note: taking over the stale lock of %s (%s: that "
+              "process has ended)" % (script, path, old), file=sys.stderr)
+    os.ftruncate(fd, 0)
+    os.write(fd, ("pid %d\nhost %s\nstarted %s\nscript %s\n" % (
+        os.getpid(), socket.gethostname(),
+        time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()), script)).encode())
+    _held[real] = fd
 
 
 def outputFolder(script, path, entries=()):
@@ -101,7 +254,22 @@ def outputFolder(script, path, entries=()):
     adv51 n01: eleven scripts removed a user's folder given as or inside
     their output folder, rm -rf / shutil.rmtree). Returns path. The
     shell scripts' etc/scratchFolder runs this."""
-    if checkOutputFolder(script, path, entries):
+    # the folder's lock first, held for the script's run (adv52 p01b (b)):
+    # a folder judged and emptied while another script still uses it is
+    # what the lock prevents; on a refusal below the lock file this made
+    # in a user's folder is removed again
+    made = not os.path.lexists(path)
+    hadLock = os.path.lexists(os.path.join(path, LOCK))
+    if not os.path.islink(path) and (made or os.path.isdir(path)):
+        lockFolder(script, path)
+    try:
+        emptied = checkOutputFolder(script, path, entries)
+    except ScratchError:
+        if not hadLock and os.path.realpath(path) in _held:
+            os.close(_held.pop(os.path.realpath(path)))
+            os.remove(os.path.join(path, LOCK))
+        raise
+    if emptied:
         # never under a run going on (adv52 p02 (b): a second gapStudy.sh
         # emptied its earlier folder under the first's running solver)
         from .allrunLock import busyUnder
@@ -112,10 +280,27 @@ def outputFolder(script, path, entries=()):
                 "under that run. Wait for it to end or stop it, or give "
                 "another folder. Nothing was removed."
                 % (path, busy[0][0], busy[0][1]))
-        shutil.rmtree(path)
+        # emptied but for its lock
+        for n in os.listdir(path):
+            if n == LOCK:
+                continue
+            full = os.path.join(path, n)
+            if os.path.isdir(full) and not os.path.islink(full):
+                shutil.rmtree(full)
+            else:
+                os.remove(full)
     os.makedirs(path, exist_ok=True)
+    # the record starts empty: a run killed before its end (no record of
+    # its own) vouches for nothing, and its folder is refused rather than
+    # judged by name patterns (adv53 l33: a killed runPreview.sh's folder
+    # with a user's logbook.txt added was emptied)
     with open(os.path.join(path, MARKER), "w") as f:
-        f.write(script + "\n")
+        f.write(script + "\nrecord\n")
+    # what the run leaves, recorded at its end (a shell script's by its
+    # EXIT trap, etc/scratchFolder)
+    if not os.environ.get(LOCKED_ENV):
+        import atexit
+        atexit.register(recordOutputs, path)
     return path
 
 
@@ -124,7 +309,7 @@ def copyInputs(src, dst, names, ignore=()):
     the new folder dst (or one outputFolder made: empty but for its
     marker), without what matches a pattern of ignore at any depth
     (meshes that the case's Allrun makes again)."""
-    if os.path.isdir(dst) and set(os.listdir(dst)) <= {MARKER}:
+    if os.path.isdir(dst) and set(os.listdir(dst)) <= {MARKER, LOCK}:
         pass
     else:
         os.makedirs(dst)
@@ -144,6 +329,14 @@ def main(argv=None):
     import argparse
     import sys
     args = sys.argv[1:] if argv is None else list(argv)
+    if args[:1] == ["--record"]:
+        for d in args[1:]:
+            try:
+                recordOutputs(d)
+            except OSError as e:
+                sys.exit("scratch --record: %s: %s" % (e.filename or d,
+                                                       e.strerror))
+        return 0
     if args[:1] == ["--outputFolder"]:
         if len(args) < 3:
             sys.exit("usage: python3 -m neuronFsi.scratch --outputFolder "

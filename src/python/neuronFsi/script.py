@@ -176,6 +176,28 @@ def _hook(name):
     return hook
 
 
+def arguments(n, usage, name=None):
+    """sys.argv[1:] when it holds at least n arguments; else the usage as
+    one line "<name>: error: usage: <usage>" on stderr, exit 1 (adv53 u12:
+    the analysis scripts without their arguments raised IndexError
+    tracebacks). name: the script's (default: its file name)."""
+    if len(sys.argv) - 1 < n:
+        sys.exit("%s: error: usage: %s" % (
+            name or os.path.basename(sys.argv[0]), usage))
+    return sys.argv[1:]
+
+
+def labelled(arg, what="LABEL=CASE", name=None):
+    """(label, value) of a command-line argument "LABEL=VALUE"; else one
+    line naming the argument and the form, exit 1 (adv53 u12: "not enough
+    values to unpack" tracebacks of the ladder scripts)."""
+    label, eq, value = arg.partition("=")
+    if not eq or not label or not value:
+        sys.exit("%s: error: argument '%s' is not of the form %s" % (
+            name or os.path.basename(sys.argv[0]), arg, what))
+    return label, value
+
+
 def guard(name=None):
     """From here on, an input's or environment's error that the script
     does not catch is printed as one line "<name>: error: <message>" on

@@ -13,14 +13,14 @@ writer; solid.xmf beside it describes the same datasets to ParaView).
 import h5py
 import numpy as np
 
+from . import options, resultDigest
+
 
 class SolidResultsError(Exception):
     """A dataset of solid.h5 whose values are not what was written; the
     message names the file and the dataset."""
 
 
-_FNV_OFFSET, _FNV_PRIME, _MASK = 0xcbf29ce484222325, 0x100000001b3, \
-    (1 << 64) - 1
 
 
 def digest64(values):
@@ -32,10 +32,9 @@ def digest64(values):
     cols = v.shape[1] if v.ndim > 1 else 1
     data = np.ascontiguousarray(v, dtype="<f8").tobytes() + \
         np.array([rows, cols], dtype="<u8").tobytes()
-    h = _FNV_OFFSET
-    for b in data:
-        h = ((h ^ b)*_FNV_PRIME) & _MASK
-    return h
+    # the project's one FNV-1a loop on the Python side (resultDigest.add,
+    # as fileDigest::add on the C++ side)
+    return resultDigest.add(resultDigest.BASIS, data)
 
 
 class SolidResults:
@@ -43,6 +42,11 @@ class SolidResults:
 
     def __init__(self, path):
         self.path = path
+        # no regular file (a directory, a FIFO): named before HDF5 opens
+        # it (adv53 u12: HDF5's "errno = 21, Is a directory")
+        refusal = options.readRefusal(path, 0, "results file")
+        if refusal:
+            raise SolidResultsError(refusal)
         try:
             self.file = h5py.File(path, "r")
         except OSError as err:

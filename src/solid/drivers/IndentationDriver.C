@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -274,12 +275,15 @@ void solid::IndentationDriver::openOutputs()
     ownCopy(path("peaks.dat"));
     forceFile_.open(path("force.dat"), std::ios::out | mode);
     forceFile_.precision(settings_.precision);
+    openDigests();
     if (!resume_)
     {
-        if (!runId_.empty()) forceFile_ << "# run " << runId_ << '\n';
-        forceFile_
-            << "# time [s]  depth [m]  force [N]  contactRadius [m]  "
-            << "maxPenetration [m]  stage" << '\n';
+        if (!runId_.empty()) writeLine(0, "# run " + runId_ + "\n");
+        writeLine
+        (
+            0, "# time [s]  depth [m]  force [N]  contactRadius [m]  "
+               "maxPenetration [m]  stage\n"
+        );
     }
     fields_.reset(new ResultWriter(path("solid"), model_, resume_, runId_));
     fieldSteps_ = resume_ ? int(resumeFrom_->scalar("fieldSteps")) : 0;
@@ -287,8 +291,8 @@ void solid::IndentationDriver::openOutputs()
     peakFile_.precision(settings_.precision);
     if (!resume_)
     {
-        if (!runId_.empty()) peakFile_ << "# run " << runId_ << '\n';
-        peakFile_ << "# label  time [s]  depth [m]  force [N]" << '\n';
+        if (!runId_.empty()) writeLine(1, "# run " + runId_ + "\n");
+        writeLine(1, "# label  time [s]  depth [m]  force [N]\n");
     }
     if (!forceFile_ || !peakFile_)
     {
@@ -394,12 +398,112 @@ void solid::IndentationDriver::advance(double dt)
 }
 
 
+void solid::IndentationDriver::openDigests()
+{
+    for (int k = 0; k < 2; ++k)
+    {
+        const std::string f(path(k ? "peaks.dat" : "force.dat"));
+        const std::string side(f + ".fnv1a64");
+        std::vector<std::string> kept;
+        if (resume_)
+        {
+            // the checkpoint's part: the digest lines up to its length
+            // (the rows after it are cut back and computed again), and
+            // the running digest from the checkpoint's
+            lineDigest_[k] = logDigest_[k];
+            lineBytes_[k] = logDigested_[k];
+            std::ifstream is(side, std::ios::binary);
+            std::string text
+            (
+                (std::istreambuf_iterator<char>(is)),
+                std::istreambuf_iterator<char>()
+            );
+            // whole lines only: one cut by a kill (no end of line) ends
+            // the part
+            text.erase(text.rfind('\n') == std::string::npos
+                     ? 0 : text.rfind('\n') + 1);
+            std::istringstream lines(text);
+            std::string line;
+            while (std::getline(lines, line))
+            {
+                std::istringstream ls(line);
+                std::uintmax_t n = 0;
+                std::string h;
+                if (!(ls >> n >> h) || n > lineBytes_[k])
+                {
+                    break;
+                }
+                kept.push_back(line);
+            }
+            if
+            (
+                kept.empty()
+             || kept.back() != std::to_string(lineBytes_[k]) + " "
+                  + fileDigest::hex(lineDigest_[k])
+            )
+            {
+                kept.push_back
+                (
+                    std::to_string(lineBytes_[k]) + " "
+                  + fileDigest::hex(lineDigest_[k])
+                );
+            }
+        }
+        else
+        {
+            lineDigest_[k] = fileDigest::basis;
+            lineBytes_[k] = 0;
+        }
+        // a file of its own (a hard-linked copy of the case keeps its
+        // own, adv52 p26), written anew by replacement
+        const std::string tmp(temporaryName(side));
+        {
+            std::ofstream os(tmp, std::ios::out | std::ios::trunc);
+            for (const std::string& l : kept) os << l << '\n';
+            if (!os.flush())
+            {
+                throw SolidError
+                (
+                    SolidError::Kind::io, "cannot write " + tmp
+                  + spaceNote(tmp)
+                );
+            }
+        }
+        commitFile(tmp, side);
+        digestFile_[k].open(side, std::ios::out | std::ios::app);
+        if (!digestFile_[k])
+        {
+            throw SolidError
+            (
+                SolidError::Kind::io, "cannot open " + side + " for writing"
+              + spaceNote(side)
+            );
+        }
+    }
+}
+
+
+void solid::IndentationDriver::writeLine(int k, const std::string& line)
+{
+    std::ofstream& os = k ? peakFile_ : forceFile_;
+    // the row reaches the file before its digest line (a killed run's
+    // sidecar never records bytes the file does not hold)
+    os << line << std::flush;
+    lineDigest_[k] = fileDigest::add(lineDigest_[k], line.data(), line.size());
+    lineBytes_[k] += line.size();
+    digestFile_[k]
+        << lineBytes_[k] << ' ' << fileDigest::hex(lineDigest_[k]) << '\n';
+}
+
+
 void solid::IndentationDriver::record(const std::string& stage)
 {
-    forceFile_
-        << model_.time << ' ' << protocol_->depth(model_.time) << ' '
+    std::ostringstream os;
+    os.precision(settings_.precision);
+    os  << model_.time << ' ' << protocol_->depth(model_.time) << ' '
         << last_.force << ' ' << last_.contactRadius << ' '
         << last_.maxPenetration << ' ' << stage << '\n';
+    writeLine(0, os.str());
 }
 
 
@@ -420,9 +524,11 @@ void solid::IndentationDriver::restore(const Saved& s)
 void solid::IndentationDriver::peakLine(const std::string& label)
 {
     const double depth = protocol_->depth(model_.time);
-    peakFile_
-        << label << ' ' << model_.time << ' ' << depth << ' '
+    std::ostringstream os;
+    os.precision(settings_.precision);
+    os  << label << ' ' << model_.time << ' ' << depth << ' '
         << last_.force << '\n';
+    writeLine(1, os.str());
     if (settings_.log)
     {
         *settings_.log
@@ -459,6 +565,8 @@ void solid::IndentationDriver::checkpoint(long row)
     // The lengths the outputs have now (flushed)
     forceFile_.flush();
     peakFile_.flush();
+    digestFile_[0].flush();
+    digestFile_[1].flush();
     int k = 0;
     for (const char* f : {"force.dat", "peaks.dat"})
     {
@@ -654,5 +762,20 @@ void solid::IndentationDriver::run()
     peakFile_.flush();
     outputLength("force.dat");
     outputLength("peaks.dat");
+    for (int k = 0; k < 2; ++k)
+    {
+        if (!digestFile_[k].flush())
+        {
+            const std::string side
+            (
+                path(k ? "peaks.dat.fnv1a64" : "force.dat.fnv1a64")
+            );
+            throw SolidError
+            (
+                SolidError::Kind::io, "cannot write " + side
+              + ": the write failed" + spaceNote(side)
+            );
+        }
+    }
     if (settings_.committed) settings_.committed();
 }

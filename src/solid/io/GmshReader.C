@@ -1,5 +1,5 @@
 #include "GmshReader.H"
-#include "FileKind.H"
+#include "fileKind.H"
 #include "SolidError.H"
 
 #include <algorithm>
@@ -521,14 +521,17 @@ public:
 solid::Mesh solid::readGmsh(const std::string& fileName, double scale)
 {
     // A FIFO (or socket, device) would block the open; a directory opens
-    // and reads as nothing: said as such (FileKind.H)
-    const std::string fileKind(notARegularFile(fileName));
-    if (!fileKind.empty())
+    // and reads as nothing; a file beyond any mesh's size is no mesh: said
+    // as such (src/foamTools/fileKind.H, the project's one look)
+    const std::string refusal
+    (
+        fileKind::readRefusal(fileName, fileKind::meshLimit, "gmsh mesh")
+    );
+    if (!refusal.empty())
     {
         throw SolidError
         (
-            SolidError::Kind::io, "cannot open gmsh file '" + fileName
-          + "': it is " + fileKind + ", not a file"
+            SolidError::Kind::io, "cannot open gmsh file: " + refusal
         );
     }
     MshParser parser(fileName);

@@ -2,7 +2,7 @@
 #include "AtomicFile.H"
 #include "SolidError.H"
 
-#include "FileKind.H"
+#include "fileKind.H"
 
 #include <hdf5.h>
 #include <string>
@@ -15,8 +15,8 @@ hid_t openFile(const std::string& name, solid::Hdf5File::Mode mode)
     using Mode = solid::Hdf5File::Mode;
     // A FIFO, socket or device blocks the open without end (issue 19,
     // adv28 ir06: solidToFoam given a FIFO as its results file waited
-    // without output): looked at first (FileKind.H)
-    const std::string kind(solid::notARegularFile(name));
+    // without output): looked at first (src/foamTools/fileKind.H)
+    const std::string kind(fileKind::notARegularFile(name));
     if (!kind.empty())
     {
         throw solid::SolidError

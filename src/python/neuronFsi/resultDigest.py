@@ -1,0 +1,219 @@
+"""The digests of our text results, verified before a result is measured
+(issue 19 class 5; adv52 p06b, p31: a hand-edited probe log, planeWave's
+reference.dat and the indentation's peaks.dat were measured and plotted as
+if they were ours).
+
+What a writer records (the project's one file digest, FNV-1a 64-bit over
+the bytes, continued: src/foamTools/fileDigest.H):
+
+- a sidecar `<file>.fnv1a64` beside a text result we write line by line:
+  one line "<bytes> <digest>" after each line of the file, the digest of
+  its first <bytes> bytes (cellIndentationFoam's force.dat and peaks.dat,
+  appended with each row and flushed with it; planeWave's reference.dat,
+  written whole: writeSidecar). The digests are cumulative, so the first
+  line whose digest differs is the first edited line.
+- the commit markers `<time>/.writeCommitted` of the OpenFOAM solvers: at
+  every write time a line "log <digest> <bytes> postProcessing/<log>/
+  <start>/<file>" for every log a restart continues (the probes,
+  movingMeshProbes and fieldMinMax function objects, cellBlastFoam's fsi,
+  solidProbes, solidInterfaces; src/foamTools/restartLogs.H). Those logs
+  are written by OpenFOAM's function objects, whose writes we do not hold:
+  the digests are per write interval, and an edit is named by the first
+  line of the first interval whose bytes differ.
+
+check(path) verifies a file against whichever it has and raises a
+DigestError naming the file and the first line that is not as written; a
+file with neither (made by hand, or written before this version) is
+refused too, unless the caller's explicit option says to measure it as it
+is (handMade=True). Rows written after the last record (a run killed
+between write times, or still going) are not covered: check returns their
+first line (None if there are none)."""
+
+import glob
+import os
+
+from . import options
+
+SUFFIX = ".fnv1a64"
+BASIS = 0xcbf29ce484222325
+_PRIME = 0x100000001b3
+_MASK = (1 << 64) - 1
+
+
+# The measuring script's explicit option to measure files without (or not
+# matching) their digests, and whether the user gave it (measuring()):
+# the readers' check() then passes them
+_option = "-acceptHandMade"
+_handMade = False
+
+
+def measuring(option, given):
+    """Set by a script that measures results: the name of its option that
+    accepts hand-made files (named in the refusals) and whether the user
+    gave it."""
+    global _option, _handMade
+    _option, _handMade = option, bool(given)
+
+
+class DigestError(Exception):
+    """A result that is not as its writer wrote it, or has no digest; the
+    message names the file and the line."""
+
+
+def add(h, data):
+    """Continue the FNV-1a 64-bit digest h over the bytes data (that of
+    fileDigest::add)."""
+    for b in data:
+        h = ((h ^ b) * _PRIME) & _MASK
+    return h
+
+
+def hexText(h):
+    """The digest as fileDigest::hex writes it: lower-case hex digits,
+    without leading zeros (compared as numbers: check)."""
+    return "%x" % h
+
+
+def writeSidecar(path):
+    """Write path's sidecar path + SUFFIX: one "<bytes> <digest>" line
+    after each of its lines (for a file written whole: planeWave's
+    reference.dat), by replacement."""
+    from . import script
+    with open(path, "rb") as f:
+        data = f.read()
+    h, n, out = BASIS, 0, []
+    for line in data.splitlines(keepends=True):
+        h = add(h, line)
+        n += len(line)
+        out.append("%d %s\n" % (n, hexText(h)))
+    with script.replacing(path + SUFFIX) as f:
+        f.write("".join(out))
+
+
+def _sidecarRecords(path):
+    side = path + SUFFIX
+    if not os.path.isfile(side):
+        return None
+    refusal = options.readRefusal(side, options.TABLE_LIMIT, "digest file")
+    if refusal:
+        raise DigestError(refusal)
+    records = []
+    with open(side, errors="replace") as f:
+        lines = f.read().split("\n")
+    # the last line without its end: cut by a kill while the sidecar was
+    # written (its rows then are the uncovered tail), not a damage
+    for k, line in enumerate(lines[:-1], 1):
+        parts = line.split()
+        try:
+            records.append((int(parts[0]), int(parts[1], 16), side, k))
+            if len(parts) != 2 or len(parts[1]) > 16:
+                raise ValueError
+        except (ValueError, IndexError):
+            raise DigestError("%s, line %d: not a line '<bytes> <digest>' "
+                              "of the digests of %s (damaged or edited)"
+                              % (side, k, path))
+    return records
+
+
+def _caseOf(path):
+    """(case, path relative to it) of a file under <case>/postProcessing/,
+    (None, None) otherwise."""
+    full = os.path.abspath(path)
+    parts = full.split(os.sep)
+    if "postProcessing" not in parts:
+        return None, None
+    k = len(parts) - 1 - parts[::-1].index("postProcessing")
+    case = os.sep.join(parts[:k]) or os.sep
+    return case, "/".join(parts[k:])
+
+
+def _markerRecords(path):
+    """The commit markers' "log" lines of path: [(bytes, digest, marker,
+    line)], None if no marker records it."""
+    case, rel = _caseOf(path)
+    if case is None:
+        return None
+    records = []
+    markers = glob.glob(os.path.join(case, "*", ".writeCommitted")) \
+        + glob.glob(os.path.join(case, "processor0", "*", ".writeCommitted"))
+    for m in sorted(markers):
+        # time directories only (not a <time>.incomplete or .overwritten
+        # one moved aside, whose digests are of an earlier run's logs)
+        try:
+            float(os.path.basename(os.path.dirname(m)))
+        except ValueError:
+            continue
+        try:
+            with open(m, errors="replace") as f:
+                for k, line in enumerate(f, 1):
+                    parts = line.rstrip("\n").split(" ", 3)
+                    if len(parts) == 4 and parts[0] == "log" \
+                            and parts[3] == rel:
+                        try:
+                            records.append((int(parts[2]),
+                                            int(parts[1], 16), m, k))
+                        except ValueError:
+                            pass
+        except OSError:
+            pass
+    return records or None
+
+
+def _lineOf(data, offset):
+    """The line number (from 1) holding byte offset of data."""
+    return data.count(b"\n", 0, offset) + 1
+
+
+def check(path, handMade=None, option=None):
+    """Verify path against its sidecar or the commit markers (see the
+    module). handMade: measure it as it is, without a word (the user's
+    explicit option, named by option in the messages). Returns the first
+    line after the last record (rows not covered), None if none. Without
+    handMade and option: the script's (measuring())."""
+    if handMade is None:
+        handMade = _handMade
+    if option is None:
+        option = _option
+    # no regular file, or beyond a table's size: named first (adv53 l12
+    # (f): a FIFO as reference.dat)
+    refusal = options.readRefusal(path, options.TABLE_LIMIT, "result file")
+    if refusal:
+        raise DigestError(refusal)
+    if handMade:
+        return None
+    records = _sidecarRecords(path)
+    if records is None:
+        records = _markerRecords(path)
+    if records is None:
+        raise DigestError(
+            "%s has no digest of the run that wrote it (no %s beside it, no "
+            "commit marker of the case recording it): it was made or "
+            "changed by hand, or written before results carried digests. "
+            "To measure it as it is, give %s" % (path, path + SUFFIX, option))
+    with open(path, "rb") as f:
+        data = f.read()
+    done = {}
+    for n, digest, source, k in records:
+        done.setdefault(n, (digest, source, k))
+    h, prev = BASIS, 0
+    for n in sorted(done):
+        digest, source, k = done[n]
+        if n > len(data):
+            raise DigestError(
+                "%s, line %d: the file ends (%d bytes) before the %d bytes "
+                "its writer recorded (%s, line %d): it was cut after it was "
+                "written. Restore it as the run wrote it, or give %s to "
+                "measure it as it is" % (path, _lineOf(data, len(data)),
+                                         len(data), n, source, k, option))
+        h = add(h, data[prev:n])
+        if h != digest:
+            raise DigestError(
+                "%s, line %d: the file is not as the run wrote it (its bytes "
+                "%d to %d, lines %d to %d, differ from the digest recorded in "
+                "%s, line %d): edited or damaged after it was written. "
+                "Restore it as the run wrote it, or give %s to measure it "
+                "as it is" % (path, _lineOf(data, prev), prev + 1, n,
+                              _lineOf(data, prev), _lineOf(data, n - 1),
+                              source, k, option))
+        prev = n
+    return _lineOf(data, prev) if prev < len(data) else None
