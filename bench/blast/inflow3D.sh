@@ -33,6 +33,13 @@
 #   (scaleFreeCellPointWeight; docs/results/blast3D.md, "Where the water
 #   probes sample"), and the two sets should agree to the schemes'
 #   difference
+#   MEMBRANE=water in the environment: the transparent quarter, the
+#   membrane's quadratic law replaced by water's Mie-Grueneisen law in
+#   the prepared case's constant/solidProperties (neuronFsi.membraneLaw,
+#   as bench/blast/restVariants3D.sh membrane=water): every region water
+#   to its shear moduli, whose exact answer is planeWave's 1D column
+#   everywhere (docs/results/blast3D.md, "The quarter with the interface
+#   reading at 0.5 um, 0.25 um water")
 #
 # While cellBlastFoam runs, the load average is sampled every 15 s into
 # DIR/quarter3D/log.load (printed as its range at the end).
@@ -47,12 +54,17 @@
 # solidMeasures.dat; on N ranks too since branch q3dG: planeWave reads
 # the master's probe files in the case, no reconstructPar needed).
 set -euo pipefail
-[ $# -ge 2 ] || { sed -n 2,37p "$0"; exit 1; }
+[ $# -ge 2 ] || { sed -n 2,44p "$0"; exit 1; }
 dir=$1; np=$2; shift 2
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 . "$root/etc/bashrc"
 [ ! -e "$dir" ] || { echo "inflow3D.sh: $dir exists" >&2; exit 1; }
+case ${MEMBRANE:-} in
+''|water) ;;
+*) echo "inflow3D.sh: MEMBRANE=$MEMBRANE: the only value is water" >&2
+   exit 1 ;;
+esac
 c=$dir/quarter3D
 python3 -m neuronFsi.scratch "$root/tutorials/blast/quarter3D" "$c" \
     0.orig constant system Allrun --ignore polyMesh '*.msh' inflowWave cellDecomposition
@@ -69,6 +81,12 @@ echo "== ./Allrun -noRun -noPlots ${npOpt[*]} $*"
 PROJECT_DIR=$root ./Allrun -noRun -noPlots "${npOpt[@]}" "$@" > log.prepare 2>&1 \
     || { tail -20 log.prepare; exit 1; }
 grep '^Pulse' log.prepare || true
+if [ "${MEMBRANE:-}" = water ]
+then
+    python3 -m neuronFsi.membraneLaw water constant/solidProperties
+    echo "== MEMBRANE=water: the membrane's law in constant/solidProperties:" \
+        "$(grep -A2 '^    membrane' constant/solidProperties | tail -1 | tr -s ' ')"
+fi
 if [ "${FITPROBES:-0}" = 1 ]
 then
     locations=$(foamDictionary -entry functions/fluidProbes/probeLocations \
