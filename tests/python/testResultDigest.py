@@ -42,6 +42,28 @@ class Digest(TempDirTestCase):
         resultDigest.measuring("--accept-hand-made", True)
         self.assertIsNone(resultDigest.check(p))
 
+    def testDigestWithALeadingZero(self):
+        """fileDigest::hex writes no leading zeros (one digest in 16 has
+        15 digits or fewer: adv53's regressions (1), (2) on fix19j's merge,
+        every finished indentation refused): such a line, and the same
+        digest written with its zeros, are taken."""
+        rows, h, i = ["# t F\n"], resultDigest.add(resultDigest.BASIS,
+                                                   b"# t F\n"), 0
+        while len(resultDigest.hexText(h)) == 16:
+            i += 1
+            rows.append("%d %d\n" % (i, 2*i))
+            h = resultDigest.add(h, rows[-1].encode())
+        self.assertLess(len(resultDigest.hexText(h)), 16)
+        p = self.write("force.dat", "".join(rows))
+        resultDigest.writeSidecar(p)
+        self.assertIsNone(resultDigest.check(p))
+        with open(p + resultDigest.SUFFIX) as f:
+            lines = f.read().splitlines()
+        with open(p + resultDigest.SUFFIX, "w") as f:
+            f.write("".join("%s %016x\n" % (n, int(d, 16)) for n, d in
+                            (x.split() for x in lines)))
+        self.assertIsNone(resultDigest.check(p))
+
     def testKilledRunsSidecarCutInALine(self):
         """A run killed while its sidecar's last line was written (adv53
         l32's killed indentation): that line is not a damage; the rows it
