@@ -35,19 +35,21 @@ import sys
 
 from neuronFsi import script  # noqa: E402
 script.guard()  # an input's error: one line, exit 1 (adv53 u12)
-from neuronFsi import convergence
+from neuronFsi import convergence, planeWave
 
 
-def rows(path):
-    return [l.split() for l in open(path) if not l.startswith("#")]
+def byProbe(case, sub, name):
+    """planeWave's measures.dat or solidMeasures.dat of the case as
+    {probe: row} (neuronFsi.planeWave.readMeasures: rows by column name)"""
+    return {r["probe"]: r for r in planeWave.readMeasures(
+        os.path.join(case, "postProcessing", sub, "0", name))}
 
 
 def level(arg, layered):
     scale, d = script.labelled(arg, "SCALE=CASE")
     case = os.path.join(d, "axisymmetricPreview")
     sub = "planeWaveLayered" if layered else "planeWave"
-    m = {r[0]: r for r in rows(os.path.join(case, "postProcessing", sub, "0",
-                                            "measures.dat"))}
+    m = byProbe(case, sub, "measures.dat")
     cells = re.search(r"^\s*cells:\s+(\d+)", open(os.path.join(
         case, "log.checkMesh")).read(), re.M).group(1)
     cpu = re.search(r"^CPU time of the time loop ([0-9.e+-]+) s", open(
@@ -57,18 +59,22 @@ def level(arg, layered):
     probes = re.findall(r"\(([0-9.e+-]+) ([0-9.e+-]+) 0\)", open(os.path.join(
         case, "system", "controlDict.allrun")).read())
     for i, (r, z) in enumerate(probes):
-        out["water r=%g um" % (float(r)*1e6)] = float(m["fluidProbes_%d" % i][13])
+        out["water r=%g um" % (float(r)*1e6)] = \
+            m["fluidProbes_%d" % i]["errPeak1ns"]
     s = m["solid_p0"]
-    for name, col in (("solid incident", 14), ("solid 1-ns peak", 13),
-                      ("solid plateau", 15), ("solid impulse", 16)):
-        out[name] = float(s[col])
+    for name, col in (("solid incident", "errPeakIncident"),
+                      ("solid 1-ns peak", "errPeak1ns"),
+                      ("solid plateau", "errPlateau"),
+                      ("solid impulse", "errImpulse")):
+        out[name] = s[col]
     return out
 
 
 BOUNDS = {"peak1ns": 5.0, "peakIncident": 5.0, "plateau": 5.0,
           "impulse": 3.0, "arrival": 0.3}
-COLUMNS = {"arrival": 12, "peak1ns": 13, "peakIncident": 14, "plateau": 15,
-           "impulse": 16}
+COLUMNS = {"arrival": "errArrival", "peak1ns": "errPeak1ns",
+           "peakIncident": "errPeakIncident", "plateau": "errPlateau",
+           "impulse": "errImpulse"}
 
 
 def item1(arg, layered):
@@ -76,8 +82,7 @@ def item1(arg, layered):
     label, d = script.labelled(arg, "LABEL=CASE")
     case = os.path.join(d, "axisymmetricPreview")
     sub = "planeWaveLayered" if layered else "planeWave"
-    m = {r[0]: r for r in rows(os.path.join(case, "postProcessing", sub, "0",
-                                            "measures.dat"))}
+    m = byProbe(case, sub, "measures.dat")
     log = open(os.path.join(case, "log.cellBlastFoam")).read()
     cells = re.search(r"^\s*cells:\s+(\d+)", open(os.path.join(
         case, "log.checkMesh")).read(), re.M).group(1)
@@ -90,7 +95,7 @@ def item1(arg, layered):
 
     def err(name, key):
         v = m[name][COLUMNS[key]]
-        return None if v == "-" else float(v)
+        return None if v == "-" else v
     out = [label, cells, elements, "%.1f" % float(cpu)]
     for r in (1e-7, 4e-6):
         out.append("%+.2f %%" % err(water[r], "peak1ns"))
@@ -104,19 +109,22 @@ def item1(arg, layered):
         e = [(abs(err(n, key)), n) for n in m if err(n, key) is not None]
         worst = max(e)
         out.append(("%.3f ns" if key == "arrival" else "%.2f %%") % worst[0])
-    solid = {r[0]: r for r in rows(os.path.join(
-        case, "postProcessing", sub, "0", "solidMeasures.dat"))}
-    for col, key in ((5, "vonMises1ns"), (8, "strain1ns")):
-        out.append(" / ".join("%+.2f %%" % float(solid[n][col])
+    solid = byProbe(case, sub, "solidMeasures.dat")
+    for col, key in (("errVonMises", "vonMises1ns"),
+                     ("errStrain", "strain1ns")):
+        out.append(" / ".join("%+.2f %%" % solid[n][col]
                               for n in ("solid_0", "solid_1")))
         for n in ("solid_0", "solid_1"):
-            if abs(float(solid[n][col])) > 5.0:
+            if abs(solid[n][col]) > 5.0:
                 fails.append("%s (%s) %s %+.2f" % (n.replace("_", " "),
-                             solid[n][1], key, float(solid[n][col])))
+                             solid[n]["region"], key, solid[n][col]))
     names = {v: "water r = %g um" % (r*1e6) for r, v in water.items()}
     for n in m:
         # solid p2 (the cytoplasm side named) repeats p0 (the same side)
-        if n == "solid_p2" and m[n][2:] == m.get("solid_p0", [])[2:]:
+        if n == "solid_p2" and {k: v for k, v in m[n].items()
+                                if k not in ("probe", "z")} == {
+                k: v for k, v in m.get("solid_p0", {}).items()
+                if k not in ("probe", "z")}:
             continue
         for key, bound in BOUNDS.items():
             e = err(n, key)
