@@ -40,6 +40,17 @@
 #   to its shear moduli, whose exact answer is planeWave's 1D column
 #   everywhere (docs/results/blast3D.md, "The quarter with the interface
 #   reading at 0.5 um, 0.25 um water")
+#   LINEPROBES=1 in the environment: two z-lines of probes through the
+#   cell and the water above it, on the axis (x = y = 0.1 um) and at
+#   x = y = 5 um: solid probes (material points, every 0.25 um from
+#   0.125 um; listed before the interfaceProbe, whose three probes then
+#   come last in solidProbes.dat) and water probes (function object
+#   echoLines, cellPoint, every 0.25 um from 8 um on the axis, from
+#   4.5 um at x = y = 5 um, to 12 um); planeWave measures them all
+#   (bench/blast/analysis/incidentWindow.py CASE --foot 51e6: the echo's
+#   foot along the lines; docs/results/blast3D.md, "What spreads the
+#   echo in the cell (branch echo49)"). Not with FITPROBES=1 (not tried:
+#   two appended functions blocks)
 #
 # While cellBlastFoam runs, the load average is sampled every 15 s into
 # DIR/quarter3D/log.load (printed as its range at the end).
@@ -109,6 +120,43 @@ functions
 }
 EOF
     echo "== fluidProbesFit (cellLinearFit) at $locations"
+fi
+if [ "${LINEPROBES:-0}" = 1 ]
+then
+    # two z-lines through the cell and the water above it: the axis
+    # (x = y = 0.1 um, as the axis water probe) and x = y = 5 um; solid
+    # probes (material points, listed first: the interfaceProbe's three
+    # come after them) every 0.25 um inside the cell, water probes
+    # (movingMeshProbes, cellPoint) every 0.25 um above it
+    /usr/bin/python3 - >> constant/solidProperties <<'PY'
+import numpy as np
+pts = [(1e-7, 1e-7, z) for z in np.arange(0.125e-6, 7.9e-6, 0.25e-6)]
+pts += [(5e-6, 5e-6, z) for z in np.arange(0.125e-6, 4.0e-6, 0.25e-6)]
+print("\n// inflow3D.sh LINEPROBES=1: the axis and x = y = 5 um in the cell")
+print("probes (%s);" % " ".join("(%.6g %.6g %.6g)" % p for p in pts))
+PY
+    lines=$(/usr/bin/python3 -c '
+import numpy as np
+pts = [(1e-7, 1e-7, z) for z in np.arange(8.0e-6, 12.01e-6, 0.25e-6)]
+pts += [(5e-6, 5e-6, z) for z in np.arange(4.5e-6, 12.01e-6, 0.25e-6)]
+print("(%s)" % " ".join("(%.6g %.6g %.6g)" % p for p in pts))')
+    cat >> system/controlDict <<EOF
+
+// inflow3D.sh LINEPROBES=1: the axis and x = y = 5 um in the water above
+functions
+{
+    echoLines
+    {
+        type            movingMeshProbes;
+        libs            ("libfsi.so");
+        writeControl    timeStep;
+        writeInterval   1;
+        fields          (p);
+        probeLocations  $lines;
+    }
+}
+EOF
+    echo "== LINEPROBES=1: solid probes on the two lines (constant/solidProperties), water probes echoLines"
 fi
 niceness=${NICENESS:-10}
 (

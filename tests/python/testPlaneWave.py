@@ -282,6 +282,22 @@ class RunningMean(unittest.TestCase):
         self.assertTrue(tc[0] >= 0.5e-9 and tc[-1] <= 9.5e-9)
 
 
+class CrossingAfter(unittest.TestCase):
+
+    def testFirstCrossingAfterAStart(self):
+        # p: 0 up to 50 (first front at 1-2 s), then up to 104 (3-4 s)
+        t = np.array([0, 1, 2, 3, 4, 5.0])
+        p = np.array([0, 0, 50, 50, 104, 104.0])
+        # the first front is before t0: the echo's foot on the second
+        self.assertAlmostEqual(pw.crossingAfter(t, p, 2.5, 51), 3 + 1/54)
+        self.assertAlmostEqual(pw.crossingAfter(t, p, 0, 25), 1.5)
+        # a level reached at t0's sample and a level never reached
+        self.assertEqual(pw.crossingAfter(t, p, 4, 60), 4)
+        self.assertIsNone(pw.crossingAfter(t, p, 0, 105))
+        # the sample before t0 is not interpolated from: t0's own sample
+        self.assertEqual(pw.crossingAfter(t, p, 1.5, 40), 2)
+
+
 class Measures(unittest.TestCase):
 
     def setUp(self):

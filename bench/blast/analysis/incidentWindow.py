@@ -43,16 +43,6 @@ from neuronFsi import options, resultDigest
 from neuronFsi.postProcessing import ColumnFileError
 
 
-def firstAfter(t, p, t0, level):
-    k = np.flatnonzero((t >= t0) & (p >= level))
-    if not len(k):
-        return None
-    k = k[0]
-    if k == 0 or t[k - 1] < t0:
-        return t[k]
-    return t[k - 1] + (level - p[k - 1])*(t[k] - t[k - 1])/(p[k] - p[k - 1])
-
-
 def pressure(text):
     """--level, --foot: a finite pressure in (0, 1e9] Pa (adv51 m06: nan,
     inf, -1, 1e400 accepted; nan printed every echo column as "-")"""
@@ -188,8 +178,8 @@ def main():
             pk[0][0]/1e6, pk[1][0]/1e6, 100*(pk[0][0]/pk[1][0] - 1),
             pk[0][1]*1e9, pk[1][1]*1e9))
         for level in (a.level, a.foot):
-            es = firstAfter(t, p, ta + 2e-9, level)
-            er = firstAfter(tr, pr, ta + 2e-9, level)
+            es = pw.crossingAfter(t, p, ta + 2e-9, level)
+            er = pw.crossingAfter(tr, pr, ta + 2e-9, level)
             row.append("%s/%s (%s)" % (
                 "-" if es is None else "%.2f" % (es*1e9),
                 "-" if er is None else "%.2f" % (er*1e9),

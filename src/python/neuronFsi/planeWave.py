@@ -1365,6 +1365,23 @@ def _crossing(t, p, level):
     return t[k - 1] + (level - p[k - 1])*(t[k] - t[k - 1])/(p[k] - p[k - 1])
 
 
+def crossingAfter(t, p, t0, level):
+    """The first time at or after t0 [s] at which p reaches level [Pa],
+    linear between samples (from t0 itself if the sample before t0 is
+    already at the level's side below); None if it never does. The echo's
+    foot or arrival at a probe: crossingAfter(t, p, ta + 2 ns, 51e6)
+    (bench/blast/analysis/incidentWindow.py, bench/blast/echoChain.py)."""
+    t = np.asarray(t, dtype=float)
+    p = np.asarray(p, dtype=float)
+    k = np.flatnonzero((t >= t0) & (p >= level))
+    if not len(k):
+        return None
+    k = k[0]
+    if k == 0 or t[k - 1] < t0:
+        return t[k]
+    return t[k - 1] + (level - p[k - 1])*(t[k] - t[k - 1])/(p[k] - p[k - 1])
+
+
 def arrival(t, p, amplitude):
     """The arrival of a pulse of amplitude [Pa] in p(t): the first time p
     reaches half of it [s]; None if it never does."""
