@@ -20,7 +20,8 @@ Description
     the passes without a changed point counted.
 
     bandFaceGeometry (the face kernels of the band's update): centre,
-    sweptVol and moveFace equal to face::centre and face::sweptVol, their
+    sweptVol, moveFace and moveQuadPair (two quadrilaterals at once, each
+    lane against its own face's results) equal to face::centre and face::sweptVol, their
     face centre and area to primitiveMesh's loop, bit for bit (the
     doubles' bytes compared, so -0 against +0 counts) on random planar and
     non-planar triangles to hexagons at several scales and on degenerate
@@ -41,6 +42,7 @@ Description
 
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <iomanip>
 #include <sstream>
 
@@ -691,6 +693,69 @@ struct faceChecker
         EXPECT_TRUE(sameBits(fCtr3, fCtrRef) && sameBits(fArea3, fAreaRef))
             << what << ": centreAndArea";
         ++nChecked;
+
+        if (f.size() == 4)
+        {
+            checkPair(f, oldP, newP, cOld, cNew, svRef, fCtrRef, fAreaRef, what);
+        }
+    }
+
+    //- The last quadrilateral checked and its results
+    struct quad
+    {
+        pointField oldP, newP;
+        point cOld, cNew;
+        scalar swept;
+        vector fCtr, fArea;
+        std::string what;
+    };
+    std::unique_ptr<quad> last;
+    label nPairs = 0;
+
+    //- moveQuadPair on the last quadrilateral and this one (each lane
+    //  against the face's own results), and on this one twice
+    void checkPair
+    (
+        const face& f,
+        const pointField& oldP,
+        const pointField& newP,
+        const point& cOld,
+        const point& cNew,
+        const scalar swept,
+        const vector& fCtr,
+        const vector& fArea,
+        const std::string& what
+    )
+    {
+        quad q{oldP, newP, cOld, cNew, swept, fCtr, fArea, what};
+        const quad& a = last ? *last : q;
+        using namespace bandFaceGeometry;
+        const facePoints<4> O[2] = {{f, a.oldP}, {f, q.oldP}};
+        const facePoints<4> P[2] = {{f, a.newP}, {f, q.newP}};
+        const point cOlds[2] = {a.cOld, q.cOld};
+        point cNews[2];
+        scalar swepts[2];
+        vector fCtrs[2], fAreas[2];
+        moveQuadPair(O, P, cOlds, cNews, swepts, fCtrs, fAreas);
+        const quad* lanes[2] = {&a, &q};
+        for (label l = 0; l < 2; ++l)
+        {
+            const quad& r = *lanes[l];
+            EXPECT_TRUE(sameBits(cNews[l], r.cNew))
+                << r.what << ": moveQuadPair lane " << l << " centre "
+                << str(cNews[l]) << " against " << str(r.cNew);
+            EXPECT_TRUE(sameBits(swepts[l], r.swept))
+                << r.what << ": moveQuadPair lane " << l << " sweptVol "
+                << str(swepts[l]) << " against " << str(r.swept);
+            EXPECT_TRUE(sameBits(fCtrs[l], r.fCtr))
+                << r.what << ": moveQuadPair lane " << l << " face centre "
+                << str(fCtrs[l]) << " against " << str(r.fCtr);
+            EXPECT_TRUE(sameBits(fAreas[l], r.fArea))
+                << r.what << ": moveQuadPair lane " << l << " face area "
+                << str(fAreas[l]) << " against " << str(r.fArea);
+        }
+        last.reset(new quad(q));
+        ++nPairs;
     }
 };
 
@@ -807,6 +872,7 @@ TEST(bandFaceGeometry, centreAndSweptVolAreFaceCentreAndSweptVolBitForBit)
         check(f, negZero, poly, "-0 off the plane" + size);
     }
     EXPECT_GT(check.nChecked, 14000);
+    EXPECT_GT(check.nPairs, 3600);
 }
 
 

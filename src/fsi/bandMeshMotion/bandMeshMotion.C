@@ -208,25 +208,11 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
     surfaceScalarField::Boundary& magSfbf = magSf.boundaryFieldRef();
     changedCells_.reset();
     label nFacesChanged = 0;
-    forAll(faces_, i)
+
+    // meshPhi, |Sf| and the changed cells of a moved face
+    auto moved = [&](const label i, const scalar sweptVol)
     {
         const label facei = faces_[i];
-        const face& f = faces[facei];
-        bool changed = all;
-        for (label k = 0; !changed && k < f.size(); ++k)
-        {
-            changed = changedPoints_.test(f[k]);
-        }
-        if (!changed)
-        {
-            continue;
-        }
-        scalar sweptVol;
-        bandFaceGeometry::moveFace
-        (
-            f, oldPoints, points, oldCentres_[i],
-            newCentres_[i], sweptVol, fCtrs[facei], fAreas[facei]
-        );
         changedCells_.set(own[facei]);
         const scalar swept = sweptVol*rDeltaT;
         const scalar m = mag(fAreas[facei]) + VSMALL;
@@ -250,6 +236,80 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
             }
         }
         ++nFacesChanged;
+    };
+
+    // Every band point changed (the band moving): no test per face
+    const bool every = all || nChanged == points_.size();
+
+    // Quadrilaterals two at a time (bandFaceGeometry::moveQuadPair: each
+    // lane moveFace's operations), the others one by one
+    label waiting = -1;
+    forAll(faces_, i)
+    {
+        const label facei = faces_[i];
+        const face& f = faces[facei];
+        if (!every)
+        {
+            bool changed = false;
+            for (label k = 0; !changed && k < f.size(); ++k)
+            {
+                changed = changedPoints_.test(f[k]);
+            }
+            if (!changed)
+            {
+                continue;
+            }
+        }
+        if (f.size() != 4)
+        {
+            scalar sweptVol;
+            bandFaceGeometry::moveFace
+            (
+                f, oldPoints, points, oldCentres_[i],
+                newCentres_[i], sweptVol, fCtrs[facei], fAreas[facei]
+            );
+            moved(i, sweptVol);
+        }
+        else if (waiting < 0)
+        {
+            waiting = i;
+        }
+        else
+        {
+            const label j[2] = {waiting, i};
+            const face& fw = faces[faces_[waiting]];
+            const bandFaceGeometry::facePoints<4> O[2] =
+                {{fw, oldPoints}, {f, oldPoints}};
+            const bandFaceGeometry::facePoints<4> P[2] =
+                {{fw, points}, {f, points}};
+            const point cOld[2] = {oldCentres_[waiting], oldCentres_[i]};
+            point cNew[2];
+            scalar sweptVol[2];
+            vector fCtr[2], fArea[2];
+            bandFaceGeometry::moveQuadPair
+            (
+                O, P, cOld, cNew, sweptVol, fCtr, fArea
+            );
+            for (label l = 0; l < 2; ++l)
+            {
+                newCentres_[j[l]] = cNew[l];
+                fCtrs[faces_[j[l]]] = fCtr[l];
+                fAreas[faces_[j[l]]] = fArea[l];
+                moved(j[l], sweptVol[l]);
+            }
+            waiting = -1;
+        }
+    }
+    if (waiting >= 0)
+    {
+        const label facei = faces_[waiting];
+        scalar sweptVol;
+        bandFaceGeometry::moveFace
+        (
+            faces[facei], oldPoints, points, oldCentres_[waiting],
+            newCentres_[waiting], sweptVol, fCtrs[facei], fAreas[facei]
+        );
+        moved(waiting, sweptVol);
     }
     nFaceUpdates_ += nFacesChanged;
     centresEvent_ = points.eventNo();
@@ -263,7 +323,7 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
         forAll(cells_, i)
         {
             const label celli = cells_[i];
-            if (!changedCells_.test(celli))
+            if (!every && !changedCells_.test(celli))
             {
                 continue;
             }
@@ -320,7 +380,8 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
         const label facei = interpFaces_[j];
         if
         (
-            !changedCells_.test(own[facei])
+            !every
+         && !changedCells_.test(own[facei])
          && (facei >= nInternal || !changedCells_.test(nei[facei]))
         )
         {
