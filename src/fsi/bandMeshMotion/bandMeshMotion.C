@@ -209,16 +209,26 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
     changedCells_.reset();
     label nFacesChanged = 0;
 
+    // Every band point changed (the band moving): no test per face, cell
+    // or factor
+    const bool every = all || nChanged == points_.size();
+
     // meshPhi, |Sf| and the changed cells of a moved face
     auto moved = [&](const label i, const scalar sweptVol)
     {
         const label facei = faces_[i];
-        changedCells_.set(own[facei]);
+        if (!every)
+        {
+            changedCells_.set(own[facei]);
+            if (facei < nInternal)
+            {
+                changedCells_.set(nei[facei]);
+            }
+        }
         const scalar swept = sweptVol*rDeltaT;
         const scalar m = mag(fAreas[facei]) + VSMALL;
         if (facei < nInternal)
         {
-            changedCells_.set(nei[facei]);
             phii[facei] = swept;
             magSfi[facei] = m;
         }
@@ -237,9 +247,6 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
         }
         ++nFacesChanged;
     };
-
-    // Every band point changed (the band moving): no test per face
-    const bool every = all || nChanged == points_.size();
 
     // Quadrilaterals two at a time (bandFaceGeometry::moveQuadPair: each
     // lane moveFace's operations), the others one by one
