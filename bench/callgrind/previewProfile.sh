@@ -23,6 +23,12 @@
 #       BUILD  a copy of a worktree's platforms/linux64GccDPInt32Opt
 #              (bin/cellBlastFoam and lib/)
 #   NICENESS=N (default 10)
+#   FROM="REF TIME"  instead of the start: a window of a finished run from
+#              its write time TIME to END (REF a case of
+#              tests/blast/runPreview.sh; its inputs, solid/, postProcessing
+#              and TIME copied, startFrom latestTime, as
+#              bench/blast/restartWindow.sh), e.g. the passage of the pulse
+#              (FROM="REF 6.55e-08", END 6.628e-08: 23 steps of 2-3 passes)
 #   EDIT=CMD   a shell command run in the last build's copy of the case
 #              before its run (one build twice with an input changed, e.g.
 #              EDIT="sed -i 's/timeScheme .*/&\n wedgeFaces cellPressure;/'
@@ -32,7 +38,7 @@
 # DIR/table.txt. Takes about 50x the native run per build (70 steps: a
 # few minutes each on an idle core).
 set -euo pipefail
-[ $# -ge 3 ] || { sed -n 2,32p "$0"; exit 1; }
+[ $# -ge 3 ] || { sed -n 2,38p "$0"; exit 1; }
 dir=$1; end=$2; shift 2
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -48,9 +54,27 @@ done
 [ ! -e "$dir" ] || { echo "previewProfile.sh: $dir exists" >&2; exit 1; }
 mkdir -p "$dir"
 dir=$(cd "$dir" && pwd)
-"$root/tests/blast/runPreview.sh" "$dir/case" -noPlots -noVTK -noRun \
-    -endTime "$end" > "$dir/prepare.log" 2>&1 \
-    || { tail -20 "$dir/prepare.log"; exit 1; }
+if [ -n "${FROM:-}" ]
+then
+    read -r ref time <<< "$FROM"
+    [ -d "$ref/$time" ] || { echo "previewProfile.sh: no $ref/$time" >&2; exit 1; }
+    c=$dir/case/axisymmetricPreview
+    mkdir -p "$c"
+    for f in 0 0.orig constant system Allrun .allrunOptions solid \
+        postProcessing "$time"
+    do
+        cp -a "$ref/$f" "$c/"
+    done
+    sed -i 's/^startFrom .*/startFrom       latestTime;/' "$c/system/controlDict"
+    grep -q '^#sinclude "controlDict.allrun"' "$c/system/controlDict" \
+        || printf '\n#sinclude "controlDict.allrun"\n' >> "$c/system/controlDict"
+    echo "endTime $end;" >> "$c/system/controlDict.allrun"
+    echo "window of $ref from $time to $end"
+else
+    "$root/tests/blast/runPreview.sh" "$dir/case" -noPlots -noVTK -noRun \
+        -endTime "$end" > "$dir/prepare.log" 2>&1 \
+        || { tail -20 "$dir/prepare.log"; exit 1; }
+fi
 . "$root/etc/bashrc"
 echo "== $(date -u '+%F %H:%M UTC'), load $(cut -d' ' -f1-3 /proc/loadavg)"
 pids=()
@@ -82,9 +106,13 @@ do
 done
 for p in "${pids[@]}"; do wait "$p"; done
 echo "== done $(date -u '+%H:%M UTC'), load $(cut -d' ' -f1-3 /proc/loadavg)"
-/usr/bin/python3 - "$dir" "${builds[@]}" <<'PY' | tee "$dir/table.txt"
+window=0
+[ -z "${FROM:-}" ] || window=$time
+/usr/bin/python3 - "$dir" "$window" "${builds[@]}" <<'PY' | tee "$dir/table.txt"
 import glob, re, sys
-d, builds = sys.argv[1], sys.argv[2:]
+# window: the start time's name (the window's coupling log is
+# postProcessing/fsi/<start>/coupling.dat; 0 for a run from the start)
+d, window, builds = sys.argv[1], sys.argv[2], sys.argv[3:]
 parts = [
     ("loop (step, setDeltaT, write)", None),
     ("mesh motion (moveWall)", r"fluidSolidInteraction::moveWall\("),
@@ -115,7 +143,7 @@ cols = []
 for i, b in enumerate(builds):
     total, rows = inclusive("%s/b%d/inclusive.txt" % (d, i))
     passes = 0
-    for f in glob.glob("%s/b%d/axisymmetricPreview/postProcessing/fsi/*/coupling.dat" % (d, i)):
+    for f in glob.glob("%s/b%d/axisymmetricPreview/postProcessing/fsi/%s/coupling.dat" % (d, i, window)):
         for l in open(f):
             if l.strip() and not l.startswith("#"):
                 passes += int(l.split()[2])

@@ -14,9 +14,14 @@ Description
     faces of that point alone) is found different, and so is a band motion
     after the mesh was moved past bandMeshMotion if the face centres it
     keeps from its last update were taken as the step's old centres.
+    Passes in which only part of the band moves, none of it, or points go
+    back to the step's start, with new time steps between (the faces
+    whose points kept their bits are left alone): equal to the last bit,
+    the passes without a changed point counted.
 
     bandFaceGeometry (the face kernels of the band's update): centre,
-    sweptVol and moveFace equal to face::centre and face::sweptVol, their
+    sweptVol, moveFace and moveQuadPair (two quadrilaterals at once, each
+    lane against its own face's results) equal to face::centre and face::sweptVol, their
     face centre and area to primitiveMesh's loop, bit for bit (the
     doubles' bytes compared, so -0 against +0 counts) on random planar and
     non-planar triangles to hexagons at several scales and on degenerate
@@ -37,6 +42,7 @@ Description
 
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <iomanip>
 #include <sstream>
 
@@ -370,6 +376,142 @@ TEST(bandMeshMotion, blockEqualsMovePointsToTheLastBit)
 }
 
 
+//- Steps of several passes in which only part of the band moves, as the
+//  coupling's passes do at rest (points whose displacement is below the
+//  round-off of their position keep their bits) or where the
+//  displacement falls to zero: per pass each band point keeps its
+//  position, moves, or goes back to the step's start, by a plan per step
+//  (steps in which nothing moves after steps in which points moved, a
+//  new deltaT); the first mesh moved by bandMeshMotion, the second by
+//  fvMesh::movePoints. The largest geometry difference over all passes;
+//  the band updates without a changed point and the faces recomputed
+//  are checked against the plan
+static scalar comparePartialMotions
+(
+    foamUnit::testCase& tcA,
+    foamUnit::testCase& tcB,
+    fvMesh& meshA,
+    fvMesh& meshB,
+    const labelList& band,
+    const bandDisplacement& displace,
+    word& worst
+)
+{
+    bandMeshMotion motion(meshA, band);
+    EXPECT_TRUE(motion.banded());
+
+    // Per step: the probability that a point moves in a pass, that it
+    // goes back to the step's start, and the deltaT factor
+    struct stepPlan { scalar move; scalar back; scalar dtFactor; };
+    const List<stepPlan> plan
+    ({
+        {1, 0, 1},      // the first band update: everything
+        {0.5, 0, 1},    // half the band
+        {0, 0, 1},      // nothing moves: last step's moved faces change
+        {0, 0, 1},      // nothing at all changes
+        {0, 0, 1.5},    // nothing changes, a new deltaT
+        {0.3, 0.4, 1},  // some move, some go back to the step's start
+        {0.05, 0, 0.5}, // a few, a new deltaT
+        {0, 0, 1}
+    });
+
+    const pointField points0(meshB.points());
+    pointField current(points0);
+    Random rnd(5);
+    scalar d = 0;
+    label nUnchanged = 0;
+    forAll(plan, step)
+    {
+        const stepPlan& sp = plan[step];
+        if (sp.dtFactor != 1)
+        {
+            tcA.time().setDeltaT(sp.dtFactor*tcA.time().deltaTValue());
+            tcB.time().setDeltaT(sp.dtFactor*tcB.time().deltaTValue());
+        }
+        ++tcA.time();
+        ++tcB.time();
+        const pointField stepStart(current);
+        for (label pass = 0; pass < 3; ++pass)
+        {
+            bool changed = false;
+            for (const label pointi : band)
+            {
+                const scalar r = rnd.sample01<scalar>();
+                point p = current[pointi];
+                if (r < sp.move)
+                {
+                    p = displace(points0[pointi], rnd);
+                }
+                else if (r < sp.move + sp.back)
+                {
+                    p = stepStart[pointi];
+                }
+                changed = changed || p != current[pointi];
+                current[pointi] = p;
+            }
+            // (the first pass of a step after one in which points moved
+            // changes their old points)
+            if (!changed && !(pass == 0 && step > 0 && plan[step - 1].move))
+            {
+                ++nUnchanged;
+            }
+            motion.movePoints(current);
+            meshB.movePoints(current);
+
+            word w;
+            const scalar di = geometryDifference(meshA, meshB, w);
+            if (di > d)
+            {
+                d = di;
+                worst = w;
+            }
+        }
+    }
+    // The first motion goes through fvMesh::movePoints, the other passes
+    // are band updates; those the plan leaves unchanged recompute nothing
+    EXPECT_EQ(motion.nUpdates(), 3*plan.size() - 1);
+    EXPECT_EQ(motion.nUnchangedUpdates(), nUnchanged);
+    EXPECT_GE(nUnchanged, 5);
+    EXPECT_LT(motion.nFaceUpdates(), 0.6*motion.nUpdates()*motion.nFaces());
+    EXPECT_GT(motion.nFaceUpdates(), 0);
+    return d;
+}
+
+
+TEST(bandMeshMotion, partlyMovingWedgeEqualsMovePointsToTheLastBit)
+{
+    foamUnit::testCase tcA("bandMeshMotionA");
+    foamUnit::testCase tcB("bandMeshMotionB");
+    autoPtr<fvMesh> meshA = tcA.wedgeMesh();
+    autoPtr<fvMesh> meshB = tcB.wedgeMesh();
+    const labelList band(wedgeBand(meshA()));
+
+    word worst;
+    const scalar d = comparePartialMotions
+    (
+        tcA, tcB, meshA(), meshB(), band, wedgeDisplace, worst
+    );
+    EXPECT_EQ(d, 0) << "largest relative difference " << d << " in " << worst;
+}
+
+
+TEST(bandMeshMotion, partlyMovingBlockEqualsMovePointsToTheLastBit)
+{
+    foamUnit::testCase tcA("bandMeshMotionA");
+    foamUnit::testCase tcB("bandMeshMotionB");
+    autoPtr<fvMesh> meshA = blockMesh3D(tcA);
+    autoPtr<fvMesh> meshB = blockMesh3D(tcB);
+    const labelList band(blockBand(meshA()));
+
+    word worst;
+    const scalar d = comparePartialMotions
+    (
+        tcA, tcB, meshA(), meshB(), band, blockDisplace, worst
+    );
+    EXPECT_EQ(d, 0) << "largest relative difference " << d << " in " << worst;
+}
+
+
 TEST(bandMeshMotion, aPointLeftOutOfTheBandIsFound)
 {
     // The band without one point that moves: the faces of that point that
@@ -551,6 +693,69 @@ struct faceChecker
         EXPECT_TRUE(sameBits(fCtr3, fCtrRef) && sameBits(fArea3, fAreaRef))
             << what << ": centreAndArea";
         ++nChecked;
+
+        if (f.size() == 4)
+        {
+            checkPair(f, oldP, newP, cOld, cNew, svRef, fCtrRef, fAreaRef, what);
+        }
+    }
+
+    //- The last quadrilateral checked and its results
+    struct quad
+    {
+        pointField oldP, newP;
+        point cOld, cNew;
+        scalar swept;
+        vector fCtr, fArea;
+        std::string what;
+    };
+    std::unique_ptr<quad> last;
+    label nPairs = 0;
+
+    //- moveQuadPair on the last quadrilateral and this one (each lane
+    //  against the face's own results), and on this one twice
+    void checkPair
+    (
+        const face& f,
+        const pointField& oldP,
+        const pointField& newP,
+        const point& cOld,
+        const point& cNew,
+        const scalar swept,
+        const vector& fCtr,
+        const vector& fArea,
+        const std::string& what
+    )
+    {
+        quad q{oldP, newP, cOld, cNew, swept, fCtr, fArea, what};
+        const quad& a = last ? *last : q;
+        using namespace bandFaceGeometry;
+        const facePoints<4> O[2] = {{f, a.oldP}, {f, q.oldP}};
+        const facePoints<4> P[2] = {{f, a.newP}, {f, q.newP}};
+        const point cOlds[2] = {a.cOld, q.cOld};
+        point cNews[2];
+        scalar swepts[2];
+        vector fCtrs[2], fAreas[2];
+        moveQuadPair(O, P, cOlds, cNews, swepts, fCtrs, fAreas);
+        const quad* lanes[2] = {&a, &q};
+        for (label l = 0; l < 2; ++l)
+        {
+            const quad& r = *lanes[l];
+            EXPECT_TRUE(sameBits(cNews[l], r.cNew))
+                << r.what << ": moveQuadPair lane " << l << " centre "
+                << str(cNews[l]) << " against " << str(r.cNew);
+            EXPECT_TRUE(sameBits(swepts[l], r.swept))
+                << r.what << ": moveQuadPair lane " << l << " sweptVol "
+                << str(swepts[l]) << " against " << str(r.swept);
+            EXPECT_TRUE(sameBits(fCtrs[l], r.fCtr))
+                << r.what << ": moveQuadPair lane " << l << " face centre "
+                << str(fCtrs[l]) << " against " << str(r.fCtr);
+            EXPECT_TRUE(sameBits(fAreas[l], r.fArea))
+                << r.what << ": moveQuadPair lane " << l << " face area "
+                << str(fAreas[l]) << " against " << str(r.fArea);
+        }
+        last.reset(new quad(q));
+        ++nPairs;
     }
 };
 
@@ -667,6 +872,7 @@ TEST(bandFaceGeometry, centreAndSweptVolAreFaceCentreAndSweptVolBitForBit)
         check(f, negZero, poly, "-0 off the plane" + size);
     }
     EXPECT_GT(check.nChecked, 14000);
+    EXPECT_GT(check.nPairs, 3600);
 }
 
 

@@ -106,18 +106,24 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
             static_cast<const pointIOField&>(mesh_.points())
         );
 
+    // Everything is recomputed at the first band update and after a
+    // motion past this object (polyMesh::movePoints restamps the points'
+    // event number); else only what a changed point reaches
+    const bool all = centresEvent_ == -1 || centresEvent_ != points.eventNo();
+    const bool newStep = oldCentresIndex_ != runTime.timeIndex();
+
     // face::centre of the band's faces at the step's start (the old
     // points, fixed within a step): at the first update of a step, the
-    // centres of the last update if the points are still those it left
-    // (no motion through polyMesh::movePoints since: it restamps the
-    // points' event number), else computed from the old points
+    // centres of the last update if the points are still those it left,
+    // else computed from the old points
     const faceList& faces = mesh_.faces();
     const pointField& oldPoints = mesh_.oldPoints();
-    if (oldCentresIndex_ != runTime.timeIndex())
+    if (newStep)
     {
-        if (centresEvent_ != -1 && centresEvent_ == points.eventNo())
+        if (!all)
         {
-            oldCentres_.transfer(newCentres_);
+            // (a copy: the faces left alone keep their new centres)
+            oldCentres_ = newCentres_;
         }
         else
         {
@@ -127,15 +133,45 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
                 oldCentres_[i] =
                     bandFaceGeometry::centre(faces[faces_[i]], oldPoints);
             }
+            newCentres_.setSize(faces_.size());
         }
-        newCentres_.setSize(faces_.size());
         oldCentresIndex_ = runTime.timeIndex();
     }
 
+    // The band points whose old or new position changes (bit for bit): a
+    // face's geometry and swept volume are functions of its old and new
+    // points only, so a face none of whose points changed keeps them, a
+    // cell none of whose faces changed its centre and volume, a face
+    // between two such cells its interpolation factors (the same
+    // operations on the same bits). At a new step the old points are the
+    // last update's points: they change where those differed from the
+    // last step's old points.
+    changedPoints_.reset();
+    label nChanged = 0;
     for (const label pointi : points_)
     {
+        const bool changed =
+            all
+         || !bandFaceGeometry::sameBits(newPoints[pointi], points[pointi])
+         || (newStep && movedInStep_.test(pointi));
+        if (changed)
+        {
+            changedPoints_.set(pointi);
+            ++nChanged;
+        }
         points[pointi] = newPoints[pointi];
+        movedInStep_.set
+        (
+            pointi,
+            !bandFaceGeometry::sameBits(points[pointi], oldPoints[pointi])
+        );
     }
+    ++nUpdates_;
+    if (!nChanged)
+    {
+        ++nUnchangedUpdates_;
+    }
+
     points.writeOpt() = IOobject::AUTO_WRITE;
     points.instance() = runTime.timeName();
     points.eventNo() = mesh_.getEvent();
@@ -153,9 +189,13 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
     const label nInternal = mesh_.nInternalFaces();
     const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
 
-    // Per face of the band: the swept volume since the start of the step
-    // (face::sweptVol(oldPoints, points)) -> meshPhi, the face centre and
-    // area vector (primitiveMesh::makeFaceCentresAndAreas), |Sf|
+    // Per face of the band whose points changed: the swept volume since
+    // the start of the step (face::sweptVol(oldPoints, points)) ->
+    // meshPhi, the face centre and area vector
+    // (primitiveMesh::makeFaceCentresAndAreas), |Sf|. (A face left alone
+    // keeps its meshPhi: within a step deltaT is the same, and at the
+    // first update of a step its old points are its points, so its swept
+    // volume is a zero and meshPhi that zero over any deltaT.)
     const scalar rDeltaT = 1.0/runTime.deltaTValue();
     surfaceScalarField& phi = const_cast<surfaceScalarField&>(mesh_.phi());
     scalarField& phii = phi.primitiveFieldRef();
@@ -166,16 +206,25 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
         const_cast<surfaceScalarField&>(mesh_.magSf());
     scalarField& magSfi = magSf.primitiveFieldRef();
     surfaceScalarField::Boundary& magSfbf = magSf.boundaryFieldRef();
-    forAll(faces_, i)
+    changedCells_.reset();
+    label nFacesChanged = 0;
+
+    // Every band point changed (the band moving): no test per face, cell
+    // or factor
+    const bool every = all || nChanged == points_.size();
+
+    // meshPhi, |Sf| and the changed cells of a moved face
+    auto moved = [&](const label i, const scalar sweptVol)
     {
         const label facei = faces_[i];
-        const face& f = faces[facei];
-        scalar sweptVol;
-        bandFaceGeometry::moveFace
-        (
-            f, oldPoints, points, oldCentres_[i],
-            newCentres_[i], sweptVol, fCtrs[facei], fAreas[facei]
-        );
+        if (!every)
+        {
+            changedCells_.set(own[facei]);
+            if (facei < nInternal)
+            {
+                changedCells_.set(nei[facei]);
+            }
+        }
         const scalar swept = sweptVol*rDeltaT;
         const scalar m = mag(fAreas[facei]) + VSMALL;
         if (facei < nInternal)
@@ -196,7 +245,80 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
                 magSfbf[patchi][pfi] = m;
             }
         }
+        ++nFacesChanged;
+    };
+
+    // Quadrilaterals two at a time (bandFaceGeometry::moveQuadPair: each
+    // lane moveFace's operations), the others one by one
+    label waiting = -1;
+    forAll(faces_, i)
+    {
+        const label facei = faces_[i];
+        const face& f = faces[facei];
+        if (!every)
+        {
+            bool changed = false;
+            for (label k = 0; !changed && k < f.size(); ++k)
+            {
+                changed = changedPoints_.test(f[k]);
+            }
+            if (!changed)
+            {
+                continue;
+            }
+        }
+        if (f.size() != 4)
+        {
+            scalar sweptVol;
+            bandFaceGeometry::moveFace
+            (
+                f, oldPoints, points, oldCentres_[i],
+                newCentres_[i], sweptVol, fCtrs[facei], fAreas[facei]
+            );
+            moved(i, sweptVol);
+        }
+        else if (waiting < 0)
+        {
+            waiting = i;
+        }
+        else
+        {
+            const label j[2] = {waiting, i};
+            const face& fw = faces[faces_[waiting]];
+            const bandFaceGeometry::facePoints<4> O[2] =
+                {{fw, oldPoints}, {f, oldPoints}};
+            const bandFaceGeometry::facePoints<4> P[2] =
+                {{fw, points}, {f, points}};
+            const point cOld[2] = {oldCentres_[waiting], oldCentres_[i]};
+            point cNew[2];
+            scalar sweptVol[2];
+            vector fCtr[2], fArea[2];
+            bandFaceGeometry::moveQuadPair
+            (
+                O, P, cOld, cNew, sweptVol, fCtr, fArea
+            );
+            for (label l = 0; l < 2; ++l)
+            {
+                newCentres_[j[l]] = cNew[l];
+                fCtrs[faces_[j[l]]] = fCtr[l];
+                fAreas[faces_[j[l]]] = fArea[l];
+                moved(j[l], sweptVol[l]);
+            }
+            waiting = -1;
+        }
     }
+    if (waiting >= 0)
+    {
+        const label facei = faces_[waiting];
+        scalar sweptVol;
+        bandFaceGeometry::moveFace
+        (
+            faces[facei], oldPoints, points, oldCentres_[waiting],
+            newCentres_[waiting], sweptVol, fCtrs[facei], fAreas[facei]
+        );
+        moved(waiting, sweptVol);
+    }
+    nFaceUpdates_ += nFacesChanged;
     centresEvent_ = points.eventNo();
 
     // Cell centres and volumes: primitiveMesh::makeCellCentresAndVols per
@@ -208,6 +330,10 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
         forAll(cells_, i)
         {
             const label celli = cells_[i];
+            if (!every && !changedCells_.test(celli))
+            {
+                continue;
+            }
             const labelList& cf = cellFaces_[i];
 
             solveVector cEst = Zero;
@@ -242,8 +368,9 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
         }
     }
 
-    // Interpolation factors of the faces of the band's cells
-    // (surfaceInterpolation::make*, fvPatch::delta and makeWeights)
+    // Interpolation factors of the faces of the band's cells whose
+    // centre or face changed (surfaceInterpolation::make*, fvPatch::delta
+    // and makeWeights)
     const vectorField& C = mesh_.cellCentres();
     interpolationFactors factors(mesh_);
     auto& [w, dc, nodc, corr] = factors;
@@ -258,6 +385,16 @@ void Foam::bandMeshMotion::updateGeometry(const pointField& newPoints)
     forAll(interpFaces_, j)
     {
         const label facei = interpFaces_[j];
+        if
+        (
+            !every
+         && !changedCells_.test(own[facei])
+         && (facei >= nInternal || !changedCells_.test(nei[facei]))
+        )
+        {
+            // (a changed face changes its owner's centre)
+            continue;
+        }
         const vector& Sf = fAreas[facei];
         const vector& Cf = fCtrs[facei];
         if (facei < nInternal)
@@ -424,7 +561,13 @@ Foam::bandMeshMotion::bandMeshMotion
     functionObjectsPending_(false),
     timeIndex_(-1),
     oldCentresIndex_(-1),
-    centresEvent_(-1)
+    centresEvent_(-1),
+    movedInStep_(mesh.nPoints()),
+    changedPoints_(mesh.nPoints()),
+    changedCells_(mesh.nCells()),
+    nUpdates_(0),
+    nUnchangedUpdates_(0),
+    nFaceUpdates_(0)
 {
     bitSet inBand(mesh.nPoints());
     inBand.set(movingPoints);

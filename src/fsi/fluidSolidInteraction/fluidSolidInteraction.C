@@ -940,6 +940,16 @@ void Foam::fluidSolidInteraction::report()
         << " checks and function objects "
         << sec(other - cpuCoupling_ - cpuRestore_ - cpuOutput_)
         << " s)" << endl;
+    if (bandMotion_.valid() && bandMotion_->nUpdates())
+    {
+        // The band updates (this rank's): the faces whose points changed
+        // bit for bit are recomputed, the others keep their geometry
+        Info<< "FSI mesh motion: " << bandMotion_->nUpdates()
+            << " band updates, " << bandMotion_->nUnchangedUpdates()
+            << " without a changed point; faces recomputed per update "
+            << bandMotion_->nFaceUpdates()/bandMotion_->nUpdates()
+            << " of " << bandMotion_->nFaces() << endl;
+    }
     if (Pstream::parRun())
     {
         // The slowest rank of each part: a rank's waiting for the others
