@@ -85,6 +85,30 @@ class Digest(TempDirTestCase):
         resultDigest.measuring("-acceptHandMade", True)
         self.assertIsNone(resultDigest.check(p))
 
+    def testRowAppendedAfterTheDigests(self):
+        """adv54 n01: a row appended to a file whose sidecar covers every
+        row the run wrote (peaks.dat, a reference written whole) is not
+        the run's: refused naming its line; a '#' note after the rows and
+        a row a later segment replaces (rows) are not measured rows"""
+        p = self.write("postProcessing/indentation/peaks.dat",
+                       "# label time depth force\nC1,i 1 2 3\n")
+        resultDigest.writeSidecar(p)
+        with open(p, "a") as f:
+            f.write("# a note\n")
+        resultDigest.uncoveredRows(p, resultDigest.check(p))
+        with open(p, "a") as f:
+            f.write("C1,i 2.06 8e-07 1.5e-09\n")
+        line = resultDigest.check(p)
+        self.assertEqual(line, 3)
+        with self.assertRaisesRegex(resultDigest.DigestError,
+                                    r"peaks.dat, line 4: the rows from this "
+                                    r"line on are not covered .* give "
+                                    r"-acceptHandMade"):
+            resultDigest.uncoveredRows(p, line)
+        resultDigest.uncoveredRows(p, line, rows=[2])
+        resultDigest.measuring("-acceptHandMade", True)
+        resultDigest.uncoveredRows(p, line)
+
     def testLogAgainstCommitMarkers(self):
         """A probe log of postProcessing/ checked against the commit
         markers' "log" lines (restartLogs.H): an edit between two commits
@@ -101,8 +125,18 @@ class Digest(TempDirTestCase):
                        "digest fnv1a64 ended\nlog %s %d postProcessing/"
                        "probes/0/p\nend\n" % (fnv(rows[:n]), n))
         self.assertEqual(resultDigest.check(log), 7)
+        # the row after the last commit: refused (appended, or a run
+        # stopped or going on: adv54 n02), measured with the script's
+        # option for a run so far (planeWave -partial)
+        with self.assertRaisesRegex(resultDigest.DigestError,
+                                    r"probes/0/p, line 7: the rows from "
+                                    r"this line on are not covered"):
+            postProcessing.series(self.tmp, "probes/p", verify=True)
+        resultDigest.measuringPartial(True)
+        self.addCleanup(resultDigest.measuringPartial, False)
         data = postProcessing.series(self.tmp, "probes/p", verify=True)
         self.assertEqual(len(data), 5)
+        resultDigest.measuringPartial(False)
         with open(log, "wb") as f:
             f.write(rows.replace(b"4 40", b"4 60"))
         with self.assertRaisesRegex(resultDigest.DigestError,

@@ -176,6 +176,8 @@ def main():
     # the logs and a -reference measured only as their runs wrote them
     # (their digests), unless the user says they are hand-made (adv52 p06b)
     resultDigest.measuring("-acceptHandMade", a.acceptHandMade)
+    # -partial: the rows a run going on wrote after its last write time
+    resultDigest.measuringPartial(a.partial)
     case = os.path.abspath(a.case)
     if a.radius is not None and not a.layered:
         p.error("-radius is an option of -layered (the line whose layers "
@@ -404,12 +406,15 @@ def compare(case, a, p, skip, kinds):
     text = "\n".join(lines) + "\n"
     with script.writing(os.path.join(out, "measures.dat")) as f:
         f.write(text)
+    # its digests beside it, as reference.dat's (readMeasures verifies them)
+    resultDigest.writeSidecar(os.path.join(out, "measures.dat"))
     sys.stdout.write(text)
     if "solid" in kinds and wave.rho is not None:
         text, solidBad = solidRows(case, wave, skip)
         bad += solidBad
         with script.writing(os.path.join(out, "solidMeasures.dat")) as f:
             f.write(text)
+        resultDigest.writeSidecar(os.path.join(out, "solidMeasures.dat"))
         sys.stdout.write(text)
     if a.check:
         if not rows:

@@ -42,8 +42,12 @@ def read(case):
     option accepts hand-made files."""
     d = os.path.join(case, "postProcessing", "indentation")
     try:
+        resultDigest.checkFinished(case, "postProcessing/indentation")
         for name in ("force.dat", "peaks.dat"):
-            resultDigest.check(os.path.join(d, name))
+            # rows after the last digest line: appended, or a run going on
+            # (adv54 n01, n10)
+            path = os.path.join(d, name)
+            resultDigest.uncoveredRows(path, resultDigest.check(path))
         f = postProcessing.readTable(os.path.join(d, "force.dat"))
         # times increasing, numbers finite (adv32 pl01, pl02: nan forces
         # and times going back were plotted, exit 0)

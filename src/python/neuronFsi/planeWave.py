@@ -920,7 +920,11 @@ def readMeasures(path):
     utility's output, postProcessing/planeWave/<start>/): a list of dicts
     by the column names of the last comment line before the data, units
     dropped ('peak1ns[MPa]' -> 'peak1ns'), in the file's column order;
-    numbers as floats, words (probe names, regions) as they are."""
+    numbers as floats, words (probe names, regions) as they are. The file
+    must be as planeWave wrote it (its digests, written beside it since
+    fix19k: resultDigest.check; a file of an earlier planeWave needs the
+    script's option for hand-made files)."""
+    resultDigest.uncoveredRows(path, resultDigest.check(path), partial=False)
     names, rows = None, []
     with open(path) as f:
         for line in f:
@@ -955,7 +959,8 @@ def readReference(path):
     wrote it (its digests, resultDigest.check; adv52 p06b: reference.dat
     x1.5 was measured against), unless the script's option accepts a
     hand-made one."""
-    resultDigest.check(path)
+    # written whole: a row after its digests was appended (adv54 n02 (b))
+    resultDigest.uncoveredRows(path, resultDigest.check(path), partial=False)
     table = postProcessing.readTable(path)
     # a reference is a finished file: a last row cut (fewer columns than
     # the header's, or no end of line) is refused, not dropped (adv51 n07:
