@@ -81,8 +81,8 @@ try:
                          f"max von Mises {vmm:.3f} Pa (t <= {until*1e9:g} ns); "
                          f"whole run {pa/1e6:.3f} MPa, {vma:.3f} Pa")
         lines.append(f"# snapshot at {tk*1e9:.3f} ns")
-        open(f"{case}/postProcessing/blastSummary.dat", "w").write(
-            "\n".join(lines) + "\n")
+        with script.writing(f"{case}/postProcessing/blastSummary.dat") as f:
+            f.write("\n".join(lines) + "\n")
         print("\n".join(lines))
     else:
         bp.fig10(cases, labels, f"{prefix or ''}fig10.png")

@@ -22,6 +22,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from matplotlib.collections import PolyCollection
 
+from . import script
 from . import msh, postProcessing, resultDigest
 from .solidResults import SolidResults, SolidResultsError
 
@@ -87,7 +88,7 @@ def forceDepth(case, rows, out):
     ax[3].grid(True)
     fig.suptitle(os.path.basename(os.path.abspath(case)))
     fig.tight_layout()
-    fig.savefig(out, dpi=110)
+    script.saveFigure(fig, out, dpi=110)
     plt.close(fig)
 
 
@@ -171,7 +172,7 @@ def fieldsFigure(f, out, title, dpi=130):
         ax.set_title("%s %s" % (name, title))
         fig.colorbar(pc, ax=ax, shrink=0.8)
     fig.tight_layout()
-    fig.savefig(out, dpi=dpi)
+    script.saveFigure(fig, out, dpi=dpi)
     plt.close(fig)
 
 
