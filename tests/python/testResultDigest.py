@@ -4,6 +4,7 @@ p06b, p31), and options.readRefusal: a reader's look at a user's file
 before it opens it (adv52 p10)."""
 import os
 import subprocess
+import sys
 
 from fixtures import TempDirTestCase
 from neuronFsi import options, planeWave, postProcessing, resultDigest
@@ -108,6 +109,28 @@ class Digest(TempDirTestCase):
         resultDigest.uncoveredRows(p, line, rows=[2])
         resultDigest.measuring("-acceptHandMade", True)
         resultDigest.uncoveredRows(p, line)
+
+    def testLargeFileReadRecordByRecord(self):
+        """adv53 l31 (e): a 1 GiB reference.dat of zeros (below the table
+        limit) was read whole (1.08 GB) before its line 1 was refused; now
+        record by record: the refusal after the first record's bytes, a
+        small memory (a child process's maximum resident size)"""
+        p = self.write("ref.dat", "# t p\n0 1\n")
+        resultDigest.writeSidecar(p)
+        os.truncate(p, 256 << 20)
+        with open(p, "r+b") as f:
+            f.write(b"\0"*16)          # zeros from its first byte on
+        code = ("import resource, sys\n"
+                "from neuronFsi import resultDigest\n"
+                "try:\n    resultDigest.check(sys.argv[1])\n"
+                "except resultDigest.DigestError as e:\n    print(e)\n"
+                "print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)\n")
+        r = subprocess.run([sys.executable, "-c", code, p],
+                           capture_output=True, text=True)
+        out = r.stdout.split("\n")
+        self.assertRegex(out[0], r"ref.dat, line 1: the file is not as the "
+                                 r"run wrote it")
+        self.assertLess(int(out[1]), 150000, "maximum resident size [KiB]")
 
     def testLogAgainstCommitMarkers(self):
         """A probe log of postProcessing/ checked against the commit
