@@ -132,6 +132,32 @@ class Digest(TempDirTestCase):
                                  r"run wrote it")
         self.assertLess(int(out[1]), 150000, "maximum resident size [KiB]")
 
+    def testIndentationResultsOfAnotherRun(self):
+        """adv54 n03 (a): force.dat and peaks.dat of another run copied
+        with their digests into a case whose solid.h5 is its own: refused
+        naming the runs; the same run's files are read"""
+        import h5py
+        from neuronFsi import indentationPlots
+        d = os.path.join(self.tmp, "postProcessing", "indentation")
+        for name, text in (("force.dat", "# time [s]  depth [m]  force [N]"
+                            "  stage\n0 0 0 A\n1 1e-7 1e-9 A\n"),
+                           ("peaks.dat", "# label  time [s]  depth [m]  "
+                            "force [N]\nC1,i 1 1e-7 1e-9\n")):
+            p = self.write("postProcessing/indentation/" + name,
+                           "# run aaaa\n" + text)
+            resultDigest.writeSidecar(p)
+        with h5py.File(os.path.join(d, "solid.h5"), "w") as f:
+            f.attrs["runId"] = b"aaaa"
+        rows, peaks = indentationPlots.read(self.tmp)
+        self.assertEqual(len(rows), 2)
+        with h5py.File(os.path.join(d, "solid.h5"), "w") as f:
+            f.attrs["runId"] = b"bbbb"
+        with self.assertRaisesRegex(indentationPlots.IndentationPlotError,
+                                    r"of different runs: force.dat names run "
+                                    r"aaaa; peaks.dat names run aaaa; "
+                                    r"solid.h5 names run bbbb"):
+            indentationPlots.read(self.tmp)
+
     def testLogAgainstCommitMarkers(self):
         """A probe log of postProcessing/ checked against the commit
         markers' "log" lines (restartLogs.H): an edit between two commits
