@@ -185,6 +185,30 @@ def _markerRecords(path):
     return records or None
 
 
+def _reconstructedNote(path):
+    """", or its run's processor*/ folders, which hold the commit markers
+    of a parallel run, were removed after reconstructPar" when path's case
+    has time folders, none with a commit marker, and no processor0/ (adv54
+    n33: the usual clean-up of a parallel run); "" otherwise."""
+    case, rel = _caseOf(path)
+    if case is None or os.path.isdir(os.path.join(case, "processor0")):
+        return ""
+    times = []
+    for d in glob.glob(os.path.join(case, "*")):
+        try:
+            float(os.path.basename(d))
+        except ValueError:
+            continue
+        times.append(d)
+    if not times or any(os.path.isfile(os.path.join(d, ".writeCommitted"))
+                        for d in times):
+        return ""
+    return (", or its run was a parallel one whose processor*/ folders, "
+            "which hold the commit markers recording its logs, were removed "
+            "after reconstructPar (reconstructPar does not copy them: keep "
+            "processor*/ to measure the run as it wrote it)")
+
+
 def check(path, handMade=None, option=None):
     """Verify path against its sidecar or the commit markers (see the
     module). handMade: measure it as it is, without a word (the user's
@@ -209,9 +233,10 @@ def check(path, handMade=None, option=None):
         raise DigestError(
             "%s has no digest of the run that wrote it (no %s beside it, no "
             "commit marker of the case recording it): it was made or "
-            "changed by hand, or written before results carried digests. "
-            "Restore it as the run wrote it, or %s" % (path, path + SUFFIX,
-                                                        _give(option)))
+            "changed by hand, or written before results carried digests%s. "
+            "Restore it as the run wrote it, or %s" % (
+                path, path + SUFFIX, _reconstructedNote(path),
+                _give(option)))
     done = {}
     for n, digest, source, k in records:
         done.setdefault(n, (digest, source, k))
