@@ -62,10 +62,12 @@ def summary(case):
 try:
     if len(cases) == 1:
         case = cases[0]
+        # every input read before the first file is written (adv54 n09:
+        # fig10.png replaced, then "log.cellBlastFoam: No such file")
+        s = summary(case)
         bp.fig10(cases, labels, f"{case}/fig10.png")
         im = bp.interfaceMaxima(case, f"{case}/interfaceMaxima.png", until)
         tk = bp.snapshot(case, f"{case}/snapshot65.5ns.png")
-        s = summary(case)
         lines = ["# probe 0 (cytoplasm-nucleus interface, 75 % nucleus height)",
                  f"# peaks over t <= {until*1e9:g} ns; arrival: first p above half "
                  "the pulse's amplitude;"
@@ -85,11 +87,11 @@ try:
             f.write("\n".join(lines) + "\n")
         print("\n".join(lines))
     else:
+        rows = [bp.row(lab, summary(case)) for case, lab in zip(cases, labels)]
         bp.fig10(cases, labels, f"{prefix or ''}fig10.png")
         bp.interfaceMaximaCases(cases, labels, f"{prefix or ''}interfaceMaxima.png")
         print(f"# probe peaks over t <= {until*1e9:g} ns")
         print(bp.header)
-        for case, lab in zip(cases, labels):
-            print(bp.row(lab, summary(case)))
+        print("\n".join(rows))
 except bp.BlastPlotError as err:
     sys.exit(f"plotBlast.py: {err}")
