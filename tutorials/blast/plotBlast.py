@@ -2,12 +2,15 @@
 """Blast scene plots and numbers (paper Fig. 10, Figs. 7-8 at 65.5 ns).
 
 usage: plotBlast.py case [case ...] [-o prefix] [-label name ...]
-                    [-until 1.5e-7] [-acceptHandMade]
+                    [-until 1.5e-7] [-acceptHandMade] [-partial]
 Probe peaks are taken over t <= until (default: the whole run), the
 interface measures both over the window and over the run: the reported
 one is the largest mean over a fixed length of interface (the solver's
 interfacePatches.dat, interfacePatchLength of solidProperties), shown
-with the element maxima (mesh-dependent).
+with the element maxima (mesh-dependent). The logs are measured as their
+run wrote them (their digests) and only when the run has ended: -partial
+measures a run going on, or one stopped between its writes, so far;
+-acceptHandMade measures files without (or against) their digests.
 
 One case: <case>/fig10.png (pressure, von Mises, longitudinal strain and
 strain rate at the probe on the cytoplasm-nucleus interface at 75 % of the
@@ -38,6 +41,11 @@ from neuronFsi import resultDigest
 # such a log is refused naming it and its first changed line
 args = [a for a in sys.argv[1:] if a != "-acceptHandMade"]
 resultDigest.measuring("-acceptHandMade", len(args) < len(sys.argv) - 1)
+# -partial: a run going on, or stopped between its writes, measured so far
+# (its rows after its last write time; refused without it)
+given = len(args)
+args = [a for a in args if a != "-partial"]
+resultDigest.measuringPartial(len(args) < given)
 prefix, labels, cases, until = None, [], [], np.inf
 i = 0
 while i < len(args):

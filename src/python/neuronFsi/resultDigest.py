@@ -73,12 +73,17 @@ def _give(option):
             "-acceptHandMade): this script has none")
 
 
-def measuringPartial(given):
-    """Set by a script whose explicit option measures a run so far (planeWave
-    -partial): the rows written after its last record are measured
-    (uncoveredRows passes them)."""
-    global _partial
+_partialOption = None
+
+
+def measuringPartial(given, option="-partial"):
+    """Set by a script whose explicit option measures a run so far (planeWave,
+    plotBlast.py -partial): the rows written after its last record are
+    measured (uncoveredRows passes them); option is named in the
+    refusals."""
+    global _partial, _partialOption
     _partial = bool(given)
+    _partialOption = option
 
 
 class DigestError(Exception):
@@ -296,8 +301,10 @@ def checkFinished(case, what):
     if going:
         raise DigestError(
             "%s: the case %s is not finished: %s. Its results so far are "
-            "partial: wait for the run to end, or %s"
-            % (what, os.path.realpath(case), going, _give(_option)))
+            "partial: wait for the run to end, %sor %s"
+            % (what, os.path.realpath(case), going,
+               "give %s to measure the run so far, " % _partialOption
+               if _partialOption else "", _give(_option)))
 
 
 def uncoveredRows(path, line, rows=None, partial=None, option=None):
@@ -345,4 +352,8 @@ def uncoveredRows(path, line, rows=None, partial=None, option=None):
     raise DigestError(
         "%s, line %d: the rows from this line on are not covered by the "
         "digests of the run that wrote the file (its last record ends "
-        "before it): %s, or %s" % (path, first, why, _give(option)))
+        "before it): %s, %sor %s" % (
+            path, first, why,
+            "give %s to measure a run so far, " % _partialOption
+            if _partialOption and not os.path.isfile(path + SUFFIX) else "",
+            _give(option)))
