@@ -102,4 +102,4 @@ try:
         print(bp.header)
         print("\n".join(rows))
 except bp.BlastPlotError as err:
-    sys.exit(f"plotBlast.py: {err}")
+    sys.exit(f"plotBlast.py: error: {err}")

@@ -190,13 +190,37 @@ def _markerRecords(path):
     return records or None
 
 
+def _isTime(name):
+    try:
+        float(name)
+        return True
+    except ValueError:
+        return False
+
+
 def _reconstructedNote(path):
     """", or its run's processor*/ folders, which hold the commit markers
     of a parallel run, were removed after reconstructPar" when path's case
     has time folders, none with a commit marker, and no processor0/ (adv54
     n33: the usual clean-up of a parallel run); "" otherwise."""
     case, rel = _caseOf(path)
-    if case is None or os.path.isdir(os.path.join(case, "processor0")):
+    if case is None:
+        return ""
+    if os.path.isdir(os.path.join(case, "processor0")):
+        # a serial run decomposed afterwards (decomposePar copies no commit
+        # marker into processor*/) whose serial times were removed (adv54
+        # n33 (b))
+        ranks = [d for d in glob.glob(os.path.join(case, "processor0", "*"))
+                 if _isTime(os.path.basename(d))]
+        if ranks and not any(os.path.isfile(os.path.join(d,
+                                                         ".writeCommitted"))
+                             for d in ranks) and not any(
+                _isTime(os.path.basename(d))
+                for d in glob.glob(os.path.join(case, "*"))):
+            return (", or its run was a serial one decomposed afterwards "
+                    "whose own time folders, which hold the commit markers "
+                    "recording its logs, were removed (decomposePar copies "
+                    "no marker into processor*/)")
         return ""
     times = []
     for d in glob.glob(os.path.join(case, "*")):
