@@ -212,11 +212,11 @@ def _reconstructedNote(path):
         # n33 (b))
         ranks = [d for d in glob.glob(os.path.join(case, "processor0", "*"))
                  if _isTime(os.path.basename(d))]
+        serial = [d for d in glob.glob(os.path.join(case, "*"))
+                  if _isTime(os.path.basename(d))]
         if ranks and not any(os.path.isfile(os.path.join(d,
                                                          ".writeCommitted"))
-                             for d in ranks) and not any(
-                _isTime(os.path.basename(d))
-                for d in glob.glob(os.path.join(case, "*"))):
+                             for d in ranks + serial):
             return (", or its run was a serial one decomposed afterwards "
                     "whose own time folders, which hold the commit markers "
                     "recording its logs, were removed (decomposePar copies "
