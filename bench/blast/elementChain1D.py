@@ -37,6 +37,8 @@ import sys
 
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi import planeWave as pw
 
 RHO, C = 1000.0, 1450.0

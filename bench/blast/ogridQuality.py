@@ -28,6 +28,8 @@ import tempfile
 
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi import foamField as ff
 
 H = 7.9e-6  # [m] the cell's height (tutorials/blast/quarter3D)

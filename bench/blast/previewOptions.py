@@ -46,6 +46,8 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi import bench
 from neuronFsi.solidResults import SolidResults
 

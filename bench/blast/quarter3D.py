@@ -35,6 +35,8 @@ import os
 import re
 import sys
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi import bench, logs, msh, scratch
 
 HERE = os.path.dirname(os.path.abspath(__file__))

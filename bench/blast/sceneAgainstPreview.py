@@ -24,6 +24,8 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "..", "..", "src", "python"))
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi import planeWave as pw  # noqa: E402
 
 PRESSURE = [("arrival", "arrival [ns]", 1.0),

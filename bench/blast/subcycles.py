@@ -30,6 +30,8 @@ import sys
 
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi import bench, logs, postProcessing
 
 HERE = os.path.dirname(os.path.abspath(__file__))

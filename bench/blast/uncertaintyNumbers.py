@@ -33,6 +33,8 @@ import sys
 
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi import damageIndicators as di, pulseStudy as ps
 from neuronFsi import uncertainty as unc
 

@@ -21,6 +21,8 @@ import argparse
 
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi import bench
 
 # item: (bytes per cell, per internal face, per boundary face, per point),

@@ -34,6 +34,8 @@ session 44: is its ladder's alternation its place on the polygon?):
 import os
 import sys
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi import foamDict, msh
 
 root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")

@@ -43,6 +43,8 @@ sys.path.insert(0, here)
 from cellProbes import (interfacePointAt, nucleusEllipse,  # noqa: E402
                         option, regionElements)
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi import foamDict, msh   # noqa: E402
 
 

@@ -35,6 +35,8 @@ import sys
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, "..", "blast"))
 import ballLadder   # noqa: E402
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi import convergence   # noqa: E402
 
 

@@ -6,10 +6,13 @@ import math
 import sys
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi import logs, postProcessing
 from neuronFsi.checks import Checks
 
-case, Z = sys.argv[1], float(sys.argv[2])
+case, Z = script.arguments(2, "checkPreview.py case Z")[:2]
+Z = float(Z)
 a, H = 8.4e-6, 7.9e-6
 check = Checks()
 

@@ -11,6 +11,8 @@ import sys
 import h5py
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi import msh, planeWave, postProcessing
 from neuronFsi.checks import Checks
 

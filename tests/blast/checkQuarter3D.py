@@ -19,6 +19,8 @@ import re
 import sys
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi import (cellRefinement, foamDict, foamField, logs, msh,
                        postProcessing)
 from neuronFsi.checks import Checks

@@ -6,6 +6,15 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 . "$here/../../etc/bashrc"
 src=$here/../../tutorials/blast
+# DIR first, not an option (adv53 l18: "-d" gave mkdir's "invalid option"
+# and left a folder "-d"; a folder of that name: ./-d)
+case "${1:-}" in
+    ""|-*)
+        echo "runPreview.sh: error: the first argument is the output folder" \
+            "DIR (given: '${1:-}'; a folder whose name begins with '-':" \
+            "./NAME). Usage: runPreview.sh DIR [Allrun options]" >&2
+        exit 1 ;;
+esac
 dir=$1; shift
 # DIR new, empty or an earlier output of this script (adv51 n01: a user's
 # folder given as DIR was removed)

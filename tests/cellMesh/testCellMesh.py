@@ -61,6 +61,8 @@ import tempfile
 
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi import msh
 from neuronFsi.checks import Checks
 

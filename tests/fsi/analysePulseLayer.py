@@ -17,6 +17,8 @@ Usage: analysePulseLayer.py <case> <rho0s>   (one line of key=value)"""
 import sys
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi.postProcessing import series
 
 case = sys.argv[1]

@@ -24,6 +24,8 @@ import math
 import sys
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi.postProcessing import series
 
 case = sys.argv[1]

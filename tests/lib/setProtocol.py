@@ -14,6 +14,8 @@ usage: setProtocol.py FILE --smoke
 import re
 import sys
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi.indenterProperties import ProtocolError, setProtocol
 
 SMOKE = [("A", "load", "0.3e-6", "0.3e-6"), ("B", "hold", "0", "1"),

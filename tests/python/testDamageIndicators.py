@@ -11,7 +11,7 @@ import h5py
 import numpy as np
 
 from fixtures import TempDirTestCase
-from neuronFsi import damageIndicators as di
+from neuronFsi import damageIndicators as di, resultDigest
 
 
 def rotation(a):
@@ -191,6 +191,12 @@ class Patches(TempDirTestCase):
         return " ".join("%g" % x for x in
                         [t] + [10*t + k for k in range(18)]) + "\n"
 
+    def setUp(self):
+        # hand-made logs (no run's digests): measured as they are
+        super().setUp()
+        resultDigest.measuring("-acceptHandMade", True)
+        self.addCleanup(resultDigest.measuring, None, False)
+
     def testRead(self):
         case = os.path.join(self.tmp, "case")
         self.assertFalse(di.hasInterfacePatches(case))
@@ -233,6 +239,12 @@ class Places(TempDirTestCase):
     def row(self, t):
         return " ".join("%g" % x for x in
                         [t] + [10*t + k for k in range(12)]) + "\n"
+
+    def setUp(self):
+        # hand-made logs (no run's digests): measured as they are
+        super().setUp()
+        resultDigest.measuring("-acceptHandMade", True)
+        self.addCleanup(resultDigest.measuring, None, False)
 
     def testRead(self):
         case = os.path.join(self.tmp, "case")

@@ -43,13 +43,13 @@ class SegmentHeaders(TempDirTestCase):
                 pp.ColumnFileError, r"0/p and .*1e-09/p: the headers differ"
                 r" at header line 2: '# Probe 1 \(0 1e-05 0\)' in the first,"
                 r" '# Probe 1 \(0 1.5e-05 0\)' in the later"):
-            pp.series(self.tmp, "probes/p")
+            pp.series(self.tmp, "probes/p", verify=False)
 
     def testSameHeaderJoined(self):
         for t0 in ("0", "1e-09"):
             self.write("postProcessing/probes/%s/p" % t0,
                        PROBES % "1e-05" + "%s 1 2\n" % t0)
-        self.assertEqual(pp.series(self.tmp, "probes/p").shape, (2, 3))
+        self.assertEqual(pp.series(self.tmp, "probes/p", verify=False).shape, (2, 3))
 
 
 class Coverage(TempDirTestCase):
@@ -114,6 +114,31 @@ class ScriptErrors(TempDirTestCase):
         self.assertEqual(r.returncode, 1)
         self.assertNotIn("Traceback", r.stderr)
         self.assertRegex(r.stderr, r"^s.py: error: .*a.dat, line 3")
+
+    def testEveryScriptUnderTheGuard(self):
+        # fix19k (adv53 u12's class): every Python script of the project
+        # that imports neuronFsi calls script.guard() (an input's error in
+        # one line, no traceback); found by grep, 31 scripts had none
+        # (checkPreview.py without its argument: IndexError, adv53 l05).
+        # Not scripts: modules the calibration imports
+        root = os.path.abspath(os.path.join(os.path.dirname(__file__),
+                                            "..", ".."))
+        modules = {"applications/utilities/calibrateCell/forwardModel.py",
+                   "applications/utilities/calibrateCell/targets.py"}
+        files = subprocess.run(["git", "ls-files", "*.py"], cwd=root,
+                               capture_output=True, text=True).stdout.split()
+        if not files:
+            self.skipTest("not a git work tree")
+        without = []
+        for f in files:
+            if f.startswith(("src/python/", "tests/python/",
+                             "tests/badInput/adv")) or f in modules:
+                continue
+            with open(os.path.join(root, f), errors="replace") as h:
+                text = h.read()
+            if "neuronFsi" in text and "guard(" not in text:
+                without.append(f)
+        self.assertEqual(without, [])
 
     def testMissingProgram(self):
         r = self.run_("from neuronFsi import script\nscript.guard()\n"

@@ -4,6 +4,7 @@ p06b, p31), and options.readRefusal: a reader's look at a user's file
 before it opens it (adv52 p10)."""
 import os
 import subprocess
+import sys
 
 from fixtures import TempDirTestCase
 from neuronFsi import options, planeWave, postProcessing, resultDigest
@@ -85,6 +86,78 @@ class Digest(TempDirTestCase):
         resultDigest.measuring("-acceptHandMade", True)
         self.assertIsNone(resultDigest.check(p))
 
+    def testRowAppendedAfterTheDigests(self):
+        """adv54 n01: a row appended to a file whose sidecar covers every
+        row the run wrote (peaks.dat, a reference written whole) is not
+        the run's: refused naming its line; a '#' note after the rows and
+        a row a later segment replaces (rows) are not measured rows"""
+        p = self.write("postProcessing/indentation/peaks.dat",
+                       "# label time depth force\nC1,i 1 2 3\n")
+        resultDigest.writeSidecar(p)
+        with open(p, "a") as f:
+            f.write("# a note\n")
+        resultDigest.uncoveredRows(p, resultDigest.check(p))
+        with open(p, "a") as f:
+            f.write("C1,i 2.06 8e-07 1.5e-09\n")
+        line = resultDigest.check(p)
+        self.assertEqual(line, 3)
+        with self.assertRaisesRegex(resultDigest.DigestError,
+                                    r"peaks.dat, line 4: the rows from this "
+                                    r"line on are not covered .* give "
+                                    r"-acceptHandMade"):
+            resultDigest.uncoveredRows(p, line)
+        resultDigest.uncoveredRows(p, line, rows=[2])
+        resultDigest.measuring("-acceptHandMade", True)
+        resultDigest.uncoveredRows(p, line)
+
+    def testLargeFileReadRecordByRecord(self):
+        """adv53 l31 (e): a 1 GiB reference.dat of zeros (below the table
+        limit) was read whole (1.08 GB) before its line 1 was refused; now
+        record by record: the refusal after the first record's bytes, a
+        small memory (a child process's maximum resident size)"""
+        p = self.write("ref.dat", "# t p\n0 1\n")
+        resultDigest.writeSidecar(p)
+        os.truncate(p, 256 << 20)
+        with open(p, "r+b") as f:
+            f.write(b"\0"*16)          # zeros from its first byte on
+        code = ("import resource, sys\n"
+                "from neuronFsi import resultDigest\n"
+                "try:\n    resultDigest.check(sys.argv[1])\n"
+                "except resultDigest.DigestError as e:\n    print(e)\n"
+                "print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)\n")
+        r = subprocess.run([sys.executable, "-c", code, p],
+                           capture_output=True, text=True)
+        out = r.stdout.split("\n")
+        self.assertRegex(out[0], r"ref.dat, line 1: the file is not as the "
+                                 r"run wrote it")
+        self.assertLess(int(out[1]), 150000, "maximum resident size [KiB]")
+
+    def testIndentationResultsOfAnotherRun(self):
+        """adv54 n03 (a): force.dat and peaks.dat of another run copied
+        with their digests into a case whose solid.h5 is its own: refused
+        naming the runs; the same run's files are read"""
+        import h5py
+        from neuronFsi import indentationPlots
+        d = os.path.join(self.tmp, "postProcessing", "indentation")
+        for name, text in (("force.dat", "# time [s]  depth [m]  force [N]"
+                            "  stage\n0 0 0 A\n1 1e-7 1e-9 A\n"),
+                           ("peaks.dat", "# label  time [s]  depth [m]  "
+                            "force [N]\nC1,i 1 1e-7 1e-9\n")):
+            p = self.write("postProcessing/indentation/" + name,
+                           "# run aaaa\n" + text)
+            resultDigest.writeSidecar(p)
+        with h5py.File(os.path.join(d, "solid.h5"), "w") as f:
+            f.attrs["runId"] = b"aaaa"
+        rows, peaks = indentationPlots.read(self.tmp)
+        self.assertEqual(len(rows), 2)
+        with h5py.File(os.path.join(d, "solid.h5"), "w") as f:
+            f.attrs["runId"] = b"bbbb"
+        with self.assertRaisesRegex(indentationPlots.IndentationPlotError,
+                                    r"of different runs: force.dat names run "
+                                    r"aaaa; peaks.dat names run aaaa; "
+                                    r"solid.h5 names run bbbb"):
+            indentationPlots.read(self.tmp)
+
     def testLogAgainstCommitMarkers(self):
         """A probe log of postProcessing/ checked against the commit
         markers' "log" lines (restartLogs.H): an edit between two commits
@@ -101,8 +174,18 @@ class Digest(TempDirTestCase):
                        "digest fnv1a64 ended\nlog %s %d postProcessing/"
                        "probes/0/p\nend\n" % (fnv(rows[:n]), n))
         self.assertEqual(resultDigest.check(log), 7)
+        # the row after the last commit: refused (appended, or a run
+        # stopped or going on: adv54 n02), measured with the script's
+        # option for a run so far (planeWave -partial)
+        with self.assertRaisesRegex(resultDigest.DigestError,
+                                    r"probes/0/p, line 7: the rows from "
+                                    r"this line on are not covered"):
+            postProcessing.series(self.tmp, "probes/p", verify=True)
+        resultDigest.measuringPartial(True)
+        self.addCleanup(resultDigest.measuringPartial, False)
         data = postProcessing.series(self.tmp, "probes/p", verify=True)
         self.assertEqual(len(data), 5)
+        resultDigest.measuringPartial(False)
         with open(log, "wb") as f:
             f.write(rows.replace(b"4 40", b"4 60"))
         with self.assertRaisesRegex(resultDigest.DigestError,

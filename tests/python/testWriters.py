@@ -43,6 +43,70 @@ class Replacing(TempDirTestCase):
         self.assertEqual(os.listdir(self.tmp), ["out"])
 
 
+class Writing(TempDirTestCase):
+    """script.writing, the writer of every Python tool's files (fix19k)"""
+
+    def testHardLinkNotWrittenThrough(self):
+        # adv54 n14: a case copied by cp -al; the copy's planeWave,
+        # plotBlast.py wrote the original's files through the shared inodes
+        a = self.write("a/postProcessing/planeWave/0/reference.dat", "A\n")
+        os.makedirs(os.path.join(self.tmp, "b", "postProcessing",
+                                 "planeWave", "0"))
+        b = os.path.join(self.tmp, "b", "postProcessing", "planeWave", "0",
+                         "reference.dat")
+        os.link(a, b)
+        with script.writing(b) as f:
+            f.write("B\n")
+        with open(a) as f:
+            self.assertEqual(f.read(), "A\n")
+        with open(b) as f:
+            self.assertEqual(f.read(), "B\n")
+        fig = self.write("b/fig.png", "mine")
+        os.link(fig, os.path.join(self.tmp, "a", "fig.png"))
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        f = plt.figure()
+        script.saveFigure(f, fig, dpi=20)
+        plt.close(f)
+        with open(os.path.join(self.tmp, "a", "fig.png")) as h:
+            self.assertEqual(h.read(), "mine")
+
+    def testFolderLinkLeavingTheCaseRefused(self):
+        # adv54 v03: B's postProcessing/planeWave a link to A's
+        for c in ("a", "b"):
+            os.makedirs(os.path.join(self.tmp, c, "system"))
+        a = self.write("a/postProcessing/planeWave/0/reference.dat", "A\n")
+        os.makedirs(os.path.join(self.tmp, "b", "postProcessing"))
+        os.symlink(os.path.join(self.tmp, "a", "postProcessing", "planeWave"),
+                   os.path.join(self.tmp, "b", "postProcessing", "planeWave"))
+        b = os.path.join(self.tmp, "b", "postProcessing", "planeWave", "0",
+                         "reference.dat")
+        with self.assertRaisesRegex(script.OutputLinkError,
+                                    r"symbolic link leaving the case"):
+            with script.writing(b) as f:
+                f.write("B\n")
+        with open(a) as f:
+            self.assertEqual(f.read(), "A\n")
+        # a link inside the case is the case's own
+        os.makedirs(os.path.join(self.tmp, "b", "mine"))
+        os.symlink(os.path.join(self.tmp, "b", "mine"),
+                   os.path.join(self.tmp, "b", "out"))
+        with script.writing(os.path.join(self.tmp, "b", "out", "x")) as f:
+            f.write("x\n")
+
+    def testFailedWriteKeepsTheFile(self):
+        # adv53 l09: fluidWedgeMesh.py on a full disk left a 0-byte file
+        p = self.write("blockMeshDict", "old\n")
+        with self.assertRaises(RuntimeError):
+            with script.writing(p) as f:
+                f.write("new")
+                raise RuntimeError("disk full")
+        with open(p) as f:
+            self.assertEqual(f.read(), "old\n")
+        self.assertEqual(sorted(os.listdir(self.tmp)), ["blockMeshDict"])
+
+
 class Model:
     def solid_properties(self, cal):
         return "/*---*\\\n\\*---------*/\nmaterials {}\n"

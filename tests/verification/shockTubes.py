@@ -21,6 +21,8 @@ import sys
 import tempfile
 import time
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi import postProcessing, scratch
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))

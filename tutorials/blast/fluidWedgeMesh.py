@@ -319,7 +319,7 @@ out.append("""    axis
 );
 """ % (face((3, 0), -1, 1), face((7, 3), -1, 1)))
 try:
-    with open(args.o, "w") as f:
+    with script.writing(args.o) as f:
         f.write("".join(out))
 except OSError as err:
     p.error("-o %s: cannot write it: %s" % (args.o, err.strerror))

@@ -2,12 +2,15 @@
 """Blast scene plots and numbers (paper Fig. 10, Figs. 7-8 at 65.5 ns).
 
 usage: plotBlast.py case [case ...] [-o prefix] [-label name ...]
-                    [-until 1.5e-7] [-acceptHandMade]
+                    [-until 1.5e-7] [-acceptHandMade] [-partial]
 Probe peaks are taken over t <= until (default: the whole run), the
 interface measures both over the window and over the run: the reported
 one is the largest mean over a fixed length of interface (the solver's
 interfacePatches.dat, interfacePatchLength of solidProperties), shown
-with the element maxima (mesh-dependent).
+with the element maxima (mesh-dependent). The logs are measured as their
+run wrote them (their digests) and only when the run has ended: -partial
+measures a run going on, or one stopped between its writes, so far;
+-acceptHandMade measures files without (or against) their digests.
 
 One case: <case>/fig10.png (pressure, von Mises, longitudinal strain and
 strain rate at the probe on the cytoplasm-nucleus interface at 75 % of the
@@ -38,6 +41,11 @@ from neuronFsi import resultDigest
 # such a log is refused naming it and its first changed line
 args = [a for a in sys.argv[1:] if a != "-acceptHandMade"]
 resultDigest.measuring("-acceptHandMade", len(args) < len(sys.argv) - 1)
+# -partial: a run going on, or stopped between its writes, measured so far
+# (its rows after its last write time; refused without it)
+given = len(args)
+args = [a for a in args if a != "-partial"]
+resultDigest.measuringPartial(len(args) < given)
 prefix, labels, cases, until = None, [], [], np.inf
 i = 0
 while i < len(args):
@@ -62,10 +70,12 @@ def summary(case):
 try:
     if len(cases) == 1:
         case = cases[0]
+        # every input read before the first file is written (adv54 n09:
+        # fig10.png replaced, then "log.cellBlastFoam: No such file")
+        s = summary(case)
         bp.fig10(cases, labels, f"{case}/fig10.png")
         im = bp.interfaceMaxima(case, f"{case}/interfaceMaxima.png", until)
         tk = bp.snapshot(case, f"{case}/snapshot65.5ns.png")
-        s = summary(case)
         lines = ["# probe 0 (cytoplasm-nucleus interface, 75 % nucleus height)",
                  f"# peaks over t <= {until*1e9:g} ns; arrival: first p above half "
                  "the pulse's amplitude;"
@@ -81,15 +91,15 @@ try:
                          f"max von Mises {vmm:.3f} Pa (t <= {until*1e9:g} ns); "
                          f"whole run {pa/1e6:.3f} MPa, {vma:.3f} Pa")
         lines.append(f"# snapshot at {tk*1e9:.3f} ns")
-        open(f"{case}/postProcessing/blastSummary.dat", "w").write(
-            "\n".join(lines) + "\n")
+        with script.writing(f"{case}/postProcessing/blastSummary.dat") as f:
+            f.write("\n".join(lines) + "\n")
         print("\n".join(lines))
     else:
+        rows = [bp.row(lab, summary(case)) for case, lab in zip(cases, labels)]
         bp.fig10(cases, labels, f"{prefix or ''}fig10.png")
         bp.interfaceMaximaCases(cases, labels, f"{prefix or ''}interfaceMaxima.png")
         print(f"# probe peaks over t <= {until*1e9:g} ns")
         print(bp.header)
-        for case, lab in zip(cases, labels):
-            print(bp.row(lab, summary(case)))
+        print("\n".join(rows))
 except bp.BlastPlotError as err:
-    sys.exit(f"plotBlast.py: {err}")
+    sys.exit(f"plotBlast.py: error: {err}")

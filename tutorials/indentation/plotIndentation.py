@@ -44,7 +44,7 @@ def table(case, peaks):
     out.append(f"| F_B (end of B) | {FB:.3g} | {PAPER_FB} (average cell) | |")
     out.append(f"| F_E (end of E) | {FE:.3g} | {PAPER_FE} (average cell) | |")
     text = "\n".join(out) + "\n"
-    with open(os.path.join(case, "results.md"), "w") as f:
+    with script.writing(os.path.join(case, "results.md")) as f:
         f.write(text)
     print(text)
 

@@ -54,7 +54,7 @@ def main(case):
                       f"t = {float(latest):g} s")
     fig.tight_layout()
     out = os.path.join(case, "shockTube.png")
-    fig.savefig(out, dpi=110)
+    script.saveFigure(fig, out, dpi=110)
     print(f"plotShockTube: wrote {out}")
 
 

@@ -106,6 +106,9 @@ int main(int argc, char *argv[])
         fluidSolidInteraction::newMesh(args, runTime)
     );
     dynamicFvMesh& mesh = meshPtr();
+    // the mesh the restart time's fields were computed on, before they are
+    // read (a mesh of another size: OpenFOAM's size error, adv53 l01 (b))
+    foamTools::inputRecord::checkWholeMesh(runTime, mesh);
 
     #include "createFields.H"
     // The viscous stress's step limit (a property of the start state and

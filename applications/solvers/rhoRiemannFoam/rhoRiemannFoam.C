@@ -66,6 +66,9 @@ int main(int argc, char *argv[])
     foamTools::writeGuard::verifyStateFields(args, runTime);
     #include "createMesh.H"
     foamTools::checkCellVolumes(mesh);
+    // the mesh the restart time's fields were computed on, before they are
+    // read (a mesh of another size: OpenFOAM's size error, adv53 l01 (b))
+    foamTools::inputRecord::checkWholeMesh(runTime, mesh);
 
     #include "createFields.H"
 

@@ -82,7 +82,7 @@ def say(*a):
 
 def savefig(fig, out, name):
     path = os.path.join(out, name)
-    fig.savefig(path, dpi=DPI)
+    script.saveFigure(fig, path, dpi=DPI)
     plt.close(fig)
     return name
 

@@ -131,6 +131,7 @@ Usage
 import argparse
 import math
 import os
+import re
 import sys
 
 try:
@@ -176,6 +177,8 @@ def main():
     # the logs and a -reference measured only as their runs wrote them
     # (their digests), unless the user says they are hand-made (adv52 p06b)
     resultDigest.measuring("-acceptHandMade", a.acceptHandMade)
+    # -partial: the rows a run going on wrote after its last write time
+    resultDigest.measuringPartial(a.partial)
     case = os.path.abspath(a.case)
     if a.radius is not None and not a.layered:
         p.error("-radius is an option of -layered (the line whose layers "
@@ -325,6 +328,25 @@ def compare(case, a, p, skip, kinds):
                 "-reference %s is %s, not a file (a reference.dat of an "
                 "earlier run)" % (a.reference, kind))
         wave = planeWave.readReference(a.reference)
+        # the reference of this case's pulse (adv54 n03 (b): a 50 MPa
+        # run's reference in a 100 MPa case gave "not compared" for every
+        # probe, for a wrong reason): the pulse its header states
+        with open(a.reference, errors="replace") as f:
+            head = f.readline(4096)
+        m = re.search(r"pulse (\S+) Pa for (\S+) s", head)
+        if m:
+            try:
+                was = (float(m.group(1)), float(m.group(2)))
+            except ValueError:
+                was = None
+            if was and any(abs(x - y) > 1e-6*max(abs(x), abs(y))
+                           for x, y in zip(was, (amp, T))):
+                raise planeWave.PlaneWaveError(
+                    "-reference %s is the answer of a pulse of %g Pa for %g "
+                    "s (its header), not the case's pulse of %g Pa for %g s "
+                    "(its 0/p): the reference of another case or run; write "
+                    "this case's with planeWave -case %s" % (
+                        a.reference, was[0], was[1], amp, T, a.case))
     elif a.layered:
         layeredColumn.checkRunMesh(case)
         wave = layeredColumn.solve(
@@ -404,12 +426,15 @@ def compare(case, a, p, skip, kinds):
     text = "\n".join(lines) + "\n"
     with script.writing(os.path.join(out, "measures.dat")) as f:
         f.write(text)
+    # its digests beside it, as reference.dat's (readMeasures verifies them)
+    resultDigest.writeSidecar(os.path.join(out, "measures.dat"))
     sys.stdout.write(text)
     if "solid" in kinds and wave.rho is not None:
         text, solidBad = solidRows(case, wave, skip)
         bad += solidBad
         with script.writing(os.path.join(out, "solidMeasures.dat")) as f:
             f.write(text)
+        resultDigest.writeSidecar(os.path.join(out, "solidMeasures.dat"))
         sys.stdout.write(text)
     if a.check:
         if not rows:

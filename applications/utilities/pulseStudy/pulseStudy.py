@@ -454,7 +454,7 @@ def writeMaps(s, out, rows, targets, atEnd, errors=None):
         fig.suptitle("\n".join(lines), fontsize=10)
         fig.tight_layout()
         p = os.path.join(out, "map_%s.png" % ind)
-        fig.savefig(p, dpi=110)
+        script.saveFigure(fig, p, dpi=110)
         plt.close(fig)
         written.append(p)
     for th in s["thresholds"]:
@@ -468,7 +468,7 @@ def writeMaps(s, out, rows, targets, atEnd, errors=None):
             fontsize=10)
         fig.tight_layout()
         p = os.path.join(out, "timeAbove_%s.png" % th["name"])
-        fig.savefig(p, dpi=110)
+        script.saveFigure(fig, p, dpi=110)
         plt.close(fig)
         written.append(p)
     return written
@@ -618,7 +618,7 @@ def _uncertaintyFigure(plt, s, out, g, rows, result, targets, variants):
                      if u["parameters"] else ""), fontsize=9)
     fig.tight_layout()
     path = os.path.join(out, "uncertainty_%s.png" % g["label"])
-    fig.savefig(path, dpi=110)
+    script.saveFigure(fig, path, dpi=110)
     plt.close(fig)
     return path
 
@@ -675,7 +675,7 @@ def _fig10Band(plt, s, out, g, records):
                  fontsize=9)
     fig.tight_layout()
     path = os.path.join(out, "fig10_%s.png" % g["label"])
-    fig.savefig(path, dpi=110)
+    script.saveFigure(fig, path, dpi=110)
     plt.close(fig)
     return path
 

@@ -47,6 +47,8 @@ import re
 
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi import damageIndicators, planeWave, postProcessing
 
 HERE = os.path.dirname(os.path.abspath(__file__))

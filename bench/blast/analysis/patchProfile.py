@@ -20,6 +20,8 @@ import sys
 
 import numpy as np
 
+from neuronFsi import script  # noqa: E402
+script.guard()  # an input's error: one line, exit 1 (fix19k: every script)
 from neuronFsi.solidResults import SolidResults
 
 NAMES = ["nucleus", "cytoplasm", "membrane"]

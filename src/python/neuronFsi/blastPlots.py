@@ -24,6 +24,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
+from . import script
 from . import damageIndicators, logs, planeWave, postProcessing, resultDigest
 
 
@@ -158,7 +159,7 @@ def fig10(cases, labels, out, dpi=120, xlim=None):
     fig.suptitle("Cytoplasm-nucleus interface, 75 % of the nucleus height "
                  "(paper Fig. 10)")
     fig.tight_layout()
-    fig.savefig(out, dpi=dpi)
+    script.saveFigure(fig, out, dpi=dpi)
     plt.close(fig)
 
 
@@ -218,7 +219,7 @@ def interfaceMaxima(case, out, until=np.inf):
         a.grid(alpha=0.3)
         a.legend(fontsize=6)
     fig.tight_layout()
-    fig.savefig(out, dpi=120)
+    script.saveFigure(fig, out, dpi=120)
     plt.close(fig)
     w = d[:, 0] <= until
     res = {n: (d[w, 1 + 2*k].max(), d[w, 2 + 2*k].max(),
@@ -270,7 +271,7 @@ def interfaceMaximaCases(cases, labels, out):
         a.grid(alpha=0.3)
     ax[1].legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(out, dpi=120)
+    script.saveFigure(fig, out, dpi=120)
     plt.close(fig)
 
 
@@ -361,7 +362,7 @@ def snapshot3D(tk, X, conn, p, vm, out, dT=None, dpi=120):
                                        "about them" if quarter else ""),
                  fontsize=10)
     fig.tight_layout()
-    fig.savefig(out, dpi=dpi)
+    script.saveFigure(fig, out, dpi=dpi)
     plt.close(fig)
     return tk
 
@@ -408,7 +409,7 @@ def snapshot(case, out, time=65.5e-9, temperature=False, dpi=120):
     fig.suptitle(f"Solid at t = {tk*1e9:.2f} ns (r-z section mirrored about "
                  "the axis; nucleus, cytoplasm and 200 nm membrane)")
     fig.tight_layout()
-    fig.savefig(out, dpi=dpi)
+    script.saveFigure(fig, out, dpi=dpi)
     plt.close(fig)
     return tk
 

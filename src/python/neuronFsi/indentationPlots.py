@@ -22,6 +22,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from matplotlib.collections import PolyCollection
 
+from . import script
 from . import msh, postProcessing, resultDigest
 from .solidResults import SolidResults, SolidResultsError
 
@@ -33,6 +34,52 @@ class IndentationPlotError(Exception):
     names the file."""
 
 
+def _runIds(d):
+    """{file: run id} of force.dat and peaks.dat (their first line "# run
+    <id>") and solid.h5 (its root attribute runId) in d, those that have
+    one."""
+    ids = {}
+    for name in ("force.dat", "peaks.dat"):
+        try:
+            with open(os.path.join(d, name), errors="replace") as f:
+                first = f.readline(4096)
+        except OSError:
+            continue
+        if first.startswith("# run "):
+            ids[name] = first[6:].strip()
+    h5 = os.path.join(d, "solid.h5")
+    if os.path.isfile(h5):
+        try:
+            import h5py
+            with h5py.File(h5, "r") as f:
+                v = f.attrs.get("runId")
+            if v is not None:
+                ids["solid.h5"] = v.decode() if isinstance(v, bytes) \
+                    else str(v)
+        except (OSError, ImportError):
+            pass        # solid.h5's own readers name its damage
+    return ids
+
+
+def _sameRun(d):
+    """A DigestError unless force.dat, peaks.dat and solid.h5 of d name one
+    run (adv54 n03 (a): another case's force.dat and peaks.dat copied with
+    their digests into a finished case were tabled as its own), unless
+    the script measures hand-made files."""
+    if resultDigest._handMade:
+        return
+    ids = _runIds(d)
+    if len(set(ids.values())) > 1:
+        raise resultDigest.DigestError(
+            "%s: its results are of different runs: %s. A file copied from "
+            "another run (another case, or an earlier start) is not this "
+            "case's result; restore the run's own files, or give %s to "
+            "measure them as they are" % (
+                d, "; ".join("%s names run %s" % (k, v)
+                             for k, v in sorted(ids.items())),
+                resultDigest._option or "-acceptHandMade"))
+
+
 def read(case):
     """(rows, peaks) of an indentation case: rows [(time [s], depth [m],
     force [N], stage)] of force.dat, peaks {label: (time [s], depth [m],
@@ -42,8 +89,13 @@ def read(case):
     option accepts hand-made files."""
     d = os.path.join(case, "postProcessing", "indentation")
     try:
+        resultDigest.checkFinished(case, "postProcessing/indentation")
         for name in ("force.dat", "peaks.dat"):
-            resultDigest.check(os.path.join(d, name))
+            # rows after the last digest line: appended, or a run going on
+            # (adv54 n01, n10)
+            path = os.path.join(d, name)
+            resultDigest.uncoveredRows(path, resultDigest.check(path))
+        _sameRun(d)
         f = postProcessing.readTable(os.path.join(d, "force.dat"))
         # times increasing, numbers finite (adv32 pl01, pl02: nan forces
         # and times going back were plotted, exit 0)
@@ -83,7 +135,7 @@ def forceDepth(case, rows, out):
     ax[3].grid(True)
     fig.suptitle(os.path.basename(os.path.abspath(case)))
     fig.tight_layout()
-    fig.savefig(out, dpi=110)
+    script.saveFigure(fig, out, dpi=110)
     plt.close(fig)
 
 
@@ -167,7 +219,7 @@ def fieldsFigure(f, out, title, dpi=130):
         ax.set_title("%s %s" % (name, title))
         fig.colorbar(pc, ax=ax, shrink=0.8)
     fig.tight_layout()
-    fig.savefig(out, dpi=dpi)
+    script.saveFigure(fig, out, dpi=dpi)
     plt.close(fig)
 
 

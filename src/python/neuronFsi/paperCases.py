@@ -31,7 +31,7 @@ import shutil
 import subprocess
 
 from . import (allrunOptions, caseRuns, foamDict, logs, options, planeWave,
-               postProcessing)
+               postProcessing, resultDigest)
 
 DICT = os.path.join("system", "paperDict")
 RUNS = os.path.join("postProcessing", "runs")
@@ -182,7 +182,9 @@ def _blastResults(run, folder):
     try:
         last = postProcessing.series(folder, log)[-1, 0]
         path = postProcessing.segments(folder, log)[-1][1]
-    except postProcessing.ColumnFileError as err:
+    except (postProcessing.ColumnFileError, resultDigest.DigestError) as err:
+        # (a run going on, rows after its last write, an edited log: the
+        # digests' refusal, fix19k)
         return str(err)
     if last < end*(1 - 1e-3):
         return ("%s ends at %g s, before the run's endTime %g s (system/"

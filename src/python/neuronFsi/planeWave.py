@@ -597,6 +597,43 @@ def impedanceAtRest(case):
     return float(rho0)*soundSpeedAtRest(case)
 
 
+def _failureCause(rc, work):
+    """What may have stopped a program of the column (adv54 v06 (c), n18,
+    n36: under ulimit -f, ulimit -t or a full TMPDIR only the program's
+    own IOstream error was quoted): its signal, and the limits and free
+    space of the folder it wrote in; "" if none applies."""
+    import resource
+    import signal as sig
+    notes = []
+    if rc < 0:
+        try:
+            name = sig.Signals(-rc).name
+        except ValueError:
+            name = "signal %d" % -rc
+        what = {"SIGXCPU": "the CPU time limit (ulimit -t)",
+                "SIGXFSZ": "the file size limit (ulimit -f)",
+                "SIGKILL": "killed: the CPU time limit's hard kill (ulimit "
+                           "-t), out of memory, or another process"}
+        notes.append("it ended by %s%s" % (name, ": " + what[name]
+                                           if name in what else ""))
+    for limit, text in ((resource.RLIMIT_FSIZE, "a file size limit of %d "
+                         "bytes (ulimit -f)"),
+                        (resource.RLIMIT_CPU, "a CPU time limit of %d s "
+                         "(ulimit -t)")):
+        soft = resource.getrlimit(limit)[0]
+        if soft != resource.RLIM_INFINITY:
+            notes.append(text % soft)
+    try:
+        st = os.statvfs(work)
+        free = st.f_bavail*st.f_frsize
+        if free < (64 << 20):
+            notes.append("%d bytes free on the device of %s (TMPDIR: the "
+                         "column is run there)" % (free, work))
+    except OSError:
+        pass
+    return "; " + "; ".join(notes) if notes else ""
+
+
 def estimatedSteps(case, endTime, dz, maxCo=0.5):
     """The time steps of the column of <case> to endTime [s] in cells of dz
     [m]: endTime/(maxCo dz/c), c the sound speed at rest (a lower bound: a
@@ -729,8 +766,9 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
                     keep = True
                     log = os.path.join(work, "log." + app)
                     raise PlaneWaveError("%s failed on the 1D column in %s "
-                                         "(kept; its log.%s says: %s)"
-                                         % (app, work, app, _logError(log)))
+                                         "(kept; its log.%s says: %s)%s"
+                                         % (app, work, app, _logError(log),
+                                            _failureCause(rc, work)))
             data = postProcessing.series(work, "probes/p")
             rho = postProcessing.series(work, "probes/rho")
             # the column's axis is y (_BLOCK_MESH): u is U's y component
@@ -920,7 +958,11 @@ def readMeasures(path):
     utility's output, postProcessing/planeWave/<start>/): a list of dicts
     by the column names of the last comment line before the data, units
     dropped ('peak1ns[MPa]' -> 'peak1ns'), in the file's column order;
-    numbers as floats, words (probe names, regions) as they are."""
+    numbers as floats, words (probe names, regions) as they are. The file
+    must be as planeWave wrote it (its digests, written beside it since
+    fix19k: resultDigest.check; a file of an earlier planeWave needs the
+    script's option for hand-made files)."""
+    resultDigest.uncoveredRows(path, resultDigest.check(path), partial=False)
     names, rows = None, []
     with open(path) as f:
         for line in f:
@@ -955,7 +997,8 @@ def readReference(path):
     wrote it (its digests, resultDigest.check; adv52 p06b: reference.dat
     x1.5 was measured against), unless the script's option accepts a
     hand-made one."""
-    resultDigest.check(path)
+    # written whole: a row after its digests was appended (adv54 n02 (b))
+    resultDigest.uncoveredRows(path, resultDigest.check(path), partial=False)
     table = postProcessing.readTable(path)
     # a reference is a finished file: a last row cut (fewer columns than
     # the header's, or no end of line) is refused, not dropped (adv51 n07:

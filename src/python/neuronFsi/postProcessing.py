@@ -259,28 +259,43 @@ def segments(case, log):
     return found
 
 
-def series(case, log, vectors=False, verify=False):
+def series(case, log, vectors=False, verify=True):
     """Float rows of log "dir/file" (e.g. "fsi/coupling.dat") over every
     start of the run: each segment's rows before the first row of the next
     segment that has rows, then that segment's rows. The rows delimit the
     segments, not the directory names: these are rounded to the
     controlDict's timePrecision. vectors: see readTable (e.g. "probes/U":
-    time, then x y z of each probe). verify: each segment is checked
-    against the digests its run recorded (resultDigest.check: a measure
-    of the run refuses an edited log, adv52 p06b)."""
-    parts = []
+    time, then x y z of each probe). verify (by default: every measure of
+    a run reads its logs here): each segment is checked against the
+    digests its run recorded (resultDigest.check: a measure of the run
+    refuses an edited log, adv52 p06b), and a row kept from it that no
+    record covers (appended by hand, or written by a run still going on
+    or stopped between its write times) is refused unless the script
+    measures a run so far or hand-made files (resultDigest.uncoveredRows:
+    adv54 n02, adv53 l05). verify=False: the file's own readers' tests
+    only."""
+    if verify:
+        resultDigest.checkFinished(case, os.path.join("postProcessing", log))
+    segs = []
     for t0, p in segments(case, log):
-        if verify:
-            resultDigest.check(p)
+        uncovered = resultDigest.check(p) if verify else None
         table = readTable(p, vectors)
         a = table.data()
         _timesForward(table, a)
-        parts.append(a)
-    parts = [a for a in parts if len(a)]
-    if not parts:
+        segs.append((p, table, a, uncovered))
+    segs = [x for x in segs if len(x[2])]
+    if not segs:
         raise ColumnFileError("%s: no rows in %s" % (case, log))
-    out = [a[a[:, 0] < parts[k + 1][0, 0]] for k, a in enumerate(parts[:-1])]
-    return np.vstack(out + [parts[-1]])
+    out = []
+    for k, (p, table, a, uncovered) in enumerate(segs):
+        keep = a[:, 0] < segs[k + 1][2][0, 0] if k + 1 < len(segs) \
+            else np.ones(len(a), dtype=bool)
+        if uncovered is not None:
+            resultDigest.uncoveredRows(
+                p, uncovered,
+                [n for n, kept in zip(table.lineNo, keep) if kept])
+        out.append(a[keep])
+    return np.vstack(out)
 
 
 def _timesForward(table, a):

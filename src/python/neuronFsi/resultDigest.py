@@ -43,8 +43,15 @@ _MASK = (1 << 64) - 1
 # The measuring script's explicit option to measure files without (or not
 # matching) their digests, and whether the user gave it (measuring()):
 # the readers' check() then passes them
-_option = "-acceptHandMade"
+_option = None
 _handMade = False
+# The script's option to measure a run so far (planeWave -partial): rows
+# after the run's last record are measured (measuringPartial())
+_partial = False
+# Files verified in this process, by their state (path, device, inode,
+# size, modification time) and records: a script reading one log through
+# several readers verifies it once
+_verified = {}
 
 
 def measuring(option, given):
@@ -53,6 +60,30 @@ def measuring(option, given):
     gave it."""
     global _option, _handMade
     _option, _handMade = option, bool(given)
+
+
+def _give(option):
+    """The end of a refusal: the script's option that measures a file as it
+    is, or, for a script without one (a benchmark, a test), the tools that
+    have it."""
+    if option:
+        return "give %s to measure it as it is" % option
+    return ("measure it as it is with a tool whose option accepts hand-made"
+            " files (planeWave, plotBlast.py, plotIndentation.py "
+            "-acceptHandMade): this script has none")
+
+
+_partialOption = None
+
+
+def measuringPartial(given, option="-partial"):
+    """Set by a script whose explicit option measures a run so far (planeWave,
+    plotBlast.py -partial): the rows written after its last record are
+    measured (uncoveredRows passes them); option is named in the
+    refusals."""
+    global _partial, _partialOption
+    _partial = bool(given)
+    _partialOption = option
 
 
 class DigestError(Exception):
@@ -159,9 +190,52 @@ def _markerRecords(path):
     return records or None
 
 
-def _lineOf(data, offset):
-    """The line number (from 1) holding byte offset of data."""
-    return data.count(b"\n", 0, offset) + 1
+def _isTime(name):
+    try:
+        float(name)
+        return True
+    except ValueError:
+        return False
+
+
+def _reconstructedNote(path):
+    """", or its run's processor*/ folders, which hold the commit markers
+    of a parallel run, were removed after reconstructPar" when path's case
+    has time folders, none with a commit marker, and no processor0/ (adv54
+    n33: the usual clean-up of a parallel run); "" otherwise."""
+    case, rel = _caseOf(path)
+    if case is None:
+        return ""
+    if os.path.isdir(os.path.join(case, "processor0")):
+        # a serial run decomposed afterwards (decomposePar copies no commit
+        # marker into processor*/) whose serial times were removed (adv54
+        # n33 (b))
+        ranks = [d for d in glob.glob(os.path.join(case, "processor0", "*"))
+                 if _isTime(os.path.basename(d))]
+        serial = [d for d in glob.glob(os.path.join(case, "*"))
+                  if _isTime(os.path.basename(d))]
+        if ranks and not any(os.path.isfile(os.path.join(d,
+                                                         ".writeCommitted"))
+                             for d in ranks + serial):
+            return (", or its run was a serial one decomposed afterwards "
+                    "whose own time folders, which hold the commit markers "
+                    "recording its logs, were removed (decomposePar copies "
+                    "no marker into processor*/)")
+        return ""
+    times = []
+    for d in glob.glob(os.path.join(case, "*")):
+        try:
+            float(os.path.basename(d))
+        except ValueError:
+            continue
+        times.append(d)
+    if not times or any(os.path.isfile(os.path.join(d, ".writeCommitted"))
+                        for d in times):
+        return ""
+    return (", or its run was a parallel one whose processor*/ folders, "
+            "which hold the commit markers recording its logs, were removed "
+            "after reconstructPar (reconstructPar does not copy them: keep "
+            "processor*/ to measure the run as it wrote it)")
 
 
 def check(path, handMade=None, option=None):
@@ -188,32 +262,122 @@ def check(path, handMade=None, option=None):
         raise DigestError(
             "%s has no digest of the run that wrote it (no %s beside it, no "
             "commit marker of the case recording it): it was made or "
-            "changed by hand, or written before results carried digests. "
-            "To measure it as it is, give %s" % (path, path + SUFFIX, option))
-    with open(path, "rb") as f:
-        data = f.read()
+            "changed by hand, or written before results carried digests%s. "
+            "Restore it as the run wrote it, or %s" % (
+                path, path + SUFFIX, _reconstructedNote(path),
+                _give(option)))
     done = {}
     for n, digest, source, k in records:
         done.setdefault(n, (digest, source, k))
-    h, prev = BASIS, 0
-    for n in sorted(done):
-        digest, source, k = done[n]
-        if n > len(data):
-            raise DigestError(
-                "%s, line %d: the file ends (%d bytes) before the %d bytes "
-                "its writer recorded (%s, line %d): it was cut after it was "
-                "written. Restore it as the run wrote it, or give %s to "
-                "measure it as it is" % (path, _lineOf(data, len(data)),
-                                         len(data), n, source, k, option))
-        h = add(h, data[prev:n])
-        if h != digest:
-            raise DigestError(
-                "%s, line %d: the file is not as the run wrote it (its bytes "
-                "%d to %d, lines %d to %d, differ from the digest recorded in "
-                "%s, line %d): edited or damaged after it was written. "
-                "Restore it as the run wrote it, or give %s to measure it "
-                "as it is" % (path, _lineOf(data, prev), prev + 1, n,
-                              _lineOf(data, prev), _lineOf(data, n - 1),
-                              source, k, option))
-        prev = n
-    return _lineOf(data, prev) if prev < len(data) else None
+    try:
+        st = os.stat(path)
+        state = (os.path.abspath(path), st.st_dev, st.st_ino, st.st_size,
+                 st.st_mtime_ns, tuple(sorted(done.items())))
+    except OSError:
+        state = None
+    if state is not None and state in _verified:
+        return _verified[state]
+    # read record by record (adv53 l31 (e): a 1 GiB reference.dat of zeros
+    # was read whole, 1.08 GB, before its first line was refused)
+    size = os.path.getsize(path)
+    h, prev, lines = BASIS, 0, 1     # lines: the line number at byte prev
+    with open(path, "rb") as f:
+        for n in sorted(done):
+            digest, source, k = done[n]
+            if n > size:
+                f.seek(prev)
+                rest = f.read()
+                raise DigestError(
+                    "%s, line %d: the file ends (%d bytes) before the %d "
+                    "bytes its writer recorded (%s, line %d): it was cut "
+                    "after it was written. Restore it as the run wrote it, "
+                    "or %s" % (path, lines + rest.count(b"\n"), size, n,
+                               source, k, _give(option)))
+            chunk = f.read(n - prev)
+            h = add(h, chunk)
+            if h != digest:
+                raise DigestError(
+                    "%s, line %d: the file is not as the run wrote it (its "
+                    "bytes %d to %d, lines %d to %d, differ from the digest "
+                    "recorded in %s, line %d): edited or damaged after it "
+                    "was written. Restore it as the run wrote it, or %s"
+                    % (path, lines, prev + 1, n, lines,
+                       lines + chunk.count(b"\n", 0, max(len(chunk) - 1, 0)),
+                       source, k, _give(option)))
+            lines += chunk.count(b"\n")
+            prev = n
+    first = lines if prev < size else None
+    if state is not None:
+        _verified[state] = first
+    return first
+
+
+def checkFinished(case, what):
+    """Refuse to measure what (a log of case) while a run goes on in case
+    (its lock, caseLock.inUse), unless the script measures a run so far or
+    hand-made files: the rows it has so far may all be covered by its
+    last write, and a measure of them is a partial run's (adv53 l05:
+    plotBlast.py tabled a run at 5-8 ns of 60 without a word)."""
+    if _handMade or _partial:
+        return
+    from . import caseLock
+    going = caseLock.inUse(case)
+    if going:
+        raise DigestError(
+            "%s: the case %s is not finished: %s. Its results so far are "
+            "partial: wait for the run to end, %sor %s"
+            % (what, os.path.realpath(case), going,
+               "give %s to measure the run so far, " % _partialOption
+               if _partialOption else "", _give(_option)))
+
+
+def uncoveredRows(path, line, rows=None, partial=None, option=None):
+    """Refuse the data rows of path from line on (check's answer: the first
+    line after the last record of its run) unless the script measures a
+    run so far (partial; default: measuringPartial()) or hand-made files
+    (measuring()). rows: the line numbers of the rows the reader keeps (a
+    segment's rows that a later segment replaces are not measured);
+    default: every line from line on that is not empty nor a '#' note (a
+    solver's closing summary is written after its last record). A finished
+    run's records cover every row it wrote: rows after them were appended
+    by hand, or written by a run killed between its write times or still
+    going on (adv54 n01, n02: a row appended to peaks.dat or to a probe log
+    was measured as the run's; adv53 l05, adv54 n10: a run going on)."""
+    if line is None or _handMade:
+        return
+    if partial is None:
+        partial = _partial
+    if partial:
+        return
+    if option is None:
+        option = _option
+    if rows is None:
+        try:
+            with open(path, errors="replace") as f:
+                text = f.read().split("\n")
+        except OSError:
+            return
+        rows = [k for k, l in enumerate(text, 1)
+                if k >= line and l.strip() and not l.startswith("#")
+                and k < len(text)]
+    first = next((k for k in rows if k >= line), None)
+    if first is None:
+        return
+    case, rel = _caseOf(path)
+    from . import caseLock
+    going = caseLock.inUse(case if case is not None
+                           else os.path.dirname(os.path.abspath(path)))
+    why = ("the run goes on: %s; its results so far are partial. Wait for "
+           "the run to end" % going if going else
+           "rows appended after the run wrote the file, or written after "
+           "its last write time by a run that was stopped there (a "
+           "restart computes them again). Restart the run to complete "
+           "them, or restore the file as the run wrote it")
+    raise DigestError(
+        "%s, line %d: the rows from this line on are not covered by the "
+        "digests of the run that wrote the file (its last record ends "
+        "before it): %s, %sor %s" % (
+            path, first, why,
+            "give %s to measure a run so far, " % _partialOption
+            if _partialOption and not os.path.isfile(path + SUFFIX) else "",
+            _give(option)))

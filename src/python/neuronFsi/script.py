@@ -120,18 +120,49 @@ def message(err, tb=None):
     return None
 
 
+class OutputLinkError(Exception):
+    """A file a script would write lies in a folder of a case reached
+    through a symbolic link leaving that case; the message names both."""
+
+
+def _caseOf(folder):
+    """The case folder holding folder (the nearest folder at or above it,
+    by its path as given, links not resolved, that holds system/), None if
+    none."""
+    d = os.path.abspath(folder)
+    while True:
+        if os.path.isdir(os.path.join(d, "system")):
+            return d
+        up = os.path.dirname(d)
+        if up == d:
+            return None
+        d = up
+
+
+def checkOutputFolder(path):
+    """An OutputLinkError if path's folder lies in a case (_caseOf) but its
+    real path leaves the case: a folder of the case (postProcessing/,
+    postProcessing/planeWave, ...) that is a symbolic link to another
+    case's or a shared folder (adv54 v03: planeWave in case B, whose
+    postProcessing/planeWave was a link to A's, replaced A's reference.dat
+    and measures; the C++ applications refuse such folders since fix19j,
+    caseLock::outputLinksLeaving)."""
+    folder = os.path.dirname(os.path.abspath(path))
+    case = _caseOf(folder)
+    if case is None:
+        return
+    real, realCase = os.path.realpath(folder), os.path.realpath(case)
+    if real != realCase and not real.startswith(realCase + os.sep):
+        raise OutputLinkError(
+            "%s: its folder %s is reached through a symbolic link leaving "
+            "the case %s (its real path is %s): writing there would write "
+            "into another case's folder or one shared with it. Nothing was "
+            "written; replace the link by a folder of the case"
+            % (path, folder, case, real))
+
+
 @contextlib.contextmanager
-def writing(path, mode="w"):
-    """open(path, mode) for writing, as a context manager: an OSError
-    without a file name while the file is written or closed (a full disk:
-    ENOSPC comes from write() or the flush at close, which name no file)
-    is raised again naming path, so that message() names the file that
-    could not be written (adv38 x55: planeWave on a full disk said "a file
-    could not be written or read"). A symbolic link at path is replaced
-    by the file (the link removed first): its target, a file elsewhere
-    (the user's), is not written through (adv44 a17: calibrateCell wrote
-    its results over the user's shared files outside the case; planeWave
-    -inflow replaced such a link already)."""
+def _inPlace(path, mode):
     if os.path.islink(path) and "w" in mode:
         os.remove(path)
     try:
@@ -144,26 +175,67 @@ def writing(path, mode="w"):
 
 
 @contextlib.contextmanager
+def writing(path, mode="w"):
+    """open(path, mode) for writing, as a context manager: an OSError
+    without a file name while the file is written or closed (a full disk:
+    ENOSPC comes from write() or the flush at close, which name no file)
+    is raised again naming path, so that message() names the file that
+    could not be written (adv38 x55: planeWave on a full disk said "a file
+    could not be written or read"). A file written whole (mode "w") is
+    written by replacement (replacing): a symbolic link at path is
+    replaced by the file, never written through (adv44 a17: calibrateCell
+    wrote its results over the user's shared files outside the case), a
+    file hard-linked with another case's copy is not written through
+    (adv54 n14: planeWave in a copy made by cp -al replaced the original's
+    reference.dat), and a write that fails leaves path as it was (adv53
+    l09: a 0-byte blockMeshDict on a full disk). A device (/dev/null) is
+    written in place. A folder of a case reached through a link leaving
+    the case is refused (checkOutputFolder)."""
+    checkOutputFolder(path)
+    if "w" in mode and (os.path.islink(path) or not os.path.exists(path)
+                        or os.path.isfile(path)):
+        with replacing(path, mode) as f:
+            yield f
+        return
+    with _inPlace(path, mode) as f:
+        yield f
+
+
+@contextlib.contextmanager
 def replacing(path, mode="w"):
     """writing(path, mode) by replacement: the text goes to a new temporary
     file beside path (path.tmp<pid>, created exclusively: never through a
-    link), renamed over path when complete. A symbolic link at path is
-    replaced by the file, never written through (adv44 a17: calibrateCell
-    wrote its results over the user's shared files outside the case that
-    links of the case pointed to), and a write that fails leaves path as
-    it was (the temporary file is removed)."""
+    link), renamed over path when complete, with the permissions of the
+    file it replaces. A symbolic link at path is replaced by the file,
+    never written through (adv44 a17: calibrateCell wrote its results over
+    the user's shared files outside the case that links of the case
+    pointed to), and a write that fails leaves path as it was (the
+    temporary file is removed)."""
+    checkOutputFolder(path)
     tmp = "%s.tmp%d" % (path, os.getpid())
     fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL
                  | getattr(os, "O_NOFOLLOW", 0), 0o666)
     os.close(fd)
     try:
-        with writing(tmp, mode) as f:
+        if os.path.isfile(path) and not os.path.islink(path):
+            os.chmod(tmp, os.stat(path).st_mode & 0o7777)
+        with _inPlace(tmp, mode) as f:
             yield f
         os.replace(tmp, path)
     except BaseException:
         if os.path.lexists(tmp):
             os.remove(tmp)
         raise
+
+
+def saveFigure(fig, path, **kw):
+    """fig.savefig(path, **kw) through writing(path): by replacement, never
+    through a hard or symbolic link (adv54 n14: plotBlast.py in a copy
+    made by cp -al rewrote the original's fig10.png)."""
+    fmt = kw.pop("format", None) or \
+        os.path.splitext(path)[1].lstrip(".").lower() or None
+    with writing(path, "wb") as f:
+        fig.savefig(f, format=fmt, **kw)
 
 
 def _hook(name):

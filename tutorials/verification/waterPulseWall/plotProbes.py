@@ -32,7 +32,7 @@ ax.set_ylabel("pressure [MPa]")
 ax.legend(fontsize=8)
 ax.grid(alpha=0.3)
 fig.tight_layout()
-fig.savefig("probes.png", dpi=110)
+script.saveFigure(fig, "probes.png", dpi=110)
 arrival = t[np.argmax(pMid > 25e6)]
 print(f"plotProbes: mid-column peak {pMid.max()/1e6:.2f} MPa, arrival"
       f" (p > 25 MPa) {arrival*1e9:.2f} ns; wall peak {pWall.max()/1e6:.2f}"
