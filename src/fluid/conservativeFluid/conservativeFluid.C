@@ -409,6 +409,7 @@ Foam::conservativeFluid::conservativeFluid(Time& runTime, fvMesh& mesh)
        .lookupOrDefault<Switch>("viscous", false)
     ),
     mu_("mu", dimDynamicViscosity, Zero),
+    cpuViscous_(0),
     phi_
     (
         IOobject("phi", mesh.time().timeName(), mesh),
@@ -656,6 +657,7 @@ void Foam::conservativeFluid::addViscousTerms
     scalarField& divPhiE
 ) const
 {
+    cpuViscousTimer_.cpuTimeIncrement();
     const volTensorField tauMC("tauMC", mu_*dev2(T(fvc::grad(U_))));
 
     divPhiU -=
@@ -672,6 +674,41 @@ void Foam::conservativeFluid::addViscousTerms
     );
 
     divPhiE -= fvc::div(sigmaDotU)().primitiveField();
+    cpuViscous_ += cpuViscousTimer_.cpuTimeIncrement();
+}
+
+
+Foam::tmp<Foam::vectorField>
+Foam::conservativeFluid::wallViscousForce(const label patchi) const
+{
+    const fvPatch& patch = mesh_.boundary()[patchi];
+    if (patch.coupled())
+    {
+        FatalErrorInFunction
+            << "Patch " << patch.name() << " is coupled: no wall"
+            << exit(FatalError);
+    }
+    if (!viscous_)
+    {
+        return tmp<vectorField>::New(patch.size(), Zero);
+    }
+    cpuViscousTimer_.cpuTimeIncrement();
+    // The patch values of addViscousTerms' two parts: the Laplacian's
+    // mu |Sf| snGrad(U) and div(tauMC)'s Sf . tauMC (Gauss: tauMC's patch
+    // value, from the gradient's patch value, the cell's with its normal
+    // part replaced by the patch's snGrad)
+    const volTensorField gradU(fvc::grad(U_));
+    const tensorField& gradUp = gradU.boundaryField()[patchi];
+    const tensorField tauMC(mu_.value()*dev2(gradUp.T()));
+    tmp<vectorField> tF
+    (
+        -(
+            mu_.value()*patch.magSf()*U_.boundaryField()[patchi].snGrad()
+          + (patch.Sf() & tauMC)
+        )
+    );
+    cpuViscous_ += cpuViscousTimer_.cpuTimeIncrement();
+    return tF;
 }
 
 
