@@ -33,6 +33,12 @@
 #   (scaleFreeCellPointWeight; docs/results/blast3D.md, "Where the water
 #   probes sample"), and the two sets should agree to the schemes'
 #   difference
+#   WATERVISCOSITY=MU in the environment: the water's Newtonian viscous
+#   stress in the copy's system/fvSolution (riemann { viscous true; mu
+#   MU; }, MU [Pa s] >= 0; the paper's water, its eq. 12, has 1e-3),
+#   set before Allrun -noRun, so that planeWave's 1D columns (the inflow
+#   wave and the reference, which copy the case's fvSolution) run the
+#   same water (docs/results/blast3D.md, "The paper's water viscosity")
 #   MEMBRANE=water in the environment: the transparent quarter, the
 #   membrane's quadratic law replaced by water's Mie-Grueneisen law in
 #   the prepared case's constant/solidProperties (neuronFsi.membraneLaw,
@@ -65,7 +71,7 @@
 # solidMeasures.dat; on N ranks too since branch q3dG: planeWave reads
 # the master's probe files in the case, no reconstructPar needed).
 set -euo pipefail
-[ $# -ge 2 ] || { sed -n 2,44p "$0"; exit 1; }
+[ $# -ge 2 ] || { sed -n 2,50p "$0"; exit 1; }
 dir=$1; np=$2; shift 2
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -84,6 +90,20 @@ if [ -n "${MAXCO:-}" ]
 then
     foamDictionary -entry maxCo -set "$MAXCO" system/controlDict > /dev/null
     echo "== maxCo $(foamDictionary -entry maxCo -value system/controlDict)"
+fi
+if [ -n "${WATERVISCOSITY:-}" ]
+then
+    python3 -c "import math, sys
+try:
+    mu = float(sys.argv[1])
+except ValueError:
+    mu = float('nan')
+sys.exit(0 if math.isfinite(mu) and mu >= 0 else 1)" "$WATERVISCOSITY" || {
+        echo "inflow3D.sh: WATERVISCOSITY=$WATERVISCOSITY is outside the" \
+            "valid range [0, inf) Pa s (a finite number)" >&2; exit 1; }
+    foamDictionary -entry riemann/viscous -set true system/fvSolution > /dev/null
+    foamDictionary -entry riemann/mu -set "$WATERVISCOSITY" system/fvSolution > /dev/null
+    echo "== WATERVISCOSITY: riemann { viscous $(foamDictionary -entry riemann/viscous -value system/fvSolution); mu $(foamDictionary -entry riemann/mu -value system/fvSolution); } in system/fvSolution"
 fi
 npOpt=()
 [ "$np" -le 1 ] || npOpt=(-np "$np")

@@ -28,6 +28,7 @@ Description
 #include "bitSet.H"
 #include "foamTestCase.H"
 #include "zeroGradientFvPatchFields.H"
+#include "wedgeFvPatch.H"
 #include "addToRunTimeSelectionTable.H"
 
 #include <gtest/gtest.h>
@@ -485,6 +486,85 @@ TEST(conservativeFluid, boundaryAtStageTimes)
             }
         }
     }
+}
+
+
+//- The viscous step on an axisymmetric wedge (the wedge mesh of the test
+//  case: r 2-18 um, 5 deg): the wedge faces carry the hoop term's
+//  (8/3) nu/r^2, not their (8/3) nu |Sf| deltaCoeffs/V, 1/theta^2 (525)
+//  times stiffer. The step is that of the r-z faces alone, times at most
+//  2 (the hoop term, below the r-z faces' rate at r >= 2 um on 1-3.6 um
+//  cells); with the wedge faces as faces it was 14.6 times shorter
+//  (1.06e-8 against the r-z faces' 1.55e-7 s: fails)
+TEST(conservativeFluid, viscousStepOnAWedgeIsTheHoopTerms)
+{
+    foamUnit::testCase tc("conservativeFluid", 1e-10);
+    tc.writeThermophysicalProperties("mieGruneisen");
+    tc.writeFile
+    (
+        "system/fvSolution",
+        "FoamFile { version 2.0; format ascii; class dictionary;"
+        " object fvSolution; }\n"
+        "riemann { riemannSolver HLLC; timeScheme SSPRK3; viscous true;"
+        " mu 1e-3; }\n"
+    );
+    const std::string fields[3][4] =
+    {
+        {"p", "volScalarField", "[1 -1 -2 0 0 0 0]", "1e5"},
+        {"T", "volScalarField", "[0 0 0 1 0 0 0]", "300"},
+        {"U", "volVectorField", "[0 1 -1 0 0 0 0]", "(0 0 0)"}
+    };
+    for (const auto& f : fields)
+    {
+        tc.writeFile
+        (
+            "0/" + f[0],
+            "FoamFile { version 2.0; format ascii; class " + f[1]
+          + "; object " + f[0] + "; }\ndimensions " + f[2]
+          + ";\ninternalField uniform " + f[3]
+          + ";\nboundaryField { \".*\" { type zeroGradient; } bottom { type"
+            " symmetryPlane; } \"front|back\" { type wedge; } }\n"
+        );
+    }
+    autoPtr<fvMesh> meshPtr = tc.wedgeMesh();
+    const fvMesh& mesh = meshPtr();
+    conservativeFluid fluid(tc.time(), meshPtr());
+    ASSERT_TRUE(fluid.viscous());
+
+    // The r-z faces' rate per cell, 0.5 sum (8/3) nu |Sf| deltaCoeffs / V
+    const scalarField& rho = fluid.rho().primitiveField();
+    scalarField sum(mesh.nCells(), Zero);
+    const scalar mu = 1e-3;
+    forAll(mesh.owner(), facei)
+    {
+        const label o = mesh.owner()[facei], n = mesh.neighbour()[facei];
+        const scalar s =
+            (8.0/3.0)*mu/(0.5*(rho[o] + rho[n]))
+           *mesh.magSf()[facei]*mesh.deltaCoeffs()[facei];
+        sum[o] += s;
+        sum[n] += s;
+    }
+    forAll(mesh.boundary(), patchi)
+    {
+        const fvPatch& patch = mesh.boundary()[patchi];
+        if (isA<wedgeFvPatch>(patch))
+        {
+            continue;
+        }
+        forAll(patch, facei)
+        {
+            const label c = patch.faceCells()[facei];
+            sum[c] +=
+                (8.0/3.0)*mu/rho[c]*patch.magSf()[facei]
+               *patch.deltaCoeffs()[facei];
+        }
+    }
+    const scalar rzStep = 1/(0.5*gMax(sum/mesh.V().field()));
+    const scalar step = fluid.viscousDeltaT(1);
+    EXPECT_LE(step, rzStep*(1 + 1e-12));
+    EXPECT_GE(step, 0.5*rzStep)
+        << "the viscous step " << step << " s, the r-z faces' " << rzStep
+        << " s";
 }
 
 

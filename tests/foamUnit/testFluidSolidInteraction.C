@@ -110,22 +110,48 @@ std::string controlDictText
 //  (ramp: rising linearly from 0 at the loaded face, held at 0, to p at
 //  the interface, so that the wall force falls over the run), the solid
 //  layer of solidCells elements, the coupling (solidSubcycles given if
-//  > 0)
+//  > 0). shearVelocity > 0: the water viscous (mu = viscosity) and moving
+//  along y at shearVelocity [m/s] past the solid at rest, whose nodes are
+//  free along y but at the rigid wall (the no-slip wall's drag)
+const scalar viscosity = 1e-3;          // [Pa s]
 void writeCase
 (
     foamUnit::testCase& tc,
     const scalar p,
     const label solidCells = 10,
     const label solidSubcycles = 0,
-    const bool ramp = false
+    const bool ramp = false,
+    const scalar shearVelocity = 0
 )
 {
+    const bool shear = shearVelocity > 0;
+    std::ostringstream muText;
+    muText.precision(17);
+    muText<< " viscous true; mu " << viscosity << ";";
     tc.writeThermophysicalProperties("mieGruneisen");
+    if (shear)
+    {
+        // the test case's schemes (upwind faces) with the viscous
+        // stress's divergence, as the tutorials' fvSchemes
+        tc.writeFile
+        (
+            "system/fvSchemes",
+            header + "fvSchemes; }\n"
+            "ddtSchemes { default Euler; }\n"
+            "gradSchemes { default Gauss linear; }\n"
+            "divSchemes { default none; div(tauMC) Gauss linear; }\n"
+            "laplacianSchemes { default Gauss linear corrected; }\n"
+            "interpolationSchemes { default linear; reconstruct(rho) upwind;"
+            " reconstruct(U) upwind; reconstruct(p) upwind; }\n"
+            "snGradSchemes { default corrected; }\n"
+        );
+    }
     tc.writeFile
     (
         "system/fvSolution",
         header + "fvSolution; }\n"
-        "riemann { riemannSolver HLLC; timeScheme SSPRK3; }\n"
+        "riemann { riemannSolver HLLC; timeScheme SSPRK3;"
+      + (shear ? muText.str() : std::string()) + " }\n"
     );
     std::ostringstream pText;
     pText.precision(17);
@@ -163,13 +189,16 @@ void writeCase
         "boundaryField { loaded { type zeroGradient; }"
         " interface { type zeroGradient; } empty { type empty; } }\n"
     );
+    std::ostringstream UText;
+    UText.precision(17);
+    UText<< "internalField uniform (0 " << shearVelocity << " 0);\n";
     tc.writeFile
     (
         "0/U",
         "FoamFile { version 2.0; format ascii; class volVectorField;"
         " object U; }\n"
         "dimensions [0 1 -1 0 0 0 0];\n"
-        "internalField uniform (0 0 0);\n"
+      + UText.str() +
         "boundaryField { loaded { type zeroGradient; }"
         " interface { type movingWallVelocity; value uniform (0 0 0); }"
         " empty { type empty; } }\n"
@@ -180,7 +209,12 @@ void writeCase
         header + "solidProperties; }\n"
         "mesh { type box; cells (" + std::to_string(solidCells) + " 1 1);"
         " min (10e-6 -0.5e-6 -0.5e-6); max (15e-6 0.5e-6 0.5e-6); }\n"
-        "fixed ((xmax 0) (ymin 1) (ymax 1) (zmin 2) (zmax 2));\n"
+      + std::string
+        (
+            shear
+          ? "fixed ((xmax 0) (xmax 1) (zmin 2) (zmax 2));\n"
+          : "fixed ((xmax 0) (ymin 1) (ymax 1) (zmin 2) (zmax 2));\n"
+        ) +
         "explicitSafety 0.8;\n"
         "materials { solid { rho0 1000; C10 0.5; volumetric mieGruneisen;"
         " C0 1450; s 1.99; Gamma0 0.1; Cv 4184; T0 293.15; } }\n"
@@ -510,6 +544,107 @@ TEST(fluidSolidInteraction, interfaceForceBalanceAndGeometricConservation)
         EXPECT_GT(rows[i].vMax, 0) << rows[i].text;
         EXPECT_LE(std::abs(rows[i].gclError), 1e-13) << rows[i].text;
     }
+}
+
+
+//- The viscous water moving along the wall: the no-slip wall's drag
+//  reaches the solid. Water at rest in x, U_y = 1 m/s, the solid at rest:
+//  the first step's tangential force on the wall is the Laplacian's
+//  mu A U_y / (dx/2) (the wall cell's centre dx/2 from the wall,
+//  movingWallVelocity's U = the wall's velocity, about 0 after one step),
+//  mu 1e-3 Pa s, A 1 um^2, dx 0.5 um: 4e-9 N along +y; the solid receives
+//  exactly the fluid's wall force (pressure's and viscous), coupling.dat
+//  reports it, and over the steps the solid's y momentum grows by what the
+//  fluid's loses (the fluid's only y flux is the wall's), but for the
+//  first half step, where the solid's trapezoid starts from no load.
+//  Without the viscous force in the load the solid gets no y force
+//  (fails)
+TEST(fluidSolidInteraction, viscousWallDragReachesTheSolid)
+{
+    foamUnit::testCase tc("fluidSolidInteraction");
+    const scalar V = 1;                 // [m/s]
+    writeCase(tc, 0, 10, 0, false, V);
+    tc.writeFile("system/controlDict", controlDictText("startTime", 1000));
+    fsiRun run(tc.dir());
+    ASSERT_TRUE(run.fluid().viscous());
+    const label patchi = run.mesh().boundaryMesh().findPatchID("interface");
+    const scalar A = 1e-12, dx = fluidLength/20;
+    const scalar drag = viscosity*A*V/(0.5*dx);
+    const auto fluidMomentumY = [&run]()
+    {
+        return gSum
+        (
+            run.fluid().rhoU().primitiveField().component(vector::Y)
+           *run.mesh().V().field()
+        );
+    };
+    const auto solidMomentumY = [&run]()
+    {
+        const auto& v = run.fsi().solid().velocity();
+        const auto& m = run.fsi().solid().lumpedMass();
+        scalar sum = 0;
+        for (label i = 1; i < v.size(); i += 3)
+        {
+            sum += m[i]*v[i];
+        }
+        return sum;
+    };
+    const scalar fluid0 = fluidMomentumY();
+    EXPECT_NEAR(fluid0, 1000*V*fluidLength*A, 1e-3*1000*V*fluidLength*A);
+    ASSERT_EQ(solidMomentumY(), 0);
+
+    std::vector<vector> solidForces;
+    for (label n = 0; n < 6; ++n)
+    {
+        ASSERT_TRUE(run.step());
+        const vector viscous =
+            gSum(run.fluid().wallViscousForce(patchi)());
+        const vector fluidForce =
+            gSum(run.fluid().phiU().boundaryField()[patchi]) + viscous;
+        const vector solidForce = run.solidForce();
+        if (n == 0)
+        {
+            EXPECT_NEAR(viscous.y(), drag, 0.02*drag)
+                << "the first step's viscous wall force along y [N]";
+        }
+        EXPECT_GT(solidForce.y(), 0.5*drag) << "step " << n + 1;
+        EXPECT_LE(mag(solidForce - fluidForce), 1e-12*mag(fluidForce))
+            << "fluid y " << fluidForce.y() << " N, solid y "
+            << solidForce.y() << " N";
+        solidForces.push_back(solidForce);
+    }
+    const scalar lost = fluid0 - fluidMomentumY();
+    const scalar gained = solidMomentumY();
+    run.finish();
+
+    const std::vector<couplingRow> rows =
+        readCouplingLog(tc.dir()/"postProcessing"/"fsi"/"0"/"coupling.dat");
+    ASSERT_EQ(rows.size(), solidForces.size());
+    scalar trapezoid = 0;
+    for (size_t i = 0; i < rows.size(); ++i)
+    {
+        EXPECT_LE
+        (
+            mag(rows[i].force - solidForces[i]), 1e-9*mag(solidForces[i])
+        ) << rows[i].text;
+        trapezoid +=
+            0.5*rows[i].dt
+           *((i > 0 ? solidForces[i - 1].y() : 0) + solidForces[i].y());
+    }
+    // The solid's y momentum is the trapezoidal integral of its load
+    // (central difference), which starts from no load at t = 0; the
+    // fluid's stages take the wall's drag from the start, mu A V/(dx/2)
+    // at t = 0 (SSPRK3: about the trapezoid of each step's two ends).
+    // What the fluid lost along y is what the solid gained plus the
+    // first half step's drag, dt_1/2 x drag, to 1 %
+    EXPECT_GT(lost, 0);
+    EXPECT_NEAR(gained, trapezoid, 1e-6*trapezoid)
+        << "solid y momentum " << gained << " kg m/s";
+    const scalar start = 0.5*rows.front().dt*drag;
+    EXPECT_NEAR(gained + start, lost, 0.01*lost)
+        << "fluid y momentum lost " << lost << " kg m/s, solid's gained "
+        << gained << " kg m/s, the first half step's drag " << start
+        << " kg m/s";
 }
 
 

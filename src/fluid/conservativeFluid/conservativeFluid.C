@@ -409,6 +409,7 @@ Foam::conservativeFluid::conservativeFluid(Time& runTime, fvMesh& mesh)
        .lookupOrDefault<Switch>("viscous", false)
     ),
     mu_("mu", dimDynamicViscosity, Zero),
+    cpuViscous_(0),
     phi_
     (
         IOobject("phi", mesh.time().timeName(), mesh),
@@ -656,6 +657,7 @@ void Foam::conservativeFluid::addViscousTerms
     scalarField& divPhiE
 ) const
 {
+    cpuViscousTimer_.cpuTimeIncrement();
     const volTensorField tauMC("tauMC", mu_*dev2(T(fvc::grad(U_))));
 
     divPhiU -=
@@ -672,6 +674,41 @@ void Foam::conservativeFluid::addViscousTerms
     );
 
     divPhiE -= fvc::div(sigmaDotU)().primitiveField();
+    cpuViscous_ += cpuViscousTimer_.cpuTimeIncrement();
+}
+
+
+Foam::tmp<Foam::vectorField>
+Foam::conservativeFluid::wallViscousForce(const label patchi) const
+{
+    const fvPatch& patch = mesh_.boundary()[patchi];
+    if (patch.coupled())
+    {
+        FatalErrorInFunction
+            << "Patch " << patch.name() << " is coupled: no wall"
+            << exit(FatalError);
+    }
+    if (!viscous_)
+    {
+        return tmp<vectorField>::New(patch.size(), Zero);
+    }
+    cpuViscousTimer_.cpuTimeIncrement();
+    // The patch values of addViscousTerms' two parts: the Laplacian's
+    // mu |Sf| snGrad(U) and div(tauMC)'s Sf . tauMC (Gauss: tauMC's patch
+    // value, from the gradient's patch value, the cell's with its normal
+    // part replaced by the patch's snGrad)
+    const volTensorField gradU(fvc::grad(U_));
+    const tensorField& gradUp = gradU.boundaryField()[patchi];
+    const tensorField tauMC(mu_.value()*dev2(gradUp.T()));
+    tmp<vectorField> tF
+    (
+        -(
+            mu_.value()*patch.magSf()*U_.boundaryField()[patchi].snGrad()
+          + (patch.Sf() & tauMC)
+        )
+    );
+    cpuViscous_ += cpuViscousTimer_.cpuTimeIncrement();
+    return tF;
 }
 
 
@@ -813,9 +850,46 @@ Foam::conservativeFluid::viscousSpeedSf() const
 {
     // (8/3) nu/d: the explicit diffusion limit of longitudinal waves
     // (diffusivity 4/3 nu) as a speed, d the distance of the centres
-    return
+    tmp<surfaceScalarField> tspeedSf
+    (
         (8.0/3.0)*mu_/fvc::interpolate(thermo_->rho())
-       *mesh_.magSf()*mesh_.deltaCoeffs();
+       *mesh_.magSf()*mesh_.deltaCoeffs()
+    );
+
+    // A wedge face couples its cell with the cell's own value rotated by
+    // the wedge's angle theta: there the Laplacian's stiffness is the hoop
+    // term's, about nu/r^2 (r the cell centre's distance from the axis),
+    // not (8/3) nu |Sf| deltaCoeffs/V = (8/3) nu/((r theta/2) r theta),
+    // which is 1/theta^2 times larger (525 at 5 deg: the 2D preview's
+    // viscous step was 5.9e-12 s, set by its cells at the axis;
+    // docs/results/blast3D.md, "The paper's water viscosity"). Each of
+    // the pair carries (8/3) nu V/r^2, so that the pair adds (8/3) nu/r^2
+    // to the cell's rate (localCourantRate's 0.5 sum / V), the r-z
+    // faces' (8/3) for the hoop term's nu/r^2
+    surfaceScalarField& speedSf = tspeedSf.ref();
+    const volScalarField& rho = thermo_->rho();
+    forAll(mesh_.boundaryMesh(), patchi)
+    {
+        const polyPatch& pp = mesh_.boundaryMesh()[patchi];
+        if (!isA<wedgePolyPatch>(pp))
+        {
+            continue;
+        }
+        // the wedge's axis through the origin (OpenFOAM's wedge)
+        const vector& axis = refCast<const wedgePolyPatch>(pp).axis();
+        const labelUList& faceCells = mesh_.boundary()[patchi].faceCells();
+        scalarField& ps = speedSf.boundaryFieldRef()[patchi];
+        forAll(faceCells, facei)
+        {
+            const label celli = faceCells[facei];
+            const vector& C = mesh_.C()[celli];
+            const scalar r2 = magSqr(C - (C & axis)*axis);
+            ps[facei] =
+                (8.0/3.0)*mu_.value()/rho[celli]*mesh_.V()[celli]
+               /max(r2, VSMALL);
+        }
+    }
+    return tspeedSf;
 }
 
 

@@ -422,13 +422,17 @@ void Foam::fluidSolidInteraction::zeroWedgeSpeeds()
 
 void Foam::fluidSolidInteraction::wallFaceValues
 (
+    const vectorField& localViscousForce,
     vectorField& force,
+    vectorField& viscousForce,
     vectorField& Sf,
     scalarField& Z
 ) const
 {
-    // Packed face by face: force (3), Sf (3), Z (1)
-    const label width = 7;
+    // Packed face by face: force (3), Sf (3), Z (1), with the viscous
+    // stress also the viscous force (3)
+    const bool viscous = fluid_.viscous();
+    const label width = viscous ? 10 : 7;
     const vectorField& phiU = fluid_.phiU().boundaryField()[patchi_];
     const vectorField& patchSf = mesh_.boundary()[patchi_].Sf();
     const rhoEThermo& thermo = fluid_.thermo();
@@ -447,10 +451,18 @@ void Foam::fluidSolidInteraction::wallFaceValues
             v[3 + d] = patchSf[facei][d];
         }
         v[6] = rhoc[facei];
+        if (viscous)
+        {
+            for (direction d = 0; d < vector::nComponents; ++d)
+            {
+                v[7 + d] = localViscousForce[facei][d];
+            }
+        }
     }
     const scalarField all(fsiPatch_.packedFaceValues(local, width));
     const label n = fsiPatch_.size();
     force.setSize(n);
+    viscousForce.setSize(viscous ? n : 0);
     Sf.setSize(n);
     Z.setSize(n);
     for (label facei = 0; facei < n; ++facei)
@@ -459,6 +471,10 @@ void Foam::fluidSolidInteraction::wallFaceValues
         force[facei] = vector(v[0], v[1], v[2]);
         Sf[facei] = vector(v[3], v[4], v[5]);
         Z[facei] = v[6];
+        if (viscous)
+        {
+            viscousForce[facei] = vector(v[7], v[8], v[9]);
+        }
     }
 }
 
@@ -661,6 +677,8 @@ void Foam::fluidSolidInteraction::step()
         coupling_->predict(v0, map.interfaceDofs(solid.acceleration()), dt)
     );
     scalar gclError = 0;
+    // The viscous force on this rank's wall faces, summed (coupling.dat)
+    vector viscousF(Zero);
     bool done = false;
     while (!done)
     {
@@ -683,13 +701,24 @@ void Foam::fluidSolidInteraction::step()
         // with the area vectors of the moved interface faces (the pressure
         // load and the Robin impedance) and the fluid's acoustic impedance
         // at the wall (Robin), over the whole patch in one exchange
+        // With the viscous stress, its force on the wall too (the
+        // tangential traction of the no-slip wall and the normal viscous
+        // stress): mapped conservatively onto the solid nodes for either
+        // load, added to the pressure's (docs/theory/fsi.md, "The
+        // viscous traction")
         fluid_.wallFluxes(patchi_);
+        const vectorField localViscousForce
+        (
+            fluid_.wallViscousForce(patchi_)
+        );
+        viscousF = sum(localViscousForce);
         vectorField wallForce;
+        vectorField viscousForce;
         vectorField wallSf;
         scalarField Z;
-        wallFaceValues(wallForce, wallSf, Z);
+        wallFaceValues(localViscousForce, wallForce, viscousForce, wallSf, Z);
         cpuFluid_ += cpuTimer_.cpuTimeIncrement();
-        solid.advance
+        scalarField load
         (
             map.pressureLoad()
           ? map.nodalPressureForces
@@ -698,9 +727,13 @@ void Foam::fluidSolidInteraction::step()
                 wallSf,
                 fluidInterfaceDisplacement_ + dt*x
             )
-          : map.nodalForces(wallForce),
-            runTime.value()
+          : map.nodalForces(wallForce)
         );
+        if (viscousForce.size())
+        {
+            load += map.nodalForces(viscousForce);
+        }
+        solid.advance(load, runTime.value());
         cpuSolid_ += cpuTimer_.cpuTimeIncrement();
 
         const scalarField xTilde(0.5*(v0 + map.interfaceDofs(solid.velocity())));
@@ -744,7 +777,7 @@ void Foam::fluidSolidInteraction::step()
     // in rank order, as gSum on 2 ranks: the same bits) and the solid's
     // output of the step (its probes' element samples from their owners,
     // the interface maxima), written by write()
-    vector F = sum(fluid_.phiU().boundaryField()[patchi_]);
+    vector F = sum(fluid_.phiU().boundaryField()[patchi_]) + viscousF;
     {
         stepValues_.clear();
         const scalar maxima[2] = {localRate, gclError};
@@ -940,6 +973,12 @@ void Foam::fluidSolidInteraction::report()
         << " checks and function objects "
         << sec(other - cpuCoupling_ - cpuRestore_ - cpuOutput_)
         << " s)" << endl;
+    if (fluid_.viscous())
+    {
+        Info<< "    of the fluid's, the viscous stress "
+            << sec(fluid_.viscousCpuTime()) << " s (the stages' terms and"
+            << " the wall's viscous force)" << endl;
+    }
     if (bandMotion_.valid() && bandMotion_->nUpdates())
     {
         // The band updates (this rank's): the faces whose points changed

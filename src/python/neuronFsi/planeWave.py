@@ -722,9 +722,15 @@ def column(case, heights, Z, endTime, dz=25e-9, maxCo=0.5, work=None,
             shutil.copy(os.path.join(case, "constant",
                                      "thermophysicalProperties"),
                         os.path.join(work, "constant"))
+            # with the entries an Allrun's options put in <dict>.allrun,
+            # which the dictionary includes (#sinclude: without the file
+            # the column would run without them, e.g. -waterViscosity's
+            # riemann { viscous true; mu MU; })
             for f in ("fvSchemes", "fvSolution"):
-                shutil.copy(os.path.join(case, "system", f),
-                            os.path.join(work, "system"))
+                for name in (f, f + ".allrun"):
+                    src = os.path.join(case, "system", name)
+                    if name == f or os.path.isfile(src):
+                        shutil.copy(src, os.path.join(work, "system"))
             if scene and os.path.isfile(os.path.join(case, INFLOW_FILE)):
                 shutil.copy(os.path.join(case, INFLOW_FILE),
                             os.path.join(work, "constant"))
