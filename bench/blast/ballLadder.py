@@ -64,7 +64,10 @@ def radii(case):
     return [q["radius"] for q in postProcessing.probes(case, LOG)]
 
 
-def run(arg, reference=None):
+def run(arg, reference=None, verify=True):
+    """One level H=CASE; verify=False: solidProbes.dat of a writer without
+    result digests (bench/solid/exactTraction, the solid alone: its
+    outputs are its ladder's own scratch folders), read as it is."""
     h, d = script.labelled(arg, "H=CASE")
     case = d if os.path.isdir(os.path.join(d, "postProcessing")) \
         else os.path.join(d, "axisymmetricPreview")
@@ -75,7 +78,7 @@ def run(arg, reference=None):
                  % case)
     ref = planeWave.readReference(own if os.path.exists(own) else reference)
     probes = postProcessing.probes(case, LOG)
-    a = postProcessing.series(case, LOG)
+    a = postProcessing.series(case, LOG, verify=verify)
     n = len(probes)
     t = a[:, 0]
     bands = sorted(q["point"][1] for q in probes

@@ -52,8 +52,11 @@ import sys
 
 import numpy as np
 
-from neuronFsi import planeWave as pw
-from neuronFsi import msh, options
+from neuronFsi import script  # noqa: E402
+# an input's error is one line, not a traceback (adv52 p18)
+script.guard()
+from neuronFsi import planeWave as pw  # noqa: E402
+from neuronFsi import msh, options  # noqa: E402
 
 C0 = 1450.0
 VARIANTS = {

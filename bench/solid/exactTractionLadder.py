@@ -127,7 +127,7 @@ def main():
         print("| %.1f | %s | %s |" % (t*1e9, " | ".join(cells),
                                       ", ".join(orders)))
     print()
-    res = [(h, ballLadder.run("%g=%s" % (h, d))[1]) for h, d, _ in runs]
+    res = [(h, ballLadder.run("%g=%s" % (h, d), verify=False)[1]) for h, d, _ in runs]
     names = [k for k in res[0][1] if not k.startswith("band")]
     print("| probe | " + " | ".join("H %g um: error; (b)" % (h*1e6)
                                     for h, _ in res) + " |")

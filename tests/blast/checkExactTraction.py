@@ -63,7 +63,8 @@ def main():
                 fails.append("random %g um, %d ns: rms %.3e not above 5 "
                              "times the aligned mesh's %.3e" % (h, t, r, al))
     _, out = exactTractionLadder.ballLadder.run(
-        "1.75e-7=%s" % os.path.join(work, "aligned-0.175"))
+        "1.75e-7=%s" % os.path.join(work, "aligned-0.175"),
+        verify=False)
     p2 = out["p2"]
     err = p2["vm"]/p2["ref"] - 1
     b = p2["vm"]/p2["vmJ"] - 1
